@@ -1,0 +1,35 @@
+# A thin wrapper: install what is missing, configure, build, run. CMake does the real work.
+BUILD    ?= build
+JOBS     ?= $(shell nproc 2>/dev/null || echo 2)
+DEMO     ?= scenes/poll_bar_impulse.yaml
+PACKAGES := g++ cmake make pkg-config libeigen3-dev libyaml-cpp-dev doctest-dev libcli11-dev \
+            libosmesa6-dev libpng-dev libfreetype-dev fonts-dejavu-core ffmpeg gnuplot-nox
+SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
+
+.PHONY: all deps build demo test bench clean
+
+all: build
+
+# install only the Debian packages that are missing (apt-get update only when needed)
+deps:
+	@missing=""; for p in $(PACKAGES); do \
+	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "ok installed" || missing="$$missing $$p"; \
+	done; \
+	if [ -n "$$missing" ]; then \
+	  echo "installing:$$missing"; \
+	  $(SUDO) apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends $$missing; \
+	fi
+
+build: deps
+	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
+	@cmake --build $(BUILD) -j $(JOBS)
+
+demo: build
+	./$(BUILD)/rigidreel simulate $(DEMO) --variant end --json
+
+test: build
+	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
+
+clean:
+	rm -rf $(BUILD)

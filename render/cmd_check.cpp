@@ -1,0 +1,94 @@
+// `rigidreel check`: load and validate scenes, say what model each uses, and compare every
+// variant's `expect` entries with the simulation.
+#include <iostream>
+#include <sstream>
+
+#include "commands.h"
+#include "expect.h"
+#include "json_writer.h"
+#include "scene_build.h"
+#include "scene_yaml.h"
+
+namespace render {
+
+namespace {
+
+std::string plural(size_t n, const std::string& word) { return std::to_string(n) + " " + word + (n == 1 ? "" : "s"); }
+
+// what the scene makes the simulator model: a scene pays only for what it uses
+std::string describeModel(const sim::SceneDef& d) {
+  size_t dynamic = 0;
+  for (const auto& b : d.bodies) dynamic += !b.isStatic;
+  std::ostringstream o;
+  o << plural(d.bodies.size(), "body") << " (" << dynamic << " dynamic); forces:";
+  std::string forces;
+  if (d.gravity != sim::Vec2::Zero()) forces += " gravity,";
+  if (!d.springs.empty()) forces += " " + plural(d.springs.size(), "spring") + ",";
+  if (!d.pointForces.empty()) forces += " " + plural(d.pointForces.size(), "point force") + ",";
+  if (!d.drags.empty()) forces += " " + std::string("drag,");
+  if (forces.empty()) forces = " none,";
+  forces.pop_back();
+  o << forces << "; " << plural(d.events.size(), "impulse event") << "; integrator " << sim::integratorName(d.integrator)
+    << ", dt " << formatNumber(d.dt) << " s, duration " << formatNumber(d.duration) << " s";
+  return o.str();
+}
+
+std::string formatValues(const std::vector<double>& v) {
+  if (v.size() == 1) return formatNumber(v[0]);
+  std::string s = "(";
+  for (size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + formatNumber(v[i]);
+  return s + ")";
+}
+
+// one scene, one variant ("" for the base); returns false when an expect fails
+bool checkCase(const std::string& file, const std::string& variant) {
+  const sim::SceneDef def = sim::loadSceneFile(file, variant);
+  std::cout << file << (variant.empty() ? "" : " [" + variant + "]") << ": " << describeModel(def) << '\n';
+  if (def.expects.empty()) {
+    // still run it: a scene that diverges is not a good scene
+    sim::World w = sim::buildWorld(def);
+    w.advanceTo(def.duration);
+    std::cout << "  ran to t = " << formatNumber(def.duration) << " (no expect entries)\n";
+    return true;
+  }
+  bool ok = true;
+  for (const sim::CheckResult& r : sim::runExpects(def)) {
+    ok = ok && r.passed();
+    std::cout << (r.passed() ? "  ok    " : "  FAIL  ") << "t = " << formatNumber(r.time) << "  " << r.quantity
+              << " = " << formatValues(r.actual) << ", expected " << formatValues(r.expected) << ", error "
+              << formatNumber(r.error) << " (tolerance " << formatNumber(r.tolerance) << ")\n";
+  }
+  return ok;
+}
+
+int check(const std::vector<std::string>& files) {
+  int code = kExitOk;
+  for (const std::string& file : files) {
+    try {
+      const sim::SceneDef base = sim::loadSceneFile(file);
+      std::vector<std::string> cases = base.variantNames;
+      if (cases.empty()) cases.push_back("");
+      for (const std::string& v : cases)
+        if (!checkCase(file, v) && code == kExitOk) code = kExitFailure;
+    } catch (const sim::SceneError& e) {
+      std::cerr << e.what() << '\n';
+      code = kExitBadInput;
+    } catch (const sim::Diverged& d) {
+      std::cerr << file << ": the simulation diverged at t = " << formatNumber(d.time) << " (body #" << d.body
+                << "); use a smaller dt or another integrator\n";
+      if (code == kExitOk) code = kExitFailure;
+    }
+  }
+  return code;
+}
+
+}  // namespace
+
+void addCheckCommand(CLI::App& app, int& exitCode) {
+  auto files = std::make_shared<std::vector<std::string>>();
+  CLI::App* cmd = app.add_subcommand("check", "validate scenes and verify their expect entries");
+  cmd->add_option("scenes", *files, "scene files (YAML)")->required();
+  cmd->callback([files, &exitCode] { exitCode = check(*files); });
+}
+
+}  // namespace render

@@ -1,0 +1,27 @@
+// The closed-form answers of a scene's `expect` entries, compared with a simulated World.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "scene_def.h"
+#include "world.h"
+
+namespace sim {
+
+struct CheckResult {
+  double time = 0.0;
+  std::string quantity;  // e.g. "bar.velocity", "total_energy"
+  std::vector<double> expected, actual;
+  double error = 0.0;    // Euclidean norm of actual − expected
+  double tolerance = 0.0;
+  bool passed() const { return error <= tolerance; }
+};
+
+// every quantity of one entry, for a world already at the entry's time
+std::vector<CheckResult> evaluate(const ExpectDef& expect, const SceneDef& def, const World& world);
+
+// builds the scene's world and runs it through every expect entry in time order
+std::vector<CheckResult> runExpects(const SceneDef& def);
+
+}  // namespace sim

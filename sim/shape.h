@@ -1,0 +1,41 @@
+// Shapes in body coordinates and the mass properties they give (notes: "Rigid body kinetic energy").
+#pragma once
+
+#include <vector>
+
+#include "math.h"
+
+namespace sim {
+
+enum class ShapeKind { Circle, Polygon };
+
+// a convex shape in body coordinates; polygons are counter-clockwise with outward edge normals
+struct Shape {
+  ShapeKind kind = ShapeKind::Circle;
+  double radius = 0.0;            // circle
+  std::vector<Vec2> vertices;     // polygon, counter-clockwise
+  std::vector<Vec2> normals;      // polygon: outward unit normal of edge i, from vertex i to i + 1
+};
+
+// area, centroid and the second moment of area about the centroid (per unit density)
+struct AreaProperties {
+  double area = 0.0;
+  Vec2 centroid = Vec2::Zero();
+  double secondMoment = 0.0;  // ∫ |r - c|² dA
+};
+
+Shape makeCircle(double radius);
+Shape makeBox(double width, double height);
+// any winding; throws std::invalid_argument naming the fault for non-convex, degenerate or
+// self-intersecting input
+Shape makePolygon(std::vector<Vec2> vertices);
+
+AreaProperties areaProperties(const Shape& shape);
+
+// the same shape with its body origin moved to `origin` (vertices shifted by -origin)
+Shape shifted(const Shape& shape, const Vec2& origin);
+
+// half the largest extent from the body origin: a length scale for tolerances
+double boundingRadius(const Shape& shape);
+
+}  // namespace sim
