@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <numbers>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -50,19 +51,23 @@ Shape makePolygon(std::vector<Vec2> v) {
 
   // convex and simple: every turn is strictly left and the turns add up to one full turn
   // (a star polygon also turns left everywhere, but winds twice)
+  for (size_t i = 0; i < n; ++i)
+    if ((v[(i + 1) % n] - v[i]).squaredNorm() <= settings::kPolygonTurnTolerance * size2)
+      throw std::invalid_argument("degenerate polygon: two consecutive vertices coincide; remove one");
   double turning = 0.0;
   for (size_t i = 0; i < n; ++i) {
     const Vec2 e0 = v[(i + 1) % n] - v[i];
     const Vec2 e1 = v[(i + 2) % n] - v[(i + 1) % n];
-    if (e0.squaredNorm() <= settings::kPolygonTurnTolerance * size2)
-      throw std::invalid_argument("degenerate polygon: vertices " + std::to_string(i) + " and " +
-                                  std::to_string((i + 1) % n) + " coincide");
     const double turn = cross(e0, e1);
     if (turn <= settings::kPolygonTurnTolerance * size2) {
-      const bool straight = std::abs(turn) <= settings::kPolygonTurnTolerance * size2;
-      throw std::invalid_argument(
-          (straight ? "degenerate polygon: vertex " : "non-convex polygon: the boundary turns the wrong way at vertex ") +
-          std::to_string((i + 1) % n) + (straight ? " lies on the line through its neighbours; remove it" : "; give a convex polygon"));
+      // name the vertex by its coordinates: indices change when the winding is reversed
+      const Vec2& p = v[(i + 1) % n];
+      std::ostringstream where;
+      where << '(' << p.x() << ", " << p.y() << ')';
+      const std::string at = where.str();
+      if (std::abs(turn) <= settings::kPolygonTurnTolerance * size2)
+        throw std::invalid_argument("degenerate polygon: vertex " + at + " lies on the line through its neighbours; remove it");
+      throw std::invalid_argument("non-convex polygon: the boundary turns the wrong way at vertex " + at + "; give a convex polygon");
     }
     turning += std::atan2(turn, e0.dot(e1));
   }
