@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "integrators.h"
+#include "render_def.h"
 #include "settings.h"
 #include "shape.h"
 
@@ -99,6 +100,7 @@ struct SceneDef {
   std::vector<DragDef> drags;
   std::vector<EventDef> events;
   std::vector<ExpectDef> expects;
+  RenderDef render;
 
   // index of the body with this name, or -1
   int bodyIndex(const std::string& name) const;
