@@ -1,5 +1,6 @@
 #include "scene_yaml.h"
 
+#include "render_yaml.h"
 #include "yaml_reader.h"
 
 #include <algorithm>
@@ -66,7 +67,7 @@ class SceneReader : public Reader {
     if (!root.IsMap()) fail(root, "a scene is a map with at least 'bodies:'; got " + describe(root));
     SceneDef s;
     readVariants(root, s, variant);
-    checkKeys(root, {"name", "description", "duration", "world", "sim", "bodies", "forces", "events", "variants", "expect"},
+    checkKeys(root, {"name", "description", "duration", "world", "sim", "bodies", "forces", "events", "variants", "expect", "render"},
               "the scene");
     s.name = root["name"] ? text(root["name"], "name") : defaultName;
     if (root["description"]) s.description = text(root["description"], "description");
@@ -96,6 +97,7 @@ class SceneReader : public Reader {
       if (!expect.IsSequence()) fail(expect, "'expect' must be a list, got " + describe(expect));
       for (const YAML::Node& e : expect) s.expects.push_back(readExpect(e, s));
     }
+    if (const YAML::Node r = root["render"]) yaml::readRender(r, *this, s.render);
     return s;
   }
 

@@ -1,0 +1,12 @@
+// The scene's `render:` block, read into RenderDef (internal to the rigidreel_scene target).
+#pragma once
+
+#include "render_def.h"
+#include "yaml_reader.h"
+
+namespace sim::yaml {
+
+// fails through `reader` with FILE:LINE:COL on bad input
+void readRender(const YAML::Node& node, const Reader& reader, RenderDef& out);
+
+}  // namespace sim::yaml
