@@ -1,9 +1,64 @@
 // The `render:` block of a scene, as plain definitions (documented in scenes/README.md).
-// The simulator never reads it; the renderer does.
+// The simulator never reads it; the renderer does. Colors are "#rrggbb" strings, as in BodyDef.
 #pragma once
+
+#include <string>
+#include <vector>
+
+#include "math.h"
 
 namespace sim {
 
-struct RenderDef {};
+// frame sides are even (H.264 in yuv420p halves the chroma planes) and at most this many pixels:
+// a 8192 × 8192 RGBA frame is 256 MiB, and supersampled several times that
+inline constexpr int kMaxFrameSide = 8192;
+inline constexpr int kMinFrameSide = 16;
+// frames per second, at most: beyond this a lecture video gains nothing
+inline constexpr double kMaxFps = 1000.0;
+
+// what the view shows: everything the run covers (auto), or a fixed window
+struct CameraDef {
+  bool automatic = true;
+  double margin = 0.08;          // auto: free space on each side, as a fraction of the fitted size
+  Vec2 center = Vec2::Zero();    // fixed: world point at the middle of the frame, m
+  double height = 0.0;           // fixed: world height the frame shows, m
+};
+
+// colors of what is not a body's own; bodies without `color` take the palette in order
+struct ColorsDef {
+  std::vector<std::string> palette = {"#4e79a7", "#f28e2b", "#e15759", "#76b7b2", "#59a14f",
+                                      "#edc948", "#b07aa1", "#ff9da7", "#9c755f", "#bab0ac"};
+  std::string staticBody = "#8c8c8c";
+  std::string contact = "#d62728";
+  std::string normal = "#d62728";
+  std::string impulse = "#2ca02c";
+  std::string velocity = "#1f1f1f";
+  std::string trail = "#9a9a9a";
+  std::string referenceEdge = "#ff7f0e";
+  std::string incidentVertex = "#9467bd";
+  std::string text = "#1f1f1f";
+};
+
+struct RenderDef {
+  int width = 1280;                    // pixels
+  int height = 720;
+  double fps = 60.0;                   // frames per second of a video
+  std::string background = "#ffffff";
+  double lineWidth = 2.0;              // pixels, of outlines, arrows and segments
+  double fontSize = 0.0;               // pixels; 0: the frame height / 36, at least 11
+  ColorsDef colors;
+  CameraDef camera;
+  bool contacts = true;                // contact points, normals and impact impulses
+  double contactHold = 0.5;            // s a contact stays on screen after an impact, fading
+  bool impulses = true;                // arrows where events apply their impulses (held as contacts)
+  double impulseScale = 0.0;           // m per N·s; 0: the largest event impulse is 1/6 of the view
+  bool velocities = false;             // velocity arrows at the centers of mass
+  double velocityScale = 0.0;          // m per m/s (s); 0: the fastest body's arrow is 1/6 of the view
+  bool trails = false;                 // the path of every center of mass so far
+  bool sat = false;                    // the separating-axis overlay: reference edge, incident vertex
+  int strobe = 0;                      // snapshots and the poster: this many ghosted earlier poses
+  bool labels = true;                  // body labels
+  bool time = true;                    // the time in a corner
+};
 
 }  // namespace sim

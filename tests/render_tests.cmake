@@ -1,0 +1,6 @@
+# The renderer's tests (included from tests/CMakeLists.txt): one executable per module.
+
+# the scene's render: block
+add_executable(render_yaml_test render_yaml_test.cpp $<TARGET_OBJECTS:test_main>)
+target_link_libraries(render_yaml_test PRIVATE rigidreel_scene doctest::doctest)
+add_test(NAME render_yaml COMMAND render_yaml_test)

@@ -1,0 +1,134 @@
+// The scene's render: block: documented defaults, every key read, and bad values reported at their
+// FILE:LINE:COL with a message that says what to write instead.
+#include <doctest/doctest.h>
+
+#include <string>
+
+#include "scene_yaml.h"
+
+namespace {
+
+// one body on lines 1-2; the render: block starts on line 3
+const std::string kBody = "bodies:\n  - {name: a, shape: {circle: 1}}\n";
+
+sim::RenderDef renderOf(const std::string& block) { return sim::loadSceneText(kBody + block, "inline.yaml").render; }
+
+// loading the block must fail at `line` with a message containing `words`
+void expectError(const std::string& block, int line, const std::string& words) {
+  INFO("render block:\n", block);
+  try {
+    (void)renderOf(block);
+    FAIL_CHECK("the scene loaded; expected a SceneError");
+  } catch (const sim::SceneError& e) {
+    INFO("what(): ", e.what());
+    CHECK(e.line == line);
+    CHECK(e.message.find(words) != std::string::npos);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("without a render block the documented defaults hold") {
+  const sim::RenderDef r = renderOf("");
+  CHECK(r.width == 1280);
+  CHECK(r.height == 720);
+  CHECK(r.fps == 60.0);
+  CHECK(r.background == "#ffffff");
+  CHECK(r.lineWidth == 2.0);
+  CHECK(r.camera.automatic);
+  CHECK(r.contacts);
+  CHECK(r.contactHold == 0.5);
+  CHECK(r.labels);
+  CHECK(r.time);
+  CHECK_FALSE(r.velocities);
+  CHECK_FALSE(r.trails);
+  CHECK_FALSE(r.sat);
+  CHECK(r.strobe == 0);
+  CHECK(r.colors.palette.size() == 10);
+}
+
+TEST_CASE("every key is read") {
+  const sim::RenderDef r = renderOf(
+      "render:\n"
+      "  size: [320, 180]\n"
+      "  fps: 30\n"
+      "  background: '#000000'\n"
+      "  line_width: 1.5\n"
+      "  font_size: 14\n"
+      "  colors: {palette: ['#112233'], static: '#010203', contact: '#aabbcc', text: '#ffffff'}\n"
+      "  camera: {center: [1, 2], height: 5}\n"
+      "  contacts: false\n"
+      "  contact_hold: 0.25\n"
+      "  impulses: false\n"
+      "  impulse_scale: 2\n"
+      "  velocities: true\n"
+      "  velocity_scale: 0.5\n"
+      "  trails: true\n"
+      "  sat: yes\n"
+      "  strobe: 6\n"
+      "  labels: false\n"
+      "  time: false\n");
+  CHECK(r.width == 320);
+  CHECK(r.height == 180);
+  CHECK(r.fps == 30.0);
+  CHECK(r.background == "#000000");
+  CHECK(r.lineWidth == 1.5);
+  CHECK(r.fontSize == 14.0);
+  REQUIRE(r.colors.palette.size() == 1);
+  CHECK(r.colors.palette[0] == "#112233");
+  CHECK(r.colors.staticBody == "#010203");
+  CHECK(r.colors.contact == "#aabbcc");
+  CHECK(r.colors.text == "#ffffff");
+  CHECK(r.colors.normal == "#d62728");  // untouched keys keep their defaults
+  CHECK_FALSE(r.camera.automatic);
+  CHECK(r.camera.center == sim::Vec2(1, 2));
+  CHECK(r.camera.height == 5.0);
+  CHECK_FALSE(r.contacts);
+  CHECK(r.contactHold == 0.25);
+  CHECK_FALSE(r.impulses);
+  CHECK(r.impulseScale == 2.0);
+  CHECK(r.velocities);
+  CHECK(r.velocityScale == 0.5);
+  CHECK(r.trails);
+  CHECK(r.sat);
+  CHECK(r.strobe == 6);
+  CHECK_FALSE(r.labels);
+  CHECK_FALSE(r.time);
+}
+
+TEST_CASE("the camera is auto, auto with a margin, or fixed") {
+  CHECK(renderOf("render: {camera: auto}").camera.automatic);
+  const sim::RenderDef m = renderOf("render: {camera: {margin: 0.2}}");
+  CHECK(m.camera.automatic);
+  CHECK(m.camera.margin == 0.2);
+}
+
+TEST_CASE("variants can change the render block") {
+  const std::string text = kBody +
+                           "render: {size: [640, 360], trails: true}\n"
+                           "variants:\n"
+                           "  small: {render: {size: [320, 180]}}\n";
+  const sim::RenderDef r = sim::loadSceneText(text, "inline.yaml", "small").render;
+  CHECK(r.width == 320);
+  CHECK(r.trails);  // merged key by key
+}
+
+TEST_CASE("bad render values name the line and what to write") {
+  expectError("render: {sise: [2, 2]}\n", 3, "did you mean 'size'");
+  expectError("render:\n  size: [321, 180]\n", 4, "even sides");
+  expectError("render:\n  size: [320, 9000]\n", 4, "from 16 to 8192");
+  expectError("render:\n  size: [320.5, 180]\n", 4, "whole number");
+  expectError("render:\n  size: 320\n", 4, "[width, height]");
+  expectError("render:\n  fps: 0\n", 4, "positive");
+  expectError("render:\n  fps: 5000\n", 4, "at most 1000");
+  expectError("render:\n  background: red\n", 4, "#rrggbb");
+  expectError("render:\n  colors: {contact: '#12345'}\n", 4, "#rrggbb");
+  expectError("render:\n  colors: {contacts: '#123456'}\n", 4, "did you mean 'contact'");
+  expectError("render:\n  camera: fixed\n", 4, "'auto' or {center");
+  expectError("render:\n  camera: {center: [0, 0]}\n", 4, "both 'center' and 'height'");
+  expectError("render:\n  camera: {center: [0, 0], height: -1}\n", 4, "positive");
+  expectError("render:\n  camera: {margin: 0.7}\n", 4, "below 0.5");
+  expectError("render:\n  strobe: -1\n", 4, "whole number from 0 to 100");
+  expectError("render:\n  trails: maybe\n", 4, "true or false");
+  expectError("render:\n  contact_hold: -0.1\n", 4, "zero or a positive");
+}
