@@ -6,8 +6,10 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 namespace sim {
 
@@ -24,14 +26,21 @@ using yaml::describe;
 using yaml::Keys;
 using yaml::Reader;
 
+// base[key] = value, keeping the key's position in the file for messages about a new key
+// (looked up through a const node: yaml-cpp's non-const operator[] adds an empty entry)
+void setKey(YAML::Node base, const YAML::Node& key, const YAML::Node& value) {
+  if (std::as_const(base)[key.Scalar()]) base[key.Scalar()] = value;
+  else base.force_insert(key, value);
+}
+
 // variants are merged over the scene: maps key by key, the bodies list by name, other values whole
 void mergeBodies(YAML::Node base, const YAML::Node& over) {
   for (const YAML::Node& body : over) {
     bool merged = false;
     if (body.IsMap() && body["name"]) {
       for (YAML::Node b : base)
-        if (b.IsMap() && b["name"] && b["name"].Scalar() == body["name"].Scalar()) {
-          for (const auto& kv : body) b[kv.first.Scalar()] = kv.second;
+        if (b.IsMap() && std::as_const(b)["name"] && std::as_const(b)["name"].Scalar() == body["name"].Scalar()) {
+          for (const auto& kv : body) setKey(b, kv.first, kv.second);
           merged = true;
         }
     }
@@ -42,13 +51,13 @@ void mergeBodies(YAML::Node base, const YAML::Node& over) {
 void mergeMaps(YAML::Node base, const YAML::Node& over) {
   for (const auto& kv : over) {
     const std::string key = kv.first.Scalar();
-    YAML::Node current = base[key];
-    if (current.IsMap() && kv.second.IsMap()) {
+    const YAML::Node current = std::as_const(base)[key];
+    if (current && current.IsMap() && kv.second.IsMap()) {
       mergeMaps(current, kv.second);
-    } else if (key == "bodies" && current.IsSequence() && kv.second.IsSequence()) {
+    } else if (key == "bodies" && current && current.IsSequence() && kv.second.IsSequence()) {
       mergeBodies(current, kv.second);
     } else {
-      base[key] = kv.second;
+      setKey(base, kv.first, kv.second);
     }
   }
 }
@@ -191,6 +200,11 @@ class SceneReader : public Reader {
 
   void readForce(const YAML::Node& n, SceneDef& s) {
     if (!n.IsMap()) fail(n, "expected a map for a force, got " + describe(n));
+    // without a type, a misspelled key is the likelier fault: name it
+    if (!n["type"])
+      checkKeys(n, {"type", "body", "point", "anchor", "body2", "point2", "stiffness", "rest_length", "damping", "frame",
+                    "force", "from", "until", "linear", "angular"},
+                "a force");
     const std::string type = text(required(n, "type", "every force"), "type");
     if (type == "spring") {
       checkKeys(n, {"type", "body", "point", "anchor", "body2", "point2", "stiffness", "rest_length", "damping"}, "a spring");
@@ -318,6 +332,8 @@ SceneDef loadSceneText(const std::string& text, const std::string& file, const s
 }
 
 SceneDef loadSceneFile(const std::string& path, const std::string& variant) {
+  if (std::filesystem::is_directory(path))
+    throw SceneError(path, 0, 0, "is a directory, not a scene file; give the path of a .yaml file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SceneError(path, 0, 0, "cannot open the scene file (does it exist and is it readable?)");
   std::ostringstream text;

@@ -6,6 +6,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -57,8 +58,13 @@ class Reader {
   // every key of `map` must be one of `allowed`; `what` names the map in messages
   void checkKeys(const YAML::Node& map, const Keys& allowed, const std::string& what) const {
     if (!map.IsMap()) fail(map, "expected a map for " + what + ", got " + describe(map));
+    std::vector<std::string> seen;
     for (const auto& kv : map) {
       const std::string key = kv.first.Scalar();
+      // yaml-cpp keeps the first of two equal keys silently; say so instead
+      if (std::find(seen.begin(), seen.end(), key) != seen.end())
+        fail(kv.first, "duplicate key '" + key + "' in " + what + "; give each key once");
+      seen.push_back(key);
       if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
       const std::string* nearest = &allowed.front();
       for (const std::string& k : allowed)
@@ -97,7 +103,10 @@ class Reader {
   }
 
   Vec2 vec2(const YAML::Node& n, const std::string& key) const {
-    if (!n.IsSequence() || n.size() != 2) fail(n, "expected [x, y] for '" + key + "', got " + describe(n));
+    if (!n.IsSequence() || n.size() != 2) {
+      const std::string got = n.IsSequence() ? "a list of " + std::to_string(n.size()) + " values" : describe(n);
+      fail(n, "expected [x, y] for '" + key + "', got " + got);
+    }
     return {finite(n[0], key), finite(n[1], key)};
   }
 
@@ -108,7 +117,9 @@ class Reader {
 
   bool boolean(const YAML::Node& n, const std::string& key) const {
     if (n.IsScalar()) {
-      const std::string s = n.Scalar();
+      // the YAML 1.1 spellings, in any case
+      std::string s = n.Scalar();
+      for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
       if (s == "true" || s == "yes" || s == "on") return true;
       if (s == "false" || s == "no" || s == "off") return false;
     }

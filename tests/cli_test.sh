@@ -1,1 +1,280 @@
-exit 0
+#!/usr/bin/env bash
+# The command line end to end: exit codes (0 ok, 1 failure/divergence, 2 bad input), messages,
+# the JSON state and the CSV trace, and that a failed run never leaves or clobbers a trace file.
+#
+# usage: bash tests/cli_test.sh <path-to-rigidreel> <project-source-dir>
+# prints one "ok - ..." / "not ok - ..." line per case and "N passed, M failed"; exits 1 on any failure.
+set -u
+
+if [ $# -ne 2 ]; then
+  echo "usage: $0 <path-to-rigidreel> <project-source-dir>" >&2
+  exit 2
+fi
+BIN=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
+SRC=$(cd "$2" && pwd)
+SCENES=$SRC/scenes
+POLL=$SCENES/poll_bar_impulse.yaml
+if [ ! -x "$BIN" ] || [ ! -f "$POLL" ]; then
+  echo "cli_test.sh: no executable $BIN or no scene $POLL" >&2
+  exit 2
+fi
+
+WORK=$(mktemp -d "${TMPDIR:-/tmp}/rigidreel-cli-test.XXXXXX") || exit 2
+trap 'rm -rf "$WORK"' EXIT
+CAP=$WORK/.captured  # stdout and stderr of the last run, outside the directory the runs write to
+mkdir "$CAP" && cd "$WORK" || exit 2
+
+passed=0
+failed=0
+ok() {
+  echo "ok - $1"
+  passed=$((passed + 1))
+}
+# not_ok NAME [DETAIL...]
+not_ok() {
+  echo "not ok - $1"
+  shift
+  local line
+  for line in "$@"; do echo "#   $line"; done
+  echo "#   stdout: $(head -c 400 "$CAP/out")"
+  echo "#   stderr: $(head -c 400 "$CAP/err")"
+  failed=$((failed + 1))
+}
+
+# run ARGS...: the binary with ARGS; sets $rc, $out and $err
+run() {
+  "$BIN" "$@" >"$CAP/out" 2>"$CAP/err"
+  rc=$?
+  out=$(<"$CAP/out")
+  err=$(<"$CAP/err")
+}
+
+# expect NAME CODE STREAM TEXT ARGS...: running ARGS exits CODE and STREAM (out or err) contains TEXT
+expect() {
+  local name=$1 code=$2 stream=$3 text=$4
+  shift 4
+  run "$@"
+  local got=$out
+  [ "$stream" = err ] && got=$err
+  if [ "$rc" -ne "$code" ]; then
+    not_ok "$name" "exit code $rc, expected $code"
+  elif [[ "$got" != *"$text"* ]]; then
+    not_ok "$name" "std$stream does not contain: $text"
+  else
+    ok "$name"
+  fi
+}
+
+# no leftover temporary trace files (AtomicFile writes PATH.part-PID) in the working directory
+no_part_files() {
+  compgen -G "$WORK/*.part-*" >/dev/null && return 1
+  compgen -G "$WORK/.*.part-*" >/dev/null && return 1
+  return 0
+}
+
+# ---- scenes written for the tests ----------------------------------------------------------
+
+# invalid YAML: a second ':' on line 3, at column 12
+cat >bad.yaml <<'EOF'
+name: bad
+description: the parser stops at the second colon below
+duration: 1: 2
+bodies:
+  - {name: a, shape: {circle: 1}}
+EOF
+
+# a stiff spring with explicit Euler and a large step: grows by ~1e5 per step until it overflows
+cat >diverge.yaml <<'EOF'
+name: diverge
+duration: 100
+sim: {integrator: explicit_euler, dt: 0.1}
+bodies:
+  - name: bob
+    shape: {circle: 0.1}
+    mass: 1
+    position: [1, 0]
+forces:
+  - {type: spring, body: bob, anchor: [0, 0], stiffness: 1e12}
+EOF
+
+# the poll scene with one wrong expected value (the end variant's angle at t = 1 is -0.25)
+sed 's/angle: -0.25,/angle: -0.3,/' "$POLL" >wrong_expect.yaml
+
+# ---- simulate: the poll's exact answers ----------------------------------------------------
+
+# json_check NAME PYTHON-EXPRESSIONS...: each expression, over d (the JSON) and b (its first body), is true
+json_check() {
+  local name=$1
+  shift
+  local message
+  if message=$(python3 - "$CAP/out" "$@" 2>&1 <<'EOF'
+import json, sys
+with open(sys.argv[1]) as f:
+    d = json.load(f)
+b = d["bodies"][0]
+bad = [e + "  (x=" + repr(eval(e.split("==")[0], {}, {"d": d, "b": b})) + ")"
+       for e in sys.argv[2:] if not eval(e, {}, {"d": d, "b": b})]
+if bad:
+    print("; ".join(bad))
+    sys.exit(1)
+EOF
+  ); then
+    ok "$name"
+  else
+    not_ok "$name" "$message"
+  fi
+}
+
+run simulate "$POLL" --variant end --until 1 --json
+if [ "$rc" -ne 0 ]; then
+  not_ok "simulate --variant end --until 1 --json exits 0" "exit code $rc"
+else
+  ok "simulate --variant end --until 1 --json exits 0"
+  for field in '"vx":0.3333333333333333' '"omega":-0.5' '"kinetic_energy":0.6666666666666666' '"variant":"end"'; do
+    if [[ "$out" == *"$field"* ]]; then ok "end variant JSON has $field"; else not_ok "end variant JSON has $field"; fi
+  done
+  json_check "end variant: v = (1/3, 0), omega = -1/2, KE = 2/3 exactly" \
+    'b["vx"] == 0.3333333333333333' 'b["vy"] == 0' 'b["omega"] == -0.5' \
+    'b["kinetic_energy"] == 0.6666666666666666' 'd["t"] == 1' 'd["steps"] == 1000' 'd["integrator"] == "rk4"' \
+    'd["momentum"] == [1, 0]' 'd["angular_momentum"] == -2'
+fi
+
+run simulate "$POLL" --variant center --until 1 --json
+if [ "$rc" -ne 0 ]; then
+  not_ok "simulate --variant center --json exits 0" "exit code $rc"
+else
+  ok "simulate --variant center --json exits 0"
+  json_check "center variant: v = (1/3, 0), omega = 0, KE = 1/6 exactly" \
+    'b["vx"] == 0.3333333333333333' 'b["omega"] == 0' 'b["kinetic_energy"] == 0.16666666666666666' \
+    'd["variant"] == "center"'
+fi
+
+expect "simulate prints a text table by default" 0 out "poll_bar_impulse [end]: t = 1" \
+  simulate "$POLL" --variant end --until 1
+
+# ---- simulate: bad input exits 2 -----------------------------------------------------------
+
+expect "a missing scene file exits 2 naming the file" 2 err "missing.yaml: cannot open" simulate missing.yaml
+
+run simulate bad.yaml
+if [ "$rc" -eq 2 ] && [[ "$err" == "bad.yaml:3:12: "* ]] && [[ "$err" == *"invalid YAML"* ]]; then
+  ok "a YAML syntax error exits 2 with stderr starting bad.yaml:3:12:"
+else
+  not_ok "a YAML syntax error exits 2 with stderr starting bad.yaml:3:12:" "exit code $rc"
+fi
+
+expect "an unknown variant exits 2 listing the variants" 2 err "center, end" simulate "$POLL" --variant nope
+expect "an unknown variant names it" 2 err "unknown variant 'nope'" simulate "$POLL" --variant nope
+expect "--integrator bogus exits 2 listing the integrators" 2 err "rk4" simulate "$POLL" --integrator bogus
+expect "--integrator bogus names it" 2 err "'bogus'" simulate "$POLL" --integrator bogus
+expect "--dt 0 exits 2" 2 err "--dt" simulate "$POLL" --dt 0
+expect "--dt -1 exits 2" 2 err "--dt" simulate "$POLL" --dt -1
+expect "--dt nan exits 2" 2 err "--dt" simulate "$POLL" --dt nan
+expect "--until -1 exits 2" 2 err "--until" simulate "$POLL" --until -1
+expect "no subcommand exits 2" 2 err "subcommand" 
+expect "an unknown subcommand exits 2" 2 err "" render-everything "$POLL"
+expect "simulate without a scene exits 2" 2 err "scene" simulate
+
+# ---- simulate --trace ----------------------------------------------------------------------
+
+header='t,body,x,y,angle,vx,vy,omega,kinetic_energy'
+run simulate "$POLL" --variant end --until 1 --json --trace out.csv
+if [ "$rc" -ne 0 ] || [ ! -f out.csv ]; then
+  not_ok "--trace out.csv exits 0 and writes out.csv" "exit code $rc"
+else
+  ok "--trace out.csv exits 0 and writes out.csv"
+  first=$(head -n 1 out.csv)
+  if [ "$first" = "$header" ]; then ok "the trace header is exactly $header"; else not_ok "the trace header is exactly $header" "got: $first"; fi
+  # one row per body initially, after every step and after every event: 1 + (1000 + 1 + 1) * 1
+  steps=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["steps"])' "$CAP/out")
+  want=$((1 + (steps + 1 + 1) * 1))
+  lines=$(wc -l <out.csv)
+  if [ "$steps" = 1000 ] && [ "$lines" -eq "$want" ] && [ "$lines" -eq 1003 ]; then
+    ok "the trace has 1 + (steps + 1 + events) * bodies = 1003 lines"
+  else
+    not_ok "the trace has 1 + (steps + 1 + events) * bodies = 1003 lines" "steps $steps, $lines lines, expected $want"
+  fi
+  # the event row: at t = 0.5, after the step row, with the impulse's velocities
+  event_row=$(sed -n 503p out.csv)
+  if [ "$(sed -n 502p out.csv | cut -d, -f1,2,8)" = "0.5,bar,0" ] && [ "$(echo "$event_row" | cut -d, -f1,2,6,8)" = "0.5,bar,0.3333333333333333,-0.5" ]; then
+    ok "the trace has the step row and then the event row at t = 0.5"
+  else
+    not_ok "the trace has the step row and then the event row at t = 0.5" "line 503: $event_row"
+  fi
+  if [ "$(tail -n 1 out.csv | cut -d, -f1)" = 1 ]; then ok "the trace ends at t = 1"; else not_ok "the trace ends at t = 1" "$(tail -n 1 out.csv)"; fi
+fi
+if no_part_files; then ok "a good trace leaves no .part file"; else not_ok "a good trace leaves no .part file" "$(ls -a)"; fi
+
+expect "--trace to an unwritable place exits 2 naming it" 2 err "/nonexistent-dir/x.csv" \
+  simulate "$POLL" --until 0.1 --trace /nonexistent-dir/x.csv
+
+# ---- a diverging simulation ----------------------------------------------------------------
+
+run simulate diverge.yaml
+if [ "$rc" -ne 1 ]; then
+  not_ok "a diverging simulation exits 1" "exit code $rc"
+else
+  ok "a diverging simulation exits 1"
+  t=$(sed -n 's/.*diverged at t = \([0-9.eE+-]*\).*/\1/p' <<<"$err")
+  if [ -n "$t" ] && awk -v t="$t" 'BEGIN { exit !(t > 0 && t <= 100) }'; then
+    ok "the divergence message names the time (t = $t)"
+  else
+    not_ok "the divergence message names the time"
+  fi
+  if [[ "$err" == *"'bob'"* ]]; then ok "the divergence message names the body"; else not_ok "the divergence message names the body"; fi
+  if [[ "$err" == *"smaller step"* && "$err" == *"--dt 0.025"* ]]; then
+    ok "the divergence message suggests a smaller dt (--dt 0.025)"
+  else
+    not_ok "the divergence message suggests a smaller dt (--dt 0.025)"
+  fi
+fi
+
+run simulate diverge.yaml --trace diverged.csv
+if [ "$rc" -eq 1 ] && [ ! -e diverged.csv ] && no_part_files; then
+  ok "a diverging run with --trace exits 1 and leaves no trace and no .part file"
+else
+  not_ok "a diverging run with --trace exits 1 and leaves no trace and no .part file" "exit code $rc; $(ls -a | tr '\n' ' ')"
+fi
+
+run simulate "$POLL" --until 0.2 --trace keep.csv
+if [ "$rc" -ne 0 ] || [ ! -s keep.csv ]; then
+  not_ok "a good run writes keep.csv" "exit code $rc"
+else
+  before=$(cksum <keep.csv)
+  run simulate diverge.yaml --trace keep.csv
+  after=$(cksum <keep.csv)
+  if [ "$rc" -eq 1 ] && [ "$before" = "$after" ] && no_part_files; then
+    ok "a diverging run leaves an existing trace file unchanged"
+  else
+    not_ok "a diverging run leaves an existing trace file unchanged" "exit code $rc; cksum $before -> $after"
+  fi
+fi
+
+# ---- check ---------------------------------------------------------------------------------
+
+run check "$SCENES"/*.yaml
+if [ "$rc" -eq 0 ] && [[ "$out" == *"  ok    "* ]] && [[ "$out" != *FAIL* ]]; then
+  ok "check passes every scene in scenes/"
+else
+  not_ok "check passes every scene in scenes/" "exit code $rc"
+fi
+
+if ! grep -q 'angle: -0.3,' wrong_expect.yaml; then
+  not_ok "check with a wrong expected value exits 1 and prints FAIL" "could not write wrong_expect.yaml"
+else
+  expect "check with a wrong expected value exits 1 and prints FAIL" 1 out "FAIL" check wrong_expect.yaml
+  expect "check reports the failing quantity against its expected value" 1 out "expected -0.3" check wrong_expect.yaml
+fi
+
+run check bad.yaml
+if [ "$rc" -eq 2 ] && [[ "$err" == "bad.yaml:3:12: "* ]]; then
+  ok "check on a bad scene exits 2 with FILE:LINE:COL"
+else
+  not_ok "check on a bad scene exits 2 with FILE:LINE:COL" "exit code $rc"
+fi
+expect "check on a missing file exits 2" 2 err "missing.yaml" check missing.yaml
+expect "check on a diverging scene exits 1" 1 err "diverged" check diverge.yaml
+expect "check without files exits 2" 2 err "" check
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
