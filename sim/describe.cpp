@@ -19,6 +19,9 @@ void describeBodies(const World& world, DebugDraw& draw, double opacity) {
         draw.circle(b.x, b.shape.radius, style);
         draw.segment(b.x, pose.toWorld({b.shape.radius, 0.0}), {DrawRole::BodyAxis, static_cast<int>(i), opacity});
         break;
+      case ShapeKind::Plane:
+        draw.halfPlane(b.x, b.q.apply(b.shape.planeNormal), style);
+        break;
     }
   }
 }

@@ -1,6 +1,7 @@
 #include "shape.h"
 
 #include <algorithm>
+#include <limits>
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
@@ -24,6 +25,15 @@ Shape makeBox(double width, double height) {
     throw std::invalid_argument("box width and height must be positive finite numbers");
   const double w = 0.5 * width, h = 0.5 * height;
   return makePolygon({{-w, -h}, {w, -h}, {w, h}, {-w, h}});
+}
+
+Shape makePlane(const Vec2& normal) {
+  if (!isFinite(normal) || normal.norm() == 0.0)
+    throw std::invalid_argument("a plane's normal must be a non-zero vector, e.g. [0, 1] for a floor");
+  Shape s;
+  s.kind = ShapeKind::Plane;
+  s.planeNormal = normal.normalized();
+  return s;
 }
 
 namespace {
@@ -93,6 +103,11 @@ AreaProperties areaProperties(const Shape& shape) {
     p.secondMoment = 0.5 * p.area * r2;
     return p;
   }
+  // a half-plane has no finite area: it can only be static
+  if (shape.kind == ShapeKind::Plane) {
+    p.area = p.secondMoment = std::numeric_limits<double>::infinity();
+    return p;
+  }
   // triangle fan from the first vertex, which keeps round-off small far from the origin
   // (the polygon formulas as in Box2D's b2ComputePolygonMass)
   const auto& v = shape.vertices;
@@ -123,6 +138,7 @@ Shape shifted(const Shape& shape, const Vec2& origin) {
 
 double boundingRadius(const Shape& shape) {
   if (shape.kind == ShapeKind::Circle) return shape.radius;
+  if (shape.kind == ShapeKind::Plane) return std::numeric_limits<double>::infinity();
   double r2 = 0.0;
   for (const Vec2& p : shape.vertices) r2 = std::max(r2, p.squaredNorm());
   return std::sqrt(r2);
