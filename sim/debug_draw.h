@@ -21,7 +21,8 @@ enum class DrawRole {
   Trail,           // the path of a center of mass
   ReferenceEdge,   // the separating-axis reference edge
   IncidentVertex,  // the separating-axis incident vertex
-  Label,           // text
+  Label,           // text, centered on its point
+  Caption,         // text fixed to the frame (the time): its point is the top-left corner
 };
 
 struct DrawStyle {

@@ -1,0 +1,75 @@
+// The drawing interface implemented with OpenGL 1.x (fixed function, through OSMesa): world
+// coordinates, y up, sizes of lines, dots and arrow heads in output pixels whatever the zoom.
+// Text is queued and blended in after the GL frame is read back (FreeType, see text.h), so it
+// always lies on top.
+//
+// Each call is one "primitive" under a fresh stencil value: a pixel is written at most once per
+// primitive, so the overlapping parts of an outline (edge quads and round joins) blend once when
+// translucent, and a static body's hatching stays inside its shape.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "camera.h"
+#include "debug_draw.h"
+#include "gl_context.h"
+#include "style.h"
+#include "text.h"
+
+namespace render {
+
+class GlCanvas : public sim::DebugDraw {
+ public:
+  GlCanvas(GlContext& gl, TextRenderer& text, const Style& style);
+
+  // start a frame: clear to the background and look through `camera`
+  void begin(const Camera& camera);
+  // the frame, with the queued text on top
+  Image finish();
+
+  void polygon(const std::vector<Vec2>& vertices, const sim::DrawStyle& style) override;
+  void circle(const Vec2& center, double radius, const sim::DrawStyle& style) override;
+  void halfPlane(const Vec2& point, const Vec2& normal, const sim::DrawStyle& style) override;
+  void segment(const Vec2& a, const Vec2& b, const sim::DrawStyle& style) override;
+  void point(const Vec2& p, const sim::DrawStyle& style) override;
+  void arrow(const Vec2& tail, const Vec2& head, const sim::DrawStyle& style) override;
+  void text(const Vec2& at, const std::string& text, const sim::DrawStyle& style) override;
+
+ private:
+  struct QueuedText {
+    Vec2 pixel;
+    std::string text;
+    Anchor anchor;
+    Color color;
+  };
+  // colors of a role: a fill (for shapes) and a stroke
+  Color fillColor(const sim::DrawStyle& s) const;
+  Color strokeColor(const sim::DrawStyle& s) const;
+  // a stroke's width in output pixels
+  double strokeWidth(sim::DrawRole role) const;
+
+  // the GL work: a fresh stencil value per primitive, vertices relative to the camera center
+  void beginPrimitive();
+  void color(const Color& c, double opacity);
+  void vertex(const Vec2& world);
+  void fillConvex(const std::vector<Vec2>& vertices);
+  void fillDisc(const Vec2& center, double radius);
+  void ring(const Vec2& center, double radius, double width);
+  void strokeSegment(const Vec2& a, const Vec2& b, double width);
+  void strokeClosed(const std::vector<Vec2>& vertices, double width);
+  void strokeArrow(const Vec2& tail, const Vec2& head, double width);
+  // diagonal lines over the pixels of the primitive just drawn
+  void hatch(const Bounds& area, const Color& c, double opacity);
+  int discSegments(double radius) const;
+
+  GlContext& gl_;
+  TextRenderer& textRenderer_;
+  const Style& style_;
+  Camera camera_{Vec2::Zero(), 1.0, 1, 1};
+  double px_ = 1.0;  // world length of one output pixel
+  int stencil_ = 0;
+  std::vector<QueuedText> texts_;
+};
+
+}  // namespace render

@@ -1,0 +1,35 @@
+#include "style.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace render {
+
+Style makeStyle(const sim::SceneDef& scene, int frameHeight) {
+  const sim::RenderDef& r = scene.render;
+  const sim::ColorsDef& c = r.colors;
+  Style s;
+  s.background = Color::parse(r.background);
+  s.staticBody = Color::parse(c.staticBody);
+  s.contact = Color::parse(c.contact);
+  s.normal = Color::parse(c.normal);
+  s.impulse = Color::parse(c.impulse);
+  s.velocity = Color::parse(c.velocity);
+  s.trail = Color::parse(c.trail);
+  s.referenceEdge = Color::parse(c.referenceEdge);
+  s.incidentVertex = Color::parse(c.incidentVertex);
+  s.text = Color::parse(c.text);
+  // the palette in order over the bodies without a color of their own (static ones are gray)
+  size_t next = 0;
+  for (const sim::BodyDef& b : scene.bodies) {
+    if (!b.color.empty()) s.bodies.push_back(Color::parse(b.color));
+    else if (b.isStatic) s.bodies.push_back(s.staticBody);
+    else s.bodies.push_back(Color::parse(c.palette[next++ % c.palette.size()]));
+  }
+  s.lineWidth = r.lineWidth;
+  // 20 px at 720p: readable on a projector, small enough not to cover the bodies
+  s.fontSize = r.fontSize > 0 ? static_cast<int>(std::lround(r.fontSize)) : std::max(11, static_cast<int>(std::lround(frameHeight / 36.0)));
+  return s;
+}
+
+}  // namespace render

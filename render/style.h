@@ -1,0 +1,29 @@
+// What each drawing role looks like in one scene: colors from the bodies' own `color` and the
+// render: block, line width and text size in output pixels. The canvas turns a DrawStyle (role,
+// body, opacity) into GL colors and sizes through this.
+#pragma once
+
+#include <vector>
+
+#include "color.h"
+#include "debug_draw.h"
+#include "scene_def.h"
+
+namespace render {
+
+struct Style {
+  Color background{1.0, 1.0, 1.0, 1.0};
+  std::vector<Color> bodies;  // by body index
+  Color staticBody, contact, normal, impulse, velocity, trail, referenceEdge, incidentVertex, text;
+  double lineWidth = 2.0;  // output pixels
+  int fontSize = 20;       // output pixels per em
+
+  // a body's base color; `trail` for -1 or an index past the end
+  Color body(int index) const { return index >= 0 && index < static_cast<int>(bodies.size()) ? bodies[index] : trail; }
+};
+
+// the scene's style for frames `frameHeight` pixels high: each body its own color, or the palette's
+// next one (static bodies the static color), the render: block's colors, line width and font size
+Style makeStyle(const sim::SceneDef& scene, int frameHeight);
+
+}  // namespace render
