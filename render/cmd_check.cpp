@@ -7,13 +7,17 @@
 #include "expect.h"
 #include "json_writer.h"
 #include "scene_build.h"
+#include "scene_options.h"
 #include "scene_yaml.h"
 
 namespace render {
 
 namespace {
 
-std::string plural(size_t n, const std::string& word) { return std::to_string(n) + " " + word + (n == 1 ? "" : "s"); }
+std::string plural(size_t n, const std::string& word) {
+  if (n == 1) return "1 " + word;
+  return std::to_string(n) + " " + (word.ends_with("y") ? word.substr(0, word.size() - 1) + "ies" : word + "s");
+}
 
 // what the scene makes the simulator model: a scene pays only for what it uses
 std::string describeModel(const sim::SceneDef& d) {
@@ -40,24 +44,36 @@ std::string formatValues(const std::vector<double>& v) {
   return s + ")";
 }
 
+// say where the event method found impacts piling up and made the contact resting
+void reportResting(const sim::SceneDef& def, const sim::World& w) {
+  for (const sim::RestingRecord& r : w.resting)
+    std::cout << "  resting: '" << def.bodies[r.a].name << "' and '" << def.bodies[r.b].name
+              << "' came to rest at t = " << formatNumber(r.t) << " (impacts piled up; the contact now rests)\n";
+}
+
 // one scene, one variant ("" for the base); returns false when an expect fails
 bool checkCase(const std::string& file, const std::string& variant) {
   const sim::SceneDef def = sim::loadSceneFile(file, variant);
   std::cout << file << (variant.empty() ? "" : " [" + variant + "]") << ": " << describeModel(def) << '\n';
+  sim::World w = startWorld(def, file);
+  std::cout << "  collisions: " << describeCollisionMethod(w) << '\n';
   if (def.expects.empty()) {
     // still run it: a scene that diverges is not a good scene
-    sim::World w = sim::buildWorld(def);
     w.advanceTo(def.duration);
-    std::cout << "  ran to t = " << formatNumber(def.duration) << " (no expect entries)\n";
+    std::cout << "  ran to t = " << formatNumber(def.duration) << " (no expect entries)";
+    if (!w.impacts.empty()) std::cout << ", " << w.impacts.size() << " impulses";
+    std::cout << '\n';
+    reportResting(def, w);
     return true;
   }
   bool ok = true;
-  for (const sim::CheckResult& r : sim::runExpects(def)) {
+  for (const sim::CheckResult& r : sim::runExpects(def, w)) {
     ok = ok && r.passed();
     std::cout << (r.passed() ? "  ok    " : "  FAIL  ") << "t = " << formatNumber(r.time) << "  " << r.quantity
               << " = " << formatValues(r.actual) << ", expected " << formatValues(r.expected) << ", error "
               << formatNumber(r.error) << " (tolerance " << formatNumber(r.tolerance) << ")\n";
   }
+  reportResting(def, w);
   return ok;
 }
 
@@ -76,6 +92,9 @@ int check(const std::vector<std::string>& files) {
     } catch (const sim::Diverged& d) {
       std::cerr << file << ": the simulation diverged at t = " << formatNumber(d.time) << " (body #" << d.body
                 << "); use a smaller dt or another integrator\n";
+      if (code == kExitOk) code = kExitFailure;
+    } catch (const std::runtime_error& e) {
+      std::cerr << file << ": " << e.what() << '\n';
       if (code == kExitOk) code = kExitFailure;
     }
   }

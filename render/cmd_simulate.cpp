@@ -72,6 +72,42 @@ void printJson(const sim::SceneDef& def, const sim::World& w) {
   const sim::Vec2 p = sim::linearMomentum(w);
   j.key("momentum").beginArray().value(p.x()).value(p.y()).endArray();
   j.field("angular_momentum", sim::angularMomentum(w));
+  j.field("collision_method", sim::collisionMethodName(w.collisions));
+  j.field("collision_method_reason", describeCollisionMethod(w));
+  auto name = [&](int i) { return def.bodies[i].name; };
+  auto pair = [&](const sim::Vec2& v) -> JsonWriter& { return j.beginArray().value(v.x()).value(v.y()).endArray(); };
+  // every impulse the collision response applied; b is the obstacle for a body–obstacle collision
+  j.key("collisions").beginArray();
+  for (const sim::ImpactRecord& r : w.impacts) {
+    j.beginObject().field("t", r.t).field("a", name(r.a)).field("b", name(r.b));
+    j.key("point");
+    pair(r.point);
+    j.key("normal");
+    pair(r.normal);
+    j.field("impulse", r.impulse).field("tangent_impulse", r.tangentImpulse);
+    j.field("vn_before", r.vnBefore).field("vn_after", r.vnAfter).endObject();
+  }
+  j.endArray();
+  // the touching pairs at the end time
+  j.key("contacts").beginArray();
+  for (const sim::Contact& c : w.findContacts(sim::settings::kContactMargin)) {
+    j.beginObject().field("a", name(c.a)).field("b", name(c.b));
+    j.key("normal");
+    pair(c.manifold.normal);
+    j.key("points").beginArray();
+    for (int k = 0; k < c.manifold.count; ++k) {
+      j.beginObject().key("point");
+      pair(c.manifold.points[k].point);
+      j.field("separation", c.manifold.points[k].separation).endObject();
+    }
+    j.endArray().endObject();
+  }
+  j.endArray();
+  // contacts the event method turned into resting contact (impacts piling up in finite time)
+  j.key("resting").beginArray();
+  for (const sim::RestingRecord& r : w.resting)
+    j.beginObject().field("t", r.t).field("a", name(r.a)).field("b", name(r.b)).endObject();
+  j.endArray();
   j.endObject();
   std::cout << '\n';
 }
@@ -95,13 +131,17 @@ void printText(const sim::SceneDef& def, const sim::World& w) {
   std::cout << std::setprecision(10) << "energy: kinetic " << e.kinetic << ", potential " << e.potential << ", total "
             << e.total() << "\nmomentum: (" << p.x() << ", " << p.y() << "), angular momentum about the origin: "
             << sim::angularMomentum(w) << '\n';
+  std::cout << "collisions: " << describeCollisionMethod(w) << "; " << w.impacts.size() << " impulses applied";
+  for (const sim::RestingRecord& r : w.resting)
+    std::cout << "; '" << def.bodies[r.a].name << "' and '" << def.bodies[r.b].name << "' came to rest at t = " << r.t;
+  std::cout << '\n';
 }
 
 int simulate(const SimulateOptions& o) {
   const sim::SceneDef def = o.load();
   const double until = o.until.value_or(def.duration);
   if (!(until >= 0.0) || !std::isfinite(until)) throw UsageError("--until: the end time must be zero or a positive finite number");
-  sim::World world = sim::buildWorld(def);
+  sim::World world = startWorld(def, o.scene);
 
   std::unique_ptr<AtomicFile> traceFile;
   std::unique_ptr<TraceWriter> trace;
@@ -120,6 +160,9 @@ int simulate(const SimulateOptions& o) {
     std::cerr << o.scene << ": the simulation diverged at t = " << formatNumber(d.time) << ": body '"
               << def.bodies[d.body].name << "' has a non-finite state; try a smaller step (--dt "
               << formatNumber(def.dt / 4) << ") or another integrator (--integrator rk4)\n";
+    return kExitFailure;
+  } catch (const std::runtime_error& e) {
+    std::cerr << o.scene << ": " << e.what() << '\n';
     return kExitFailure;
   }
   if (traceFile) traceFile->commit();

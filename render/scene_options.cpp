@@ -1,8 +1,10 @@
 #include "scene_options.h"
 
 #include <cmath>
+#include <sstream>
 
 #include "commands.h"
+#include "scene_build.h"
 #include "scene_yaml.h"
 
 namespace render {
@@ -11,6 +13,7 @@ void SceneOptions::addTo(CLI::App& command) {
   command.add_option("--variant", variant, "the named variant of the scene to run");
   command.add_option("--integrator", integrator, "explicit_euler, symplectic_euler, midpoint or rk4");
   command.add_option("--dt", dt, "fixed time step in seconds");
+  command.add_option("--collisions", collisions, "auto, none, event, isolated or sequential");
 }
 
 sim::SceneDef SceneOptions::load() const {
@@ -28,7 +31,44 @@ sim::SceneDef SceneOptions::load() const {
     if (!(*dt > 0.0) || !std::isfinite(*dt)) throw UsageError("--dt: the time step must be a positive finite number");
     def.dt = *dt;
   }
+  if (!collisions.empty()) {
+    const auto method = sim::collisionMethodFromName(collisions);
+    if (!method) {
+      std::string names;
+      for (auto n : sim::collisionMethodNames()) names += (names.empty() ? "" : ", ") + std::string(n);
+      throw UsageError("--collisions: unknown collision method '" + collisions + "'; choose one of: " + names);
+    }
+    def.collisions = *method;
+  }
   return def;
+}
+
+sim::World startWorld(const sim::SceneDef& def, const std::string& file) {
+  sim::World world = sim::buildWorld(def);
+  try {
+    world.start();
+  } catch (const sim::InitialOverlap& o) {
+    std::ostringstream m;
+    m << "bodies '" << def.bodies[o.a].name << "' and '" << def.bodies[o.b].name << "' overlap by " << o.depth
+      << " at t = 0; the event method starts from separated bodies: move them apart, or choose "
+         "--collisions sequential";
+    const sim::SourceLoc at = def.bodies[o.b].loc;
+    throw sim::SceneError(file, at.line, at.column, m.str());
+  }
+  return world;
+}
+
+std::string describeCollisionMethod(const sim::World& world) {
+  std::string s(sim::collisionMethodName(world.collisions));
+  switch (world.methodReason) {
+    case sim::MethodReason::Requested: return s + " (as the scene or the command line asks)";
+    case sim::MethodReason::FewBodies: return s + " (auto: no two bodies can meet, so no collision model is needed)";
+    case sim::MethodReason::IsolatedImpacts:
+      return s + " (auto: no bodies touch at the start, so impacts are isolated and can be resolved exactly)";
+    case sim::MethodReason::PersistentContacts:
+      return s + " (auto: bodies touch at the start under load, so contacts persist and need the iterative solver)";
+  }
+  return s;
 }
 
 }  // namespace render

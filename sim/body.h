@@ -22,6 +22,8 @@ struct Body {
   double mass = 1.0, invMass = 1.0;
   double inertia = 1.0, invInertia = 1.0;
   bool isStatic = false;
+  double restitution = 0.5;  // c_r, combined per pair (contact.h)
+  double friction = 0.0;     // Coulomb μ
 
   Vec2 x = Vec2::Zero();  // center of mass, world
   double angle = 0.0;     // continuous (not wrapped), counter-clockwise

@@ -69,26 +69,18 @@ int clipSegment(const ClipPoint in[2], ClipPoint out[2], const Vec2& normal, dou
   return count;
 }
 
-// polygon against polygon: SAT picks the reference edge, the incident edge is clipped to its sides
-Manifold polygons(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, double margin) {
-  const WorldPolygon A = inWorld(a, pa), B = inWorld(b, pb);
-  const EdgeSeparation ea = maxSeparation(A, B), eb = maxSeparation(B, A);
-  Manifold m;
-  // the notes' separation(P, Q) and its features, exactly as on the slide
-  m.sat = {true, std::max(ea.separation, eb.separation), ea.separation >= eb.separation,
-           ea.separation >= eb.separation ? ea.edge : eb.edge, ea.separation >= eb.separation ? ea.vertex : eb.vertex};
-  m.separation = m.sat.separation;
-  // for the manifold, keep A's edge unless B's is clearly better, so the choice does not flip
-  // from step to step on near ties (Box2D's b2CollidePolygons does the same)
-  const bool refA = !(eb.separation > ea.separation + 0.05 * settings::kContactMargin);
+// the points of a polygon pair with the reference edge on A (refA) or on B: the incident edge
+// (the one most anti-parallel to the reference normal) clipped to the reference edge's side
+// planes (Box2D-Lite's clipping), keeping the points within the margin of the reference face
+void clipToReference(const WorldPolygon& A, const WorldPolygon& B, const EdgeSeparation& ea, const EdgeSeparation& eb,
+                     bool refA, double margin, Manifold& m) {
   const WorldPolygon& ref = refA ? A : B;
   const WorldPolygon& inc = refA ? B : A;
   const int edge = refA ? ea.edge : eb.edge;
   const Vec2 nRef = ref.n[edge];
   m.normal = refA ? Vec2(-nRef) : nRef;
-  if (m.separation > margin) return m;
+  m.count = 0;
 
-  // the incident edge: the one whose normal is most anti-parallel to the reference normal
   int incEdge = 0;
   double most = kInf;
   for (size_t i = 0; i < inc.size(); ++i) {
@@ -96,23 +88,54 @@ Manifold polygons(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb
     if (d < most) most = d, incEdge = static_cast<int>(i);
   }
   const ClipPoint incident[2] = {{inc.v[incEdge], 0}, {inc.v[(incEdge + 1) % inc.size()], 1}};
-
-  // clip it to the reference edge's side planes
   const Vec2 v1 = ref.v[edge], v2 = ref.v[(edge + 1) % ref.size()];
   const Vec2 t = (v2 - v1).normalized();
   ClipPoint once[3], twice[3];
-  if (clipSegment(incident, once, -t, -t.dot(v1), 2) < 2) return m;
-  if (clipSegment(once, twice, t, t.dot(v2), 3) < 2) return m;
-
-  // keep the clipped points that are within the margin of the reference face
-  m.separation = kInf;
+  if (clipSegment(incident, once, -t, -t.dot(v1), 2) < 2) return;
+  if (clipSegment(once, twice, t, t.dot(v2), 3) < 2) return;
   for (int k = 0; k < 2; ++k) {
-    const double s = nRef.dot(twice[k].p - v1);
-    if (s > margin) continue;
-    m.points[m.count++] = {twice[k].p - 0.5 * s * nRef, s, featureId(refA, edge, incEdge, twice[k].tag)};
-    m.separation = std::min(m.separation, s);
+    const double sep = nRef.dot(twice[k].p - v1);
+    if (sep > margin) continue;
+    m.points[m.count++] = {twice[k].p - 0.5 * sep * nRef, sep, featureId(refA, edge, incEdge, twice[k].tag)};
   }
-  if (m.count == 0) m.separation = m.sat.separation;
+}
+
+// polygon against polygon: SAT picks the reference edge, the incident edge is clipped to its sides
+Manifold polygons(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, double margin) {
+  const WorldPolygon A = inWorld(a, pa), B = inWorld(b, pb);
+  const EdgeSeparation ea = maxSeparation(A, B), eb = maxSeparation(B, A);
+  Manifold m;
+  // the notes' separation(P, Q) and its features, exactly as on the slide
+  const bool bestA = ea.separation >= eb.separation;
+  m.sat = {true, std::max(ea.separation, eb.separation), bestA, bestA ? ea.edge : eb.edge,
+           bestA ? ea.vertex : eb.vertex};
+  m.separation = m.sat.separation;
+  // for the manifold, keep A's edge unless B's is clearly better, so the choice does not flip
+  // from step to step on near ties (Box2D's b2CollidePolygons does the same)
+  const bool refA = !(eb.separation > ea.separation + 0.05 * settings::kContactMargin);
+  clipToReference(A, B, ea, eb, refA, margin, m);
+  if (m.separation > margin) return m;
+  // the kept edge's sides can miss the incident edge near a corner: then use the best edge
+  if (m.count == 0 && refA != bestA) clipToReference(A, B, ea, eb, bestA, margin, m);
+  // corner against corner: no edge's sides hold the other's edge; the incident vertex touches
+  // the reference edge's end, so the contact runs between the closest points of the two
+  if (m.count == 0) {
+    const WorldPolygon& ref = bestA ? A : B;
+    const WorldPolygon& inc = bestA ? B : A;
+    const int e = m.sat.referenceEdge;
+    const Vec2 v1 = ref.v[e], v2 = ref.v[(e + 1) % ref.size()], w = inc.v[m.sat.incidentVertex];
+    const double along = std::clamp((w - v1).dot(v2 - v1) / (v2 - v1).squaredNorm(), 0.0, 1.0);
+    const Vec2 closest = v1 + along * (v2 - v1), d = w - closest;
+    Vec2 n = ref.n[e];
+    double sep = m.sat.separation;
+    if (d.dot(n) > 0.0 && d.norm() > 0.0) n = d / d.norm(), sep = d.norm();
+    if (sep > margin) return m;
+    m.normal = bestA ? Vec2(-n) : n;
+    m.count = 1;
+    m.points[0] = {w - 0.5 * sep * n, sep, featureId(bestA, e, m.sat.incidentVertex, 4)};
+  }
+  m.separation = kInf;
+  for (int k = 0; k < m.count; ++k) m.separation = std::min(m.separation, m.points[k].separation);
   return m;
 }
 

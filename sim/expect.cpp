@@ -45,10 +45,14 @@ std::vector<CheckResult> evaluate(const ExpectDef& e, const SceneDef& def, const
 }
 
 std::vector<CheckResult> runExpects(const SceneDef& def) {
+  World world = buildWorld(def);
+  return runExpects(def, world);
+}
+
+std::vector<CheckResult> runExpects(const SceneDef& def, World& world) {
   std::vector<const ExpectDef*> order;
   for (const ExpectDef& e : def.expects) order.push_back(&e);
   std::stable_sort(order.begin(), order.end(), [](auto* a, auto* b) { return a->time < b->time; });
-  World world = buildWorld(def);
   std::vector<CheckResult> out;
   for (const ExpectDef* e : order) {
     world.advanceTo(e->time);

@@ -21,7 +21,9 @@ struct CheckResult {
 // every quantity of one entry, for a world already at the entry's time
 std::vector<CheckResult> evaluate(const ExpectDef& expect, const SceneDef& def, const World& world);
 
-// builds the scene's world and runs it through every expect entry in time order
+// runs the scene's world through every expect entry in time order
+std::vector<CheckResult> runExpects(const SceneDef& def, World& world);
+// the same on a world built from the definitions
 std::vector<CheckResult> runExpects(const SceneDef& def);
 
 }  // namespace sim

@@ -9,6 +9,7 @@ int SceneDef::bodyIndex(const std::string& n) const {
 }
 
 MassProperties massProperties(const BodyDef& def) {
+  if (def.shape.kind == ShapeKind::Plane) return {};
   const AreaProperties a = areaProperties(def.shape);
   const double density = def.density.value_or(settings::kDefaultDensity);
   MassProperties m;
@@ -24,6 +25,9 @@ World buildWorld(const SceneDef& def) {
   w.integrator = def.integrator;
   w.dt = def.dt;
   w.forces.gravity = def.gravity;
+  w.collisions = def.collisions;
+  w.velocityIterations = def.velocityIterations;
+  w.positionIterations = def.positionIterations;
 
   // body points are written in the shape's coordinates; the body origin moves to the centroid
   std::vector<Vec2> centroid;
@@ -37,6 +41,8 @@ World buildWorld(const SceneDef& def) {
     b.inertia = mp.inertia;
     b.invInertia = 1.0 / mp.inertia;
     b.setState({bd.position, bd.angle, bd.velocity, bd.angularVelocity});
+    b.restitution = bd.restitution.value_or(def.restitution);
+    b.friction = bd.friction.value_or(def.friction);
     if (bd.isStatic) b.makeStatic();
     w.bodies.push_back(std::move(b));
   }

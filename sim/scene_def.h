@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "contact.h"
 #include "integrators.h"
 #include "render_def.h"
 #include "settings.h"
@@ -32,6 +33,9 @@ struct BodyDef {
   bool isStatic = false;
   std::string color;  // "#rrggbb"; empty for the renderer's choice
   std::string label;
+  std::optional<double> restitution;  // c_r; the world's when absent
+  std::optional<double> friction;     // μ; the world's when absent
+  SourceLoc loc;
 };
 
 struct PointForceDef {
@@ -92,8 +96,13 @@ struct SceneDef {
   std::vector<std::string> variantNames;
   double duration = settings::kDefaultDuration;
   Vec2 gravity = Vec2::Zero();
+  double restitution = settings::kDefaultRestitution;
+  double friction = settings::kDefaultFriction;
   Integrator integrator = Integrator::SymplecticEuler;
   double dt = settings::kDefaultDt;
+  CollisionMethod collisions = CollisionMethod::Auto;
+  int velocityIterations = settings::kVelocityIterations;
+  int positionIterations = settings::kPositionIterations;
   std::vector<BodyDef> bodies;
   std::vector<PointForceDef> pointForces;
   std::vector<SpringDef> springs;

@@ -82,11 +82,17 @@ class SceneReader : public Reader {
     if (root["description"]) s.description = text(root["description"], "description");
     if (root["duration"]) s.duration = positive(root["duration"], "duration");
     if (const YAML::Node w = root["world"]) {
-      checkKeys(w, {"gravity"}, "world");
+      checkKeys(w, {"gravity", "restitution", "friction"}, "world");
       if (w["gravity"]) s.gravity = vec2(w["gravity"], "gravity");
+      if (w["restitution"]) s.restitution = restitution(w["restitution"]);
+      if (w["friction"]) s.friction = nonNegative(w["friction"], "friction");
     }
     if (const YAML::Node sim = root["sim"]) {
-      checkKeys(sim, {"integrator", "dt"}, "sim");
+      checkKeys(sim, {"integrator", "dt", "collisions", "iterations", "position_iterations"}, "sim");
+      if (sim["collisions"])
+        s.collisions = named(sim["collisions"], "collisions", collisionMethodFromName, joined(collisionMethodNames()));
+      if (sim["iterations"]) s.velocityIterations = count(sim["iterations"], "iterations");
+      if (sim["position_iterations"]) s.positionIterations = count(sim["position_iterations"], "position_iterations", 0);
       if (sim["integrator"])
         s.integrator = named(sim["integrator"], "integrator", integratorFromName, joined(integratorNames()));
       if (sim["dt"]) s.dt = positive(sim["dt"], "dt");
@@ -137,8 +143,9 @@ class SceneReader : public Reader {
   }
 
   Shape readShape(const YAML::Node& n) {
-    checkKeys(n, {"box", "polygon", "circle"}, "shape");
-    if (n.size() != 1) fail(n, "a shape is exactly one of {box: [w, h]}, {polygon: [[x, y], ...]}, {circle: r}");
+    checkKeys(n, {"box", "polygon", "circle", "plane"}, "shape");
+    if (n.size() != 1)
+      fail(n, "a shape is exactly one of {box: [w, h]}, {polygon: [[x, y], ...]}, {circle: r}, {plane: {point, normal}}");
     try {
       if (const YAML::Node box = n["box"]) {
         const Vec2 size = vec2(box, "box");
@@ -146,6 +153,15 @@ class SceneReader : public Reader {
         return makeBox(size.x(), size.y());
       }
       if (const YAML::Node circle = n["circle"]) return makeCircle(positive(circle, "circle"));
+      if (const YAML::Node plane = n["plane"]) {
+        checkKeys(plane, {"point", "normal"}, "plane");
+        const YAML::Node normal = required(plane, "normal", "a plane");
+        try {
+          return makePlane(vec2(normal, "normal"));
+        } catch (const std::invalid_argument& e) {
+          fail(normal, e.what());
+        }
+      }
       const YAML::Node poly = n["polygon"];
       if (!poly.IsSequence()) fail(poly, "expected a list of [x, y] vertices for 'polygon', got " + describe(poly));
       std::vector<Vec2> vertices;
@@ -158,9 +174,10 @@ class SceneReader : public Reader {
 
   BodyDef readBody(const YAML::Node& n, const SceneDef& s) {
     checkKeys(n, {"name", "shape", "density", "mass", "inertia", "position", "angle", "velocity", "angular_velocity",
-                  "static", "color", "label"},
+                  "static", "color", "label", "restitution", "friction"},
               "a body");
     BodyDef b;
+    b.loc = {n.Mark().line + 1, n.Mark().column + 1};
     b.name = text(required(n, "name", "every body"), "name");
     if (b.name.empty()) fail(n, "a body's name cannot be empty");
     if (s.bodyIndex(b.name) >= 0) fail(n["name"], "duplicate body name '" + b.name + "'; names must be unique");
@@ -173,6 +190,17 @@ class SceneReader : public Reader {
     if (n["velocity"]) b.velocity = vec2(n["velocity"], "velocity");
     if (n["angular_velocity"]) b.angularVelocity = finite(n["angular_velocity"], "angular_velocity");
     if (n["static"]) b.isStatic = boolean(n["static"], "static");
+    if (n["restitution"]) b.restitution = restitution(n["restitution"]);
+    if (n["friction"]) b.friction = nonNegative(n["friction"], "friction");
+    if (b.shape.kind == ShapeKind::Plane) {
+      // a half-plane is an obstacle: static, placed by its point
+      if (n["static"] && !b.isStatic) fail(n["static"], "a plane is always static");
+      for (const char* key : {"position", "angle", "density", "mass", "inertia"})
+        if (n[key]) fail(n[key], std::string("a plane has no '") + key + "'; place it with its 'point' and 'normal'");
+      b.isStatic = true;
+      const YAML::Node plane = n["shape"]["plane"];
+      if (plane["point"]) b.position = vec2(plane["point"], "point");
+    }
     if (b.isStatic && (b.velocity != Vec2::Zero() || b.angularVelocity != 0.0))
       fail(n, "static body '" + b.name + "' cannot move; remove its velocity or make it dynamic");
     if (n["color"]) {
@@ -247,6 +275,19 @@ class SceneReader : public Reader {
     } else {
       fail(n["type"], "unknown force type '" + type + "'; choose one of: spring, force, drag (gravity is set in world:)");
     }
+  }
+
+  double restitution(const YAML::Node& n) {
+    const double c = number(n, "restitution");
+    if (!(c >= 0.0 && c <= 1.0)) fail(n, "'restitution' must be within [0, 1] (0: plastic, 1: elastic), got " + n.Scalar());
+    return c;
+  }
+
+  int count(const YAML::Node& n, const std::string& key, int least = 1) {
+    const double x = number(n, key);
+    if (x != std::floor(x) || x < least || x > 1000)
+      fail(n, "'" + key + "' must be a whole number from " + std::to_string(least) + " to 1000, got " + n.Scalar());
+    return static_cast<int>(x);
   }
 
   std::string frame(const YAML::Node& n) {
