@@ -18,5 +18,7 @@ struct UsageError : std::runtime_error {
 
 void addSimulateCommand(CLI::App& app, int& exitCode);
 void addCheckCommand(CLI::App& app, int& exitCode);
+void addRenderCommand(CLI::App& app, int& exitCode);
+void addSnapshotCommand(CLI::App& app, int& exitCode);
 
 }  // namespace render

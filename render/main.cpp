@@ -10,6 +10,8 @@ int main(int argc, char** argv) {
   int exitCode = render::kExitOk;
   render::addSimulateCommand(app, exitCode);
   render::addCheckCommand(app, exitCode);
+  render::addRenderCommand(app, exitCode);
+  render::addSnapshotCommand(app, exitCode);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,41 @@
+// A frame of a scene, described through DebugDraw from the world, its history and the render:
+// block, back to front: static bodies and planes, trails, strobe ghosts, the moving bodies,
+// contacts and impulses (held after they happen), velocity arrows, labels, the time.
+#pragma once
+
+#include <vector>
+
+#include "camera.h"
+#include "draw_list.h"
+#include "history.h"
+#include "scene_def.h"
+#include "survey.h"
+#include "world.h"
+
+namespace render {
+
+// the contacts of the world now, through DebugDraw: the collision code's description of them
+void describeContacts(const sim::World& world, sim::DebugDraw& draw);
+
+class FramePainter {
+ public:
+  FramePainter(const sim::SceneDef& def, const Camera& camera, const RunSurvey& survey);
+
+  // what the history of a run must record for these frames
+  History::Options historyOptions() const;
+  // the frame at the world's present time; `ghosts` are earlier poses (strobe), oldest first
+  void paint(const sim::World& world, const History& history, const std::vector<DrawList>& ghosts,
+             sim::DebugDraw& draw) const;
+  // the text of the time caption, e.g. "t = 0.500 s"
+  static std::string timeText(double t);
+
+  double impulseScale() const { return impulseScale_; }
+  double velocityScale() const { return velocityScale_; }
+
+ private:
+  const sim::SceneDef& def_;
+  Camera camera_;
+  double impulseScale_, velocityScale_;  // m of arrow per N·s, per m/s
+};
+
+}  // namespace render

@@ -1,0 +1,53 @@
+// What a frame shows besides the present state, gathered while the world steps: where each body has
+// been (its trail), and what happened a moment ago and stays on screen a while, fading (contacts
+// after an impact, the arrow of an event's impulse), so that a video shows them for more than the
+// one frame in which they happen.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "draw_list.h"
+#include "world.h"
+
+namespace render {
+
+class History : public sim::StepObserver {
+ public:
+  // describes the contacts of the world now (points, normals, impulses, the SAT overlay)
+  using ContactDescriber = std::function<void(const sim::World&, sim::DebugDraw&)>;
+
+  struct Options {
+    bool trails = false;
+    double hold = 0.5;                 // s an afterimage stays, fading
+    bool eventImpulses = true;         // an arrow where each event applies its impulse
+    double impulseScale = 1.0;         // m of arrow per N·s
+    ContactDescriber contacts;         // empty: no contacts
+  };
+
+  // starts with the world's present state (its contacts and positions at the start)
+  History(const sim::World& world, Options options);
+
+  void afterStep(const sim::World& world) override;
+  void afterEvent(const sim::World& world, const sim::ImpulseEvent& event) override;
+
+  // every dynamic body's path up to now as Trail segments, points closer than `spacing` merged
+  void drawTrails(sim::DebugDraw& draw, double spacing) const;
+  // what happened at most `hold` before `t`, its opacity falling linearly from 1 to 0 with age
+  void drawAfterimages(double t, sim::DebugDraw& draw) const;
+
+ private:
+  struct Moment {
+    double time;
+    DrawList calls;
+  };
+  void observeContacts(const sim::World& world);
+  void forgetOld(double now);
+
+  Options options_;
+  std::vector<std::vector<Vec2>> trails_;  // by body; empty for static bodies or without trails
+  std::vector<Moment> moments_;
+  long touching_ = -1;  // index in moments_ of the contacts still touching, -1 when none
+};
+
+}  // namespace render

@@ -1,0 +1,27 @@
+#include "interrupt.h"
+
+#include <csignal>
+
+namespace render {
+
+namespace {
+
+volatile std::sig_atomic_t interruptedFlag = 0;
+
+extern "C" void raiseFlag(int) { interruptedFlag = 1; }
+
+}  // namespace
+
+void catchInterrupts() {
+  struct sigaction action {};
+  action.sa_handler = raiseFlag;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
+void checkInterrupted() {
+  if (interruptedFlag) throw Interrupted();
+}
+
+}  // namespace render

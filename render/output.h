@@ -1,0 +1,27 @@
+// What `render` and `snapshot` share: checking their command-line values (a bad one is a
+// UsageError, exit 2) and where outputs go (out/<scene>/<scene>[-<variant>]…).
+#pragma once
+
+#include <string>
+
+#include "scene_def.h"
+
+namespace render {
+
+struct FrameSize {
+  int width = 0, height = 0;
+};
+
+// "WxH": even sides from sim::kMinFrameSide to sim::kMaxFrameSide pixels; throws UsageError
+FrameSize parseSize(const std::string& text, const std::string& option = "--size");
+// frames per second above 0 and at most sim::kMaxFps; throws UsageError
+void checkFps(double fps, const std::string& option = "--fps");
+
+// <root>/<scene>, created when missing; throws UsageError when it cannot be created or written
+std::string outputDirectory(const std::string& root, const std::string& scene);
+// "<scene>" or "<scene>-<variant>": the start of every output name of a run
+std::string outputBase(const sim::SceneDef& def);
+// a time for a file name: shortest form, at most 6 significant digits ("0.5", "1.23457")
+std::string timeForName(double t);
+
+}  // namespace render

@@ -1,0 +1,44 @@
+// One run of a scene through the renderer: its world stepped forward to each time asked for (split
+// exactly there, whatever the physics step), its history gathered on the way, and the frame at that
+// time painted with GL.
+#pragma once
+
+#include <memory>
+
+#include "frame_painter.h"
+#include "gl_canvas.h"
+#include "history.h"
+#include "style.h"
+#include "world.h"
+
+namespace render {
+
+class SceneRun {
+ public:
+  // `def` must outlive the run; the GL context is the frame's size and current on this thread
+  // (without one, only draw lists can be made)
+  SceneRun(const sim::SceneDef& def, const Camera& camera, const RunSurvey& survey, GlContext* gl = nullptr,
+           TextRenderer* text = nullptr);
+
+  // the frame at exactly time t, which must not be earlier than the last one; with `strobe` > 0,
+  // that many earlier poses at t·i/strobe (i = 0 … strobe − 1) drawn fading behind the present one,
+  // which needs a fresh run (nothing drawn yet). Throws sim::Diverged.
+  Image frameAt(double t, int strobe = 0);
+  // the draw calls of the frame at time t, without GL (the draw-list level of the tests)
+  DrawList drawListAt(double t, int strobe = 0);
+
+  const sim::World& world() const { return world_; }
+
+ private:
+  std::vector<DrawList> advance(double t, int strobe);
+
+  const sim::SceneDef& def_;
+  Camera camera_;
+  Style style_;
+  FramePainter painter_;
+  sim::World world_;
+  History history_;
+  std::unique_ptr<GlCanvas> canvas_;
+};
+
+}  // namespace render

@@ -1,0 +1,68 @@
+#include "survey.h"
+
+#include <algorithm>
+
+#include "scene_build.h"
+
+namespace render {
+
+namespace {
+
+// the bodies' extent and speed after every step
+class Surveyor : public sim::StepObserver {
+ public:
+  explicit Surveyor(RunSurvey& out) : out_(out) {}
+  void afterStep(const sim::World& world) override {
+    for (const sim::Body& b : world.bodies) {
+      out_.bounds.add(bodyBounds(b));
+      out_.maxSpeed = std::max(out_.maxSpeed, b.v.norm());
+    }
+  }
+  void afterEvent(const sim::World& world, const sim::ImpulseEvent&) override { afterStep(world); }
+
+ private:
+  RunSurvey& out_;
+};
+
+}  // namespace
+
+Bounds bodyBounds(const sim::Body& b) {
+  Bounds box;
+  switch (b.shape.kind) {
+    case sim::ShapeKind::Polygon:
+      for (const Vec2& v : b.shape.vertices) box.add(b.pose().toWorld(v));
+      break;
+    case sim::ShapeKind::Circle:
+      box.add(b.x - Vec2(b.shape.radius, b.shape.radius));
+      box.add(b.x + Vec2(b.shape.radius, b.shape.radius));
+      break;
+    default:
+      // unbounded shapes (a half-plane): the point that anchors them should be in view
+      box.add(b.x);
+  }
+  return box;
+}
+
+RunSurvey surveyRun(const sim::SceneDef& def, double until) {
+  RunSurvey survey;
+  for (const sim::EventDef& e : def.events) survey.maxEventImpulse = std::max(survey.maxEventImpulse, e.impulse.norm());
+  sim::World world = sim::buildWorld(def);
+  Surveyor surveyor(survey);
+  surveyor.afterStep(world);
+  world.advanceTo(until < 0.0 ? def.duration : until, &surveyor);
+  survey.impactTimes = impactTimes(world);
+  return survey;
+}
+
+Camera cameraFor(const sim::SceneDef& def, const Bounds& bounds) {
+  const sim::RenderDef& r = def.render;
+  if (!r.camera.automatic) return Camera(r.camera.center, r.camera.height, r.width, r.height);
+  return Camera::fit(bounds, r.camera.margin, r.width, r.height);
+}
+
+std::vector<double> impactTimes(const sim::World&) {
+  // the world keeps no record of impacts yet: the collision response will add one
+  return {};
+}
+
+}  // namespace render

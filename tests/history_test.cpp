@@ -1,0 +1,76 @@
+// What stays on screen after it happens: contacts held and fading after a touch ends, an event's
+// impulse arrow ending at the point it strikes, trails with nearby points merged.
+#include <doctest/doctest.h>
+
+#include "history.h"
+#include "scene_build.h"
+#include "scene_yaml.h"
+
+using render::DrawList;
+using render::History;
+using sim::DrawRole;
+
+namespace {
+
+// a ball moving right at 1 m/s, and a kick at t = 0.5
+sim::World ballWorld() {
+  return sim::buildWorld(sim::loadSceneText(
+      "duration: 2\n"
+      "bodies:\n"
+      "  - {name: ball, shape: {circle: 0.5}, velocity: [1, 0]}\n"
+      "events:\n"
+      "  - {time: 0.5, body: ball, impulse: [0, 2], point: [0, 0]}\n",
+      "inline.yaml"));
+}
+
+// a made-up contact while the ball's center is in [0.2, 0.4] (with room for round-off)
+void fakeContacts(const sim::World& w, sim::DebugDraw& d) {
+  const double x = w.bodies[0].x.x();
+  if (x >= 0.1995 && x <= 0.4005) d.point({x, 0}, {DrawRole::ContactPoint, -1, 1.0});
+}
+
+}  // namespace
+
+TEST_CASE("a contact stays after the touch ends, fading linearly over the hold time") {
+  sim::World w = ballWorld();
+  History h(w, {false, 0.5, false, 1.0, fakeContacts});
+  w.advanceTo(0.3, &h);
+  DrawList now;
+  h.drawAfterimages(w.time, now);
+  // touching: the latest contact, fully opaque, only once
+  CHECK(now.toText() == "point ContactPoint (0.3,0)\n");
+  w.advanceTo(0.65, &h);  // the touch ended at 0.4: 0.25 s ago, half the hold
+  DrawList later;
+  h.drawAfterimages(w.time, later);
+  CHECK(later.toText() == "point ContactPoint@0.5 (0.4,0)\n");
+  w.advanceTo(0.95, &h);
+  DrawList gone;
+  h.drawAfterimages(w.time, gone);
+  CHECK(gone.empty());
+}
+
+TEST_CASE("an event's impulse is an arrow ending where it strikes, scaled, held like a contact") {
+  sim::World w = ballWorld();
+  History h(w, {false, 0.5, true, 0.25, {}});
+  w.advanceTo(0.5, &h);
+  DrawList at;
+  h.drawAfterimages(w.time, at);
+  CHECK(at.toText() == "arrow Impulse#0 (0.5,-0.5) -> (0.5,0)\n");
+  w.advanceTo(1.2, &h);
+  DrawList gone;
+  h.drawAfterimages(w.time, gone);
+  CHECK(gone.empty());
+}
+
+TEST_CASE("trails follow the center of mass, points closer than the spacing merged") {
+  sim::World w = ballWorld();
+  History h(w, {true, 0.5, false, 1.0, {}});
+  w.advanceTo(0.4, &h);
+  DrawList fine, coarse;
+  // spacings a little under 10 and 150 steps of 1 mm, so that round-off does not skip a point
+  h.drawTrails(fine, 0.0095);
+  h.drawTrails(coarse, 0.1495);
+  CHECK(fine.calls().size() == 40);
+  // 0.15 m apart at 1 m/s: a segment per 0.15 s, and one to the present position
+  CHECK(coarse.toText() == "segment Trail#0 (0,0) (0.15,0)\nsegment Trail#0 (0.15,0) (0.3,0)\nsegment Trail#0 (0.3,0) (0.4,0)\n");
+}

@@ -1,0 +1,75 @@
+// The recording loop: frame k at exactly k / fps, every frame handed on in order, a failing sink
+// stops the loop with its error, and PNG frames are numbered for ffmpeg's image reader.
+#include <doctest/doctest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+
+#include "recorder.h"
+#include "scene_yaml.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Collect : render::FrameSink {
+  std::vector<long> indices;
+  std::vector<render::Image> images;
+  void frame(long index, const render::Image& image) override {
+    indices.push_back(index);
+    images.push_back(image);
+  }
+};
+
+struct Fail : render::FrameSink {
+  void frame(long index, const render::Image&) override {
+    if (index == 2) throw std::runtime_error("disk full");
+  }
+};
+
+const char* const kScene =
+    "duration: 1\n"
+    "bodies:\n"
+    "  - {name: ball, shape: {circle: 0.5}, velocity: [1, 0]}\n"
+    "render: {size: [64, 48], camera: {center: [0.5, 0], height: 2}}\n";
+
+}  // namespace
+
+TEST_CASE("frames come in order, one per k / fps, and the run ends at the last one's time") {
+  const sim::SceneDef def = sim::loadSceneText(kScene, "inline.yaml");
+  const render::RunSurvey survey = render::surveyRun(def);
+  render::GlContext gl(64, 48);
+  render::TextRenderer text;
+  render::SceneRun run(def, render::cameraFor(def, survey.bounds), survey, &gl, &text);
+  Collect sink;
+  long reported = 0;
+  render::record(run, 5, 10.0, {&sink}, [&](long done) { reported = done; });
+  CHECK(sink.indices == std::vector<long>{0, 1, 2, 3, 4});
+  CHECK(reported == 5);
+  CHECK(run.world().time == doctest::Approx(0.4).epsilon(1e-15));
+  // the ball moves, so consecutive frames differ
+  CHECK(sink.images[0] != sink.images[4]);
+}
+
+TEST_CASE("a sink that fails stops the recording with its error") {
+  const sim::SceneDef def = sim::loadSceneText(kScene, "inline.yaml");
+  const render::RunSurvey survey = render::surveyRun(def);
+  render::GlContext gl(64, 48);
+  render::TextRenderer text;
+  render::SceneRun run(def, render::cameraFor(def, survey.bounds), survey, &gl, &text);
+  Fail sink;
+  CHECK_THROWS_WITH_AS(render::record(run, 60, 10.0, {&sink}), "disk full", std::runtime_error);
+  CHECK(run.world().time < 1.0);
+}
+
+TEST_CASE("PNG frames are numbered with at least five digits") {
+  const fs::path dir = fs::temp_directory_path() / ("rigidreel_recorder_test_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  render::PngFrames frames(dir.string(), 12);
+  CHECK(frames.pattern() == "frame-%05ld.png");
+  frames.frame(7, render::Image(4, 4));
+  CHECK(fs::exists(dir / "frame-00007.png"));
+  CHECK(render::PngFrames(dir.string(), 1234567).pattern() == "frame-%07ld.png");
+  fs::remove_all(dir);
+}
