@@ -19,6 +19,7 @@
 //   is released when the bodies move apart.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "broad_phase.h"
@@ -38,6 +39,9 @@ constexpr int kMaxSearchIterations = 100000;
 
 // approaching slower than this, m/s, does not count as an impact (round-off after an impulse)
 constexpr double kApproachFloor = 1e-3 * settings::kRestingSpeed;
+
+// a relative normal acceleration weaker than this, m/s², does not press two bodies together
+constexpr double kPressingFloor = 1e-9;
 
 bool isResting(const std::vector<std::pair<int, int>>& resting, int a, int b) {
   return std::find(resting.begin(), resting.end(), std::make_pair(a, b)) != resting.end();
@@ -79,6 +83,20 @@ void World::stepEvent(double h) {
   }
 }
 
+namespace {
+
+// a body under constant acceleration k for τ: exact
+BodyState uniformlyAccelerated(const BodyState& s, const BodyRate& k, double tau) {
+  BodyState y = s;
+  y.x += tau * s.v + 0.5 * tau * tau * k.vDot;
+  y.angle += tau * s.omega + 0.5 * tau * tau * k.omegaDot;
+  y.v += tau * k.vDot;
+  y.omega += tau * k.omegaDot;
+  return y;
+}
+
+}  // namespace
+
 // where the bodies are after τ of motion from `from`
 States World::motion(const States& from, double tau) const {
   States y = from;
@@ -87,12 +105,7 @@ States World::motion(const States& from, double tau) const {
     // constant accelerations (gravity, and resting contacts' forces at this instant): exact
     Rates k;
     rates(time, from, k);
-    for (size_t i = 0; i < y.size(); ++i) {
-      y[i].x += tau * from[i].v + 0.5 * tau * tau * k[i].vDot;
-      y[i].angle += tau * from[i].omega + 0.5 * tau * tau * k[i].omegaDot;
-      y[i].v += tau * k[i].vDot;
-      y[i].omega += tau * k[i].omegaDot;
-    }
+    for (size_t i = 0; i < y.size(); ++i) y[i] = uniformlyAccelerated(from[i], k[i], tau);
     return y;
   }
   integrate(integrator, *this, time, tau, y);
@@ -123,11 +136,18 @@ World::Impact World::earliestImpact(const States& from, double span) const {
     boxes.push_back(box);
     fixed.push_back(bodies[i].isStatic);
   }
+  // under constant forces each body moves on its own parabola: no need to move the others
+  Rates k0;
+  if (constantForces_) rates(time, from, k0);
   double horizon = span;
   for (const auto& [i, j] : overlappingPairs(boxes, fixed)) {
     if (isResting(restingPairs_, i, j)) continue;
     const Body &a = bodies[i], &b = bodies[j];
     auto gap = [&](double tau) {
+      if (constantForces_)
+        return collide(a.shape, poseOf(uniformlyAccelerated(from[i], k0[i], tau)), b.shape,
+                       poseOf(uniformlyAccelerated(from[j], k0[j], tau)), 0.0)
+            .separation;
       const States y = motion(from, tau);
       return collide(a.shape, poseOf(y[i]), b.shape, poseOf(y[j]), 0.0).separation;
     };
@@ -207,7 +227,6 @@ void World::resolveImpactsAt(double t) {
   const double touch = settings::kTouchingTolerance * sceneSize_;
   std::vector<Contact> touching = findContacts(touch);
   std::erase_if(touching, [&](const Contact& c) { return isResting(restingPairs_, c.a, c.b); });
-  std::vector<std::pair<int, int>> struck;
   for (int sweep = 0; sweep < 1000; ++sweep) {
     bool any = false;
     for (const Contact& c : touching) {
@@ -221,7 +240,6 @@ void World::resolveImpactsAt(double t) {
       }
       if (count == 0) continue;
       any = true;
-      struck.emplace_back(c.a, c.b);
       ImpactRecord rec[2];
       for (int m = 0; m < count; ++m) {
         const Vec2 r = c.manifold.points[approaching[m]].point;
@@ -263,33 +281,31 @@ void World::resolveImpactsAt(double t) {
     }
     if (!any) break;
   }
-  // a contact pressed together that leaves too slowly to ever get clear of the next impact
-  // rests instead: the bounces left would pile up in finite time (Zeno)
-  std::vector<Vec2> force;
-  std::vector<double> torque;
+  // a contact pressed together that moves too slowly to ever get clear of the next impact rests
+  // instead: the bounces left would pile up in finite time (Zeno). Pressed means the forces,
+  // including the contact forces of what already rests, accelerate the two points together.
   States now(bodies.size());
-  for (size_t i = 0; i < bodies.size(); ++i) now[i] = bodies[i].state();
-  forces.accumulate(t, bodies, now, force, torque);
+  Rates acceleration;
   for (const Contact& c : touching) {
-    if (std::find(struck.begin(), struck.end(), std::make_pair(c.a, c.b)) == struck.end()) continue;
     if (isResting(restingPairs_, c.a, c.b)) continue;
+    for (size_t i = 0; i < bodies.size(); ++i) now[i] = bodies[i].state();
+    rates(t, now, acceleration);
     Body &a = bodies[c.a], &b = bodies[c.b];
     const Vec2 n = c.manifold.normal;
-    double fastest = 0.0, pressing = 0.0;
+    double fastest = -std::numeric_limits<double>::infinity(), pressing = 0.0;
     for (int k = 0; k < c.manifold.count; ++k) {
       const Vec2 r = c.manifold.points[k].point;
-      fastest = std::max(fastest, n.dot(relativeVelocity(a, b, r)));
-      // the relative normal acceleration the applied forces give the two material points
-      const Vec2 aa = a.invMass * force[c.a] + cross(a.invInertia * torque[c.a], r - a.x);
-      const Vec2 ab = b.invMass * force[c.b] + cross(b.invInertia * torque[c.b], r - b.x);
+      fastest = std::max(fastest, std::abs(n.dot(relativeVelocity(a, b, r))));
+      const Vec2 aa = acceleration[c.a].vDot + cross(acceleration[c.a].omegaDot, r - a.x);
+      const Vec2 ab = acceleration[c.b].vDot + cross(acceleration[c.b].omegaDot, r - b.x);
       pressing = std::min(pressing, n.dot(aa - ab));
     }
-    if (fastest > settings::kRestingSpeed || pressing >= 0.0) continue;
+    if (fastest > settings::kRestingSpeed || pressing >= -kPressingFloor) continue;
     // the rest of the geometric series of bounces is below kRestingSpeed: end it here
     for (int k = 0; k < c.manifold.count; ++k) {
       const Vec2 r = c.manifold.points[k].point;
       const double vn = n.dot(relativeVelocity(a, b, r));
-      if (vn > 0.0) applyImpulsePair(a, b, r, (-vn / inverseEffectiveMass(a, b, r, n)) * n);
+      if (vn != 0.0) applyImpulsePair(a, b, r, (-vn / inverseEffectiveMass(a, b, r, n)) * n);
     }
     restingPairs_.emplace_back(c.a, c.b);
     resting.push_back({t, c.a, c.b});
