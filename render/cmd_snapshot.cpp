@@ -122,7 +122,9 @@ int snapshot(const SnapshotOptions& o) {
       // a fresh run per picture: the strobe ghosts and the trails start from t = 0
       SceneRun run(v.def, cameraFor(v.def, bounds), v.survey, &gl, &text);
       frames.push_back(run.frameAt(t, strobe));
-      std::string title = panelLetter(i) + ": " + v.def.variant;
+      // "A: center", or just "A" for a variant named A
+      std::string title = panelLetter(i);
+      if (v.def.variant != title) title += ": " + v.def.variant;
       if (o.impacts) title += "  (t = " + timeForName(t) + " s)";
       titles.push_back(title);
     }

@@ -13,6 +13,9 @@ using sim::DrawRole;
 // an automatic arrow scale: the largest value's arrow is this fraction of the view's height
 constexpr double kArrowFraction = 1.0 / 6.0;
 
+// a contact normal's arrow, as a fraction of the view's height: 58 px at 720p
+constexpr double kNormalFraction = 0.08;
+
 // an arrow scale: the scene's, or one that makes `largest` a sixth of the view
 double arrowScale(double given, double largest, const Camera& camera) {
   if (given > 0.0) return given;
@@ -30,7 +33,7 @@ void describeContacts(const sim::World&, sim::DebugDraw&) {
 FramePainter::FramePainter(const sim::SceneDef& def, const Camera& camera, const RunSurvey& survey)
     : def_(def),
       camera_(camera),
-      impulseScale_(arrowScale(def.render.impulseScale, survey.maxEventImpulse, camera)),
+      impulseScale_(arrowScale(def.render.impulseScale, survey.maxImpulse, camera)),
       velocityScale_(arrowScale(def.render.velocityScale, survey.maxSpeed, camera)) {}
 
 History::Options FramePainter::historyOptions() const {
@@ -39,7 +42,9 @@ History::Options FramePainter::historyOptions() const {
   o.trails = r.trails;
   o.hold = r.contactHold;
   o.eventImpulses = r.impulses;
+  o.impacts = r.contacts;
   o.impulseScale = impulseScale_;
+  o.normalLength = kNormalFraction * camera_.worldHeight();
   if (r.contacts || r.sat) {
     const bool contacts = r.contacts, sat = r.sat;
     // contacts and the separating-axis overlay come from one description: keep what is asked for

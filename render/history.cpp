@@ -13,6 +13,7 @@ void History::afterStep(const sim::World& world) {
   if (options_.trails)
     for (size_t i = 0; i < world.bodies.size(); ++i)
       if (!world.bodies[i].isStatic) trails_[i].push_back(world.bodies[i].x);
+  observeImpacts(world);
   observeContacts(world);
   forgetOld(world.time);
 }
@@ -22,9 +23,29 @@ void History::afterEvent(const sim::World& world, const sim::ImpulseEvent& e) {
   const sim::Body& b = world.bodies[e.body];
   const Vec2 r = e.pointInWorld ? e.point : b.pose().toWorld(e.point);
   // the arrow ends where the impulse is applied, as a blow that strikes the body there
-  Moment m{world.time, {}};
+  Moment m{world.time, {}, Moment::Kind::Event};
   m.calls.arrow(r - options_.impulseScale * e.impulse, r, {sim::DrawRole::Impulse, e.body, 1.0});
   moments_.push_back(std::move(m));
+}
+
+void History::observeImpacts(const sim::World& world) {
+  if (!options_.impacts) {
+    impactsSeen_ = world.impacts.size();
+    return;
+  }
+  // one moment per instant: the points of a manifold, or simultaneous impacts, together
+  for (; impactsSeen_ < world.impacts.size(); ++impactsSeen_) {
+    const sim::ImpactRecord& r = world.impacts[impactsSeen_];
+    if (moments_.empty() || moments_.back().time != r.t || moments_.back().kind != Moment::Kind::Impact)
+      moments_.push_back({r.t, {}, Moment::Kind::Impact});
+    DrawList& d = moments_.back().calls;
+    // the impulse γ n̂ on A and −γ n̂ on B from the point, then the unit normal and the point on top
+    const Vec2 j = options_.impulseScale * r.impulse * r.normal;
+    d.arrow(r.point, r.point + j, {sim::DrawRole::Impulse, r.a, 1.0});
+    d.arrow(r.point, r.point - j, {sim::DrawRole::Impulse, r.b, 1.0});
+    d.arrow(r.point, r.point + options_.normalLength * r.normal, {sim::DrawRole::ContactNormal, -1, 1.0});
+    d.point(r.point, {sim::DrawRole::ContactPoint, -1, 1.0});
+  }
 }
 
 void History::observeContacts(const sim::World& world) {
@@ -38,9 +59,9 @@ void History::observeContacts(const sim::World& world) {
   // contacts that go on touching step after step are one moment, kept up to date; a new touch
   // after a separation is a new moment, so that the last one fades while the next one shows
   if (touching_ >= 0) {
-    moments_[touching_] = {world.time, std::move(now)};
+    moments_[touching_] = {world.time, std::move(now), Moment::Kind::Contact};
   } else {
-    moments_.push_back({world.time, std::move(now)});
+    moments_.push_back({world.time, std::move(now), Moment::Kind::Contact});
     touching_ = static_cast<long>(moments_.size()) - 1;
   }
 }

@@ -1,7 +1,7 @@
 // What a frame shows besides the present state, gathered while the world steps: where each body has
-// been (its trail), and what happened a moment ago and stays on screen a while, fading (contacts
-// after an impact, the arrow of an event's impulse), so that a video shows them for more than the
-// one frame in which they happen.
+// been (its trail), and what happened a moment ago and stays on screen a while, fading (an impact's
+// contact point, normal and impulses; the arrow of an event's impulse; contacts after they part),
+// so that a video shows them for more than the one frame in which they happen.
 #pragma once
 
 #include <functional>
@@ -21,8 +21,10 @@ class History : public sim::StepObserver {
     bool trails = false;
     double hold = 0.5;                 // s an afterimage stays, fading
     bool eventImpulses = true;         // an arrow where each event applies its impulse
+    bool impacts = true;               // each impact the collision response logs: point, normal, impulses
     double impulseScale = 1.0;         // m of arrow per N·s
-    ContactDescriber contacts;         // empty: no contacts
+    double normalLength = 1.0;         // m, the arrow of a contact normal
+    ContactDescriber contacts;         // the contacts touching now (empty: none)
   };
 
   // starts with the world's present state (its contacts and positions at the start)
@@ -38,16 +40,20 @@ class History : public sim::StepObserver {
 
  private:
   struct Moment {
+    enum class Kind { Contact, Impact, Event };
     double time;
     DrawList calls;
+    Kind kind;
   };
   void observeContacts(const sim::World& world);
+  void observeImpacts(const sim::World& world);
   void forgetOld(double now);
 
   Options options_;
   std::vector<std::vector<Vec2>> trails_;  // by body; empty for static bodies or without trails
   std::vector<Moment> moments_;
-  long touching_ = -1;  // index in moments_ of the contacts still touching, -1 when none
+  long touching_ = -1;     // index in moments_ of the contacts still touching, -1 when none
+  size_t impactsSeen_ = 0;  // records of world.impacts already turned into moments
 };
 
 }  // namespace render

@@ -1,6 +1,7 @@
 #include "survey.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "scene_build.h"
 
@@ -45,11 +46,12 @@ Bounds bodyBounds(const sim::Body& b) {
 
 RunSurvey surveyRun(const sim::SceneDef& def, double until) {
   RunSurvey survey;
-  for (const sim::EventDef& e : def.events) survey.maxEventImpulse = std::max(survey.maxEventImpulse, e.impulse.norm());
+  for (const sim::EventDef& e : def.events) survey.maxImpulse = std::max(survey.maxImpulse, e.impulse.norm());
   sim::World world = sim::buildWorld(def);
   Surveyor surveyor(survey);
   surveyor.afterStep(world);
   world.advanceTo(until < 0.0 ? def.duration : until, &surveyor);
+  for (const sim::ImpactRecord& r : world.impacts) survey.maxImpulse = std::max(survey.maxImpulse, std::abs(r.impulse));
   survey.impactTimes = impactTimes(world);
   return survey;
 }
@@ -60,9 +62,16 @@ Camera cameraFor(const sim::SceneDef& def, const Bounds& bounds) {
   return Camera::fit(bounds, r.camera.margin, r.width, r.height);
 }
 
-std::vector<double> impactTimes(const sim::World&) {
-  // the world keeps no record of impacts yet: the collision response will add one
-  return {};
+std::vector<double> impactTimes(const sim::World& world) {
+  // impacts closer than this are one instant (several points of one manifold, simultaneous hits)
+  constexpr double kSameInstant = 1e-9;
+  std::vector<double> times;
+  for (const sim::ImpactRecord& r : world.impacts) times.push_back(r.t);
+  std::sort(times.begin(), times.end());
+  std::vector<double> distinct;
+  for (double t : times)
+    if (distinct.empty() || t - distinct.back() > kSameInstant) distinct.push_back(t);
+  return distinct;
 }
 
 }  // namespace render

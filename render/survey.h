@@ -14,7 +14,7 @@ namespace render {
 struct RunSurvey {
   Bounds bounds;                    // every body's shape at every step, m
   double maxSpeed = 0.0;            // of any center of mass, m/s
-  double maxEventImpulse = 0.0;     // |j| of the largest event, N·s
+  double maxImpulse = 0.0;          // of the largest event or impact, N·s
   std::vector<double> impactTimes;  // ascending, each once
 };
 

@@ -33,7 +33,7 @@ void fakeContacts(const sim::World& w, sim::DebugDraw& d) {
 
 TEST_CASE("a contact stays after the touch ends, fading linearly over the hold time") {
   sim::World w = ballWorld();
-  History h(w, {false, 0.5, false, 1.0, fakeContacts});
+  History h(w, {false, 0.5, false, false, 1.0, 1.0, fakeContacts});
   w.advanceTo(0.3, &h);
   DrawList now;
   h.drawAfterimages(w.time, now);
@@ -51,7 +51,7 @@ TEST_CASE("a contact stays after the touch ends, fading linearly over the hold t
 
 TEST_CASE("an event's impulse is an arrow ending where it strikes, scaled, held like a contact") {
   sim::World w = ballWorld();
-  History h(w, {false, 0.5, true, 0.25, {}});
+  History h(w, {false, 0.5, true, false, 0.25, 1.0, {}});
   w.advanceTo(0.5, &h);
   DrawList at;
   h.drawAfterimages(w.time, at);
@@ -64,7 +64,7 @@ TEST_CASE("an event's impulse is an arrow ending where it strikes, scaled, held 
 
 TEST_CASE("trails follow the center of mass, points closer than the spacing merged") {
   sim::World w = ballWorld();
-  History h(w, {true, 0.5, false, 1.0, {}});
+  History h(w, {true, 0.5, false, false, 1.0, 1.0, {}});
   w.advanceTo(0.4, &h);
   DrawList fine, coarse;
   // spacings a little under 10 and 150 steps of 1 mm, so that round-off does not skip a point
@@ -73,4 +73,30 @@ TEST_CASE("trails follow the center of mass, points closer than the spacing merg
   CHECK(fine.calls().size() == 40);
   // 0.15 m apart at 1 m/s: a segment per 0.15 s, and one to the present position
   CHECK(coarse.toText() == "segment Trail#0 (0,0) (0.15,0)\nsegment Trail#0 (0.15,0) (0.3,0)\nsegment Trail#0 (0.3,0) (0.4,0)\n");
+}
+
+TEST_CASE("an impact shows its point, its normal and the impulse on each body, then fades") {
+  // a ball (A, body 0) at 1 m/s meets a static wall (B) whose face is at x = 1.5 at t = 1
+  sim::World w = sim::buildWorld(sim::loadSceneText(
+      "duration: 2\n"
+      "world: {restitution: 1}\n"
+      "sim: {collisions: event}\n"
+      "bodies:\n"
+      "  - {name: ball, shape: {circle: 0.5}, mass: 2, velocity: [1, 0]}\n"
+      "  - {name: wall, shape: {box: [1, 4]}, position: [2, 0], static: true}\n",
+      "inline.yaml"));
+  History h(w, {false, 0.5, false, true, 0.25, 1.0, {}});
+  w.advanceTo(1.1, &h);
+  DrawList shown;
+  h.drawAfterimages(w.time, shown);
+  // γ = (1 + c_r) m |v_n| = 4 N·s, 1 m of arrow at 0.25 m per N·s; n̂ from the wall to the ball
+  CHECK(shown.toText() ==
+        "arrow Impulse#0@0.8 (1.5,0) -> (0.5,0)\n"
+        "arrow Impulse#1@0.8 (1.5,0) -> (2.5,0)\n"
+        "arrow ContactNormal@0.8 (1.5,0) -> (0.5,0)\n"
+        "point ContactPoint@0.8 (1.5,0)\n");
+  w.advanceTo(1.6, &h);
+  DrawList gone;
+  h.drawAfterimages(w.time, gone);
+  CHECK(gone.empty());
 }
