@@ -33,3 +33,9 @@ test: build
 
 clean:
 	rm -rf $(BUILD)
+
+# regenerate tests/golden/*.png on purpose, after a deliberate change to how frames look (see
+# tests/golden/README.md); review the new images before committing them
+.PHONY: golden
+golden: build
+	RIGIDREEL_UPDATE_GOLDEN=1 ./$(BUILD)/tests/golden_test

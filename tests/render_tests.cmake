@@ -16,3 +16,9 @@ foreach(module draw_list history frame_painter video recorder)
   target_link_libraries(${module}_test PRIVATE rigidreel_render rigidreel_scene doctest::doctest)
   add_test(NAME ${module} COMMAND ${module}_test)
 endforeach()
+
+# golden images (tests/golden/*.png); `make golden` runs this with RIGIDREEL_UPDATE_GOLDEN=1
+add_executable(golden_test golden_test.cpp $<TARGET_OBJECTS:test_main>)
+target_link_libraries(golden_test PRIVATE rigidreel_render rigidreel_scene doctest::doctest)
+target_compile_definitions(golden_test PRIVATE RIGIDREEL_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+add_test(NAME golden COMMAND golden_test)

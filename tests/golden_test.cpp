@@ -1,0 +1,206 @@
+// The third level of the regression tests: frames compared with the PNGs in tests/golden/, with a
+// tolerance for rasterizer round-off (see tests/golden/README.md for the thresholds and for when to
+// regenerate them with `make golden`). On a failure the frame drawn and a diff image are written
+// under out/golden-diff/ and named in the message. Also: the same scene rendered twice gives
+// byte-identical PNGs.
+#include <doctest/doctest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "gl_canvas.h"
+#include "panels.h"
+#include "png_io.h"
+#include "scene_run.h"
+#include "scene_yaml.h"
+
+namespace fs = std::filesystem;
+using render::Image;
+using sim::DrawRole;
+
+namespace {
+
+// a pixel differs when one of its channels is off by more than this (of 255)
+constexpr int kChannelTolerance = 24;
+// a frame differs when more than this fraction of its pixels differ (0.2%: 115 of 320 × 180)
+constexpr double kPixelFraction = 0.002;
+
+const fs::path kSource = RIGIDREEL_SOURCE_DIR;
+
+bool updating() {
+  const char* v = std::getenv("RIGIDREEL_UPDATE_GOLDEN");
+  return v && *v && std::string(v) != "0";
+}
+
+// differing pixels in red over a faded copy of the expected frame
+Image diffImage(const Image& expected, const Image& actual, long& differing) {
+  Image diff(expected.width, expected.height);
+  differing = 0;
+  for (int y = 0; y < expected.height; ++y)
+    for (int x = 0; x < expected.width; ++x) {
+      const uint8_t* e = expected.pixel(x, y);
+      const uint8_t* a = actual.pixel(x, y);
+      uint8_t* d = diff.pixel(x, y);
+      bool off = false;
+      for (int c = 0; c < 3; ++c) off = off || std::abs(e[c] - a[c]) > kChannelTolerance;
+      if (off) {
+        ++differing;
+        d[0] = 255, d[1] = 0, d[2] = 0;
+      } else {
+        const uint8_t gray = static_cast<uint8_t>(191 + (e[0] + e[1] + e[2]) / 12);
+        d[0] = d[1] = d[2] = gray;
+      }
+    }
+  return diff;
+}
+
+// `actual` against tests/golden/<name>.png, or written there when updating
+void checkGolden(const std::string& name, const Image& actual) {
+  const fs::path golden = kSource / "tests" / "golden" / (name + ".png");
+  if (updating()) {
+    render::writePng(actual, golden.string());
+    MESSAGE("wrote " << golden.string());
+    return;
+  }
+  INFO("golden image ", golden.string(), " (regenerate on purpose with `make golden`)");
+  REQUIRE(fs::exists(golden));
+  const Image expected = render::readPng(golden.string());
+  REQUIRE(expected.width == actual.width);
+  REQUIRE(expected.height == actual.height);
+  long differing = 0;
+  const Image diff = diffImage(expected, actual, differing);
+  const long allowed = static_cast<long>(kPixelFraction * expected.width * expected.height);
+  if (differing > allowed) {
+    const fs::path dir = kSource / "out" / "golden-diff";
+    fs::create_directories(dir);
+    render::writePng(actual, (dir / (name + "-actual.png")).string());
+    render::writePng(diff, (dir / (name + "-diff.png")).string());
+    FAIL_CHECK(name << ": " << differing << " pixels differ by more than " << kChannelTolerance << " (at most "
+                    << allowed << " may); see " << (dir / (name + "-actual.png")).string() << " and "
+                    << (dir / (name + "-diff.png")).string());
+  }
+}
+
+// the frame of an inline scene at time t (its own size and camera)
+Image frame(const std::string& yaml, double t, const std::string& variant = "", int strobe = 0) {
+  const sim::SceneDef def = sim::loadSceneText(yaml, "inline.yaml", variant);
+  const render::RunSurvey survey = render::surveyRun(def);
+  render::GlContext gl(def.render.width, def.render.height);
+  render::TextRenderer text;
+  render::SceneRun run(def, render::cameraFor(def, survey.bounds), survey, &gl, &text);
+  return run.frameAt(t, strobe);
+}
+
+const char* const kBodies = R"(
+name: golden_bodies
+sim: {collisions: none}
+bodies:
+  - {name: box, shape: {box: [1.2, 0.8]}, position: [-2, 0.6], angle: 0.3, label: "box"}
+  - {name: tri, shape: {polygon: [[0, 0], [1.2, 0], [0.3, 1]]}, position: [0, 0.7], label: "triangle"}
+  - {name: wheel, shape: {circle: 0.5}, position: [2, 0.6], angle: 0.8, label: "ω wheel"}
+  - {name: ledge, shape: {box: [2, 0.3]}, position: [0, -0.4], static: true, label: "ledge"}
+  - {name: floor, shape: {plane: {point: [0, -1.1], normal: [0.1, 1]}}}
+render: {size: [320, 180], camera: {center: [0, 0.2], height: 3.6}, line_width: 1.5}
+)";
+
+// the notes' "three collisions" case A: the ball meets the block's face at t = 0.75
+const char* const kImpact = R"(
+name: golden_impact
+duration: 1.5
+world: {restitution: 1}
+sim: {collisions: event}
+bodies:
+  - {name: ball, shape: {circle: 0.25}, mass: 1, inertia: 0.2, velocity: [1, 0], color: "#c8553d"}
+  - {name: block, shape: {box: [1, 1]}, mass: 1, inertia: 0.2, position: [1.5, 0.3], color: "#3b6ea5"}
+render: {size: [320, 180], camera: {center: [1.1, 0.2], height: 2.2}, line_width: 1.5, contact_hold: 0.5}
+)";
+
+const char* const kPoll = R"(
+name: golden_poll
+duration: 2
+sim: {integrator: rk4, dt: 0.001}
+bodies:
+  - {name: bar, shape: {box: [0.2, 4.0]}, mass: 3, inertia: 4, color: "#3b6ea5"}
+events:
+  - {time: 0.5, body: bar, impulse: [1, 0], point: [0, 2]}
+variants:
+  center: {events: [{time: 0.5, body: bar, impulse: [1, 0], point: [0, 0]}]}
+  end: {}
+render: {size: [320, 180], line_width: 1.5}
+)";
+
+const char* const kProjectile = R"(
+name: golden_projectile
+duration: 1.2
+world: {gravity: [0, -9.81]}
+bodies:
+  - {name: box, shape: {box: [0.4, 0.2]}, velocity: [3, 5], angular_velocity: 6, label: "box"}
+render: {size: [320, 180], line_width: 1.5, trails: true, velocities: true}
+)";
+
+}  // namespace
+
+TEST_CASE("golden: bodies of every shape, static ones hatched, a half-plane, labels, the time") {
+  checkGolden("bodies", frame(kBodies, 0.0));
+}
+
+TEST_CASE("golden: an impact's contact point, normal and impulses") { checkGolden("impact", frame(kImpact, 0.75)); }
+
+TEST_CASE("golden: the impact held on screen, half faded") { checkGolden("impact_fading", frame(kImpact, 1.0)); }
+
+TEST_CASE("golden: an event's impulse arrow, held after it strikes") {
+  checkGolden("event_impulse", frame(kPoll, 0.6, "end"));
+}
+
+TEST_CASE("golden: trails and velocity arrows") { checkGolden("trails_velocities", frame(kProjectile, 1.0)); }
+
+TEST_CASE("golden: a strobe image") { checkGolden("strobe", frame(kProjectile, 1.2, "", 8)); }
+
+TEST_CASE("golden: the poll panel, A | B at the same instant") {
+  std::vector<sim::SceneDef> defs;
+  render::Bounds bounds;
+  std::vector<render::RunSurvey> surveys;
+  for (const char* v : {"center", "end"}) {
+    defs.push_back(sim::loadSceneText(kPoll, "inline.yaml", v));
+    surveys.push_back(render::surveyRun(defs.back()));
+    bounds.add(surveys.back().bounds);
+  }
+  render::GlContext gl(320, 180);
+  render::TextRenderer text;
+  std::vector<Image> frames;
+  for (size_t i = 0; i < defs.size(); ++i) {
+    render::SceneRun run(defs[i], render::cameraFor(defs[i], bounds), surveys[i], &gl, &text);
+    frames.push_back(run.frameAt(1.5));
+  }
+  const render::Style style = render::makeStyle(defs[0], 180);
+  checkGolden("poll_panel", render::composePanels(frames, {"A: center", "B: end"}, style, text));
+}
+
+TEST_CASE("golden: the separating-axis overlay, drawn from a hand-written draw list") {
+  // two boxes, A resting 0.05 m into B: B's top face is the reference edge, A's lower-left corner
+  // the incident vertex; two contact points with their normals (from B to A)
+  const sim::SceneDef def = sim::loadSceneText(kBodies, "inline.yaml");
+  const render::Style style = render::makeStyle(def, 180);
+  render::GlContext gl(320, 180);
+  render::TextRenderer text;
+  render::GlCanvas canvas(gl, text, style);
+  canvas.begin(render::Camera({0, 0}, 2.4, 320, 180));
+  canvas.polygon({{-1.5, -0.9}, {1.5, -0.9}, {1.5, -0.1}, {-1.5, -0.1}}, {DrawRole::Body, 1, 1.0});
+  canvas.polygon({{-0.6, -0.15}, {0.5, -0.05}, {0.45, 0.75}, {-0.65, 0.65}}, {DrawRole::Body, 0, 1.0});
+  canvas.segment({-1.5, -0.1}, {1.5, -0.1}, {DrawRole::ReferenceEdge, 1, 1.0});
+  canvas.point({-0.6, -0.15}, {DrawRole::IncidentVertex, 0, 1.0});
+  for (const sim::Vec2& p : {sim::Vec2(-0.6, -0.125), sim::Vec2(0.5, -0.075)}) {
+    canvas.arrow(p, p + sim::Vec2(0, 0.5), {DrawRole::ContactNormal, -1, 1.0});
+    canvas.point(p, {DrawRole::ContactPoint, -1, 1.0});
+  }
+  canvas.text({0.9, 0.5}, "separation −0.05 m", {DrawRole::Label, -1, 1.0});
+  canvas.text({-1.9, 1.1}, "t = 0.000 s", {DrawRole::Caption, -1, 1.0});
+  checkGolden("sat_overlay", canvas.finish());
+}
+
+TEST_CASE("the same scene rendered twice gives byte-identical PNGs") {
+  const auto a = render::encodePng(frame(kImpact, 0.75));
+  const auto b = render::encodePng(frame(kImpact, 0.75));
+  CHECK(a == b);
+}
