@@ -123,12 +123,12 @@ int renderScene(RenderOptions o) {
   if (o.duration && (!(*o.duration > 0.0) || !std::isfinite(*o.duration)))
     throw UsageError("--duration: the length of the video must be a positive number of seconds");
 
-  // the variants to render: all of them, one, or the base scene
+  // the variants to render: every one (the base scene when there are none, as `check` does), the
+  // one asked for, or the base scene
   std::vector<std::string> variants = {o.variant};
   if (o.allVariants) {
     const sim::SceneDef base = o.load();
-    if (base.variantNames.empty()) throw UsageError("--all-variants: " + o.scene + " has no variants");
-    variants = base.variantNames;
+    if (!base.variantNames.empty()) variants = base.variantNames;
   }
   for (const std::string& v : variants) {
     RenderOptions one = o;
@@ -156,7 +156,7 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("scene", o->scene, "the scene file (YAML)")->required();
   o->addTo(*cmd);
   cmd->add_option("-o,--output", o->output, "the output directory (default: out)");
-  cmd->add_flag("--all-variants", o->allVariants, "one video per variant")->excludes("--variant");
+  cmd->add_flag("--all-variants", o->allVariants, "one video per variant (the base scene when it has none)")->excludes("--variant");
   cmd->add_option("--size", o->size, "frame size WIDTHxHEIGHT in pixels, even (default: the scene's, 1280x720)");
   cmd->add_option("--fps", o->fps, "frames per second (default: the scene's, 60)");
   cmd->add_option("--duration", o->duration, "length of the video in seconds (default: the scene's duration)");

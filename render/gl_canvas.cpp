@@ -28,7 +28,6 @@ GlCanvas::GlCanvas(GlContext& gl, TextRenderer& text, const Style& style)
 void GlCanvas::begin(const Camera& camera) {
   camera_ = camera;
   px_ = camera.pixelSize();
-  stencil_ = 0;
   texts_.clear();
   // 2D drawing in call order: no depth test; straight alpha blending that keeps the frame opaque
   glDisable(GL_DEPTH_TEST);
@@ -37,6 +36,8 @@ void GlCanvas::begin(const Camera& camera) {
   glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   glEnable(GL_STENCIL_TEST);
   glStencilMask(0xff);
+  lastStencil_ = 0;
+  stencil_ = -1;  // unknown: the first primitive sets the stencil state
   const Color& bg = style_.background;
   glClearColor(static_cast<float>(bg.r), static_cast<float>(bg.g), static_cast<float>(bg.b), 1.0f);
   glClearStencil(0);
@@ -102,8 +103,7 @@ void GlCanvas::polygon(const std::vector<Vec2>& vertices, const sim::DrawStyle& 
   if (vertices.empty()) return;
   const bool solid = s.role == DrawRole::Body || s.role == DrawRole::StaticBody;
   if (solid) {
-    beginPrimitive();
-    color(fillColor(s), s.opacity);
+    beginPrimitive(fillColor(s), s.opacity, s.role == DrawRole::StaticBody);
     fillConvex(vertices);
     if (s.role == DrawRole::StaticBody) {
       Bounds area;
@@ -111,16 +111,14 @@ void GlCanvas::polygon(const std::vector<Vec2>& vertices, const sim::DrawStyle& 
       hatch(area, strokeColor(s), s.opacity);
     }
   }
-  beginPrimitive();
-  color(strokeColor(s), s.opacity);
+  beginPrimitive(strokeColor(s), s.opacity);
   strokeClosed(vertices, strokeWidth(s.role));
 }
 
 void GlCanvas::circle(const Vec2& center, double radius, const sim::DrawStyle& s) {
   const bool solid = s.role == DrawRole::Body || s.role == DrawRole::StaticBody;
   if (solid) {
-    beginPrimitive();
-    color(fillColor(s), s.opacity);
+    beginPrimitive(fillColor(s), s.opacity, s.role == DrawRole::StaticBody);
     fillDisc(center, radius);
     if (s.role == DrawRole::StaticBody) {
       Bounds area;
@@ -129,8 +127,7 @@ void GlCanvas::circle(const Vec2& center, double radius, const sim::DrawStyle& s
       hatch(area, strokeColor(s), s.opacity);
     }
   }
-  beginPrimitive();
-  color(strokeColor(s), s.opacity);
+  beginPrimitive(strokeColor(s), s.opacity);
   ring(center, radius, strokeWidth(s.role));
 }
 
@@ -141,19 +138,16 @@ void GlCanvas::halfPlane(const Vec2& point, const Vec2& normal, const sim::DrawS
   // the boundary point nearest the view's center, and a length that reaches past every corner
   const Vec2 p0 = point + t * t.dot(view.center() - point);
   const double reach = view.size().norm() + (view.center() - p0).norm();
-  beginPrimitive();
-  color(fillColor(s), s.opacity);
+  beginPrimitive(fillColor(s), s.opacity, true);
   // the solid side is n·(r − p) ≤ 0: a quad from the boundary away from n, clipped by GL
   fillConvex({p0 - t * reach, p0 + t * reach, p0 + t * reach - n * reach, p0 - t * reach - n * reach});
   hatch(view, strokeColor(s), s.opacity);
-  beginPrimitive();
-  color(strokeColor(s), s.opacity);
+  beginPrimitive(strokeColor(s), s.opacity);
   strokeSegment(p0 - t * reach, p0 + t * reach, strokeWidth(s.role));
 }
 
 void GlCanvas::segment(const Vec2& a, const Vec2& b, const sim::DrawStyle& s) {
-  beginPrimitive();
-  color(strokeColor(s), s.opacity);
+  beginPrimitive(strokeColor(s), s.opacity);
   strokeSegment(a, b, strokeWidth(s.role));
 }
 
@@ -162,29 +156,24 @@ void GlCanvas::point(const Vec2& p, const sim::DrawStyle& s) {
   switch (s.role) {
     case DrawRole::IncidentVertex:
       // a ring, so the vertex itself stays visible inside it
-      beginPrimitive();
-      color(strokeColor(s), s.opacity);
+      beginPrimitive(strokeColor(s), s.opacity);
       ring(p, 4.0 * w * px_, w);
       break;
     case DrawRole::ContactPoint:
       // a dot with a rim of the background, visible over a body of the same color
-      beginPrimitive();
-      color(style_.background, s.opacity);
+      beginPrimitive(style_.background, s.opacity);
       fillDisc(p, 2.9 * w * px_);
-      beginPrimitive();
-      color(strokeColor(s), s.opacity);
+      beginPrimitive(strokeColor(s), s.opacity);
       fillDisc(p, 2.2 * w * px_);
       break;
     default:
-      beginPrimitive();
-      color(strokeColor(s), s.opacity);
+      beginPrimitive(strokeColor(s), s.opacity);
       fillDisc(p, 1.6 * w * px_);
   }
 }
 
 void GlCanvas::arrow(const Vec2& tail, const Vec2& head, const sim::DrawStyle& s) {
-  beginPrimitive();
-  color(strokeColor(s), s.opacity);
+  beginPrimitive(strokeColor(s), s.opacity);
   strokeArrow(tail, head, strokeWidth(s.role));
 }
 
@@ -193,18 +182,28 @@ void GlCanvas::text(const Vec2& at, const std::string& text, const sim::DrawStyl
   texts_.push_back({camera_.toPixel(at), text, anchor, strokeColor(s).withAlpha(s.opacity)});
 }
 
-void GlCanvas::beginPrimitive() {
-  // 8 stencil bits: after 255 primitives start over from a cleared stencil
-  if (++stencil_ > 255) {
-    glClear(GL_STENCIL_BUFFER_BIT);
-    stencil_ = 1;
+void GlCanvas::beginPrimitive(const Color& c, double opacity, bool marks) {
+  const double alpha = c.a * std::clamp(opacity, 0.0, 1.0);
+  glColor4d(c.r, c.g, c.b, alpha);
+  if (alpha >= 1.0 && !marks) {
+    // opaque: overlaps do not show, so no stencil, and no state change between primitives, which
+    // lets Mesa draw many of them in one batch (a stencil change per primitive made contact-heavy
+    // frames several times slower)
+    if (stencil_ != 0) {
+      glStencilFunc(GL_ALWAYS, 0, 0xff);
+      glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    }
+    stencil_ = 0;
+    return;
   }
+  // 8 stencil bits: after 255 primitives start over from a cleared stencil
+  if (++lastStencil_ > 255) {
+    glClear(GL_STENCIL_BUFFER_BIT);
+    lastStencil_ = 1;
+  }
+  stencil_ = lastStencil_;
   glStencilFunc(GL_NOTEQUAL, stencil_, 0xff);
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
-}
-
-void GlCanvas::color(const Color& c, double opacity) {
-  glColor4d(c.r, c.g, c.b, c.a * std::clamp(opacity, 0.0, 1.0));
 }
 
 void GlCanvas::vertex(const Vec2& world) {
@@ -286,7 +285,7 @@ void GlCanvas::hatch(const Bounds& area, const Color& c, double opacity) {
   // only over the pixels the primitive just drawn has marked in the stencil
   glStencilFunc(GL_EQUAL, stencil_, 0xff);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-  color(c, opacity * 0.8);
+  glColor4d(c.r, c.g, c.b, c.a * std::clamp(opacity * 0.8, 0.0, 1.0));
   // lines rising at 45°, fixed in the world so that they do not crawl when the view changes
   const Vec2 along = Vec2(1.0, 1.0).normalized(), across = perpendicular(along);
   const double spacing = 5.0 * style_.lineWidth * px_;

@@ -3,9 +3,10 @@
 // Text is queued and blended in after the GL frame is read back (FreeType, see text.h), so it
 // always lies on top.
 //
-// Each call is one "primitive" under a fresh stencil value: a pixel is written at most once per
-// primitive, so the overlapping parts of an outline (edge quads and round joins) blend once when
-// translucent, and a static body's hatching stays inside its shape.
+// Each translucent call is one "primitive" under a fresh stencil value: a pixel is written at most
+// once per primitive, so the overlapping parts of an outline (edge quads and round joins) blend once,
+// and a static body's hatching stays inside its shape. Opaque calls leave the stencil alone, so that
+// Mesa can batch them.
 #pragma once
 
 #include <string>
@@ -49,9 +50,9 @@ class GlCanvas : public sim::DebugDraw {
   // a stroke's width in output pixels
   double strokeWidth(sim::DrawRole role) const;
 
-  // the GL work: a fresh stencil value per primitive, vertices relative to the camera center
-  void beginPrimitive();
-  void color(const Color& c, double opacity);
+  // the GL work, vertices relative to the camera center. A primitive in color c at `opacity`: a
+  // translucent one, or one that `marks` its pixels (for hatching), under a fresh stencil value
+  void beginPrimitive(const Color& c, double opacity, bool marks = false);
   void vertex(const Vec2& world);
   void fillConvex(const std::vector<Vec2>& vertices);
   void fillDisc(const Vec2& center, double radius);
@@ -68,7 +69,8 @@ class GlCanvas : public sim::DebugDraw {
   const Style& style_;
   Camera camera_{Vec2::Zero(), 1.0, 1, 1};
   double px_ = 1.0;  // world length of one output pixel
-  int stencil_ = 0;
+  int stencil_ = -1;     // the stencil value of the primitive being drawn, 0 for none
+  int lastStencil_ = 0;  // the last value given out since the stencil was cleared
   std::vector<QueuedText> texts_;
 };
 

@@ -23,7 +23,7 @@ void History::afterEvent(const sim::World& world, const sim::ImpulseEvent& e) {
   const sim::Body& b = world.bodies[e.body];
   const Vec2 r = e.pointInWorld ? e.point : b.pose().toWorld(e.point);
   // the arrow ends where the impulse is applied, as a blow that strikes the body there
-  Moment m{world.time, {}, Moment::Kind::Event};
+  Moment m{world.time, {}, Moment::Kind::Event, {-1, -1}};
   m.calls.arrow(r - options_.impulseScale * e.impulse, r, {sim::DrawRole::Impulse, e.body, 1.0});
   moments_.push_back(std::move(m));
 }
@@ -33,17 +33,29 @@ void History::observeImpacts(const sim::World& world) {
     impactsSeen_ = world.impacts.size();
     return;
   }
-  // one moment per instant: the points of a manifold, or simultaneous impacts, together
   for (; impactsSeen_ < world.impacts.size(); ++impactsSeen_) {
     const sim::ImpactRecord& r = world.impacts[impactsSeen_];
-    if (moments_.empty() || moments_.back().time != r.t || moments_.back().kind != Moment::Kind::Impact)
-      moments_.push_back({r.t, {}, Moment::Kind::Impact});
-    DrawList& d = moments_.back().calls;
-    // the impulse γ n̂ on A and −γ n̂ on B from the point, then the unit normal and the point on top
+    // one moment per pair: its latest impact (all the points of that instant) replaces the ones
+    // before, so that a pair hitting again and again (a jittering stack, a ball's last bounces)
+    // shows one set of arrows and not a pile of fading ones
+    const std::pair<int, int> pair(r.a, r.b);
+    auto m = std::find_if(moments_.rbegin(), moments_.rend(),
+                          [&](const Moment& k) { return k.kind == Moment::Kind::Impact && k.pair == pair; });
+    if (m == moments_.rend()) {
+      moments_.push_back({r.t, {}, Moment::Kind::Impact, pair});
+      m = moments_.rbegin();
+    } else if (m->time != r.t) {
+      m->time = r.t;
+      m->calls.clear();
+    }
+    DrawList& d = m->calls;
+    // the impulse on each moving body (γ n̂ on A, −γ n̂ on B), from the point
     const Vec2 j = options_.impulseScale * r.impulse * r.normal;
-    d.arrow(r.point, r.point + j, {sim::DrawRole::Impulse, r.a, 1.0});
-    d.arrow(r.point, r.point - j, {sim::DrawRole::Impulse, r.b, 1.0});
-    d.arrow(r.point, r.point + options_.normalLength * r.normal, {sim::DrawRole::ContactNormal, -1, 1.0});
+    if (!world.bodies[r.a].isStatic) d.arrow(r.point, r.point + j, {sim::DrawRole::Impulse, r.a, 1.0});
+    if (!world.bodies[r.b].isStatic) d.arrow(r.point, r.point - j, {sim::DrawRole::Impulse, r.b, 1.0});
+    // the normal as the notes draw it, from B into A; turned into B when A does not move (a floor)
+    const Vec2 n = world.bodies[r.a].isStatic ? Vec2(-r.normal) : r.normal;
+    d.arrow(r.point, r.point + options_.normalLength * n, {sim::DrawRole::ContactNormal, -1, 1.0});
     d.point(r.point, {sim::DrawRole::ContactPoint, -1, 1.0});
   }
 }
@@ -59,9 +71,9 @@ void History::observeContacts(const sim::World& world) {
   // contacts that go on touching step after step are one moment, kept up to date; a new touch
   // after a separation is a new moment, so that the last one fades while the next one shows
   if (touching_ >= 0) {
-    moments_[touching_] = {world.time, std::move(now), Moment::Kind::Contact};
+    moments_[touching_] = {world.time, std::move(now), Moment::Kind::Contact, {-1, -1}};
   } else {
-    moments_.push_back({world.time, std::move(now), Moment::Kind::Contact});
+    moments_.push_back({world.time, std::move(now), Moment::Kind::Contact, {-1, -1}});
     touching_ = static_cast<long>(moments_.size()) - 1;
   }
 }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <functional>
+#include <utility>
 #include <vector>
 
 #include "draw_list.h"
@@ -44,6 +45,7 @@ class History : public sim::StepObserver {
     double time;
     DrawList calls;
     Kind kind;
+    std::pair<int, int> pair;  // the bodies of an impact
   };
   void observeContacts(const sim::World& world);
   void observeImpacts(const sim::World& world);
