@@ -10,6 +10,8 @@ int main(int argc, char** argv) {
   int exitCode = render::kExitOk;
   render::addSimulateCommand(app, exitCode);
   render::addCheckCommand(app, exitCode);
+  render::addSweepCommand(app, exitCode);
+  render::addStabilityCommand(app, exitCode);
   render::addRenderCommand(app, exitCode);
   render::addSnapshotCommand(app, exitCode);
   try {

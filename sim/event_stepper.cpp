@@ -40,8 +40,6 @@ constexpr int kMaxSearchIterations = 100000;
 // approaching slower than this, m/s, does not count as an impact (round-off after an impulse)
 constexpr double kApproachFloor = 1e-3 * settings::kRestingSpeed;
 
-// a relative normal acceleration weaker than this, m/s², does not press two bodies together
-constexpr double kPressingFloor = 1e-9;
 
 bool isResting(const std::vector<std::pair<int, int>>& resting, int a, int b) {
   return std::find(resting.begin(), resting.end(), std::make_pair(a, b)) != resting.end();
@@ -282,25 +280,22 @@ void World::resolveImpactsAt(double t) {
     if (!any) break;
   }
   // a contact pressed together that moves too slowly to ever get clear of the next impact rests
-  // instead: the bounces left would pile up in finite time (Zeno). Pressed means the forces,
-  // including the contact forces of what already rests, accelerate the two points together.
+  // instead: the bounces left would pile up in finite time (Zeno). Pressed means that over one
+  // step of free motion (forces, spin, and the contact forces of what already rests) the two
+  // would overlap.
   States now(bodies.size());
-  Rates acceleration;
   for (const Contact& c : touching) {
     if (isResting(restingPairs_, c.a, c.b)) continue;
-    for (size_t i = 0; i < bodies.size(); ++i) now[i] = bodies[i].state();
-    rates(t, now, acceleration);
     Body &a = bodies[c.a], &b = bodies[c.b];
     const Vec2 n = c.manifold.normal;
-    double fastest = -std::numeric_limits<double>::infinity(), pressing = 0.0;
-    for (int k = 0; k < c.manifold.count; ++k) {
-      const Vec2 r = c.manifold.points[k].point;
-      fastest = std::max(fastest, std::abs(n.dot(relativeVelocity(a, b, r))));
-      const Vec2 aa = acceleration[c.a].vDot + cross(acceleration[c.a].omegaDot, r - a.x);
-      const Vec2 ab = acceleration[c.b].vDot + cross(acceleration[c.b].omegaDot, r - b.x);
-      pressing = std::min(pressing, n.dot(aa - ab));
-    }
-    if (fastest > settings::kRestingSpeed || pressing >= -kPressingFloor) continue;
+    double fastest = 0.0;
+    for (int k = 0; k < c.manifold.count; ++k)
+      fastest = std::max(fastest, std::abs(n.dot(relativeVelocity(a, b, c.manifold.points[k].point))));
+    if (fastest > settings::kRestingSpeed) continue;
+    for (size_t i = 0; i < bodies.size(); ++i) now[i] = bodies[i].state();
+    const States ahead = motion(now, dt);
+    const double gap = collide(a.shape, poseOf(ahead[c.a]), b.shape, poseOf(ahead[c.b]), 0.0).separation;
+    if (gap >= -touch) continue;
     // the rest of the geometric series of bounces is below kRestingSpeed: end it here
     for (int k = 0; k < c.manifold.count; ++k) {
       const Vec2 r = c.manifold.points[k].point;

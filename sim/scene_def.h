@@ -89,6 +89,17 @@ struct ExpectDef {
   SourceLoc loc;
 };
 
+// how `rigidreel stability` probes the scene: the parameter it searches for the largest value at
+// which the scene still holds (documented in scenes/README.md)
+struct StabilityDef {
+  enum class Parameter { Dt, Speed, MassRatio, StackHeight };
+  Parameter parameter = Parameter::Dt;
+  std::string body;   // speed: whose speed; mass_ratio: whose mass and inertia are scaled
+  double from = 0.0;  // where the search starts (0: from the scene's own value)
+  double to = 0.0;    // the largest value tried (0: no limit but the search's own)
+  bool stack = false; // the stack criterion applies: the top box must not drift
+};
+
 struct SceneDef {
   std::string name;
   std::string description;
@@ -110,6 +121,7 @@ struct SceneDef {
   std::vector<EventDef> events;
   std::vector<ExpectDef> expects;
   RenderDef render;
+  StabilityDef stability;
 
   // index of the body with this name, or -1
   int bodyIndex(const std::string& name) const;

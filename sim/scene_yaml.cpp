@@ -76,7 +76,7 @@ class SceneReader : public Reader {
     if (!root.IsMap()) fail(root, "a scene is a map with at least 'bodies:'; got " + describe(root));
     SceneDef s;
     readVariants(root, s, variant);
-    checkKeys(root, {"name", "description", "duration", "world", "sim", "bodies", "forces", "events", "variants", "expect", "render"},
+    checkKeys(root, {"name", "description", "duration", "world", "sim", "bodies", "forces", "events", "variants", "expect", "render", "stability"},
               "the scene");
     s.name = root["name"] ? text(root["name"], "name") : defaultName;
     if (root["description"]) s.description = text(root["description"], "description");
@@ -113,6 +113,7 @@ class SceneReader : public Reader {
       for (const YAML::Node& e : expect) s.expects.push_back(readExpect(e, s));
     }
     if (const YAML::Node r = root["render"]) yaml::readRender(r, *this, s.render);
+    if (const YAML::Node st = root["stability"]) s.stability = readStability(st, s);
     return s;
   }
 
@@ -288,6 +289,28 @@ class SceneReader : public Reader {
     if (x != std::floor(x) || x < least || x > 1000)
       fail(n, "'" + key + "' must be a whole number from " + std::to_string(least) + " to 1000, got " + n.Scalar());
     return static_cast<int>(x);
+  }
+
+  StabilityDef readStability(const YAML::Node& n, const SceneDef& s) {
+    checkKeys(n, {"parameter", "body", "from", "to", "stack"}, "stability");
+    StabilityDef d;
+    if (n["parameter"]) {
+      const std::string p = text(n["parameter"], "parameter");
+      if (p == "dt") d.parameter = StabilityDef::Parameter::Dt;
+      else if (p == "speed") d.parameter = StabilityDef::Parameter::Speed;
+      else if (p == "mass_ratio") d.parameter = StabilityDef::Parameter::MassRatio;
+      else if (p == "stack_height") d.parameter = StabilityDef::Parameter::StackHeight;
+      else fail(n["parameter"], "unknown stability parameter '" + p + "'; choose one of: dt, speed, mass_ratio, stack_height");
+    }
+    const bool needsBody = d.parameter == StabilityDef::Parameter::Speed || d.parameter == StabilityDef::Parameter::MassRatio;
+    if (needsBody) d.body = bodyRef(n, "body", s, "stability with this parameter");
+    else if (n["body"]) fail(n["body"], "'body' goes with the parameters speed and mass_ratio");
+    if (n["from"]) d.from = positive(n["from"], "from");
+    if (n["to"]) d.to = positive(n["to"], "to");
+    if (d.to > 0.0 && d.from > 0.0 && !(d.to > d.from)) fail(n["to"], "'to' must be larger than 'from'");
+    if (n["stack"]) d.stack = boolean(n["stack"], "stack");
+    if (d.parameter == StabilityDef::Parameter::StackHeight) d.stack = true;
+    return d;
   }
 
   std::string frame(const YAML::Node& n) {
