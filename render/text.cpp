@@ -78,19 +78,19 @@ TextBox TextRenderer::measure(const std::string& text, int sizePx) {
   return box;
 }
 
-void TextRenderer::draw(Image& image, const std::string& text, double x, double y, Anchor anchor, int sizePx,
-                        const Color& color, const Color& halo, int haloPx) {
-  const TextBox box = measure(text, sizePx);
-  // the pen's start on the baseline, whole pixels so that glyphs stay sharp
-  double left = x, top = y;
-  if (anchor == Anchor::Center || anchor == Anchor::TopCenter) left -= 0.5 * box.width;
-  if (anchor == Anchor::Center) top -= 0.5 * (box.ascent + box.descent);
-  const int penX = static_cast<int>(std::lround(left)), baseline = static_cast<int>(std::lround(top)) + box.ascent;
+const TextRenderer::Mask& TextRenderer::mask(const std::string& text, int sizePx, int haloPx) {
+  const MaskKey key{text, sizePx, haloPx};
+  if (auto it = masks_.find(key); it != masks_.end()) return it->second;
+  // labels repeat from frame to frame; the time does not, so the cache is emptied now and then
+  constexpr size_t kMaxMasks = 256;
+  if (masks_.size() >= kMaxMasks) masks_.clear();
 
-  // the string's coverage in a mask with room for the halo around it
-  const int pad = haloPx + 1;
-  const int maskW = box.width + 2 * pad + sizePx, maskH = box.ascent + box.descent + 2 * pad;
-  std::vector<uint8_t> mask(static_cast<size_t>(maskW) * maskH, 0);
+  Mask m;
+  m.box = measure(text, sizePx);
+  m.pad = haloPx + 1;
+  m.width = m.box.width + 2 * m.pad + sizePx;
+  m.height = m.box.ascent + m.box.descent + 2 * m.pad;
+  m.coverage.assign(static_cast<size_t>(m.width) * m.height, 0);
   long pen = 0;
   unsigned previous = 0;
   for (char32_t c : decodeUtf8(text)) {
@@ -101,48 +101,64 @@ void TextRenderer::draw(Image& image, const std::string& text, double x, double 
       FT_Get_Kerning(ft_->face, previous, g.index, FT_KERNING_DEFAULT, &k);
       pen += k.x;
     }
-    const int gx = pad + static_cast<int>(pen >> 6) + g.left, gy = pad + box.ascent - g.top;
+    const int gx = m.pad + static_cast<int>(pen >> 6) + g.left, gy = m.pad + m.box.ascent - g.top;
     for (int r = 0; r < g.rows; ++r)
       for (int col = 0; col < g.width; ++col) {
         const int mx = gx + col, my = gy + r;
-        if (mx < 0 || my < 0 || mx >= maskW || my >= maskH) continue;
-        uint8_t& m = mask[static_cast<size_t>(my) * maskW + mx];
-        m = std::max(m, g.coverage[static_cast<size_t>(r) * g.width + col]);
+        if (mx < 0 || my < 0 || mx >= m.width || my >= m.height) continue;
+        uint8_t& v = m.coverage[static_cast<size_t>(my) * m.width + mx];
+        v = std::max(v, g.coverage[static_cast<size_t>(r) * g.width + col]);
       }
     pen += g.advance;
     previous = g.index;
   }
+  if (haloPx > 0) {
+    // the halo: the coverage dilated by a (2·haloPx + 1)² square, as a horizontal then a vertical
+    // running maximum (separable; at 1-3 px a square looks the same as a disc)
+    std::vector<uint8_t> rows(m.coverage.size(), 0);
+    m.halo.assign(m.coverage.size(), 0);
+    for (int y = 0; y < m.height; ++y)
+      for (int x = 0; x < m.width; ++x) {
+        uint8_t best = 0;
+        for (int d = std::max(0, x - haloPx); d <= std::min(m.width - 1, x + haloPx); ++d)
+          best = std::max(best, m.coverage[static_cast<size_t>(y) * m.width + d]);
+        rows[static_cast<size_t>(y) * m.width + x] = best;
+      }
+    for (int y = 0; y < m.height; ++y)
+      for (int x = 0; x < m.width; ++x) {
+        uint8_t best = 0;
+        for (int d = std::max(0, y - haloPx); d <= std::min(m.height - 1, y + haloPx); ++d)
+          best = std::max(best, rows[static_cast<size_t>(d) * m.width + x]);
+        m.halo[static_cast<size_t>(y) * m.width + x] = best;
+      }
+  }
+  return masks_.emplace(key, std::move(m)).first->second;
+}
 
-  // blend a mask into the image at the mask's origin (x0, y0), clipped to the image
-  const int x0 = penX - pad, y0 = baseline - box.ascent - pad;
+void TextRenderer::draw(Image& image, const std::string& text, double x, double y, Anchor anchor, int sizePx,
+                        const Color& color, const Color& halo, int haloPx) {
+  const Mask& m = mask(text, sizePx, haloPx);
+  // the pen's start on the baseline, whole pixels so that glyphs stay sharp
+  double left = x, top = y;
+  if (anchor == Anchor::Center || anchor == Anchor::TopCenter) left -= 0.5 * m.box.width;
+  if (anchor == Anchor::Center) top -= 0.5 * (m.box.ascent + m.box.descent);
+  const int x0 = static_cast<int>(std::lround(left)) - m.pad, y0 = static_cast<int>(std::lround(top)) - m.pad;
+
+  // blend a coverage mask into the image, clipped to it: p + (c − p)·a in 8-bit integers
   auto blend = [&](const std::vector<uint8_t>& coverage, const Color& c) {
-    const double rgb[3] = {c.r * 255.0, c.g * 255.0, c.b * 255.0};
-    for (int my = std::max(0, -y0); my < maskH && y0 + my < image.height; ++my)
-      for (int mx = std::max(0, -x0); mx < maskW && x0 + mx < image.width; ++mx) {
-        const int cov = coverage[static_cast<size_t>(my) * maskW + mx];
+    const int rgb[3] = {Color::byte(c.r), Color::byte(c.g), Color::byte(c.b)};
+    const int alpha = Color::byte(c.a);
+    for (int my = std::max(0, -y0); my < m.height && y0 + my < image.height; ++my)
+      for (int mx = std::max(0, -x0); mx < m.width && x0 + mx < image.width; ++mx) {
+        const int cov = coverage[static_cast<size_t>(my) * m.width + mx];
         if (cov == 0) continue;
-        const double a = cov / 255.0 * c.a;
+        const int a = (cov * alpha + 127) / 255;
         uint8_t* p = image.pixel(x0 + mx, y0 + my);
-        for (int i = 0; i < 3; ++i) p[i] = static_cast<uint8_t>(std::lround(p[i] + (rgb[i] - p[i]) * a));
+        for (int i = 0; i < 3; ++i) p[i] = static_cast<uint8_t>((p[i] * (255 - a) + rgb[i] * a + 127) / 255);
       }
   };
-  if (haloPx > 0) {
-    // the halo: the coverage dilated by a disc of radius haloPx (a max filter)
-    std::vector<uint8_t> grown(mask.size(), 0);
-    for (int my = 0; my < maskH; ++my)
-      for (int mx = 0; mx < maskW; ++mx) {
-        uint8_t best = 0;
-        for (int dy = -haloPx; dy <= haloPx; ++dy)
-          for (int dx = -haloPx; dx <= haloPx; ++dx) {
-            const int sx = mx + dx, sy = my + dy;
-            if (dx * dx + dy * dy > haloPx * haloPx || sx < 0 || sy < 0 || sx >= maskW || sy >= maskH) continue;
-            best = std::max(best, mask[static_cast<size_t>(sy) * maskW + sx]);
-          }
-        grown[static_cast<size_t>(my) * maskW + mx] = best;
-      }
-    blend(grown, halo);
-  }
-  blend(mask, color);
+  if (haloPx > 0) blend(m.halo, halo);
+  blend(m.coverage, color);
 }
 
 std::u32string decodeUtf8(const std::string& text) {

@@ -6,6 +6,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -48,13 +49,23 @@ class TextRenderer {
     unsigned index = 0;                         // FreeType's glyph index, for kerning
     std::vector<uint8_t> coverage;
   };
+  // a string's coverage and its halo, with `pad` pixels around the text box on every side
+  struct Mask {
+    TextBox box;
+    int pad = 0, width = 0, height = 0;
+    std::vector<uint8_t> coverage, halo;
+  };
+  using MaskKey = std::tuple<std::string, int, int>;  // text, size, halo
+
   const Glyph& glyph(char32_t code, int sizePx);
+  const Mask& mask(const std::string& text, int sizePx, int haloPx);
   void setSize(int sizePx);
 
   struct Library;
   std::unique_ptr<Library> ft_;
   int size_ = 0;
   std::map<std::pair<char32_t, int>, Glyph> cache_;
+  std::map<MaskKey, Mask> masks_;
 };
 
 // the code points of UTF-8 text (malformed bytes become U+FFFD)
