@@ -31,6 +31,11 @@ demo: build
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
 
+# timings (never asserted in tests): pyramids, 720p render fps, render against ffmpeg alone
+bench: build
+	@cmake --build $(BUILD) -j $(JOBS) --target rigidreel_bench
+	./$(BUILD)/rigidreel_bench ./$(BUILD)/rigidreel scenes/three_collisions_poll.yaml
+
 clean:
 	rm -rf $(BUILD)
 
