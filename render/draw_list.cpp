@@ -21,6 +21,7 @@ const char* roleName(DrawRole role) {
     case DrawRole::IncidentVertex: return "IncidentVertex";
     case DrawRole::Label: return "Label";
     case DrawRole::Caption: return "Caption";
+    case DrawRole::Spring: return "Spring";
   }
   return "?";
 }

@@ -24,6 +24,31 @@ double arrowScale(double given, double largest, const Camera& camera) {
 
 bool isSAT(DrawRole r) { return r == DrawRole::ReferenceEdge || r == DrawRole::IncidentVertex; }
 
+// a spring's coils: this many zigzag points, and straight leads of this fraction at each end
+constexpr int kSpringZigs = 12;
+constexpr double kSpringLead = 0.12;
+
+// a spring from a to b as a zigzag `amplitude` wide, and a dot at a world anchor
+void describeSpring(const Vec2& a, const Vec2& b, double amplitude, sim::DebugDraw& draw) {
+  const sim::DrawStyle style{DrawRole::Spring, -1, 1.0};
+  const Vec2 d = b - a;
+  const double length = d.norm();
+  if (!(length > 0.0)) return;
+  const Vec2 side = Vec2(-d.y(), d.x()) / length * amplitude;
+  // a straight lead in, the zigs alternating sides, a straight lead out
+  Vec2 from = a + kSpringLead * d;
+  draw.segment(a, from, style);
+  for (int i = 0; i < kSpringZigs; ++i) {
+    const double u = kSpringLead + (1.0 - 2.0 * kSpringLead) * (i + 0.5) / kSpringZigs;
+    const Vec2 to = a + u * d + (i % 2 ? side : Vec2(-side));
+    draw.segment(from, to, style);
+    from = to;
+  }
+  const Vec2 leadOut = a + (1.0 - kSpringLead) * d;
+  draw.segment(from, leadOut, style);
+  draw.segment(leadOut, b, style);
+}
+
 }  // namespace
 
 void describeContacts(const sim::World&, sim::DebugDraw&) {
@@ -68,6 +93,15 @@ void FramePainter::paint(const sim::World& world, const History& history, const 
   for (const DrawList& ghost : ghosts) ghost.replay(draw);
   RoleFilter moving(draw, [](DrawRole role) { return role != DrawRole::StaticBody; });
   sim::describeBodies(world, moving);
+  if (r.springs)
+    for (const sim::Spring& sp : world.forces.springs) {
+      const Vec2 a = world.bodies[sp.bodyA].pose().toWorld(sp.pointA);
+      const bool anchored = sp.bodyB == sim::kWorldAnchor;
+      const Vec2 b = anchored ? sp.pointB : world.bodies[sp.bodyB].pose().toWorld(sp.pointB);
+      // coils 2.5 line widths to each side: visible, and narrower than most bodies
+      describeSpring(a, b, 2.5 * def_.render.lineWidth * px, draw);
+      if (anchored) draw.point(b, {DrawRole::StaticBody, -1, 1.0});
+    }
   history.drawAfterimages(world.time, draw);
   if (r.velocities)
     for (size_t i = 0; i < world.bodies.size(); ++i) {

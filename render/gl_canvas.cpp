@@ -83,6 +83,7 @@ Color GlCanvas::strokeColor(const sim::DrawStyle& s) const {
     case DrawRole::Trail: return style_.body(s.body);
     case DrawRole::ReferenceEdge: return style_.referenceEdge;
     case DrawRole::IncidentVertex: return style_.incidentVertex;
+    case DrawRole::Spring: return style_.spring;
     case DrawRole::Label:
     case DrawRole::Caption: return style_.text;
   }

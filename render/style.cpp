@@ -18,6 +18,7 @@ Style makeStyle(const sim::SceneDef& scene, int frameHeight) {
   s.trail = Color::parse(c.trail);
   s.referenceEdge = Color::parse(c.referenceEdge);
   s.incidentVertex = Color::parse(c.incidentVertex);
+  s.spring = Color::parse(c.spring);
   s.text = Color::parse(c.text);
   // the palette in order over the bodies without a color of their own (static ones are gray)
   size_t next = 0;

@@ -14,7 +14,7 @@ namespace render {
 struct Style {
   Color background{1.0, 1.0, 1.0, 1.0};
   std::vector<Color> bodies;  // by body index
-  Color staticBody, contact, normal, impulse, velocity, trail, referenceEdge, incidentVertex, text;
+  Color staticBody, contact, normal, impulse, velocity, trail, referenceEdge, incidentVertex, spring, text;
   double lineWidth = 2.0;  // output pixels
   int fontSize = 20;       // output pixels per em
 

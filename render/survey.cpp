@@ -50,6 +50,9 @@ RunSurvey surveyRun(const sim::SceneDef& def, double until) {
   sim::World world = sim::buildWorld(def);
   Surveyor surveyor(survey);
   surveyor.afterStep(world);
+  // a spring's world anchor belongs in the picture with what hangs from it
+  for (const sim::Spring& sp : world.forces.springs)
+    if (sp.bodyB == sim::kWorldAnchor) survey.bounds.add(sp.pointB);
   world.advanceTo(until < 0.0 ? def.duration : until, &surveyor);
   for (const sim::ImpactRecord& r : world.impacts) survey.maxImpulse = std::max(survey.maxImpulse, std::abs(r.impulse));
   survey.impactTimes = impactTimes(world);

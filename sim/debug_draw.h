@@ -23,6 +23,7 @@ enum class DrawRole {
   IncidentVertex,  // the separating-axis incident vertex
   Label,           // text, centered on its point
   Caption,         // text fixed to the frame (the time): its point is the top-left corner
+  Spring,          // a spring's coils, as segments
 };
 
 struct DrawStyle {

@@ -36,6 +36,7 @@ struct ColorsDef {
   std::string trail = "#9a9a9a";
   std::string referenceEdge = "#ff7f0e";
   std::string incidentVertex = "#9467bd";
+  std::string spring = "#4d4d4d";
   std::string text = "#1f1f1f";
 };
 
@@ -57,6 +58,7 @@ struct RenderDef {
   bool trails = false;                 // the path of every center of mass so far
   bool sat = false;                    // the separating-axis overlay: reference edge, incident vertex
   int strobe = 0;                      // snapshots and the poster: this many ghosted earlier poses
+  bool springs = true;                 // springs as zigzags, world anchors as dots
   bool labels = true;                  // body labels
   bool time = true;                    // the time in a corner
 };

@@ -67,7 +67,7 @@ class RenderReader {
 
   void colors(const YAML::Node& n, ColorsDef& out) const {
     r_.checkKeys(n, {"palette", "static", "contact", "normal", "impulse", "velocity", "trail", "reference_edge",
-                     "incident_vertex", "text"},
+                     "incident_vertex", "spring", "text"},
                  "colors");
     if (const YAML::Node p = n["palette"]) {
       if (!p.IsSequence() || p.size() == 0) r_.fail(p, "'palette' must be a list of at least one \"#rrggbb\" color");
@@ -79,7 +79,7 @@ class RenderReader {
         {"normal", &out.normal},      {"impulse", &out.impulse},
         {"velocity", &out.velocity},  {"trail", &out.trail},
         {"reference_edge", &out.referenceEdge}, {"incident_vertex", &out.incidentVertex},
-        {"text", &out.text}};
+        {"spring", &out.spring},      {"text", &out.text}};
     for (const auto& [key, value] : roles)
       if (n[key]) *value = color(n[key], key);
   }
@@ -93,7 +93,7 @@ class RenderReader {
 void readRender(const YAML::Node& node, const Reader& reader, RenderDef& out) {
   reader.checkKeys(node, {"size", "fps", "background", "line_width", "font_size", "colors", "camera", "contacts",
                           "contact_hold", "impulses", "impulse_scale", "velocities", "velocity_scale", "trails", "sat",
-                          "strobe", "labels", "time"},
+                          "strobe", "springs", "labels", "time"},
                    "render");
   const RenderReader r(reader);
   if (node["size"]) r.size(node["size"], out);
@@ -115,6 +115,7 @@ void readRender(const YAML::Node& node, const Reader& reader, RenderDef& out) {
   if (node["trails"]) out.trails = reader.boolean(node["trails"], "trails");
   if (node["sat"]) out.sat = reader.boolean(node["sat"], "sat");
   if (node["strobe"]) out.strobe = r.integer(node["strobe"], "strobe", 0, 100);
+  if (node["springs"]) out.springs = reader.boolean(node["springs"], "springs");
   if (node["labels"]) out.labels = reader.boolean(node["labels"], "labels");
   if (node["time"]) out.time = reader.boolean(node["time"], "time");
 }

@@ -70,3 +70,19 @@ TEST_CASE("the time caption has three decimals") {
   CHECK(FramePainter::timeText(0.5) == "t = 0.500 s");
   CHECK(FramePainter::timeText(12.3456) == "t = 12.346 s");
 }
+
+TEST_CASE("a spring is a zigzag from the body point to its anchor, with a dot at the anchor") {
+  const std::string hanging =
+      "duration: 1\n"
+      "bodies:\n"
+      "  - {name: bar, shape: {box: [0.1, 1]}, position: [0, -1.5]}\n"
+      "forces:\n"
+      "  - {type: spring, body: bar, point: [0, 0.5], anchor: [0, 0], stiffness: 10, rest_length: 1}\n"
+      "render: {labels: false, time: false, size: [320, 180]}\n";
+  const auto lines = frameAt(hanging, 0.0).lines();
+  // the bar; a lead, 12 zigs, the way back to the axis and a lead (15 segments); the anchor
+  REQUIRE(lines.size() == 1 + 15 + 1);
+  CHECK(lines[1] == "segment Spring (0,-1) (0,-0.88)");
+  CHECK(lines[15] == "segment Spring (0,-0.12) (0,0)");
+  CHECK(lines[16] == "point StaticBody (0,0)");
+}

@@ -26,6 +26,7 @@ render::Style testStyle() {
   s.trail = Color::parse("#9a9a9a");
   s.referenceEdge = Color::parse("#ff7f0e");
   s.incidentVertex = Color::parse("#9467bd");
+  s.spring = Color::parse("#4d4d4d");
   s.lineWidth = 2.0;
   s.fontSize = 12;
   return s;

@@ -44,6 +44,8 @@ TEST_CASE("without a render block the documented defaults hold") {
   CHECK_FALSE(r.trails);
   CHECK_FALSE(r.sat);
   CHECK(r.strobe == 0);
+  CHECK(r.springs);
+  CHECK(r.colors.spring == "#4d4d4d");
   CHECK(r.colors.palette.size() == 10);
 }
 
@@ -66,6 +68,7 @@ TEST_CASE("every key is read") {
       "  trails: true\n"
       "  sat: yes\n"
       "  strobe: 6\n"
+      "  springs: false\n"
       "  labels: false\n"
       "  time: false\n");
   CHECK(r.width == 320);
@@ -92,6 +95,7 @@ TEST_CASE("every key is read") {
   CHECK(r.trails);
   CHECK(r.sat);
   CHECK(r.strobe == 6);
+  CHECK_FALSE(r.springs);
   CHECK_FALSE(r.labels);
   CHECK_FALSE(r.time);
 }
