@@ -2,12 +2,12 @@
 // the scene's `stability:` block declares) at which the scene still holds, and how it fails beyond.
 #include <filesystem>
 #include <iostream>
-#include <sstream>
 
 #include "atomic_file.h"
 #include "chart.h"
 #include "commands.h"
 #include "json_writer.h"
+#include "method_lists.h"
 #include "scene_options.h"
 #include "stability.h"
 
@@ -15,17 +15,9 @@ namespace render {
 
 namespace {
 
-struct StabilityOptions {
-  std::string scene, variant, integrators, collisions, outDir = "out";
+struct StabilityOptions : MethodLists {
+  std::string scene, variant, outDir = "out";
 };
-
-std::vector<std::string> splitList(const std::string& text) {
-  std::vector<std::string> items;
-  std::stringstream in(text);
-  for (std::string item; std::getline(in, item, ',');)
-    if (!item.empty()) items.push_back(item);
-  return items;
-}
 
 int stability(const StabilityOptions& o) {
   SceneOptions so;
@@ -34,25 +26,8 @@ int stability(const StabilityOptions& o) {
   const sim::SceneDef def = so.load();
   startWorld(def, o.scene);
 
-  std::vector<sim::Integrator> integrators{sim::Integrator::ExplicitEuler, sim::Integrator::SymplecticEuler,
-                                           sim::Integrator::Midpoint, sim::Integrator::Rk4};
-  if (!o.integrators.empty()) {
-    integrators.clear();
-    for (const std::string& n : splitList(o.integrators)) {
-      const auto m = sim::integratorFromName(n);
-      if (!m) throw UsageError("--integrators: unknown integrator '" + n + "'");
-      integrators.push_back(*m);
-    }
-  }
-  std::vector<sim::CollisionMethod> methods{def.collisions};
-  if (!o.collisions.empty()) {
-    methods.clear();
-    for (const std::string& n : splitList(o.collisions)) {
-      const auto m = sim::collisionMethodFromName(n);
-      if (!m) throw UsageError("--collisions: unknown collision method '" + n + "'");
-      methods.push_back(*m);
-    }
-  }
+  const auto integrators = o.integratorList();
+  const auto methods = o.collisionList(def.collisions);
   std::filesystem::create_directories(o.outDir);
   const std::string base = o.outDir + "/" + def.name + (def.variant.empty() ? "" : "-" + def.variant) + "-stability";
   const char* parameter = parameterName(def.stability.parameter);
@@ -92,8 +67,7 @@ void addStabilityCommand(CLI::App& app, int& exitCode) {
   CLI::App* cmd = app.add_subcommand("stability", "find where each method stops holding a scene");
   cmd->add_option("scene", o->scene, "the scene file (YAML)")->required();
   cmd->add_option("--variant", o->variant, "the named variant of the scene");
-  cmd->add_option("--integrators", o->integrators, "comma-separated integrators (default: all four)");
-  cmd->add_option("--collisions", o->collisions, "comma-separated collision methods (default: the scene's)");
+  o->addTo(*cmd);
   cmd->add_option("-o", o->outDir, "output directory (default out)");
   cmd->callback([o, &exitCode] { exitCode = stability(*o); });
 }

@@ -10,6 +10,7 @@
 #include "chart.h"
 #include "commands.h"
 #include "json_writer.h"
+#include "method_lists.h"
 #include "scene_options.h"
 #include "sweep.h"
 
@@ -17,34 +18,10 @@ namespace render {
 
 namespace {
 
-struct SweepOptions {
-  std::string scene, variant, integrators, collisions, dt, iterations, outDir = "out";
+struct SweepOptions : MethodLists {
+  std::string scene, variant, dt, iterations, outDir = "out";
   int repeat = 3;
 };
-
-std::vector<std::string> splitList(const std::string& text) {
-  std::vector<std::string> items;
-  std::stringstream in(text);
-  for (std::string item; std::getline(in, item, ',');)
-    if (!item.empty()) items.push_back(item);
-  return items;
-}
-
-template <class Lookup>
-auto namedList(const std::string& text, Lookup lookup, const std::vector<std::string_view>& names, const std::string& option) {
-  std::vector<typename decltype(lookup(""))::value_type> out;
-  for (const std::string& item : splitList(text)) {
-    const auto value = lookup(item);
-    if (!value) {
-      std::string known;
-      for (auto n : names) known += (known.empty() ? "" : ", ") + std::string(n);
-      throw UsageError(option + ": unknown name '" + item + "'; choose from: " + known);
-    }
-    out.push_back(*value);
-  }
-  if (out.empty()) throw UsageError(option + ": give at least one name");
-  return out;
-}
 
 std::string methodLabel(const SweepCase& m) {
   std::string s = std::string(sim::integratorName(m.integrator)) + " + " + std::string(sim::collisionMethodName(m.collisions));
@@ -59,13 +36,8 @@ int sweep(const SweepOptions& o) {
   const sim::SceneDef def = so.load();
   startWorld(def, o.scene);  // bad start states are reported before the long run
 
-  const auto integrators = o.integrators.empty()
-                               ? std::vector<sim::Integrator>{sim::Integrator::ExplicitEuler, sim::Integrator::SymplecticEuler,
-                                                              sim::Integrator::Midpoint, sim::Integrator::Rk4}
-                               : namedList(o.integrators, sim::integratorFromName, sim::integratorNames(), "--integrators");
-  const auto methods = o.collisions.empty()
-                           ? std::vector<sim::CollisionMethod>{def.collisions}
-                           : namedList(o.collisions, sim::collisionMethodFromName, sim::collisionMethodNames(), "--collisions");
+  const auto integrators = o.integratorList();
+  const auto methods = o.collisionList(def.collisions);
   const std::vector<double> steps =
       o.dt.empty() ? parseRange(std::to_string(def.dt * 8) + ":" + std::to_string(def.dt / 8) + ":7", "--dt")
                    : parseRange(o.dt, "--dt");
@@ -137,8 +109,7 @@ void addSweepCommand(CLI::App& app, int& exitCode) {
   CLI::App* cmd = app.add_subcommand("sweep", "run a scene under many methods and steps: cost against error");
   cmd->add_option("scene", o->scene, "the scene file (YAML)")->required();
   cmd->add_option("--variant", o->variant, "the named variant of the scene");
-  cmd->add_option("--integrators", o->integrators, "comma-separated integrators (default: all four)");
-  cmd->add_option("--collisions", o->collisions, "comma-separated collision methods (default: the scene's)");
+  o->addTo(*cmd);
   cmd->add_option("--dt", o->dt, "FROM:TO:COUNT, log-spaced steps (default: 8·dt to dt/8, 7 steps)");
   cmd->add_option("--iterations", o->iterations, "comma-separated velocity iterations for sequential");
   cmd->add_option("--repeat", o->repeat, "timed runs per case; the median is kept (default 3)");

@@ -276,5 +276,30 @@ expect "check on a missing file exits 2" 2 err "missing.yaml" check missing.yaml
 expect "check on a diverging scene exits 1" 1 err "diverged" check diverge.yaml
 expect "check without files exits 2" 2 err "" check
 
+# sweep and stability: their files, their header, their bad input
+MASS=$SCENES/spring_mass.yaml
+expect "sweep runs and names its reference" 0 out "error against: expect" sweep "$MASS" --integrators rk4,symplectic_euler --dt 0.1:0.05:2 --repeat 1 -o sw
+if [ "$(head -n 1 sw/spring_mass-sweep.csv 2>/dev/null)" = "integrator,collisions,dt,iterations,steps,seconds_per_sim_second,error,energy_drift,max_penetration,reference" ] &&
+   [ "$(wc -l < sw/spring_mass-sweep.csv)" -eq 5 ] && [ -s sw/spring_mass-sweep.png ]; then
+  ok "sweep writes the CSV (header, a row per case) and the chart"
+else
+  not_ok "sweep writes the CSV (header, a row per case) and the chart" "$(ls sw 2>&1)"
+fi
+expect "sweep --dt without a count exits 2" 2 err "FROM:TO:COUNT" sweep "$MASS" --dt 0.1:0.01 -o sw
+expect "sweep --integrators with an unknown name exits 2" 2 err "unknown name 'bogus'" sweep "$MASS" --integrators rk4,bogus -o sw
+expect "stability prints the failure at the boundary" 0 out "symplectic_euler + auto: energy" stability "$MASS" --integrators symplectic_euler -o st
+if [ "$(head -n 1 st/spring_mass-stability.csv 2>/dev/null)" = "integrator,collisions,parameter,largest_stable,first_failing,failure" ] &&
+   [ -s st/spring_mass-stability.png ]; then
+  ok "stability writes its CSV and chart"
+else
+  not_ok "stability writes its CSV and chart" "$(ls st 2>&1)"
+fi
+expect "stability --collisions with an unknown name exits 2" 2 err "unknown name" stability "$MASS" --collisions bogus -o st
+if compgen -G "sw/*.part-*" >/dev/null || compgen -G "st/*.part-*" >/dev/null; then
+  not_ok "sweep and stability leave no partial files" "$(ls sw st)"
+else
+  ok "sweep and stability leave no partial files"
+fi
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
