@@ -2,7 +2,9 @@
 
 #include <cstdio>
 
+#include "collide.h"
 #include "describe.h"
+#include "style.h"
 
 namespace render {
 
@@ -21,8 +23,6 @@ double arrowScale(double given, double largest, const Camera& camera) {
   if (given > 0.0) return given;
   return largest > 0.0 ? kArrowFraction * camera.worldHeight() / largest : 1.0;
 }
-
-bool isSAT(DrawRole r) { return r == DrawRole::ReferenceEdge || r == DrawRole::IncidentVertex; }
 
 // a spring's coils: this many zigzag points, and straight leads of this fraction at each end
 constexpr int kSpringZigs = 12;
@@ -51,8 +51,44 @@ void describeSpring(const Vec2& a, const Vec2& b, double amplitude, sim::DebugDr
 
 }  // namespace
 
-void describeContacts(const sim::World&, sim::DebugDraw&) {
-  // the collision code does not describe its contacts yet (sim::describeContacts will)
+void describeContacts(const sim::World& world, double normalLength, sim::DebugDraw& draw) {
+  for (const sim::Contact& c : world.contacts) {
+    const sim::Manifold& m = c.manifold;
+    // the normal from B into A as in the notes, turned into B when A does not move (a floor)
+    const Vec2 n = world.bodies[c.a].isStatic ? Vec2(-m.normal) : m.normal;
+    for (int k = 0; k < m.count; ++k) {
+      const Vec2& p = m.points[k].point;
+      draw.arrow(p, p + normalLength * n, {DrawRole::ContactNormal, -1, 1.0});
+      draw.point(p, {DrawRole::ContactPoint, -1, 1.0});
+    }
+  }
+}
+
+void describeSeparatingAxes(const sim::World& world, double maxGap, double labelOffset, sim::DebugDraw& draw) {
+  const auto& bodies = world.bodies;
+  for (size_t i = 0; i < bodies.size(); ++i)
+    for (size_t j = i + 1; j < bodies.size(); ++j) {
+      const sim::Body &a = bodies[i], &b = bodies[j];
+      if (a.shape.kind != sim::ShapeKind::Polygon || b.shape.kind != sim::ShapeKind::Polygon) continue;
+      if (a.isStatic && b.isStatic) continue;
+      const sim::SatFeatures f = sim::sat(a.shape, a.pose(), b.shape, b.pose());
+      if (!f.valid || f.separation > maxGap) continue;
+      // the notes' slide: the edge of one polygon whose separation is largest, and the vertex of
+      // the other that is deepest below it
+      const int refIndex = static_cast<int>(f.referenceOnA ? i : j), otherIndex = static_cast<int>(f.referenceOnA ? j : i);
+      const sim::Body &ref = bodies[refIndex], &other = bodies[otherIndex];
+      const std::vector<Vec2>& v = ref.shape.vertices;
+      const int e = f.referenceEdge;
+      const Vec2 p = ref.pose().toWorld(v[e]), q = ref.pose().toWorld(v[(e + 1) % v.size()]);
+      draw.segment(p, q, {DrawRole::ReferenceEdge, refIndex, 1.0});
+      draw.point(other.pose().toWorld(other.shape.vertices[f.incidentVertex]), {DrawRole::IncidentVertex, otherIndex, 1.0});
+      // the separation beside the edge, inside the reference polygon: the other one comes from
+      // outside, and would cover it
+      char text[64];
+      std::snprintf(text, sizeof text, "separation %.3g m", f.separation);
+      const Vec2 outward = ref.q.apply(ref.shape.normals[e]);
+      draw.text(0.5 * (p + q) - labelOffset * outward, text, {DrawRole::Label, refIndex, 1.0});
+    }
 }
 
 FramePainter::FramePainter(const sim::SceneDef& def, const Camera& camera, const RunSurvey& survey)
@@ -70,13 +106,9 @@ History::Options FramePainter::historyOptions() const {
   o.impacts = r.contacts;
   o.impulseScale = impulseScale_;
   o.normalLength = kNormalFraction * camera_.worldHeight();
-  if (r.contacts || r.sat) {
-    const bool contacts = r.contacts, sat = r.sat;
-    // contacts and the separating-axis overlay come from one description: keep what is asked for
-    o.contacts = [contacts, sat](const sim::World& world, sim::DebugDraw& draw) {
-      RoleFilter filter(draw, [=](DrawRole role) { return isSAT(role) ? sat : contacts; });
-      describeContacts(world, filter);
-    };
+  if (r.contacts) {
+    const double length = o.normalLength;
+    o.contacts = [length](const sim::World& world, sim::DebugDraw& draw) { describeContacts(world, length, draw); };
   }
   return o;
 }
@@ -103,6 +135,10 @@ void FramePainter::paint(const sim::World& world, const History& history, const 
       if (anchored) draw.point(b, {DrawRole::StaticBody, -1, 1.0});
     }
   history.drawAfterimages(world.time, draw);
+  const double textSize = fontSizeFor(r, camera_.heightPx()) * px;
+  // the overlay of every polygon pair closer than a tenth of the view (so, as they approach), its
+  // label a line of text out from the edge
+  if (r.sat) describeSeparatingAxes(world, 0.1 * camera_.worldHeight(), textSize, draw);
   if (r.velocities)
     for (size_t i = 0; i < world.bodies.size(); ++i) {
       const sim::Body& b = world.bodies[i];
@@ -120,7 +156,7 @@ void FramePainter::paint(const sim::World& world, const History& history, const 
     }
   if (r.time) {
     // the top-left corner, in from the edges by about half a line of text
-    const double inset = 0.5 * std::max(11.0, camera_.heightPx() / 36.0);
+    const double inset = 0.5 * textSize / px;
     draw.text(camera_.toWorld({inset, inset}), timeText(world.time), {DrawRole::Caption, -1, 1.0});
   }
 }

@@ -14,8 +14,14 @@
 
 namespace render {
 
-// the contacts of the world now, through DebugDraw: the collision code's description of them
-void describeContacts(const sim::World& world, sim::DebugDraw& draw);
+// the contacts touching now (world.contacts): a dot at each manifold point and an arrow
+// `normalLength` long along its normal, from B into A (into B when A is static)
+void describeContacts(const sim::World& world, double normalLength, sim::DebugDraw& draw);
+
+// the notes' separating-axis overlay of every polygon pair (not both static) whose separation is at
+// most `maxGap`: the reference edge, the incident vertex, and the separation written `labelOffset`
+// inside the reference polygon from the edge
+void describeSeparatingAxes(const sim::World& world, double maxGap, double labelOffset, sim::DebugDraw& draw);
 
 class FramePainter {
  public:

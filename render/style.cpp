@@ -28,9 +28,13 @@ Style makeStyle(const sim::SceneDef& scene, int frameHeight) {
     else s.bodies.push_back(Color::parse(c.palette[next++ % c.palette.size()]));
   }
   s.lineWidth = r.lineWidth;
-  // 20 px at 720p: readable on a projector, small enough not to cover the bodies
-  s.fontSize = r.fontSize > 0 ? static_cast<int>(std::lround(r.fontSize)) : std::max(11, static_cast<int>(std::lround(frameHeight / 36.0)));
+  s.fontSize = fontSizeFor(r, frameHeight);
   return s;
+}
+
+int fontSizeFor(const sim::RenderDef& r, int frameHeight) {
+  if (r.fontSize > 0) return static_cast<int>(std::lround(r.fontSize));
+  return std::max(11, static_cast<int>(std::lround(frameHeight / 36.0)));
 }
 
 }  // namespace render

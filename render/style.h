@@ -22,6 +22,10 @@ struct Style {
   Color body(int index) const { return index >= 0 && index < static_cast<int>(bodies.size()) ? bodies[index] : trail; }
 };
 
+// the text size for frames `frameHeight` pixels high: the render: block's, or the height / 36 (20 px
+// at 720p: readable on a projector, small enough not to cover the bodies), at least 11 px
+int fontSizeFor(const sim::RenderDef& render, int frameHeight);
+
 // the scene's style for frames `frameHeight` pixels high: each body its own color, or the palette's
 // next one (static bodies the static color), the render: block's colors, line width and font size
 Style makeStyle(const sim::SceneDef& scene, int frameHeight);

@@ -24,7 +24,7 @@ render: {velocities: true, trails: true, size: [320, 180]}
 render::DrawList frameAt(const std::string& yaml, double t, int strobe = 0) {
   const sim::SceneDef def = sim::loadSceneText(yaml, "inline.yaml");
   const render::RunSurvey survey = render::surveyRun(def);
-  const render::Camera camera = render::Camera::fit(survey.bounds, def.render.camera.margin, 320, 180);
+  const render::Camera camera = render::cameraFor(def, survey.bounds);
   render::SceneRun run(def, camera, survey);
   return run.drawListAt(t, strobe);
 }
@@ -85,4 +85,44 @@ TEST_CASE("a spring is a zigzag from the body point to its anchor, with a dot at
   CHECK(lines[1] == "segment Spring (0,-1) (0,-0.88)");
   CHECK(lines[15] == "segment Spring (0,-0.12) (0,0)");
   CHECK(lines[16] == "point StaticBody (0,0)");
+}
+
+TEST_CASE("the separating-axis overlay: reference edge, incident vertex and the separation, as the pair approaches") {
+  // a box tilted by 0.3 rad above a static base whose top face is y = 0.5: its lowest corner is
+  // 0.2 (cos 0.3 + sin 0.3) = 0.250171 below its center, 0.049829 above the face
+  const std::string pair =
+      "duration: 1\n"
+      "sim: {collisions: none}\n"
+      "bodies:\n"
+      "  - {name: base, shape: {box: [2, 0.5]}, position: [0, 0.25], static: true}\n"
+      "  - {name: box, shape: {box: [0.4, 0.4]}, position: [0, 0.8], angle: 0.3}\n"
+      "render: {sat: true, labels: false, time: false, size: [320, 180], camera: {center: [0, 0.5], height: 2}}\n";
+  const auto lines = frameAt(pair, 0.0).lines();
+  REQUIRE(lines.size() == 5);
+  CHECK(lines[2] == "segment ReferenceEdge#0 (1,0.5) (-1,0.5)");
+  // the corner (−0.2, −0.2) of the box turned by 0.3 rad
+  CHECK(lines[3] == "point IncidentVertex#1 (-0.131963,0.549829)");
+  // a line of text (11 px of a 2 m view, 180 px high) below the edge's middle, inside the base
+  CHECK(lines[4] == "text Label#0 (0,0.377778) \"separation 0.0498 m\"");
+  // far apart (more than a tenth of the view): no overlay
+  std::string apart = pair;
+  apart.replace(apart.find("position: [0, 0.8]"), 18, "position: [0, 1.2]");
+  CHECK(frameAt(apart, 0.0).lines().size() == 2);
+}
+
+TEST_CASE("contacts touching now are dots with normals into the moving body") {
+  const std::string resting =
+      "duration: 1\n"
+      "world: {gravity: [0, -10]}\n"
+      "sim: {collisions: sequential}\n"
+      "bodies:\n"
+      "  - {name: floor, shape: {plane: {point: [0, 0], normal: [0, 1]}}}\n"
+      "  - {name: box, shape: {box: [1, 1]}, position: [0, 0.5]}\n"
+      "render: {labels: false, time: false, size: [320, 180], camera: {center: [0, 0.5], height: 2}}\n";
+  std::vector<std::string> contacts;
+  for (const std::string& l : frameAt(resting, 0.5).lines())
+    if (l.find("Contact") != std::string::npos) contacts.push_back(l.substr(0, l.find(' ', 6)));
+  // two manifold points, each a normal (pointing up, into the box) and a dot
+  CHECK(contacts == std::vector<std::string>{"arrow ContactNormal", "point ContactPoint", "arrow ContactNormal",
+                                             "point ContactPoint"});
 }

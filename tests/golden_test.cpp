@@ -200,6 +200,18 @@ TEST_CASE("golden: the separating-axis overlay, drawn from a hand-written draw l
   checkGolden("sat_overlay", canvas.finish());
 }
 
+TEST_CASE("golden: the separating-axis overlay of a box approaching a static base, from the world") {
+  checkGolden("sat_scene", frame(R"(
+name: golden_sat
+duration: 1
+sim: {collisions: none}
+bodies:
+  - {name: base, shape: {box: [2, 0.5]}, position: [0, 0.25], static: true}
+  - {name: box, shape: {box: [0.6, 0.4]}, position: [0.1, 0.85], angle: 0.3}
+render: {sat: true, size: [320, 180], camera: {center: [0, 0.5], height: 1.6}, line_width: 1.5}
+)", 0.0));
+}
+
 TEST_CASE("the same scene rendered twice gives byte-identical PNGs and the same state hash") {
   const sim::SceneDef def = sim::loadSceneText(kImpact, "inline.yaml");
   const render::RunSurvey survey = render::surveyRun(def);
