@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -96,6 +97,7 @@ void renderOne(const RenderOptions& o, const sim::SceneDef& def) {
   }
   Progress progress(base, count, !o.quiet);
   record(run, count, fps, sinks, [&](long done) { progress.update(done); });
+  progress.finish();
   video.finish();
   if (framesDir) framesDir->commit();
   const double seconds = progress.elapsed();
@@ -106,9 +108,10 @@ void renderOne(const RenderOptions& o, const sim::SceneDef& def) {
   writePng(posterRun.frameAt(duration, def.render.strobe), posterPath);
 
   if (!o.quiet) {
+    char rate[96];
+    std::snprintf(rate, sizeof rate, "drawn in %.2f s (%.1f frames/s)", seconds, count / seconds);
     std::cout << videoPath << ": " << count << " frames, " << def.render.width << "x" << def.render.height << " at "
-              << timeForName(fps) << " fps (" << timeForName(count / fps) << " s), drawn in " << timeForName(seconds)
-              << " s (" << timeForName(count / seconds) << " frames/s)\n";
+              << timeForName(fps) << " fps (" << timeForName(count / fps) << " s), " << rate << "\n";
     std::cout << posterPath << ": poster at t = " << timeForName(duration) << " s\n";
     if (o.frames) std::cout << dir << "/" << base << "-frames/: " << count << " PNG frames\n";
   }

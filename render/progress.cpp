@@ -10,8 +10,12 @@ Progress::Progress(std::string what, long total, bool enabled)
     : what_(std::move(what)), total_(total), enabled_(enabled && ::isatty(STDERR_FILENO)),
       start_(std::chrono::steady_clock::now()) {}
 
-Progress::~Progress() {
+Progress::~Progress() { finish(); }
+
+void Progress::finish() {
   if (drawn_) std::fputc('\n', stderr);
+  drawn_ = false;
+  enabled_ = false;
 }
 
 double Progress::elapsed() const {

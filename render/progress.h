@@ -12,6 +12,8 @@ class Progress {
   Progress(std::string what, long total, bool enabled);
   ~Progress();
   void update(long done);
+  // end the bar's line (so that what is printed next starts on its own); the destructor does it too
+  void finish();
   // seconds since the start
   double elapsed() const;
 
