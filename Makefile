@@ -25,8 +25,11 @@ build: deps
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
 	@cmake --build $(BUILD) -j $(JOBS)
 
+# the poll's state as JSON, its videos (out/poll_bar_impulse/) and the three-collisions poll slide
 demo: build
 	./$(BUILD)/rigidreel simulate $(DEMO) --variant end --json
+	./$(BUILD)/rigidreel render $(DEMO) --all-variants
+	./$(BUILD)/rigidreel snapshot scenes/three_collisions_poll.yaml --impacts --panels
 
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
