@@ -13,62 +13,14 @@
 #include "scene_build.h"
 #include "scene_yaml.h"
 #include "world.h"
+#include "scene_text.h"
 
 namespace {
 
-std::string num(double x) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", x);
-  return buf;
-}
-std::string vec(double x, double y) {
-  char buf[96];
-  std::snprintf(buf, sizeof buf, "[%.17g, %.17g]", x, y);
-  return buf;
-}
-
-sim::World build(const std::string& yaml) { return sim::buildWorld(sim::loadSceneText(yaml, "inline.yaml")); }
-
-// a random convex shape as YAML: a circle, a box, or a polygon with 3 to 7 vertices on a circle
-std::string randomShape(std::mt19937_64& rng) {
-  // every draw in its own statement, so the scenes do not depend on the order a compiler evaluates
-  // function arguments in
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  const int kind = static_cast<int>(u(rng) * 3.0);
-  if (kind == 0) {
-    const double r = 0.2 + 0.4 * u(rng);
-    return "{circle: " + num(r) + "}";
-  }
-  if (kind == 1) {
-    const double w = 0.2 + u(rng);
-    const double h = 0.2 + u(rng);
-    return "{box: " + vec(w, h) + "}";
-  }
-  const int n = 3 + static_cast<int>(u(rng) * 5.0);
-  const double radius = 0.3 + 0.4 * u(rng), step = 2.0 * 3.14159265358979 / n;
-  std::string s = "{polygon: [";
-  for (int k = 0; k < n; ++k) {
-    const double angle = step * (k + 0.3 * (u(rng) - 0.5));
-    s += (k ? ", " : "") + vec(radius * std::cos(angle), radius * std::sin(angle));
-  }
-  return s + "]}";
-}
-
-// a body of a random shape and density at x = `x`, y within ±0.3, any angle, moving along x at a
-// speed in `vx` ± spread, a little along y, spinning up to 3 rad/s either way
-std::string randomBody(std::mt19937_64& rng, const char* name, double x, double vx, double spread) {
-  std::uniform_real_distribution<double> u(-1.0, 1.0), unit(0.0, 1.0);
-  const std::string shape = randomShape(rng);
-  const double density = 0.5 + 2.5 * unit(rng);
-  const double y = 0.3 * u(rng);
-  const double angle = 3.0 * u(rng);
-  const double speed = vx + spread * u(rng);
-  const double vy = 0.2 * u(rng);
-  const double omega = 3.0 * u(rng);
-  return std::string("  - {name: ") + name + ", shape: " + shape + ", density: " + num(density) +
-         ", position: " + vec(x, y) + ", angle: " + num(angle) + ", velocity: " + vec(speed, vy) +
-         ", angular_velocity: " + num(omega) + "}\n";
-}
+using scene_text::build;
+using scene_text::num;
+using scene_text::randomBody;
+using scene_text::vec;
 
 // checks after every finished step: Σ m v and Σ x × m v + I ω about the origin stay what they were
 class Conservation : public sim::StepObserver {
@@ -372,19 +324,10 @@ TEST_CASE("the event method never tunnels, and its times of impact are exact") {
 }
 
 TEST_CASE("Newton's cradle under event: the last ball leaves at the striker's speed, the others rest") {
-  sim::World w = build(R"(
-world: {restitution: 1}
-sim: {collisions: event}
-bodies:
-  - {name: b1, shape: {circle: 0.5}, mass: 1, position: [-2, 0], velocity: [1, 0]}
-  - {name: b2, shape: {circle: 0.5}, mass: 1, position: [1, 0]}
-  - {name: b3, shape: {circle: 0.5}, mass: 1, position: [2, 0]}
-  - {name: b4, shape: {circle: 0.5}, mass: 1, position: [3, 0]}
-  - {name: b5, shape: {circle: 0.5}, mass: 1, position: [4, 0]}
-)");
-  const sim::Vec2 p0 = sim::linearMomentum(w);
-  const double e0 = sim::energy(w).kinetic;
-  w.advanceTo(3.0);
+  const scene_text::CradleRun r = scene_text::runCradle(sim::CollisionMethod::Event);
+  const sim::World& w = r.world;
+  const sim::Vec2 p0 = r.p0;
+  const double e0 = r.e0;
   // b1 reaches b2 at t = 2 (it covers 2 m at 1 m/s); b5 then moves 1 m by t = 3
   for (int i = 0; i < 4; ++i) {
     CAPTURE(i);

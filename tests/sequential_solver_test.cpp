@@ -11,21 +11,13 @@
 #include "scene_build.h"
 #include "scene_yaml.h"
 #include "world.h"
+#include "scene_text.h"
 
 namespace {
 
-std::string num(double x) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", x);
-  return buf;
-}
-std::string vec(double x, double y) {
-  char buf[96];
-  std::snprintf(buf, sizeof buf, "[%.17g, %.17g]", x, y);
-  return buf;
-}
-
-sim::World build(const std::string& yaml) { return sim::buildWorld(sim::loadSceneText(yaml, "inline.yaml")); }
+using scene_text::build;
+using scene_text::num;
+using scene_text::vec;
 
 const char* kSolverSettings =
     "world: {gravity: [0, -10], friction: 0.6, restitution: 0}\n"
@@ -227,32 +219,12 @@ TEST_CASE("sequential: the lowest tunneling speed, against the geometry; fast bo
   CHECK(first <= (thickness + 2.0 * margin) / kDt);
 }
 
-namespace {
-
-// Newton's cradle seen from above: five equal balls, c_r = 1, no gravity, four touching, one striking
-const char* kCradle = R"(
-world: {restitution: 1}
-bodies:
-  - {name: b1, shape: {circle: 0.5}, mass: 1, position: [-2, 0], velocity: [1, 0]}
-  - {name: b2, shape: {circle: 0.5}, mass: 1, position: [1, 0]}
-  - {name: b3, shape: {circle: 0.5}, mass: 1, position: [2, 0]}
-  - {name: b4, shape: {circle: 0.5}, mass: 1, position: [3, 0]}
-  - {name: b5, shape: {circle: 0.5}, mass: 1, position: [4, 0]}
-)";
-
-}  // namespace
-
 TEST_CASE("Newton's cradle under sequential: momentum kept, the energy bounded") {
-  sim::SceneDef def = sim::loadSceneText(kCradle, "inline.yaml");
-  def.collisions = sim::CollisionMethod::Sequential;
-  sim::World w = sim::buildWorld(def);
-  const sim::Vec2 p0 = sim::linearMomentum(w);
-  const double e0 = sim::energy(w).kinetic;
-  w.advanceTo(3.0);
-  const double e1 = sim::energy(w).kinetic;
-  std::string speeds;
-  for (const sim::Body& b : w.bodies) speeds.append(" ").append(num(b.v.x()));
-  MESSAGE("cradle, sequential: kinetic energy " << num(e0) << " J -> " << num(e1) << " J; ball speeds" << speeds);
+  const scene_text::CradleRun r = scene_text::runCradle(sim::CollisionMethod::Sequential);
+  const sim::World& w = r.world;
+  const sim::Vec2 p0 = r.p0;
+  const double e0 = r.e0, e1 = r.e1;
+  MESSAGE("cradle, sequential: kinetic energy " << num(e0) << " J -> " << num(e1) << " J; ball speeds" << r.speeds);
   CHECK((sim::linearMomentum(w) - p0).norm() <= 1e-9);
   CHECK(e1 > 0.0);
   CHECK(e1 <= e0 + 1e-9);
