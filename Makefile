@@ -47,3 +47,4 @@ clean:
 .PHONY: golden
 golden: build
 	RIGIDREEL_UPDATE_GOLDEN=1 ./$(BUILD)/tests/golden_test
+	RIGIDREEL_UPDATE_GOLDEN=1 ./$(BUILD)/tests/lecture_golden_test

@@ -25,3 +25,9 @@ add_test(NAME golden COMMAND golden_test)
 
 # render and snapshot end to end: ffprobe of the video, bad input, ffmpeg failures, Ctrl-C
 add_test(NAME render_cli COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/render_cli_test.sh $<TARGET_FILE:rigidreel> ${PROJECT_SOURCE_DIR})
+
+# a golden frame of each lecture scene (scenes/lecture/), against tests/golden/lecture/
+add_executable(lecture_golden_test lecture_golden_test.cpp $<TARGET_OBJECTS:test_main>)
+target_link_libraries(lecture_golden_test PRIVATE rigidreel_render rigidreel_scene doctest::doctest)
+target_compile_definitions(lecture_golden_test PRIVATE RIGIDREEL_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+add_test(NAME lecture_golden COMMAND lecture_golden_test)

@@ -1,0 +1,49 @@
+// A golden frame of each lecture scene (scenes/lecture/*.yaml): its first variant (or the scene
+// itself) at half its duration, drawn 320 × 180, against tests/golden/lecture/<scene>.png. Half
+// the duration shows each scene's idea under way: the held impacts, the overlays, the failures.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "golden_compare.h"
+#include "scene_run.h"
+#include "scene_yaml.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// the frame size of the golden images, pixels
+constexpr int kWidth = 320, kHeight = 180;
+
+std::vector<fs::path> lectureScenes() {
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(golden::kSource / "scenes" / "lecture"))
+    if (entry.path().extension() == ".yaml") files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+}  // namespace
+
+TEST_CASE("golden: a frame of every lecture scene at half its duration") {
+  const std::vector<fs::path> files = lectureScenes();
+  // the pack has a scene for each of the notes' ten ideas (the last one in three files)
+  REQUIRE(files.size() >= 10);
+  render::GlContext gl(kWidth, kHeight);
+  render::TextRenderer text;
+  for (const fs::path& file : files) {
+    CAPTURE(file.string());
+    const sim::SceneDef base = sim::loadSceneFile(file.string());
+    const std::string variant = base.variantNames.empty() ? "" : base.variantNames.front();
+    sim::SceneDef def = sim::loadSceneFile(file.string(), variant);
+    def.render.width = kWidth;
+    def.render.height = kHeight;
+    const render::RunSurvey survey = render::surveyRun(def);
+    render::SceneRun run(def, render::cameraFor(def, survey.bounds), survey, &gl, &text);
+    golden::checkGolden("lecture/" + file.stem().string(), run.frameAt(0.5 * def.duration));
+  }
+}
