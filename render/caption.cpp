@@ -28,6 +28,11 @@ std::string withEllipsis(std::string line, int maxWidth, const TextWidth& width)
 
 }  // namespace
 
+CaptionLayout captionLayout(int fontPx) {
+  // half a line of text in from the edges; lines a quarter of the size apart
+  return {0.5 * fontPx, std::round(1.25 * fontPx)};
+}
+
 TextWidth estimatedWidth(int sizePx) {
   return [sizePx](const std::string& text) {
     const auto codePoints = std::count_if(text.begin(), text.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; });

@@ -14,6 +14,16 @@ namespace render {
 // the width in pixels of a line of UTF-8 text
 using TextWidth = std::function<int(const std::string&)>;
 
+// where the caption goes in a frame whose text is `fontPx` high: lines `line` px apart, the last one
+// ending `inset` px above the bottom (the time sits as far in from the top-left corner)
+struct CaptionLayout {
+  double inset = 0.0, line = 0.0;
+  int maxLines = 2;
+  // the band at the bottom of the frame the caption may take, px
+  double band() const { return inset + maxLines * line; }
+};
+CaptionLayout captionLayout(int fontPx);
+
 // a width without a font (draw lists made with no TextRenderer): 0.6 em per code point, about
 // DejaVu Sans's average over prose
 TextWidth estimatedWidth(int sizePx);

@@ -1,6 +1,5 @@
 #include "frame_painter.h"
 
-#include <cmath>
 #include <cstdio>
 
 #include "collide.h"
@@ -15,9 +14,6 @@ using sim::DrawRole;
 
 // an automatic arrow scale: the largest value's arrow is this fraction of the view's height
 constexpr double kArrowFraction = 1.0 / 6.0;
-
-// the caption at the bottom of a frame: at most this many lines
-constexpr int kCaptionLines = 2;
 
 // a contact normal's arrow, as a fraction of the view's height: 58 px at 720p
 constexpr double kNormalFraction = 0.08;
@@ -104,8 +100,10 @@ FramePainter::FramePainter(const sim::SceneDef& def, const Camera& camera, const
   // the caption is the same in every frame: wrapped once, to the frame less an inset on each side
   const std::string caption = captionOf(def);
   const int size = fontSizeFor(def.render, camera.heightPx());
+  const CaptionLayout layout = captionLayout(size);
   if (!caption.empty())
-    captionLines_ = wrapLines(caption, camera.widthPx() - size, kCaptionLines, width ? width : estimatedWidth(size));
+    captionLines_ = wrapLines(caption, camera.widthPx() - static_cast<int>(2 * layout.inset), layout.maxLines,
+                              width ? width : estimatedWidth(size));
 }
 
 History::Options FramePainter::historyOptions() const {
@@ -174,9 +172,8 @@ void FramePainter::paint(const sim::World& world, const History& history, const 
 }
 
 void FramePainter::paintTimingText(double t, sim::DebugDraw& draw) const {
-  const double size = fontSizeFor(def_.render, camera_.heightPx());
-  // lines a quarter of the size apart; the top-left corner in by half a line, as the time
-  const double inset = 0.5 * size, line = std::round(1.25 * size);
+  const CaptionLayout layout = captionLayout(fontSizeFor(def_.render, camera_.heightPx()));
+  const double inset = layout.inset, line = layout.line;
   const double factor = slowMotion_ ? slowMotion_->factorAt(t) : 1.0;
   if (factor > 1.0)
     draw.text(camera_.toWorld({inset, inset + (def_.render.time ? line : 0.0)}), slowMotionText(factor),

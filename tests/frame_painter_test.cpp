@@ -159,3 +159,22 @@ TEST_CASE("the slow-motion note names the factor") {
   CHECK(FramePainter::slowMotionText(4.0) == "slow motion ×1/4");
   CHECK(FramePainter::slowMotionText(2.5) == "slow motion ×1/2.5");
 }
+
+TEST_CASE("with a caption the automatic camera fits the bodies above its band, and without one as before") {
+  const std::string scene =
+      "description: A ball. It rolls.\n"
+      "bodies:\n"
+      "  - {name: ball, shape: {circle: 1}}\n"
+      "render: {size: [320, 180], camera: {margin: 0}}\n";
+  const sim::SceneDef plain = sim::loadSceneText(scene, "inline.yaml");
+  const render::RunSurvey survey = render::surveyRun(plain);
+  const render::Camera before = render::cameraFor(plain, survey.bounds);
+  CHECK(before.worldHeight() == doctest::Approx(2.0));
+  CHECK(before.toPixel({0, -1}).y() == doctest::Approx(180.0));
+  std::string captioned = scene;
+  captioned.replace(captioned.find("margin: 0}"), 10, "margin: 0}, caption: true");
+  const render::Camera after = render::cameraFor(sim::loadSceneText(captioned, "inline.yaml"), survey.bounds);
+  // 11 px text: a band of 5.5 + 2 × 14 px; the ball fills the 147 px above it (whole pixels)
+  CHECK(after.toPixel({0, 1}).y() == doctest::Approx(0.0));
+  CHECK(after.toPixel({0, -1}).y() == doctest::Approx(147.0));
+}

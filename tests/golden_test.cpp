@@ -212,6 +212,42 @@ render: {sat: true, size: [320, 180], camera: {center: [0, 0.5], height: 1.6}, l
 )", 0.0));
 }
 
+// the poll with the lecture's text: a title card, a caption from the description, slow motion
+const char* const kLecture = R"(
+name: golden_lecture
+description: >
+  A bar at rest is struck at its end by a horizontal impulse. It turns about its center of mass
+  while the center moves on as if the impulse had struck it there.
+duration: 2
+sim: {integrator: rk4, dt: 0.001}
+bodies:
+  - {name: bar, shape: {box: [0.2, 4.0]}, mass: 3, inertia: 4, color: "#3b6ea5"}
+events:
+  - {time: 0.5, body: bar, impulse: [1, 0], point: [0, 2]}
+render: {size: [320, 180], line_width: 1.5, title: "Impulses", title_card: 2, caption: true,
+         slow_motion: {factor: 4, from: 0.4, to: 0.8}}
+)";
+
+TEST_CASE("golden: a title card over the first frame, faded") {
+  const sim::SceneDef def = sim::loadSceneText(kLecture, "inline.yaml");
+  const render::RunSurvey survey = render::surveyRun(def);
+  render::GlContext gl(def.render.width, def.render.height);
+  render::TextRenderer text;
+  render::SceneRun run(def, render::cameraFor(def, survey.bounds), survey, &gl, &text);
+  checkGolden("title_card", run.titleCard());
+}
+
+TEST_CASE("golden: a caption of two lines and the slow-motion note of a video frame") {
+  const sim::SceneDef def = sim::loadSceneText(kLecture, "inline.yaml");
+  const render::RunSurvey survey = render::surveyRun(def);
+  const render::TimeMap map = render::timeMapFor(def.render, survey.impactTimes, def.duration);
+  render::GlContext gl(def.render.width, def.render.height);
+  render::TextRenderer text;
+  render::SceneRun run(def, render::cameraFor(def, survey.bounds), survey, &gl, &text);
+  run.showSlowMotion(&map);
+  checkGolden("caption", run.frameAt(0.6));
+}
+
 TEST_CASE("the same scene rendered twice gives byte-identical PNGs and the same state hash") {
   const sim::SceneDef def = sim::loadSceneText(kImpact, "inline.yaml");
   const render::RunSurvey survey = render::surveyRun(def);
