@@ -1,6 +1,7 @@
 // A frame of a scene, described through DebugDraw from the world, its history and the render:
 // block, back to front: static bodies and planes, trails, strobe ghosts, the moving bodies,
-// springs, contacts and impulses (held after they happen), velocity arrows, labels, the time.
+// springs, contacts and impulses (held after they happen), velocity arrows, labels, the time, the
+// slow-motion note and the caption.
 #pragma once
 
 #include <vector>
