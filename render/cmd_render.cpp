@@ -72,14 +72,16 @@ class StagedDirectory {
 void renderOne(const RenderOptions& o, const sim::SceneDef& def) {
   const double fps = def.render.fps;
   const double duration = o.duration.value_or(def.duration);
-  // frame k at k / fps for every k / fps < duration: the video lasts exactly `duration`
-  const long count = std::max(1L, static_cast<long>(std::ceil(duration * fps - 1e-9)));
   const VideoFormat format = *videoFormatFromName(o.format);
   const std::string dir = outputDirectory(o.output, def.name);
   const std::string base = outputBase(def);
   const std::string videoPath = dir + "/" + base + "." + videoExtension(format);
 
   const RunSurvey survey = surveyRun(def, duration);
+  // frame k at the simulation time of video time k / fps, for every k / fps < the video's length:
+  // the title card, then `duration` stretched by the slow-motion windows (exactly `duration` without)
+  const TimeMap map = timeMapFor(def.render, survey.impactTimes, duration);
+  const long count = map.frameCount(fps);
   const Camera camera = cameraFor(def, survey.bounds);
   GlContext gl(def.render.width, def.render.height);
   TextRenderer text;
@@ -96,7 +98,7 @@ void renderOne(const RenderOptions& o, const sim::SceneDef& def) {
     sinks.push_back(pngFrames.get());
   }
   Progress progress(base, count, !o.quiet);
-  record(run, count, fps, sinks, [&](long done) { progress.update(done); });
+  record(run, map, fps, sinks, [&](long done) { progress.update(done); });
   progress.finish();
   video.finish();
   if (framesDir) framesDir->commit();

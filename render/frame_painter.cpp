@@ -91,11 +91,20 @@ void describeSeparatingAxes(const sim::World& world, double maxGap, double label
     }
 }
 
-FramePainter::FramePainter(const sim::SceneDef& def, const Camera& camera, const RunSurvey& survey)
+FramePainter::FramePainter(const sim::SceneDef& def, const Camera& camera, const RunSurvey& survey,
+                           const TextWidth& width)
     : def_(def),
       camera_(camera),
       impulseScale_(arrowScale(def.render.impulseScale, survey.maxImpulse, camera)),
-      velocityScale_(arrowScale(def.render.velocityScale, survey.maxSpeed, camera)) {}
+      velocityScale_(arrowScale(def.render.velocityScale, survey.maxSpeed, camera)) {
+  // the caption is the same in every frame: wrapped once, to the frame less an inset on each side
+  const std::string caption = captionOf(def);
+  const int size = fontSizeFor(def.render, camera.heightPx());
+  const CaptionLayout layout = captionLayout(size);
+  if (!caption.empty())
+    captionLines_ = wrapLines(caption, camera.widthPx() - static_cast<int>(2 * layout.inset), layout.maxLines,
+                              width ? width : estimatedWidth(size));
+}
 
 History::Options FramePainter::historyOptions() const {
   const sim::RenderDef& r = def_.render;
@@ -159,6 +168,27 @@ void FramePainter::paint(const sim::World& world, const History& history, const 
     const double inset = 0.5 * textSize / px;
     draw.text(camera_.toWorld({inset, inset}), timeText(world.time), {DrawRole::Caption, -1, 1.0});
   }
+  paintTimingText(world.time, draw);
+}
+
+void FramePainter::paintTimingText(double t, sim::DebugDraw& draw) const {
+  const CaptionLayout layout = captionLayout(fontSizeFor(def_.render, camera_.heightPx()));
+  const double inset = layout.inset, line = layout.line;
+  const double factor = slowMotion_ ? slowMotion_->factorAt(t) : 1.0;
+  if (factor > 1.0)
+    draw.text(camera_.toWorld({inset, inset + (def_.render.time ? line : 0.0)}), slowMotionText(factor),
+              {DrawRole::Caption, -1, 1.0});
+  const double bottom = camera_.heightPx() - inset;
+  for (size_t i = 0; i < captionLines_.size(); ++i) {
+    const double top = bottom - line * static_cast<double>(captionLines_.size() - i);
+    draw.text(camera_.toWorld({inset, top}), captionLines_[i], {DrawRole::Caption, -1, 1.0});
+  }
+}
+
+std::string FramePainter::slowMotionText(double factor) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "slow motion ×1/%g", factor);
+  return buf;
 }
 
 std::string FramePainter::timeText(double t) {

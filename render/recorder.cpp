@@ -84,8 +84,11 @@ void PngFrames::frame(long index, const Image& image) {
   writePng(image, directory_ + "/" + name);
 }
 
-void record(SceneRun& run, long count, double fps, const std::vector<FrameSink*>& sinks,
+void record(SceneRun& run, const TimeMap& map, double fps, const std::vector<FrameSink*>& sinks,
             const std::function<void(long)>& progress) {
+  const long count = map.frameCount(fps);
+  run.showSlowMotion(&map);
+  Image card;
   FrameQueue queue;
   std::thread writer([&] { queue.drain(sinks); });
   std::exception_ptr failure;
@@ -94,12 +97,15 @@ void record(SceneRun& run, long count, double fps, const std::vector<FrameSink*>
       checkInterrupted();
       // k / fps rather than a running sum: no drift, and the frame lands on the same instant as
       // a snapshot asked for at that time
-      if (!queue.push(k, run.frameAt(static_cast<double>(k) / fps))) break;
+      const double u = static_cast<double>(k) / fps;
+      if (map.inTitleCard(u) && card.rgba.empty()) card = run.titleCard();
+      if (!queue.push(k, map.inTitleCard(u) ? card : run.frameAt(map.simTime(u)))) break;
       if (progress) progress(k + 1);
     }
   } catch (...) {
     failure = std::current_exception();
   }
+  run.showSlowMotion(nullptr);
   queue.close();
   writer.join();
   if (failure) std::rethrow_exception(failure);

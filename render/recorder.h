@@ -1,5 +1,6 @@
-// The recording loop (as MuJoCo's `record` sample): frame k shows the scene at exactly t = k / fps,
-// whatever the physics step, and is painted on this thread while a second thread hands the frames
+// The recording loop (as MuJoCo's `record` sample): frame k shows the scene at exactly the simulation
+// time that video time k / fps maps to (t = k / fps without a title card or slow motion), whatever
+// the physics step, and is painted on this thread while a second thread hands the frames
 // before it to the encoder and the PNG writer, so that drawing and encoding overlap.
 #pragma once
 
@@ -9,6 +10,7 @@
 
 #include "image.h"
 #include "scene_run.h"
+#include "time_map.h"
 
 namespace render {
 
@@ -32,9 +34,11 @@ class PngFrames : public FrameSink {
   std::string directory_, pattern_;
 };
 
-// frames 0 … count − 1 at t = k / fps into every sink; `progress` (may be empty) is told after each
-// frame is painted. Throws what a sink or the simulation throws, and Interrupted on Ctrl-C.
-void record(SceneRun& run, long count, double fps, const std::vector<FrameSink*>& sinks,
+// frames 0 … map.frameCount(fps) − 1 into every sink: the title card while video time k / fps is on
+// it (painted once), then the scene at map.simTime(k / fps), saying when it is slowed; `progress`
+// (may be empty) is told after each frame is painted. Throws what a sink or the simulation throws,
+// and Interrupted on Ctrl-C.
+void record(SceneRun& run, const TimeMap& map, double fps, const std::vector<FrameSink*>& sinks,
             const std::function<void(long done)>& progress = {});
 
 }  // namespace render

@@ -4,6 +4,7 @@
 
 #include "describe.h"
 #include "scene_build.h"
+#include "title_card.h"
 
 namespace render {
 
@@ -13,6 +14,12 @@ namespace {
 constexpr double kOldestGhost = 0.15;
 constexpr double kNewestGhost = 0.55;
 
+// the width of text as drawn, or none (FramePainter then estimates it)
+TextWidth textWidth(TextRenderer* text, int sizePx) {
+  if (!text) return {};
+  return [text, sizePx](const std::string& s) { return text->measure(s, sizePx).width; };
+}
+
 }  // namespace
 
 SceneRun::SceneRun(const sim::SceneDef& def, const Camera& camera, const RunSurvey& survey, GlContext* gl,
@@ -20,9 +27,10 @@ SceneRun::SceneRun(const sim::SceneDef& def, const Camera& camera, const RunSurv
     : def_(def),
       camera_(camera),
       style_(makeStyle(def, camera.heightPx())),
-      painter_(def, camera, survey),
+      painter_(def, camera, survey, textWidth(text, style_.fontSize)),
       world_(sim::buildWorld(def)),
-      history_(world_, painter_.historyOptions()) {
+      history_(world_, painter_.historyOptions()),
+      text_(text) {
   if (gl && text) canvas_ = std::make_unique<GlCanvas>(*gl, *text, style_);
 }
 
@@ -49,6 +57,10 @@ Image SceneRun::frameAt(double t, int strobe) {
   canvas_->begin(camera_);
   painter_.paint(world_, history_, ghosts, *canvas_);
   return canvas_->finish();
+}
+
+Image SceneRun::titleCard() {
+  return composeTitleCard(frameAt(0.0), titleOf(def_), def_.description, style_, *text_);
 }
 
 DrawList SceneRun::drawListAt(double t, int strobe) {

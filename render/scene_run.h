@@ -26,6 +26,10 @@ class SceneRun {
   Image frameAt(double t, int strobe = 0);
   // the draw calls of the frame at time t, without GL (the draw-list level of the tests)
   DrawList drawListAt(double t, int strobe = 0);
+  // the title card over the frame at t = 0 (title_card.h); needs the GL context
+  Image titleCard();
+  // video frames say when `map` slows them (nullptr: never), see FramePainter
+  void showSlowMotion(const TimeMap* map) { painter_.showSlowMotion(map); }
 
   const sim::World& world() const { return world_; }
 
@@ -39,6 +43,7 @@ class SceneRun {
   sim::World world_;
   History history_;
   std::unique_ptr<GlCanvas> canvas_;
+  TextRenderer* text_;
 };
 
 }  // namespace render

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "caption.h"
 #include "scene_build.h"
+#include "style.h"
 
 namespace render {
 
@@ -62,7 +64,13 @@ RunSurvey surveyRun(const sim::SceneDef& def, double until) {
 Camera cameraFor(const sim::SceneDef& def, const Bounds& bounds) {
   const sim::RenderDef& r = def.render;
   if (!r.camera.automatic) return Camera(r.camera.center, r.camera.height, r.width, r.height);
-  return Camera::fit(bounds, r.camera.margin, r.width, r.height);
+  // with a caption the bodies are fitted above its band, so that it never covers them
+  const double band = captionOf(def).empty() ? 0.0 : captionLayout(fontSizeFor(r, r.height)).band();
+  const int above = static_cast<int>(std::lround(r.height - band));
+  const Camera fitted = Camera::fit(bounds, r.camera.margin, r.width, above);
+  if (above == r.height) return fitted;
+  const double px = fitted.pixelSize();
+  return Camera(fitted.center() - Vec2(0.0, 0.5 * (r.height - above) * px), px * r.height, r.width, r.height);
 }
 
 std::vector<double> impactTimes(const sim::World& world) {

@@ -24,7 +24,8 @@ RunSurvey surveyRun(const sim::SceneDef& def, double until = -1.0);
 // the region a body's shape covers now (its position alone for shapes without an extent)
 Bounds bodyBounds(const sim::Body& body);
 
-// the scene's camera: its fixed one, or fitted over `bounds` with its margin
+// the scene's camera: its fixed one, or fitted over `bounds` with its margin (above the caption's band
+// when it has a caption)
 Camera cameraFor(const sim::SceneDef& def, const Bounds& bounds);
 
 // the times at which the world's collision response applied impulses so far, ascending, each once

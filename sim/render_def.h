@@ -40,6 +40,14 @@ struct ColorsDef {
   std::string text = "#1f1f1f";
 };
 
+// a stretch of the video that runs `factor` times slower: `window` s around each impact of the run
+// (when window > 0), else simulation times [from, to]
+struct SlowMotionDef {
+  double factor = 1.0;
+  double window = 0.0;  // s
+  double from = 0.0, to = 0.0;  // s
+};
+
 struct RenderDef {
   int width = 1280;                    // pixels
   int height = 720;
@@ -61,6 +69,12 @@ struct RenderDef {
   bool springs = true;                 // springs as zigzags, world anchors as dots
   bool labels = true;                  // body labels
   bool time = true;                    // the time in a corner
+  // video timing and text (section B of the lecture pack): the opening card, the caption, slow motion
+  std::string title;                   // the title card's; empty: the scene's name with '_' as spaces
+  double titleCard = 0.0;              // s the video opens with a title card; 0: none
+  bool captionFromDescription = false; // `caption: true`: the description's first sentence
+  std::string caption;                 // `caption: "text"`; empty (and not from the description): none
+  std::vector<SlowMotionDef> slowMotion;
 };
 
 }  // namespace sim

@@ -93,7 +93,9 @@ class RenderReader {
 void readRender(const YAML::Node& node, const Reader& reader, RenderDef& out) {
   reader.checkKeys(node, {"size", "fps", "background", "line_width", "font_size", "colors", "camera", "contacts",
                           "contact_hold", "impulses", "impulse_scale", "velocities", "velocity_scale", "trails", "sat",
-                          "strobe", "springs", "labels", "time"},
+                          "strobe", "springs", "labels", "time",
+                          // video timing and text
+                          "title", "title_card", "caption", "slow_motion"},
                    "render");
   const RenderReader r(reader);
   if (node["size"]) r.size(node["size"], out);
@@ -118,6 +120,7 @@ void readRender(const YAML::Node& node, const Reader& reader, RenderDef& out) {
   if (node["springs"]) out.springs = reader.boolean(node["springs"], "springs");
   if (node["labels"]) out.labels = reader.boolean(node["labels"], "labels");
   if (node["time"]) out.time = reader.boolean(node["time"], "time");
+  readTiming(node, reader, out);
 }
 
 }  // namespace sim::yaml

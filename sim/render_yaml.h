@@ -8,5 +8,7 @@ namespace sim::yaml {
 
 // fails through `reader` with FILE:LINE:COL on bad input
 void readRender(const YAML::Node& node, const Reader& reader, RenderDef& out);
+// its keys of video timing and text (render_timing_yaml.cpp), called by readRender
+void readTiming(const YAML::Node& node, const Reader& reader, RenderDef& out);
 
 }  // namespace sim::yaml

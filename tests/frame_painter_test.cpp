@@ -126,3 +126,55 @@ TEST_CASE("contacts touching now are dots with normals into the moving body") {
   CHECK(contacts == std::vector<std::string>{"arrow ContactNormal", "point ContactPoint", "arrow ContactNormal",
                                              "point ContactPoint"});
 }
+
+TEST_CASE("the caption: wrapped at the bottom left, at most two lines; the slow-motion note under the time") {
+  // a 320 × 180 frame 1.8 m high: a pixel is 1 cm, the text 11 px with lines 14 px apart; without a
+  // font the width is estimated at 6.6 px a code point, so a line (320 − 11 px) takes 46 of them
+  const std::string text =
+      "description: A ball rolls to the right at one metre per second, past the origin and on. Then it stops.\n"
+      "duration: 1\n"
+      "bodies:\n"
+      "  - {name: ball, shape: {circle: 0.1}, velocity: [1, 0]}\n"
+      "render: {caption: true, labels: false, size: [320, 180], camera: {center: [0, 0], height: 1.8},\n"
+      "         slow_motion: {factor: 4, from: 0.2, to: 0.4}}\n";
+  const sim::SceneDef def = sim::loadSceneText(text, "inline.yaml");
+  const render::RunSurvey survey = render::surveyRun(def);
+  render::SceneRun run(def, render::cameraFor(def, survey.bounds), survey);
+  const render::TimeMap map = render::timeMapFor(def.render, survey.impactTimes, def.duration);
+  run.showSlowMotion(&map);
+  const auto lines = run.drawListAt(0.3).lines();
+  REQUIRE(lines.size() == 6);
+  CHECK(lines[2] == "text Caption (-1.545,0.845) \"t = 0.300 s\"");
+  CHECK(lines[3] == "text Caption (-1.545,0.705) \"slow motion ×1/4\"");
+  // line tops 28 and 14 px above the bottom inset (174.5 px from the top)
+  CHECK(lines[4] == "text Caption (-1.545,-0.565) \"A ball rolls to the right at one metre per\"");
+  CHECK(lines[5] == "text Caption (-1.545,-0.705) \"second, past the origin and on.\"");
+  // outside the window, and in snapshots (no map), no note
+  CHECK(run.drawListAt(0.5).lines().size() == 5);
+  render::SceneRun snapshot(def, render::cameraFor(def, survey.bounds), survey);
+  CHECK(snapshot.drawListAt(0.3).lines().size() == 5);
+}
+
+TEST_CASE("the slow-motion note names the factor") {
+  CHECK(FramePainter::slowMotionText(4.0) == "slow motion ×1/4");
+  CHECK(FramePainter::slowMotionText(2.5) == "slow motion ×1/2.5");
+}
+
+TEST_CASE("with a caption the automatic camera fits the bodies above its band, and without one as before") {
+  const std::string scene =
+      "description: A ball. It rolls.\n"
+      "bodies:\n"
+      "  - {name: ball, shape: {circle: 1}}\n"
+      "render: {size: [320, 180], camera: {margin: 0}}\n";
+  const sim::SceneDef plain = sim::loadSceneText(scene, "inline.yaml");
+  const render::RunSurvey survey = render::surveyRun(plain);
+  const render::Camera before = render::cameraFor(plain, survey.bounds);
+  CHECK(before.worldHeight() == doctest::Approx(2.0));
+  CHECK(before.toPixel({0, -1}).y() == doctest::Approx(180.0));
+  std::string captioned = scene;
+  captioned.replace(captioned.find("margin: 0}"), 10, "margin: 0}, caption: true");
+  const render::Camera after = render::cameraFor(sim::loadSceneText(captioned, "inline.yaml"), survey.bounds);
+  // 11 px text: a band of 5.5 + 2 × 14 px; the ball fills the 147 px above it (whole pixels)
+  CHECK(after.toPixel({0, 1}).y() == doctest::Approx(0.0));
+  CHECK(after.toPixel({0, -1}).y() == doctest::Approx(147.0));
+}

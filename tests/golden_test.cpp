@@ -24,14 +24,23 @@ using golden::checkGolden;
 
 namespace {
 
-// the frame of an inline scene at time t (its own size and camera)
-Image frame(const std::string& yaml, double t, const std::string& variant = "", int strobe = 0) {
-  const sim::SceneDef def = sim::loadSceneText(yaml, "inline.yaml", variant);
-  const render::RunSurvey survey = render::surveyRun(def);
-  render::GlContext gl(def.render.width, def.render.height);
+// an inline scene ready to paint at its own size, through its own camera
+struct InlineRun {
+  explicit InlineRun(const std::string& yaml, const std::string& variant = "")
+      : def(sim::loadSceneText(yaml, "inline.yaml", variant)),
+        survey(render::surveyRun(def)),
+        gl(def.render.width, def.render.height),
+        run(def, render::cameraFor(def, survey.bounds), survey, &gl, &text) {}
+  const sim::SceneDef def;
+  const render::RunSurvey survey;
+  render::GlContext gl;
   render::TextRenderer text;
-  render::SceneRun run(def, render::cameraFor(def, survey.bounds), survey, &gl, &text);
-  return run.frameAt(t, strobe);
+  render::SceneRun run;
+};
+
+// the frame of an inline scene at time t
+Image frame(const std::string& yaml, double t, const std::string& variant = "", int strobe = 0) {
+  return InlineRun(yaml, variant).run.frameAt(t, strobe);
 }
 
 const char* const kBodies = R"(
@@ -69,6 +78,12 @@ events:
 variants:
   center: {events: [{time: 0.5, body: bar, impulse: [1, 0], point: [0, 0]}]}
   end: {}
+  # the lecture's text: a title card, a caption from the description, slow motion
+  lecture:
+    description: >
+      A bar at rest is struck at its end by a horizontal impulse. It turns about its center of mass
+      while the center moves on as if the impulse had struck it there.
+    render: {title: "Impulses", title_card: 2, caption: true, slow_motion: {factor: 4, from: 0.4, to: 0.8}}
 render: {size: [320, 180], line_width: 1.5}
 )";
 
@@ -151,6 +166,17 @@ bodies:
   - {name: box, shape: {box: [0.6, 0.4]}, position: [0.1, 0.85], angle: 0.3}
 render: {sat: true, size: [320, 180], camera: {center: [0, 0.5], height: 1.6}, line_width: 1.5}
 )", 0.0));
+}
+
+TEST_CASE("golden: a title card over the first frame, faded") {
+  checkGolden("title_card", InlineRun(kPoll, "lecture").run.titleCard());
+}
+
+TEST_CASE("golden: a caption of two lines and the slow-motion note of a video frame") {
+  InlineRun lecture(kPoll, "lecture");
+  const render::TimeMap map = render::timeMapFor(lecture.def.render, lecture.survey.impactTimes, lecture.def.duration);
+  lecture.run.showSlowMotion(&map);
+  checkGolden("caption", lecture.run.frameAt(0.6));
 }
 
 TEST_CASE("the same scene rendered twice gives byte-identical PNGs and the same state hash") {

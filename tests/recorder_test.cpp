@@ -44,7 +44,7 @@ TEST_CASE("frames come in order, one per k / fps, and the run ends at the last o
   render::SceneRun run(def, render::cameraFor(def, survey.bounds), survey, &gl, &text);
   Collect sink;
   long reported = 0;
-  render::record(run, 5, 10.0, {&sink}, [&](long done) { reported = done; });
+  render::record(run, render::TimeMap(0.5), 10.0, {&sink}, [&](long done) { reported = done; });
   CHECK(sink.indices == std::vector<long>{0, 1, 2, 3, 4});
   CHECK(reported == 5);
   CHECK(run.world().time == doctest::Approx(0.4).epsilon(1e-15));
@@ -59,7 +59,7 @@ TEST_CASE("a sink that fails stops the recording with its error") {
   render::TextRenderer text;
   render::SceneRun run(def, render::cameraFor(def, survey.bounds), survey, &gl, &text);
   Fail sink;
-  CHECK_THROWS_WITH_AS(render::record(run, 60, 10.0, {&sink}), "disk full", std::runtime_error);
+  CHECK_THROWS_WITH_AS(render::record(run, render::TimeMap(6.0), 10.0, {&sink}), "disk full", std::runtime_error);
   CHECK(run.world().time < 1.0);
 }
 
@@ -72,4 +72,27 @@ TEST_CASE("PNG frames are numbered with at least five digits") {
   CHECK(fs::exists(dir / "frame-00007.png"));
   CHECK(render::PngFrames(dir.string(), 1234567).pattern() == "frame-%07ld.png");
   fs::remove_all(dir);
+}
+
+TEST_CASE("a title card opens the video, painted once and held; slow motion stretches the run") {
+  // 0.2 s of card, then 1 s of run whose [0.2, 0.4) takes twice as long: 1.4 s, 14 frames at 10 fps
+  const sim::SceneDef def = sim::loadSceneText(
+      "duration: 1\n"
+      "bodies:\n"
+      "  - {name: ball, shape: {circle: 0.5}, velocity: [1, 0]}\n"
+      "render: {size: [64, 48], camera: {center: [0.5, 0], height: 2}, title_card: 0.2,\n"
+      "         slow_motion: {factor: 2, from: 0.2, to: 0.4}}\n",
+      "inline.yaml");
+  const render::RunSurvey survey = render::surveyRun(def);
+  const render::TimeMap map = render::timeMapFor(def.render, survey.impactTimes, def.duration);
+  render::GlContext gl(64, 48);
+  render::TextRenderer text;
+  render::SceneRun run(def, render::cameraFor(def, survey.bounds), survey, &gl, &text);
+  Collect sink;
+  render::record(run, map, 10.0, {&sink});
+  REQUIRE(sink.indices.size() == 14);
+  CHECK(sink.images[0] == sink.images[1]);
+  CHECK(sink.images[1] != sink.images[2]);
+  // the last frame, video time 1.3 s: 0.2 s of card, 0.2 s of run, 0.4 s slowed to 0.4, 0.5 s more
+  CHECK(run.world().time == doctest::Approx(0.9).epsilon(1e-12));
 }

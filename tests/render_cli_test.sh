@@ -69,6 +69,22 @@ check "no temporary files left" $?
 head -c 4096 $V | grep -aq moov
 check "the mp4 index is at the start (+faststart)" $?
 
+# a lecture video: a 1 s title card, then 1.5 s of run whose [0.5, 0.7) plays 4 times slower:
+# 1 + 1.5 + 3 × 0.2 = 3.1 s, 31 frames at 10 fps; the poster keeps simulation time
+cat >lecture.yaml <<'YAML'
+name: lecture
+description: A ball rolls. It stops.
+duration: 1.5
+bodies:
+  - {name: ball, shape: {circle: 0.2}, velocity: [1, 0]}
+render: {title_card: 1, caption: true, slow_motion: {factor: 4, from: 0.5, to: 0.7}}
+YAML
+run render lecture.yaml -o o --size 160x90 --fps 10 --quiet
+[ "$rc" -eq 0 ] && [ "$(probe o/lecture/lecture.mp4)" = "h264,160,90,yuv420p,31" ]
+check "title_card and slow_motion lengthen the video to 31 frames" $? "got $(probe o/lecture/lecture.mp4)"
+sed -i 's/slow_motion: {factor: 4, from: 0.5, to: 0.7}/slow_motion: {factor: 4, from: 0.7, to: 0.5}/' lecture.yaml
+expect "a slow-motion window that ends before it starts is bad input" 2 "lecture.yaml:6:" render lecture.yaml -o o --quiet
+
 # every variant, webm
 run render "$POLL" --all-variants -o o --size 160x90 --fps 5 --duration 0.4 --format webm --quiet
 [ "$rc" -eq 0 ] && [ -f o/poll_bar_impulse/poll_bar_impulse-center.webm ] && [ -f o/poll_bar_impulse/poll_bar_impulse-end.webm ]

@@ -4,9 +4,12 @@
 add_executable(render_yaml_test render_yaml_test.cpp $<TARGET_OBJECTS:test_main>)
 target_link_libraries(render_yaml_test PRIVATE rigidreel_scene doctest::doctest)
 add_test(NAME render_yaml COMMAND render_yaml_test)
+add_executable(render_timing_yaml_test render_timing_yaml_test.cpp $<TARGET_OBJECTS:test_main>)
+target_link_libraries(render_timing_yaml_test PRIVATE rigidreel_scene doctest::doctest)
+add_test(NAME render_timing_yaml COMMAND render_timing_yaml_test)
 
 # the renderer's modules, one executable each (render/<module>.cpp)
-foreach(module image camera png_io text gl_canvas)
+foreach(module image camera png_io text gl_canvas time_map caption)
   add_executable(${module}_test ${module}_test.cpp $<TARGET_OBJECTS:test_main>)
   target_link_libraries(${module}_test PRIVATE rigidreel_render doctest::doctest)
   add_test(NAME ${module} COMMAND ${module}_test)

@@ -4,29 +4,11 @@
 
 #include <string>
 
-#include "scene_yaml.h"
+#include "render_block.h"
 
-namespace {
-
-// one body on lines 1-2; the render: block starts on line 3
-const std::string kBody = "bodies:\n  - {name: a, shape: {circle: 1}}\n";
-
-sim::RenderDef renderOf(const std::string& block) { return sim::loadSceneText(kBody + block, "inline.yaml").render; }
-
-// loading the block must fail at `line` with a message containing `words`
-void expectError(const std::string& block, int line, const std::string& words) {
-  INFO("render block:\n", block);
-  try {
-    (void)renderOf(block);
-    FAIL_CHECK("the scene loaded; expected a SceneError");
-  } catch (const sim::SceneError& e) {
-    INFO("what(): ", e.what());
-    CHECK(e.line == line);
-    CHECK(e.message.find(words) != std::string::npos);
-  }
-}
-
-}  // namespace
+using render_block::expectError;
+using render_block::kBody;
+using render_block::renderOf;
 
 TEST_CASE("without a render block the documented defaults hold") {
   const sim::RenderDef r = renderOf("");
