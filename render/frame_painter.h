@@ -7,9 +7,11 @@
 
 #include "camera.h"
 #include "draw_list.h"
+#include "energy_panel.h"
 #include "history.h"
 #include "scene_def.h"
 #include "survey.h"
+#include "teaching_arrows.h"
 #include "world.h"
 
 namespace render {
@@ -20,8 +22,9 @@ void describeContacts(const sim::World& world, double normalLength, sim::DebugDr
 
 // the notes' separating-axis overlay of every polygon pair (not both static) whose separation is at
 // most `maxGap`: the reference edge, the incident vertex, and the separation written `labelOffset`
-// inside the reference polygon from the edge
-void describeSeparatingAxes(const sim::World& world, double maxGap, double labelOffset, sim::DebugDraw& draw);
+// inside the reference polygon from the edge; with `everyAxis`, every other candidate edge too
+void describeSeparatingAxes(const sim::World& world, double maxGap, double labelOffset, sim::DebugDraw& draw,
+                            bool everyAxis = false);
 
 class FramePainter {
  public:
@@ -42,6 +45,8 @@ class FramePainter {
   const sim::SceneDef& def_;
   Camera camera_;
   double impulseScale_, velocityScale_;  // m of arrow per N·s, per m/s
+  TeachingArrows arrows_;                 // the lecture overlays
+  EnergyPanel panel_;
 };
 
 }  // namespace render

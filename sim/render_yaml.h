@@ -2,11 +2,14 @@
 #pragma once
 
 #include "render_def.h"
+#include "scene_def.h"
 #include "yaml_reader.h"
 
 namespace sim::yaml {
 
 // fails through `reader` with FILE:LINE:COL on bad input
 void readRender(const YAML::Node& node, const Reader& reader, RenderDef& out);
+// the lecture overlays of the same render: block; arrows name bodies of `scene`, read before
+void readOverlays(const YAML::Node& node, const Reader& reader, const SceneDef& scene, OverlaysDef& out);
 
 }  // namespace sim::yaml
