@@ -17,7 +17,7 @@ using sim::DrawRole;
 
 // the layout in text heights (em): inset from the frame's edges as the time caption, padding inside,
 // the pitch of rows, the bars' width
-constexpr double kInset = 0.5, kPad = 0.4, kRow = 1.3, kBar = 5.0;
+constexpr double kInset = 0.5, kPad = 0.4, kRow = 1.3, kBar = 8.0;
 // a bar's top and bottom within its row: centered on a line of text
 constexpr double kBarTop = 0.5 * kLineHeight - 0.45, kBarBottom = 0.5 * kLineHeight + 0.45;
 // the panel is laid out once, from the widest text the run can write, in em
