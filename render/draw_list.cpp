@@ -22,6 +22,18 @@ const char* roleName(DrawRole role) {
     case DrawRole::Label: return "Label";
     case DrawRole::Caption: return "Caption";
     case DrawRole::Spring: return "Spring";
+    case DrawRole::Offset: return "Offset";
+    case DrawRole::AngularVelocity: return "AngularVelocity";
+    case DrawRole::BodyFrame: return "BodyFrame";
+    case DrawRole::Path: return "Path";
+    case DrawRole::Force: return "Force";
+    case DrawRole::Torque: return "Torque";
+    case DrawRole::Momentum: return "Momentum";
+    case DrawRole::KineticBar: return "KineticBar";
+    case DrawRole::RotationalBar: return "RotationalBar";
+    case DrawRole::PotentialBar: return "PotentialBar";
+    case DrawRole::TotalBar: return "TotalBar";
+    case DrawRole::Panel: return "Panel";
   }
   return "?";
 }
@@ -46,6 +58,7 @@ std::string styleText(const sim::DrawStyle& s) {
   std::string out = roleName(s.role);
   if (s.body >= 0) out.append("#").append(std::to_string(s.body));
   if (s.opacity != 1.0) out.append("@").append(number(s.opacity));
+  if (s.color >= 0) out.append("~").append(std::to_string(s.color));
   return out;
 }
 

@@ -42,6 +42,7 @@ class DrawList : public sim::DebugDraw {
   // one line per call, numbers to 6 significant digits, e.g.
   //   polygon Body#0 (-0.1,-2) (0.1,-2) (0.1,2) (-0.1,2)
   //   arrow Impulse@0.5 (0,1) -> (1,1)
+  //   arrow Velocity#0~2 (0,0) -> (1,0)   (~2: the color of teaching arrow 2)
   std::vector<std::string> lines() const;
   // the lines joined, each ending in a newline
   std::string toText() const;

@@ -4,6 +4,7 @@
 
 #include "collide.h"
 #include "describe.h"
+#include "sat_axes.h"
 #include "style.h"
 
 namespace render {
@@ -12,17 +13,8 @@ namespace {
 
 using sim::DrawRole;
 
-// an automatic arrow scale: the largest value's arrow is this fraction of the view's height
-constexpr double kArrowFraction = 1.0 / 6.0;
-
 // a contact normal's arrow, as a fraction of the view's height: 58 px at 720p
 constexpr double kNormalFraction = 0.08;
-
-// an arrow scale: the scene's, or one that makes `largest` a sixth of the view
-double arrowScale(double given, double largest, const Camera& camera) {
-  if (given > 0.0) return given;
-  return largest > 0.0 ? kArrowFraction * camera.worldHeight() / largest : 1.0;
-}
 
 // a spring's coils: this many zigzag points, and straight leads of this fraction at each end
 constexpr int kSpringZigs = 12;
@@ -64,7 +56,8 @@ void describeContacts(const sim::World& world, double normalLength, sim::DebugDr
   }
 }
 
-void describeSeparatingAxes(const sim::World& world, double maxGap, double labelOffset, sim::DebugDraw& draw) {
+void describeSeparatingAxes(const sim::World& world, double maxGap, double labelOffset, sim::DebugDraw& draw,
+                            bool everyAxis) {
   const auto& bodies = world.bodies;
   for (size_t i = 0; i < bodies.size(); ++i)
     for (size_t j = i + 1; j < bodies.size(); ++j) {
@@ -88,6 +81,7 @@ void describeSeparatingAxes(const sim::World& world, double maxGap, double label
       std::snprintf(text, sizeof text, "separation %.3g m", f.separation);
       const Vec2 outward = ref.q.apply(ref.shape.normals[e]);
       draw.text(0.5 * (p + q) - labelOffset * outward, text, {DrawRole::Label, refIndex, 1.0});
+      if (everyAxis) describeCandidateAxes(world, refIndex, otherIndex, e, labelOffset, draw);
     }
 }
 
@@ -96,7 +90,9 @@ FramePainter::FramePainter(const sim::SceneDef& def, const Camera& camera, const
     : def_(def),
       camera_(camera),
       impulseScale_(arrowScale(def.render.impulseScale, survey.maxImpulse, camera)),
-      velocityScale_(arrowScale(def.render.velocityScale, survey.maxSpeed, camera)) {
+      velocityScale_(arrowScale(def.render.velocityScale, survey.maxSpeed, camera)),
+      arrows_(def, camera, survey, velocityScale_),
+      panel_(def, camera, survey) {
   // the caption is the same in every frame: wrapped once, to the frame less an inset on each side
   const std::string caption = captionOf(def);
   const int size = fontSizeFor(def.render, camera.heightPx());
@@ -115,6 +111,9 @@ History::Options FramePainter::historyOptions() const {
   o.impacts = r.contacts;
   o.impulseScale = impulseScale_;
   o.normalLength = kNormalFraction * camera_.worldHeight();
+  o.points = arrows_.paths();
+  if (r.overlays.impactValues)
+    o.labels.emplace(fontSizeFor(r, camera_.heightPx()) * camera_.pixelSize(), impulseScale_, o.normalLength);
   if (r.contacts) {
     const double length = o.normalLength;
     o.contacts = [length](const sim::World& world, sim::DebugDraw& draw) { describeContacts(world, length, draw); };
@@ -147,7 +146,8 @@ void FramePainter::paint(const sim::World& world, const History& history, const 
   const double textSize = fontSizeFor(r, camera_.heightPx()) * px;
   // the overlay of every polygon pair closer than a tenth of the view (so, as they approach), its
   // label a line of text out from the edge
-  if (r.sat) describeSeparatingAxes(world, 0.1 * camera_.worldHeight(), textSize, draw);
+  if (r.sat || r.overlays.satAxes)
+    describeSeparatingAxes(world, 0.1 * camera_.worldHeight(), textSize, draw, r.overlays.satAxes);
   if (r.velocities)
     for (size_t i = 0; i < world.bodies.size(); ++i) {
       const sim::Body& b = world.bodies[i];
@@ -155,6 +155,7 @@ void FramePainter::paint(const sim::World& world, const History& history, const 
       // a velocity shorter than a pixel has no arrow to show
       if (!b.isStatic && arrow.norm() > px) draw.arrow(b.x, b.x + arrow, {DrawRole::Velocity, static_cast<int>(i), 1.0});
     }
+  arrows_.draw(world, history, draw);
   if (r.labels)
     for (size_t i = 0; i < world.bodies.size(); ++i) {
       const sim::Body& b = world.bodies[i];
@@ -168,6 +169,7 @@ void FramePainter::paint(const sim::World& world, const History& history, const 
     const double inset = 0.5 * textSize / px;
     draw.text(camera_.toWorld({inset, inset}), timeText(world.time), {DrawRole::Caption, -1, 1.0});
   }
+  if (r.overlays.energy || r.overlays.momentum) panel_.draw(world, draw);
   paintTimingText(world.time, draw);
 }
 

@@ -9,10 +9,12 @@
 #include "camera.h"
 #include "caption.h"
 #include "draw_list.h"
+#include "energy_panel.h"
 #include "history.h"
 #include "scene_def.h"
 #include "survey.h"
 #include "time_map.h"
+#include "teaching_arrows.h"
 #include "world.h"
 
 namespace render {
@@ -23,8 +25,9 @@ void describeContacts(const sim::World& world, double normalLength, sim::DebugDr
 
 // the notes' separating-axis overlay of every polygon pair (not both static) whose separation is at
 // most `maxGap`: the reference edge, the incident vertex, and the separation written `labelOffset`
-// inside the reference polygon from the edge
-void describeSeparatingAxes(const sim::World& world, double maxGap, double labelOffset, sim::DebugDraw& draw);
+// inside the reference polygon from the edge; with `everyAxis`, every other candidate edge too
+void describeSeparatingAxes(const sim::World& world, double maxGap, double labelOffset, sim::DebugDraw& draw,
+                            bool everyAxis = false);
 
 class FramePainter {
  public:
@@ -53,6 +56,8 @@ class FramePainter {
   void paintTimingText(double t, sim::DebugDraw& draw) const;
   std::vector<std::string> captionLines_;
   const TimeMap* slowMotion_ = nullptr;
+  TeachingArrows arrows_;                 // the lecture overlays
+  EnergyPanel panel_;
 };
 
 }  // namespace render

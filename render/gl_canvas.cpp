@@ -67,11 +67,17 @@ Color GlCanvas::fillColor(const sim::DrawStyle& s) const {
   switch (s.role) {
     case DrawRole::Body: return style_.body(s.body).mixed(kWhite, 0.35);
     case DrawRole::StaticBody: return style_.body(s.body).mixed(kWhite, 0.6);
+    case DrawRole::RotationalBar: return style_.body(s.body).mixed(kWhite, 0.45);
+    // a panel lets what is behind it show a little
+    case DrawRole::Panel: return style_.panel.withAlpha(0.85);
     default: return strokeColor(s);
   }
 }
 
 Color GlCanvas::strokeColor(const sim::DrawStyle& s) const {
+  // a teaching arrow's own `color`
+  if (s.color >= 0 && s.color < static_cast<int>(style_.arrows.size()) && style_.arrows[s.color].a > 0.0)
+    return style_.arrows[s.color];
   switch (s.role) {
     case DrawRole::Body:
     case DrawRole::BodyAxis: return style_.body(s.body).mixed(kBlack, 0.35);
@@ -84,6 +90,18 @@ Color GlCanvas::strokeColor(const sim::DrawStyle& s) const {
     case DrawRole::ReferenceEdge: return style_.referenceEdge;
     case DrawRole::IncidentVertex: return style_.incidentVertex;
     case DrawRole::Spring: return style_.spring;
+    case DrawRole::Offset: return style_.offset;
+    case DrawRole::AngularVelocity: return style_.omega;
+    case DrawRole::BodyFrame: return style_.frame;
+    case DrawRole::Path: return style_.path;
+    case DrawRole::Force: return style_.force;
+    case DrawRole::Torque: return style_.torque;
+    case DrawRole::Momentum: return style_.momentum;
+    case DrawRole::KineticBar:
+    case DrawRole::RotationalBar: return style_.body(s.body);
+    case DrawRole::PotentialBar: return style_.potential;
+    case DrawRole::TotalBar: return style_.total;
+    case DrawRole::Panel: return style_.panel;
     case DrawRole::Label:
     case DrawRole::Caption: return style_.text;
   }
@@ -94,7 +112,9 @@ double GlCanvas::strokeWidth(DrawRole role) const {
   const double w = style_.lineWidth;
   switch (role) {
     case DrawRole::Impulse: return 1.5 * w;
-    case DrawRole::Trail: return 0.75 * w;
+    case DrawRole::Trail:
+    case DrawRole::Path: return 0.75 * w;
+    case DrawRole::Force: return 1.5 * w;
     case DrawRole::ReferenceEdge: return 3.0 * w;
     default: return w;
   }
@@ -102,6 +122,12 @@ double GlCanvas::strokeWidth(DrawRole role) const {
 
 void GlCanvas::polygon(const std::vector<Vec2>& vertices, const sim::DrawStyle& s) {
   if (vertices.empty()) return;
+  // bars and panels are areas without an outline
+  if (s.role >= DrawRole::KineticBar && s.role <= DrawRole::Panel) {
+    beginPrimitive(fillColor(s), s.opacity);
+    fillConvex(vertices);
+    return;
+  }
   const bool solid = s.role == DrawRole::Body || s.role == DrawRole::StaticBody;
   if (solid) {
     beginPrimitive(fillColor(s), s.opacity, s.role == DrawRole::StaticBody);

@@ -6,6 +6,7 @@ namespace render {
 
 History::History(const sim::World& world, Options options) : options_(std::move(options)) {
   trails_.resize(world.bodies.size());
+  points_.resize(options_.points.size());
   afterStep(world);
 }
 
@@ -13,6 +14,10 @@ void History::afterStep(const sim::World& world) {
   if (options_.trails)
     for (size_t i = 0; i < world.bodies.size(); ++i)
       if (!world.bodies[i].isStatic) trails_[i].push_back(world.bodies[i].x);
+  for (size_t k = 0; k < points_.size(); ++k) {
+    const auto& [body, local] = options_.points[k];
+    points_[k].push_back(world.bodies[body].pose().toWorld(local));
+  }
   observeImpacts(world);
   observeContacts(world);
   forgetOld(world.time);
@@ -24,7 +29,9 @@ void History::afterEvent(const sim::World& world, const sim::ImpulseEvent& e) {
   const Vec2 r = e.pointInWorld ? e.point : b.pose().toWorld(e.point);
   // the arrow ends where the impulse is applied, as a blow that strikes the body there
   Moment m{world.time, {}, Moment::Kind::Event, {-1, -1}};
-  m.calls.arrow(r - options_.impulseScale * e.impulse, r, {sim::DrawRole::Impulse, e.body, 1.0});
+  const Vec2 tail = r - options_.impulseScale * e.impulse;
+  m.calls.arrow(tail, r, {sim::DrawRole::Impulse, e.body, 1.0});
+  if (options_.labels) options_.labels->event(e, tail, r, m.calls);
   moments_.push_back(std::move(m));
 }
 
@@ -49,6 +56,7 @@ void History::observeImpacts(const sim::World& world) {
       m->calls.clear();
     }
     DrawList& d = m->calls;
+    const bool first = d.empty();
     // the impulse on each moving body (γ n̂ on A, −γ n̂ on B), from the point
     const Vec2 j = options_.impulseScale * r.impulse * r.normal;
     if (!world.bodies[r.a].isStatic) d.arrow(r.point, r.point + j, {sim::DrawRole::Impulse, r.a, 1.0});
@@ -57,6 +65,7 @@ void History::observeImpacts(const sim::World& world) {
     const Vec2 n = world.bodies[r.a].isStatic ? Vec2(-r.normal) : r.normal;
     d.arrow(r.point, r.point + options_.normalLength * n, {sim::DrawRole::ContactNormal, -1, 1.0});
     d.point(r.point, {sim::DrawRole::ContactPoint, -1, 1.0});
+    if (options_.labels) options_.labels->impact(world, r, first, d);
   }
 }
 
@@ -95,17 +104,17 @@ void History::forgetOld(double now) {
 }
 
 void History::drawTrails(sim::DebugDraw& draw, double spacing) const {
-  for (size_t i = 0; i < trails_.size(); ++i) {
-    const std::vector<Vec2>& path = trails_[i];
-    if (path.size() < 2) continue;
-    const sim::DrawStyle style{sim::DrawRole::Trail, static_cast<int>(i), 1.0};
-    Vec2 from = path.front();
-    for (size_t k = 1; k < path.size(); ++k) {
-      const bool last = k + 1 == path.size();
-      if ((path[k] - from).norm() < spacing && !last) continue;
-      draw.segment(from, path[k], style);
-      from = path[k];
-    }
+  for (size_t i = 0; i < trails_.size(); ++i) drawPath(trails_[i], spacing, {sim::DrawRole::Trail, static_cast<int>(i), 1.0}, draw);
+}
+
+void History::drawPath(const std::vector<Vec2>& path, double spacing, const sim::DrawStyle& style, sim::DebugDraw& draw) {
+  if (path.size() < 2) return;
+  Vec2 from = path.front();
+  for (size_t k = 1; k < path.size(); ++k) {
+    const bool last = k + 1 == path.size();
+    if ((path[k] - from).norm() < spacing && !last) continue;
+    draw.segment(from, path[k], style);
+    from = path[k];
   }
 }
 

@@ -5,10 +5,12 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <utility>
 #include <vector>
 
 #include "draw_list.h"
+#include "impact_labels.h"
 #include "world.h"
 
 namespace render {
@@ -26,6 +28,8 @@ class History : public sim::StepObserver {
     double impulseScale = 1.0;         // m of arrow per N·s
     double normalLength = 1.0;         // m, the arrow of a contact normal
     ContactDescriber contacts;         // the contacts touching now (empty: none)
+    std::vector<std::pair<int, Vec2>> points = {};  // body points (body coordinates) whose paths to keep
+    std::optional<ImpactLabels> labels = std::nullopt;  // impact_values: text on impact and event afterimages
   };
 
   // starts with the world's present state (its contacts and positions at the start)
@@ -36,6 +40,10 @@ class History : public sim::StepObserver {
 
   // every dynamic body's path up to now as Trail segments, points closer than `spacing` merged
   void drawTrails(sim::DebugDraw& draw, double spacing) const;
+  // the path so far of Options::points[k]
+  const std::vector<Vec2>& pointPath(size_t k) const { return points_[k]; }
+  // a path as segments in `style`, points closer than `spacing` merged (the last one always kept)
+  static void drawPath(const std::vector<Vec2>& path, double spacing, const sim::DrawStyle& style, sim::DebugDraw& draw);
   // what happened at most `hold` before `t`, its opacity falling linearly from 1 to 0 with age
   void drawAfterimages(double t, sim::DebugDraw& draw) const;
 
@@ -53,6 +61,7 @@ class History : public sim::StepObserver {
 
   Options options_;
   std::vector<std::vector<Vec2>> trails_;  // by body; empty for static bodies or without trails
+  std::vector<std::vector<Vec2>> points_;  // by Options::points
   std::vector<Moment> moments_;
   long touching_ = -1;     // index in moments_ of the contacts still touching, -1 when none
   size_t impactsSeen_ = 0;  // records of world.impacts already turned into moments

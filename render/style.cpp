@@ -20,6 +20,17 @@ Style makeStyle(const sim::SceneDef& scene, int frameHeight) {
   s.incidentVertex = Color::parse(c.incidentVertex);
   s.spring = Color::parse(c.spring);
   s.text = Color::parse(c.text);
+  s.offset = Color::parse(c.offset);
+  s.omega = Color::parse(c.omega);
+  s.frame = Color::parse(c.frame);
+  s.path = Color::parse(c.path);
+  s.force = Color::parse(c.force);
+  s.torque = Color::parse(c.torque);
+  s.momentum = Color::parse(c.momentum);
+  s.potential = Color::parse(c.potential);
+  s.total = Color::parse(c.total);
+  s.panel = Color::parse(c.panel);
+  for (const sim::ArrowDef& a : r.overlays.arrows) s.arrows.push_back(a.color.empty() ? Color{0.0, 0.0, 0.0, 0.0} : Color::parse(a.color));
   // the palette in order over the bodies without a color of their own (static ones are gray)
   size_t next = 0;
   for (const sim::BodyDef& b : scene.bodies) {

@@ -15,6 +15,9 @@ struct Style {
   Color background{1.0, 1.0, 1.0, 1.0};
   std::vector<Color> bodies;  // by body index
   Color staticBody, contact, normal, impulse, velocity, trail, referenceEdge, incidentVertex, spring, text;
+  // the lecture overlays; `arrows` by index of render.overlays.arrows, the arrow's own color or none (alpha 0)
+  Color offset, omega, frame, path, force, torque, momentum, potential, total, panel;
+  std::vector<Color> arrows;
   double lineWidth = 2.0;  // output pixels
   int fontSize = 20;       // output pixels per em
 

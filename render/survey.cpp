@@ -4,6 +4,9 @@
 #include <cmath>
 
 #include "caption.h"
+#include "diagnostics.h"
+#include "energy_panel.h"
+#include "point_forces.h"
 #include "scene_build.h"
 #include "style.h"
 
@@ -14,16 +17,18 @@ namespace {
 // the bodies' extent and speed after every step
 class Surveyor : public sim::StepObserver {
  public:
-  explicit Surveyor(RunSurvey& out) : out_(out) {}
+  Surveyor(const sim::SceneDef& def, RunSurvey& out) : def_(def), out_(out) {}
   void afterStep(const sim::World& world) override {
     for (const sim::Body& b : world.bodies) {
       out_.bounds.add(bodyBounds(b));
       out_.maxSpeed = std::max(out_.maxSpeed, b.v.norm());
     }
+    surveyOverlays(def_, world, out_);
   }
   void afterEvent(const sim::World& world, const sim::ImpulseEvent&) override { afterStep(world); }
 
  private:
+  const sim::SceneDef& def_;
   RunSurvey& out_;
 };
 
@@ -50,7 +55,7 @@ RunSurvey surveyRun(const sim::SceneDef& def, double until) {
   RunSurvey survey;
   for (const sim::EventDef& e : def.events) survey.maxImpulse = std::max(survey.maxImpulse, e.impulse.norm());
   sim::World world = sim::buildWorld(def);
-  Surveyor surveyor(survey);
+  Surveyor surveyor(def, survey);
   surveyor.afterStep(world);
   // a spring's world anchor belongs in the picture with what hangs from it
   for (const sim::Spring& sp : world.forces.springs)
@@ -59,6 +64,37 @@ RunSurvey surveyRun(const sim::SceneDef& def, double until) {
   for (const sim::ImpactRecord& r : world.impacts) survey.maxImpulse = std::max(survey.maxImpulse, std::abs(r.impulse));
   survey.impactTimes = impactTimes(world);
   return survey;
+}
+
+void surveyOverlays(const sim::SceneDef& def, const sim::World& world, RunSurvey& out) {
+  for (size_t i = 0; i < world.bodies.size(); ++i) {
+    const sim::Body& b = world.bodies[i];
+    if (b.isStatic) continue;
+    out.maxOmega = std::max(out.maxOmega, std::abs(b.omega));
+    out.maxMomentum = std::max(out.maxMomentum, b.mass * b.v.norm());
+    if (world.forces.pointForces.empty()) continue;
+    const std::vector<AppliedForce> forces = pointForcesOn(world, static_cast<int>(i));
+    for (const AppliedForce& f : forces) out.maxForce = std::max(out.maxForce, f.force.norm());
+    out.maxTorque = std::max(out.maxTorque, std::abs(torqueOf(b, forces)));
+  }
+  // the panel's values cost a pass over the bodies: only for scenes that show it
+  const sim::OverlaysDef& o = def.render.overlays;
+  if (o.energy)
+    for (const EnergyBar& bar : energyBars(def, world)) {
+      out.minEnergy = std::min(out.minEnergy, bar.value);
+      out.maxEnergy = std::max(out.maxEnergy, bar.value);
+    }
+  if (o.momentum) {
+    out.maxLinearMomentum = std::max(out.maxLinearMomentum, sim::linearMomentum(world).norm());
+    out.maxAngularMomentum = std::max(out.maxAngularMomentum, std::abs(sim::angularMomentum(world)));
+  }
+}
+
+double arrowScale(double given, double largest, const Camera& camera) {
+  // the largest value's arrow is this fraction of the view's height
+  constexpr double kArrowFraction = 1.0 / 6.0;
+  if (given > 0.0) return given;
+  return largest > 0.0 ? kArrowFraction * camera.worldHeight() / largest : 1.0;
 }
 
 Camera cameraFor(const sim::SceneDef& def, const Bounds& bounds) {

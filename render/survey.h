@@ -16,13 +16,27 @@ struct RunSurvey {
   double maxSpeed = 0.0;            // of any center of mass, m/s
   double maxImpulse = 0.0;          // of the largest event or impact, N·s
   std::vector<double> impactTimes;  // ascending, each once
+  // the lecture overlays' scales (render.overlays)
+  double maxOmega = 0.0;            // |ω| of any body, rad/s
+  double maxForce = 0.0;            // of any point force while it is on, N
+  double maxTorque = 0.0;           // |Σ r′ × f| of the point forces on any body, N·m
+  double maxMomentum = 0.0;         // |m v| of any moving body, kg·m/s
+  double minEnergy = 0.0, maxEnergy = 0.0;  // of any bar of the energy panel (≤ 0, ≥ 0), J
+  double maxLinearMomentum = 0.0;   // |Σ m v|, kg·m/s
+  double maxAngularMomentum = 0.0;  // |L| about the origin, kg·m²/s
 };
 
 // the scene run from 0 to `until` (its duration when negative); throws sim::Diverged
 RunSurvey surveyRun(const sim::SceneDef& def, double until = -1.0);
+// the overlays' extremes of the world now, added into `out` (by surveyRun after every step)
+void surveyOverlays(const sim::SceneDef& def, const sim::World& world, RunSurvey& out);
 
 // the region a body's shape covers now (its position alone for shapes without an extent)
 Bounds bodyBounds(const sim::Body& body);
+
+// an arrow scale, m of arrow per unit: `given` when positive, else one that makes `largest` 1/6 of
+// the view's height (1 when there is nothing to scale)
+double arrowScale(double given, double largest, const Camera& camera);
 
 // the scene's camera: its fixed one, or fitted over `bounds` with its margin (above the caption's band
 // when it has a caption)

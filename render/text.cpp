@@ -184,4 +184,11 @@ std::u32string decodeUtf8(const std::string& text) {
   return out;
 }
 
+double approximateWidth(const std::string& text, double size) {
+  // combining marks (n̂) add no width
+  const std::u32string codes = decodeUtf8(text);
+  const auto marks = std::count_if(codes.begin(), codes.end(), [](char32_t c) { return c >= 0x300 && c < 0x370; });
+  return 0.64 * size * static_cast<double>(codes.size() - static_cast<size_t>(marks));
+}
+
 }  // namespace render

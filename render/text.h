@@ -70,5 +70,10 @@ class TextRenderer {
 
 // the code points of UTF-8 text (malformed bytes become U+FFFD)
 std::u32string decodeUtf8(const std::string& text);
+// about the width of `text` at `size` (any unit per em), without FreeType: for layouts made before any
+// text is drawn; at least the true width for digits, letters and signs (DejaVu's digits are 0.64 em)
+double approximateWidth(const std::string& text, double size);
+// the height of a line of text at `size`: DejaVu Sans's ascent plus descent
+inline constexpr double kLineHeight = 1.17;
 
 }  // namespace render

@@ -24,12 +24,26 @@ enum class DrawRole {
   Label,           // text, centered on its point
   Caption,         // text fixed to the frame (the time): its point is the top-left corner
   Spring,          // a spring's coils, as segments
+  // the lecture overlays
+  Offset,          // r′ = R r_b, from the center of mass to a body point
+  AngularVelocity, // ω as a curved arrow around the center of mass
+  BodyFrame,       // the body's axes R x̂, R ŷ
+  Path,            // the path of a body point
+  Force,           // a point force at its point
+  Torque,          // τ as a curved arrow around the center of mass
+  Momentum,        // m v from the center of mass
+  KineticBar,      // an energy bar of ½ m v², filled
+  RotationalBar,   // an energy bar of ½ I ω², filled
+  PotentialBar,    // the potential energy's bar, filled
+  TotalBar,        // the total energy's bar, filled
+  Panel,           // the background of a panel fixed to the frame, filled
 };
 
 struct DrawStyle {
   DrawRole role = DrawRole::Body;
   int body = -1;         // index of the body it belongs to (for its color), -1 for none
   double opacity = 1.0;  // fading contacts, strobe ghosts
+  int color = -1;        // the color of the i-th teaching arrow (render.overlays.arrows), -1: the role's
 };
 
 class DebugDraw {

@@ -38,6 +38,39 @@ struct ColorsDef {
   std::string incidentVertex = "#9467bd";
   std::string spring = "#4d4d4d";
   std::string text = "#1f1f1f";
+  // the teaching overlays (OverlaysDef)
+  std::string offset = "#7f7f7f";
+  std::string omega = "#17becf";
+  std::string frame = "#8c564b";
+  std::string path = "#e377c2";
+  std::string force = "#e6550d";
+  std::string torque = "#a55194";
+  std::string momentum = "#3182bd";
+  std::string potential = "#31a354";
+  std::string total = "#636363";
+  std::string panel = "#f2f2f2";
+};
+
+// a teaching vector drawn every frame: one entry of `arrows:`
+struct ArrowDef {
+  enum class Show { Velocity, Offset, Omega, Frame, Path, Force, Torque, Momentum };
+  Show show = Show::Velocity;
+  int body = 0;             // index into SceneDef::bodies, resolved when read
+  Vec2 at = Vec2::Zero();   // body coordinates as written (before the centroid shift)
+  std::string label;        // empty: the default of `show` ("v", "r′", "ω", …)
+  bool value = false;       // the magnitude with its unit after the label
+  std::string color;        // "#rrggbb"; empty: the color of `show`'s role
+};
+
+// the lecture overlays of a frame (scenes/README.md, render:), all off by default
+struct OverlaysDef {
+  std::vector<ArrowDef> arrows;
+  double forceScale = 0.0;     // m per N; 0: the largest point force of the run is 1/6 of the view
+  double momentumScale = 0.0;  // m per kg·m/s; 0: the largest momentum of the run is 1/6 of the view
+  bool impactValues = false;   // impact afterimages labeled n̂, j and v_n⁻ → v_n⁺
+  bool energy = false;         // the energy bars panel, top right
+  bool momentum = false;       // p and L as text in that panel
+  bool satAxes = false;        // every candidate axis of the SAT overlay labeled with its separation
 };
 
 // a stretch of the video that runs `factor` times slower: `window` s around each impact of the run
@@ -75,6 +108,7 @@ struct RenderDef {
   bool captionFromDescription = false; // `caption: true`: the description's first sentence
   std::string caption;                 // `caption: "text"`; empty (and not from the description): none
   std::vector<SlowMotionDef> slowMotion;
+  OverlaysDef overlays;                // the lecture overlays
 };
 
 }  // namespace sim

@@ -67,7 +67,8 @@ class RenderReader {
 
   void colors(const YAML::Node& n, ColorsDef& out) const {
     r_.checkKeys(n, {"palette", "static", "contact", "normal", "impulse", "velocity", "trail", "reference_edge",
-                     "incident_vertex", "spring", "text"},
+                     "incident_vertex", "spring", "text", "offset", "omega", "frame", "path", "force", "torque",
+                     "momentum", "potential", "total", "panel"},
                  "colors");
     if (const YAML::Node p = n["palette"]) {
       if (!p.IsSequence() || p.size() == 0) r_.fail(p, "'palette' must be a list of at least one \"#rrggbb\" color");
@@ -79,7 +80,12 @@ class RenderReader {
         {"normal", &out.normal},      {"impulse", &out.impulse},
         {"velocity", &out.velocity},  {"trail", &out.trail},
         {"reference_edge", &out.referenceEdge}, {"incident_vertex", &out.incidentVertex},
-        {"spring", &out.spring},      {"text", &out.text}};
+        {"spring", &out.spring},      {"text", &out.text},
+        {"offset", &out.offset},      {"omega", &out.omega},
+        {"frame", &out.frame},        {"path", &out.path},
+        {"force", &out.force},        {"torque", &out.torque},
+        {"momentum", &out.momentum},  {"potential", &out.potential},
+        {"total", &out.total},        {"panel", &out.panel}};
     for (const auto& [key, value] : roles)
       if (n[key]) *value = color(n[key], key);
   }
@@ -95,7 +101,10 @@ void readRender(const YAML::Node& node, const Reader& reader, RenderDef& out) {
                           "contact_hold", "impulses", "impulse_scale", "velocities", "velocity_scale", "trails", "sat",
                           "strobe", "springs", "labels", "time",
                           // video timing and text
-                          "title", "title_card", "caption", "slow_motion"},
+                          "title", "title_card", "caption", "slow_motion",
+
+                          // the lecture overlays, read by readOverlays
+                          "arrows", "force_scale", "momentum_scale", "impact_values", "energy", "momentum", "sat_axes"},
                    "render");
   const RenderReader r(reader);
   if (node["size"]) r.size(node["size"], out);
@@ -121,6 +130,50 @@ void readRender(const YAML::Node& node, const Reader& reader, RenderDef& out) {
   if (node["labels"]) out.labels = reader.boolean(node["labels"], "labels");
   if (node["time"]) out.time = reader.boolean(node["time"], "time");
   readTiming(node, reader, out);
+}
+
+namespace {
+
+// the `show:` names, in the order of ArrowDef::Show
+constexpr const char* kShowNames[] = {"velocity", "offset", "omega", "frame", "path", "force", "torque", "momentum"};
+
+ArrowDef readArrow(const YAML::Node& n, const Reader& reader, const SceneDef& scene) {
+  reader.checkKeys(n, {"body", "show", "at", "label", "value", "color"}, "an arrow");
+  ArrowDef a;
+  const YAML::Node body = reader.required(n, "body", "an arrow");
+  a.body = scene.bodyIndex(reader.text(body, "body"));
+  if (a.body < 0) {
+    std::string known;
+    for (const BodyDef& b : scene.bodies) known += (known.empty() ? "" : ", ") + b.name;
+    reader.fail(body, "no body named '" + body.Scalar() + "'; the bodies are: " + known);
+  }
+  const YAML::Node show = reader.required(n, "show", "an arrow");
+  const std::string name = reader.text(show, "show");
+  const auto* found = std::find(std::begin(kShowNames), std::end(kShowNames), name);
+  if (found == std::end(kShowNames))
+    reader.fail(show, "unknown show '" + name + "'; choose one of: velocity, offset, omega, frame, path, force, torque, momentum");
+  a.show = static_cast<ArrowDef::Show>(found - std::begin(kShowNames));
+  if (n["at"]) a.at = reader.vec2(n["at"], "at");
+  if (n["label"]) a.label = reader.text(n["label"], "label");
+  if (n["value"]) a.value = reader.boolean(n["value"], "value");
+  if (n["color"]) a.color = RenderReader(reader).color(n["color"], "color");
+  return a;
+}
+
+}  // namespace
+
+void readOverlays(const YAML::Node& node, const Reader& reader, const SceneDef& scene, OverlaysDef& out) {
+  if (const YAML::Node arrows = node["arrows"]) {
+    if (!arrows.IsSequence()) reader.fail(arrows, "'arrows' must be a list of {body, show}, got " + describe(arrows));
+    out.arrows.clear();
+    for (const YAML::Node& a : arrows) out.arrows.push_back(readArrow(a, reader, scene));
+  }
+  if (node["force_scale"]) out.forceScale = reader.positive(node["force_scale"], "force_scale");
+  if (node["momentum_scale"]) out.momentumScale = reader.positive(node["momentum_scale"], "momentum_scale");
+  if (node["impact_values"]) out.impactValues = reader.boolean(node["impact_values"], "impact_values");
+  if (node["energy"]) out.energy = reader.boolean(node["energy"], "energy");
+  if (node["momentum"]) out.momentum = reader.boolean(node["momentum"], "momentum");
+  if (node["sat_axes"]) out.satAxes = reader.boolean(node["sat_axes"], "sat_axes");
 }
 
 }  // namespace sim::yaml

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "render_def.h"
+#include "scene_def.h"
 #include "yaml_reader.h"
 
 namespace sim::yaml {
@@ -10,5 +11,7 @@ namespace sim::yaml {
 void readRender(const YAML::Node& node, const Reader& reader, RenderDef& out);
 // its keys of video timing and text (render_timing_yaml.cpp), called by readRender
 void readTiming(const YAML::Node& node, const Reader& reader, RenderDef& out);
+// the lecture overlays of the same render: block; arrows name bodies of `scene`, read before
+void readOverlays(const YAML::Node& node, const Reader& reader, const SceneDef& scene, OverlaysDef& out);
 
 }  // namespace sim::yaml

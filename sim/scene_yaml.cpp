@@ -112,7 +112,10 @@ class SceneReader : public Reader {
       if (!expect.IsSequence()) fail(expect, "'expect' must be a list, got " + describe(expect));
       for (const YAML::Node& e : expect) s.expects.push_back(readExpect(e, s));
     }
-    if (const YAML::Node r = root["render"]) yaml::readRender(r, *this, s.render);
+    if (const YAML::Node r = root["render"]) {
+      yaml::readRender(r, *this, s.render);
+      yaml::readOverlays(r, *this, s, s.render.overlays);
+    }
     if (const YAML::Node st = root["stability"]) s.stability = readStability(st, s);
     return s;
   }

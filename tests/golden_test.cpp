@@ -96,7 +96,54 @@ bodies:
 render: {size: [320, 180], line_width: 1.5, trails: true, velocities: true}
 )";
 
+// the lecture overlays: the poll's bar after its blow, with labeled teaching arrows
+const char* const kArrows = R"(
+name: golden_arrows
+duration: 2
+sim: {integrator: rk4, dt: 0.001}
+bodies:
+  - {name: bar, shape: {box: [0.2, 4.0]}, mass: 3, inertia: 4, color: "#3b6ea5", label: ""}
+events:
+  - {time: 0.5, body: bar, impulse: [1, 0], point: [0, 2]}
+render:
+  size: [320, 180]
+  line_width: 1.5
+  camera: {center: [0.9, 0], height: 5.2}
+  velocity_scale: 1.5
+  arrows:
+    - {body: bar, show: velocity, at: [0, 2], value: true}
+    - {body: bar, show: offset, at: [0, 2]}
+    - {body: bar, show: omega, value: true}
+    - {body: bar, show: path, at: [0, -2]}
+)";
+
+// the energy panel and momenta of a ball bouncing on a floor
+const char* const kEnergy = R"(
+name: golden_energy
+duration: 1.5
+world: {gravity: [0, -9.81], restitution: 0.7}
+bodies:
+  - {name: ball, shape: {circle: 0.3}, position: [-1, 1.5], velocity: [1, 0], angular_velocity: -2, label: ""}
+  - {name: floor, shape: {box: [6, 0.4]}, position: [0, -0.2], static: true, label: ""}
+render:
+  size: [320, 180]
+  line_width: 1.5
+  font_size: 8
+  camera: {center: [0.6, 1.1], height: 3.0}
+  energy: true
+  momentum: true
+  impact_values: true
+)";
+
 }  // namespace
+
+TEST_CASE("golden: labeled teaching arrows: v + ω × r′ at the bar's top, r′, ω, a point's path") {
+  checkGolden("teaching_arrows", frame(kArrows, 1.5));
+}
+
+TEST_CASE("golden: the energy panel and momenta, an impact labeled with its values") {
+  checkGolden("energy_panel", frame(kEnergy, 0.62));
+}
 
 TEST_CASE("golden: bodies of every shape, static ones hatched, a half-plane, labels, the time") {
   checkGolden("bodies", frame(kBodies, 0.0));

@@ -118,3 +118,66 @@ TEST_CASE("bad render values name the line and what to write") {
   expectError("render:\n  trails: maybe\n", 4, "true or false");
   expectError("render:\n  contact_hold: -0.1\n", 4, "zero or a positive");
 }
+
+// the lecture overlays (render.overlays)
+TEST_CASE("the lecture overlays are off by default") {
+  const sim::OverlaysDef o = renderOf("").overlays;
+  CHECK(o.arrows.empty());
+  CHECK(o.forceScale == 0.0);
+  CHECK(o.momentumScale == 0.0);
+  CHECK_FALSE(o.impactValues);
+  CHECK_FALSE(o.energy);
+  CHECK_FALSE(o.momentum);
+  CHECK_FALSE(o.satAxes);
+}
+
+TEST_CASE("arrows name their body and what to show; the other overlay keys are read") {
+  const sim::OverlaysDef o = renderOf(
+                                 "render:\n"
+                                 "  arrows:\n"
+                                 "    - {body: a, show: velocity, at: [0, 2], value: true}\n"
+                                 "    - {body: a, show: torque, label: tau, color: '#00ff00'}\n"
+                                 "  force_scale: 0.5\n"
+                                 "  momentum_scale: 0.25\n"
+                                 "  impact_values: true\n"
+                                 "  energy: yes\n"
+                                 "  momentum: true\n"
+                                 "  sat_axes: true\n"
+                                 "  colors: {force: '#010203', panel: '#eeeeee'}\n")
+                                 .overlays;
+  REQUIRE(o.arrows.size() == 2);
+  CHECK(o.arrows[0].body == 0);
+  CHECK(o.arrows[0].show == sim::ArrowDef::Show::Velocity);
+  CHECK(o.arrows[0].at == sim::Vec2(0, 2));
+  CHECK(o.arrows[0].value);
+  CHECK(o.arrows[0].label.empty());
+  CHECK(o.arrows[1].show == sim::ArrowDef::Show::Torque);
+  CHECK(o.arrows[1].label == "tau");
+  CHECK(o.arrows[1].color == "#00ff00");
+  CHECK(o.arrows[1].at == sim::Vec2::Zero());
+  CHECK(o.forceScale == 0.5);
+  CHECK(o.momentumScale == 0.25);
+  CHECK(o.impactValues);
+  CHECK(o.energy);
+  CHECK(o.momentum);
+  CHECK(o.satAxes);
+  CHECK(renderOf("render: {colors: {force: '#010203'}}\n").colors.force == "#010203");
+}
+
+TEST_CASE("bad arrows name the line, the column and what to write") {
+  expectError("render:\n  arrows: {body: a}\n", 4, "must be a list");
+  expectError("render:\n  arrows:\n    - {show: velocity}\n", 5, "needs 'body'");
+  expectError("render:\n  arrows:\n    - {body: b, show: velocity}\n", 5, "no body named 'b'; the bodies are: a");
+  expectError("render:\n  arrows:\n    - {body: a}\n", 5, "needs 'show'");
+  expectError("render:\n  arrows:\n    - {body: a, show: speed}\n", 5, "unknown show 'speed'; choose one of: velocity");
+  expectError("render:\n  arrows:\n    - {body: a, show: omega, at: 1}\n", 5, "[x, y]");
+  expectError("render:\n  arrows:\n    - {body: a, show: omega, colour: '#000000'}\n", 5, "did you mean 'color'");
+  expectError("render:\n  arrows:\n    - {body: a, show: omega, color: blue}\n", 5, "#rrggbb");
+  expectError("render:\n  force_scale: 0\n", 4, "positive");
+  expectError("render:\n  energy: lots\n", 4, "true or false");
+  try {
+    (void)renderOf("render:\n  arrows:\n    - {body: b, show: velocity}\n");
+  } catch (const sim::SceneError& e) {
+    CHECK(std::string(e.what()).rfind("inline.yaml:5:14: no body named 'b'", 0) == 0);
+  }
+}

@@ -1,0 +1,46 @@
+// The energy panel, fixed to the frame's top-right corner: for each moving body a bar of ½mv² and
+// one of ½Iω², then the potential energy (when the scene has any) and the total, each with its value
+// in J; bars share one scale over the whole run (the survey's extremes), so a video can be compared
+// frame to frame. With `momentum: true`, p and L about the origin as text below (or alone).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "camera.h"
+#include "debug_draw.h"
+#include "scene_def.h"
+#include "survey.h"
+#include "world.h"
+
+namespace render {
+
+struct EnergyBar {
+  std::string name;  // e.g. "bar ½mv²", "U", "E"
+  double value = 0.0;  // J
+  sim::DrawRole role = sim::DrawRole::TotalBar;
+  int body = -1;
+};
+
+// the panel's bars at the world's present state, in the order drawn
+std::vector<EnergyBar> energyBars(const sim::SceneDef& def, const sim::World& world);
+
+class EnergyPanel {
+ public:
+  EnergyPanel(const sim::SceneDef& def, const Camera& camera, const RunSurvey& survey);
+  void draw(const sim::World& world, sim::DebugDraw& draw) const;
+
+ private:
+  // a pixel of the frame in world coordinates
+  Vec2 at(double xPx, double yPx) const { return camera_.toWorld({xPx, yPx}); }
+
+  const sim::SceneDef& def_;
+  Camera camera_;
+  bool energy_, momentum_;
+  double lowest_, span_;   // the bars' scale: the run's least value (≤ 0) and largest − least, J
+  double em_;              // the text size, px
+  double left_, width_;    // the panel's left edge and width, px
+  double barLeft_, textLeft_;
+};
+
+}  // namespace render

@@ -1,0 +1,34 @@
+#include "sat_axes.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <limits>
+
+namespace render {
+
+using sim::Vec2;
+
+double edgeSeparation(const sim::Body& polygon, int edge, const sim::Body& other) {
+  const Vec2 p = polygon.pose().toWorld(polygon.shape.vertices[edge]);
+  const Vec2 n = polygon.q.apply(polygon.shape.normals[edge]);
+  double least = std::numeric_limits<double>::infinity();
+  for (const Vec2& v : other.shape.vertices) least = std::min(least, n.dot(other.pose().toWorld(v) - p));
+  return least;
+}
+
+void describeCandidateAxes(const sim::World& world, int a, int b, int skipEdge, double labelOffset, sim::DebugDraw& draw) {
+  for (const int i : {a, b}) {
+    const sim::Body &polygon = world.bodies[i], &other = world.bodies[i == a ? b : a];
+    const std::vector<Vec2>& v = polygon.shape.vertices;
+    for (int e = 0; e < static_cast<int>(v.size()); ++e) {
+      if (i == a && e == skipEdge) continue;
+      const Vec2 p = polygon.pose().toWorld(v[e]), q = polygon.pose().toWorld(v[(e + 1) % v.size()]);
+      char text[32];
+      std::snprintf(text, sizeof text, "%.3g m", edgeSeparation(polygon, e, other));
+      const Vec2 outward = polygon.q.apply(polygon.shape.normals[e]);
+      draw.text(0.5 * (p + q) - labelOffset * outward, text, {sim::DrawRole::Label, i, 1.0});
+    }
+  }
+}
+
+}  // namespace render
