@@ -40,6 +40,14 @@ struct ColorsDef {
   std::string text = "#1f1f1f";
 };
 
+// the poll panels `rigidreel lecture` writes (every variant side by side): at these times, or at
+// each impact; none when `times` is empty and `impacts` false. The scene reader fills the default
+// (the duration, for a scene with two or more variants) and checks the times against the duration.
+struct PanelsDef {
+  std::vector<double> times;  // s
+  bool impacts = false;
+};
+
 struct RenderDef {
   int width = 1280;                    // pixels
   int height = 720;
@@ -61,6 +69,7 @@ struct RenderDef {
   bool springs = true;                 // springs as zigzags, world anchors as dots
   bool labels = true;                  // body labels
   bool time = true;                    // the time in a corner
+  PanelsDef panels;                    // `rigidreel lecture`'s poll panels
 };
 
 }  // namespace sim

@@ -93,7 +93,7 @@ class RenderReader {
 void readRender(const YAML::Node& node, const Reader& reader, RenderDef& out) {
   reader.checkKeys(node, {"size", "fps", "background", "line_width", "font_size", "colors", "camera", "contacts",
                           "contact_hold", "impulses", "impulse_scale", "velocities", "velocity_scale", "trails", "sat",
-                          "strobe", "springs", "labels", "time"},
+                          "strobe", "springs", "labels", "time", "panels"},
                    "render");
   const RenderReader r(reader);
   if (node["size"]) r.size(node["size"], out);
@@ -118,6 +118,29 @@ void readRender(const YAML::Node& node, const Reader& reader, RenderDef& out) {
   if (node["springs"]) out.springs = reader.boolean(node["springs"], "springs");
   if (node["labels"]) out.labels = reader.boolean(node["labels"], "labels");
   if (node["time"]) out.time = reader.boolean(node["time"], "time");
+}
+
+void readPanels(const YAML::Node& node, const Reader& reader, double duration, size_t variants, PanelsDef& out) {
+  out = {};
+  if (!node) {
+    if (variants >= 2) out.times = {duration};
+    return;
+  }
+  if (variants == 0)
+    reader.fail(node, "'panels' puts the variants side by side, and this scene has none; add 'variants:' or remove 'panels'");
+  if (node.IsScalar() && node.Scalar() == "impacts") {
+    out.impacts = true;
+    return;
+  }
+  if (!node.IsSequence())
+    reader.fail(node, "'panels' is a list of times in seconds, e.g. [0, 1.5], or 'impacts'; got " + describe(node));
+  for (const YAML::Node& t : node) {
+    const double time = reader.nonNegative(t, "panels");
+    if (time > duration)
+      reader.fail(t, "a panel at " + formatted(time) + " s is after the scene's duration (" + formatted(duration) +
+                         " s); give times from 0 to the duration");
+    out.times.push_back(time);
+  }
 }
 
 }  // namespace sim::yaml

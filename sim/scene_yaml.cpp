@@ -113,6 +113,8 @@ class SceneReader : public Reader {
       for (const YAML::Node& e : expect) s.expects.push_back(readExpect(e, s));
     }
     if (const YAML::Node r = root["render"]) yaml::readRender(r, *this, s.render);
+    const YAML::Node render = root["render"];
+    yaml::readPanels(render ? render["panels"] : render, *this, s.duration, s.variantNames.size(), s.render.panels);
     if (const YAML::Node st = root["stability"]) s.stability = readStability(st, s);
     return s;
   }
