@@ -6,7 +6,7 @@ PACKAGES := g++ cmake make pkg-config libeigen3-dev libyaml-cpp-dev doctest-dev 
             libosmesa6-dev libpng-dev libfreetype-dev fonts-dejavu-core ffmpeg gnuplot-nox
 SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps build demo test bench clean
+.PHONY: all deps build demo lecture test bench clean
 
 all: build
 
@@ -30,6 +30,10 @@ demo: build
 	./$(BUILD)/rigidreel simulate $(DEMO) --variant end --json
 	./$(BUILD)/rigidreel render $(DEMO) --all-variants
 	./$(BUILD)/rigidreel snapshot scenes/three_collisions_poll.yaml --impacts --panels
+
+# the course's pack: every scene in scenes/lecture/, its videos, posters and poll panels (README)
+lecture: build
+	./$(BUILD)/rigidreel lecture scenes/lecture -o out/lecture
 
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)

@@ -1,162 +1,15 @@
 // `rigidreel render`: a scene into a video (mp4, webm or gif) with a poster PNG, and optionally
 // every frame as PNG, under out/<scene>/.
-#include <unistd.h>
-
-#include <cmath>
-#include <cstdio>
-#include <filesystem>
-#include <iostream>
 #include <memory>
 
 #include "commands.h"
 #include "interrupt.h"
-#include "output.h"
-#include "png_io.h"
-#include "progress.h"
-#include "recorder.h"
-#include "scene_options.h"
-#include "scene_run.h"
-#include "video.h"
+#include "videos.h"
 
 namespace render {
 
-namespace {
-
-namespace fs = std::filesystem;
-
-struct RenderOptions : SceneOptions {
-  std::string output = "out";
-  bool allVariants = false;
-  std::string size;
-  std::optional<double> fps;
-  std::optional<double> duration;
-  std::string format = "mp4";
-  bool frames = false;
-  bool quiet = false;
-};
-
-class VideoSink : public FrameSink {
- public:
-  explicit VideoSink(VideoWriter& video) : video_(video) {}
-  void frame(long, const Image& image) override { video_.write(image); }
-
- private:
-  VideoWriter& video_;
-};
-
-// a directory filled under a temporary name and renamed over the old one when complete
-class StagedDirectory {
- public:
-  explicit StagedDirectory(const fs::path& final)
-      : final_(final), staging_(final.parent_path() / ("." + final.filename().string() + ".part-" + std::to_string(::getpid()))) {
-    fs::remove_all(staging_);
-    fs::create_directories(staging_);
-  }
-  ~StagedDirectory() {
-    std::error_code ignored;
-    if (!committed_) fs::remove_all(staging_, ignored);
-  }
-  std::string path() const { return staging_.string(); }
-  void commit() {
-    fs::remove_all(final_);
-    fs::rename(staging_, final_);
-    committed_ = true;
-  }
-
- private:
-  fs::path final_, staging_;
-  bool committed_ = false;
-};
-
-// one video of one variant (or of the base scene)
-void renderOne(const RenderOptions& o, const sim::SceneDef& def) {
-  const double fps = def.render.fps;
-  const double duration = o.duration.value_or(def.duration);
-  const VideoFormat format = *videoFormatFromName(o.format);
-  const std::string dir = outputDirectory(o.output, def.name);
-  const std::string base = outputBase(def);
-  const std::string videoPath = dir + "/" + base + "." + videoExtension(format);
-
-  const RunSurvey survey = surveyRun(def, duration);
-  // frame k at the simulation time of video time k / fps, for every k / fps < the video's length:
-  // the title card, then `duration` stretched by the slow-motion windows (exactly `duration` without)
-  const TimeMap map = timeMapFor(def.render, survey.impactTimes, duration);
-  const long count = map.frameCount(fps);
-  const Camera camera = cameraFor(def, survey.bounds);
-  GlContext gl(def.render.width, def.render.height);
-  TextRenderer text;
-  SceneRun run(def, camera, survey, &gl, &text);
-
-  VideoWriter video(videoPath, format, def.render.width, def.render.height, fps);
-  VideoSink videoSink(video);
-  std::vector<FrameSink*> sinks = {&videoSink};
-  std::unique_ptr<StagedDirectory> framesDir;
-  std::unique_ptr<PngFrames> pngFrames;
-  if (o.frames) {
-    framesDir = std::make_unique<StagedDirectory>(fs::path(dir) / (base + "-frames"));
-    pngFrames = std::make_unique<PngFrames>(framesDir->path(), count);
-    sinks.push_back(pngFrames.get());
-  }
-  Progress progress(base, count, !o.quiet);
-  record(run, map, fps, sinks, [&](long done) { progress.update(done); });
-  progress.finish();
-  video.finish();
-  if (framesDir) framesDir->commit();
-  const double seconds = progress.elapsed();
-
-  // the poster: the last instant, with the scene's strobe ghosts when it asks for them
-  const std::string posterPath = dir + "/" + base + ".png";
-  SceneRun posterRun(def, camera, survey, &gl, &text);
-  writePng(posterRun.frameAt(duration, def.render.strobe), posterPath);
-
-  if (!o.quiet) {
-    char rate[96];
-    std::snprintf(rate, sizeof rate, "drawn in %.2f s (%.1f frames/s)", seconds, count / seconds);
-    std::cout << videoPath << ": " << count << " frames, " << def.render.width << "x" << def.render.height << " at "
-              << timeForName(fps) << " fps (" << timeForName(count / fps) << " s), " << rate << "\n";
-    std::cout << posterPath << ": poster at t = " << timeForName(duration) << " s\n";
-    if (o.frames) std::cout << dir << "/" << base << "-frames/: " << count << " PNG frames\n";
-  }
-}
-
-int renderScene(RenderOptions o) {
-  catchInterrupts();
-  if (!videoFormatFromName(o.format)) throw UsageError("--format: unknown format '" + o.format + "'; choose mp4, webm or gif");
-  std::optional<FrameSize> size;
-  if (!o.size.empty()) size = parseSize(o.size);
-  if (o.fps) checkFps(*o.fps);
-  if (o.duration && (!(*o.duration > 0.0) || !std::isfinite(*o.duration)))
-    throw UsageError("--duration: the length of the video must be a positive number of seconds");
-
-  // the variants to render: every one (the base scene when there are none, as `check` does), the
-  // one asked for, or the base scene
-  std::vector<std::string> variants = {o.variant};
-  if (o.allVariants) {
-    const sim::SceneDef base = o.load();
-    if (!base.variantNames.empty()) variants = base.variantNames;
-  }
-  for (const std::string& v : variants) {
-    RenderOptions one = o;
-    one.variant = v;
-    sim::SceneDef def = one.load();
-    if (size) def.render.width = size->width, def.render.height = size->height;
-    if (o.fps) def.render.fps = *o.fps;
-    try {
-      renderOne(one, def);
-    } catch (const sim::Diverged& d) {
-      std::cerr << o.scene << ": the simulation diverged at t = " << timeForName(d.time) << ": body '"
-                << def.bodies[d.body].name << "' has a non-finite state; try a smaller step (--dt "
-                << timeForName(def.dt / 4) << ") or another integrator (--integrator rk4)\n";
-      return kExitFailure;
-    }
-  }
-  return kExitOk;
-}
-
-}  // namespace
-
 void addRenderCommand(CLI::App& app, int& exitCode) {
-  auto o = std::make_shared<RenderOptions>();
+  auto o = std::make_shared<VideoOptions>();
   CLI::App* cmd = app.add_subcommand("render", "render a scene into a video under out/<scene>/, with a poster PNG");
   cmd->add_option("scene", o->scene, "the scene file (YAML)")->required();
   o->addTo(*cmd);
@@ -168,14 +21,7 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--format", o->format, "mp4 (H.264, default), webm (VP9) or gif");
   cmd->add_flag("--frames", o->frames, "also write every frame as PNG into <scene>-frames/");
   cmd->add_flag("--quiet", o->quiet, "no progress bar and no summary");
-  cmd->callback([o, &exitCode] {
-    try {
-      exitCode = renderScene(*o);
-    } catch (const Interrupted& e) {
-      std::cerr << "rigidreel: " << e.what() << '\n';
-      exitCode = kExitInterrupted;
-    }
-  });
+  cmd->callback([o, &exitCode] { exitCode = runInterruptible([&] { return renderVideos(*o, [](const std::string&) {}); }); });
 }
 
 }  // namespace render

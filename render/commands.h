@@ -22,5 +22,6 @@ void addSweepCommand(CLI::App& app, int& exitCode);
 void addStabilityCommand(CLI::App& app, int& exitCode);
 void addRenderCommand(CLI::App& app, int& exitCode);
 void addSnapshotCommand(CLI::App& app, int& exitCode);
+void addLectureCommand(CLI::App& app, int& exitCode);
 
 }  // namespace render

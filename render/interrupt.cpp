@@ -1,6 +1,7 @@
 #include "interrupt.h"
 
 #include <csignal>
+#include <iostream>
 
 namespace render {
 
@@ -22,6 +23,16 @@ void catchInterrupts() {
 
 void checkInterrupted() {
   if (interruptedFlag) throw Interrupted();
+}
+
+int runInterruptible(const std::function<int()>& command) {
+  catchInterrupts();
+  try {
+    return command();
+  } catch (const Interrupted& e) {
+    std::cerr << "rigidreel: " << e.what() << '\n';
+    return kExitInterrupted;
+  }
 }
 
 }  // namespace render

@@ -2,6 +2,7 @@
 // and throws, so that the destructors stop ffmpeg and remove every temporary file.
 #pragma once
 
+#include <functional>
 #include <stdexcept>
 
 namespace render {
@@ -17,5 +18,8 @@ void checkInterrupted();
 
 // the exit status of a process stopped by SIGINT, as shells report it
 inline constexpr int kExitInterrupted = 130;
+
+// a subcommand with Ctrl-C caught: its exit status, or kExitInterrupted after saying so
+int runInterruptible(const std::function<int()>& command);
 
 }  // namespace render

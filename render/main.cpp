@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   render::addStabilityCommand(app, exitCode);
   render::addRenderCommand(app, exitCode);
   render::addSnapshotCommand(app, exitCode);
+  render::addLectureCommand(app, exitCode);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

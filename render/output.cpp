@@ -54,3 +54,13 @@ std::string timeForName(double t) {
 }
 
 }  // namespace render
+
+namespace render {
+
+std::string strobeSuffix(int strobe) { return strobe > 0 ? "-strobe" + std::to_string(strobe) : ""; }
+
+std::string panelsFileName(const std::string& scene, const std::string& when, int strobe) {
+  return scene + "-panels" + when + strobeSuffix(strobe) + ".png";
+}
+
+}  // namespace render

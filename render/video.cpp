@@ -1,8 +1,6 @@
 #include "video.h"
 
-#include <fcntl.h>
 #include <signal.h>
-#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -13,7 +11,7 @@
 #include <sstream>
 #include <stdexcept>
 
-extern char** environ;
+#include "process.h"
 
 namespace render {
 
@@ -89,45 +87,18 @@ VideoWriter::VideoWriter(const std::string& path, VideoFormat format, int width,
     : path_(path), temporary_(temporaryName(path)), program_(program), width_(width), height_(height) {
   // a write to an ffmpeg that has died is an error to report (EPIPE), not a signal that kills us
   ::signal(SIGPIPE, SIG_IGN);
-  int in[2], err[2];
-  if (::pipe2(in, O_CLOEXEC) != 0) throw std::runtime_error(std::string("cannot make a pipe: ") + std::strerror(errno));
-  if (::pipe2(err, O_CLOEXEC) != 0) {
-    ::close(in[0]), ::close(in[1]);
-    throw std::runtime_error(std::string("cannot make a pipe: ") + std::strerror(errno));
-  }
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_adddup2(&actions, in[0], STDIN_FILENO);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_adddup2(&actions, err[1], STDERR_FILENO);
   std::vector<std::string> args = ffmpegArguments(format, width, height, fps, temporary_);
   args.insert(args.begin(), program_);
-  std::vector<char*> argv;
-  for (std::string& s : args) argv.push_back(s.data());
-  argv.push_back(nullptr);
-  const int spawned = ::posix_spawnp(&pid_, program_.c_str(), &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  ::close(in[0]);
-  ::close(err[1]);
-  if (spawned != 0) {
-    pid_ = -1;
-    ::close(in[1]);
-    ::close(err[0]);
-    throw std::runtime_error("cannot run '" + program_ + "' (" + std::strerror(spawned) +
-                             "); install it, e.g. apt-get install ffmpeg");
+  Child child;
+  try {
+    child = spawnChild(args, Stream::Pipe, Stream::Null, Stream::Pipe);
+  } catch (const SpawnError& e) {
+    throw std::runtime_error(std::string(e.what()) + "; install it, e.g. apt-get install ffmpeg");
   }
-  input_ = in[1];
-  errors_ = err[0];
-  errorReader_ = std::thread([this] {
-    char buf[4096];
-    for (;;) {
-      const ssize_t n = ::read(errors_, buf, sizeof buf);
-      if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) break;
-      errorTail_.append(buf, static_cast<size_t>(n));
-      if (errorTail_.size() > 2 * kTailChars) errorTail_.erase(0, errorTail_.size() - kTailChars);
-    }
-  });
+  pid_ = child.pid;
+  input_ = child.input;
+  errors_ = child.errors;
+  errorReader_ = std::thread([this] { readTail(errors_, errorTail_, kTailChars); });
 }
 
 VideoWriter::~VideoWriter() {
@@ -139,9 +110,7 @@ VideoWriter::~VideoWriter() {
 }
 
 int VideoWriter::wait() {
-  int status = 0;
-  while (pid_ > 0 && ::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
-  }
+  const int status = pid_ > 0 ? waitChild(pid_) : 0;
   pid_ = -1;
   if (errorReader_.joinable()) errorReader_.join();
   if (errors_ >= 0) ::close(errors_);

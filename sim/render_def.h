@@ -81,6 +81,14 @@ struct SlowMotionDef {
   double from = 0.0, to = 0.0;  // s
 };
 
+// the poll panels `rigidreel lecture` writes (every variant side by side): at these times, or at
+// each impact; none when `times` is empty and `impacts` false. The scene reader fills the default
+// (the duration, for a scene with two or more variants) and checks the times against the duration.
+struct PanelsDef {
+  std::vector<double> times;  // s
+  bool impacts = false;
+};
+
 struct RenderDef {
   int width = 1280;                    // pixels
   int height = 720;
@@ -109,6 +117,7 @@ struct RenderDef {
   std::string caption;                 // `caption: "text"`; empty (and not from the description): none
   std::vector<SlowMotionDef> slowMotion;
   OverlaysDef overlays;                // the lecture overlays
+  PanelsDef panels;                    // `rigidreel lecture`'s poll panels
 };
 
 }  // namespace sim

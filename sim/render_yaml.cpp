@@ -99,7 +99,7 @@ class RenderReader {
 void readRender(const YAML::Node& node, const Reader& reader, RenderDef& out) {
   reader.checkKeys(node, {"size", "fps", "background", "line_width", "font_size", "colors", "camera", "contacts",
                           "contact_hold", "impulses", "impulse_scale", "velocities", "velocity_scale", "trails", "sat",
-                          "strobe", "springs", "labels", "time",
+                          "strobe", "springs", "labels", "time", "panels",
                           // video timing and text
                           "title", "title_card", "caption", "slow_motion",
 
@@ -174,6 +174,29 @@ void readOverlays(const YAML::Node& node, const Reader& reader, const SceneDef& 
   if (node["energy"]) out.energy = reader.boolean(node["energy"], "energy");
   if (node["momentum"]) out.momentum = reader.boolean(node["momentum"], "momentum");
   if (node["sat_axes"]) out.satAxes = reader.boolean(node["sat_axes"], "sat_axes");
+}
+
+void readPanels(const YAML::Node& node, const Reader& reader, double duration, size_t variants, PanelsDef& out) {
+  out = {};
+  if (!node) {
+    if (variants >= 2) out.times = {duration};
+    return;
+  }
+  if (variants == 0)
+    reader.fail(node, "'panels' puts the variants side by side, and this scene has none; add 'variants:' or remove 'panels'");
+  if (node.IsScalar() && node.Scalar() == "impacts") {
+    out.impacts = true;
+    return;
+  }
+  if (!node.IsSequence())
+    reader.fail(node, "'panels' is a list of times in seconds, e.g. [0, 1.5], or 'impacts'; got " + describe(node));
+  for (const YAML::Node& t : node) {
+    const double time = reader.nonNegative(t, "panels");
+    if (time > duration)
+      reader.fail(t, "a panel at " + formatted(time) + " s is after the scene's duration (" + formatted(duration) +
+                         " s); give times from 0 to the duration");
+    out.times.push_back(time);
+  }
 }
 
 }  // namespace sim::yaml

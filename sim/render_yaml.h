@@ -14,4 +14,9 @@ void readTiming(const YAML::Node& node, const Reader& reader, RenderDef& out);
 // the lecture overlays of the same render: block; arrows name bodies of `scene`, read before
 void readOverlays(const YAML::Node& node, const Reader& reader, const SceneDef& scene, OverlaysDef& out);
 
+// `panels:` of the render block (`node` may be null): times within [0, duration], or `impacts`;
+// default the duration when the scene has two or more variants; asking for panels of a scene
+// without variants fails, since there is nothing to put side by side
+void readPanels(const YAML::Node& node, const Reader& reader, double duration, size_t variants, PanelsDef& out);
+
 }  // namespace sim::yaml

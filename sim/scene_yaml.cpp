@@ -116,6 +116,8 @@ class SceneReader : public Reader {
       yaml::readRender(r, *this, s.render);
       yaml::readOverlays(r, *this, s, s.render.overlays);
     }
+    const YAML::Node render = root["render"];
+    yaml::readPanels(render ? render["panels"] : render, *this, s.duration, s.variantNames.size(), s.render.panels);
     if (const YAML::Node st = root["stability"]) s.stability = readStability(st, s);
     return s;
   }

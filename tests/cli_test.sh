@@ -6,12 +6,8 @@
 # prints one "ok - ..." / "not ok - ..." line per case and "N passed, M failed"; exits 1 on any failure.
 set -u
 
-if [ $# -ne 2 ]; then
-  echo "usage: $0 <path-to-rigidreel> <project-source-dir>" >&2
-  exit 2
-fi
-BIN=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
-SRC=$(cd "$2" && pwd)
+source "$(dirname "$0")/cli_harness.sh"
+cli_setup cli-test "$@"
 SCENES=$SRC/scenes
 POLL=$SCENES/poll_bar_impulse.yaml
 if [ ! -x "$BIN" ] || [ ! -f "$POLL" ]; then
@@ -19,10 +15,8 @@ if [ ! -x "$BIN" ] || [ ! -f "$POLL" ]; then
   exit 2
 fi
 
-WORK=$(mktemp -d "${TMPDIR:-/tmp}/rigidreel-cli-test.XXXXXX") || exit 2
-trap 'rm -rf "$WORK"' EXIT
 CAP=$WORK/.captured  # stdout and stderr of the last run, outside the directory the runs write to
-mkdir "$CAP" && cd "$WORK" || exit 2
+mkdir "$CAP" || exit 2
 
 passed=0
 failed=0

@@ -7,42 +7,9 @@
 # usage: bash tests/render_cli_test.sh <path-to-rigidreel> <project-source-dir>
 set -u
 
-if [ $# -ne 2 ]; then
-  echo "usage: $0 <path-to-rigidreel> <project-source-dir>" >&2
-  exit 2
-fi
-BIN=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
-SRC=$(cd "$2" && pwd)
+source "$(dirname "$0")/cli_harness.sh"
+cli_setup render-cli-test "$@"
 POLL=$SRC/scenes/poll_bar_impulse.yaml
-WORK=$(mktemp -d "${TMPDIR:-/tmp}/rigidreel-render-test.XXXXXX") || exit 2
-trap 'rm -rf "$WORK"' EXIT
-cd "$WORK" || exit 2
-
-passed=0
-failed=0
-check() {  # check NAME CONDITION-STATUS [DETAIL]
-  if [ "$2" -eq 0 ]; then
-    echo "ok - $1"
-    passed=$((passed + 1))
-  else
-    echo "not ok - $1"
-    [ -n "${3:-}" ] && echo "#   $3"
-    echo "#   stderr: $(head -c 600 err 2>/dev/null)"
-    failed=$((failed + 1))
-  fi
-}
-run() {  # run ARGS...: sets rc; output in ./out and ./err
-  "$BIN" "$@" >out 2>err
-  rc=$?
-}
-# expect NAME CODE TEXT ARGS...: exits CODE and stderr contains TEXT
-expect() {
-  local name=$1 code=$2 text=$3
-  shift 3
-  run "$@"
-  [ "$rc" -eq "$code" ] && grep -qF -- "$text" err
-  check "$name" $? "exit $rc, expected $code with '$text'"
-}
 # no half files anywhere under the output
 no_parts() { ! find o -name '*.part*' | grep -q .; }
 probe() {  # probe FILE: codec,width,height,pix_fmt,frames
@@ -145,5 +112,4 @@ rc=$?
 [ "$rc" -eq 130 ] && grep -q interrupted err && cmp -s before.mp4 $V && no_parts
 check "Ctrl-C exits 130, keeps the previous video, leaves no half file" $? "exit $rc"
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+cli_finish

@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <string>
+#include <vector>
 
 #include "render_block.h"
 
@@ -177,7 +178,34 @@ TEST_CASE("bad arrows name the line, the column and what to write") {
   expectError("render:\n  energy: lots\n", 4, "true or false");
   try {
     (void)renderOf("render:\n  arrows:\n    - {body: b, show: velocity}\n");
+    FAIL("an arrow naming an unknown body was accepted");
   } catch (const sim::SceneError& e) {
     CHECK(std::string(e.what()).rfind("inline.yaml:5:14: no body named 'b'", 0) == 0);
   }
+}
+
+TEST_CASE("panels: the duration for two or more variants, none otherwise, or the times or impacts asked") {
+  const std::string two = "duration: 3\nvariants: {a: {}, b: {}}\n";
+  CHECK(renderOf("").panels.times.empty());
+  CHECK_FALSE(renderOf("").panels.impacts);
+  CHECK(renderOf("variants: {a: {}}\n").panels.times.empty());  // one variant: nothing to compare
+  CHECK(renderOf(two).panels.times == std::vector<double>{3.0});
+  CHECK(renderOf(two + "render: {panels: [0, 1.5, 3]}\n").panels.times == std::vector<double>{0.0, 1.5, 3.0});
+  const sim::RenderDef impacts = renderOf(two + "render: {panels: impacts}\n");
+  CHECK(impacts.panels.impacts);
+  CHECK(impacts.panels.times.empty());
+  CHECK(renderOf(two + "render: {panels: []}\n").panels.times.empty());  // explicitly none
+  // a variant may change them, and its duration moves the default
+  const std::string text = kBody + "duration: 3\nvariants: {a: {duration: 2}, b: {render: {panels: impacts}}}\n";
+  CHECK(sim::loadSceneText(text, "inline.yaml", "a").render.panels.times == std::vector<double>{2.0});
+  CHECK(sim::loadSceneText(text, "inline.yaml", "b").render.panels.impacts);
+}
+
+TEST_CASE("bad panels name the line and what to write") {
+  const std::string two = "duration: 3\nvariants: {a: {}, b: {}}\n";  // lines 3-4; render: on line 5
+  expectError("render:\n  panels: [1]\n", 4, "this scene has none");
+  expectError(two + "render:\n  panels: [1, 4]\n", 6, "after the scene's duration (3 s)");
+  expectError(two + "render:\n  panels: [-1]\n", 6, "zero or a positive");
+  expectError(two + "render:\n  panels: 1.5\n", 6, "or 'impacts'");
+  expectError(two + "render:\n  panels: impact\n", 6, "or 'impacts'");
 }

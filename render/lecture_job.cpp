@@ -1,0 +1,41 @@
+#include "lecture_job.h"
+
+#include <iostream>
+
+#include "commands.h"
+#include "output.h"
+#include "snapshots.h"
+
+namespace render {
+
+int runLectureJob(const LecturePlan& plan, const LectureOptions& options, const Wrote& wrote) {
+  VideoOptions videos;
+  videos.scene = plan.file;
+  videos.output = options.output;
+  videos.allVariants = true;
+  videos.size = options.size;
+  videos.fps = options.fps;
+  // the lecture command reports per scene; the render's own progress and summary would interleave
+  videos.quiet = true;
+  if (const int status = renderVideos(videos, wrote); status != kExitOk) return status;
+
+  const sim::PanelsDef& panels = plan.base.render.panels;
+  if (panels.times.empty() && !panels.impacts) return kExitOk;
+  SnapshotOptions stills;
+  stills.scene = plan.file;
+  stills.output = options.output;
+  stills.size = options.size;
+  stills.panels = true;
+  stills.times = panels.times;
+  stills.impacts = panels.impacts;
+  try {
+    writeSnapshots(stills, wrote);
+  } catch (const sim::Diverged& d) {
+    std::cerr << plan.file << ": the simulation diverged at t = " << timeForName(d.time)
+              << "; try a smaller step (sim: {dt: ...}) or another integrator\n";
+    return kExitFailure;
+  }
+  return kExitOk;
+}
+
+}  // namespace render

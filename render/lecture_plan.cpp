@@ -1,0 +1,64 @@
+#include "lecture_plan.h"
+
+#include <algorithm>
+#include <filesystem>
+
+#include "commands.h"
+#include "output.h"
+#include "scene_options.h"
+#include "scene_yaml.h"
+#include "survey.h"
+
+namespace render {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> lectureSceneFiles(const std::vector<std::string>& arguments) {
+  std::vector<std::string> files;
+  for (const std::string& a : arguments) {
+    std::error_code error;
+    if (fs::is_directory(a, error)) {
+      std::vector<std::string> found;
+      for (const fs::directory_entry& e : fs::directory_iterator(a, error))
+        if (e.path().extension() == ".yaml" && !e.is_directory()) found.push_back(e.path().string());
+      if (found.empty()) throw UsageError(a + ": no scene files (*.yaml) in this directory; give a directory of scenes");
+      std::sort(found.begin(), found.end());
+      files.insert(files.end(), found.begin(), found.end());
+    } else if (fs::exists(a, error)) {
+      files.push_back(a);
+    } else {
+      throw UsageError(a + ": no such file or directory; give scene files (*.yaml) or directories of them");
+    }
+  }
+  return files;
+}
+
+LecturePlan planLecture(const std::string& file) {
+  LecturePlan plan{file, sim::loadSceneFile(file), {}};
+  if (plan.base.variantNames.empty()) plan.videos.push_back(plan.base);
+  for (const std::string& v : plan.base.variantNames) plan.videos.push_back(sim::loadSceneFile(file, v));
+  for (const sim::SceneDef& def : plan.videos) (void)startWorld(def, file);
+  return plan;
+}
+
+std::vector<std::string> lectureOutputs(const LecturePlan& plan, const std::string& root) {
+  const std::string dir = (fs::path(root) / plan.base.name).string() + "/";
+  std::vector<std::string> paths;
+  for (const sim::SceneDef& def : plan.videos) {
+    paths.push_back(dir + outputBase(def) + ".mp4");
+    paths.push_back(dir + outputBase(def) + ".png");
+  }
+  // as `snapshot --panels` names them: the first variant's strobe, one image per time or impact
+  const sim::PanelsDef& panels = plan.base.render.panels;
+  const int strobe = plan.videos.front().render.strobe;
+  for (double t : panels.times) paths.push_back(dir + panelsFileName(plan.base.name, "-t" + timeForName(t), strobe));
+  if (panels.impacts) {
+    size_t most = 0;
+    for (const sim::SceneDef& def : plan.videos) most = std::max(most, surveyRun(def).impactTimes.size());
+    for (size_t i = 1; i <= most; ++i)
+      paths.push_back(dir + panelsFileName(plan.base.name, "-impact" + std::to_string(i), strobe));
+  }
+  return paths;
+}
+
+}  // namespace render

@@ -1,0 +1,112 @@
+#!/usr/bin/env bash
+# `rigidreel lecture` end to end on a small pack of copies of scenes/: one job per scene, the
+# outputs it plans (--list) are the ones it writes, the summary, `panels:` times and impacts; and
+# the errors: a missing or empty directory, a bad scene file (exit 2 before anything renders),
+# a scene failing mid-render while the others finish (exit 1, its message, the others' outputs).
+#
+# usage: bash tests/lecture_cli_test.sh <path-to-rigidreel> <project-source-dir>
+set -u
+
+source "$(dirname "$0")/cli_harness.sh"
+cli_setup lecture-cli-test "$@"
+SMALL=(--size 160x90 --fps 10)
+
+# the pack: the poll (2 variants: panels at its duration by default), the three collisions at their
+# impacts, and a scene without variants (no panels)
+mkdir pack
+cp "$SRC/scenes/poll_bar_impulse.yaml" pack/a_poll.yaml
+cp "$SRC/scenes/three_collisions_poll.yaml" pack/b_three.yaml
+printf 'render: {panels: impacts}\n' >>pack/b_three.yaml
+cp "$SRC/scenes/two_bodies.yaml" pack/c_two.yaml
+
+run lecture pack "${SMALL[@]}" -o o --list
+sort out >planned
+cat >want <<'LIST'
+o/poll_bar_impulse/poll_bar_impulse-center.mp4
+o/poll_bar_impulse/poll_bar_impulse-center.png
+o/poll_bar_impulse/poll_bar_impulse-end.mp4
+o/poll_bar_impulse/poll_bar_impulse-end.png
+o/poll_bar_impulse/poll_bar_impulse-panels-t2.png
+o/three_collisions_poll/three_collisions_poll-A.mp4
+o/three_collisions_poll/three_collisions_poll-A.png
+o/three_collisions_poll/three_collisions_poll-B.mp4
+o/three_collisions_poll/three_collisions_poll-B.png
+o/three_collisions_poll/three_collisions_poll-C.mp4
+o/three_collisions_poll/three_collisions_poll-C.png
+o/three_collisions_poll/three_collisions_poll-panels-impact1.png
+o/two_bodies/two_bodies.mp4
+o/two_bodies/two_bodies.png
+LIST
+[ "$rc" -eq 0 ] && cmp -s planned want && [ ! -e o ]
+check "--list plans each variant's video and poster and the panels, and renders nothing" $? "$(diff planned want)"
+
+run lecture pack "${SMALL[@]}" -o o -j 2
+find o -type f | sort >written
+[ "$rc" -eq 0 ] && cmp -s written want
+check "the pack writes exactly what --list planned" $? "$(diff written want)"
+[ "$(grep -c '^\[[0-9]/3\] .*: [0-9]* outputs in ' out)" -eq 3 ]
+check "one line per scene as its job ends" $?
+grep -q '^three_collisions_poll  *ok  *7  ' out && grep -q '^two_bodies  *ok  *2  ' out &&
+  grep -q '^total: 3 scenes, 14 outputs, .* s wall time (2 at a time)$' out
+check "the summary: each scene with its outputs, then the total wall time" $?
+bad_png=0
+for f in $(grep '\.png$' want); do
+  [ "$(head -c 8 "$f" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ] || bad_png=1
+done
+[ "$bad_png" -eq 0 ] &&
+  [ "$(ffprobe -v error -select_streams v:0 -show_entries stream=codec_name,width,height -of csv=p=0 o/two_bodies/two_bodies.mp4)" = "h264,160,90" ]
+check "PNGs are PNGs and videos H.264 at the size asked" $?
+! find o -name '*.part*' | grep -q .
+check "no temporary files left" $?
+
+# one scene is one job, in this process: the files it wrote, then its row
+run lecture pack/c_two.yaml "${SMALL[@]}" -o one -j 1
+[ "$rc" -eq 0 ] && grep -qx 'wrote one/two_bodies/two_bodies.mp4' out && grep -qx 'wrote one/two_bodies/two_bodies.png' out &&
+  grep -q '^two_bodies  *ok  *2 ' out
+check "a single scene runs in process and says what it wrote" $?
+
+# errors before anything renders: exit 2 with FILE:LINE:COL, nothing written
+expect "a missing directory" 2 "nope: no such file or directory" lecture nope -o o2
+mkdir empty
+expect "a directory without scenes" 2 "no scene files (*.yaml)" lecture empty -o o2
+mkdir badpack
+cp pack/a_poll.yaml pack/c_two.yaml badpack/
+printf 'render:\n  panels: [0.5, 7]\n' >>badpack/c_two.yaml
+expect "panels on a scene without variants" 2 "badpack/c_two.yaml:" lecture badpack -o o2
+grep -q "this scene has none" err && [ ! -e o2/poll_bar_impulse ]
+check "a bad scene stops the pack before any scene renders" $?
+cp pack/c_two.yaml badpack/c_two.yaml
+printf 'bodies: oops\n' >badpack/b_bad.yaml
+run lecture badpack -o o2
+[ "$rc" -eq 2 ] && grep -q "^badpack/b_bad.yaml:[0-9]*:[0-9]*: " err && [ ! -e o2/poll_bar_impulse ]
+check "a malformed scene is reported at FILE:LINE:COL, exit 2" $? "exit $rc"
+rm badpack/b_bad.yaml
+cp pack/c_two.yaml badpack/d_same.yaml
+expect "two files naming one scene" 2 "also names its scene 'two_bodies'" lecture badpack -o o2
+expect "-j 0" 2 "-j" lecture pack -j 0 -o o2
+expect "an odd size" 2 "even" lecture pack --size 161x90 -o o2
+
+# a scene failing mid-render (its ffmpeg fails) while the others finish: exit 1, its message
+mkdir fakebin
+printf '#!/bin/sh\ncase "$*" in *two_bodies*) echo "Unknown encoder libx264" >&2; exit 1;; esac\nexec %s "$@"\n' \
+  "$(command -v ffmpeg)" >fakebin/ffmpeg
+chmod +x fakebin/ffmpeg
+PATH=$WORK/fakebin:$PATH run lecture pack "${SMALL[@]}" -o o3 -j 2
+[ "$rc" -eq 1 ] && grep -q '^two_bodies  *FAILED ' out && grep -qx "failed: two_bodies (pack/c_two.yaml):" err &&
+  grep -q "^  Unknown encoder libx264" err
+check "a failing scene: exit 1, named in the summary with its message" $? "exit $rc"
+[ -f o3/poll_bar_impulse/poll_bar_impulse-panels-t2.png ] && [ -f o3/three_collisions_poll/three_collisions_poll-C.mp4 ] &&
+  [ ! -e o3/two_bodies/two_bodies.mp4 ] && ! find o3 -name '*.part*' | grep -q .
+check "the other scenes finish; the failed one leaves no half file" $?
+
+# Ctrl-C: the jobs are told too; exit 130 and no half file
+"$BIN" lecture pack --size 320x180 --fps 200 -o o4 >out 2>err &
+pid=$!
+sleep 1
+kill -INT $pid
+wait $pid
+rc=$?
+[ "$rc" -eq 130 ] && grep -q interrupted err && ! find o4 -name '*.part*' | grep -q .
+check "Ctrl-C stops the jobs: exit 130, no half file" $? "exit $rc"
+
+cli_finish
