@@ -49,6 +49,30 @@ std::vector<EnergyBar> energyBars(const sim::SceneDef& def, const sim::World& wo
   return bars;
 }
 
+double EnergyPanel::widthPx(const sim::SceneDef& def, const RunSurvey& survey, double em) {
+  const bool energy = def.render.overlays.energy, momentum = def.render.overlays.momentum;
+  // the widest texts: each bar's name with the run's largest magnitude, negative; p and L likewise
+  const double most = std::max(std::abs(survey.maxEnergy), std::abs(survey.minEnergy));
+  double energyWidth = 0.0, momentumWidth = 0.0;
+  if (energy)
+    for (EnergyBar bar : energyBars(def, sim::buildWorld(def))) {
+      bar.value = -most;
+      energyWidth = std::max(energyWidth, kBar + 0.5 + textWidth(energyText(bar)));
+    }
+  if (momentum) {
+    const double p = survey.maxLinearMomentum, l = survey.maxAngularMomentum;
+    momentumWidth = std::max(textWidth(vectorText("p", {-p, -p}, "kg·m/s")), textWidth(quantityText("L", -l, "kg·m²/s")));
+  }
+  return (2.0 * kPad + std::max(energyWidth, momentumWidth)) * em;
+}
+
+double EnergyPanel::bandPx(const sim::SceneDef& def, const RunSurvey& survey, int heightPx) {
+  const sim::OverlaysDef& o = def.render.overlays;
+  if (!o.energy && !o.momentum) return 0.0;
+  const double em = fontSizeFor(def.render, heightPx);
+  return widthPx(def, survey, em) + 2.0 * kInset * em;
+}
+
 EnergyPanel::EnergyPanel(const sim::SceneDef& def, const Camera& camera, const RunSurvey& survey)
     : def_(def),
       camera_(camera),
@@ -57,19 +81,7 @@ EnergyPanel::EnergyPanel(const sim::SceneDef& def, const Camera& camera, const R
       lowest_(std::min(0.0, survey.minEnergy)),
       span_(std::max(0.0, survey.maxEnergy) - std::min(0.0, survey.minEnergy)),
       em_(fontSizeFor(def.render, camera.heightPx())) {
-  // the widest texts: each bar's name with the run's largest magnitude, negative; p and L likewise
-  const double most = std::max(std::abs(survey.maxEnergy), std::abs(survey.minEnergy));
-  double energyWidth = 0.0, momentumWidth = 0.0;
-  if (energy_)
-    for (EnergyBar bar : energyBars(def, sim::buildWorld(def))) {
-      bar.value = -most;
-      energyWidth = std::max(energyWidth, kBar + 0.5 + textWidth(energyText(bar)));
-    }
-  if (momentum_) {
-    const double p = survey.maxLinearMomentum, l = survey.maxAngularMomentum;
-    momentumWidth = std::max(textWidth(vectorText("p", {-p, -p}, "kg·m/s")), textWidth(quantityText("L", -l, "kg·m²/s")));
-  }
-  width_ = (2.0 * kPad + std::max(energyWidth, momentumWidth)) * em_;
+  width_ = widthPx(def, survey, em_);
   left_ = camera.widthPx() - kInset * em_ - width_;
   barLeft_ = left_ + kPad * em_;
   textLeft_ = barLeft_ + (kBar + 0.5) * em_;

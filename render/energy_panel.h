@@ -29,8 +29,13 @@ class EnergyPanel {
  public:
   EnergyPanel(const sim::SceneDef& def, const Camera& camera, const RunSurvey& survey);
   void draw(const sim::World& world, sim::DebugDraw& draw) const;
+  // the width of the frame's right-hand band the panel takes, insets included (0 without a panel),
+  // px: the automatic camera keeps the bodies out of it
+  static double bandPx(const sim::SceneDef& def, const RunSurvey& survey, int heightPx);
 
  private:
+  // the panel's width at text size `em` px, from its widest texts over the run
+  static double widthPx(const sim::SceneDef& def, const RunSurvey& survey, double em);
   // a pixel of the frame in world coordinates
   Vec2 at(double xPx, double yPx) const { return camera_.toWorld({xPx, yPx}); }
 

@@ -86,7 +86,7 @@ void writeSnapshots(const SnapshotOptions& o, const Wrote& wrote) {
       const Variant& v = variants[i];
       const double t = instants[shot][i];
       // a fresh run per picture: the strobe ghosts and the trails start from t = 0
-      SceneRun run(v.def, cameraFor(v.def, bounds), v.survey, &gl, &text);
+      SceneRun run(v.def, cameraFor(v.def, v.survey, bounds), v.survey, &gl, &text);
       frames.push_back(run.frameAt(t, strobe));
       // "A: center", or just "A" for a variant named A
       std::string title = panelLetter(i);

@@ -97,16 +97,24 @@ double arrowScale(double given, double largest, const Camera& camera) {
   return largest > 0.0 ? kArrowFraction * camera.worldHeight() / largest : 1.0;
 }
 
-Camera cameraFor(const sim::SceneDef& def, const Bounds& bounds) {
+Camera cameraFor(const sim::SceneDef& def, const RunSurvey& survey) { return cameraFor(def, survey, survey.bounds); }
+
+Camera cameraFor(const sim::SceneDef& def, const RunSurvey& survey, const Bounds& bounds) {
   const sim::RenderDef& r = def.render;
   if (!r.camera.automatic) return Camera(r.camera.center, r.camera.height, r.width, r.height);
-  // with a caption the bodies are fitted above its band, so that it never covers them
+  // with a caption the bodies are fitted above its band, and with an energy panel left of it, so
+  // that neither ever covers them
   const double band = captionOf(def).empty() ? 0.0 : captionLayout(fontSizeFor(r, r.height)).band();
   const int above = static_cast<int>(std::lround(r.height - band));
-  const Camera fitted = Camera::fit(bounds, r.camera.margin, r.width, above);
-  if (above == r.height) return fitted;
+  // (a panel wider than half a small frame is drawn over the bodies instead: they need the room more)
+  const double panel = EnergyPanel::bandPx(def, survey, r.height);
+  const int left = static_cast<int>(std::lround(panel <= 0.5 * r.width ? r.width - panel : r.width));
+  const Camera fitted = Camera::fit(bounds, r.camera.margin, left, above);
+  if (above == r.height && left == r.width) return fitted;
+  // the same scale over the whole frame, the fitted region's center moved to the middle of the free part
   const double px = fitted.pixelSize();
-  return Camera(fitted.center() - Vec2(0.0, 0.5 * (r.height - above) * px), px * r.height, r.width, r.height);
+  const Vec2 shift(0.5 * (r.width - left) * px, -0.5 * (r.height - above) * px);
+  return Camera(fitted.center() + shift, px * r.height, r.width, r.height);
 }
 
 std::vector<double> impactTimes(const sim::World& world) {

@@ -38,9 +38,10 @@ Bounds bodyBounds(const sim::Body& body);
 // the view's height (1 when there is nothing to scale)
 double arrowScale(double given, double largest, const Camera& camera);
 
-// the scene's camera: its fixed one, or fitted over `bounds` with its margin (above the caption's band
-// when it has a caption)
-Camera cameraFor(const sim::SceneDef& def, const Bounds& bounds);
+// the scene's camera: its fixed one, or fitted over `bounds` (the survey's own by default) with its
+// margin, above the caption's band when it has a caption and left of the energy panel's when it has one
+Camera cameraFor(const sim::SceneDef& def, const RunSurvey& survey);
+Camera cameraFor(const sim::SceneDef& def, const RunSurvey& survey, const Bounds& bounds);
 
 // the times at which the world's collision response applied impulses so far, ascending, each once
 std::vector<double> impactTimes(const sim::World& world);

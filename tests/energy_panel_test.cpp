@@ -25,7 +25,7 @@ DrawList panelAt(const std::string& yaml, render::Camera* cameraOut = nullptr, r
   const sim::SceneDef def = sim::loadSceneText(yaml, "inline.yaml");
   const render::RunSurvey survey = render::surveyRun(def);
   if (surveyOut) *surveyOut = survey;
-  const render::Camera camera = render::cameraFor(def, survey.bounds);
+  const render::Camera camera = render::cameraFor(def, survey);
   if (cameraOut) *cameraOut = camera;
   DrawList list;
   render::EnergyPanel(def, camera, survey).draw(sim::buildWorld(def), list);

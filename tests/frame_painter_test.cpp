@@ -2,6 +2,9 @@
 // here and not in the state hash is a change in what is shown, not in the physics.
 #include <doctest/doctest.h>
 
+#include <cmath>
+
+#include "energy_panel.h"
 #include "scene_run.h"
 #include "scene_yaml.h"
 
@@ -24,7 +27,7 @@ render: {velocities: true, trails: true, size: [320, 180]}
 render::DrawList frameAt(const std::string& yaml, double t, int strobe = 0) {
   const sim::SceneDef def = sim::loadSceneText(yaml, "inline.yaml");
   const render::RunSurvey survey = render::surveyRun(def);
-  const render::Camera camera = render::cameraFor(def, survey.bounds);
+  const render::Camera camera = render::cameraFor(def, survey);
   render::SceneRun run(def, camera, survey);
   return run.drawListAt(t, strobe);
 }
@@ -139,7 +142,7 @@ TEST_CASE("the caption: wrapped at the bottom left, at most two lines; the slow-
       "         slow_motion: {factor: 4, from: 0.2, to: 0.4}}\n";
   const sim::SceneDef def = sim::loadSceneText(text, "inline.yaml");
   const render::RunSurvey survey = render::surveyRun(def);
-  render::SceneRun run(def, render::cameraFor(def, survey.bounds), survey);
+  render::SceneRun run(def, render::cameraFor(def, survey), survey);
   const render::TimeMap map = render::timeMapFor(def.render, survey.impactTimes, def.duration);
   run.showSlowMotion(&map);
   const auto lines = run.drawListAt(0.3).lines();
@@ -151,7 +154,7 @@ TEST_CASE("the caption: wrapped at the bottom left, at most two lines; the slow-
   CHECK(lines[5] == "text Caption (-1.545,-0.705) \"second, past the origin and on.\"");
   // outside the window, and in snapshots (no map), no note
   CHECK(run.drawListAt(0.5).lines().size() == 5);
-  render::SceneRun snapshot(def, render::cameraFor(def, survey.bounds), survey);
+  render::SceneRun snapshot(def, render::cameraFor(def, survey), survey);
   CHECK(snapshot.drawListAt(0.3).lines().size() == 5);
 }
 
@@ -168,13 +171,36 @@ TEST_CASE("with a caption the automatic camera fits the bodies above its band, a
       "render: {size: [320, 180], camera: {margin: 0}}\n";
   const sim::SceneDef plain = sim::loadSceneText(scene, "inline.yaml");
   const render::RunSurvey survey = render::surveyRun(plain);
-  const render::Camera before = render::cameraFor(plain, survey.bounds);
+  const render::Camera before = render::cameraFor(plain, survey);
   CHECK(before.worldHeight() == doctest::Approx(2.0));
   CHECK(before.toPixel({0, -1}).y() == doctest::Approx(180.0));
   std::string captioned = scene;
   captioned.replace(captioned.find("margin: 0}"), 10, "margin: 0}, caption: true");
-  const render::Camera after = render::cameraFor(sim::loadSceneText(captioned, "inline.yaml"), survey.bounds);
+  const render::Camera after = render::cameraFor(sim::loadSceneText(captioned, "inline.yaml"), survey);
   // 11 px text: a band of 5.5 + 2 × 14 px; the ball fills the 147 px above it (whole pixels)
   CHECK(after.toPixel({0, 1}).y() == doctest::Approx(0.0));
   CHECK(after.toPixel({0, -1}).y() == doctest::Approx(147.0));
+}
+
+TEST_CASE("with an energy panel the automatic camera fits the bodies left of its band") {
+  const std::string scene =
+      "bodies:\n"
+      "  - {name: ball, shape: {circle: 1}, velocity: [0, 0.001]}\n"
+      "render: {size: [640, 180], camera: {margin: 0}, energy: true}\n";
+  const sim::SceneDef def = sim::loadSceneText(scene, "inline.yaml");
+  const render::RunSurvey survey = render::surveyRun(def);
+  const double band = render::EnergyPanel::bandPx(def, survey, 180);
+  // a real panel, narrower than the frame
+  REQUIRE(band > 50.0);
+  REQUIRE(band < 640.0 - 180.0);
+  const render::Camera camera = render::cameraFor(def, survey);
+  // the ball is fitted by its height (the free part is wider than tall), centered in the free part;
+  // its rightmost point stays left of the panel
+  CHECK(camera.worldHeight() == doctest::Approx(2.0).epsilon(1e-3));
+  CHECK(camera.toPixel({0, 0}).x() == doctest::Approx(0.5 * std::lround(640 - band)).epsilon(1e-9));
+  CHECK(camera.toPixel({1, 0}).x() < 640.0 - band);
+  // without the panel the ball is in the middle of the frame
+  sim::SceneDef plain = def;
+  plain.render.overlays.energy = false;
+  CHECK(render::cameraFor(plain, survey).toPixel({0, 0}).x() == doctest::Approx(320.0));
 }

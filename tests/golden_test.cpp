@@ -30,7 +30,7 @@ struct InlineRun {
       : def(sim::loadSceneText(yaml, "inline.yaml", variant)),
         survey(render::surveyRun(def)),
         gl(def.render.width, def.render.height),
-        run(def, render::cameraFor(def, survey.bounds), survey, &gl, &text) {}
+        run(def, render::cameraFor(def, survey), survey, &gl, &text) {}
   const sim::SceneDef def;
   const render::RunSurvey survey;
   render::GlContext gl;
@@ -174,7 +174,7 @@ TEST_CASE("golden: the poll panel, A | B at the same instant") {
   render::TextRenderer text;
   std::vector<Image> frames;
   for (size_t i = 0; i < defs.size(); ++i) {
-    render::SceneRun run(defs[i], render::cameraFor(defs[i], bounds), surveys[i], &gl, &text);
+    render::SceneRun run(defs[i], render::cameraFor(defs[i], surveys[i], bounds), surveys[i], &gl, &text);
     frames.push_back(run.frameAt(1.5));
   }
   const render::Style style = render::makeStyle(defs[0], 180);
@@ -234,7 +234,7 @@ TEST_CASE("the same scene rendered twice gives byte-identical PNGs and the same 
   std::vector<std::vector<uint8_t>> pngs;
   std::vector<unsigned long long> hashes;
   for (int run = 0; run < 2; ++run) {
-    render::SceneRun r(def, render::cameraFor(def, survey.bounds), survey, &gl, &text);
+    render::SceneRun r(def, render::cameraFor(def, survey), survey, &gl, &text);
     pngs.push_back(render::encodePng(r.frameAt(0.75)));
     pngs.push_back(render::encodePng(r.frameAt(1.25)));
     hashes.push_back(sim::stateHash(r.world()));

@@ -24,7 +24,7 @@ render: {size: [320, 180], impact_values: true}
 std::vector<std::string> textsAt(double t, sim::World* worldOut = nullptr) {
   const sim::SceneDef def = sim::loadSceneText(kDrop, "inline.yaml");
   const render::RunSurvey survey = render::surveyRun(def);
-  render::SceneRun run(def, render::cameraFor(def, survey.bounds), survey);
+  render::SceneRun run(def, render::cameraFor(def, survey), survey);
   const DrawList list = run.drawListAt(t);
   if (worldOut) *worldOut = run.world();
   std::vector<std::string> out;

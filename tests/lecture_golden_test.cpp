@@ -1,5 +1,5 @@
 // A golden frame of each lecture scene (scenes/lecture/*.yaml): its first variant (or the scene
-// itself) at half its duration, drawn 320 × 180, against tests/golden/lecture/<scene>.png. Half
+// itself) at half its duration, drawn 640 × 360, against tests/golden/lecture/<scene>.png. Half
 // the duration shows each scene's idea under way: the held impacts, the overlays, the failures.
 #include <doctest/doctest.h>
 
@@ -16,8 +16,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// the frame size of the golden images, pixels
-constexpr int kWidth = 320, kHeight = 180;
+// the frame size of the golden images, pixels: large enough for the overlays' text (11 px at least)
+// to leave the bodies room beside the energy panel
+constexpr int kWidth = 640, kHeight = 360;
 
 std::vector<fs::path> lectureScenes() {
   std::vector<fs::path> files;
@@ -43,7 +44,7 @@ TEST_CASE("golden: a frame of every lecture scene at half its duration") {
     def.render.width = kWidth;
     def.render.height = kHeight;
     const render::RunSurvey survey = render::surveyRun(def);
-    render::SceneRun run(def, render::cameraFor(def, survey.bounds), survey, &gl, &text);
+    render::SceneRun run(def, render::cameraFor(def, survey), survey, &gl, &text);
     golden::checkGolden("lecture/" + file.stem().string(), run.frameAt(0.5 * def.duration));
   }
 }

@@ -41,7 +41,7 @@ TEST_CASE("frames come in order, one per k / fps, and the run ends at the last o
   const render::RunSurvey survey = render::surveyRun(def);
   render::GlContext gl(64, 48);
   render::TextRenderer text;
-  render::SceneRun run(def, render::cameraFor(def, survey.bounds), survey, &gl, &text);
+  render::SceneRun run(def, render::cameraFor(def, survey), survey, &gl, &text);
   Collect sink;
   long reported = 0;
   render::record(run, render::TimeMap(0.5), 10.0, {&sink}, [&](long done) { reported = done; });
@@ -57,7 +57,7 @@ TEST_CASE("a sink that fails stops the recording with its error") {
   const render::RunSurvey survey = render::surveyRun(def);
   render::GlContext gl(64, 48);
   render::TextRenderer text;
-  render::SceneRun run(def, render::cameraFor(def, survey.bounds), survey, &gl, &text);
+  render::SceneRun run(def, render::cameraFor(def, survey), survey, &gl, &text);
   Fail sink;
   CHECK_THROWS_WITH_AS(render::record(run, render::TimeMap(6.0), 10.0, {&sink}), "disk full", std::runtime_error);
   CHECK(run.world().time < 1.0);
@@ -87,7 +87,7 @@ TEST_CASE("a title card opens the video, painted once and held; slow motion stre
   const render::TimeMap map = render::timeMapFor(def.render, survey.impactTimes, def.duration);
   render::GlContext gl(64, 48);
   render::TextRenderer text;
-  render::SceneRun run(def, render::cameraFor(def, survey.bounds), survey, &gl, &text);
+  render::SceneRun run(def, render::cameraFor(def, survey), survey, &gl, &text);
   Collect sink;
   render::record(run, map, 10.0, {&sink});
   REQUIRE(sink.indices.size() == 14);

@@ -43,7 +43,7 @@ struct Drawn {
 Drawn arrowsAt(const std::string& entries, double t = 0.0) {
   Drawn d{sim::loadSceneText(kScene + entries, "inline.yaml"), {}, {}, {}};
   d.survey = render::surveyRun(d.def);
-  const render::Camera camera = render::cameraFor(d.def, d.survey.bounds);
+  const render::Camera camera = render::cameraFor(d.def, d.survey);
   const render::TeachingArrows arrows(d.def, camera, d.survey, 1.0);
   d.world = sim::buildWorld(d.def);
   render::History::Options o;
