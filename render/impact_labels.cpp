@@ -1,5 +1,7 @@
 #include "impact_labels.h"
 
+#include <cmath>
+
 #include "label_place.h"
 #include "quantity_text.h"
 
@@ -17,10 +19,13 @@ void ImpactLabels::impact(const sim::World& world, const sim::ImpactRecord& r, b
   if (!world.bodies[r.a].isStatic && j.norm() > 0.0) draw.text(labelBeyond(r.point + j, along, "j", em_), "j", style);
   if (!world.bodies[r.b].isStatic && j.norm() > 0.0) draw.text(labelBeyond(r.point - j, -along, "j", em_), "j", style);
   if (!first) return;
-  draw.text(labelBeyond(r.point + normalLength_ * n, n, "n̂", em_), "n̂", style);
-  // the velocities on the side away from the normal's arrow, where nothing else is written
+  // across the normal, not along it: along it lie the impulse arrows and the bodies themselves. The
+  // velocities go below the contact (right of it on a floor), leaning a little into the moving body's
+  // side so as not to sit on an obstacle's edge; n̂ beside the normal's head, across
+  const Vec2 across = std::abs(n.x()) < 1e-9 ? Vec2(1, 0) : (n.x() > 0.0 ? Vec2(n.y(), -n.x()) : Vec2(-n.y(), n.x()));
+  draw.text(labelBeyond(r.point + normalLength_ * n, -across, "n̂", em_), "n̂", style);
   const std::string v = velocitiesText(r.vnBefore, r.vnAfter);
-  draw.text(labelBeyond(r.point, -n, v, em_), v, style);
+  draw.text(labelBeyond(r.point, across, v, em_) + 0.6 * em_ * n, v, style);
 }
 
 void ImpactLabels::event(const sim::ImpulseEvent& e, const Vec2& tail, const Vec2& head, sim::DebugDraw& draw) const {
