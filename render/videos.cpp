@@ -70,7 +70,7 @@ void renderOne(const VideoOptions& o, const sim::SceneDef& def, const Wrote& wro
   // the title card, then `duration` stretched by the slow-motion windows (exactly `duration` without)
   const TimeMap map = timeMapFor(def.render, survey.impactTimes, duration);
   const long count = map.frameCount(fps);
-  const Camera camera = cameraFor(def, survey.bounds);
+  const Camera camera = cameraFor(def, survey);
   GlContext gl(def.render.width, def.render.height);
   TextRenderer text;
   SceneRun run(def, camera, survey, &gl, &text);
