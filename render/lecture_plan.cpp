@@ -33,11 +33,35 @@ std::vector<std::string> lectureSceneFiles(const std::vector<std::string>& argum
   return files;
 }
 
+namespace {
+
+// the poll panels must exist for every variant, or the pack would fail after its videos: the default
+// time is the shortest variant's duration; with `impacts`, every variant must have one (times asked
+// for are checked against each variant's duration when the variant is read)
+void checkPanels(LecturePlan& plan) {
+  sim::PanelsDef& panels = plan.base.render.panels;
+  const bool defaulted = panels.line == 0;
+  auto fail = [&](const std::string& message) {
+    throw sim::SceneError(plan.file, panels.line, panels.column, message);
+  };
+  double shortest = plan.base.duration;
+  for (const sim::SceneDef& def : plan.videos) shortest = std::min(shortest, def.duration);
+  if (defaulted && !panels.times.empty()) panels.times = {shortest};
+  if (panels.impacts)
+    for (const sim::SceneDef& def : plan.videos)
+      if (surveyRun(def).impactTimes.empty())
+        fail("'panels: impacts' needs an impact in every variant, and variant '" + def.variant +
+             "' has none; give panel times instead, e.g. [0, " + timeForName(def.duration) + "]");
+}
+
+}  // namespace
+
 LecturePlan planLecture(const std::string& file) {
   LecturePlan plan{file, sim::loadSceneFile(file), {}};
   if (plan.base.variantNames.empty()) plan.videos.push_back(plan.base);
   for (const std::string& v : plan.base.variantNames) plan.videos.push_back(sim::loadSceneFile(file, v));
   for (const sim::SceneDef& def : plan.videos) (void)startWorld(def, file);
+  checkPanels(plan);
   return plan;
 }
 

@@ -87,6 +87,7 @@ struct SlowMotionDef {
 struct PanelsDef {
   std::vector<double> times;  // s
   bool impacts = false;
+  int line = 0, column = 0;   // where `panels:` is written (1-based); 0 when it is the default
 };
 
 struct RenderDef {

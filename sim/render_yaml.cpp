@@ -182,6 +182,8 @@ void readPanels(const YAML::Node& node, const Reader& reader, double duration, s
     if (variants >= 2) out.times = {duration};
     return;
   }
+  out.line = node.Mark().line + 1;
+  out.column = node.Mark().column + 1;
   if (variants == 0)
     reader.fail(node, "'panels' puts the variants side by side, and this scene has none; add 'variants:' or remove 'panels'");
   if (node.IsScalar() && node.Scalar() == "impacts") {

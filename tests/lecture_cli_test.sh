@@ -109,4 +109,29 @@ rc=$?
 [ "$rc" -eq 130 ] && grep -q interrupted err && ! find o4 -name '*.part*' | grep -q .
 check "Ctrl-C stops the jobs: exit 130, no half file" $? "exit $rc"
 
+# panels that a variant cannot have: found before anything renders. A variant shorter than the scene
+# moves the default panel to the shortest duration; an asked time beyond it, or `impacts` where a
+# variant has none, is bad input at the `panels:` line
+mkdir short
+cat >short/s.yaml <<'YAML'
+name: short
+duration: 1
+bodies:
+  - {name: box, shape: {box: [1, 1]}, velocity: [1, 0]}
+variants:
+  long: {}
+  brief: {duration: 0.5}
+YAML
+run lecture short/s.yaml "${SMALL[@]}" -o so --list
+grep -qx 'so/short/short-panels-t0.5.png' out
+check "the default panel is at the shortest variant's duration" $? "$(cat out)"
+printf 'render: {panels: [0.8]}\n' >>short/s.yaml
+expect "a panel after a variant's duration: exit 2 at the panels line, nothing rendered" 2 \
+  "short/s.yaml:8:19: a panel at 0.8 s is after the scene's duration (0.5 s)" lecture short/s.yaml "${SMALL[@]}" -o so
+[ ! -e so ]
+check "nothing written for a scene whose panels cannot be drawn" $?
+sed -i 's/panels: \[0.8\]/panels: impacts/' short/s.yaml
+expect "panels at impacts where a variant has none: exit 2" 2 "'panels: impacts' needs an impact in every variant" \
+  lecture short/s.yaml "${SMALL[@]}" -o so
+
 cli_finish
