@@ -21,8 +21,9 @@ events:
 render: {size: [320, 180], impact_values: true}
 )";
 
-std::vector<std::string> textsAt(double t, sim::World* worldOut = nullptr) {
-  const sim::SceneDef def = sim::loadSceneText(kDrop, "inline.yaml");
+std::vector<std::string> textsAt(double t, sim::World* worldOut = nullptr, bool impactValues = true) {
+  sim::SceneDef def = sim::loadSceneText(kDrop, "inline.yaml");
+  def.render.overlays.impactValues = impactValues;
   const render::RunSurvey survey = render::surveyRun(def);
   render::SceneRun run(def, render::cameraFor(def, survey), survey);
   const DrawList list = run.drawListAt(t);
@@ -59,5 +60,10 @@ TEST_CASE("after the impact the afterimage says n̂, j and v_n⁻ → v_n⁺ = �
 
 TEST_CASE("an event's impulse is labeled with its value; without impact_values nothing is") {
   CHECK(has(textsAt(0.7), "j = 1.00 N·s"));
+  // before the event there is nothing to label; with the overlay off, nothing after it either
   CHECK_FALSE(has(textsAt(0.2), "j = 1.00 N·s"));
+  const std::vector<std::string> off = textsAt(0.7, nullptr, false);
+  CHECK_FALSE(has(off, "j = 1.00 N·s"));
+  CHECK_FALSE(has(off, "v_n⁻ = −2.00 m/s → v_n⁺ = 1.00 m/s"));
+  CHECK_FALSE(has(off, "n̂"));
 }

@@ -63,6 +63,20 @@ TEST_CASE("never more than N jobs run at once, and one at a time runs them in or
   fs::remove_all(dir);
 }
 
+TEST_CASE("two at a time runs two at once") {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("job_runner_pair." + std::to_string(::getpid()));
+  const std::string slots = (dir / "slots").string();
+  fs::create_directories(slots);
+  // each job holds a slot and waits (up to 10 s) for the other to hold one: only jobs that run at
+  // the same time both see 2; run one after the other, each would give up and see 1
+  const std::string job = "mkdir " + slots + "/$$; for i in $(seq 200); do [ $(ls " + slots +
+                          " | wc -l) -ge 2 ] && break; sleep 0.05; done; ls " + slots + " | wc -l; sleep 0.1; rmdir " +
+                          slots + "/$$";
+  for (const render::JobResult& r : runAll({shell(job), shell(job)}, 2)) CHECK(std::stoul(r.output) == 2);
+  fs::remove_all(dir);
+}
+
 TEST_CASE("a command that cannot start is a failed job that says so") {
   const auto results = runAll({{"/nonexistent/rigidreel-nothing"}, shell("true")}, 1);
   REQUIRE(results.size() == 2);
