@@ -32,11 +32,17 @@ struct LectureCommand : LectureOptions {
 
 double since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-// this program, to start the jobs with: /proc/self/exe survives a relative argv[0] and a changed PATH
+// this program, to start the jobs with: /proc/self/exe survives a relative argv[0] and a changed PATH.
+// A rebuild during the run replaces the file, and the link then reads "<path> (deleted)": the jobs
+// start the new file at the same path
 std::string selfPath() {
   std::error_code error;
-  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
-  return error ? "rigidreel" : self.string();
+  std::string self = std::filesystem::read_symlink("/proc/self/exe", error).string();
+  if (error) return "rigidreel";
+  const std::string deleted = " (deleted)";
+  if (self.size() > deleted.size() && self.compare(self.size() - deleted.size(), deleted.size(), deleted) == 0)
+    self.resize(self.size() - deleted.size());
+  return self;
 }
 
 // the job's command line: the same options, -j 1, on one scene

@@ -8,7 +8,7 @@
 namespace render {
 
 struct Interrupted : std::runtime_error {
-  Interrupted() : std::runtime_error("interrupted; nothing was written") {}
+  Interrupted() : std::runtime_error("interrupted; what was being written is removed, finished files are kept") {}
 };
 
 // from now on SIGINT and SIGTERM raise the flag instead of ending the process
