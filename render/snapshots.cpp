@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "commands.h"
+#include "energy_panel.h"
 #include "output.h"
 #include "panels.h"
 #include "png_io.h"
@@ -73,9 +74,16 @@ void writeSnapshots(const SnapshotOptions& o, const Wrote& wrote) {
     }
   }
 
-  // one camera for all panels, so that the variants compare at the same scale
+  // one camera for all panels, so that the variants compare at the same scale: over every variant's
+  // run, beside the widest energy panel among them
   Bounds bounds;
-  for (const Variant& v : variants) bounds.add(v.survey.bounds);
+  const Variant* widest = &variants.front();
+  for (const Variant& v : variants) {
+    bounds.add(v.survey.bounds);
+    const auto band = [](const Variant& x) { return EnergyPanel::bandPx(x.def, x.survey, x.def.render.height); };
+    if (band(v) > band(*widest)) widest = &v;
+  }
+  const Camera camera = cameraFor(widest->def, widest->survey, bounds);
   const std::string dir = outputDirectory(o.output, first.name);
   GlContext gl(first.render.width, first.render.height);
   TextRenderer text;
@@ -86,7 +94,7 @@ void writeSnapshots(const SnapshotOptions& o, const Wrote& wrote) {
       const Variant& v = variants[i];
       const double t = instants[shot][i];
       // a fresh run per picture: the strobe ghosts and the trails start from t = 0
-      SceneRun run(v.def, cameraFor(v.def, v.survey, bounds), v.survey, &gl, &text);
+      SceneRun run(v.def, camera, v.survey, &gl, &text);
       frames.push_back(run.frameAt(t, strobe));
       // "A: center", or just "A" for a variant named A
       std::string title = panelLetter(i);
