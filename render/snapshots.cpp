@@ -44,6 +44,12 @@ void writeSnapshots(const SnapshotOptions& o, const Wrote& wrote) {
     v.survey = surveyRun(v.def);
     variants.push_back(std::move(v));
   }
+  // side by side, the variants' arrows and energy bars are drawn at one scale too
+  if (o.panels) {
+    std::vector<RunSurvey*> surveys;
+    for (Variant& v : variants) surveys.push_back(&v.survey);
+    shareScales(surveys);
+  }
   const sim::SceneDef& first = variants.front().def;
   const int strobe = o.strobe.value_or(first.render.strobe);
 

@@ -117,6 +117,28 @@ Camera cameraFor(const sim::SceneDef& def, const RunSurvey& survey, const Bounds
   return Camera(fitted.center() + shift, px * r.height, r.width, r.height);
 }
 
+void shareScales(const std::vector<RunSurvey*>& surveys) {
+  if (surveys.empty()) return;
+  RunSurvey all = *surveys.front();
+  for (const RunSurvey* s : surveys) {
+    all.maxSpeed = std::max(all.maxSpeed, s->maxSpeed);
+    all.maxImpulse = std::max(all.maxImpulse, s->maxImpulse);
+    all.maxOmega = std::max(all.maxOmega, s->maxOmega);
+    all.maxForce = std::max(all.maxForce, s->maxForce);
+    all.maxTorque = std::max(all.maxTorque, s->maxTorque);
+    all.maxMomentum = std::max(all.maxMomentum, s->maxMomentum);
+    all.minEnergy = std::min(all.minEnergy, s->minEnergy);
+    all.maxEnergy = std::max(all.maxEnergy, s->maxEnergy);
+    all.maxLinearMomentum = std::max(all.maxLinearMomentum, s->maxLinearMomentum);
+    all.maxAngularMomentum = std::max(all.maxAngularMomentum, s->maxAngularMomentum);
+  }
+  for (RunSurvey* s : surveys) {
+    all.bounds = s->bounds;
+    all.impactTimes = s->impactTimes;
+    *s = all;
+  }
+}
+
 std::vector<double> impactTimes(const sim::World& world) {
   // impacts closer than this are one instant (several points of one manifold, simultaneous hits)
   constexpr double kSameInstant = 1e-9;

@@ -31,6 +31,10 @@ RunSurvey surveyRun(const sim::SceneDef& def, double until = -1.0);
 // the overlays' extremes of the world now, added into `out` (by surveyRun after every step)
 void surveyOverlays(const sim::SceneDef& def, const sim::World& world, RunSurvey& out);
 
+// every survey's arrow and bar scales (not its bounds or impacts) set to the extremes over all of
+// them, so that side-by-side pictures of variants compare at one scale
+void shareScales(const std::vector<RunSurvey*>& surveys);
+
 // the region a body's shape covers now (its position alone for shapes without an extent)
 Bounds bodyBounds(const sim::Body& body);
 
