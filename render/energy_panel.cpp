@@ -31,21 +31,33 @@ std::string angularText(const sim::World& world) { return quantityText("L", sim:
 
 }  // namespace
 
-std::vector<EnergyBar> energyBars(const sim::SceneDef& def, const sim::World& world) {
-  std::vector<EnergyBar> bars;
-  for (size_t i = 0; i < world.bodies.size(); ++i) {
-    const sim::Body& b = world.bodies[i];
+std::vector<double> energyValues(const sim::World& world) {
+  std::vector<double> values;
+  for (const sim::Body& b : world.bodies) {
     if (b.isStatic) continue;
-    const std::string& name = def.bodies[i].label.empty() ? def.bodies[i].name : def.bodies[i].label;
     const sim::KineticEnergy k = sim::kineticEnergy(b);
-    bars.push_back({name + " ½mv²", k.translational, DrawRole::KineticBar, static_cast<int>(i)});
-    bars.push_back({name + " ½Iω²", k.rotational, DrawRole::RotationalBar, static_cast<int>(i)});
+    values.push_back(k.translational);
+    values.push_back(k.rotational);
   }
   const sim::Energy e = sim::energy(world);
   // gravity or a spring: the scene has a potential energy (its zero is the world origin, as in `check`)
-  if (world.forces.gravity != Vec2::Zero() || !world.forces.springs.empty())
-    bars.push_back({"U", e.potential, DrawRole::PotentialBar, -1});
-  bars.push_back({"E", e.total(), DrawRole::TotalBar, -1});
+  if (world.forces.gravity != Vec2::Zero() || !world.forces.springs.empty()) values.push_back(e.potential);
+  values.push_back(e.total());
+  return values;
+}
+
+std::vector<EnergyBar> energyBars(const sim::SceneDef& def, const sim::World& world) {
+  const std::vector<double> values = energyValues(world);
+  std::vector<EnergyBar> bars;
+  // the names and roles in energyValues' order: two bars per moving body, then U when there is one, E
+  for (size_t i = 0; i < world.bodies.size(); ++i) {
+    if (world.bodies[i].isStatic) continue;
+    const std::string& name = def.bodies[i].label.empty() ? def.bodies[i].name : def.bodies[i].label;
+    bars.push_back({name + " ½mv²", values[bars.size()], DrawRole::KineticBar, static_cast<int>(i)});
+    bars.push_back({name + " ½Iω²", values[bars.size()], DrawRole::RotationalBar, static_cast<int>(i)});
+  }
+  if (bars.size() + 2 == values.size()) bars.push_back({"U", values[bars.size()], DrawRole::PotentialBar, -1});
+  bars.push_back({"E", values.back(), DrawRole::TotalBar, -1});
   return bars;
 }
 

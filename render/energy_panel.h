@@ -22,6 +22,8 @@ struct EnergyBar {
   int body = -1;
 };
 
+// the bars' values now, in the order drawn, without their names (the survey takes them every step)
+std::vector<double> energyValues(const sim::World& world);
 // the panel's bars at the world's present state, in the order drawn
 std::vector<EnergyBar> energyBars(const sim::SceneDef& def, const sim::World& world);
 

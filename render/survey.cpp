@@ -80,9 +80,9 @@ void surveyOverlays(const sim::SceneDef& def, const sim::World& world, RunSurvey
   // the panel's values cost a pass over the bodies: only for scenes that show it
   const sim::OverlaysDef& o = def.render.overlays;
   if (o.energy)
-    for (const EnergyBar& bar : energyBars(def, world)) {
-      out.minEnergy = std::min(out.minEnergy, bar.value);
-      out.maxEnergy = std::max(out.maxEnergy, bar.value);
+    for (double value : energyValues(world)) {
+      out.minEnergy = std::min(out.minEnergy, value);
+      out.maxEnergy = std::max(out.maxEnergy, value);
     }
   if (o.momentum) {
     out.maxLinearMomentum = std::max(out.maxLinearMomentum, sim::linearMomentum(world).norm());
