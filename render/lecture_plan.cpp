@@ -48,10 +48,13 @@ void checkPanels(LecturePlan& plan) {
   for (const sim::SceneDef& def : plan.videos) shortest = std::min(shortest, def.duration);
   if (defaulted && !panels.times.empty()) panels.times = {shortest};
   if (panels.impacts)
-    for (const sim::SceneDef& def : plan.videos)
-      if (surveyRun(def).impactTimes.empty())
+    for (const sim::SceneDef& def : plan.videos) {
+      const size_t impacts = surveyRun(def).impactTimes.size();
+      plan.mostImpacts = std::max(plan.mostImpacts, impacts);
+      if (impacts == 0)
         fail("'panels: impacts' needs an impact in every variant, and variant '" + def.variant +
              "' has none; give panel times instead, e.g. [0, " + timeForName(def.duration) + "]");
+    }
 }
 
 }  // namespace
@@ -76,12 +79,9 @@ std::vector<std::string> lectureOutputs(const LecturePlan& plan, const std::stri
   const sim::PanelsDef& panels = plan.base.render.panels;
   const int strobe = plan.videos.front().render.strobe;
   for (double t : panels.times) paths.push_back(dir + panelsFileName(plan.base.name, "-t" + timeForName(t), strobe));
-  if (panels.impacts) {
-    size_t most = 0;
-    for (const sim::SceneDef& def : plan.videos) most = std::max(most, surveyRun(def).impactTimes.size());
-    for (size_t i = 1; i <= most; ++i)
+  if (panels.impacts)
+    for (size_t i = 1; i <= plan.mostImpacts; ++i)
       paths.push_back(dir + panelsFileName(plan.base.name, "-impact" + std::to_string(i), strobe));
-  }
   return paths;
 }
 

@@ -18,14 +18,15 @@ struct LecturePlan {
   std::string file;
   sim::SceneDef base;                 // the scene without a variant: its name and its `panels`
   std::vector<sim::SceneDef> videos;  // each variant, or the base scene when it has none
+  size_t mostImpacts = 0;             // with `panels: impacts`: the most impacts of any video's run
 };
 
 // loads the scene and every variant and starts each world once (overlapping bodies are bad input
-// too); throws sim::SceneError
+// too); with `panels: impacts` runs each to count its impacts. Throws sim::SceneError, sim::Diverged
 LecturePlan planLecture(const std::string& file);
 
 // the paths the scene's job writes under `root`: each video (.mp4) and poster (.png), then each
-// panel image; `panels: impacts` needs the runs' impacts, so it simulates (throws sim::Diverged)
+// panel image
 std::vector<std::string> lectureOutputs(const LecturePlan& plan, const std::string& root);
 
 }  // namespace render

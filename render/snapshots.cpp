@@ -84,10 +84,11 @@ void writeSnapshots(const SnapshotOptions& o, const Wrote& wrote) {
   // run, beside the widest energy panel among them
   Bounds bounds;
   const Variant* widest = &variants.front();
+  double widestBand = -1.0;
   for (const Variant& v : variants) {
     bounds.add(v.survey.bounds);
-    const auto band = [](const Variant& x) { return EnergyPanel::bandPx(x.def, x.survey, x.def.render.height); };
-    if (band(v) > band(*widest)) widest = &v;
+    const double band = EnergyPanel::bandPx(v.def, v.survey, v.def.render.height);
+    if (band > widestBand) widest = &v, widestBand = band;
   }
   const Camera camera = cameraFor(widest->def, widest->survey, bounds);
   const std::string dir = outputDirectory(o.output, first.name);
