@@ -1,0 +1,31 @@
+// Charts through gnuplot (Debian's gnuplot-nox): a generated script on its standard input, a PNG
+// written under a temporary name and renamed when gnuplot succeeds. We chose gnuplot over drawing
+// charts ourselves: log axes, ticks, legends and labels are its job and it does them well.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace render::analysis {
+
+struct ChartSeries {
+  std::string title;
+  std::vector<std::pair<double, double>> points;
+};
+
+struct Chart {
+  std::string title, xLabel, yLabel;
+  bool logX = false, logY = false;
+  bool bars = false;  // one bar per point (x is the bar's index) instead of lines
+  std::vector<std::string> barLabels;
+  std::vector<ChartSeries> series;
+};
+
+// the gnuplot script that draws `chart` into `pngPath`
+std::string gnuplotScript(const Chart& chart, const std::string& pngPath);
+
+// draws the chart; throws std::runtime_error with gnuplot's message when it fails
+void writeChart(const Chart& chart, const std::string& pngPath);
+
+}  // namespace render::analysis

@@ -1,0 +1,182 @@
+#include "render/analysis/stability.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "sim/scene/scene_build.h"
+
+namespace render::analysis {
+
+using Parameter = sim::scene::StabilityDef::Parameter;
+
+const char* parameterName(Parameter p) {
+  switch (p) {
+    case Parameter::Dt: return "dt";
+    case Parameter::Speed: return "speed";
+    case Parameter::MassRatio: return "mass_ratio";
+    case Parameter::StackHeight: return "stack_height";
+  }
+  return "?";
+}
+
+double stabilityDuration(const sim::scene::SceneDef& def) { return std::max(def.duration, kMinimumSteps * def.dt); }
+
+namespace {
+
+// the scene's own value of the parameter, where a search starts
+double startValue(const sim::scene::SceneDef& def) {
+  const sim::scene::StabilityDef& s = def.stability;
+  if (s.from > 0.0) return s.from;
+  switch (s.parameter) {
+    case Parameter::Dt: return def.dt;
+    case Parameter::Speed: {
+      const double v = def.bodies[def.bodyIndex(s.body)].velocity.norm();
+      return v > 0.0 ? v : 1.0;
+    }
+    case Parameter::MassRatio: return 1.0;
+    case Parameter::StackHeight: return 1.0;
+  }
+  return 1.0;
+}
+
+MetricsOptions criteria(const sim::scene::SceneDef& def) {
+  MetricsOptions o;
+  // energy may only grow where nothing feeds it
+  o.energy = def.events.empty() && def.pointForces.empty();
+  o.penetration = def.bodies.size() > 1;
+  o.stack = def.stability.stack;
+  return o;
+}
+
+bool holdsOnce(const sim::scene::SceneDef& def, RunMetrics& metrics) {
+  sim::world::World w = sim::scene::buildWorld(def);
+  const MetricsOptions o = criteria(def);
+  try {
+    metrics = measureRun(w, stabilityDuration(def), o);
+  } catch (const std::exception& e) {
+    // the method cannot run the scene at all (impacts pile up, bodies start overlapping)
+    metrics = {};
+    metrics.failure = "method gives up";
+    return false;
+  }
+  return holds(metrics, o);
+}
+
+}  // namespace
+
+sim::scene::SceneDef withParameter(const sim::scene::SceneDef& scene, double value, double phase) {
+  sim::scene::SceneDef def = scene;
+  const sim::scene::StabilityDef& s = def.stability;
+  switch (s.parameter) {
+    case Parameter::Dt: def.dt = value; break;
+    case Parameter::Speed: {
+      sim::scene::BodyDef& b = def.bodies[def.bodyIndex(s.body)];
+      const sim::core::Vec2 direction = b.velocity.norm() > 0.0 ? sim::core::Vec2(b.velocity.normalized()) : sim::core::Vec2::UnitX();
+      b.velocity = value * direction;
+      b.position -= phase * def.dt * b.velocity;
+      break;
+    }
+    case Parameter::MassRatio: {
+      sim::scene::BodyDef& b = def.bodies[def.bodyIndex(s.body)];
+      const sim::scene::MassProperties mp = sim::scene::massProperties(b);
+      b.mass = value * mp.mass;
+      b.inertia = value * mp.inertia;
+      break;
+    }
+    case Parameter::StackHeight: {
+      // keep the first `value` dynamic bodies, in the order the scene lists them
+      int kept = 0;
+      std::vector<sim::scene::BodyDef> bodies;
+      for (const sim::scene::BodyDef& b : def.bodies)
+        if (b.isStatic || kept++ < static_cast<int>(std::lround(value))) bodies.push_back(b);
+      def.bodies = bodies;
+      def.expects.clear();
+      break;
+    }
+  }
+  return def;
+}
+
+bool holdsAt(const sim::scene::SceneDef& def, double value, RunMetrics& metrics) {
+  // a fast body may meet an obstacle anywhere within a step: try eight phases
+  const int phases = def.stability.parameter == Parameter::Speed ? 8 : 1;
+  for (int k = 0; k < phases; ++k)
+    if (!holdsOnce(withParameter(def, value, static_cast<double>(k) / phases), metrics)) return false;
+  return true;
+}
+
+StabilityResult findBoundary(const sim::scene::SceneDef& def) {
+  StabilityResult r;
+  const sim::scene::StabilityDef& s = def.stability;
+  const bool integer = s.parameter == Parameter::StackHeight;
+  const double limit = s.to > 0.0 ? s.to : (integer ? 1000.0 : 1e12);
+  RunMetrics m;
+  double good = startValue(def), bad = 0.0;
+
+  // a value that holds: halve until one does
+  for (int k = 0; !holdsAt(def, good, m); ++k) {
+    bad = good, r.failing = m;
+    if (k == 40 || (integer && good <= 1.0)) {
+      r.failsEverywhere = true;
+      r.firstFailing = good;
+      return r;
+    }
+    good = integer ? std::floor(good / 2.0) : good / 2.0;
+  }
+  // a value that fails: double until one does (or the limit holds too)
+  if (bad == 0.0) {
+    double next = good;
+    for (int k = 0;; ++k) {
+      next = std::min(integer ? good + 1.0 : 2.0 * good, limit);
+      if (!holdsAt(def, next, m)) {
+        bad = next, r.failing = m;
+        break;
+      }
+      good = next;
+      if (good >= limit || k == 60) {
+        r.holdsToLimit = true;
+        r.largestStable = good;
+        return r;
+      }
+    }
+  }
+  // bisect the bracket
+  while (integer ? bad - good > 1.0 : (bad - good) > 1e-3 * good) {
+    const double mid = integer ? std::floor(0.5 * (good + bad)) : 0.5 * (good + bad);
+    if (holdsAt(def, mid, m)) good = mid;
+    else bad = mid, r.failing = m;
+  }
+  r.largestStable = good;
+  r.firstFailing = bad;
+  return r;
+}
+
+std::string describeFailure(const sim::scene::SceneDef& def, const StabilityResult& r) {
+  std::ostringstream o;
+  o << sim::core::integratorName(def.integrator) << " + " << sim::world::collisionMethodName(def.collisions) << ": ";
+  const char* p = parameterName(def.stability.parameter);
+  if (r.holdsToLimit) {
+    o << "holds up to " << p << " = " << r.largestStable << " (the search's limit)";
+    return o.str();
+  }
+  const RunMetrics& m = r.failing;
+  const std::string failure = m.failure;
+  if (failure == "energy grows")
+    o << "energy +" << std::lround(100.0 * (m.energyEnd - m.energyStart) / std::max(std::abs(m.energyStart), m.energyScale)) << " %";
+  else if (failure == "non-finite state")
+    o << "non-finite state at t = " << m.divergedAt;
+  else if (failure == "tunneling")
+    o << "tunneling (a body passes through another)";
+  else if (failure == "stack drifts")
+    o << "the top drifts " << std::lround(100.0 * m.topDrift) << " % of its size";
+  else if (failure == "penetration")
+    o << "penetration " << m.maxPenetration << " m (over 2 × slop)";
+  else
+    o << failure;
+  o << " at " << p << " = " << r.firstFailing;
+  if (r.failsEverywhere) o << " (fails at every value tried)";
+  else o << "; holds at " << r.largestStable;
+  return o.str();
+}
+
+}  // namespace render::analysis

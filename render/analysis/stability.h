@@ -1,0 +1,41 @@
+// Where methods fail: for one method, the largest value of a parameter (the step, a body's speed,
+// a mass ratio, a stack's height) at which a scene still holds, found by bisection.
+#pragma once
+
+#include <string>
+
+#include "render/analysis/run_metrics.h"
+#include "sim/scene/scene_def.h"
+
+namespace render::analysis {
+
+struct StabilityResult {
+  double largestStable = 0.0;  // the largest value that held (0 when none did)
+  double firstFailing = 0.0;   // the smallest value found to fail (0 when none did)
+  RunMetrics failing;     // the metrics of the run at firstFailing
+  bool failsEverywhere = false;
+  bool holdsToLimit = false;
+};
+
+// a stability run lasts the scene's duration or this many steps, whichever is longer, so that a
+// growing energy can be told from a bounded oscillation even at the largest steps
+inline constexpr double kMinimumSteps = 1000.0;
+double stabilityDuration(const sim::scene::SceneDef& def);
+
+// the scene with the stability parameter set to `value` (for `speed`, the body starts `phase`
+// steps early, so that a search can try where in a step the body meets an obstacle)
+sim::scene::SceneDef withParameter(const sim::scene::SceneDef& def, double value, double phase = 0.0);
+
+// does the scene hold at `value`? (for `speed`, at every one of eight phases of the step)
+bool holdsAt(const sim::scene::SceneDef& def, double value, RunMetrics& metrics);
+
+// the boundary, by growing and halving to a bracket and then bisecting to 0.1 % of the value
+StabilityResult findBoundary(const sim::scene::SceneDef& def);
+
+// "explicit_euler: energy +37 % at dt = 0.021"
+std::string describeFailure(const sim::scene::SceneDef& def, const StabilityResult& result);
+
+// "dt", "speed", "mass_ratio", "stack_height"
+const char* parameterName(sim::scene::StabilityDef::Parameter p);
+
+}  // namespace render::analysis

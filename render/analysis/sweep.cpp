@@ -1,0 +1,118 @@
+#include "render/analysis/sweep.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "render/analysis/run_metrics.h"
+#include "render/jobs/exit_status.h"
+#include "render/jobs/json_writer.h"
+#include "sim/scene/expect.h"
+#include "sim/scene/scene_build.h"
+
+namespace render::analysis {
+using namespace render::jobs;
+
+namespace {
+
+sim::scene::SceneDef withMethod(sim::scene::SceneDef def, const SweepCase& m) {
+  def.integrator = m.integrator;
+  def.collisions = m.collisions;
+  def.dt = m.dt;
+  if (m.iterations > 0) def.velocityIterations = m.iterations;
+  return def;
+}
+
+// whether the scene's bodies can collide at all (auto resolves to none otherwise)
+bool hasCollisions(const sim::scene::SceneDef& def) {
+  sim::world::World w = sim::scene::buildWorld(def);
+  w.start();
+  return w.collisions != sim::world::CollisionMethod::None;
+}
+
+}  // namespace
+
+SweepReference sweepReference(const sim::scene::SceneDef& def, double smallestDt) {
+  if (!def.expects.empty()) return {"expect", {}};
+  SweepCase ref{sim::core::Integrator::Rk4, def.collisions, smallestDt / 64.0, 0};
+  std::string name = "rk4 at dt " + formatNumber(ref.dt);
+  // the exact event method is the reference where bodies collide and it can run the scene
+  if (hasCollisions(def)) {
+    ref.collisions = sim::world::CollisionMethod::Event;
+    try {
+      sim::world::World w = sim::scene::buildWorld(withMethod(def, ref));
+      w.advanceTo(def.duration);
+      SweepReference out{"event, " + name, {}};
+      for (const sim::core::Body& b : w.bodies) out.states.push_back(b.state());
+      return out;
+    } catch (const std::exception&) {
+      ref.collisions = def.collisions;  // event cannot run it (overlap, pile-up): the scene's method
+    }
+  }
+  sim::world::World w = sim::scene::buildWorld(withMethod(def, ref));
+  w.advanceTo(def.duration);
+  SweepReference out{name, {}};
+  for (const sim::core::Body& b : w.bodies) out.states.push_back(b.state());
+  return out;
+}
+
+SweepRow runSweepCase(const sim::scene::SceneDef& scene, const SweepCase& method, const SweepReference& reference, int repeat) {
+  const sim::scene::SceneDef def = withMethod(scene, method);
+  SweepRow row;
+  row.method = method;
+
+  // the measured run: error, energy, penetration
+  sim::world::World w = sim::scene::buildWorld(def);
+  MetricsOptions options;
+  options.penetration = def.bodies.size() > 1;
+  const RunMetrics m = measureRun(w, def.duration, options);
+  row.method.collisions = w.collisions;
+  row.steps = w.steps;
+  row.finite = m.finite;
+  row.energyDrift = m.energyDrift;
+  row.maxPenetration = m.maxPenetration;
+  if (!m.finite) {
+    row.error = std::numeric_limits<double>::infinity();
+  } else if (reference.name == "expect") {
+    sim::world::World again = sim::scene::buildWorld(def);
+    for (const sim::scene::CheckResult& r : sim::scene::runExpects(def, again)) row.error = std::max(row.error, r.error);
+  } else {
+    for (size_t i = 0; i < w.bodies.size(); ++i) {
+      const sim::core::Body& b = w.bodies[i];
+      if (b.isStatic) continue;
+      const sim::core::BodyState& r = reference.states[i];
+      const double arm = sim::core::boundingRadius(b.shape);
+      row.error = std::max(row.error, std::hypot((b.x - r.x).norm(), arm * (b.angle - r.angle)));
+    }
+  }
+
+  // the timed runs: nothing but the simulation
+  std::vector<double> seconds;
+  for (int k = 0; k < repeat && m.finite; ++k) {
+    sim::world::World timed = sim::scene::buildWorld(def);
+    const auto start = std::chrono::steady_clock::now();
+    timed.advanceTo(def.duration);
+    seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  if (!seconds.empty()) {
+    std::sort(seconds.begin(), seconds.end());
+    row.secondsPerSimSecond = seconds[seconds.size() / 2] / def.duration;
+  }
+  return row;
+}
+
+std::vector<double> parseRange(const std::string& text, const std::string& option) {
+  double from = 0.0, to = 0.0;
+  int count = 0;
+  char tail = 0;
+  if (std::sscanf(text.c_str(), "%lf:%lf:%d%c", &from, &to, &count, &tail) != 3 || !(from > 0.0) || !(to > 0.0) ||
+      !std::isfinite(from) || !std::isfinite(to) || count < 1 || count > 1000)
+    throw UsageError(option + ": expected FROM:TO:COUNT with positive FROM and TO and a COUNT from 1 to 1000, got '" +
+                     text + "'");
+  std::vector<double> values;
+  for (int k = 0; k < count; ++k)
+    values.push_back(count == 1 ? from : from * std::pow(to / from, static_cast<double>(k) / (count - 1)));
+  return values;
+}
+
+}  // namespace render::analysis

@@ -1,0 +1,46 @@
+// Speed against accuracy: one scene run under many methods and steps, each run measured for its
+// cost (wall time per simulated second) and its error, energy drift and deepest penetration.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "sim/scene/scene_def.h"
+
+namespace render::analysis {
+
+struct SweepCase {
+  sim::core::Integrator integrator = sim::core::Integrator::SymplecticEuler;
+  sim::world::CollisionMethod collisions = sim::world::CollisionMethod::Auto;
+  double dt = 0.0;
+  int iterations = 0;  // sequential velocity iterations
+};
+
+// what the error of a run is measured against
+struct SweepReference {
+  std::string name;                    // "expect", or how the reference run was made
+  std::vector<sim::core::BodyState> states;  // the reference run's final states (when not "expect")
+};
+
+struct SweepRow {
+  SweepCase method;
+  long steps = 0;
+  double secondsPerSimSecond = 0.0;  // median wall time of `repeat` runs without output
+  double error = 0.0;
+  double energyDrift = 0.0;
+  double maxPenetration = 0.0;
+  bool finite = true;
+};
+
+// the scene's expect answers when it has them; otherwise a run with RK4 at a step 64 times smaller
+// than `smallestDt`, under the event method where the scene has collisions and it can run
+SweepReference sweepReference(const sim::scene::SceneDef& def, double smallestDt);
+
+// the error of a run: the largest expect error, or the largest distance of a body from the
+// reference (its center's, plus its angle times its radius)
+SweepRow runSweepCase(const sim::scene::SceneDef& def, const SweepCase& method, const SweepReference& reference, int repeat);
+
+// "FROM:TO:COUNT", log-spaced from FROM to TO; throws UsageError
+std::vector<double> parseRange(const std::string& text, const std::string& option);
+
+}  // namespace render::analysis

@@ -1,0 +1,114 @@
+// `rigidreel check`: load and validate scenes, say what model each uses, and compare every
+// variant's `expect` entries with the simulation.
+#include <iostream>
+#include <sstream>
+
+#include "render/cli/commands.h"
+#include "render/cli/scene_options.h"
+#include "render/jobs/json_writer.h"
+#include "sim/scene/expect.h"
+#include "sim/scene/scene_build.h"
+#include "sim/yaml/scene_yaml.h"
+
+namespace render::cli {
+using namespace render::jobs;
+
+namespace {
+
+std::string plural(size_t n, const std::string& word) {
+  if (n == 1) return "1 " + word;
+  return std::to_string(n) + " " + (word.ends_with("y") ? word.substr(0, word.size() - 1) + "ies" : word + "s");
+}
+
+// what the scene makes the simulator model: a scene pays only for what it uses
+std::string describeModel(const sim::scene::SceneDef& d) {
+  size_t dynamic = 0;
+  for (const auto& b : d.bodies) dynamic += !b.isStatic;
+  std::ostringstream o;
+  o << plural(d.bodies.size(), "body") << " (" << dynamic << " dynamic); forces:";
+  std::string forces;
+  if (d.gravity != sim::core::Vec2::Zero()) forces += " gravity,";
+  if (!d.springs.empty()) forces += " " + plural(d.springs.size(), "spring") + ",";
+  if (!d.pointForces.empty()) forces += " " + plural(d.pointForces.size(), "point force") + ",";
+  if (!d.drags.empty()) forces += " " + std::string("drag,");
+  if (forces.empty()) forces = " none,";
+  forces.pop_back();
+  o << forces << "; " << plural(d.events.size(), "impulse event") << "; integrator " << sim::core::integratorName(d.integrator)
+    << ", dt " << formatNumber(d.dt) << " s, duration " << formatNumber(d.duration) << " s";
+  return o.str();
+}
+
+std::string formatValues(const std::vector<double>& v) {
+  if (v.size() == 1) return formatNumber(v[0]);
+  std::string s = "(";
+  for (size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + formatNumber(v[i]);
+  return s + ")";
+}
+
+// say where the event method found impacts piling up and made the contact resting
+void reportResting(const sim::scene::SceneDef& def, const sim::world::World& w) {
+  for (const sim::world::RestingRecord& r : w.resting)
+    std::cout << "  resting: '" << def.bodies[r.a].name << "' and '" << def.bodies[r.b].name
+              << "' came to rest at t = " << formatNumber(r.t) << " (impacts piled up; the contact now rests)\n";
+}
+
+// one scene, one variant ("" for the base); returns false when an expect fails
+bool checkCase(const std::string& file, const std::string& variant) {
+  const sim::scene::SceneDef def = sim::yaml::loadSceneFile(file, variant);
+  std::cout << file << (variant.empty() ? "" : " [" + variant + "]") << ": " << describeModel(def) << '\n';
+  sim::world::World w = startWorld(def, file);
+  std::cout << "  collisions: " << describeCollisionMethod(w) << '\n';
+  if (def.expects.empty()) {
+    // still run it: a scene that diverges is not a good scene
+    w.advanceTo(def.duration);
+    std::cout << "  ran to t = " << formatNumber(def.duration) << " (no expect entries)";
+    if (!w.impacts.empty()) std::cout << ", " << w.impacts.size() << " impulses";
+    std::cout << '\n';
+    reportResting(def, w);
+    return true;
+  }
+  bool ok = true;
+  for (const sim::scene::CheckResult& r : sim::scene::runExpects(def, w)) {
+    ok = ok && r.passed();
+    std::cout << (r.passed() ? "  ok    " : "  FAIL  ") << "t = " << formatNumber(r.time) << "  " << r.quantity
+              << " = " << formatValues(r.actual) << ", expected " << formatValues(r.expected) << ", error "
+              << formatNumber(r.error) << " (tolerance " << formatNumber(r.tolerance) << ")\n";
+  }
+  reportResting(def, w);
+  return ok;
+}
+
+int check(const std::vector<std::string>& files) {
+  int code = kExitOk;
+  for (const std::string& file : files) {
+    try {
+      const sim::scene::SceneDef base = sim::yaml::loadSceneFile(file);
+      std::vector<std::string> cases = base.variantNames;
+      if (cases.empty()) cases.push_back("");
+      for (const std::string& v : cases)
+        if (!checkCase(file, v) && code == kExitOk) code = kExitFailure;
+    } catch (const sim::yaml::SceneError& e) {
+      std::cerr << e.what() << '\n';
+      code = kExitBadInput;
+    } catch (const sim::world::Diverged& d) {
+      std::cerr << file << ": the simulation diverged at t = " << formatNumber(d.time) << " (body #" << d.body
+                << "); use a smaller dt or another integrator\n";
+      if (code == kExitOk) code = kExitFailure;
+    } catch (const std::runtime_error& e) {
+      std::cerr << file << ": " << e.what() << '\n';
+      if (code == kExitOk) code = kExitFailure;
+    }
+  }
+  return code;
+}
+
+}  // namespace
+
+void addCheckCommand(CLI::App& app, int& exitCode) {
+  auto files = std::make_shared<std::vector<std::string>>();
+  CLI::App* cmd = app.add_subcommand("check", "validate scenes and verify their expect entries");
+  cmd->add_option("scenes", *files, "scene files (YAML)")->required();
+  cmd->callback([files, &exitCode] { exitCode = check(*files); });
+}
+
+}  // namespace render::cli

@@ -1,0 +1,64 @@
+// `rigidreel snapshot`: still frames of a scene at exact times or at its impacts, one PNG each, or
+// with --panels every variant side by side in one labeled image (the poll slide).
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+#include "render/cli/commands.h"
+#include "render/cli/output.h"
+#include "render/cli/snapshots.h"
+
+namespace render::cli {
+
+namespace {
+
+// "0.5,1,2.25" → {0.5, 1, 2.25}; throws UsageError
+std::vector<double> parseTimes(const std::string& text) {
+  std::vector<double> times;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    size_t used = 0;
+    double t = 0.0;
+    try {
+      t = std::stod(item, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    while (used < item.size() && std::isspace(static_cast<unsigned char>(item[used]))) ++used;
+    if (item.empty() || used != item.size() || !std::isfinite(t))
+      throw UsageError("--at: expected times in seconds separated by commas, e.g. 0.5,1.25; got '" + text + "'");
+    times.push_back(t);
+  }
+  if (times.empty()) throw UsageError("--at: give at least one time");
+  return times;
+}
+
+}  // namespace
+
+void addSnapshotCommand(CLI::App& app, int& exitCode) {
+  auto o = std::make_shared<SnapshotOptions>();
+  auto at = std::make_shared<std::string>();
+  CLI::App* cmd = app.add_subcommand("snapshot", "still frames of a scene as PNG under out/<scene>/");
+  cmd->add_option("scene", o->scene, "the scene file (YAML)")->required();
+  o->addTo(*cmd);
+  cmd->add_option("--at", *at, "times in seconds, separated by commas: one PNG each");
+  cmd->add_flag("--impacts", o->impacts, "one PNG at each impact the collision response resolves");
+  cmd->add_flag("--panels", o->panels, "every variant side by side in one labeled image");
+  cmd->add_option("--strobe", o->strobe, "draw this many earlier poses, fading, behind the present one");
+  cmd->add_option("-o,--output", o->output, "the output directory (default: out)");
+  cmd->add_option("--size", o->size, "frame size WIDTHxHEIGHT in pixels, even (default: the scene's, 1280x720)");
+  cmd->callback([o, at, &exitCode] {
+    try {
+      if (!at->empty()) o->times = parseTimes(*at);
+      writeSnapshots(*o, [](const std::string& path) { std::cout << path << '\n'; });
+      exitCode = kExitOk;
+    } catch (const sim::world::Diverged& d) {
+      std::cerr << o->scene << ": the simulation diverged at t = " << timeForName(d.time)
+                << "; try a smaller step (--dt) or another integrator (--integrator rk4)\n";
+      exitCode = kExitFailure;
+    }
+  });
+}
+
+}  // namespace render::cli

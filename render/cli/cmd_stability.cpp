@@ -1,0 +1,77 @@
+// `rigidreel stability`: for each method, the largest step (or speed, mass ratio, stack height, as
+// the scene's `stability:` block declares) at which the scene still holds, and how it fails beyond.
+#include <filesystem>
+#include <iostream>
+
+#include "render/analysis/chart.h"
+#include "render/analysis/stability.h"
+#include "render/cli/commands.h"
+#include "render/cli/method_lists.h"
+#include "render/cli/scene_options.h"
+#include "render/jobs/atomic_file.h"
+#include "render/jobs/json_writer.h"
+
+namespace render::cli {
+using namespace render::jobs;
+using namespace render::analysis;
+
+namespace {
+
+struct StabilityOptions : MethodLists {
+  std::string scene, variant, outDir = "out";
+};
+
+int stability(const StabilityOptions& o) {
+  SceneOptions so;
+  so.scene = o.scene;
+  so.variant = o.variant;
+  const sim::scene::SceneDef def = so.load();
+  startWorld(def, o.scene);
+
+  const auto integrators = o.integratorList();
+  const auto methods = o.collisionList(def.collisions);
+  std::filesystem::create_directories(o.outDir);
+  const std::string base = o.outDir + "/" + def.name + (def.variant.empty() ? "" : "-" + def.variant) + "-stability";
+  const char* parameter = parameterName(def.stability.parameter);
+
+  AtomicFile csv(base + ".csv");
+  csv.stream() << "integrator,collisions,parameter,largest_stable,first_failing,failure\n";
+  Chart chart;
+  chart.title = def.name + ": the largest " + parameter + " at which each method holds";
+  chart.yLabel = std::string("largest stable ") + parameter;
+  chart.bars = true;
+  chart.logY = def.stability.parameter != sim::scene::StabilityDef::Parameter::StackHeight;
+  ChartSeries bars{std::string("largest stable ") + parameter, {}};
+  for (sim::world::CollisionMethod c : methods)
+    for (sim::core::Integrator i : integrators) {
+      sim::scene::SceneDef d = def;
+      d.integrator = i;
+      d.collisions = c;
+      const StabilityResult r = findBoundary(d);
+      std::cout << describeFailure(d, r) << '\n';
+      csv.stream() << sim::core::integratorName(i) << ',' << sim::world::collisionMethodName(c) << ',' << parameter << ','
+                   << formatNumber(r.largestStable) << ',' << formatNumber(r.firstFailing) << ','
+                   << (r.holdsToLimit ? "none" : r.failing.failure) << '\n';
+      chart.barLabels.push_back(std::string(sim::core::integratorName(i)) + "\\n" + std::string(sim::world::collisionMethodName(c)));
+      bars.points.emplace_back(static_cast<double>(bars.points.size()), r.largestStable > 0.0 ? r.largestStable : NAN);
+    }
+  chart.series.push_back(bars);
+  writeChart(chart, base + ".png");
+  csv.commit();
+  std::cout << "wrote " << base << ".csv and " << base << ".png\n";
+  return kExitOk;
+}
+
+}  // namespace
+
+void addStabilityCommand(CLI::App& app, int& exitCode) {
+  auto o = std::make_shared<StabilityOptions>();
+  CLI::App* cmd = app.add_subcommand("stability", "find where each method stops holding a scene");
+  cmd->add_option("scene", o->scene, "the scene file (YAML)")->required();
+  cmd->add_option("--variant", o->variant, "the named variant of the scene");
+  o->addTo(*cmd);
+  cmd->add_option("-o", o->outDir, "output directory (default out)");
+  cmd->callback([o, &exitCode] { exitCode = stability(*o); });
+}
+
+}  // namespace render::cli

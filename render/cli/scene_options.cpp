@@ -1,0 +1,74 @@
+#include "render/cli/scene_options.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "render/cli/commands.h"
+#include "sim/scene/scene_build.h"
+#include "sim/yaml/scene_yaml.h"
+
+namespace render::cli {
+
+void SceneOptions::addTo(CLI::App& command) {
+  command.add_option("--variant", variant, "the named variant of the scene to run");
+  command.add_option("--integrator", integrator, "explicit_euler, symplectic_euler, midpoint or rk4");
+  command.add_option("--dt", dt, "fixed time step in seconds");
+  command.add_option("--collisions", collisions, "auto, none, event, isolated or sequential");
+}
+
+sim::scene::SceneDef SceneOptions::load() const {
+  sim::scene::SceneDef def = sim::yaml::loadSceneFile(scene, variant);
+  if (!integrator.empty()) {
+    const auto method = sim::core::integratorFromName(integrator);
+    if (!method) {
+      std::string names;
+      for (auto n : sim::core::integratorNames()) names += (names.empty() ? "" : ", ") + std::string(n);
+      throw UsageError("--integrator: unknown integrator '" + integrator + "'; choose one of: " + names);
+    }
+    def.integrator = *method;
+  }
+  if (dt) {
+    if (!(*dt > 0.0) || !std::isfinite(*dt)) throw UsageError("--dt: the time step must be a positive finite number");
+    def.dt = *dt;
+  }
+  if (!collisions.empty()) {
+    const auto method = sim::world::collisionMethodFromName(collisions);
+    if (!method) {
+      std::string names;
+      for (auto n : sim::world::collisionMethodNames()) names += (names.empty() ? "" : ", ") + std::string(n);
+      throw UsageError("--collisions: unknown collision method '" + collisions + "'; choose one of: " + names);
+    }
+    def.collisions = *method;
+  }
+  return def;
+}
+
+sim::world::World startWorld(const sim::scene::SceneDef& def, const std::string& file) {
+  sim::world::World world = sim::scene::buildWorld(def);
+  try {
+    world.start();
+  } catch (const sim::world::InitialOverlap& o) {
+    std::ostringstream m;
+    m << "bodies '" << def.bodies[o.a].name << "' and '" << def.bodies[o.b].name << "' overlap by " << o.depth
+      << " at t = 0; the event method starts from separated bodies: move them apart, or choose "
+         "--collisions sequential";
+    const sim::scene::SourceLoc at = def.bodies[o.b].loc;
+    throw sim::yaml::SceneError(file, at.line, at.column, m.str());
+  }
+  return world;
+}
+
+std::string describeCollisionMethod(const sim::world::World& world) {
+  std::string s(sim::world::collisionMethodName(world.collisions));
+  switch (world.methodReason) {
+    case sim::world::MethodReason::Requested: return s + " (as the scene or the command line asks)";
+    case sim::world::MethodReason::FewBodies: return s + " (auto: no two bodies can meet, so no collision model is needed)";
+    case sim::world::MethodReason::IsolatedImpacts:
+      return s + " (auto: no bodies touch at the start, so impacts are isolated and can be resolved exactly)";
+    case sim::world::MethodReason::PersistentContacts:
+      return s + " (auto: bodies touch at the start under load, so contacts persist and need the iterative solver)";
+  }
+  return s;
+}
+
+}  // namespace render::cli

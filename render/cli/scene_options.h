@@ -1,0 +1,33 @@
+// Command-line overrides of a scene's `sim:` settings, shared by the subcommands that run scenes.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <optional>
+#include <string>
+
+#include "sim/scene/scene_def.h"
+#include "sim/world/world.h"
+
+namespace render::cli {
+
+struct SceneOptions {
+  std::string scene;
+  std::string variant;
+  std::string integrator;
+  std::optional<double> dt;
+  std::string collisions;
+
+  // --variant, --integrator, --dt, --collisions
+  void addTo(CLI::App& command);
+  // the scene with the overrides applied; throws sim::yaml::SceneError or UsageError
+  sim::scene::SceneDef load() const;
+};
+
+// the scene's world, started: `auto` resolved and the start state checked; bodies that overlap
+// where the method cannot start become a sim::yaml::SceneError at the second body's line
+sim::world::World startWorld(const sim::scene::SceneDef& def, const std::string& file);
+
+// "event: no bodies touch at the start, so impacts are isolated"
+std::string describeCollisionMethod(const sim::world::World& world);
+
+}  // namespace render::cli

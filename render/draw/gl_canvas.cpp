@@ -1,0 +1,334 @@
+#include "render/draw/gl_canvas.h"
+
+#define GL_GLEXT_PROTOTYPES
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace render::draw {
+
+namespace {
+
+using sim::debug::DrawRole;
+
+const Color kWhite{1.0, 1.0, 1.0, 1.0};
+const Color kBlack{0.0, 0.0, 0.0, 1.0};
+
+// a unit vector at a right angle to d, counter-clockwise
+Vec2 perpendicular(const Vec2& d) { return {-d.y(), d.x()}; }
+
+}  // namespace
+
+GlCanvas::GlCanvas(GlContext& gl, TextRenderer& text, const Style& style)
+    : gl_(gl), textRenderer_(text), style_(style) {}
+
+void GlCanvas::begin(const Camera& camera) {
+  camera_ = camera;
+  px_ = camera.pixelSize();
+  texts_.clear();
+  // 2D drawing in call order: no depth test; straight alpha blending that keeps the frame opaque
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  glEnable(GL_BLEND);
+  glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  glEnable(GL_STENCIL_TEST);
+  glStencilMask(0xff);
+  lastStencil_ = 0;
+  stencil_ = -1;  // unknown: the first primitive sets the stencil state
+  const Color& bg = style_.background;
+  glClearColor(static_cast<float>(bg.r), static_cast<float>(bg.g), static_cast<float>(bg.b), 1.0f);
+  glClearStencil(0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  // world units, y up, centered on the camera: vertices are sent relative to the center, so that
+  // single-precision GL keeps its digits for what is on screen
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  const double hw = 0.5 * camera.worldWidth(), hh = 0.5 * camera.worldHeight();
+  glOrtho(-hw, hw, -hh, hh, -1.0, 1.0);
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+}
+
+Image GlCanvas::finish() {
+  Image image = gl_.read();
+  // a halo of the background around each letter, a tenth of the size: legible over any line
+  const int halo = std::max(1, style_.fontSize / 10);
+  for (const QueuedText& t : texts_)
+    textRenderer_.draw(image, t.text, t.pixel.x(), t.pixel.y(), t.anchor, style_.fontSize, t.color,
+                       style_.background.withAlpha(t.color.a), halo);
+  texts_.clear();
+  return image;
+}
+
+Color GlCanvas::fillColor(const sim::debug::DrawStyle& s) const {
+  switch (s.role) {
+    case DrawRole::Body: return style_.body(s.body).mixed(kWhite, 0.35);
+    case DrawRole::StaticBody: return style_.body(s.body).mixed(kWhite, 0.6);
+    case DrawRole::RotationalBar: return style_.body(s.body).mixed(kWhite, 0.45);
+    // a panel lets what is behind it show a little
+    case DrawRole::Panel: return style_.panel.withAlpha(0.85);
+    default: return strokeColor(s);
+  }
+}
+
+Color GlCanvas::strokeColor(const sim::debug::DrawStyle& s) const {
+  // a teaching arrow's own `color`
+  if (s.color >= 0 && s.color < static_cast<int>(style_.arrows.size()) && style_.arrows[s.color].a > 0.0)
+    return style_.arrows[s.color];
+  switch (s.role) {
+    case DrawRole::Body:
+    case DrawRole::BodyAxis: return style_.body(s.body).mixed(kBlack, 0.35);
+    case DrawRole::StaticBody: return style_.body(s.body).mixed(kBlack, 0.25);
+    case DrawRole::ContactPoint: return style_.contact;
+    case DrawRole::ContactNormal: return style_.normal;
+    case DrawRole::Impulse: return style_.impulse;
+    case DrawRole::Velocity: return style_.velocity;
+    case DrawRole::Trail: return style_.body(s.body);
+    case DrawRole::ReferenceEdge: return style_.referenceEdge;
+    case DrawRole::IncidentVertex: return style_.incidentVertex;
+    case DrawRole::Spring: return style_.spring;
+    case DrawRole::Offset: return style_.offset;
+    case DrawRole::AngularVelocity: return style_.omega;
+    case DrawRole::BodyFrame: return style_.frame;
+    case DrawRole::Path: return style_.path;
+    case DrawRole::Force: return style_.force;
+    case DrawRole::Torque: return style_.torque;
+    case DrawRole::Momentum: return style_.momentum;
+    case DrawRole::KineticBar:
+    case DrawRole::RotationalBar: return style_.body(s.body);
+    case DrawRole::PotentialBar: return style_.potential;
+    case DrawRole::TotalBar: return style_.total;
+    case DrawRole::Panel: return style_.panel;
+    case DrawRole::Label:
+    case DrawRole::Caption: return style_.text;
+  }
+  return style_.text;
+}
+
+double GlCanvas::strokeWidth(DrawRole role) const {
+  const double w = style_.lineWidth;
+  switch (role) {
+    case DrawRole::Impulse: return 1.5 * w;
+    case DrawRole::Trail:
+    case DrawRole::Path: return 0.75 * w;
+    case DrawRole::Force: return 1.5 * w;
+    case DrawRole::ReferenceEdge: return 3.0 * w;
+    default: return w;
+  }
+}
+
+void GlCanvas::polygon(const std::vector<Vec2>& vertices, const sim::debug::DrawStyle& s) {
+  if (vertices.empty()) return;
+  // bars and panels are areas without an outline
+  if (s.role >= DrawRole::KineticBar && s.role <= DrawRole::Panel) {
+    beginPrimitive(fillColor(s), s.opacity);
+    fillConvex(vertices);
+    return;
+  }
+  const bool solid = s.role == DrawRole::Body || s.role == DrawRole::StaticBody;
+  if (solid) {
+    beginPrimitive(fillColor(s), s.opacity, s.role == DrawRole::StaticBody);
+    fillConvex(vertices);
+    if (s.role == DrawRole::StaticBody) {
+      Bounds area;
+      for (const Vec2& v : vertices) area.add(v);
+      hatch(area, strokeColor(s), s.opacity);
+    }
+  }
+  beginPrimitive(strokeColor(s), s.opacity);
+  strokeClosed(vertices, strokeWidth(s.role));
+}
+
+void GlCanvas::circle(const Vec2& center, double radius, const sim::debug::DrawStyle& s) {
+  const bool solid = s.role == DrawRole::Body || s.role == DrawRole::StaticBody;
+  if (solid) {
+    beginPrimitive(fillColor(s), s.opacity, s.role == DrawRole::StaticBody);
+    fillDisc(center, radius);
+    if (s.role == DrawRole::StaticBody) {
+      Bounds area;
+      area.add(center - Vec2(radius, radius));
+      area.add(center + Vec2(radius, radius));
+      hatch(area, strokeColor(s), s.opacity);
+    }
+  }
+  beginPrimitive(strokeColor(s), s.opacity);
+  ring(center, radius, strokeWidth(s.role));
+}
+
+void GlCanvas::halfPlane(const Vec2& point, const Vec2& normal, const sim::debug::DrawStyle& s) {
+  if (!(normal.norm() > 0.0)) return;
+  const Vec2 n = normal.normalized(), t = perpendicular(n);
+  const Bounds view = camera_.view();
+  // the boundary point nearest the view's center, and a length that reaches past every corner
+  const Vec2 p0 = point + t * t.dot(view.center() - point);
+  const double reach = view.size().norm() + (view.center() - p0).norm();
+  beginPrimitive(fillColor(s), s.opacity, true);
+  // the solid side is n·(r − p) ≤ 0: a quad from the boundary away from n, clipped by GL
+  fillConvex({p0 - t * reach, p0 + t * reach, p0 + t * reach - n * reach, p0 - t * reach - n * reach});
+  hatch(view, strokeColor(s), s.opacity);
+  beginPrimitive(strokeColor(s), s.opacity);
+  strokeSegment(p0 - t * reach, p0 + t * reach, strokeWidth(s.role));
+}
+
+void GlCanvas::segment(const Vec2& a, const Vec2& b, const sim::debug::DrawStyle& s) {
+  beginPrimitive(strokeColor(s), s.opacity);
+  strokeSegment(a, b, strokeWidth(s.role));
+}
+
+void GlCanvas::point(const Vec2& p, const sim::debug::DrawStyle& s) {
+  const double w = style_.lineWidth;
+  switch (s.role) {
+    case DrawRole::IncidentVertex:
+      // a ring, so the vertex itself stays visible inside it
+      beginPrimitive(strokeColor(s), s.opacity);
+      ring(p, 4.0 * w * px_, w);
+      break;
+    case DrawRole::ContactPoint:
+      // a dot with a rim of the background, visible over a body of the same color
+      beginPrimitive(style_.background, s.opacity);
+      fillDisc(p, 2.9 * w * px_);
+      beginPrimitive(strokeColor(s), s.opacity);
+      fillDisc(p, 2.2 * w * px_);
+      break;
+    default:
+      beginPrimitive(strokeColor(s), s.opacity);
+      fillDisc(p, 1.6 * w * px_);
+  }
+}
+
+void GlCanvas::arrow(const Vec2& tail, const Vec2& head, const sim::debug::DrawStyle& s) {
+  beginPrimitive(strokeColor(s), s.opacity);
+  strokeArrow(tail, head, strokeWidth(s.role));
+}
+
+void GlCanvas::text(const Vec2& at, const std::string& text, const sim::debug::DrawStyle& s) {
+  const Anchor anchor = s.role == DrawRole::Caption ? Anchor::TopLeft : Anchor::Center;
+  texts_.push_back({camera_.toPixel(at), text, anchor, strokeColor(s).withAlpha(s.opacity)});
+}
+
+void GlCanvas::beginPrimitive(const Color& c, double opacity, bool marks) {
+  const double alpha = c.a * std::clamp(opacity, 0.0, 1.0);
+  glColor4d(c.r, c.g, c.b, alpha);
+  if (alpha >= 1.0 && !marks) {
+    // opaque: overlaps do not show, so no stencil, and no state change between primitives, which
+    // lets Mesa draw many of them in one batch (a stencil change per primitive made contact-heavy
+    // frames several times slower)
+    if (stencil_ != 0) {
+      glStencilFunc(GL_ALWAYS, 0, 0xff);
+      glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    }
+    stencil_ = 0;
+    return;
+  }
+  // 8 stencil bits: after 255 primitives start over from a cleared stencil
+  if (++lastStencil_ > 255) {
+    glClear(GL_STENCIL_BUFFER_BIT);
+    lastStencil_ = 1;
+  }
+  stencil_ = lastStencil_;
+  glStencilFunc(GL_NOTEQUAL, stencil_, 0xff);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+}
+
+void GlCanvas::vertex(const Vec2& world) {
+  const Vec2& c = camera_.center();
+  glVertex2d(world.x() - c.x(), world.y() - c.y());
+}
+
+void GlCanvas::fillConvex(const std::vector<Vec2>& vertices) {
+  glBegin(GL_TRIANGLE_FAN);
+  for (const Vec2& v : vertices) vertex(v);
+  glEnd();
+}
+
+int GlCanvas::discSegments(double radius) const {
+  // chords within 0.05 px of the circle: n = π / acos(1 − 0.05 / r), r in pixels
+  const double r = radius / px_;
+  if (r <= 0.05) return 8;
+  return std::clamp(static_cast<int>(std::ceil(std::numbers::pi / std::acos(1.0 - 0.05 / r))), 8, 720);
+}
+
+void GlCanvas::fillDisc(const Vec2& center, double radius) {
+  const int n = discSegments(radius);
+  glBegin(GL_TRIANGLE_FAN);
+  vertex(center);
+  for (int i = 0; i <= n; ++i) {
+    const double a = 2.0 * std::numbers::pi * i / n;
+    vertex(center + radius * Vec2(std::cos(a), std::sin(a)));
+  }
+  glEnd();
+}
+
+void GlCanvas::ring(const Vec2& center, double radius, double width) {
+  const double half = 0.5 * width * px_;
+  const double inner = std::max(0.0, radius - half), outer = radius + half;
+  const int n = discSegments(outer);
+  glBegin(GL_TRIANGLE_STRIP);
+  for (int i = 0; i <= n; ++i) {
+    const Vec2 u(std::cos(2.0 * std::numbers::pi * i / n), std::sin(2.0 * std::numbers::pi * i / n));
+    vertex(center + outer * u);
+    vertex(center + inner * u);
+  }
+  glEnd();
+}
+
+void GlCanvas::strokeSegment(const Vec2& a, const Vec2& b, double width) {
+  const double half = 0.5 * width * px_;
+  const Vec2 d = b - a;
+  if (d.norm() > 1e-9 * px_) {
+    const Vec2 side = perpendicular(d.normalized()) * half;
+    fillConvex({a - side, b - side, b + side, a + side});
+  }
+  // round caps, which also join consecutive segments smoothly
+  fillDisc(a, half);
+  fillDisc(b, half);
+}
+
+void GlCanvas::strokeClosed(const std::vector<Vec2>& vertices, double width) {
+  for (size_t i = 0; i < vertices.size(); ++i) strokeSegment(vertices[i], vertices[(i + 1) % vertices.size()], width);
+}
+
+void GlCanvas::strokeArrow(const Vec2& tail, const Vec2& head, double width) {
+  const Vec2 d = head - tail;
+  const double length = d.norm();
+  if (!(length > 1e-9 * px_)) return;
+  const Vec2 u = d / length, side = perpendicular(u);
+  // the head: long enough to read at a glance, shortened on arrows too short to carry it
+  const double headLength = std::min(std::max(10.0, 5.0 * width) * px_, length / 1.5);
+  const double headHalfWidth = 0.45 * headLength;
+  const Vec2 base = head - u * headLength;
+  const double half = 0.5 * width * px_;
+  const Vec2 shaftEnd = head - u * (0.9 * headLength);
+  fillConvex({tail - side * half, shaftEnd - side * half, shaftEnd + side * half, tail + side * half});
+  fillDisc(tail, half);
+  fillConvex({head, base + side * headHalfWidth, base - side * headHalfWidth});
+}
+
+void GlCanvas::hatch(const Bounds& area, const Color& c, double opacity) {
+  if (area.empty()) return;
+  // only over the pixels the primitive just drawn has marked in the stencil
+  glStencilFunc(GL_EQUAL, stencil_, 0xff);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  glColor4d(c.r, c.g, c.b, c.a * std::clamp(opacity * 0.8, 0.0, 1.0));
+  // lines rising at 45°, fixed in the world so that they do not crawl when the view changes
+  const Vec2 along = Vec2(1.0, 1.0).normalized(), across = perpendicular(along);
+  const double spacing = 5.0 * style_.lineWidth * px_;
+  double lo = INFINITY, hi = -INFINITY, from = INFINITY, to = -INFINITY;
+  for (const Vec2& corner : {area.min, area.max, Vec2(area.min.x(), area.max.y()), Vec2(area.max.x(), area.min.y())}) {
+    lo = std::min(lo, corner.dot(across)), hi = std::max(hi, corner.dot(across));
+    from = std::min(from, corner.dot(along)), to = std::max(to, corner.dot(along));
+  }
+  const double half = 0.3 * style_.lineWidth * px_;
+  for (double k = std::floor(lo / spacing); k * spacing <= hi; k += 1.0) {
+    const Vec2 o = across * (k * spacing);
+    const Vec2 a = o + along * from, b = o + along * to;
+    fillConvex({a - across * half, b - across * half, b + across * half, a + across * half});
+  }
+  glStencilFunc(GL_NOTEQUAL, stencil_, 0xff);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+}
+
+}  // namespace render::draw

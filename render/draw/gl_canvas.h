@@ -1,0 +1,77 @@
+// The drawing interface implemented with OpenGL 1.x (fixed function, through OSMesa): world
+// coordinates, y up, sizes of lines, dots and arrow heads in output pixels whatever the zoom.
+// Text is queued and blended in after the GL frame is read back (FreeType, see text.h), so it
+// always lies on top.
+//
+// Each translucent call is one "primitive" under a fresh stencil value: a pixel is written at most
+// once per primitive, so the overlapping parts of an outline (edge quads and round joins) blend once,
+// and a static body's hatching stays inside its shape. Opaque calls leave the stencil alone, so that
+// Mesa can batch them.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "render/draw/camera.h"
+#include "render/draw/gl_context.h"
+#include "render/draw/style.h"
+#include "render/draw/text.h"
+#include "sim/debug/debug_draw.h"
+
+namespace render::draw {
+
+class GlCanvas : public sim::debug::DebugDraw {
+ public:
+  GlCanvas(GlContext& gl, TextRenderer& text, const Style& style);
+
+  // start a frame: clear to the background and look through `camera`
+  void begin(const Camera& camera);
+  // the frame, with the queued text on top
+  Image finish();
+
+  void polygon(const std::vector<Vec2>& vertices, const sim::debug::DrawStyle& style) override;
+  void circle(const Vec2& center, double radius, const sim::debug::DrawStyle& style) override;
+  void halfPlane(const Vec2& point, const Vec2& normal, const sim::debug::DrawStyle& style) override;
+  void segment(const Vec2& a, const Vec2& b, const sim::debug::DrawStyle& style) override;
+  void point(const Vec2& p, const sim::debug::DrawStyle& style) override;
+  void arrow(const Vec2& tail, const Vec2& head, const sim::debug::DrawStyle& style) override;
+  void text(const Vec2& at, const std::string& text, const sim::debug::DrawStyle& style) override;
+
+ private:
+  struct QueuedText {
+    Vec2 pixel;
+    std::string text;
+    Anchor anchor;
+    Color color;
+  };
+  // colors of a role: a fill (for shapes) and a stroke
+  Color fillColor(const sim::debug::DrawStyle& s) const;
+  Color strokeColor(const sim::debug::DrawStyle& s) const;
+  // a stroke's width in output pixels
+  double strokeWidth(sim::debug::DrawRole role) const;
+
+  // the GL work, vertices relative to the camera center. A primitive in color c at `opacity`: a
+  // translucent one, or one that `marks` its pixels (for hatching), under a fresh stencil value
+  void beginPrimitive(const Color& c, double opacity, bool marks = false);
+  void vertex(const Vec2& world);
+  void fillConvex(const std::vector<Vec2>& vertices);
+  void fillDisc(const Vec2& center, double radius);
+  void ring(const Vec2& center, double radius, double width);
+  void strokeSegment(const Vec2& a, const Vec2& b, double width);
+  void strokeClosed(const std::vector<Vec2>& vertices, double width);
+  void strokeArrow(const Vec2& tail, const Vec2& head, double width);
+  // diagonal lines over the pixels of the primitive just drawn
+  void hatch(const Bounds& area, const Color& c, double opacity);
+  int discSegments(double radius) const;
+
+  GlContext& gl_;
+  TextRenderer& textRenderer_;
+  const Style& style_;
+  Camera camera_{Vec2::Zero(), 1.0, 1, 1};
+  double px_ = 1.0;  // world length of one output pixel
+  int stencil_ = -1;     // the stencil value of the primitive being drawn, 0 for none
+  int lastStencil_ = 0;  // the last value given out since the stencil was cleared
+  std::vector<QueuedText> texts_;
+};
+
+}  // namespace render::draw

@@ -1,0 +1,126 @@
+#include "render/frame/energy_panel.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "render/draw/style.h"
+#include "render/draw/text.h"
+#include "render/frame/quantity_text.h"
+#include "sim/scene/scene_build.h"
+#include "sim/world/diagnostics.h"
+
+namespace render::frame {
+using namespace render::draw;
+
+namespace {
+
+using sim::debug::DrawRole;
+
+// the layout in text heights (em): inset from the frame's edges as the time caption, padding inside,
+// the pitch of rows, the bars' width
+constexpr double kInset = 0.5, kPad = 0.4, kRow = 1.3, kBar = 8.0;
+// a bar's top and bottom within its row: centered on a line of text
+constexpr double kBarTop = 0.5 * kLineHeight - 0.45, kBarBottom = 0.5 * kLineHeight + 0.45;
+// the panel is laid out once, from the widest text the run can write, in em
+double textWidth(const std::string& text) { return approximateWidth(text, 1.0); }
+
+std::string energyText(const EnergyBar& bar) { return quantityText(bar.name, bar.value, "J"); }
+
+std::string momentumText(const sim::world::World& world) { return vectorText("p", sim::world::linearMomentum(world), "kg·m/s"); }
+
+std::string angularText(const sim::world::World& world) { return quantityText("L", sim::world::angularMomentum(world), "kg·m²/s"); }
+
+}  // namespace
+
+std::vector<double> energyValues(const sim::world::World& world) {
+  std::vector<double> values;
+  for (const sim::core::Body& b : world.bodies) {
+    if (b.isStatic) continue;
+    const sim::world::KineticEnergy k = sim::world::kineticEnergy(b);
+    values.push_back(k.translational);
+    values.push_back(k.rotational);
+  }
+  const sim::world::Energy e = sim::world::energy(world);
+  // gravity or a spring: the scene has a potential energy (its zero is the world origin, as in `check`)
+  if (world.forces.gravity != Vec2::Zero() || !world.forces.springs.empty()) values.push_back(e.potential);
+  values.push_back(e.total());
+  return values;
+}
+
+std::vector<EnergyBar> energyBars(const sim::scene::SceneDef& def, const sim::world::World& world) {
+  const std::vector<double> values = energyValues(world);
+  std::vector<EnergyBar> bars;
+  // the names and roles in energyValues' order: two bars per moving body, then U when there is one, E
+  for (size_t i = 0; i < world.bodies.size(); ++i) {
+    if (world.bodies[i].isStatic) continue;
+    const std::string& name = def.bodies[i].label.empty() ? def.bodies[i].name : def.bodies[i].label;
+    bars.push_back({name + " ½mv²", values[bars.size()], DrawRole::KineticBar, static_cast<int>(i)});
+    bars.push_back({name + " ½Iω²", values[bars.size()], DrawRole::RotationalBar, static_cast<int>(i)});
+  }
+  if (bars.size() + 2 == values.size()) bars.push_back({"U", values[bars.size()], DrawRole::PotentialBar, -1});
+  bars.push_back({"E", values.back(), DrawRole::TotalBar, -1});
+  return bars;
+}
+
+double EnergyPanel::widthPx(const sim::scene::SceneDef& def, const RunSurvey& survey, double em) {
+  const bool energy = def.render.overlays.energy, momentum = def.render.overlays.momentum;
+  // the widest texts: each bar's name with the run's largest magnitude, negative; p and L likewise
+  const double most = std::max(std::abs(survey.maxEnergy), std::abs(survey.minEnergy));
+  double energyWidth = 0.0, momentumWidth = 0.0;
+  if (energy)
+    for (EnergyBar bar : energyBars(def, sim::scene::buildWorld(def))) {
+      bar.value = -most;
+      energyWidth = std::max(energyWidth, kBar + 0.5 + textWidth(energyText(bar)));
+    }
+  if (momentum) {
+    const double p = survey.maxLinearMomentum, l = survey.maxAngularMomentum;
+    momentumWidth = std::max(textWidth(vectorText("p", {-p, -p}, "kg·m/s")), textWidth(quantityText("L", -l, "kg·m²/s")));
+  }
+  return (2.0 * kPad + std::max(energyWidth, momentumWidth)) * em;
+}
+
+double EnergyPanel::bandPx(const sim::scene::SceneDef& def, const RunSurvey& survey, int heightPx) {
+  const sim::scene::OverlaysDef& o = def.render.overlays;
+  if (!o.energy && !o.momentum) return 0.0;
+  const double em = fontSizeFor(def.render, heightPx);
+  return widthPx(def, survey, em) + 2.0 * kInset * em;
+}
+
+EnergyPanel::EnergyPanel(const sim::scene::SceneDef& def, const Camera& camera, const RunSurvey& survey)
+    : def_(def),
+      camera_(camera),
+      energy_(def.render.overlays.energy),
+      momentum_(def.render.overlays.momentum),
+      lowest_(std::min(0.0, survey.minEnergy)),
+      span_(std::max(0.0, survey.maxEnergy) - std::min(0.0, survey.minEnergy)),
+      em_(fontSizeFor(def.render, camera.heightPx())) {
+  width_ = widthPx(def, survey, em_);
+  left_ = camera.widthPx() - kInset * em_ - width_;
+  barLeft_ = left_ + kPad * em_;
+  textLeft_ = barLeft_ + (kBar + 0.5) * em_;
+}
+
+void EnergyPanel::draw(const sim::world::World& world, sim::debug::DebugDraw& draw) const {
+  const std::vector<EnergyBar> bars = energy_ ? energyBars(def_, world) : std::vector<EnergyBar>{};
+  const int rows = static_cast<int>(bars.size()) + (momentum_ ? 2 : 0);
+  const double top = kInset * em_, right = left_ + width_, bottom = top + (2.0 * kPad + kRow * rows) * em_;
+  draw.polygon({at(left_, top), at(right, top), at(right, bottom), at(left_, bottom)}, {DrawRole::Panel, -1, 1.0});
+  double y = top + kPad * em_;
+  // a bar from the zero of the shared scale, to the right for positive values
+  const double zero = barLeft_ + (span_ > 0.0 ? -lowest_ / span_ : 0.0) * kBar * em_;
+  for (const EnergyBar& bar : bars) {
+    const double end = zero + (span_ > 0.0 ? bar.value / span_ : 0.0) * kBar * em_;
+    const double y0 = y + kBarTop * em_, y1 = y + kBarBottom * em_;
+    // a bar under half a pixel long is not drawn: nothing to see, and no sliver
+    if (std::abs(end - zero) >= 0.5)
+      draw.polygon({at(zero, y0), at(end, y0), at(end, y1), at(zero, y1)}, {bar.role, bar.body, 1.0});
+    draw.text(at(textLeft_, y), energyText(bar), {DrawRole::Caption, -1, 1.0});
+    y += kRow * em_;
+  }
+  if (momentum_) {
+    draw.text(at(barLeft_, y), momentumText(world), {DrawRole::Caption, -1, 1.0});
+    draw.text(at(barLeft_, y + kRow * em_), angularText(world), {DrawRole::Caption, -1, 1.0});
+  }
+}
+
+}  // namespace render::frame

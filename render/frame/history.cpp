@@ -1,0 +1,131 @@
+#include "render/frame/history.h"
+
+#include <algorithm>
+
+namespace render::frame {
+using namespace render::draw;
+
+History::History(const sim::world::World& world, Options options) : options_(std::move(options)) {
+  trails_.resize(world.bodies.size());
+  points_.resize(options_.points.size());
+  afterStep(world);
+}
+
+void History::afterStep(const sim::world::World& world) {
+  if (options_.trails)
+    for (size_t i = 0; i < world.bodies.size(); ++i)
+      if (!world.bodies[i].isStatic) trails_[i].push_back(world.bodies[i].x);
+  for (size_t k = 0; k < points_.size(); ++k) {
+    const auto& [body, local] = options_.points[k];
+    points_[k].push_back(world.bodies[body].pose().toWorld(local));
+  }
+  observeImpacts(world);
+  observeContacts(world);
+  forgetOld(world.time);
+}
+
+void History::afterEvent(const sim::world::World& world, const sim::world::ImpulseEvent& e) {
+  if (!options_.eventImpulses) return;
+  const sim::core::Body& b = world.bodies[e.body];
+  const Vec2 r = e.pointInWorld ? e.point : b.pose().toWorld(e.point);
+  // the arrow ends where the impulse is applied, as a blow that strikes the body there
+  Moment m{world.time, {}, Moment::Kind::Event, {-1, -1}};
+  const Vec2 tail = r - options_.impulseScale * e.impulse;
+  m.calls.arrow(tail, r, {sim::debug::DrawRole::Impulse, e.body, 1.0});
+  if (options_.labels) options_.labels->event(e, tail, r, m.calls);
+  moments_.push_back(std::move(m));
+}
+
+void History::observeImpacts(const sim::world::World& world) {
+  if (!options_.impacts) {
+    impactsSeen_ = world.impacts.size();
+    return;
+  }
+  for (; impactsSeen_ < world.impacts.size(); ++impactsSeen_) {
+    const sim::world::ImpactRecord& r = world.impacts[impactsSeen_];
+    // one moment per pair: its latest impact (all the points of that instant) replaces the ones
+    // before, so that a pair hitting again and again (a jittering stack, a ball's last bounces)
+    // shows one set of arrows and not a pile of fading ones
+    const std::pair<int, int> pair(r.a, r.b);
+    auto m = std::find_if(moments_.rbegin(), moments_.rend(),
+                          [&](const Moment& k) { return k.kind == Moment::Kind::Impact && k.pair == pair; });
+    if (m == moments_.rend()) {
+      moments_.push_back({r.t, {}, Moment::Kind::Impact, pair});
+      m = moments_.rbegin();
+    } else if (m->time != r.t) {
+      m->time = r.t;
+      m->calls.clear();
+    }
+    DrawList& d = m->calls;
+    const bool first = d.empty();
+    // the impulse on each moving body (γ n̂ on A, −γ n̂ on B), from the point
+    const Vec2 j = options_.impulseScale * r.impulse * r.normal;
+    if (!world.bodies[r.a].isStatic) d.arrow(r.point, r.point + j, {sim::debug::DrawRole::Impulse, r.a, 1.0});
+    if (!world.bodies[r.b].isStatic) d.arrow(r.point, r.point - j, {sim::debug::DrawRole::Impulse, r.b, 1.0});
+    // the normal as the notes draw it, from B into A; turned into B when A does not move (a floor)
+    const Vec2 n = world.bodies[r.a].isStatic ? Vec2(-r.normal) : r.normal;
+    d.arrow(r.point, r.point + options_.normalLength * n, {sim::debug::DrawRole::ContactNormal, -1, 1.0});
+    d.point(r.point, {sim::debug::DrawRole::ContactPoint, -1, 1.0});
+    if (options_.labels) options_.labels->impact(world, r, first, d);
+  }
+}
+
+void History::observeContacts(const sim::world::World& world) {
+  if (!options_.contacts) return;
+  DrawList now;
+  options_.contacts(world, now);
+  if (now.empty()) {
+    touching_ = -1;
+    return;
+  }
+  // contacts that go on touching step after step are one moment, kept up to date; a new touch
+  // after a separation is a new moment, so that the last one fades while the next one shows
+  if (touching_ >= 0) {
+    moments_[touching_] = {world.time, std::move(now), Moment::Kind::Contact, {-1, -1}};
+  } else {
+    moments_.push_back({world.time, std::move(now), Moment::Kind::Contact, {-1, -1}});
+    touching_ = static_cast<long>(moments_.size()) - 1;
+  }
+}
+
+void History::forgetOld(double now) {
+  const double hold = options_.hold;
+  const auto keep = [&](const Moment& m) { return now - m.time <= hold; };
+  if (std::all_of(moments_.begin(), moments_.end(), keep)) return;
+  const Moment* touching = touching_ >= 0 ? &moments_[touching_] : nullptr;
+  std::vector<Moment> kept;
+  long index = -1;
+  for (const Moment& m : moments_) {
+    if (!keep(m)) continue;
+    if (&m == touching) index = static_cast<long>(kept.size());
+    kept.push_back(m);
+  }
+  moments_ = std::move(kept);
+  touching_ = index;
+}
+
+void History::drawTrails(sim::debug::DebugDraw& draw, double spacing) const {
+  for (size_t i = 0; i < trails_.size(); ++i) drawPath(trails_[i], spacing, {sim::debug::DrawRole::Trail, static_cast<int>(i), 1.0}, draw);
+}
+
+void History::drawPath(const std::vector<Vec2>& path, double spacing, const sim::debug::DrawStyle& style, sim::debug::DebugDraw& draw) {
+  if (path.size() < 2) return;
+  Vec2 from = path.front();
+  for (size_t k = 1; k < path.size(); ++k) {
+    const bool last = k + 1 == path.size();
+    if ((path[k] - from).norm() < spacing && !last) continue;
+    draw.segment(from, path[k], style);
+    from = path[k];
+  }
+}
+
+void History::drawAfterimages(double t, sim::debug::DebugDraw& draw) const {
+  const double hold = options_.hold;
+  for (const Moment& m : moments_) {
+    const double age = t - m.time;
+    if (age < 0.0 || age > hold) continue;
+    m.calls.replay(draw, hold > 0.0 ? 1.0 - age / hold : 1.0);
+  }
+}
+
+}  // namespace render::frame

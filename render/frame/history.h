@@ -1,0 +1,71 @@
+// What a frame shows besides the present state, gathered while the world steps: where each body has
+// been (its trail), and what happened a moment ago and stays on screen a while, fading (an impact's
+// contact point, normal and impulses; the arrow of an event's impulse; contacts after they part),
+// so that a video shows them for more than the one frame in which they happen.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "render/draw/draw_list.h"
+#include "render/frame/impact_labels.h"
+#include "sim/world/world.h"
+
+namespace render::frame {
+using namespace render::draw;
+
+class History : public sim::world::StepObserver {
+ public:
+  // describes the contacts of the world now (points, normals, impulses, the SAT overlay)
+  using ContactDescriber = std::function<void(const sim::world::World&, sim::debug::DebugDraw&)>;
+
+  struct Options {
+    bool trails = false;
+    double hold = 0.5;                 // s an afterimage stays, fading
+    bool eventImpulses = true;         // an arrow where each event applies its impulse
+    bool impacts = true;               // each impact the collision response logs: point, normal, impulses
+    double impulseScale = 1.0;         // m of arrow per N·s
+    double normalLength = 1.0;         // m, the arrow of a contact normal
+    ContactDescriber contacts;         // the contacts touching now (empty: none)
+    std::vector<std::pair<int, Vec2>> points = {};  // body points (body coordinates) whose paths to keep
+    std::optional<ImpactLabels> labels = std::nullopt;  // impact_values: text on impact and event afterimages
+  };
+
+  // starts with the world's present state (its contacts and positions at the start)
+  History(const sim::world::World& world, Options options);
+
+  void afterStep(const sim::world::World& world) override;
+  void afterEvent(const sim::world::World& world, const sim::world::ImpulseEvent& event) override;
+
+  // every dynamic body's path up to now as Trail segments, points closer than `spacing` merged
+  void drawTrails(sim::debug::DebugDraw& draw, double spacing) const;
+  // the path so far of Options::points[k]
+  const std::vector<Vec2>& pointPath(size_t k) const { return points_[k]; }
+  // a path as segments in `style`, points closer than `spacing` merged (the last one always kept)
+  static void drawPath(const std::vector<Vec2>& path, double spacing, const sim::debug::DrawStyle& style, sim::debug::DebugDraw& draw);
+  // what happened at most `hold` before `t`, its opacity falling linearly from 1 to 0 with age
+  void drawAfterimages(double t, sim::debug::DebugDraw& draw) const;
+
+ private:
+  struct Moment {
+    enum class Kind { Contact, Impact, Event };
+    double time;
+    DrawList calls;
+    Kind kind;
+    std::pair<int, int> pair;  // the bodies of an impact
+  };
+  void observeContacts(const sim::world::World& world);
+  void observeImpacts(const sim::world::World& world);
+  void forgetOld(double now);
+
+  Options options_;
+  std::vector<std::vector<Vec2>> trails_;  // by body; empty for static bodies or without trails
+  std::vector<std::vector<Vec2>> points_;  // by Options::points
+  std::vector<Moment> moments_;
+  long touching_ = -1;     // index in moments_ of the contacts still touching, -1 when none
+  size_t impactsSeen_ = 0;  // records of world.impacts already turned into moments
+};
+
+}  // namespace render::frame

@@ -1,0 +1,24 @@
+#include "render/frame/quantity_text.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace render::frame {
+
+std::string signedNumber(double x, int decimals) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, std::abs(x));
+  // a value that rounds to zero has no sign to show
+  const bool zero = std::string(buf).find_first_not_of("0.") == std::string::npos;
+  return (x < 0.0 && !zero ? "\u2212" : "") + std::string(buf);
+}
+
+std::string quantityText(const std::string& name, double x, const std::string& unit) {
+  return name + " = " + signedNumber(x) + " " + unit;
+}
+
+std::string vectorText(const std::string& name, const sim::core::Vec2& v, const std::string& unit) {
+  return name + " = (" + signedNumber(v.x()) + ", " + signedNumber(v.y()) + ") " + unit;
+}
+
+}  // namespace render::frame

@@ -1,0 +1,155 @@
+#include "render/frame/survey.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "render/draw/style.h"
+#include "render/frame/caption.h"
+#include "render/frame/energy_panel.h"
+#include "render/frame/point_forces.h"
+#include "sim/scene/scene_build.h"
+#include "sim/world/diagnostics.h"
+
+namespace render::frame {
+using namespace render::draw;
+
+namespace {
+
+// the bodies' extent and speed after every step
+class Surveyor : public sim::world::StepObserver {
+ public:
+  Surveyor(const sim::scene::SceneDef& def, RunSurvey& out) : def_(def), out_(out) {}
+  void afterStep(const sim::world::World& world) override {
+    for (const sim::core::Body& b : world.bodies) {
+      out_.bounds.add(bodyBounds(b));
+      out_.maxSpeed = std::max(out_.maxSpeed, b.v.norm());
+    }
+    surveyOverlays(def_, world, out_);
+  }
+  void afterEvent(const sim::world::World& world, const sim::world::ImpulseEvent&) override { afterStep(world); }
+
+ private:
+  const sim::scene::SceneDef& def_;
+  RunSurvey& out_;
+};
+
+}  // namespace
+
+Bounds bodyBounds(const sim::core::Body& b) {
+  Bounds box;
+  switch (b.shape.kind) {
+    case sim::core::ShapeKind::Polygon:
+      for (const Vec2& v : b.shape.vertices) box.add(b.pose().toWorld(v));
+      break;
+    case sim::core::ShapeKind::Circle:
+      box.add(b.x - Vec2(b.shape.radius, b.shape.radius));
+      box.add(b.x + Vec2(b.shape.radius, b.shape.radius));
+      break;
+    default:
+      // unbounded shapes (a half-plane): the point that anchors them should be in view
+      box.add(b.x);
+  }
+  return box;
+}
+
+RunSurvey surveyRun(const sim::scene::SceneDef& def, double until) {
+  RunSurvey survey;
+  for (const sim::scene::EventDef& e : def.events) survey.maxImpulse = std::max(survey.maxImpulse, e.impulse.norm());
+  sim::world::World world = sim::scene::buildWorld(def);
+  Surveyor surveyor(def, survey);
+  surveyor.afterStep(world);
+  // a spring's world anchor belongs in the picture with what hangs from it
+  for (const sim::core::Spring& sp : world.forces.springs)
+    if (sp.bodyB == sim::core::kWorldAnchor) survey.bounds.add(sp.pointB);
+  world.advanceTo(until < 0.0 ? def.duration : until, &surveyor);
+  for (const sim::world::ImpactRecord& r : world.impacts) survey.maxImpulse = std::max(survey.maxImpulse, std::abs(r.impulse));
+  survey.impactTimes = impactTimes(world);
+  return survey;
+}
+
+void surveyOverlays(const sim::scene::SceneDef& def, const sim::world::World& world, RunSurvey& out) {
+  for (size_t i = 0; i < world.bodies.size(); ++i) {
+    const sim::core::Body& b = world.bodies[i];
+    if (b.isStatic) continue;
+    out.maxOmega = std::max(out.maxOmega, std::abs(b.omega));
+    out.maxMomentum = std::max(out.maxMomentum, b.mass * b.v.norm());
+    if (world.forces.pointForces.empty()) continue;
+    const std::vector<AppliedForce> forces = pointForcesOn(world, static_cast<int>(i));
+    for (const AppliedForce& f : forces) out.maxForce = std::max(out.maxForce, f.force.norm());
+    out.maxTorque = std::max(out.maxTorque, std::abs(torqueOf(b, forces)));
+  }
+  // the panel's values cost a pass over the bodies: only for scenes that show it
+  const sim::scene::OverlaysDef& o = def.render.overlays;
+  if (o.energy)
+    for (double value : energyValues(world)) {
+      out.minEnergy = std::min(out.minEnergy, value);
+      out.maxEnergy = std::max(out.maxEnergy, value);
+    }
+  if (o.momentum) {
+    out.maxLinearMomentum = std::max(out.maxLinearMomentum, sim::world::linearMomentum(world).norm());
+    out.maxAngularMomentum = std::max(out.maxAngularMomentum, std::abs(sim::world::angularMomentum(world)));
+  }
+}
+
+double arrowScale(double given, double largest, const Camera& camera) {
+  // the largest value's arrow is this fraction of the view's height
+  constexpr double kArrowFraction = 1.0 / 6.0;
+  if (given > 0.0) return given;
+  return largest > 0.0 ? kArrowFraction * camera.worldHeight() / largest : 1.0;
+}
+
+Camera cameraFor(const sim::scene::SceneDef& def, const RunSurvey& survey) { return cameraFor(def, survey, survey.bounds); }
+
+Camera cameraFor(const sim::scene::SceneDef& def, const RunSurvey& survey, const Bounds& bounds) {
+  const sim::scene::RenderDef& r = def.render;
+  if (!r.camera.automatic) return Camera(r.camera.center, r.camera.height, r.width, r.height);
+  // with a caption the bodies are fitted above its band, and with an energy panel left of it, so
+  // that neither ever covers them
+  const double band = captionOf(def).empty() ? 0.0 : captionLayout(fontSizeFor(r, r.height)).band();
+  const int above = static_cast<int>(std::lround(r.height - band));
+  // (a panel wider than half a small frame is drawn over the bodies instead: they need the room more)
+  const double panel = EnergyPanel::bandPx(def, survey, r.height);
+  const int left = static_cast<int>(std::lround(panel <= 0.5 * r.width ? r.width - panel : r.width));
+  const Camera fitted = Camera::fit(bounds, r.camera.margin, left, above);
+  if (above == r.height && left == r.width) return fitted;
+  // the same scale over the whole frame, the fitted region's center moved to the middle of the free part
+  const double px = fitted.pixelSize();
+  const Vec2 shift(0.5 * (r.width - left) * px, -0.5 * (r.height - above) * px);
+  return Camera(fitted.center() + shift, px * r.height, r.width, r.height);
+}
+
+void shareScales(const std::vector<RunSurvey*>& surveys) {
+  if (surveys.empty()) return;
+  RunSurvey all = *surveys.front();
+  for (const RunSurvey* s : surveys) {
+    all.maxSpeed = std::max(all.maxSpeed, s->maxSpeed);
+    all.maxImpulse = std::max(all.maxImpulse, s->maxImpulse);
+    all.maxOmega = std::max(all.maxOmega, s->maxOmega);
+    all.maxForce = std::max(all.maxForce, s->maxForce);
+    all.maxTorque = std::max(all.maxTorque, s->maxTorque);
+    all.maxMomentum = std::max(all.maxMomentum, s->maxMomentum);
+    all.minEnergy = std::min(all.minEnergy, s->minEnergy);
+    all.maxEnergy = std::max(all.maxEnergy, s->maxEnergy);
+    all.maxLinearMomentum = std::max(all.maxLinearMomentum, s->maxLinearMomentum);
+    all.maxAngularMomentum = std::max(all.maxAngularMomentum, s->maxAngularMomentum);
+  }
+  for (RunSurvey* s : surveys) {
+    all.bounds = s->bounds;
+    all.impactTimes = s->impactTimes;
+    *s = all;
+  }
+}
+
+std::vector<double> impactTimes(const sim::world::World& world) {
+  // impacts closer than this are one instant (several points of one manifold, simultaneous hits)
+  constexpr double kSameInstant = 1e-9;
+  std::vector<double> times;
+  for (const sim::world::ImpactRecord& r : world.impacts) times.push_back(r.t);
+  std::sort(times.begin(), times.end());
+  std::vector<double> distinct;
+  for (double t : times)
+    if (distinct.empty() || t - distinct.back() > kSameInstant) distinct.push_back(t);
+  return distinct;
+}
+
+}  // namespace render::frame

@@ -1,0 +1,54 @@
+// A run of the whole scene before anything is drawn, to learn what the frames need to know in
+// advance: the region the bodies cover (for the automatic camera), the fastest speed and the
+// largest event impulse (for arrow scales), and when impacts happen (for `snapshot --impacts`).
+#pragma once
+
+#include <vector>
+
+#include "render/draw/camera.h"
+#include "sim/scene/scene_def.h"
+#include "sim/world/world.h"
+
+namespace render::frame {
+using namespace render::draw;
+
+struct RunSurvey {
+  Bounds bounds;                    // every body's shape at every step, m
+  double maxSpeed = 0.0;            // of any center of mass, m/s
+  double maxImpulse = 0.0;          // of the largest event or impact, N·s
+  std::vector<double> impactTimes;  // ascending, each once
+  // the lecture overlays' scales (render.overlays)
+  double maxOmega = 0.0;            // |ω| of any body, rad/s
+  double maxForce = 0.0;            // of any point force while it is on, N
+  double maxTorque = 0.0;           // |Σ r′ × f| of the point forces on any body, N·m
+  double maxMomentum = 0.0;         // |m v| of any moving body, kg·m/s
+  double minEnergy = 0.0, maxEnergy = 0.0;  // of any bar of the energy panel (≤ 0, ≥ 0), J
+  double maxLinearMomentum = 0.0;   // |Σ m v|, kg·m/s
+  double maxAngularMomentum = 0.0;  // |L| about the origin, kg·m²/s
+};
+
+// the scene run from 0 to `until` (its duration when negative); throws sim::world::Diverged
+RunSurvey surveyRun(const sim::scene::SceneDef& def, double until = -1.0);
+// the overlays' extremes of the world now, added into `out` (by surveyRun after every step)
+void surveyOverlays(const sim::scene::SceneDef& def, const sim::world::World& world, RunSurvey& out);
+
+// every survey's arrow and bar scales (not its bounds or impacts) set to the extremes over all of
+// them, so that side-by-side pictures of variants compare at one scale
+void shareScales(const std::vector<RunSurvey*>& surveys);
+
+// the region a body's shape covers now (its position alone for shapes without an extent)
+Bounds bodyBounds(const sim::core::Body& body);
+
+// an arrow scale, m of arrow per unit: `given` when positive, else one that makes `largest` 1/6 of
+// the view's height (1 when there is nothing to scale)
+double arrowScale(double given, double largest, const Camera& camera);
+
+// the scene's camera: its fixed one, or fitted over `bounds` (the survey's own by default) with its
+// margin, above the caption's band when it has a caption and left of the energy panel's when it has one
+Camera cameraFor(const sim::scene::SceneDef& def, const RunSurvey& survey);
+Camera cameraFor(const sim::scene::SceneDef& def, const RunSurvey& survey, const Bounds& bounds);
+
+// the times at which the world's collision response applied impulses so far, ascending, each once
+std::vector<double> impactTimes(const sim::world::World& world);
+
+}  // namespace render::frame

@@ -1,0 +1,179 @@
+#include "render/frame/teaching_arrows.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "render/draw/style.h"
+#include "render/frame/label_place.h"
+#include "render/frame/point_forces.h"
+#include "render/frame/quantity_text.h"
+#include "sim/scene/scene_build.h"
+
+namespace render::frame {
+using namespace render::draw;
+
+namespace {
+
+using sim::debug::DrawRole;
+using Show = sim::scene::ArrowDef::Show;
+
+constexpr double kPi = std::numbers::pi;
+// the largest |ω| (|τ|) of the run sweeps this much; the arcs' radii as fractions of the view's height
+// (ω inside τ, so both fit around one body), and the body frame's axes likewise
+constexpr double kMaxSweep = 1.5 * kPi;
+constexpr double kOmegaRadius = 0.06, kTorqueRadius = 0.09, kFrameLength = 0.1;
+// a curved arrow's head is drawn as a straight arrow over its last 14 px of arc
+constexpr double kHeadPx = 14.0;
+
+DrawRole roleOf(Show show) {
+  switch (show) {
+    case Show::Velocity: return DrawRole::Velocity;
+    case Show::Offset: return DrawRole::Offset;
+    case Show::Omega: return DrawRole::AngularVelocity;
+    case Show::Frame: return DrawRole::BodyFrame;
+    case Show::Path: return DrawRole::Path;
+    case Show::Force: return DrawRole::Force;
+    case Show::Torque: return DrawRole::Torque;
+    case Show::Momentum: return DrawRole::Momentum;
+  }
+  return DrawRole::Velocity;
+}
+
+Vec2 onCircle(const Vec2& center, double radius, double angle) {
+  return center + radius * Vec2(std::cos(angle), std::sin(angle));
+}
+
+}  // namespace
+
+TeachingArrows::TeachingArrows(const sim::scene::SceneDef& def, const Camera& camera, const RunSurvey& survey,
+                               double velocityScale)
+    : px_(camera.pixelSize()),
+      em_(fontSizeFor(def.render, camera.heightPx()) * camera.pixelSize()),
+      viewHeight_(camera.worldHeight()),
+      velocityScale_(velocityScale),
+      forceScale_(arrowScale(def.render.overlays.forceScale, survey.maxForce, camera)),
+      momentumScale_(arrowScale(def.render.overlays.momentumScale, survey.maxMomentum, camera)),
+      maxOmega_(survey.maxOmega),
+      maxTorque_(survey.maxTorque) {
+  int paths = 0;
+  for (const sim::scene::ArrowDef& a : def.render.overlays.arrows) {
+    // `at` is written as a force's point: in the shape's coordinates, before the centroid shift
+    const Vec2 local = a.at - sim::scene::massProperties(def.bodies[a.body]).centroid;
+    arrows_.push_back({a, local, a.show == Show::Path ? paths++ : -1});
+  }
+}
+
+std::vector<std::pair<int, Vec2>> TeachingArrows::paths() const {
+  std::vector<std::pair<int, Vec2>> out;
+  for (const Arrow& a : arrows_)
+    if (a.path >= 0) out.emplace_back(a.def.body, a.local);
+  return out;
+}
+
+std::string TeachingArrows::defaultLabel(Show show) {
+  switch (show) {
+    case Show::Velocity: return "v";
+    case Show::Offset: return "r′";
+    case Show::Omega: return "ω";
+    case Show::Frame: return "x_b";
+    case Show::Path: return "r";
+    case Show::Force: return "f";
+    case Show::Torque: return "τ";
+    case Show::Momentum: return "p";
+  }
+  return "";
+}
+
+void TeachingArrows::curvedArrow(const Vec2& center, double radius, double middle, double sweep, double pixel,
+                                 const sim::debug::DrawStyle& style, sim::debug::DebugDraw& draw) {
+  const double length = std::abs(sweep) * radius;
+  if (!(length > pixel)) return;
+  const double sign = sweep > 0.0 ? 1.0 : -1.0, from = middle - 0.5 * sweep, to = middle + 0.5 * sweep;
+  // the arc in pieces of at most π/32 (under 0.1 px off the circle at these radii), then the head
+  const double head = std::min(std::abs(sweep), kHeadPx * pixel / radius);
+  const double arc = std::abs(sweep) - head;
+  const int pieces = static_cast<int>(std::ceil(arc / (kPi / 32.0)));
+  for (int k = 0; k < pieces; ++k)
+    draw.segment(onCircle(center, radius, from + sign * arc * k / pieces),
+                 onCircle(center, radius, from + sign * arc * (k + 1) / pieces), style);
+  draw.arrow(onCircle(center, radius, to - sign * head), onCircle(center, radius, to), style);
+}
+
+void TeachingArrows::draw(const sim::world::World& world, const History& history, sim::debug::DebugDraw& draw) const {
+  for (size_t i = 0; i < arrows_.size(); ++i) drawOne(arrows_[i], static_cast<int>(i), world, history, draw);
+}
+
+void TeachingArrows::label(const Arrow& a, const std::string& value, const Vec2& anchor, const Vec2& direction,
+                           sim::debug::DebugDraw& draw) const {
+  const std::string name = a.def.label.empty() ? defaultLabel(a.def.show) : a.def.label;
+  const std::string text = a.def.value && !value.empty() ? name + value : name;
+  draw.text(labelBeyond(anchor, direction, text, em_), text, {DrawRole::Label, a.def.body, 1.0});
+}
+
+void TeachingArrows::drawOne(const Arrow& a, int index, const sim::world::World& world, const History& history,
+                             sim::debug::DebugDraw& draw) const {
+  const sim::core::Body& b = world.bodies[a.def.body];
+  const sim::debug::DrawStyle style{roleOf(a.def.show), a.def.body, 1.0, a.def.color.empty() ? -1 : index};
+  const Vec2 point = b.pose().toWorld(a.local);
+  // the value after the label: " = 1.25 m/s"
+  const auto value = [](double x, const std::string& unit) { return quantityText("", x, unit); };
+  // a straight arrow from `tail` along `vector`, labeled past its head; none under a pixel long
+  const auto straight = [&](const Vec2& tail, const Vec2& vector, const std::string& shown) {
+    if (!(vector.norm() > px_)) return;
+    draw.arrow(tail, tail + vector, style);
+    label(a, shown, tail + vector, vector.normalized(), draw);
+  };
+  switch (a.def.show) {
+    case Show::Velocity: {
+      // the notes' velocity of a body point: v + ω × r′
+      const Vec2 v = b.pointVelocity(point);
+      straight(point, velocityScale_ * v, value(v.norm(), "m/s"));
+      break;
+    }
+    case Show::Offset: {
+      const Vec2 r = point - b.x;
+      if (!(r.norm() > px_)) break;
+      draw.arrow(b.x, point, style);
+      // beside its middle, to the left: its head is where a velocity arrow starts
+      label(a, value(r.norm(), "m"), 0.5 * (b.x + point), Vec2(-r.y(), r.x()).normalized(), draw);
+      break;
+    }
+    case Show::Momentum: straight(b.x, momentumScale_ * b.mass * b.v, value(b.mass * b.v.norm(), "kg·m/s")); break;
+    case Show::Force:
+      for (const AppliedForce& f : pointForcesOn(world, a.def.body))
+        straight(f.point, forceScale_ * f.force, value(f.force.norm(), "N"));
+      break;
+    case Show::Omega:
+    case Show::Torque: {
+      // ω arcs over the top, τ under the bottom, each labeled out from its middle
+      const bool omega = a.def.show == Show::Omega;
+      const double amount = omega ? b.omega : torqueOf(b, pointForcesOn(world, a.def.body));
+      const double largest = omega ? maxOmega_ : maxTorque_;
+      const double radius = (omega ? kOmegaRadius : kTorqueRadius) * viewHeight_, middle = omega ? 0.5 * kPi : -0.5 * kPi;
+      if (!(largest > 0.0) || amount == 0.0) break;
+      curvedArrow(b.x, radius, middle, kMaxSweep * amount / largest, px_, style, draw);
+      const Vec2 out(0.0, omega ? 1.0 : -1.0);
+      label(a, value(amount, omega ? "rad/s" : "N·m"), b.x + radius * out, out, draw);
+      break;
+    }
+    case Show::Frame: {
+      const double length = kFrameLength * viewHeight_;
+      const Vec2 x = b.q.apply(Vec2::UnitX()), y = b.q.apply(Vec2::UnitY());
+      draw.arrow(b.x, b.x + length * x, style);
+      draw.arrow(b.x, b.x + length * y, style);
+      const sim::debug::DrawStyle text{DrawRole::Label, a.def.body, 1.0};
+      draw.text(labelBeyond(b.x + length * x, x, "x_b", em_), "x_b", text);
+      draw.text(labelBeyond(b.x + length * y, y, "y_b", em_), "y_b", text);
+      break;
+    }
+    case Show::Path: {
+      History::drawPath(history.pointPath(a.path), 1.5 * px_, style, draw);
+      draw.point(point, style);
+      label(a, vectorText("", point, "m"), point, directionOr(point - b.x, Vec2::UnitY()), draw);
+      break;
+    }
+  }
+}
+
+}  // namespace render::frame

@@ -1,0 +1,52 @@
+// The `arrows:` of the render: block, drawn every frame: the notes' vectors of a rigid body (notes:
+// "Dynamics of a free body", "Forces and torques") at a body point `at`, each labeled: v + ω × r′,
+// r′ = R r_b, ω and τ as curved arrows, the body frame, the path of the point, the point forces, m v.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "render/draw/camera.h"
+#include "render/frame/history.h"
+#include "render/frame/survey.h"
+#include "sim/scene/scene_def.h"
+#include "sim/world/world.h"
+
+namespace render::frame {
+using namespace render::draw;
+
+class TeachingArrows {
+ public:
+  // `velocityScale`: m of arrow per m/s, as the frame's velocity arrows
+  TeachingArrows(const sim::scene::SceneDef& def, const Camera& camera, const RunSurvey& survey, double velocityScale);
+
+  // the body points whose paths the history must keep (`show: path`), in body coordinates
+  std::vector<std::pair<int, Vec2>> paths() const;
+  // every arrow at the world's present state; `history` kept the paths()
+  void draw(const sim::world::World& world, const History& history, sim::debug::DebugDraw& draw) const;
+
+  // "v", "r′", "ω", "x_b", "r", "f", "τ", "p"
+  static std::string defaultLabel(sim::scene::ArrowDef::Show show);
+  // a curved arrow around `center`, `radius` from it, sweeping `sweep` (counter-clockwise when
+  // positive) centered on the direction `middle` (an angle); `pixel`: the world length of a pixel
+  static void curvedArrow(const Vec2& center, double radius, double middle, double sweep, double pixel,
+                          const sim::debug::DrawStyle& style, sim::debug::DebugDraw& draw);
+
+ private:
+  struct Arrow {
+    sim::scene::ArrowDef def;
+    Vec2 local;       // `at` in body coordinates after the centroid shift
+    int path = -1;    // index among paths()
+  };
+  void drawOne(const Arrow& a, int index, const sim::world::World& world, const History& history, sim::debug::DebugDraw& draw) const;
+  // the arrow's label (with its value) beyond `anchor` in `direction`
+  void label(const Arrow& a, const std::string& value, const Vec2& anchor, const Vec2& direction, sim::debug::DebugDraw& draw) const;
+
+  std::vector<Arrow> arrows_;
+  double px_, em_, viewHeight_;                         // world lengths of a pixel, of a line of text, of the view
+  double velocityScale_, forceScale_, momentumScale_;   // m of arrow per m/s, N, kg·m/s
+  double maxOmega_, maxTorque_;                         // the run's, for the curved arrows' sweeps
+};
+
+}  // namespace render::frame

@@ -1,0 +1,33 @@
+#include "render/jobs/atomic_file.h"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+
+namespace render::jobs {
+
+AtomicFile::AtomicFile(std::string path)
+    : path_(std::move(path)), temporary_(path_ + ".part-" + std::to_string(::getpid())) {
+  out_.open(temporary_, std::ios::binary | std::ios::trunc);
+  if (!out_) throw std::runtime_error(path_ + ": cannot write here (" + std::strerror(errno) + "); choose a writable path");
+}
+
+AtomicFile::~AtomicFile() {
+  if (committed_) return;
+  out_.close();
+  std::remove(temporary_.c_str());
+}
+
+void AtomicFile::commit() {
+  out_.flush();
+  const bool ok = static_cast<bool>(out_);
+  out_.close();
+  if (!ok || std::rename(temporary_.c_str(), path_.c_str()) != 0)
+    throw std::runtime_error(path_ + ": could not finish writing (" + std::strerror(errno) + ")");
+  committed_ = true;
+}
+
+}  // namespace render::jobs

@@ -1,0 +1,29 @@
+// An output file written under a temporary name and renamed into place only when complete, so a
+// failed or interrupted run never leaves a half file nor clobbers the previous good one.
+#pragma once
+
+#include <fstream>
+#include <string>
+
+namespace render::jobs {
+
+class AtomicFile {
+ public:
+  // throws std::runtime_error naming the path when it cannot be created
+  explicit AtomicFile(std::string path);
+  ~AtomicFile();
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+
+  std::ofstream& stream() { return out_; }
+  const std::string& temporaryPath() const { return temporary_; }
+  // flush, close and rename over the final path; throws std::runtime_error on failure
+  void commit();
+
+ private:
+  std::string path_, temporary_;
+  std::ofstream out_;
+  bool committed_ = false;
+};
+
+}  // namespace render::jobs

@@ -1,0 +1,38 @@
+#include "render/jobs/interrupt.h"
+
+#include <csignal>
+#include <iostream>
+
+namespace render::jobs {
+
+namespace {
+
+volatile std::sig_atomic_t interruptedFlag = 0;
+
+extern "C" void raiseFlag(int) { interruptedFlag = 1; }
+
+}  // namespace
+
+void catchInterrupts() {
+  struct sigaction action {};
+  action.sa_handler = raiseFlag;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
+void checkInterrupted() {
+  if (interruptedFlag) throw Interrupted();
+}
+
+int runInterruptible(const std::function<int()>& command) {
+  catchInterrupts();
+  try {
+    return command();
+  } catch (const Interrupted& e) {
+    std::cerr << "rigidreel: " << e.what() << '\n';
+    return kExitInterrupted;
+  }
+}
+
+}  // namespace render::jobs

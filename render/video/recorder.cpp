@@ -1,0 +1,118 @@
+#include "render/video/recorder.h"
+
+#include <condition_variable>
+#include <cstdio>
+#include <deque>
+#include <exception>
+#include <mutex>
+#include <thread>
+
+#include "render/draw/png_io.h"
+#include "render/jobs/interrupt.h"
+
+namespace render::video {
+using namespace render::jobs;
+using namespace render::draw;
+using namespace render::frame;
+
+namespace {
+
+// frames painted but not yet written: enough to absorb a slow frame on either side, while a
+// 1280×720 frame is 3.7 MB
+constexpr size_t kQueueFrames = 3;
+
+// the frames between the painting thread and the writing thread
+class FrameQueue {
+ public:
+  // false once the writer has failed: stop painting
+  bool push(long index, Image image) {
+    std::unique_lock lock(mutex_);
+    roomLeft_.wait(lock, [&] { return queue_.size() < kQueueFrames || failure_; });
+    if (failure_) return false;
+    queue_.emplace_back(index, std::move(image));
+    ready_.notify_one();
+    return true;
+  }
+  void close() {
+    std::lock_guard lock(mutex_);
+    closed_ = true;
+    ready_.notify_one();
+  }
+  // the writer's loop: until closed and empty, or a sink throws
+  void drain(const std::vector<FrameSink*>& sinks) {
+    for (;;) {
+      std::pair<long, Image> item;
+      {
+        std::unique_lock lock(mutex_);
+        ready_.wait(lock, [&] { return !queue_.empty() || closed_; });
+        if (queue_.empty()) return;
+        item = std::move(queue_.front());
+        queue_.pop_front();
+        roomLeft_.notify_one();
+      }
+      try {
+        for (FrameSink* sink : sinks) sink->frame(item.first, item.second);
+      } catch (...) {
+        std::lock_guard lock(mutex_);
+        failure_ = std::current_exception();
+        roomLeft_.notify_one();
+        return;
+      }
+    }
+  }
+  std::exception_ptr failure() {
+    std::lock_guard lock(mutex_);
+    return failure_;
+  }
+
+ private:
+  std::mutex mutex_;
+  std::condition_variable ready_, roomLeft_;
+  std::deque<std::pair<long, Image>> queue_;
+  bool closed_ = false;
+  std::exception_ptr failure_;
+};
+
+}  // namespace
+
+PngFrames::PngFrames(std::string directory, long count) : directory_(std::move(directory)) {
+  int digits = 5;
+  for (long n = 100000; n < count; n *= 10) ++digits;
+  pattern_ = "frame-%0" + std::to_string(digits) + "ld.png";
+}
+
+void PngFrames::frame(long index, const Image& image) {
+  char name[64];
+  std::snprintf(name, sizeof name, pattern_.c_str(), index);
+  writePng(image, directory_ + "/" + name);
+}
+
+void record(SceneRun& run, const TimeMap& map, double fps, const std::vector<FrameSink*>& sinks,
+            const std::function<void(long)>& progress) {
+  const long count = map.frameCount(fps);
+  run.showSlowMotion([&map](double t) { return map.factorAt(t); });
+  Image card;
+  FrameQueue queue;
+  std::thread writer([&] { queue.drain(sinks); });
+  std::exception_ptr failure;
+  try {
+    for (long k = 0; k < count; ++k) {
+      checkInterrupted();
+      // k / fps rather than a running sum: no drift, and the frame lands on the same instant as
+      // a snapshot asked for at that time
+      const double u = static_cast<double>(k) / fps;
+      if (map.inTitleCard(u) && card.rgba.empty()) card = run.titleCard();
+      if (!queue.push(k, map.inTitleCard(u) ? card : run.frameAt(map.simTime(u)))) break;
+      if (progress) progress(k + 1);
+    }
+  } catch (...) {
+    failure = std::current_exception();
+  }
+  run.showSlowMotion({});
+  queue.close();
+  writer.join();
+  if (failure) std::rethrow_exception(failure);
+  if (std::exception_ptr f = queue.failure()) std::rethrow_exception(f);
+}
+
+}  // namespace render::video

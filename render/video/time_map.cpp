@@ -1,0 +1,68 @@
+#include "render/video/time_map.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace render::video {
+
+std::vector<SlowWindow> mergeWindows(std::vector<SlowWindow> windows, double duration) {
+  for (SlowWindow& w : windows) w.from = std::max(0.0, w.from), w.to = std::min(duration, w.to);
+  std::erase_if(windows, [](const SlowWindow& w) { return !(w.to > w.from); });
+  std::sort(windows.begin(), windows.end(), [](const SlowWindow& a, const SlowWindow& b) { return a.from < b.from; });
+  std::vector<SlowWindow> merged;
+  for (const SlowWindow& w : windows) {
+    if (!merged.empty() && w.from <= merged.back().to) {
+      merged.back().to = std::max(merged.back().to, w.to);
+      merged.back().factor = std::max(merged.back().factor, w.factor);
+    } else {
+      merged.push_back(w);
+    }
+  }
+  return merged;
+}
+
+TimeMap::TimeMap(double duration, double titleCard, std::vector<SlowWindow> windows)
+    : duration_(duration), titleCard_(titleCard), windows_(mergeWindows(std::move(windows), duration)) {
+  length_ = titleCard_ + duration_;
+  for (const SlowWindow& w : windows_) length_ += (w.factor - 1.0) * (w.to - w.from);
+}
+
+long TimeMap::frameCount(double fps) const {
+  // the tolerance keeps a length of exactly k / fps at k frames despite round-off
+  return std::max(1L, static_cast<long>(std::ceil(length_ * fps - 1e-9)));
+}
+
+double TimeMap::simTime(double u) const {
+  const double v = u - titleCard_;
+  if (v <= 0.0) return 0.0;
+  // walk the pieces: normal pace up to each window, then the window slowed
+  double t = 0.0, start = 0.0;
+  for (const SlowWindow& w : windows_) {
+    if (v < start + (w.from - t)) return t + (v - start);
+    start += w.from - t;
+    const double slowed = w.factor * (w.to - w.from);
+    if (v < start + slowed) return w.from + (v - start) / w.factor;
+    start += slowed;
+    t = w.to;
+  }
+  return std::min(duration_, t + (v - start));
+}
+
+double TimeMap::factorAt(double t) const {
+  for (const SlowWindow& w : windows_)
+    if (t >= w.from && t < w.to) return w.factor;
+  return 1.0;
+}
+
+TimeMap timeMapFor(const sim::scene::RenderDef& render, const std::vector<double>& impactTimes, double duration) {
+  std::vector<SlowWindow> windows;
+  for (const sim::scene::SlowMotionDef& s : render.slowMotion) {
+    if (s.window > 0.0)
+      for (double t : impactTimes) windows.push_back({t - 0.5 * s.window, t + 0.5 * s.window, s.factor});
+    else
+      windows.push_back({s.from, s.to, s.factor});
+  }
+  return TimeMap(duration, render.titleCard, std::move(windows));
+}
+
+}  // namespace render::video

@@ -1,0 +1,169 @@
+#include "render/video/video.h"
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <sstream>
+#include <stdexcept>
+
+#include "render/jobs/process.h"
+
+namespace render::video {
+using namespace render::jobs;
+using namespace render::draw;
+
+namespace {
+
+// the last lines of ffmpeg's standard error that a message quotes
+constexpr size_t kTailChars = 2000;
+
+std::string fpsText(double fps) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.10g", fps);
+  return buf;
+}
+
+// out/a/b.mp4 → out/a/.b.part-<pid>.mp4: the same directory (so the rename is atomic), hidden,
+// and still ending in the format's extension
+std::string temporaryName(const std::string& path) {
+  const std::filesystem::path p(path);
+  std::ostringstream name;
+  name << '.' << p.stem().string() << ".part-" << ::getpid() << p.extension().string();
+  return (p.parent_path() / name.str()).string();
+}
+
+}  // namespace
+
+std::optional<VideoFormat> videoFormatFromName(std::string_view name) {
+  if (name == "mp4") return VideoFormat::Mp4;
+  if (name == "webm") return VideoFormat::Webm;
+  if (name == "gif") return VideoFormat::Gif;
+  return std::nullopt;
+}
+
+const char* videoExtension(VideoFormat format) {
+  switch (format) {
+    case VideoFormat::Mp4: return "mp4";
+    case VideoFormat::Webm: return "webm";
+    case VideoFormat::Gif: return "gif";
+  }
+  return "mp4";
+}
+
+std::vector<std::string> ffmpegArguments(VideoFormat format, int width, int height, double fps, const std::string& path) {
+  std::vector<std::string> a = {"-hide_banner", "-loglevel", "error", "-y",
+                                // the input: raw frames on standard input, top row first
+                                "-f", "rawvideo", "-pix_fmt", "rgba", "-video_size",
+                                std::to_string(width) + "x" + std::to_string(height), "-framerate", fpsText(fps), "-i",
+                                "pipe:0", "-an"};
+  const std::vector<std::string> codec = [&]() -> std::vector<std::string> {
+    switch (format) {
+      case VideoFormat::Mp4:
+        // H.264 in yuv420p plays in every browser; the index up front (+faststart) lets it start
+        // before it has loaded; CRF 18 keeps thin lines and text sharp
+        return {"-c:v", "libx264", "-preset", "fast", "-crf", "18", "-tune", "animation", "-pix_fmt", "yuv420p",
+                "-movflags", "+faststart", "-f", "mp4"};
+      case VideoFormat::Webm:
+        // VP9 at constant quality (-b:v 0 with -crf), multithreaded by rows
+        return {"-c:v", "libvpx-vp9", "-b:v", "0", "-crf", "32", "-row-mt", "1", "-deadline", "good", "-cpu-used", "4",
+                "-pix_fmt", "yuv420p", "-f", "webm"};
+      case VideoFormat::Gif:
+        // one palette made for the whole clip, then used for every frame
+        return {"-vf", "split[a][b];[a]palettegen=stats_mode=diff[p];[b][p]paletteuse=dither=bayer", "-loop", "0", "-f",
+                "gif"};
+    }
+    return {};
+  }();
+  a.insert(a.end(), codec.begin(), codec.end());
+  a.push_back(path);
+  return a;
+}
+
+VideoWriter::VideoWriter(const std::string& path, VideoFormat format, int width, int height, double fps,
+                         const std::string& program)
+    : path_(path), temporary_(temporaryName(path)), program_(program), width_(width), height_(height) {
+  // a write to an ffmpeg that has died is an error to report (EPIPE), not a signal that kills us
+  ::signal(SIGPIPE, SIG_IGN);
+  std::vector<std::string> args = ffmpegArguments(format, width, height, fps, temporary_);
+  args.insert(args.begin(), program_);
+  Child child;
+  try {
+    child = spawnChild(args, Stream::Pipe, Stream::Null, Stream::Pipe);
+  } catch (const SpawnError& e) {
+    throw std::runtime_error(std::string(e.what()) + "; install it, e.g. apt-get install ffmpeg");
+  }
+  pid_ = child.pid;
+  input_ = child.input;
+  errors_ = child.errors;
+  errorReader_ = std::thread([this] { readTail(errors_, errorTail_, kTailChars); });
+}
+
+VideoWriter::~VideoWriter() {
+  if (pid_ <= 0) return;
+  if (input_ >= 0) ::close(input_);
+  ::kill(pid_, SIGTERM);
+  wait();
+  std::remove(temporary_.c_str());
+}
+
+int VideoWriter::wait() {
+  const int status = pid_ > 0 ? waitChild(pid_) : 0;
+  pid_ = -1;
+  if (errorReader_.joinable()) errorReader_.join();
+  if (errors_ >= 0) ::close(errors_);
+  errors_ = -1;
+  return status;
+}
+
+std::string VideoWriter::diagnosis(int status) const {
+  std::ostringstream m;
+  if (WIFEXITED(status)) m << " (ffmpeg exited with status " << WEXITSTATUS(status) << ")";
+  else if (WIFSIGNALED(status)) m << " (ffmpeg was killed by signal " << WTERMSIG(status) << ")";
+  std::string tail = errorTail_.size() > kTailChars ? errorTail_.substr(errorTail_.size() - kTailChars) : errorTail_;
+  while (!tail.empty() && (tail.back() == '\n' || tail.back() == '\r')) tail.pop_back();
+  if (!tail.empty()) m << "; ffmpeg said:\n" << tail;
+  return m.str();
+}
+
+void VideoWriter::fail(const std::string& what) {
+  if (input_ >= 0) ::close(input_);
+  input_ = -1;
+  const int status = wait();
+  std::remove(temporary_.c_str());
+  throw std::runtime_error(what + diagnosis(status));
+}
+
+void VideoWriter::write(const Image& frame) {
+  if (frame.width != width_ || frame.height != height_) throw std::logic_error("a video frame of the wrong size");
+  const uint8_t* data = frame.rgba.data();
+  size_t left = frame.rgba.size();
+  while (left > 0) {
+    const ssize_t n = ::write(input_, data, left);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) fail(path_ + ": ffmpeg stopped reading frames");
+    data += n;
+    left -= static_cast<size_t>(n);
+  }
+}
+
+void VideoWriter::finish() {
+  ::close(input_);
+  input_ = -1;
+  const int status = wait();
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    std::remove(temporary_.c_str());
+    throw std::runtime_error(path_ + ": ffmpeg could not encode the video" + diagnosis(status));
+  }
+  if (std::rename(temporary_.c_str(), path_.c_str()) != 0) {
+    const std::string why = std::strerror(errno);
+    std::remove(temporary_.c_str());
+    throw std::runtime_error(path_ + ": could not finish writing (" + why + ")");
+  }
+}
+
+}  // namespace render::video

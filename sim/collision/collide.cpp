@@ -1,0 +1,273 @@
+#include "sim/collision/collide.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "sim/core/settings.h"
+
+namespace sim::collision {
+using namespace sim::core;
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+struct WorldPolygon {
+  std::vector<Vec2> v, n;  // vertices and outward edge normals in world coordinates
+  size_t size() const { return v.size(); }
+};
+
+WorldPolygon inWorld(const Shape& s, const Pose& p) {
+  WorldPolygon w;
+  w.v.reserve(s.vertices.size());
+  w.n.reserve(s.normals.size());
+  for (const Vec2& v : s.vertices) w.v.push_back(p.toWorld(v));
+  for (const Vec2& n : s.normals) w.n.push_back(p.q.apply(n));
+  return w;
+}
+
+// separation(P → Q) of the notes, with the edge of P and the vertex of Q that attain it
+struct EdgeSeparation {
+  double separation = -kInf;
+  int edge = -1;
+  int vertex = -1;
+};
+
+EdgeSeparation maxSeparation(const WorldPolygon& p, const WorldPolygon& q) {
+  EdgeSeparation best;
+  for (size_t e = 0; e < p.size(); ++e) {
+    // separation(e → Q): the deepest vertex of Q below the edge's line
+    double deepest = kInf;
+    int vertex = -1;
+    for (size_t k = 0; k < q.size(); ++k) {
+      const double d = p.n[e].dot(q.v[k] - p.v[e]);
+      if (d < deepest) deepest = d, vertex = static_cast<int>(k);
+    }
+    if (deepest > best.separation) best = {deepest, static_cast<int>(e), vertex};
+  }
+  return best;
+}
+
+// feature ids: which polygon holds the reference edge, that edge, the incident edge, and how the
+// point arose (incident vertex 0 or 1, or clipped by side plane 1 or 2)
+std::uint32_t featureId(bool referenceOnA, int referenceEdge, int incidentEdge, int tag) {
+  return (referenceOnA ? 1u : 0u) | (static_cast<std::uint32_t>(referenceEdge) & 0xffu) << 1 |
+         (static_cast<std::uint32_t>(incidentEdge) & 0xffu) << 9 | static_cast<std::uint32_t>(tag) << 17;
+}
+
+struct ClipPoint {
+  Vec2 p;
+  int tag;
+};
+
+// keep the part of segment (in[0], in[1]) where normal·x ≤ offset (Box2D-Lite's ClipSegmentToLine)
+int clipSegment(const ClipPoint in[2], ClipPoint out[2], const Vec2& normal, double offset, int clipTag) {
+  int count = 0;
+  const double d0 = normal.dot(in[0].p) - offset, d1 = normal.dot(in[1].p) - offset;
+  if (d0 <= 0.0) out[count++] = in[0];
+  if (d1 <= 0.0) out[count++] = in[1];
+  if (d0 * d1 < 0.0) out[count++] = {in[0].p + (d0 / (d0 - d1)) * (in[1].p - in[0].p), clipTag};
+  return count;
+}
+
+// the points of a polygon pair with the reference edge on A (refA) or on B: the incident edge
+// (the one most anti-parallel to the reference normal) clipped to the reference edge's side
+// planes (Box2D-Lite's clipping), keeping the points within the margin of the reference face
+void clipToReference(const WorldPolygon& A, const WorldPolygon& B, const EdgeSeparation& ea, const EdgeSeparation& eb,
+                     bool refA, double margin, Manifold& m) {
+  const WorldPolygon& ref = refA ? A : B;
+  const WorldPolygon& inc = refA ? B : A;
+  const int edge = refA ? ea.edge : eb.edge;
+  const Vec2 nRef = ref.n[edge];
+  m.normal = refA ? Vec2(-nRef) : nRef;
+  m.count = 0;
+
+  int incEdge = 0;
+  double most = kInf;
+  for (size_t i = 0; i < inc.size(); ++i) {
+    const double d = inc.n[i].dot(nRef);
+    if (d < most) most = d, incEdge = static_cast<int>(i);
+  }
+  const ClipPoint incident[2] = {{inc.v[incEdge], 0}, {inc.v[(incEdge + 1) % inc.size()], 1}};
+  const Vec2 v1 = ref.v[edge], v2 = ref.v[(edge + 1) % ref.size()];
+  const Vec2 t = (v2 - v1).normalized();
+  ClipPoint once[3], twice[3];
+  if (clipSegment(incident, once, -t, -t.dot(v1), 2) < 2) return;
+  if (clipSegment(once, twice, t, t.dot(v2), 3) < 2) return;
+  for (int k = 0; k < 2; ++k) {
+    const double sep = nRef.dot(twice[k].p - v1);
+    if (sep > margin) continue;
+    m.points[m.count++] = {twice[k].p - 0.5 * sep * nRef, sep, featureId(refA, edge, incEdge, twice[k].tag)};
+  }
+}
+
+// polygon against polygon: SAT picks the reference edge, the incident edge is clipped to its sides
+Manifold polygons(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, double margin) {
+  const WorldPolygon A = inWorld(a, pa), B = inWorld(b, pb);
+  const EdgeSeparation ea = maxSeparation(A, B), eb = maxSeparation(B, A);
+  Manifold m;
+  // the notes' separation(P, Q) and its features, exactly as on the slide
+  const bool bestA = ea.separation >= eb.separation;
+  m.sat = {true, std::max(ea.separation, eb.separation), bestA, bestA ? ea.edge : eb.edge,
+           bestA ? ea.vertex : eb.vertex};
+  m.separation = m.sat.separation;
+  // for the manifold, keep A's edge unless B's is clearly better, so the choice does not flip
+  // from step to step on near ties (Box2D's b2CollidePolygons does the same)
+  const bool refA = !(eb.separation > ea.separation + 0.05 * settings::kContactMargin);
+  clipToReference(A, B, ea, eb, refA, margin, m);
+  if (m.separation > margin) return m;
+  // the kept edge's sides can miss the incident edge near a corner: then use the best edge
+  if (m.count == 0 && refA != bestA) clipToReference(A, B, ea, eb, bestA, margin, m);
+  // corner against corner: no edge's sides hold the other's edge; the incident vertex touches
+  // the reference edge's end, so the contact runs between the closest points of the two
+  if (m.count == 0) {
+    const WorldPolygon& ref = bestA ? A : B;
+    const WorldPolygon& inc = bestA ? B : A;
+    const int e = m.sat.referenceEdge;
+    const Vec2 v1 = ref.v[e], v2 = ref.v[(e + 1) % ref.size()], w = inc.v[m.sat.incidentVertex];
+    const double along = std::clamp((w - v1).dot(v2 - v1) / (v2 - v1).squaredNorm(), 0.0, 1.0);
+    const Vec2 closest = v1 + along * (v2 - v1), d = w - closest;
+    Vec2 n = ref.n[e];
+    double sep = m.sat.separation;
+    if (d.dot(n) > 0.0 && d.norm() > 0.0) n = d / d.norm(), sep = d.norm();
+    if (sep > margin) return m;
+    m.normal = bestA ? Vec2(-n) : n;
+    m.count = 1;
+    m.points[0] = {w - 0.5 * sep * n, sep, featureId(bestA, e, m.sat.incidentVertex, 4)};
+  }
+  m.separation = kInf;
+  for (int k = 0; k < m.count; ++k) m.separation = std::min(m.separation, m.points[k].separation);
+  return m;
+}
+
+// a contact whose normal points out of the first shape toward the second
+Manifold single(const Vec2& normal, const Vec2& point, double separation, std::uint32_t id, double margin) {
+  Manifold m;
+  m.normal = normal;
+  m.separation = separation;
+  if (separation <= margin) {
+    m.count = 1;
+    m.points[0] = {point, separation, id};
+  }
+  return m;
+}
+
+// out of circle b toward circle a
+Manifold circles(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, double margin) {
+  const Vec2 d = pa.x - pb.x;
+  const double distance = d.norm();
+  const Vec2 n = distance > 0.0 ? Vec2(d / distance) : Vec2(Vec2::UnitY());
+  const double s = distance - a.radius - b.radius;
+  return single(n, pb.x + (b.radius + 0.5 * s) * n, s, 0, margin);
+}
+
+// out of polygon p toward circle c (Box2D's b2CollidePolygonAndCircle: face or vertex region)
+Manifold polygonCircle(const Shape& p, const Pose& pp, const Shape& c, const Pose& pc, double margin) {
+  const WorldPolygon P = inWorld(p, pp);
+  const Vec2 center = pc.x;
+  const double r = c.radius;
+  int edge = 0;
+  double face = -kInf;
+  for (size_t i = 0; i < P.size(); ++i) {
+    const double s = P.n[i].dot(center - P.v[i]);
+    if (s > face) face = s, edge = static_cast<int>(i);
+  }
+  const Vec2 v1 = P.v[edge], v2 = P.v[(edge + 1) % P.size()];
+  Vec2 n = P.n[edge];
+  double s = face - r;
+  std::uint32_t id = static_cast<std::uint32_t>(edge);
+  if (face > 0.0) {
+    // outside: the closest feature is the edge or one of its end vertices
+    const bool nearV1 = (center - v1).dot(v2 - v1) <= 0.0, nearV2 = (center - v2).dot(v1 - v2) <= 0.0;
+    if (nearV1 || nearV2) {
+      const Vec2 v = nearV1 ? v1 : v2;
+      const double distance = (center - v).norm();
+      n = (center - v) / distance;
+      s = distance - r;
+      id = 0x100u | static_cast<std::uint32_t>(nearV1 ? edge : (edge + 1) % P.size());
+    }
+  }
+  return single(n, center - (r + 0.5 * s) * n, s, id, margin);
+}
+
+// out of the plane toward the other shape: the vertices (at most two) deepest below the margin
+Manifold planeShape(const Shape& plane, const Pose& pp, const Shape& o, const Pose& po, double margin) {
+  const Vec2 n = pp.q.apply(plane.planeNormal);
+  if (o.kind == ShapeKind::Circle) {
+    const double s = n.dot(po.x - pp.x) - o.radius;
+    return single(n, po.x - (o.radius + 0.5 * s) * n, s, 0, margin);
+  }
+  Manifold m;
+  m.normal = n;
+  m.separation = kInf;
+  if (o.kind != ShapeKind::Polygon) return m;
+  int first = -1, second = -1;
+  std::vector<double> s(o.vertices.size());
+  std::vector<Vec2> v(o.vertices.size());
+  for (size_t k = 0; k < v.size(); ++k) {
+    v[k] = po.toWorld(o.vertices[k]);
+    s[k] = n.dot(v[k] - pp.x);
+    if (first < 0 || s[k] < s[first]) second = first, first = static_cast<int>(k);
+    else if (second < 0 || s[k] < s[second]) second = static_cast<int>(k);
+  }
+  m.separation = s[first];
+  for (int k : {first, second})
+    if (k >= 0 && s[k] <= margin) m.points[m.count++] = {v[k] - 0.5 * s[k] * n, s[k], static_cast<std::uint32_t>(k)};
+  return m;
+}
+
+Manifold flipped(Manifold m) {
+  m.normal = -m.normal;
+  return m;
+}
+
+}  // namespace
+
+SatFeatures sat(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb) {
+  if (a.kind != ShapeKind::Polygon || b.kind != ShapeKind::Polygon) return {};
+  const WorldPolygon A = inWorld(a, pa), B = inWorld(b, pb);
+  const EdgeSeparation ea = maxSeparation(A, B), eb = maxSeparation(B, A);
+  const bool onA = ea.separation >= eb.separation;
+  return {true, onA ? ea.separation : eb.separation, onA, onA ? ea.edge : eb.edge, onA ? ea.vertex : eb.vertex};
+}
+
+Manifold collide(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, double margin) {
+  using K = ShapeKind;
+  // each pair function's normal points out of its first shape; ours points out of B
+  if (a.kind == K::Polygon && b.kind == K::Polygon) return polygons(a, pa, b, pb, margin);
+  if (a.kind == K::Circle && b.kind == K::Circle) return circles(a, pa, b, pb, margin);
+  if (b.kind == K::Plane && a.kind != K::Plane) return planeShape(b, pb, a, pa, margin);
+  if (a.kind == K::Plane && b.kind != K::Plane) return flipped(planeShape(a, pa, b, pb, margin));
+  if (b.kind == K::Polygon && a.kind == K::Circle) return polygonCircle(b, pb, a, pa, margin);
+  if (a.kind == K::Polygon && b.kind == K::Circle) return flipped(polygonCircle(a, pa, b, pb, margin));
+  Manifold none;  // two planes never touch: both are static
+  none.separation = kInf;
+  return none;
+}
+
+Aabb bounds(const Shape& shape, const Pose& pose) {
+  switch (shape.kind) {
+    case ShapeKind::Circle:
+      return {pose.x - Vec2::Constant(shape.radius), pose.x + Vec2::Constant(shape.radius)};
+    case ShapeKind::Polygon: {
+      Aabb box{Vec2::Constant(kInf), Vec2::Constant(-kInf)};
+      for (const Vec2& v : shape.vertices) {
+        const Vec2 w = pose.toWorld(v);
+        box.lower = box.lower.cwiseMin(w);
+        box.upper = box.upper.cwiseMax(w);
+      }
+      return box;
+    }
+    case ShapeKind::Plane: {
+      // unbounded, but an axis-aligned floor or wall is bounded on one side
+      const Vec2 n = pose.q.apply(shape.planeNormal);
+      Aabb box{Vec2::Constant(-kInf), Vec2::Constant(kInf)};
+      if (n.x() == 0.0) (n.y() > 0.0 ? box.upper.y() : box.lower.y()) = pose.x.y();
+      if (n.y() == 0.0) (n.x() > 0.0 ? box.upper.x() : box.lower.x()) = pose.x.x();
+      return box;
+    }
+  }
+  return {};
+}
+
+}  // namespace sim::collision

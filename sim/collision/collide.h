@@ -1,0 +1,62 @@
+// Contact detection: pure functions of two shapes and two poses.
+//
+// Normal convention (the notes' "Collisions: two rigid bodies"): the manifold normal n̂ points
+// from B to A, out of B, so that v_n = n̂·(v_A − v_B + ω_A × r_A − ω_B × r_B) is negative when
+// the bodies approach and the impulse j = γ n̂ goes to A, −j to B.
+#pragma once
+
+#include <cstdint>
+
+#include "sim/core/math.h"
+#include "sim/core/shape.h"
+
+namespace sim::collision {
+using namespace sim::core;
+
+struct ManifoldPoint {
+  Vec2 point = Vec2::Zero();  // world, midway between the two surfaces
+  double separation = 0.0;    // negative when overlapping
+  std::uint32_t id = 0;       // the features that make it; stable from step to step
+};
+
+// the separating-axis bookkeeping of the notes' slide, kept for drawing
+struct SatFeatures {
+  bool valid = false;            // both shapes are polygons
+  double separation = 0.0;       // separation(P, Q): NEGATIVE when they overlap (see sat())
+  bool referenceOnA = true;      // which polygon owns the reference edge
+  int referenceEdge = -1;        // edge i runs from vertex i to i + 1 of its polygon
+  int incidentVertex = -1;       // vertex of the other polygon
+};
+
+struct Manifold {
+  Vec2 normal = Vec2::UnitY();  // from B to A
+  int count = 0;                // 0, 1 or 2 points
+  ManifoldPoint points[2];
+  SatFeatures sat;
+  // the smallest separation of the points, or the gap when count is 0 (a lower bound on the
+  // distance between the shapes: what the event method advances by)
+  double separation = 0.0;
+};
+
+// the notes' separating-axis test for convex polygons in world coordinates:
+//   distance(e → x) = normal(e)·(x − point_on(e))
+//   separation(e → Q) = min over vertices v of Q of distance(e → v)
+//   separation(P → Q) = max over edges e of P of separation(e → Q)
+//   separation(P, Q) = max(separation(P → Q), separation(Q → P))
+// The notes' slide prints "overlap(P, Q): separation(P, Q) > 0"; with this definition of distance
+// a positive separation is a gap, so the polygons overlap when the separation is NEGATIVE.
+SatFeatures sat(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb);
+
+// the contact manifold of two shapes; points are kept while their separation is at most `margin`
+Manifold collide(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, double margin);
+
+// axis-aligned bounds of a shape in a pose (a plane is unbounded)
+struct Aabb {
+  Vec2 lower, upper;
+  bool overlaps(const Aabb& o) const {
+    return lower.x() <= o.upper.x() && o.lower.x() <= upper.x() && lower.y() <= o.upper.y() && o.lower.y() <= upper.y();
+  }
+};
+Aabb bounds(const Shape& shape, const Pose& pose);
+
+}  // namespace sim::collision

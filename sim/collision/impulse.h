@@ -1,0 +1,32 @@
+// The notes' collision impulse ("Collisions: rigid body–obstacle", "Collisions: two rigid bodies").
+//
+// One formula serves both slides: an obstacle is a static body with m⁻¹ = I⁻¹ = 0, which turns
+// the two-body effective mass into the body–obstacle one, m_eff = (m⁻¹ + (r′ × n̂)²/I)⁻¹.
+#pragma once
+
+#include "sim/core/body.h"
+
+namespace sim::collision {
+using namespace sim::core;
+
+// relative velocity of A's and B's material points at r: (v_a + ω_a × r_a) − (v_b + ω_b × r_b)
+inline Vec2 relativeVelocity(const Body& a, const Body& b, const Vec2& r) {
+  return a.pointVelocity(r) - b.pointVelocity(r);
+}
+
+// m_eff⁻¹ = m_a⁻¹ + m_b⁻¹ + (r_a × n̂)²/I_a + (r_b × n̂)²/I_b, for any direction n̂
+double inverseEffectiveMass(const Body& a, const Body& b, const Vec2& r, const Vec2& n);
+
+// j to A and −j to B at world point r
+void applyImpulsePair(Body& a, Body& b, const Vec2& r, const Vec2& j);
+
+struct ImpulseResult {
+  double gamma = 0.0;    // along n̂
+  double tangent = 0.0;  // friction impulse along (−n_y, n_x)
+};
+
+// the notes' impulse for restitution c_r: γ = −(1 + c_r) v_n⁻ / m_eff⁻¹, so that v_n⁺ = −c_r v_n⁻;
+// with friction μ > 0 a tangential impulse then stops the sliding, within Coulomb's cone |j_t| ≤ μγ
+ImpulseResult resolveImpact(Body& a, Body& b, const Vec2& r, const Vec2& n, double restitution, double friction);
+
+}  // namespace sim::collision

@@ -1,0 +1,56 @@
+// A rigid body: the notes' state (x, q, v, ω) plus the constant mass properties.
+#pragma once
+
+#include <limits>
+
+#include "sim/core/math.h"
+#include "sim/core/shape.h"
+
+namespace sim::core {
+
+// what an integrator advances: the angle θ is integrated, q = (cos θ, sin θ) follows from it, so
+// q stays unit length and rotation at constant ω is exact (2D rotations commute)
+struct BodyState {
+  Vec2 x = Vec2::Zero();
+  double angle = 0.0;
+  Vec2 v = Vec2::Zero();
+  double omega = 0.0;
+};
+
+struct Body {
+  Shape shape;  // in body coordinates, origin at the center of mass
+  double mass = 1.0, invMass = 1.0;
+  double inertia = 1.0, invInertia = 1.0;
+  bool isStatic = false;
+  double restitution = 0.5;  // c_r, combined per pair (contact.h)
+  double friction = 0.0;     // Coulomb μ
+
+  Vec2 x = Vec2::Zero();  // center of mass, world
+  double angle = 0.0;     // continuous (not wrapped), counter-clockwise
+  Rot q;                  // (cos θ, sin θ)
+  Vec2 v = Vec2::Zero();
+  double omega = 0.0;     // counter-clockwise positive
+
+  BodyState state() const { return {x, angle, v, omega}; }
+  void setState(const BodyState& s) {
+    x = s.x;
+    angle = s.angle;
+    q = Rot::fromAngle(s.angle);
+    v = s.v;
+    omega = s.omega;
+  }
+  Pose pose() const { return {x, q}; }
+  // velocity of the body point at world position r: v + ω × r′ with r′ = r - x
+  Vec2 pointVelocity(const Vec2& r) const { return v + cross(omega, r - x); }
+
+  // static bodies have infinite mass: zero inverses, so impulses and forces do nothing
+  void makeStatic() {
+    isStatic = true;
+    mass = inertia = std::numeric_limits<double>::infinity();
+    invMass = invInertia = 0.0;
+    v.setZero();
+    omega = 0.0;
+  }
+};
+
+}  // namespace sim::core

@@ -1,0 +1,58 @@
+// Forces applied at points, each giving a torque τ = r′ × f (notes: "Forces and torques").
+#pragma once
+
+#include <vector>
+
+#include "sim/core/body.h"
+
+namespace sim::core {
+
+inline constexpr int kWorldAnchor = -1;  // a spring end fixed in the world
+
+// a constant force at a body point, on during [from, until)
+struct PointForce {
+  int body = 0;
+  Vec2 point = Vec2::Zero();  // body coordinates
+  Vec2 force = Vec2::Zero();
+  bool bodyFrame = false;     // the force turns with the body
+  double from = 0.0;
+  double until = std::numeric_limits<double>::infinity();
+};
+
+// a damped linear spring between a body point and a world anchor or another body's point
+struct Spring {
+  int bodyA = 0;
+  Vec2 pointA = Vec2::Zero();  // body coordinates of A
+  int bodyB = kWorldAnchor;
+  Vec2 pointB = Vec2::Zero();  // body coordinates of B, or the world anchor
+  double stiffness = 0.0;      // N/m
+  double restLength = 0.0;     // m
+  double damping = 0.0;        // N·s/m, along the spring
+};
+
+// linear and angular drag: f = -c v, τ = -c_ω ω
+struct Drag {
+  int body = 0;
+  double linear = 0.0;
+  double angular = 0.0;
+};
+
+struct ForceSet {
+  Vec2 gravity = Vec2::Zero();
+  std::vector<PointForce> pointForces;
+  std::vector<Spring> springs;
+  std::vector<Drag> drags;
+
+  // net force and torque about the center of mass of each body, for the given states;
+  // `window` is a time inside the current step, which decides which timed forces are on
+  void accumulate(double window, const std::vector<Body>& bodies, const std::vector<BodyState>& states,
+                  std::vector<Vec2>& force, std::vector<double>& torque) const;
+
+  // gravity and spring potential energy (constant and drag forces have none)
+  double potentialEnergy(const std::vector<Body>& bodies) const;
+
+  // times at which a force switches on or off: the step is split there
+  std::vector<double> breakpoints() const;
+};
+
+}  // namespace sim::core

@@ -1,0 +1,44 @@
+// Fixed-step time integrators of the free-body equations ẋ = v, θ̇ = ω, v̇ = f/m, ω̇ = τ/I.
+#pragma once
+
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "sim/core/body.h"
+
+namespace sim::core {
+
+enum class Integrator { ExplicitEuler, SymplecticEuler, Midpoint, Rk4 };
+
+// time derivative of one body's state
+struct BodyRate {
+  Vec2 xDot = Vec2::Zero();
+  double angleDot = 0.0;
+  Vec2 vDot = Vec2::Zero();
+  double omegaDot = 0.0;
+};
+
+using States = std::vector<BodyState>;
+using Rates = std::vector<BodyRate>;
+
+// what an integrator needs of the world: the state's time derivative at time t
+class Dynamics {
+ public:
+  virtual ~Dynamics() = default;
+  virtual void rates(double t, const States& y, Rates& out) const = 0;
+};
+
+// one step of size h from time t, in place
+void explicitEulerStep(const Dynamics& f, double t, double h, States& y);
+void symplecticEulerStep(const Dynamics& f, double t, double h, States& y);
+void midpointStep(const Dynamics& f, double t, double h, States& y);
+void rk4Step(const Dynamics& f, double t, double h, States& y);
+void integrate(Integrator method, const Dynamics& f, double t, double h, States& y);
+
+// names as written in scenes and on the command line: explicit_euler, symplectic_euler, midpoint, rk4
+std::string_view integratorName(Integrator method);
+std::optional<Integrator> integratorFromName(std::string_view name);
+const std::vector<std::string_view>& integratorNames();
+
+}  // namespace sim::core

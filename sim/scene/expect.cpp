@@ -1,0 +1,67 @@
+#include "sim/scene/expect.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "sim/scene/scene_build.h"
+#include "sim/world/diagnostics.h"
+
+namespace sim::scene {
+using namespace sim::core;
+using namespace sim::collision;
+using namespace sim::world;
+
+namespace {
+
+CheckResult compare(const ExpectDef& e, std::string quantity, std::vector<double> expected, std::vector<double> actual) {
+  double sum = 0.0;
+  for (size_t i = 0; i < expected.size(); ++i) sum += (actual[i] - expected[i]) * (actual[i] - expected[i]);
+  return {e.time, std::move(quantity), std::move(expected), std::move(actual), std::sqrt(sum), e.tolerance};
+}
+
+std::vector<double> pair(const Vec2& v) { return {v.x(), v.y()}; }
+
+}  // namespace
+
+std::vector<CheckResult> evaluate(const ExpectDef& e, const SceneDef& def, const World& world) {
+  std::vector<CheckResult> out;
+  const int i = e.body.empty() ? -1 : def.bodyIndex(e.body);
+  const std::string prefix = i < 0 ? "" : e.body + ".";
+  if (i >= 0) {
+    const Body& b = world.bodies[i];
+    if (e.position) out.push_back(compare(e, prefix + "position", pair(*e.position), pair(b.x)));
+    if (e.angle) out.push_back(compare(e, prefix + "angle", {*e.angle}, {b.angle}));
+    if (e.velocity) out.push_back(compare(e, prefix + "velocity", pair(*e.velocity), pair(b.v)));
+    if (e.angularVelocity) out.push_back(compare(e, prefix + "angular_velocity", {*e.angularVelocity}, {b.omega}));
+  }
+  const Energy en = energy(world);
+  if (e.kineticEnergy) {
+    const double k = i >= 0 ? kineticEnergy(world.bodies[i]).total() : en.kinetic;
+    out.push_back(compare(e, prefix + "kinetic_energy", {*e.kineticEnergy}, {k}));
+  }
+  if (e.potentialEnergy) out.push_back(compare(e, "potential_energy", {*e.potentialEnergy}, {en.potential}));
+  if (e.totalEnergy) out.push_back(compare(e, "total_energy", {*e.totalEnergy}, {en.total()}));
+  if (e.momentum) out.push_back(compare(e, "momentum", pair(*e.momentum), pair(linearMomentum(world))));
+  if (e.angularMomentum)
+    out.push_back(compare(e, "angular_momentum", {*e.angularMomentum}, {angularMomentum(world)}));
+  return out;
+}
+
+std::vector<CheckResult> runExpects(const SceneDef& def) {
+  World world = buildWorld(def);
+  return runExpects(def, world);
+}
+
+std::vector<CheckResult> runExpects(const SceneDef& def, World& world) {
+  std::vector<const ExpectDef*> order;
+  for (const ExpectDef& e : def.expects) order.push_back(&e);
+  std::stable_sort(order.begin(), order.end(), [](auto* a, auto* b) { return a->time < b->time; });
+  std::vector<CheckResult> out;
+  for (const ExpectDef* e : order) {
+    world.advanceTo(e->time);
+    for (CheckResult& r : evaluate(*e, def, world)) out.push_back(std::move(r));
+  }
+  return out;
+}
+
+}  // namespace sim::scene

@@ -1,0 +1,125 @@
+// The `render:` block of a scene, as plain definitions (documented in scenes/README.md).
+// The simulator never reads it; the renderer does. Colors are "#rrggbb" strings, as in BodyDef.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "sim/core/math.h"
+
+namespace sim::scene {
+using namespace sim::core;
+
+// frame sides are even (H.264 in yuv420p halves the chroma planes) and at most this many pixels:
+// a 8192 × 8192 RGBA frame is 256 MiB, and supersampled several times that
+inline constexpr int kMaxFrameSide = 8192;
+inline constexpr int kMinFrameSide = 16;
+// frames per second, at most: beyond this a lecture video gains nothing
+inline constexpr double kMaxFps = 1000.0;
+
+// what the view shows: everything the run covers (auto), or a fixed window
+struct CameraDef {
+  bool automatic = true;
+  double margin = 0.08;          // auto: free space on each side, as a fraction of the fitted size
+  Vec2 center = Vec2::Zero();    // fixed: world point at the middle of the frame, m
+  double height = 0.0;           // fixed: world height the frame shows, m
+};
+
+// colors of what is not a body's own; bodies without `color` take the palette in order
+struct ColorsDef {
+  std::vector<std::string> palette = {"#4e79a7", "#f28e2b", "#e15759", "#76b7b2", "#59a14f",
+                                      "#edc948", "#b07aa1", "#ff9da7", "#9c755f", "#bab0ac"};
+  std::string staticBody = "#8c8c8c";
+  std::string contact = "#d62728";
+  std::string normal = "#d62728";
+  std::string impulse = "#2ca02c";
+  std::string velocity = "#1f1f1f";
+  std::string trail = "#9a9a9a";
+  std::string referenceEdge = "#ff7f0e";
+  std::string incidentVertex = "#9467bd";
+  std::string spring = "#4d4d4d";
+  std::string text = "#1f1f1f";
+  // the teaching overlays (OverlaysDef)
+  std::string offset = "#7f7f7f";
+  std::string omega = "#17becf";
+  std::string frame = "#8c564b";
+  std::string path = "#e377c2";
+  std::string force = "#e6550d";
+  std::string torque = "#a55194";
+  std::string momentum = "#3182bd";
+  std::string potential = "#31a354";
+  std::string total = "#636363";
+  std::string panel = "#f2f2f2";
+};
+
+// a teaching vector drawn every frame: one entry of `arrows:`
+struct ArrowDef {
+  enum class Show { Velocity, Offset, Omega, Frame, Path, Force, Torque, Momentum };
+  Show show = Show::Velocity;
+  int body = 0;             // index into SceneDef::bodies, resolved when read
+  Vec2 at = Vec2::Zero();   // body coordinates as written (before the centroid shift)
+  std::string label;        // empty: the default of `show` ("v", "r′", "ω", …)
+  bool value = false;       // the magnitude with its unit after the label
+  std::string color;        // "#rrggbb"; empty: the color of `show`'s role
+};
+
+// the lecture overlays of a frame (scenes/README.md, render:), all off by default
+struct OverlaysDef {
+  std::vector<ArrowDef> arrows;
+  double forceScale = 0.0;     // m per N; 0: the largest point force of the run is 1/6 of the view
+  double momentumScale = 0.0;  // m per kg·m/s; 0: the largest momentum of the run is 1/6 of the view
+  bool impactValues = false;   // impact afterimages labeled n̂, j and v_n⁻ → v_n⁺
+  bool energy = false;         // the energy bars panel, top right
+  bool momentum = false;       // p and L as text in that panel
+  bool satAxes = false;        // every candidate axis of the SAT overlay labeled with its separation
+};
+
+// a stretch of the video that runs `factor` times slower: `window` s around each impact of the run
+// (when window > 0), else simulation times [from, to]
+struct SlowMotionDef {
+  double factor = 1.0;
+  double window = 0.0;  // s
+  double from = 0.0, to = 0.0;  // s
+};
+
+// the poll panels `rigidreel lecture` writes (every variant side by side): at these times, or at
+// each impact; none when `times` is empty and `impacts` false. The scene reader fills the default
+// (the duration, for a scene with two or more variants) and checks the times against the duration.
+struct PanelsDef {
+  std::vector<double> times;  // s
+  bool impacts = false;
+  int line = 0, column = 0;   // where `panels:` is written (1-based); 0 when it is the default
+};
+
+struct RenderDef {
+  int width = 1280;                    // pixels
+  int height = 720;
+  double fps = 60.0;                   // frames per second of a video
+  std::string background = "#ffffff";
+  double lineWidth = 2.0;              // pixels, of outlines, arrows and segments
+  double fontSize = 0.0;               // pixels; 0: the frame height / 36, at least 11
+  ColorsDef colors;
+  CameraDef camera;
+  bool contacts = true;                // contact points, normals and impact impulses
+  double contactHold = 0.5;            // s a contact stays on screen after an impact, fading
+  bool impulses = true;                // arrows where events apply their impulses (held as contacts)
+  double impulseScale = 0.0;           // m per N·s; 0: the largest event impulse is 1/6 of the view
+  bool velocities = false;             // velocity arrows at the centers of mass
+  double velocityScale = 0.0;          // m per m/s (s); 0: the fastest body's arrow is 1/6 of the view
+  bool trails = false;                 // the path of every center of mass so far
+  bool sat = false;                    // the separating-axis overlay: reference edge, incident vertex
+  int strobe = 0;                      // snapshots and the poster: this many ghosted earlier poses
+  bool springs = true;                 // springs as zigzags, world anchors as dots
+  bool labels = true;                  // body labels
+  bool time = true;                    // the time in a corner
+  // video timing and text (section B of the lecture pack): the opening card, the caption, slow motion
+  std::string title;                   // the title card's; empty: the scene's name with '_' as spaces
+  double titleCard = 0.0;              // s the video opens with a title card; 0: none
+  bool captionFromDescription = false; // `caption: true`: the description's first sentence
+  std::string caption;                 // `caption: "text"`; empty (and not from the description): none
+  std::vector<SlowMotionDef> slowMotion;
+  OverlaysDef overlays;                // the lecture overlays
+  PanelsDef panels;                    // `rigidreel lecture`'s poll panels
+};
+
+}  // namespace sim::scene

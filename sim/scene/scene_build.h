@@ -1,0 +1,23 @@
+// From definitions to a World: mass properties, the centroid shift, names resolved to indices.
+#pragma once
+
+#include "sim/scene/scene_def.h"
+#include "sim/world/world.h"
+
+namespace sim::scene {
+using namespace sim::core;
+using namespace sim::collision;
+using namespace sim::world;
+
+// the definitions must be valid (the loader checks them); body i of the world is def.bodies[i]
+World buildWorld(const SceneDef& def);
+
+// a body's mass properties as the scene gives them: shape and density unless given outright
+struct MassProperties {
+  double mass = 0.0;
+  double inertia = 0.0;
+  Vec2 centroid = Vec2::Zero();  // in the coordinates the shape was written in
+};
+MassProperties massProperties(const BodyDef& def);
+
+}  // namespace sim::scene

@@ -1,0 +1,133 @@
+// A scene as plain definitions, free of any file format: what the YAML loader produces and
+// buildWorld consumes (MuJoCo's split of the model from the simulation state).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sim/core/integrators.h"
+#include "sim/core/settings.h"
+#include "sim/core/shape.h"
+#include "sim/scene/render_def.h"
+#include "sim/world/contact.h"
+
+namespace sim::scene {
+using namespace sim::core;
+using namespace sim::collision;
+using namespace sim::world;
+
+// where a definition came from in its file (1-based; 0 when unknown), for messages
+struct SourceLoc {
+  int line = 0;
+  int column = 0;
+};
+
+struct BodyDef {
+  std::string name;
+  Shape shape;                    // as written: body coordinates before the centroid shift
+  std::optional<double> density;  // kg/m²
+  std::optional<double> mass;     // kg
+  std::optional<double> inertia;  // kg·m², about the center of mass
+  Vec2 position = Vec2::Zero();   // of the center of mass
+  double angle = 0.0;
+  Vec2 velocity = Vec2::Zero();
+  double angularVelocity = 0.0;
+  bool isStatic = false;
+  std::string color;  // "#rrggbb"; empty for the renderer's choice
+  std::string label;
+  std::optional<double> restitution;  // c_r; the world's when absent
+  std::optional<double> friction;     // μ; the world's when absent
+  SourceLoc loc;
+};
+
+struct PointForceDef {
+  std::string body;
+  Vec2 point = Vec2::Zero();  // body coordinates as written
+  Vec2 force = Vec2::Zero();
+  bool bodyFrame = false;
+  double from = 0.0;
+  double until = std::numeric_limits<double>::infinity();
+};
+
+struct SpringDef {
+  std::string body;
+  Vec2 point = Vec2::Zero();
+  std::string body2;  // empty: the spring is anchored in the world at `anchor`
+  Vec2 point2 = Vec2::Zero();
+  Vec2 anchor = Vec2::Zero();
+  double stiffness = 0.0;
+  double restLength = 0.0;
+  double damping = 0.0;
+};
+
+struct DragDef {
+  std::string body;
+  double linear = 0.0;
+  double angular = 0.0;
+};
+
+struct EventDef {
+  double time = 0.0;
+  std::string body;
+  Vec2 impulse = Vec2::Zero();  // world coordinates
+  Vec2 point = Vec2::Zero();    // body coordinates as written, or world when pointInWorld
+  bool pointInWorld = false;
+};
+
+// a closed-form answer that `rigidreel check` compares against; absent fields are not checked
+struct ExpectDef {
+  double time = 0.0;
+  std::string body;  // empty for world-wide quantities
+  std::optional<Vec2> position;
+  std::optional<double> angle;
+  std::optional<Vec2> velocity;
+  std::optional<double> angularVelocity;
+  std::optional<double> kineticEnergy;     // of `body`, or of the world when no body is named
+  std::optional<double> potentialEnergy;   // world
+  std::optional<double> totalEnergy;       // world
+  std::optional<Vec2> momentum;            // world
+  std::optional<double> angularMomentum;   // world, about the origin
+  double tolerance = settings::kDefaultExpectTolerance;
+  SourceLoc loc;
+};
+
+// how `rigidreel stability` probes the scene: the parameter it searches for the largest value at
+// which the scene still holds (documented in scenes/README.md)
+struct StabilityDef {
+  enum class Parameter { Dt, Speed, MassRatio, StackHeight };
+  Parameter parameter = Parameter::Dt;
+  std::string body;   // speed: whose speed; mass_ratio: whose mass and inertia are scaled
+  double from = 0.0;  // where the search starts (0: from the scene's own value)
+  double to = 0.0;    // the largest value tried (0: no limit but the search's own)
+  bool stack = false; // the stack criterion applies: the top box must not drift
+};
+
+struct SceneDef {
+  std::string name;
+  std::string description;
+  std::string variant;  // the variant merged in, empty for the base scene
+  std::vector<std::string> variantNames;
+  double duration = settings::kDefaultDuration;
+  Vec2 gravity = Vec2::Zero();
+  double restitution = settings::kDefaultRestitution;
+  double friction = settings::kDefaultFriction;
+  Integrator integrator = Integrator::SymplecticEuler;
+  double dt = settings::kDefaultDt;
+  CollisionMethod collisions = CollisionMethod::Auto;
+  int velocityIterations = settings::kVelocityIterations;
+  int positionIterations = settings::kPositionIterations;
+  std::vector<BodyDef> bodies;
+  std::vector<PointForceDef> pointForces;
+  std::vector<SpringDef> springs;
+  std::vector<DragDef> drags;
+  std::vector<EventDef> events;
+  std::vector<ExpectDef> expects;
+  RenderDef render;
+  StabilityDef stability;
+
+  // index of the body with this name, or -1
+  int bodyIndex(const std::string& name) const;
+};
+
+}  // namespace sim::scene

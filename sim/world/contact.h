@@ -1,0 +1,70 @@
+// A touching pair and what the collision methods record about it.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "sim/collision/collide.h"
+
+namespace sim::world {
+using namespace sim::core;
+using namespace sim::collision;
+
+// collision response, chosen per scene (`sim: {collisions: ...}`) or on the command line
+enum class CollisionMethod {
+  Auto,        // the least model the scene needs (see chooseCollisionMethod)
+  None,        // bodies pass through each other: free bodies only
+  Event,       // exact: advance to each time of impact, apply the notes' impulse there
+  Isolated,    // the notes' model on fixed steps: one impulse per approaching contact, then push apart
+  Sequential,  // fixed steps, sequential impulses with warm starting, friction, position correction
+};
+
+std::string_view collisionMethodName(CollisionMethod method);
+std::optional<CollisionMethod> collisionMethodFromName(std::string_view name);
+const std::vector<std::string_view>& collisionMethodNames();
+
+// solver state of one manifold point (sequential impulses, Catto 2006)
+struct ContactPointState {
+  double normalImpulse = 0.0;   // accumulated, clamped ≥ 0
+  double tangentImpulse = 0.0;  // accumulated, clamped to ±μ·normalImpulse
+  double normalMass = 0.0;      // effective mass along n̂
+  double tangentMass = 0.0;
+  double bias = 0.0;            // lowest normal velocity allowed: restitution or a closing gap
+  double vnBefore = 0.0;        // normal velocity before the solve
+  Vec2 anchorA = Vec2::Zero();  // contact point in A's and B's body coordinates, for the
+  Vec2 anchorB = Vec2::Zero();  // position pass
+};
+
+struct Contact {
+  int a = 0, b = 0;  // body indices, a < b
+  Manifold manifold;
+  double restitution = 0.0;
+  double friction = 0.0;
+  ContactPointState state[2];
+};
+
+// one impulse the collision response applied: the notes' γ along n̂ at `point`, j = γ n̂ to A
+struct ImpactRecord {
+  double t = 0.0;
+  int a = 0, b = 0;
+  Vec2 point = Vec2::Zero();
+  Vec2 normal = Vec2::UnitY();  // from B to A
+  double impulse = 0.0;         // γ
+  double tangentImpulse = 0.0;  // friction, along (−n_y, n_x)
+  double vnBefore = 0.0, vnAfter = 0.0;
+};
+
+// a contact that the event method turned into resting contact (impacts piling up in finite time)
+struct RestingRecord {
+  double t = 0.0;
+  int a = 0, b = 0;
+};
+
+// pair coefficients (documented in scenes/README.md): the larger restitution (a bouncy ball
+// bounces on any floor, as in Box2D) and the geometric mean of the frictions
+double combinedRestitution(double a, double b);
+double combinedFriction(double a, double b);
+
+}  // namespace sim::world

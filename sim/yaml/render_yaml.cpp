@@ -1,0 +1,207 @@
+#include "sim/yaml/render_yaml.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <sstream>
+
+namespace sim::yaml {
+using namespace sim::core;
+using namespace sim::world;
+using namespace sim::scene;
+
+namespace {
+
+std::string formatted(double x) {
+  std::ostringstream o;
+  o << x;
+  return o.str();
+}
+
+// reads the render: block's values, each checked where it is written
+class RenderReader {
+ public:
+  explicit RenderReader(const Reader& r) : r_(r) {}
+
+  std::string color(const YAML::Node& n, const std::string& key) const {
+    const std::string c = r_.text(n, key);
+    const bool hex = c.size() == 7 && c[0] == '#' &&
+                     std::all_of(c.begin() + 1, c.end(), [](char ch) { return std::isxdigit(static_cast<unsigned char>(ch)); });
+    if (!hex) r_.fail(n, "'" + key + "' must be a color written \"#rrggbb\", got '" + c + "'");
+    return c;
+  }
+
+  int integer(const YAML::Node& n, const std::string& key, int lo, int hi) const {
+    const double x = r_.number(n, key);
+    if (!(x >= lo && x <= hi) || x != std::floor(x))
+      r_.fail(n, "'" + key + "' must be a whole number from " + std::to_string(lo) + " to " + std::to_string(hi) +
+                     ", got " + n.Scalar());
+    return static_cast<int>(x);
+  }
+
+  void size(const YAML::Node& n, RenderDef& out) const {
+    if (!n.IsSequence() || n.size() != 2) r_.fail(n, "expected [width, height] in pixels for 'size', got " + describe(n));
+    out.width = integer(n[0], "size", kMinFrameSide, kMaxFrameSide);
+    out.height = integer(n[1], "size", kMinFrameSide, kMaxFrameSide);
+    if (out.width % 2 || out.height % 2)
+      r_.fail(n, "'size' must have even sides (H.264 video halves the color planes); try [" +
+                     std::to_string(out.width + out.width % 2) + ", " + std::to_string(out.height + out.height % 2) + "]");
+  }
+
+  void camera(const YAML::Node& n, CameraDef& out) const {
+    if (n.IsScalar()) {
+      if (n.Scalar() != "auto") r_.fail(n, "'camera' is 'auto' or {center: [x, y], height: h}, got '" + n.Scalar() + "'");
+      out.automatic = true;
+      return;
+    }
+    r_.checkKeys(n, {"center", "height", "margin"}, "camera");
+    if (n["center"] || n["height"]) {
+      if (!n["center"] || !n["height"]) r_.fail(n, "a fixed camera needs both 'center' and 'height'");
+      if (n["margin"]) r_.fail(n["margin"], "'margin' is for the automatic camera; a fixed camera shows exactly 'height'");
+      out.automatic = false;
+      out.center = r_.vec2(n["center"], "center");
+      out.height = r_.positive(n["height"], "height");
+    }
+    if (n["margin"]) {
+      out.margin = r_.nonNegative(n["margin"], "margin");
+      if (out.margin >= 0.5) r_.fail(n["margin"], "'margin' is a fraction of the view on each side, below 0.5");
+    }
+  }
+
+  void colors(const YAML::Node& n, ColorsDef& out) const {
+    r_.checkKeys(n, {"palette", "static", "contact", "normal", "impulse", "velocity", "trail", "reference_edge",
+                     "incident_vertex", "spring", "text", "offset", "omega", "frame", "path", "force", "torque",
+                     "momentum", "potential", "total", "panel"},
+                 "colors");
+    if (const YAML::Node p = n["palette"]) {
+      if (!p.IsSequence() || p.size() == 0) r_.fail(p, "'palette' must be a list of at least one \"#rrggbb\" color");
+      out.palette.clear();
+      for (const YAML::Node& c : p) out.palette.push_back(color(c, "palette"));
+    }
+    const std::pair<const char*, std::string*> roles[] = {
+        {"static", &out.staticBody},  {"contact", &out.contact},
+        {"normal", &out.normal},      {"impulse", &out.impulse},
+        {"velocity", &out.velocity},  {"trail", &out.trail},
+        {"reference_edge", &out.referenceEdge}, {"incident_vertex", &out.incidentVertex},
+        {"spring", &out.spring},      {"text", &out.text},
+        {"offset", &out.offset},      {"omega", &out.omega},
+        {"frame", &out.frame},        {"path", &out.path},
+        {"force", &out.force},        {"torque", &out.torque},
+        {"momentum", &out.momentum},  {"potential", &out.potential},
+        {"total", &out.total},        {"panel", &out.panel}};
+    for (const auto& [key, value] : roles)
+      if (n[key]) *value = color(n[key], key);
+  }
+
+ private:
+  const Reader& r_;
+};
+
+}  // namespace
+
+void readRender(const YAML::Node& node, const Reader& reader, RenderDef& out) {
+  reader.checkKeys(node, {"size", "fps", "background", "line_width", "font_size", "colors", "camera", "contacts",
+                          "contact_hold", "impulses", "impulse_scale", "velocities", "velocity_scale", "trails", "sat",
+                          "strobe", "springs", "labels", "time", "panels",
+                          // video timing and text
+                          "title", "title_card", "caption", "slow_motion",
+
+                          // the lecture overlays, read by readOverlays
+                          "arrows", "force_scale", "momentum_scale", "impact_values", "energy", "momentum", "sat_axes"},
+                   "render");
+  const RenderReader r(reader);
+  if (node["size"]) r.size(node["size"], out);
+  if (const YAML::Node n = node["fps"]) {
+    out.fps = reader.positive(n, "fps");
+    if (out.fps > kMaxFps) reader.fail(n, "'fps' must be at most " + formatted(kMaxFps) + ", got " + n.Scalar());
+  }
+  if (node["background"]) out.background = r.color(node["background"], "background");
+  if (node["line_width"]) out.lineWidth = reader.positive(node["line_width"], "line_width");
+  if (node["font_size"]) out.fontSize = reader.positive(node["font_size"], "font_size");
+  if (node["colors"]) r.colors(node["colors"], out.colors);
+  if (node["camera"]) r.camera(node["camera"], out.camera);
+  if (node["contacts"]) out.contacts = reader.boolean(node["contacts"], "contacts");
+  if (node["contact_hold"]) out.contactHold = reader.nonNegative(node["contact_hold"], "contact_hold");
+  if (node["impulses"]) out.impulses = reader.boolean(node["impulses"], "impulses");
+  if (node["impulse_scale"]) out.impulseScale = reader.positive(node["impulse_scale"], "impulse_scale");
+  if (node["velocities"]) out.velocities = reader.boolean(node["velocities"], "velocities");
+  if (node["velocity_scale"]) out.velocityScale = reader.positive(node["velocity_scale"], "velocity_scale");
+  if (node["trails"]) out.trails = reader.boolean(node["trails"], "trails");
+  if (node["sat"]) out.sat = reader.boolean(node["sat"], "sat");
+  if (node["strobe"]) out.strobe = r.integer(node["strobe"], "strobe", 0, 100);
+  if (node["springs"]) out.springs = reader.boolean(node["springs"], "springs");
+  if (node["labels"]) out.labels = reader.boolean(node["labels"], "labels");
+  if (node["time"]) out.time = reader.boolean(node["time"], "time");
+  readTiming(node, reader, out);
+}
+
+namespace {
+
+// the `show:` names, in the order of ArrowDef::Show
+constexpr const char* kShowNames[] = {"velocity", "offset", "omega", "frame", "path", "force", "torque", "momentum"};
+
+ArrowDef readArrow(const YAML::Node& n, const Reader& reader, const SceneDef& scene) {
+  reader.checkKeys(n, {"body", "show", "at", "label", "value", "color"}, "an arrow");
+  ArrowDef a;
+  const YAML::Node body = reader.required(n, "body", "an arrow");
+  a.body = scene.bodyIndex(reader.text(body, "body"));
+  if (a.body < 0) {
+    std::string known;
+    for (const BodyDef& b : scene.bodies) known += (known.empty() ? "" : ", ") + b.name;
+    reader.fail(body, "no body named '" + body.Scalar() + "'; the bodies are: " + known);
+  }
+  const YAML::Node show = reader.required(n, "show", "an arrow");
+  const std::string name = reader.text(show, "show");
+  const auto* found = std::find(std::begin(kShowNames), std::end(kShowNames), name);
+  if (found == std::end(kShowNames))
+    reader.fail(show, "unknown show '" + name + "'; choose one of: velocity, offset, omega, frame, path, force, torque, momentum");
+  a.show = static_cast<ArrowDef::Show>(found - std::begin(kShowNames));
+  if (n["at"]) a.at = reader.vec2(n["at"], "at");
+  if (n["label"]) a.label = reader.text(n["label"], "label");
+  if (n["value"]) a.value = reader.boolean(n["value"], "value");
+  if (n["color"]) a.color = RenderReader(reader).color(n["color"], "color");
+  return a;
+}
+
+}  // namespace
+
+void readOverlays(const YAML::Node& node, const Reader& reader, const SceneDef& scene, OverlaysDef& out) {
+  if (const YAML::Node arrows = node["arrows"]) {
+    if (!arrows.IsSequence()) reader.fail(arrows, "'arrows' must be a list of {body, show}, got " + describe(arrows));
+    out.arrows.clear();
+    for (const YAML::Node& a : arrows) out.arrows.push_back(readArrow(a, reader, scene));
+  }
+  if (node["force_scale"]) out.forceScale = reader.positive(node["force_scale"], "force_scale");
+  if (node["momentum_scale"]) out.momentumScale = reader.positive(node["momentum_scale"], "momentum_scale");
+  if (node["impact_values"]) out.impactValues = reader.boolean(node["impact_values"], "impact_values");
+  if (node["energy"]) out.energy = reader.boolean(node["energy"], "energy");
+  if (node["momentum"]) out.momentum = reader.boolean(node["momentum"], "momentum");
+  if (node["sat_axes"]) out.satAxes = reader.boolean(node["sat_axes"], "sat_axes");
+}
+
+void readPanels(const YAML::Node& node, const Reader& reader, double duration, size_t variants, PanelsDef& out) {
+  out = {};
+  if (!node) {
+    if (variants >= 2) out.times = {duration};
+    return;
+  }
+  out.line = node.Mark().line + 1;
+  out.column = node.Mark().column + 1;
+  if (variants == 0)
+    reader.fail(node, "'panels' puts the variants side by side, and this scene has none; add 'variants:' or remove 'panels'");
+  if (node.IsScalar() && node.Scalar() == "impacts") {
+    out.impacts = true;
+    return;
+  }
+  if (!node.IsSequence())
+    reader.fail(node, "'panels' is a list of times in seconds, e.g. [0, 1.5], or 'impacts'; got " + describe(node));
+  for (const YAML::Node& t : node) {
+    const double time = reader.nonNegative(t, "panels");
+    if (time > duration)
+      reader.fail(t, "a panel at " + formatted(time) + " s is after the scene's duration (" + formatted(duration) +
+                         " s); give times from 0 to the duration");
+    out.times.push_back(time);
+  }
+}
+
+}  // namespace sim::yaml

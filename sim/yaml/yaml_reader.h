@@ -1,0 +1,151 @@
+// Reading YAML nodes into typed values, failing with FILE:LINE:COL and a message that says what to
+// do. Shared by the scene reader and the readers of its sub-blocks; an internal header of the
+// rigidreel_scene target (it includes yaml-cpp, which the simulator never sees).
+#pragma once
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "sim/core/math.h"
+#include "sim/yaml/scene_yaml.h"
+
+namespace sim::yaml {
+using namespace sim::core;
+using namespace sim::world;
+using namespace sim::scene;
+
+// edit distance, to name the valid key nearest to a misspelled one
+inline size_t editDistance(const std::string& a, const std::string& b) {
+  std::vector<size_t> row(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    size_t diagonal = row[0];
+    row[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+inline std::string describe(const YAML::Node& n) {
+  switch (n.Type()) {
+    case YAML::NodeType::Map: return "a map";
+    case YAML::NodeType::Sequence: return "a list";
+    case YAML::NodeType::Null: return "nothing";
+    case YAML::NodeType::Scalar: return "'" + n.Scalar() + "'";
+    default: return "nothing";
+  }
+}
+
+using Keys = std::vector<std::string>;
+
+// reads one file's YAML tree into definitions, failing at the first fault with its position
+class Reader {
+ public:
+  explicit Reader(std::string file) : file_(std::move(file)) {}
+
+  [[noreturn]] void fail(const YAML::Node& at, const std::string& message) const {
+    const YAML::Mark m = at.Mark();
+    if (m.is_null()) throw SceneError(file_, 1, 1, message);
+    throw SceneError(file_, m.line + 1, m.column + 1, message);
+  }
+
+  // every key of `map` must be one of `allowed`; `what` names the map in messages
+  void checkKeys(const YAML::Node& map, const Keys& allowed, const std::string& what) const {
+    if (!map.IsMap()) fail(map, "expected a map for " + what + ", got " + describe(map));
+    std::vector<std::string> seen;
+    for (const auto& kv : map) {
+      const std::string key = kv.first.Scalar();
+      // yaml-cpp keeps the first of two equal keys silently; say so instead
+      if (std::find(seen.begin(), seen.end(), key) != seen.end())
+        fail(kv.first, "duplicate key '" + key + "' in " + what + "; give each key once");
+      seen.push_back(key);
+      if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
+      const std::string* nearest = &allowed.front();
+      for (const std::string& k : allowed)
+        if (editDistance(key, k) < editDistance(key, *nearest)) nearest = &k;
+      fail(kv.first, "unknown key '" + key + "' in " + what + "; did you mean '" + *nearest + "'?");
+    }
+  }
+
+  double number(const YAML::Node& n, const std::string& key) const {
+    if (!n.IsScalar()) fail(n, "expected a number for '" + key + "', got " + describe(n));
+    try {
+      return n.as<double>();
+    } catch (const YAML::Exception&) {
+      fail(n, "expected a number for '" + key + "', got " + describe(n));
+    }
+  }
+
+  double finite(const YAML::Node& n, const std::string& key) const {
+    const double x = number(n, key);
+    if (!std::isfinite(x)) fail(n, "'" + key + "' must be a finite number, got " + n.Scalar());
+    return x;
+  }
+
+  double positive(const YAML::Node& n, const std::string& key) const {
+    const double x = number(n, key);
+    if (!(x > 0.0) || !std::isfinite(x))
+      fail(n, "'" + key + "' must be a positive finite number, got " + n.Scalar());
+    return x;
+  }
+
+  double nonNegative(const YAML::Node& n, const std::string& key) const {
+    const double x = number(n, key);
+    if (!(x >= 0.0) || !std::isfinite(x))
+      fail(n, "'" + key + "' must be zero or a positive finite number, got " + n.Scalar());
+    return x;
+  }
+
+  Vec2 vec2(const YAML::Node& n, const std::string& key) const {
+    if (!n.IsSequence() || n.size() != 2) {
+      const std::string got = n.IsSequence() ? "a list of " + std::to_string(n.size()) + " values" : describe(n);
+      fail(n, "expected [x, y] for '" + key + "', got " + got);
+    }
+    return {finite(n[0], key), finite(n[1], key)};
+  }
+
+  std::string text(const YAML::Node& n, const std::string& key) const {
+    if (!n.IsScalar()) fail(n, "expected text for '" + key + "', got " + describe(n));
+    return n.Scalar();
+  }
+
+  bool boolean(const YAML::Node& n, const std::string& key) const {
+    if (n.IsScalar()) {
+      // the YAML 1.1 spellings, in any case
+      std::string s = n.Scalar();
+      for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      if (s == "true" || s == "yes" || s == "on") return true;
+      if (s == "false" || s == "no" || s == "off") return false;
+    }
+    fail(n, "expected true or false for '" + key + "', got " + describe(n));
+  }
+
+  // the value under `key`, which must be present
+  YAML::Node required(const YAML::Node& map, const std::string& key, const std::string& what) const {
+    const YAML::Node n = map[key];
+    if (!n) fail(map, what + " needs '" + key + "'");
+    return n;
+  }
+
+  // one of `names`, listing them when it is not
+  template <class Lookup>
+  auto named(const YAML::Node& n, const std::string& key, Lookup lookup, const std::string& choices) const {
+    const std::string s = text(n, key);
+    auto value = lookup(s);
+    if (!value) fail(n, "unknown " + key + " '" + s + "'; choose one of: " + choices);
+    return *value;
+  }
+
+  std::string file_;
+};
+
+}  // namespace sim::yaml

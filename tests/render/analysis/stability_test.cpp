@@ -1,0 +1,99 @@
+#include "render/analysis/stability.h"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "sim/core/settings.h"
+#include "sim/yaml/scene_yaml.h"
+
+namespace {
+
+// an undamped mass on a spring: m = 1, k = 4, so ω = 2
+const char* kSpringMass = R"(
+duration: 20
+bodies: [{name: mass, shape: {circle: 0.1}, mass: 1, position: [1, 0]}]
+forces: [{type: spring, body: mass, anchor: [0, 0], stiffness: 4}]
+stability: {parameter: dt, from: 0.01}
+)";
+constexpr double kOmega = 2.0;
+
+double boundary(const char* yaml, sim::core::Integrator method, sim::world::CollisionMethod collisions = sim::world::CollisionMethod::Auto,
+                const std::string& variant = "") {
+  sim::scene::SceneDef def = sim::yaml::loadSceneText(yaml, "inline.yaml", variant);
+  def.integrator = method;
+  if (collisions != sim::world::CollisionMethod::Auto) def.collisions = collisions;
+  const render::analysis::StabilityResult r = render::analysis::findBoundary(def);
+  MESSAGE(render::analysis::describeFailure(def, r));
+  CHECK_FALSE(r.failsEverywhere);
+  CHECK_FALSE(r.holdsToLimit);
+  return r.largestStable;
+}
+
+}  // namespace
+
+TEST_CASE("mass on a spring: symplectic Euler holds up to h·ω = 2, RK4 up to h·ω = 2√2 (within 5 %)") {
+  CHECK(boundary(kSpringMass, sim::core::Integrator::SymplecticEuler) * kOmega == doctest::Approx(2.0).epsilon(0.05));
+  CHECK(boundary(kSpringMass, sim::core::Integrator::Rk4) * kOmega == doctest::Approx(2.0 * std::sqrt(2.0)).epsilon(0.05));
+}
+
+TEST_CASE("mass on a spring: explicit Euler's energy-growth boundary matches the closed form (within 5 %)") {
+  // explicit Euler multiplies the energy by q = 1 + (hω)² every step. The criterion: the largest
+  // energy in the run's last third exceeds the largest in its first third by 10 % of E(0). With
+  // N steps (the scene's 20 s, or 1000 steps if longer) those are E0 q^N and E0 q^(N/3).
+  auto grows = [](double h) {
+    const double steps = std::max(20.0, render::analysis::kMinimumSteps * h) / h;
+    const double n = std::floor(steps), third = std::max(1.0, std::floor(n / 3.0));
+    const double q = 1.0 + (h * kOmega) * (h * kOmega);
+    return std::pow(q, n) - std::pow(q, third) > 0.1;
+  };
+  double lo = 1e-6, hi = 0.1;
+  for (int k = 0; k < 200; ++k) (grows(0.5 * (lo + hi)) ? hi : lo) = 0.5 * (lo + hi);
+  const double closedForm = lo;
+  CHECK(boundary(kSpringMass, sim::core::Integrator::ExplicitEuler) == doctest::Approx(closedForm).epsilon(0.05));
+}
+
+TEST_CASE("tunneling: the stepped methods' speed limit follows from the thicknesses; event never tunnels") {
+  // a 5 cm body toward a 5 cm wall, dt = 1/60. `isolated` pushes an overlapping pair apart along
+  // the normal of least overlap, so a body that a step carries more than halfway through the two
+  // thicknesses (0.05 m) is pushed out on the far side: it tunnels from (0.05 + 0.05)/2 / dt = 3 m/s
+  const char* yaml = R"(
+duration: 0.5
+world: {restitution: 1}
+sim: {dt: 0.016666666666666667}
+bodies:
+  - {name: wall, shape: {box: [0.05, 2.0]}, static: true}
+  - {name: bullet, shape: {box: [0.05, 0.2]}, mass: 0.1, position: [-1, 0], velocity: [1, 0]}
+stability: {parameter: speed, body: bullet, from: 0.5, to: 10000}
+)";
+  const double allowed = 0.5 * (0.05 + 0.05) * 60.0;
+  CHECK(boundary(yaml, sim::core::Integrator::SymplecticEuler, sim::world::CollisionMethod::Isolated) == doctest::Approx(allowed).epsilon(0.10));
+
+  sim::scene::SceneDef def = sim::yaml::loadSceneText(yaml, "inline.yaml");
+  def.collisions = sim::world::CollisionMethod::Event;
+  const render::analysis::StabilityResult r = render::analysis::findBoundary(def);
+  CHECK(r.holdsToLimit);
+}
+
+TEST_CASE("the stack criterion: isolated lets a stack drift or sink, sequential holds it") {
+  std::string yaml = R"(
+duration: 3
+world: {gravity: [0, -10], friction: 0.6, restitution: 0}
+sim: {dt: 0.016666666666666667}
+stability: {parameter: stack_height, to: 6}
+bodies:
+  - {name: ground, shape: {plane: {point: [0, 0], normal: [0, 1]}}}
+)";
+  for (int i = 0; i < 6; ++i)
+    yaml += "  - {name: box" + std::to_string(i) + ", shape: {box: [1, 1]}, position: [0, " + std::to_string(0.5 + i) + "]}\n";
+  sim::scene::SceneDef def = sim::yaml::loadSceneText(yaml, "inline.yaml");
+  def.collisions = sim::world::CollisionMethod::Sequential;
+  const render::analysis::StabilityResult held = render::analysis::findBoundary(def);
+  MESSAGE(render::analysis::describeFailure(def, held));
+  CHECK(held.holdsToLimit);
+  CHECK(held.largestStable == 6.0);
+  def.collisions = sim::world::CollisionMethod::Isolated;
+  const render::analysis::StabilityResult isolated = render::analysis::findBoundary(def);
+  MESSAGE(render::analysis::describeFailure(def, isolated));
+  CHECK(isolated.largestStable < 6.0);
+}

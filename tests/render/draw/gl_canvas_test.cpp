@@ -1,0 +1,133 @@
+// The GL canvas: every role lands where the camera says, in the color the style says; translucent
+// shapes blend once (no darker joins); static shapes are hatched; frames are deterministic.
+#include <doctest/doctest.h>
+
+#include <cstdlib>
+
+#include "render/draw/gl_canvas.h"
+
+using render::draw::Camera;
+using render::draw::Color;
+using render::draw::Image;
+using sim::debug::DrawRole;
+using sim::debug::DrawStyle;
+using sim::core::Vec2;
+
+namespace {
+
+render::draw::Style testStyle() {
+  render::draw::Style s;
+  s.background = Color::parse("#ffffff");
+  s.bodies = {Color::parse("#4e79a7"), Color::parse("#8c8c8c")};
+  s.staticBody = Color::parse("#8c8c8c");
+  s.contact = s.normal = Color::parse("#d62728");
+  s.impulse = Color::parse("#2ca02c");
+  s.velocity = s.text = Color::parse("#1f1f1f");
+  s.trail = Color::parse("#9a9a9a");
+  s.referenceEdge = Color::parse("#ff7f0e");
+  s.incidentVertex = Color::parse("#9467bd");
+  s.spring = Color::parse("#4d4d4d");
+  s.lineWidth = 2.0;
+  s.fontSize = 12;
+  return s;
+}
+
+// each channel of the pixel within `tolerance` of the color
+bool near(const Image& i, int x, int y, const Color& c, int tolerance = 3) {
+  const uint8_t* p = i.pixel(x, y);
+  return std::abs(p[0] - Color::byte(c.r)) <= tolerance && std::abs(p[1] - Color::byte(c.g)) <= tolerance &&
+         std::abs(p[2] - Color::byte(c.b)) <= tolerance;
+}
+
+struct Fixture {
+  render::draw::GlContext gl{100, 100};
+  render::draw::TextRenderer text;
+  render::draw::Style style = testStyle();
+  render::draw::GlCanvas canvas{gl, text, style};
+  // 10 m high: 0.1 m per pixel, the world origin at pixel (50, 50)
+  Camera camera{Vec2::Zero(), 10.0, 100, 100};
+};
+
+}  // namespace
+
+TEST_CASE_FIXTURE(Fixture, "a body is filled inside, outlined darker, and nothing is drawn outside it") {
+  canvas.begin(camera);
+  canvas.polygon({{-2, -2}, {2, -2}, {2, 2}, {-2, 2}}, {DrawRole::Body, 0, 1.0});
+  const Image i = canvas.finish();
+  const Color base = style.bodies[0];
+  CHECK(near(i, 50, 50, base.mixed({1, 1, 1, 1}, 0.35)));
+  CHECK(near(i, 70, 50, base.mixed({0, 0, 0, 1}, 0.35), 12));  // on the right edge, x = 2 m
+  CHECK(near(i, 90, 50, style.background, 0));
+  CHECK(near(i, 5, 5, style.background, 0));
+}
+
+TEST_CASE_FIXTURE(Fixture, "a translucent outline blends once, at its joins as along its edges") {
+  canvas.begin(camera);
+  canvas.polygon({{-3, -3}, {3, -3}, {3, 3}, {-3, 3}}, {DrawRole::Body, 0, 0.5});
+  const Image i = canvas.finish();
+  // the corner (-3, 3) is pixel (20, 20): quads of two edges and a round join overlap there
+  const uint8_t* corner = i.pixel(20, 20);
+  const uint8_t* edge = i.pixel(50, 20);
+  for (int c = 0; c < 3; ++c) CHECK(std::abs(corner[c] - edge[c]) <= 3);
+}
+
+TEST_CASE_FIXTURE(Fixture, "a half-plane fills its side out to the edges of the view, hatched") {
+  canvas.begin(camera);
+  canvas.halfPlane({0, -2}, {0, 1}, {DrawRole::StaticBody, 1, 1.0});
+  const Image i = canvas.finish();
+  // above the boundary (y = -2 m, pixel row 70) nothing; below it the fill or the hatching everywhere
+  CHECK(near(i, 0, 60, style.background, 0));
+  CHECK(near(i, 99, 60, style.background, 0));
+  int fill = 0, hatch = 0;
+  const Color fillColor = style.staticBody.mixed({1, 1, 1, 1}, 0.6);
+  for (int x = 0; x < 100; ++x)
+    for (int y = 75; y < 100; ++y) {
+      CHECK_FALSE(near(i, x, y, style.background, 0));
+      near(i, x, y, fillColor) ? ++fill : ++hatch;
+    }
+  CHECK(fill > hatch);
+  CHECK(hatch > 100);
+}
+
+TEST_CASE_FIXTURE(Fixture, "contact points, arrows and captions are drawn in their colors") {
+  canvas.begin(camera);
+  canvas.point({-2, 2}, {DrawRole::ContactPoint, -1, 1.0});
+  canvas.arrow({0, -2}, {3, -2}, {DrawRole::ContactNormal, -1, 1.0});
+  canvas.segment({-4, -4}, {4, -4}, {DrawRole::ReferenceEdge, -1, 1.0});
+  canvas.text(camera.toWorld({2, 2}), "t = 0", {DrawRole::Caption, -1, 1.0});
+  const Image i = canvas.finish();
+  CHECK(near(i, 30, 30, style.contact));
+  CHECK(near(i, 60, 70, style.normal));  // the arrow's shaft, y = -2 m
+  CHECK(near(i, 50, 90, style.referenceEdge));
+  int dark = 0;
+  for (int y = 0; y < 20; ++y)
+    for (int x = 0; x < 40; ++x) dark += i.pixel(x, y)[0] < 100;
+  CHECK(dark > 10);
+}
+
+TEST_CASE_FIXTURE(Fixture, "the same calls give the same pixels") {
+  auto draw = [&] {
+    canvas.begin(camera);
+    canvas.circle({0.3, 0.1}, 2.7, {DrawRole::Body, 0, 1.0});
+    canvas.polygon({{-4, -4}, {-1, -4.5}, {-2, -1}}, {DrawRole::StaticBody, 1, 0.6});
+    canvas.text({0.3, 0.1}, "ω", {DrawRole::Label, 0, 1.0});
+    return canvas.finish();
+  };
+  const Image a = draw();
+  CHECK(draw() == a);
+}
+
+TEST_CASE("supersampled and multisampled contexts both give frames of the output size") {
+  for (const render::draw::Antialiasing aa : {render::draw::Antialiasing{1, 1}, render::draw::Antialiasing{2, 1}, render::draw::Antialiasing{1, 4}}) {
+    render::draw::GlContext gl(64, 32, aa);
+    render::draw::TextRenderer text;
+    const render::draw::Style style = testStyle();
+    render::draw::GlCanvas canvas(gl, text, style);
+    canvas.begin(Camera({0, 0}, 3.2, 64, 32));
+    canvas.circle({0, 0}, 1.0, {DrawRole::Body, 0, 1.0});
+    const Image i = canvas.finish();
+    CHECK(i.width == 64);
+    CHECK(i.height == 32);
+    CHECK(near(i, 32, 16, style.bodies[0].mixed({1, 1, 1, 1}, 0.35)));
+  }
+}

@@ -1,0 +1,206 @@
+// The middle level of the regression tests: the draw calls of a frame, without any GL. A change
+// here and not in the state hash is a change in what is shown, not in the physics.
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "render/frame/energy_panel.h"
+#include "render/frame/scene_run.h"
+#include "sim/yaml/scene_yaml.h"
+
+using render::frame::FramePainter;
+
+namespace {
+
+const char* const kPoll = R"(
+name: poll
+duration: 2
+sim: {integrator: rk4, dt: 0.001}
+bodies:
+  - {name: bar, shape: {box: [0.2, 4.0]}, mass: 3, inertia: 4, label: "bar"}
+  - {name: floor, shape: {box: [6, 0.5]}, position: [0, -3], static: true}
+events:
+  - {time: 0.5, body: bar, impulse: [1, 0], point: [0, 2]}
+render: {velocities: true, trails: true, size: [320, 180]}
+)";
+
+render::draw::DrawList frameAt(const std::string& yaml, double t, int strobe = 0) {
+  const sim::scene::SceneDef def = sim::yaml::loadSceneText(yaml, "inline.yaml");
+  const render::frame::RunSurvey survey = render::frame::surveyRun(def);
+  const render::draw::Camera camera = render::frame::cameraFor(def, survey);
+  render::frame::SceneRun run(def, camera, survey);
+  return run.drawListAt(t, strobe);
+}
+
+}  // namespace
+
+TEST_CASE("the poll at t = 0.75: static floor first, trail, bar, held impulse, velocity, labels, time") {
+  // the bar turns at ω = −0.5 from t = 0.5 and moves at 1/3 m/s; the view is 6.25 m high, so the
+  // automatic arrows are 6.25 / 6 = 1.04 m long for the largest impulse (1 N·s) and speed (1/3 m/s)
+  CHECK(frameAt(kPoll, 0.75).toText() ==
+        "polygon StaticBody#1 (-3,-3.25) (3,-3.25) (3,-2.75) (-3,-2.75)\n"
+        "segment Trail#0 (0,0) (0.0523333,0)\n"
+        "segment Trail#0 (0.0523333,0) (0.0833333,0)\n"
+        "polygon Body#0 (-0.265236,-1.97193) (-0.0667964,-1.99686) (0.431903,1.97193) (0.233463,1.99686)\n"
+        "arrow Impulse#0@0.5 (-1.04216,2) -> (0,2)\n"
+        "arrow Velocity#0 (0.0833333,0) -> (1.1255,0)\n"
+        "text Label#0 (0.0833333,0) \"bar\"\n"
+        "text Label#1 (0,-3) \"floor\"\n"
+        "text Caption (-5.36714,2.31167) \"t = 0.750 s\"\n");
+}
+
+TEST_CASE("a strobe frame has its ghosts, faint to less faint, behind the present bar") {
+  const auto lines = frameAt(kPoll, 1.0, 3).lines();
+  REQUIRE(lines.size() >= 5);
+  CHECK(lines[0].rfind("polygon StaticBody#1", 0) == 0);
+  // ghosts at t = 0, 1/3, 2/3 with opacities 0.15, 0.35, 0.55; the trail comes before them
+  std::vector<std::string> ghosts;
+  for (const std::string& l : lines)
+    if (l.find("Body#0@") != std::string::npos) ghosts.push_back(l.substr(0, l.find(' ', 8)));
+  CHECK(ghosts == std::vector<std::string>{"polygon Body#0@0.15", "polygon Body#0@0.35", "polygon Body#0@0.55"});
+}
+
+TEST_CASE("render switches turn parts of the frame off") {
+  std::string quiet = kPoll;
+  quiet.replace(quiet.find("render: {velocities: true, trails: true,"), 40,
+                "render: {labels: false, time: false, impulses: false,");
+  CHECK(frameAt(quiet, 0.75).toText() ==
+        "polygon StaticBody#1 (-3,-3.25) (3,-3.25) (3,-2.75) (-3,-2.75)\n"
+        "polygon Body#0 (-0.265236,-1.97193) (-0.0667964,-1.99686) (0.431903,1.97193) (0.233463,1.99686)\n");
+}
+
+TEST_CASE("the time caption has three decimals") {
+  CHECK(FramePainter::timeText(0.5) == "t = 0.500 s");
+  CHECK(FramePainter::timeText(12.3456) == "t = 12.346 s");
+}
+
+TEST_CASE("a spring is a zigzag from the body point to its anchor, with a dot at the anchor") {
+  const std::string hanging =
+      "duration: 1\n"
+      "bodies:\n"
+      "  - {name: bar, shape: {box: [0.1, 1]}, position: [0, -1.5]}\n"
+      "forces:\n"
+      "  - {type: spring, body: bar, point: [0, 0.5], anchor: [0, 0], stiffness: 10, rest_length: 1}\n"
+      "render: {labels: false, time: false, size: [320, 180]}\n";
+  const auto lines = frameAt(hanging, 0.0).lines();
+  // the bar; a lead, 12 zigs, the way back to the axis and a lead (15 segments); the anchor
+  REQUIRE(lines.size() == 1 + 15 + 1);
+  CHECK(lines[1] == "segment Spring (0,-1) (0,-0.88)");
+  CHECK(lines[15] == "segment Spring (0,-0.12) (0,0)");
+  CHECK(lines[16] == "point StaticBody (0,0)");
+}
+
+TEST_CASE("the separating-axis overlay: reference edge, incident vertex and the separation, as the pair approaches") {
+  // a box tilted by 0.3 rad above a static base whose top face is y = 0.5: its lowest corner is
+  // 0.2 (cos 0.3 + sin 0.3) = 0.250171 below its center, 0.049829 above the face
+  const std::string pair =
+      "duration: 1\n"
+      "sim: {collisions: none}\n"
+      "bodies:\n"
+      "  - {name: base, shape: {box: [2, 0.5]}, position: [0, 0.25], static: true}\n"
+      "  - {name: box, shape: {box: [0.4, 0.4]}, position: [0, 0.8], angle: 0.3}\n"
+      "render: {sat: true, labels: false, time: false, size: [320, 180], camera: {center: [0, 0.5], height: 2}}\n";
+  const auto lines = frameAt(pair, 0.0).lines();
+  REQUIRE(lines.size() == 5);
+  CHECK(lines[2] == "segment ReferenceEdge#0 (1,0.5) (-1,0.5)");
+  // the corner (−0.2, −0.2) of the box turned by 0.3 rad
+  CHECK(lines[3] == "point IncidentVertex#1 (-0.131963,0.549829)");
+  // a line of text (11 px of a 2 m view, 180 px high) below the edge's middle, inside the base
+  CHECK(lines[4] == "text Label#0 (0,0.377778) \"separation 0.0498 m\"");
+  // far apart (more than a tenth of the view): no overlay
+  std::string apart = pair;
+  apart.replace(apart.find("position: [0, 0.8]"), 18, "position: [0, 1.2]");
+  CHECK(frameAt(apart, 0.0).lines().size() == 2);
+}
+
+TEST_CASE("contacts touching now are dots with normals into the moving body") {
+  const std::string resting =
+      "duration: 1\n"
+      "world: {gravity: [0, -10]}\n"
+      "sim: {collisions: sequential}\n"
+      "bodies:\n"
+      "  - {name: floor, shape: {plane: {point: [0, 0], normal: [0, 1]}}}\n"
+      "  - {name: box, shape: {box: [1, 1]}, position: [0, 0.5]}\n"
+      "render: {labels: false, time: false, size: [320, 180], camera: {center: [0, 0.5], height: 2}}\n";
+  std::vector<std::string> contacts;
+  for (const std::string& l : frameAt(resting, 0.5).lines())
+    if (l.find("Contact") != std::string::npos) contacts.push_back(l.substr(0, l.find(' ', 6)));
+  // two manifold points, each a normal (pointing up, into the box) and a dot
+  CHECK(contacts == std::vector<std::string>{"arrow ContactNormal", "point ContactPoint", "arrow ContactNormal",
+                                             "point ContactPoint"});
+}
+
+TEST_CASE("the caption: wrapped at the bottom left, at most two lines; the slow-motion note under the time") {
+  // a 320 × 180 frame 1.8 m high: a pixel is 1 cm, the text 11 px with lines 14 px apart; without a
+  // font the width is estimated at 6.6 px a code point, so a line (320 − 11 px) takes 46 of them
+  const std::string text =
+      "description: A ball rolls to the right at one metre per second, past the origin and on. Then it stops.\n"
+      "duration: 1\n"
+      "bodies:\n"
+      "  - {name: ball, shape: {circle: 0.1}, velocity: [1, 0]}\n"
+      "render: {caption: true, labels: false, size: [320, 180], camera: {center: [0, 0], height: 1.8},\n"
+      "         slow_motion: {factor: 4, from: 0.2, to: 0.4}}\n";
+  const sim::scene::SceneDef def = sim::yaml::loadSceneText(text, "inline.yaml");
+  const render::frame::RunSurvey survey = render::frame::surveyRun(def);
+  render::frame::SceneRun run(def, render::frame::cameraFor(def, survey), survey);
+  // the video's time map slows [0.2, 0.4) fourfold (time_map_test.cpp tests the map itself)
+  run.showSlowMotion([](double t) { return t >= 0.2 && t < 0.4 ? 4.0 : 1.0; });
+  const auto lines = run.drawListAt(0.3).lines();
+  REQUIRE(lines.size() == 6);
+  CHECK(lines[2] == "text Caption (-1.545,0.845) \"t = 0.300 s\"");
+  CHECK(lines[3] == "text Caption (-1.545,0.705) \"slow motion ×1/4\"");
+  // line tops 28 and 14 px above the bottom inset (174.5 px from the top)
+  CHECK(lines[4] == "text Caption (-1.545,-0.565) \"A ball rolls to the right at one metre per\"");
+  CHECK(lines[5] == "text Caption (-1.545,-0.705) \"second, past the origin and on.\"");
+  // outside the window, and in snapshots (no map), no note
+  CHECK(run.drawListAt(0.5).lines().size() == 5);
+  render::frame::SceneRun snapshot(def, render::frame::cameraFor(def, survey), survey);
+  CHECK(snapshot.drawListAt(0.3).lines().size() == 5);
+}
+
+TEST_CASE("the slow-motion note names the factor") {
+  CHECK(FramePainter::slowMotionText(4.0) == "slow motion ×1/4");
+  CHECK(FramePainter::slowMotionText(2.5) == "slow motion ×1/2.5");
+}
+
+TEST_CASE("with a caption the automatic camera fits the bodies above its band, and without one as before") {
+  const std::string scene =
+      "description: A ball. It rolls.\n"
+      "bodies:\n"
+      "  - {name: ball, shape: {circle: 1}}\n"
+      "render: {size: [320, 180], camera: {margin: 0}}\n";
+  const sim::scene::SceneDef plain = sim::yaml::loadSceneText(scene, "inline.yaml");
+  const render::frame::RunSurvey survey = render::frame::surveyRun(plain);
+  const render::draw::Camera before = render::frame::cameraFor(plain, survey);
+  CHECK(before.worldHeight() == doctest::Approx(2.0));
+  CHECK(before.toPixel({0, -1}).y() == doctest::Approx(180.0));
+  std::string captioned = scene;
+  captioned.replace(captioned.find("margin: 0}"), 10, "margin: 0}, caption: true");
+  const render::draw::Camera after = render::frame::cameraFor(sim::yaml::loadSceneText(captioned, "inline.yaml"), survey);
+  // 11 px text: a band of 5.5 + 2 × 14 px; the ball fills the 147 px above it (whole pixels)
+  CHECK(after.toPixel({0, 1}).y() == doctest::Approx(0.0));
+  CHECK(after.toPixel({0, -1}).y() == doctest::Approx(147.0));
+}
+
+TEST_CASE("with an energy panel the automatic camera fits the bodies left of its band") {
+  const std::string scene =
+      "bodies:\n"
+      "  - {name: ball, shape: {circle: 1}, velocity: [0, 0.001]}\n"
+      "render: {size: [640, 180], camera: {margin: 0}, energy: true}\n";
+  const sim::scene::SceneDef def = sim::yaml::loadSceneText(scene, "inline.yaml");
+  const render::frame::RunSurvey survey = render::frame::surveyRun(def);
+  const double band = render::frame::EnergyPanel::bandPx(def, survey, 180);
+  // a real panel, narrower than the frame
+  REQUIRE(band > 50.0);
+  REQUIRE(band < 640.0 - 180.0);
+  const render::draw::Camera camera = render::frame::cameraFor(def, survey);
+  // the ball is fitted by its height (the free part is wider than tall), centered in the free part;
+  // its rightmost point stays left of the panel
+  CHECK(camera.worldHeight() == doctest::Approx(2.0).epsilon(1e-3));
+  CHECK(camera.toPixel({0, 0}).x() == doctest::Approx(0.5 * std::lround(640 - band)).epsilon(1e-9));
+  CHECK(camera.toPixel({1, 0}).x() < 640.0 - band);
+  // without the panel the ball is in the middle of the frame
+  sim::scene::SceneDef plain = def;
+  plain.render.overlays.energy = false;
+  CHECK(render::frame::cameraFor(plain, survey).toPixel({0, 0}).x() == doctest::Approx(320.0));
+}

@@ -1,0 +1,125 @@
+// What stays on screen after it happens: contacts held and fading after a touch ends, an event's
+// impulse arrow ending at the point it strikes, trails with nearby points merged.
+#include <doctest/doctest.h>
+
+#include "render/frame/history.h"
+#include "sim/scene/scene_build.h"
+#include "sim/yaml/scene_yaml.h"
+
+using render::draw::DrawList;
+using render::frame::History;
+using sim::debug::DrawRole;
+
+namespace {
+
+// a ball moving right at 1 m/s, and a kick at t = 0.5
+sim::world::World ballWorld() {
+  return sim::scene::buildWorld(sim::yaml::loadSceneText(
+      "duration: 2\n"
+      "bodies:\n"
+      "  - {name: ball, shape: {circle: 0.5}, velocity: [1, 0]}\n"
+      "events:\n"
+      "  - {time: 0.5, body: ball, impulse: [0, 2], point: [0, 0]}\n",
+      "inline.yaml"));
+}
+
+// a made-up contact while the ball's center is in [0.2, 0.4] (with room for round-off)
+void fakeContacts(const sim::world::World& w, sim::debug::DebugDraw& d) {
+  const double x = w.bodies[0].x.x();
+  if (x >= 0.1995 && x <= 0.4005) d.point({x, 0}, {DrawRole::ContactPoint, -1, 1.0});
+}
+
+}  // namespace
+
+TEST_CASE("a contact stays after the touch ends, fading linearly over the hold time") {
+  sim::world::World w = ballWorld();
+  History h(w, {false, 0.5, false, false, 1.0, 1.0, fakeContacts});
+  w.advanceTo(0.3, &h);
+  DrawList now;
+  h.drawAfterimages(w.time, now);
+  // touching: the latest contact, fully opaque, only once
+  CHECK(now.toText() == "point ContactPoint (0.3,0)\n");
+  w.advanceTo(0.65, &h);  // the touch ended at 0.4: 0.25 s ago, half the hold
+  DrawList later;
+  h.drawAfterimages(w.time, later);
+  CHECK(later.toText() == "point ContactPoint@0.5 (0.4,0)\n");
+  w.advanceTo(0.95, &h);
+  DrawList gone;
+  h.drawAfterimages(w.time, gone);
+  CHECK(gone.empty());
+}
+
+TEST_CASE("an event's impulse is an arrow ending where it strikes, scaled, held like a contact") {
+  sim::world::World w = ballWorld();
+  History h(w, {false, 0.5, true, false, 0.25, 1.0, {}});
+  w.advanceTo(0.5, &h);
+  DrawList at;
+  h.drawAfterimages(w.time, at);
+  CHECK(at.toText() == "arrow Impulse#0 (0.5,-0.5) -> (0.5,0)\n");
+  w.advanceTo(1.2, &h);
+  DrawList gone;
+  h.drawAfterimages(w.time, gone);
+  CHECK(gone.empty());
+}
+
+TEST_CASE("trails follow the center of mass, points closer than the spacing merged") {
+  sim::world::World w = ballWorld();
+  History h(w, {true, 0.5, false, false, 1.0, 1.0, {}});
+  w.advanceTo(0.4, &h);
+  DrawList fine, coarse;
+  // spacings a little under 10 and 150 steps of 1 mm, so that round-off does not skip a point
+  h.drawTrails(fine, 0.0095);
+  h.drawTrails(coarse, 0.1495);
+  CHECK(fine.calls().size() == 40);
+  // 0.15 m apart at 1 m/s: a segment per 0.15 s, and one to the present position
+  CHECK(coarse.toText() == "segment Trail#0 (0,0) (0.15,0)\nsegment Trail#0 (0.15,0) (0.3,0)\nsegment Trail#0 (0.3,0) (0.4,0)\n");
+}
+
+TEST_CASE("an impact shows its point, its normal and the impulse on the moving body, then fades") {
+  // a ball (A, body 0) at 1 m/s meets a static wall (B) whose face is at x = 1.5 at t = 1
+  sim::world::World w = sim::scene::buildWorld(sim::yaml::loadSceneText(
+      "duration: 2\n"
+      "world: {restitution: 1}\n"
+      "sim: {collisions: event}\n"
+      "bodies:\n"
+      "  - {name: ball, shape: {circle: 0.5}, mass: 2, velocity: [1, 0]}\n"
+      "  - {name: wall, shape: {box: [1, 4]}, position: [2, 0], static: true}\n",
+      "inline.yaml"));
+  History h(w, {false, 0.5, false, true, 0.25, 1.0, {}});
+  w.advanceTo(1.1, &h);
+  DrawList shown;
+  h.drawAfterimages(w.time, shown);
+  // γ = (1 + c_r) m |v_n| = 4 N·s, 1 m of arrow at 0.25 m per N·s, on the ball only (the wall
+  // does not move); n̂ from the wall (B) into the ball (A)
+  CHECK(shown.toText() ==
+        "arrow Impulse#0@0.8 (1.5,0) -> (0.5,0)\n"
+        "arrow ContactNormal@0.8 (1.5,0) -> (0.5,0)\n"
+        "point ContactPoint@0.8 (1.5,0)\n");
+  w.advanceTo(1.6, &h);
+  DrawList gone;
+  h.drawAfterimages(w.time, gone);
+  CHECK(gone.empty());
+}
+
+TEST_CASE("a pair that hits again replaces its last impact instead of piling up arrows") {
+  // a ball bouncing on a floor (A, static: the normal turns to point into the ball)
+  sim::world::World w = sim::scene::buildWorld(sim::yaml::loadSceneText(
+      "duration: 3\n"
+      "world: {gravity: [0, -10], restitution: 0.5}\n"
+      "sim: {collisions: event}\n"
+      "bodies:\n"
+      "  - {name: floor, shape: {plane: {point: [0, 0], normal: [0, 1]}}}\n"
+      "  - {name: ball, shape: {circle: 0.1}, position: [0, 0.3]}\n",
+      "inline.yaml"));
+  History h(w, {false, 2.0, false, true, 0.0, 0.5, {}});
+  // the bounces pile up by t = 0.2 · 1.5 / 0.5 = 0.6 s
+  w.advanceTo(1.0, &h);
+  REQUIRE(w.impacts.size() > 3);
+  DrawList shown;
+  h.drawAfterimages(w.time, shown);
+  const auto lines = shown.lines();
+  // one impact's normal and point (no impulse on the floor; a zero scale for the ball's)
+  REQUIRE(lines.size() == 3);
+  CHECK(lines[1].find("arrow ContactNormal") == 0);
+  CHECK(lines[1].find("-> (0,0.5)") != std::string::npos);
+}

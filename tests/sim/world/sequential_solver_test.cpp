@@ -1,0 +1,244 @@
+// The `sequential` method (sequential_solver.cpp): sequential impulses with warm starting,
+// friction and position correction (Box2D 2.4): stacks stand, fast thin bodies tunnel.
+#include <doctest/doctest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "sim/scene/scene_build.h"
+#include "sim/world/diagnostics.h"
+#include "sim/world/world.h"
+#include "sim/yaml/scene_yaml.h"
+#include "support/scene_text.h"
+
+namespace {
+
+using scene_text::build;
+using scene_text::num;
+using scene_text::vec;
+
+const char* kSolverSettings =
+    "world: {gravity: [0, -10], friction: 0.6, restitution: 0}\n"
+    "sim: {collisions: sequential, dt: 0.016666666666666667, iterations: 8, position_iterations: 3}\n"
+    "bodies:\n";
+
+// box_stack.yaml: ten 1 m boxes on a plane
+std::string boxStack() {
+  std::string s = std::string(kSolverSettings) + "  - {name: ground, shape: {plane: {point: [0, 0], normal: [0, 1]}}}\n";
+  for (int i = 0; i < 10; ++i)
+    s += "  - {name: box" + std::to_string(i + 1) + ", shape: {box: [1, 1]}, position: " + vec(0, 0.5 + i) + "}\n";
+  return s;
+}
+
+// pyramid.yaml: a ground box 80 × 1 centered at (0, −0.5); rows r = 0 … 19 of 20 − r boxes resting
+// on each other, box j of row r at (−7 + 0.5625 r + 1.125 j, 0.5 + r); 210 boxes
+std::string pyramid() {
+  std::string s = std::string(kSolverSettings) +
+                  "  - {name: ground, shape: {box: [80, 1]}, static: true, position: [0, -0.5]}\n";
+  for (int r = 0; r < 20; ++r)
+    for (int j = 0; j < 20 - r; ++j)
+      s += "  - {name: b" + std::to_string(r + 1) + "_" + std::to_string(j + 1) +
+           ", shape: {box: [1, 1]}, position: " + vec(-7.0 + 0.5625 * r + 1.125 * j, 0.5 + r) + "}\n";
+  return s;
+}
+
+// the most negative separation of any contact point now (0 when nothing overlaps)
+double deepest(const sim::world::World& w) {
+  double d = 0.0;
+  for (const sim::world::Contact& c : w.findContacts(sim::core::settings::kContactMargin))
+    for (int k = 0; k < c.manifold.count; ++k) d = std::min(d, c.manifold.points[k].separation);
+  return d;
+}
+
+// the standing criterion, sampled at every step: how far the top box strays, the deepest
+// penetration, and whether any state stopped being finite
+class StandWatch : public sim::world::StepObserver {
+ public:
+  StandWatch(const sim::world::World& w, int top) : top(top), start(w.bodies[top].x) {}
+  void afterStep(const sim::world::World& w) override {
+    const double d = (w.bodies[top].x - start).norm();
+    if (d > moved) moved = d, movedAt = w.time;
+    penetration = std::max(penetration, -deepest(w));
+    for (const sim::core::Body& b : w.bodies)
+      finite = finite && sim::core::isFinite(b.x) && std::isfinite(b.angle) && sim::core::isFinite(b.v) && std::isfinite(b.omega);
+    ++steps;
+  }
+  int top;
+  sim::core::Vec2 start;
+  double moved = 0.0, movedAt = 0.0, penetration = 0.0;
+  bool finite = true;
+  int steps = 0;
+};
+
+void checkStands(const std::string& yaml, const char* name, size_t bodies) {
+  sim::world::World w = build(yaml);
+  REQUIRE(w.bodies.size() == bodies);
+  REQUIRE(w.collisions == sim::world::CollisionMethod::Sequential);
+  const int top = static_cast<int>(w.bodies.size()) - 1;
+  StandWatch watch(w, top);
+  const auto t0 = std::chrono::steady_clock::now();
+  w.advanceTo(10.0, &watch);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  MESSAGE(std::string(name) << ", sequential, 10 s (" << watch.steps << " steps, " << seconds
+                            << " s wall): top box strayed up to " << watch.moved << " m (at t = " << watch.movedAt
+                            << " s), ends " << (w.bodies[top].x - watch.start).norm() << " m from its start, at ("
+                            << num(w.bodies[top].x.x()) << ", " << num(w.bodies[top].x.y())
+                            << "); deepest penetration " << watch.penetration << " m");
+  CHECK(watch.steps == 600);
+  CHECK(watch.finite);
+  const double box = 1.0;
+  // where the top box is after the 10 s (the scene's own `expect`): less than 5 % of a box from its
+  // start; on the way it may dip while the solver takes up the load (see the pyramid below), but
+  // never by more than 10 %
+  CHECK((w.bodies[top].x - watch.start).norm() < 0.05 * box);
+  CHECK(watch.moved < 0.10 * box);
+  CHECK(watch.penetration < 2.0 * sim::core::settings::kLinearSlop);
+  // and still at the end
+  CHECK(w.bodies[top].v.norm() < 0.01);
+  CHECK(std::abs(w.bodies[top].omega) < 0.01);
+}
+
+}  // namespace
+
+TEST_CASE("sequential: the 10-box stack stands for 10 s") { checkStands(boxStack(), "box stack", 11); }
+
+// Measured: the top box dips 0.0552 m in the first 0.15 s (the rows start exactly touching, and
+// 8 Gauss–Seidel sweeps per step cannot pass the load of 20 rows down at once, so the upper rows
+// fall a little until the accumulated, warm-started impulses hold them), rebounds, and settles
+// 0.0365 m from its start (0.0353 m lower, as each of the 20 contact layers sinks into its slop).
+// The criterion is therefore the position after the 10 s (5 %), with the transient dip bounded
+// by 10 %.
+TEST_CASE("sequential: the 20-base pyramid (210 boxes) stands for 10 s") { checkStands(pyramid(), "pyramid", 211); }
+
+TEST_CASE("sequential: warm starting carries the accumulated impulses from step to step") {
+  // one 1 m box (density 1: m = 1 kg) resting on a plane, g = 10, dt = 1/60: the floor must give
+  // it the impulse m g dt in every step, shared by the two corners
+  sim::world::World w = build(std::string(kSolverSettings) +
+                       "  - {name: ground, shape: {plane: {point: [0, 0], normal: [0, 1]}}}\n"
+                       "  - {name: box, shape: {box: [1, 1]}, position: [0, 0.5]}\n");
+  const double m = w.bodies[1].mass, g = 10.0, dt = w.dt;
+  REQUIRE(m == doctest::Approx(1.0).epsilon(1e-15));
+  const double support = m * g * dt;
+  for (int n = 1; n <= 5; ++n) {
+    w.advanceTo(n * dt);
+    REQUIRE(w.contacts.size() == 1);
+    const sim::world::Contact& c = w.contacts[0];
+    REQUIRE(c.manifold.count == 2);
+    CAPTURE(n);
+    CHECK(c.state[0].normalImpulse + c.state[1].normalImpulse == doctest::Approx(support).epsilon(1e-6));
+    // a symmetric box: each corner carries half
+    CHECK(c.state[0].normalImpulse == doctest::Approx(support / 2).epsilon(1e-6));
+    CHECK(w.bodies[1].v.norm() <= 1e-6 * g * dt);
+  }
+  // now no velocity iterations at all: what holds the box in the next step is only the impulse
+  // carried over from the last one and applied again by the warm start. It must be the whole
+  // support (the box stays at rest), and it is carried on unchanged.
+  w.velocityIterations = 0;
+  const sim::core::Vec2 before = w.bodies[1].x;
+  w.advanceTo(6 * dt);
+  const sim::world::Contact& c = w.contacts[0];
+  CHECK(c.state[0].normalImpulse + c.state[1].normalImpulse == doctest::Approx(support).epsilon(1e-6));
+  CHECK(w.bodies[1].v.norm() <= 1e-6 * g * dt);
+  CHECK((w.bodies[1].x - before).norm() <= 1e-6 * g * dt * dt);
+}
+
+namespace {
+
+// the thin body and thin wall of tunneling.yaml, the body starting at x0 (off the lattice of the
+// step grid, so that no step starts with the body exactly on the wall's center line)
+constexpr double kX0 = -1.0123, kDt = 1.0 / 60.0;
+
+std::string tunneling(double speed) {
+  return std::string(
+             "world: {restitution: 1}\nsim: {collisions: sequential, dt: 0.016666666666666667}\n"
+             "bodies:\n"
+             "  - {name: wall, shape: {box: [0.05, 2.0]}, static: true}\n"
+             "  - {name: bullet, shape: {box: [0.05, 0.2]}, mass: 0.1, position: ") +
+         vec(kX0, 0) + ", velocity: " + vec(speed, 0) + "}\n";
+}
+
+bool passesThrough(double speed) {
+  sim::world::World w = build(tunneling(speed));
+  w.advanceTo(std::max(5.0 * kDt, 3.0 / speed));
+  return w.bodies[1].x.x() > 0.05;
+}
+
+// the geometry: sequential finds contacts where the step starts (x0 + k v dt, k ≥ 0), within the
+// contact margin: a gap up to the margin is closed but not overrun, and an overlap with the body's
+// center short of the wall's is pushed back; from past the center line the least-penetration
+// normal points forward. So the body is stopped when a step starts with −0.05 − margin ≤ x < 0.
+bool sequentialCatches(double speed) {
+  const double margin = sim::core::settings::kContactMargin;
+  for (int k = 0; kX0 + (k - 1) * speed * kDt < 0.1; ++k) {
+    const double x = kX0 + k * speed * kDt;
+    if (x >= -0.05 - margin && x < 0.0) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+TEST_CASE("sequential: the lowest tunneling speed, against the geometry; fast bodies pass through") {
+  const double thickness = 0.1, margin = sim::core::settings::kContactMargin;
+  double lowest = 0.0;
+  for (double speed = 1.0; speed <= 1e5; speed *= 2.0) {
+    CAPTURE(speed);
+    const bool through = passesThrough(speed);
+    CHECK(through == !sequentialCatches(speed));
+    // it cannot skip the 0.05 m + margin window in front of the wall's center line unless it moves
+    // farther than that in one step
+    if (speed * kDt < 0.05 + margin) CHECK_FALSE(through);
+    if (through && lowest == 0.0) lowest = speed;
+  }
+  REQUIRE(lowest > 0.0);
+  MESSAGE("sequential: lowest tunneling speed by doubling from 1 m/s: " << lowest << " m/s (" << lowest * kDt
+                                                                        << " m per step)");
+  CHECK(lowest * kDt > 0.05 + margin);
+  CHECK(lowest <= 2.0 * (thickness + 2.0 * margin) / kDt);
+
+  // the known failure: a fast thin body passes straight through (tunneling.yaml's 200 m/s, and
+  // faster), as the step-start positions predict
+  for (double speed : {200.0, 1e3, 1e4, 1e5}) {
+    CAPTURE(speed);
+    CHECK_FALSE(sequentialCatches(speed));
+    CHECK(passesThrough(speed));
+  }
+
+  double first = 0.0;
+  for (double speed = 0.25; speed <= 16.0; speed += 0.25) {
+    CAPTURE(speed);
+    const bool through = passesThrough(speed);
+    CHECK(through == !sequentialCatches(speed));
+    if (through && first == 0.0) first = speed;
+  }
+  MESSAGE("sequential: lowest tunneling speed on a 0.25 m/s scan: " << first << " m/s (" << first * kDt
+                                                                     << " m per step)");
+  CHECK(first * kDt > 0.05 + margin);
+  CHECK(first <= (thickness + 2.0 * margin) / kDt);
+}
+
+TEST_CASE("Newton's cradle under sequential: momentum kept, the energy bounded") {
+  const scene_text::CradleRun r = scene_text::runCradle(sim::world::CollisionMethod::Sequential);
+  const sim::world::World& w = r.world;
+  const sim::core::Vec2 p0 = r.p0;
+  const double e0 = r.e0, e1 = r.e1;
+  MESSAGE("cradle, sequential: kinetic energy " << num(e0) << " J -> " << num(e1) << " J; ball speeds" << r.speeds);
+  CHECK((sim::world::linearMomentum(w) - p0).norm() <= 1e-9);
+  CHECK(e1 > 0.0);
+  CHECK(e1 <= e0 + 1e-9);
+  // with the momentum p kept, the motion of the center of mass keeps p²/(2 Σm) = 1/10 J: no
+  // collision response can take more (the perfectly plastic end, all five at 1/5 m/s)
+  const double plastic = p0.squaredNorm() / (2.0 * 5.0);
+  CHECK(e1 >= plastic - 1e-9);
+  // Measured: KE_end = 0.10013563840567402 J, the balls at 0.1874, 0.1961, 0.2031, 0.2067, 0.2067 m/s.
+  // The striker arrives at exactly 1 m/s, which is not faster than kRestitutionThreshold (1 m/s;
+  // restitution needs v_n < −1): the solver treats the impact as plastic (no bias), and the
+  // converged plastic answer for a row of touching balls is all five moving together at p/(5m) =
+  // 0.2 m/s, KE = 0.1 J. The sequential solver distributes the impulse over the chain at once by
+  // 8 Gauss–Seidel sweeps per step, which do not fully converge along a row of four contacts: the
+  // balls ahead are left slightly faster than the ones behind, the contacts open, and the row
+  // spreads apart with a little more than the plastic minimum. Nothing like the ideal cradle
+  // (0.5 J, only the last ball moving), which needs restitution applied contact by contact.
+}

@@ -1,0 +1,151 @@
+#include "sim/world/world.h"
+
+#include <doctest/doctest.h>
+
+#include "sim/scene/scene_build.h"
+#include "sim/world/diagnostics.h"
+#include "sim/yaml/scene_yaml.h"
+
+namespace {
+
+// the notes' poll: bar l = 4, m = 3, I = 4, j = (1, 0) at the center or at the end
+const char* kPoll = R"(
+duration: 2
+sim: {integrator: rk4, dt: 0.001}
+bodies:
+  - {name: bar, shape: {box: [0.2, 4.0]}, mass: 3, inertia: 4}
+events:
+  - {time: 0.5, body: bar, impulse: [1, 0], point: [0, 2]}
+variants:
+  center: {events: [{time: 0.5, body: bar, impulse: [1, 0], point: [0, 0]}]}
+  end: {}
+)";
+
+sim::world::World poll(const std::string& variant, sim::core::Integrator method) {
+  sim::scene::SceneDef def = sim::yaml::loadSceneText(kPoll, "inline.yaml", variant);
+  def.integrator = method;
+  return sim::scene::buildWorld(def);
+}
+
+class Recorder : public sim::world::StepObserver {
+ public:
+  std::vector<double> stepTimes, eventTimes;
+  void afterStep(const sim::world::World& w) override { stepTimes.push_back(w.time); }
+  void afterEvent(const sim::world::World& w, const sim::world::ImpulseEvent&) override { eventTimes.push_back(w.time); }
+};
+
+}  // namespace
+
+TEST_CASE("the notes' poll, both variants, exactly, with every integrator") {
+  for (sim::core::Integrator m : {sim::core::Integrator::ExplicitEuler, sim::core::Integrator::SymplecticEuler, sim::core::Integrator::Midpoint,
+                            sim::core::Integrator::Rk4}) {
+    CAPTURE(sim::core::integratorName(m));
+    sim::world::World center = poll("center", m);
+    center.advanceTo(1.0);
+    CHECK(center.bodies[0].v.x() == 1.0 / 3.0);
+    CHECK(center.bodies[0].v.y() == 0.0);
+    CHECK(center.bodies[0].omega == 0.0);
+    CHECK(sim::world::kineticEnergy(center.bodies[0]).total() == doctest::Approx(1.0 / 6.0).epsilon(1e-15));
+
+    sim::world::World end = poll("end", m);
+    end.advanceTo(1.0);
+    CHECK(end.bodies[0].v.x() == 1.0 / 3.0);
+    CHECK(end.bodies[0].omega == -0.5);
+    CHECK(sim::world::kineticEnergy(end.bodies[0]).translational == doctest::Approx(1.0 / 6.0).epsilon(1e-15));
+    CHECK(sim::world::kineticEnergy(end.bodies[0]).rotational == 0.5);
+    CHECK(sim::world::kineticEnergy(end.bodies[0]).total() == doctest::Approx(2.0 / 3.0).epsilon(1e-15));
+    // the bar turned at ω = -0.5 for exactly the 0.5 s since the event
+    CHECK(std::abs(end.bodies[0].angle - (-0.25)) < 1e-13);
+  }
+}
+
+TEST_CASE("steps are split exactly at events, force switches and the end time, and keep the grid") {
+  sim::scene::SceneDef def = sim::yaml::loadSceneText(R"(
+duration: 1
+sim: {dt: 0.1}
+bodies: [{name: b, shape: {circle: 1}}]
+forces: [{type: force, body: b, force: [1, 0], from: 0.25, until: 0.62}]
+events: [{time: 0.33, body: b, impulse: [0, 1]}]
+)",
+                                         "inline.yaml");
+  sim::world::World w = sim::scene::buildWorld(def);
+  Recorder r;
+  w.advanceTo(0.75, &r);
+  const std::vector<double> expected{0.1, 0.2, 0.25, 0.3, 0.33, 0.4, 0.5, 0.6, 0.62, 0.7, 0.75};
+  REQUIRE(r.stepTimes.size() == expected.size());
+  for (size_t i = 0; i < expected.size(); ++i) CHECK(r.stepTimes[i] == doctest::Approx(expected[i]).epsilon(1e-15));
+  REQUIRE(r.eventTimes.size() == 1);
+  CHECK(r.eventTimes[0] == 0.33);
+  CHECK(w.time == 0.75);
+
+  // the force acted for exactly 0.37 s on a unit-density circle of radius 1 (m = π)
+  const double m = std::numbers::pi;
+  CHECK(w.bodies[0].v.x() == doctest::Approx(0.37 / m).epsilon(1e-13));
+  CHECK(w.bodies[0].v.y() == doctest::Approx(1 / m).epsilon(1e-14));
+}
+
+TEST_CASE("an impulse at a body point changes v by j/m and ω by I⁻¹ (r′ × j)") {
+  sim::world::World w;
+  sim::core::Body b;
+  b.mass = 2, b.invMass = 0.5, b.inertia = 4, b.invInertia = 0.25;
+  b.setState({{1, 1}, 0, {0, 0}, 0});
+  w.bodies.push_back(b);
+  w.applyImpulse(0, {1, 3}, {3, 0});
+  CHECK(w.bodies[0].v == sim::core::Vec2(1.5, 0));
+  // r′ = (0, 2), r′ × j = 0·0 − 2·3 = −6
+  CHECK(w.bodies[0].omega == -1.5);
+}
+
+TEST_CASE("static bodies never move, whatever acts on them") {
+  sim::scene::SceneDef def = sim::yaml::loadSceneText(R"(
+world: {gravity: [0, -10]}
+bodies:
+  - {name: ground, shape: {box: [10, 1]}, static: true, position: [0, -1]}
+  - {name: ball, shape: {circle: 0.5}, position: [0, 2]}
+forces: [{type: spring, body: ground, point: [0, 0], body2: ball, point2: [0, 0], stiffness: 100}]
+events: [{time: 0.5, body: ground, impulse: [100, 100]}]
+)",
+                                         "inline.yaml");
+  sim::world::World w = sim::scene::buildWorld(def);
+  w.advanceTo(1.0);
+  CHECK(w.bodies[0].x == sim::core::Vec2(0, -1));
+  CHECK(w.bodies[0].v == sim::core::Vec2(0, 0));
+  CHECK(w.bodies[0].angle == 0.0);
+  CHECK(w.bodies[1].x != sim::core::Vec2(0, 2));
+}
+
+TEST_CASE("a diverging simulation stops with the time and the body") {
+  sim::scene::SceneDef def = sim::yaml::loadSceneText(R"(
+duration: 100
+sim: {integrator: explicit_euler, dt: 0.1}
+bodies: [{name: calm, shape: {circle: 1}}, {name: wild, shape: {circle: 1}, position: [2, 0]}]
+forces: [{type: spring, body: wild, anchor: [0, 0], stiffness: 1e12}]
+)",
+                                         "inline.yaml");
+  sim::world::World w = sim::scene::buildWorld(def);
+  try {
+    w.advanceTo(100);
+    FAIL("no divergence reported");
+  } catch (const sim::world::Diverged& d) {
+    CHECK(d.body == 1);
+    CHECK(d.time > 0.0);
+    CHECK(d.time < 100.0);
+  }
+}
+
+TEST_CASE("the same scene run twice gives the same state hash; a different step does not") {
+  auto hash = [](double dt) {
+    sim::scene::SceneDef def = sim::yaml::loadSceneText(R"(
+world: {gravity: [0, -9.81]}
+bodies: [{name: bar, shape: {box: [0.1, 1.0]}, position: [0.3, -1.2], angle: 0.4}]
+forces: [{type: spring, body: bar, point: [0, 0.5], anchor: [0, 0], stiffness: 40, rest_length: 0.5}]
+)",
+                                           "inline.yaml");
+    def.dt = dt;
+    sim::world::World w = sim::scene::buildWorld(def);
+    w.advanceTo(1.0);
+    return sim::world::stateHash(w);
+  };
+  CHECK(hash(1e-3) == hash(1e-3));
+  CHECK(hash(1e-3) != hash(2e-3));
+}

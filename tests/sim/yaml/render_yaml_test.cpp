@@ -1,0 +1,211 @@
+// The scene's render: block: documented defaults, every key read, and bad values reported at their
+// FILE:LINE:COL with a message that says what to write instead.
+#include <doctest/doctest.h>
+
+#include <string>
+#include <vector>
+
+#include "support/render_block.h"
+
+using render_block::expectError;
+using render_block::kBody;
+using render_block::renderOf;
+
+TEST_CASE("without a render block the documented defaults hold") {
+  const sim::scene::RenderDef r = renderOf("");
+  CHECK(r.width == 1280);
+  CHECK(r.height == 720);
+  CHECK(r.fps == 60.0);
+  CHECK(r.background == "#ffffff");
+  CHECK(r.lineWidth == 2.0);
+  CHECK(r.camera.automatic);
+  CHECK(r.contacts);
+  CHECK(r.contactHold == 0.5);
+  CHECK(r.labels);
+  CHECK(r.time);
+  CHECK_FALSE(r.velocities);
+  CHECK_FALSE(r.trails);
+  CHECK_FALSE(r.sat);
+  CHECK(r.strobe == 0);
+  CHECK(r.springs);
+  CHECK(r.colors.spring == "#4d4d4d");
+  CHECK(r.colors.palette.size() == 10);
+}
+
+TEST_CASE("every key is read") {
+  const sim::scene::RenderDef r = renderOf(
+      "render:\n"
+      "  size: [320, 180]\n"
+      "  fps: 30\n"
+      "  background: '#000000'\n"
+      "  line_width: 1.5\n"
+      "  font_size: 14\n"
+      "  colors: {palette: ['#112233'], static: '#010203', contact: '#aabbcc', text: '#ffffff'}\n"
+      "  camera: {center: [1, 2], height: 5}\n"
+      "  contacts: false\n"
+      "  contact_hold: 0.25\n"
+      "  impulses: false\n"
+      "  impulse_scale: 2\n"
+      "  velocities: true\n"
+      "  velocity_scale: 0.5\n"
+      "  trails: true\n"
+      "  sat: yes\n"
+      "  strobe: 6\n"
+      "  springs: false\n"
+      "  labels: false\n"
+      "  time: false\n");
+  CHECK(r.width == 320);
+  CHECK(r.height == 180);
+  CHECK(r.fps == 30.0);
+  CHECK(r.background == "#000000");
+  CHECK(r.lineWidth == 1.5);
+  CHECK(r.fontSize == 14.0);
+  REQUIRE(r.colors.palette.size() == 1);
+  CHECK(r.colors.palette[0] == "#112233");
+  CHECK(r.colors.staticBody == "#010203");
+  CHECK(r.colors.contact == "#aabbcc");
+  CHECK(r.colors.text == "#ffffff");
+  CHECK(r.colors.normal == "#d62728");  // untouched keys keep their defaults
+  CHECK_FALSE(r.camera.automatic);
+  CHECK(r.camera.center == sim::core::Vec2(1, 2));
+  CHECK(r.camera.height == 5.0);
+  CHECK_FALSE(r.contacts);
+  CHECK(r.contactHold == 0.25);
+  CHECK_FALSE(r.impulses);
+  CHECK(r.impulseScale == 2.0);
+  CHECK(r.velocities);
+  CHECK(r.velocityScale == 0.5);
+  CHECK(r.trails);
+  CHECK(r.sat);
+  CHECK(r.strobe == 6);
+  CHECK_FALSE(r.springs);
+  CHECK_FALSE(r.labels);
+  CHECK_FALSE(r.time);
+}
+
+TEST_CASE("the camera is auto, auto with a margin, or fixed") {
+  CHECK(renderOf("render: {camera: auto}").camera.automatic);
+  const sim::scene::RenderDef m = renderOf("render: {camera: {margin: 0.2}}");
+  CHECK(m.camera.automatic);
+  CHECK(m.camera.margin == 0.2);
+}
+
+TEST_CASE("variants can change the render block") {
+  const std::string text = kBody +
+                           "render: {size: [640, 360], trails: true}\n"
+                           "variants:\n"
+                           "  small: {render: {size: [320, 180]}}\n";
+  const sim::scene::RenderDef r = sim::yaml::loadSceneText(text, "inline.yaml", "small").render;
+  CHECK(r.width == 320);
+  CHECK(r.trails);  // merged key by key
+}
+
+TEST_CASE("bad render values name the line and what to write") {
+  expectError("render: {sise: [2, 2]}\n", 3, "did you mean 'size'");
+  expectError("render:\n  size: [321, 180]\n", 4, "even sides");
+  expectError("render:\n  size: [320, 9000]\n", 4, "from 16 to 8192");
+  expectError("render:\n  size: [320.5, 180]\n", 4, "whole number");
+  expectError("render:\n  size: 320\n", 4, "[width, height]");
+  expectError("render:\n  fps: 0\n", 4, "positive");
+  expectError("render:\n  fps: 5000\n", 4, "at most 1000");
+  expectError("render:\n  background: red\n", 4, "#rrggbb");
+  expectError("render:\n  colors: {contact: '#12345'}\n", 4, "#rrggbb");
+  expectError("render:\n  colors: {contacts: '#123456'}\n", 4, "did you mean 'contact'");
+  expectError("render:\n  camera: fixed\n", 4, "'auto' or {center");
+  expectError("render:\n  camera: {center: [0, 0]}\n", 4, "both 'center' and 'height'");
+  expectError("render:\n  camera: {center: [0, 0], height: -1}\n", 4, "positive");
+  expectError("render:\n  camera: {margin: 0.7}\n", 4, "below 0.5");
+  expectError("render:\n  strobe: -1\n", 4, "whole number from 0 to 100");
+  expectError("render:\n  trails: maybe\n", 4, "true or false");
+  expectError("render:\n  contact_hold: -0.1\n", 4, "zero or a positive");
+}
+
+// the lecture overlays (render.overlays)
+TEST_CASE("the lecture overlays are off by default") {
+  const sim::scene::OverlaysDef o = renderOf("").overlays;
+  CHECK(o.arrows.empty());
+  CHECK(o.forceScale == 0.0);
+  CHECK(o.momentumScale == 0.0);
+  CHECK_FALSE(o.impactValues);
+  CHECK_FALSE(o.energy);
+  CHECK_FALSE(o.momentum);
+  CHECK_FALSE(o.satAxes);
+}
+
+TEST_CASE("arrows name their body and what to show; the other overlay keys are read") {
+  const sim::scene::OverlaysDef o = renderOf(
+                                 "render:\n"
+                                 "  arrows:\n"
+                                 "    - {body: a, show: velocity, at: [0, 2], value: true}\n"
+                                 "    - {body: a, show: torque, label: tau, color: '#00ff00'}\n"
+                                 "  force_scale: 0.5\n"
+                                 "  momentum_scale: 0.25\n"
+                                 "  impact_values: true\n"
+                                 "  energy: yes\n"
+                                 "  momentum: true\n"
+                                 "  sat_axes: true\n"
+                                 "  colors: {force: '#010203', panel: '#eeeeee'}\n")
+                                 .overlays;
+  REQUIRE(o.arrows.size() == 2);
+  CHECK(o.arrows[0].body == 0);
+  CHECK(o.arrows[0].show == sim::scene::ArrowDef::Show::Velocity);
+  CHECK(o.arrows[0].at == sim::core::Vec2(0, 2));
+  CHECK(o.arrows[0].value);
+  CHECK(o.arrows[0].label.empty());
+  CHECK(o.arrows[1].show == sim::scene::ArrowDef::Show::Torque);
+  CHECK(o.arrows[1].label == "tau");
+  CHECK(o.arrows[1].color == "#00ff00");
+  CHECK(o.arrows[1].at == sim::core::Vec2::Zero());
+  CHECK(o.forceScale == 0.5);
+  CHECK(o.momentumScale == 0.25);
+  CHECK(o.impactValues);
+  CHECK(o.energy);
+  CHECK(o.momentum);
+  CHECK(o.satAxes);
+  CHECK(renderOf("render: {colors: {force: '#010203'}}\n").colors.force == "#010203");
+}
+
+TEST_CASE("bad arrows name the line, the column and what to write") {
+  expectError("render:\n  arrows: {body: a}\n", 4, "must be a list");
+  expectError("render:\n  arrows:\n    - {show: velocity}\n", 5, "needs 'body'");
+  expectError("render:\n  arrows:\n    - {body: b, show: velocity}\n", 5, "no body named 'b'; the bodies are: a");
+  expectError("render:\n  arrows:\n    - {body: a}\n", 5, "needs 'show'");
+  expectError("render:\n  arrows:\n    - {body: a, show: speed}\n", 5, "unknown show 'speed'; choose one of: velocity");
+  expectError("render:\n  arrows:\n    - {body: a, show: omega, at: 1}\n", 5, "[x, y]");
+  expectError("render:\n  arrows:\n    - {body: a, show: omega, colour: '#000000'}\n", 5, "did you mean 'color'");
+  expectError("render:\n  arrows:\n    - {body: a, show: omega, color: blue}\n", 5, "#rrggbb");
+  expectError("render:\n  force_scale: 0\n", 4, "positive");
+  expectError("render:\n  energy: lots\n", 4, "true or false");
+  try {
+    (void)renderOf("render:\n  arrows:\n    - {body: b, show: velocity}\n");
+    FAIL("an arrow naming an unknown body was accepted");
+  } catch (const sim::yaml::SceneError& e) {
+    CHECK(std::string(e.what()).rfind("inline.yaml:5:14: no body named 'b'", 0) == 0);
+  }
+}
+
+TEST_CASE("panels: the duration for two or more variants, none otherwise, or the times or impacts asked") {
+  const std::string two = "duration: 3\nvariants: {a: {}, b: {}}\n";
+  CHECK(renderOf("").panels.times.empty());
+  CHECK_FALSE(renderOf("").panels.impacts);
+  CHECK(renderOf("variants: {a: {}}\n").panels.times.empty());  // one variant: nothing to compare
+  CHECK(renderOf(two).panels.times == std::vector<double>{3.0});
+  CHECK(renderOf(two + "render: {panels: [0, 1.5, 3]}\n").panels.times == std::vector<double>{0.0, 1.5, 3.0});
+  const sim::scene::RenderDef impacts = renderOf(two + "render: {panels: impacts}\n");
+  CHECK(impacts.panels.impacts);
+  CHECK(impacts.panels.times.empty());
+  CHECK(renderOf(two + "render: {panels: []}\n").panels.times.empty());  // explicitly none
+  // a variant may change them, and its duration moves the default
+  const std::string text = kBody + "duration: 3\nvariants: {a: {duration: 2}, b: {render: {panels: impacts}}}\n";
+  CHECK(sim::yaml::loadSceneText(text, "inline.yaml", "a").render.panels.times == std::vector<double>{2.0});
+  CHECK(sim::yaml::loadSceneText(text, "inline.yaml", "b").render.panels.impacts);
+}
+
+TEST_CASE("bad panels name the line and what to write") {
+  const std::string two = "duration: 3\nvariants: {a: {}, b: {}}\n";  // lines 3-4; render: on line 5
+  expectError("render:\n  panels: [1]\n", 4, "this scene has none");
+  expectError(two + "render:\n  panels: [1, 4]\n", 6, "after the scene's duration (3 s)");
+  expectError(two + "render:\n  panels: [-1]\n", 6, "zero or a positive");
+  expectError(two + "render:\n  panels: 1.5\n", 6, "or 'impacts'");
+  expectError(two + "render:\n  panels: impact\n", 6, "or 'impacts'");
+}
