@@ -7,25 +7,16 @@
 
 namespace render::analysis {
 
-using Parameter = sim::scene::StabilityDef::Parameter;
-
-const char* parameterName(Parameter p) {
-  switch (p) {
-    case Parameter::Dt: return "dt";
-    case Parameter::Speed: return "speed";
-    case Parameter::MassRatio: return "mass_ratio";
-    case Parameter::StackHeight: return "stack_height";
-  }
-  return "?";
-}
+using Parameter = StabilityDef::Parameter;
 
 double stabilityDuration(const sim::scene::SceneDef& def) { return std::max(def.duration, kMinimumSteps * def.dt); }
 
 namespace {
 
 // the scene's own value of the parameter, where a search starts
-double startValue(const sim::scene::SceneDef& def) {
-  const sim::scene::StabilityDef& s = def.stability;
+double startValue(const Study& study) {
+  const sim::scene::SceneDef& def = study.model;
+  const StabilityDef& s = study.stability;
   if (s.from > 0.0) return s.from;
   switch (s.parameter) {
     case Parameter::Dt: return def.dt;
@@ -39,20 +30,21 @@ double startValue(const sim::scene::SceneDef& def) {
   return 1.0;
 }
 
-MetricsOptions criteria(const sim::scene::SceneDef& def) {
+MetricsOptions criteria(const Study& study) {
+  const sim::scene::SceneDef& def = study.model;
   MetricsOptions o;
   // energy may only grow where nothing feeds it
   o.energy = def.events.empty() && def.pointForces.empty();
   o.penetration = def.bodies.size() > 1;
-  o.stack = def.stability.stack;
+  o.stack = study.stability.stack;
   return o;
 }
 
-bool holdsOnce(const sim::scene::SceneDef& def, RunMetrics& metrics) {
-  sim::world::World w = sim::scene::buildWorld(def);
-  const MetricsOptions o = criteria(def);
+bool holdsOnce(const Study& study, RunMetrics& metrics) {
+  sim::world::World w = sim::scene::buildWorld(study.model);
+  const MetricsOptions o = criteria(study);
   try {
-    metrics = measureRun(w, stabilityDuration(def), o);
+    metrics = measureRun(w, stabilityDuration(study.model), o);
   } catch (const std::exception& e) {
     // the method cannot run the scene at all (impacts pile up, bodies start overlapping)
     metrics = {};
@@ -64,9 +56,10 @@ bool holdsOnce(const sim::scene::SceneDef& def, RunMetrics& metrics) {
 
 }  // namespace
 
-sim::scene::SceneDef withParameter(const sim::scene::SceneDef& scene, double value, double phase) {
-  sim::scene::SceneDef def = scene;
-  const sim::scene::StabilityDef& s = def.stability;
+Study withParameter(const Study& study, double value, double phase) {
+  Study changed = study;
+  sim::scene::SceneDef& def = changed.model;
+  const StabilityDef& s = changed.stability;
   switch (s.parameter) {
     case Parameter::Dt: def.dt = value; break;
     case Parameter::Speed: {
@@ -94,20 +87,20 @@ sim::scene::SceneDef withParameter(const sim::scene::SceneDef& scene, double val
       break;
     }
   }
-  return def;
+  return changed;
 }
 
-bool holdsAt(const sim::scene::SceneDef& def, double value, RunMetrics& metrics) {
+bool holdsAt(const Study& study, double value, RunMetrics& metrics) {
   // a fast body may meet an obstacle anywhere within a step: try eight phases
-  const int phases = def.stability.parameter == Parameter::Speed ? 8 : 1;
+  const int phases = study.stability.parameter == Parameter::Speed ? 8 : 1;
   for (int k = 0; k < phases; ++k)
-    if (!holdsOnce(withParameter(def, value, static_cast<double>(k) / phases), metrics)) return false;
+    if (!holdsOnce(withParameter(study, value, static_cast<double>(k) / phases), metrics)) return false;
   return true;
 }
 
-StabilityResult findBoundary(const sim::scene::SceneDef& def) {
+StabilityResult findBoundary(const Study& def) {
   StabilityResult r;
-  const sim::scene::StabilityDef& s = def.stability;
+  const StabilityDef& s = def.stability;
   const bool integer = s.parameter == Parameter::StackHeight;
   const double limit = s.to > 0.0 ? s.to : (integer ? 1000.0 : 1e12);
   RunMetrics m;
@@ -151,10 +144,11 @@ StabilityResult findBoundary(const sim::scene::SceneDef& def) {
   return r;
 }
 
-std::string describeFailure(const sim::scene::SceneDef& def, const StabilityResult& r) {
+std::string describeFailure(const Study& study, const StabilityResult& r) {
   std::ostringstream o;
+  const sim::scene::SceneDef& def = study.model;
   o << sim::core::integratorName(def.integrator) << " + " << sim::world::collisionMethodName(def.collisions) << ": ";
-  const char* p = parameterName(def.stability.parameter);
+  const std::string_view p = kParameterNames.name(study.stability.parameter);
   if (r.holdsToLimit) {
     o << "holds up to " << p << " = " << r.largestStable << " (the search's limit)";
     return o.str();

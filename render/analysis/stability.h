@@ -5,6 +5,7 @@
 #include <string>
 
 #include "render/analysis/run_metrics.h"
+#include "render/analysis/stability_def.h"
 #include "sim/scene/scene_def.h"
 
 namespace render::analysis {
@@ -24,18 +25,15 @@ double stabilityDuration(const sim::scene::SceneDef& def);
 
 // the scene with the stability parameter set to `value` (for `speed`, the body starts `phase`
 // steps early, so that a search can try where in a step the body meets an obstacle)
-sim::scene::SceneDef withParameter(const sim::scene::SceneDef& def, double value, double phase = 0.0);
+Study withParameter(const Study& study, double value, double phase = 0.0);
 
 // does the scene hold at `value`? (for `speed`, at every one of eight phases of the step)
-bool holdsAt(const sim::scene::SceneDef& def, double value, RunMetrics& metrics);
+bool holdsAt(const Study& study, double value, RunMetrics& metrics);
 
 // the boundary, by growing and halving to a bracket and then bisecting to 0.1 % of the value
-StabilityResult findBoundary(const sim::scene::SceneDef& def);
+StabilityResult findBoundary(const Study& study);
 
 // "explicit_euler: energy +37 % at dt = 0.021"
-std::string describeFailure(const sim::scene::SceneDef& def, const StabilityResult& result);
-
-// "dt", "speed", "mass_ratio", "stack_height"
-const char* parameterName(sim::scene::StabilityDef::Parameter p);
+std::string describeFailure(const Study& study, const StabilityResult& result);
 
 }  // namespace render::analysis

@@ -19,23 +19,17 @@ namespace {
 
 using render::draw::Color;
 using render::draw::Image;
-using sim::debug::DrawRole;
+using render::draw::Role;
 using sim::core::Vec2;
 using Clock = std::chrono::steady_clock;
 
 double msSince(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
 
 render::draw::Style style() {
+  // the table's default colors, three bodies
   render::draw::Style s;
   s.background = Color::parse("#ffffff");
   s.bodies = {Color::parse("#4e79a7"), Color::parse("#f28e2b"), Color::parse("#8c8c8c")};
-  s.staticBody = Color::parse("#8c8c8c");
-  s.contact = s.normal = Color::parse("#d62728");
-  s.impulse = Color::parse("#2ca02c");
-  s.velocity = s.text = s.spring = Color::parse("#1f1f1f");
-  s.trail = Color::parse("#9a9a9a");
-  s.referenceEdge = Color::parse("#ff7f0e");
-  s.incidentVertex = Color::parse("#9467bd");
   s.fontSize = 20;
   return s;
 }
@@ -47,19 +41,19 @@ void scene(render::draw::GlCanvas& c, const render::draw::Camera& camera, double
     return Vec2(o.x() + std::cos(turn) * p.x() - std::sin(turn) * p.y(), o.y() + std::sin(turn) * p.x() + std::cos(turn) * p.y());
   };
   c.begin(camera);
-  c.halfPlane({0, -0.5}, {0.05, 1}, {DrawRole::StaticBody, 2, 1});
-  c.polygon({{-2.5, 0.2}, {-1.5, 0.2}, {-1.5, 1.2}, {-2.5, 1.2}}, {DrawRole::StaticBody, 2, 1});
+  c.halfPlane({0, -0.5}, {0.05, 1}, {Role::StaticBody, 2, 1});
+  c.polygon({{-2.5, 0.2}, {-1.5, 0.2}, {-1.5, 1.2}, {-2.5, 1.2}}, {Role::StaticBody, 2, 1});
   c.polygon({at({-.5, -.5}, {-.5, 0}), at({.5, -.5}, {-.5, 0}), at({.5, .5}, {-.5, 0}), at({-.5, .5}, {-.5, 0})},
-            {DrawRole::Body, 0, 1});
-  c.polygon({{0.1, 0.3}, {1.0, 0.0}, {1.3, 0.9}, {0.4, 1.2}}, {DrawRole::Body, 1, 0.5});
-  c.circle({1.8, 1.5}, 0.4, {DrawRole::Body, 0, 1});
-  c.segment({1.8, 1.5}, at({0.4, 0}, {1.8, 1.5}), {DrawRole::BodyAxis, 0, 1});
-  c.point({0, 0.3}, {DrawRole::ContactPoint, -1, 1});
-  c.arrow({0, 0.3}, {0.5, 0.35}, {DrawRole::ContactNormal, -1, 1});
-  c.arrow({-2, 2.5}, {-1.2, 2.0}, {DrawRole::Impulse, -1, 1});
-  c.arrow({1.8, 1.5}, {2.6, 2.2}, {DrawRole::Velocity, 0, 1});
-  c.text({-0.5, 0}, "box", {DrawRole::Label, 0, 1});
-  c.text(camera.toWorld({10, 10}), "t = 0.300 s", {DrawRole::Caption, -1, 1});
+            {Role::Body, 0, 1});
+  c.polygon({{0.1, 0.3}, {1.0, 0.0}, {1.3, 0.9}, {0.4, 1.2}}, {Role::Body, 1, 0.5});
+  c.circle({1.8, 1.5}, 0.4, {Role::Body, 0, 1});
+  c.segment({1.8, 1.5}, at({0.4, 0}, {1.8, 1.5}), {Role::BodyAxis, 0, 1});
+  c.point({0, 0.3}, {Role::ContactPoint, -1, 1});
+  c.arrow({0, 0.3}, {0.5, 0.35}, {Role::ContactNormal, -1, 1});
+  c.arrow({-2, 2.5}, {-1.2, 2.0}, {Role::Impulse, -1, 1});
+  c.arrow({1.8, 1.5}, {2.6, 2.2}, {Role::Velocity, 0, 1});
+  c.text({-0.5, 0}, "box", {Role::Label, 0, 1});
+  c.text(camera.toWorld({10, 10}), "t = 0.300 s", {Role::Caption, -1, 1});
 }
 
 }  // namespace

@@ -54,7 +54,7 @@ void reportResting(const sim::scene::SceneDef& def, const sim::world::World& w) 
 
 // one scene, one variant ("" for the base); returns false when an expect fails
 bool checkCase(const std::string& file, const std::string& variant) {
-  const sim::scene::SceneDef def = sim::yaml::loadSceneFile(file, variant);
+  const sim::scene::SceneDef def = readSceneFile(file, variant).model();
   std::cout << file << (variant.empty() ? "" : " [" + variant + "]") << ": " << describeModel(def) << '\n';
   sim::world::World w = startWorld(def, file);
   std::cout << "  collisions: " << describeCollisionMethod(w) << '\n';
@@ -82,7 +82,7 @@ int check(const std::vector<std::string>& files) {
   int code = kExitOk;
   for (const std::string& file : files) {
     try {
-      const sim::scene::SceneDef base = sim::yaml::loadSceneFile(file);
+      const sim::scene::SceneDef base = readSceneFile(file).model();
       std::vector<std::string> cases = base.variantNames;
       if (cases.empty()) cases.push_back("");
       for (const std::string& v : cases)

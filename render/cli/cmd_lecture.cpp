@@ -61,7 +61,7 @@ std::vector<std::string> jobCommand(const LectureCommand& o, const std::string& 
 
 // one scene in this process; its failure is a result, not an exception, so that the table follows
 SceneResult runHere(const LecturePlan& plan, const LectureOptions& o) {
-  SceneResult r{plan.base.name, plan.file, false, {}, 0.0, {}};
+  SceneResult r{plan.base.model.name, plan.file, false, {}, 0.0, {}};
   const auto start = Clock::now();
   try {
     r.ok = runLectureJob(plan, o, [&](const std::string& path) {
@@ -90,8 +90,8 @@ int lecture(const LectureCommand& o) {
   std::set<std::string> names;
   for (const std::string& file : lectureSceneFiles(o.paths)) {
     plans.push_back(planLecture(file));
-    if (!names.insert(plans.back().base.name).second)
-      throw UsageError(file + ": another file of the pack also names its scene '" + plans.back().base.name +
+    if (!names.insert(plans.back().base.model.name).second)
+      throw UsageError(file + ": another file of the pack also names its scene '" + plans.back().base.model.name +
                        "'; their outputs would overwrite each other under " + o.output + "/; give it its own 'name:'");
   }
   if (o.list) {
@@ -115,7 +115,7 @@ int lecture(const LectureCommand& o) {
     size_t finished = 0;
     runJobs(commands, parallel, [&](const JobResult& job) {
       SceneResult& r = results[job.job];
-      r = {plans[job.job].base.name, plans[job.job].file, succeeded(job), wroteLines(job.output), job.seconds, {}};
+      r = {plans[job.job].base.model.name, plans[job.job].file, succeeded(job), wroteLines(job.output), job.seconds, {}};
       r.message = job.errors.empty() ? describeStatus(job.status) : job.errors;
       ++finished;
       const std::string counter = "[" + std::to_string(finished) + "/" + std::to_string(plans.size()) + "] ";

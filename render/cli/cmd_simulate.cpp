@@ -139,7 +139,7 @@ void printText(const sim::scene::SceneDef& def, const sim::world::World& w) {
 }
 
 int simulate(const SimulateOptions& o) {
-  const sim::scene::SceneDef def = o.load();
+  const sim::scene::SceneDef def = o.load().model();
   const double until = o.until.value_or(def.duration);
   if (!(until >= 0.0) || !std::isfinite(until)) throw UsageError("--until: the end time must be zero or a positive finite number");
   sim::world::World world = startWorld(def, o.scene);

@@ -25,14 +25,15 @@ int stability(const StabilityOptions& o) {
   SceneOptions so;
   so.scene = o.scene;
   so.variant = o.variant;
-  const sim::scene::SceneDef def = so.load();
+  const render::analysis::Study study = so.load().study();
+  const sim::scene::SceneDef& def = study.model;
   startWorld(def, o.scene);
 
   const auto integrators = o.integratorList();
   const auto methods = o.collisionList(def.collisions);
   std::filesystem::create_directories(o.outDir);
   const std::string base = o.outDir + "/" + def.name + (def.variant.empty() ? "" : "-" + def.variant) + "-stability";
-  const char* parameter = parameterName(def.stability.parameter);
+  const std::string parameter(kParameterNames.name(study.stability.parameter));
 
   AtomicFile csv(base + ".csv");
   csv.stream() << "integrator,collisions,parameter,largest_stable,first_failing,failure\n";
@@ -40,13 +41,13 @@ int stability(const StabilityOptions& o) {
   chart.title = def.name + ": the largest " + parameter + " at which each method holds";
   chart.yLabel = std::string("largest stable ") + parameter;
   chart.bars = true;
-  chart.logY = def.stability.parameter != sim::scene::StabilityDef::Parameter::StackHeight;
+  chart.logY = study.stability.parameter != StabilityDef::Parameter::StackHeight;
   ChartSeries bars{std::string("largest stable ") + parameter, {}};
   for (sim::world::CollisionMethod c : methods)
     for (sim::core::Integrator i : integrators) {
-      sim::scene::SceneDef d = def;
-      d.integrator = i;
-      d.collisions = c;
+      Study d = study;
+      d.model.integrator = i;
+      d.model.collisions = c;
       const StabilityResult r = findBoundary(d);
       std::cout << describeFailure(d, r) << '\n';
       csv.stream() << sim::core::integratorName(i) << ',' << sim::world::collisionMethodName(c) << ',' << parameter << ','

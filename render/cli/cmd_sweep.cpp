@@ -35,7 +35,7 @@ int sweep(const SweepOptions& o) {
   SceneOptions so;
   so.scene = o.scene;
   so.variant = o.variant;
-  const sim::scene::SceneDef def = so.load();
+  const sim::scene::SceneDef def = so.load().model();
   startWorld(def, o.scene);  // bad start states are reported before the long run
 
   const auto integrators = o.integratorList();

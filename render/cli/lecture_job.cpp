@@ -19,7 +19,7 @@ int runLectureJob(const LecturePlan& plan, const LectureOptions& options, const 
   videos.quiet = true;
   if (const int status = renderVideos(videos, wrote); status != kExitOk) return status;
 
-  const sim::scene::PanelsDef& panels = plan.base.render.panels;
+  const render::scene::PanelsDef& panels = plan.base.render.panels;
   if (panels.times.empty() && !panels.impacts) return kExitOk;
   SnapshotOptions stills;
   stills.scene = plan.file;

@@ -12,6 +12,7 @@
 namespace render::cli {
 using namespace render::draw;
 using namespace render::frame;
+using namespace render::scene;
 
 namespace fs = std::filesystem;
 
@@ -41,49 +42,49 @@ namespace {
 // time is the shortest variant's duration; with `impacts`, every variant must have one (times asked
 // for are checked against each variant's duration when the variant is read)
 void checkPanels(LecturePlan& plan) {
-  sim::scene::PanelsDef& panels = plan.base.render.panels;
+  render::scene::PanelsDef& panels = plan.base.render.panels;
   const bool defaulted = panels.line == 0;
   auto fail = [&](const std::string& message) {
     throw sim::yaml::SceneError(plan.file, panels.line, panels.column, message);
   };
-  double shortest = plan.base.duration;
-  for (const sim::scene::SceneDef& def : plan.videos) shortest = std::min(shortest, def.duration);
+  double shortest = plan.base.model.duration;
+  for (const render::scene::Scene& def : plan.videos) shortest = std::min(shortest, def.model.duration);
   if (defaulted && !panels.times.empty()) panels.times = {shortest};
   if (panels.impacts)
-    for (const sim::scene::SceneDef& def : plan.videos) {
+    for (const render::scene::Scene& def : plan.videos) {
       const size_t impacts = surveyRun(def).impactTimes.size();
       plan.mostImpacts = std::max(plan.mostImpacts, impacts);
       if (impacts == 0)
-        fail("'panels: impacts' needs an impact in every variant, and variant '" + def.variant +
-             "' has none; give panel times instead, e.g. [0, " + timeForName(def.duration) + "]");
+        fail("'panels: impacts' needs an impact in every variant, and variant '" + def.model.variant +
+             "' has none; give panel times instead, e.g. [0, " + timeForName(def.model.duration) + "]");
     }
 }
 
 }  // namespace
 
 LecturePlan planLecture(const std::string& file) {
-  LecturePlan plan{file, sim::yaml::loadSceneFile(file), {}};
-  if (plan.base.variantNames.empty()) plan.videos.push_back(plan.base);
-  for (const std::string& v : plan.base.variantNames) plan.videos.push_back(sim::yaml::loadSceneFile(file, v));
-  for (const sim::scene::SceneDef& def : plan.videos) (void)startWorld(def, file);
+  LecturePlan plan{file, readSceneFile(file).scene, {}};
+  if (plan.base.model.variantNames.empty()) plan.videos.push_back(plan.base);
+  for (const std::string& v : plan.base.model.variantNames) plan.videos.push_back(readSceneFile(file, v).scene);
+  for (const render::scene::Scene& def : plan.videos) (void)startWorld(def.model, file);
   checkPanels(plan);
   return plan;
 }
 
 std::vector<std::string> lectureOutputs(const LecturePlan& plan, const std::string& root) {
-  const std::string dir = (fs::path(root) / plan.base.name).string() + "/";
+  const std::string dir = (fs::path(root) / plan.base.model.name).string() + "/";
   std::vector<std::string> paths;
-  for (const sim::scene::SceneDef& def : plan.videos) {
-    paths.push_back(dir + outputBase(def) + ".mp4");
-    paths.push_back(dir + outputBase(def) + ".png");
+  for (const render::scene::Scene& def : plan.videos) {
+    paths.push_back(dir + outputBase(def.model) + ".mp4");
+    paths.push_back(dir + outputBase(def.model) + ".png");
   }
   // as `snapshot --panels` names them: the first variant's strobe, one image per time or impact
-  const sim::scene::PanelsDef& panels = plan.base.render.panels;
+  const render::scene::PanelsDef& panels = plan.base.render.panels;
   const int strobe = plan.videos.front().render.strobe;
-  for (double t : panels.times) paths.push_back(dir + panelsFileName(plan.base.name, "-t" + timeForName(t), strobe));
+  for (double t : panels.times) paths.push_back(dir + panelsFileName(plan.base.model.name, "-t" + timeForName(t), strobe));
   if (panels.impacts)
     for (size_t i = 1; i <= plan.mostImpacts; ++i)
-      paths.push_back(dir + panelsFileName(plan.base.name, "-impact" + std::to_string(i), strobe));
+      paths.push_back(dir + panelsFileName(plan.base.model.name, "-impact" + std::to_string(i), strobe));
   return paths;
 }
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/scene/scene_def.h"
+#include "render/scene/scene.h"
 
 namespace render::cli {
 
@@ -16,9 +16,9 @@ std::vector<std::string> lectureSceneFiles(const std::vector<std::string>& argum
 
 struct LecturePlan {
   std::string file;
-  sim::scene::SceneDef base;                 // the scene without a variant: its name and its `panels`
-  std::vector<sim::scene::SceneDef> videos;  // each variant, or the base scene when it has none
-  size_t mostImpacts = 0;             // with `panels: impacts`: the most impacts of any video's run
+  render::scene::Scene base;                 // the scene without a variant: its name and its `panels`
+  std::vector<render::scene::Scene> videos;  // each variant, or the base scene when it has none
+  size_t mostImpacts = 0;                    // with `panels: impacts`: the most impacts of any video's run
 };
 
 // loads the scene and every variant and starts each world once (overlapping bodies are bad input

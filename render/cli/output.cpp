@@ -8,6 +8,7 @@
 #include <regex>
 
 #include "render/cli/commands.h"
+#include "render/scene/render_def.h"
 
 namespace render::cli {
 
@@ -17,10 +18,10 @@ FrameSize parseSize(const std::string& text, const std::string& option) {
   if (!std::regex_match(text, m, form))
     throw UsageError(option + ": expected WIDTHxHEIGHT in pixels, e.g. 1280x720, got '" + text + "'");
   const FrameSize s{std::stoi(m[1]), std::stoi(m[2])};
-  const auto inRange = [](int v) { return v >= sim::scene::kMinFrameSide && v <= sim::scene::kMaxFrameSide; };
+  const auto inRange = [](int v) { return v >= render::scene::kMinFrameSide && v <= render::scene::kMaxFrameSide; };
   if (!inRange(s.width) || !inRange(s.height))
-    throw UsageError(option + ": each side must be from " + std::to_string(sim::scene::kMinFrameSide) + " to " +
-                     std::to_string(sim::scene::kMaxFrameSide) + " pixels, got " + text);
+    throw UsageError(option + ": each side must be from " + std::to_string(render::scene::kMinFrameSide) + " to " +
+                     std::to_string(render::scene::kMaxFrameSide) + " pixels, got " + text);
   if (s.width % 2 || s.height % 2)
     throw UsageError(option + ": sides must be even (H.264 video halves the color planes); try " +
                      std::to_string(s.width + s.width % 2) + "x" + std::to_string(s.height + s.height % 2));
@@ -28,7 +29,7 @@ FrameSize parseSize(const std::string& text, const std::string& option) {
 }
 
 void checkFps(double fps, const std::string& option) {
-  if (!(fps > 0.0) || !(fps <= sim::scene::kMaxFps))
+  if (!(fps > 0.0) || !(fps <= render::scene::kMaxFps))
     throw UsageError(option + ": frames per second must be above 0 and at most 1000, got " + timeForName(fps));
 }
 

@@ -12,9 +12,9 @@ struct FrameSize {
   int width = 0, height = 0;
 };
 
-// "WxH": even sides from sim::scene::kMinFrameSide to sim::scene::kMaxFrameSide pixels; throws UsageError
+// "WxH": even sides from render::scene::kMinFrameSide to render::scene::kMaxFrameSide pixels; throws UsageError
 FrameSize parseSize(const std::string& text, const std::string& option = "--size");
-// frames per second above 0 and at most sim::scene::kMaxFps; throws UsageError
+// frames per second above 0 and at most render::scene::kMaxFps; throws UsageError
 void checkFps(double fps, const std::string& option = "--fps");
 
 // <root>/<scene>, created when missing; throws UsageError when it cannot be created or written

@@ -16,8 +16,9 @@ void SceneOptions::addTo(CLI::App& command) {
   command.add_option("--collisions", collisions, "auto, none, event, isolated or sequential");
 }
 
-sim::scene::SceneDef SceneOptions::load() const {
-  sim::scene::SceneDef def = sim::yaml::loadSceneFile(scene, variant);
+SceneFile SceneOptions::load() const {
+  SceneFile file = readSceneFile(scene, variant);
+  sim::scene::SceneDef& def = file.model();
   if (!integrator.empty()) {
     const auto method = sim::core::integratorFromName(integrator);
     if (!method) {
@@ -40,7 +41,7 @@ sim::scene::SceneDef SceneOptions::load() const {
     }
     def.collisions = *method;
   }
-  return def;
+  return file;
 }
 
 sim::world::World startWorld(const sim::scene::SceneDef& def, const std::string& file) {

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "render/cli/scene_file.h"
 #include "sim/scene/scene_def.h"
 #include "sim/world/world.h"
 
@@ -20,7 +21,7 @@ struct SceneOptions {
   // --variant, --integrator, --dt, --collisions
   void addTo(CLI::App& command);
   // the scene with the overrides applied; throws sim::yaml::SceneError or UsageError
-  sim::scene::SceneDef load() const;
+  SceneFile load() const;
 };
 
 // the scene's world, started: `auto` resolved and the start state checked; bodies that overlap

@@ -8,16 +8,18 @@
 #include "render/frame/energy_panel.h"
 #include "render/frame/panels.h"
 #include "render/frame/scene_run.h"
+#include "render/scene/scene_style.h"
 
 namespace render::cli {
 using namespace render::draw;
 using namespace render::frame;
+using namespace render::scene;
 
 namespace {
 
 // one variant of the scene, with the command line's overrides
 struct Variant {
-  sim::scene::SceneDef def;
+  render::scene::Scene def;
   RunSurvey survey;
 };
 
@@ -34,14 +36,14 @@ void writeSnapshots(const SnapshotOptions& o, const Wrote& wrote) {
   // the variants: every one side by side, or the one asked for (or the base scene)
   std::vector<std::string> names = {o.variant};
   if (o.panels) {
-    names = o.load().variantNames;
+    names = o.load().model().variantNames;
     if (names.empty()) throw UsageError("--panels: " + o.scene + " has no variants to put side by side");
   }
   std::vector<Variant> variants;
   for (const std::string& name : names) {
     SceneOptions one = o;
     one.variant = name;
-    Variant v{one.load(), {}};
+    Variant v{one.load().scene, {}};
     if (size) v.def.render.width = size->width, v.def.render.height = size->height;
     v.survey = surveyRun(v.def);
     variants.push_back(std::move(v));
@@ -52,7 +54,7 @@ void writeSnapshots(const SnapshotOptions& o, const Wrote& wrote) {
     for (Variant& v : variants) surveys.push_back(&v.survey);
     shareScales(surveys);
   }
-  const sim::scene::SceneDef& first = variants.front().def;
+  const render::scene::Scene& first = variants.front().def;
   const int strobe = o.strobe.value_or(first.render.strobe);
 
   // the instants: per panel, per variant (the same --at times for all; each variant's own impacts)
@@ -60,17 +62,17 @@ void writeSnapshots(const SnapshotOptions& o, const Wrote& wrote) {
   if (!o.impacts) {
     for (double t : o.times) {
       for (const Variant& v : variants)
-        if (t < 0.0 || t > v.def.duration)
+        if (t < 0.0 || t > v.def.model.duration)
           throw UsageError("--at: " + timeForName(t) + " s is outside the scene's duration [0, " +
-                           timeForName(v.def.duration) + "]");
+                           timeForName(v.def.model.duration) + "]");
       instants.push_back(std::vector<double>(variants.size(), t));
     }
   } else {
     size_t most = 0;
     for (const Variant& v : variants) {
       if (v.survey.impactTimes.empty())
-        throw UsageError("--impacts: " + o.scene + (v.def.variant.empty() ? "" : " (variant " + v.def.variant + ")") +
-                         " has no impacts in its " + timeForName(v.def.duration) +
+        throw UsageError("--impacts: " + o.scene + (v.def.model.variant.empty() ? "" : " (variant " + v.def.model.variant + ")") +
+                         " has no impacts in its " + timeForName(v.def.model.duration) +
                          " s; nothing collides there (use --at to choose times)");
       most = std::max(most, v.survey.impactTimes.size());
     }
@@ -93,7 +95,7 @@ void writeSnapshots(const SnapshotOptions& o, const Wrote& wrote) {
     if (band > widestBand) widest = &v, widestBand = band;
   }
   const Camera camera = cameraFor(widest->def, widest->survey, bounds);
-  const std::string dir = outputDirectory(o.output, first.name);
+  const std::string dir = outputDirectory(o.output, first.model.name);
   GlContext gl(first.render.width, first.render.height);
   TextRenderer text;
   for (size_t shot = 0; shot < instants.size(); ++shot) {
@@ -107,19 +109,19 @@ void writeSnapshots(const SnapshotOptions& o, const Wrote& wrote) {
       frames.push_back(run.frameAt(t, strobe));
       // "A: center", or just "A" for a variant named A
       std::string title = panelLetter(i);
-      if (v.def.variant != title) title += ": " + v.def.variant;
+      if (v.def.model.variant != title) title += ": " + v.def.model.variant;
       if (o.impacts) title += "  (t = " + timeForName(t) + " s)";
       titles.push_back(title);
     }
     std::string path;
     if (o.panels) {
       const std::string when = o.impacts ? "-impact" + std::to_string(shot + 1) : "-t" + timeForName(instants[shot][0]);
-      path = dir + "/" + panelsFileName(first.name, when, strobe);
+      path = dir + "/" + panelsFileName(first.model.name, when, strobe);
       const Style style = makeStyle(first, first.render.height);
       writePng(composePanels(frames, titles, style, text), path);
     } else {
       const std::string when = (o.impacts ? "-impact" + std::to_string(shot + 1) : "") + "-t" + timeForName(instants[shot][0]);
-      path = dir + "/" + outputBase(first) + when + strobeSuffix(strobe) + ".png";
+      path = dir + "/" + outputBase(first.model) + when + strobeSuffix(strobe) + ".png";
       writePng(frames.front(), path);
     }
     wrote(path);

@@ -22,6 +22,7 @@ using namespace render::jobs;
 using namespace render::draw;
 using namespace render::frame;
 using namespace render::video;
+using namespace render::scene;
 
 namespace {
 
@@ -61,12 +62,12 @@ class StagedDirectory {
 };
 
 // one video of one variant (or of the base scene)
-void renderOne(const VideoOptions& o, const sim::scene::SceneDef& def, const Wrote& wrote) {
+void renderOne(const VideoOptions& o, const render::scene::Scene& def, const Wrote& wrote) {
   const double fps = def.render.fps;
-  const double duration = o.duration.value_or(def.duration);
+  const double duration = o.duration.value_or(def.model.duration);
   const VideoFormat format = *videoFormatFromName(o.format);
-  const std::string dir = outputDirectory(o.output, def.name);
-  const std::string base = outputBase(def);
+  const std::string dir = outputDirectory(o.output, def.model.name);
+  const std::string base = outputBase(def.model);
   const std::string videoPath = dir + "/" + base + "." + videoExtension(format);
 
   const RunSurvey survey = surveyRun(def, duration);
@@ -128,21 +129,21 @@ int renderVideos(const VideoOptions& o, const Wrote& wrote) {
   // one asked for, or the base scene
   std::vector<std::string> variants = {o.variant};
   if (o.allVariants) {
-    const sim::scene::SceneDef base = o.load();
+    const sim::scene::SceneDef base = o.load().model();
     if (!base.variantNames.empty()) variants = base.variantNames;
   }
   for (const std::string& v : variants) {
     VideoOptions one = o;
     one.variant = v;
-    sim::scene::SceneDef def = one.load();
+    render::scene::Scene def = one.load().scene;
     if (size) def.render.width = size->width, def.render.height = size->height;
     if (o.fps) def.render.fps = *o.fps;
     try {
       renderOne(one, def, wrote);
     } catch (const sim::world::Diverged& d) {
       std::cerr << o.scene << ": the simulation diverged at t = " << timeForName(d.time) << ": body '"
-                << def.bodies[d.body].name << "' has a non-finite state; try a smaller step (--dt "
-                << timeForName(def.dt / 4) << ") or another integrator (--integrator rk4)\n";
+                << def.model.bodies[d.body].name << "' has a non-finite state; try a smaller step (--dt "
+                << timeForName(def.model.dt / 4) << ") or another integrator (--integrator rk4)\n";
       return kExitFailure;
     }
   }

@@ -5,39 +5,6 @@
 
 namespace render::draw {
 
-using sim::debug::DrawRole;
-
-const char* roleName(DrawRole role) {
-  switch (role) {
-    case DrawRole::Body: return "Body";
-    case DrawRole::StaticBody: return "StaticBody";
-    case DrawRole::BodyAxis: return "BodyAxis";
-    case DrawRole::ContactPoint: return "ContactPoint";
-    case DrawRole::ContactNormal: return "ContactNormal";
-    case DrawRole::Impulse: return "Impulse";
-    case DrawRole::Velocity: return "Velocity";
-    case DrawRole::Trail: return "Trail";
-    case DrawRole::ReferenceEdge: return "ReferenceEdge";
-    case DrawRole::IncidentVertex: return "IncidentVertex";
-    case DrawRole::Label: return "Label";
-    case DrawRole::Caption: return "Caption";
-    case DrawRole::Spring: return "Spring";
-    case DrawRole::Offset: return "Offset";
-    case DrawRole::AngularVelocity: return "AngularVelocity";
-    case DrawRole::BodyFrame: return "BodyFrame";
-    case DrawRole::Path: return "Path";
-    case DrawRole::Force: return "Force";
-    case DrawRole::Torque: return "Torque";
-    case DrawRole::Momentum: return "Momentum";
-    case DrawRole::KineticBar: return "KineticBar";
-    case DrawRole::RotationalBar: return "RotationalBar";
-    case DrawRole::PotentialBar: return "PotentialBar";
-    case DrawRole::TotalBar: return "TotalBar";
-    case DrawRole::Panel: return "Panel";
-  }
-  return "?";
-}
-
 namespace {
 
 // 6 significant digits: what a picture can show, and stable under last-digit round-off; round-off
@@ -54,8 +21,8 @@ std::string coordinates(const Vec2& p) {
   return s;
 }
 
-std::string styleText(const sim::debug::DrawStyle& s) {
-  std::string out = roleName(s.role);
+std::string styleText(const Pen& s) {
+  std::string out(info(s.role).name);
   if (s.body >= 0) out.append("#").append(std::to_string(s.body));
   if (s.opacity != 1.0) out.append("@").append(number(s.opacity));
   if (s.color >= 0) out.append("~").append(std::to_string(s.color));
@@ -64,29 +31,29 @@ std::string styleText(const sim::debug::DrawStyle& s) {
 
 }  // namespace
 
-void DrawList::polygon(const std::vector<Vec2>& vertices, const sim::debug::DrawStyle& style) {
+void DrawList::polygon(const std::vector<Vec2>& vertices, const Pen& style) {
   calls_.push_back({Kind::Polygon, vertices, 0.0, {}, style});
 }
-void DrawList::circle(const Vec2& center, double radius, const sim::debug::DrawStyle& style) {
+void DrawList::circle(const Vec2& center, double radius, const Pen& style) {
   calls_.push_back({Kind::Circle, {center}, radius, {}, style});
 }
-void DrawList::halfPlane(const Vec2& p, const Vec2& normal, const sim::debug::DrawStyle& style) {
+void DrawList::halfPlane(const Vec2& p, const Vec2& normal, const Pen& style) {
   calls_.push_back({Kind::HalfPlane, {p, normal}, 0.0, {}, style});
 }
-void DrawList::segment(const Vec2& a, const Vec2& b, const sim::debug::DrawStyle& style) {
+void DrawList::segment(const Vec2& a, const Vec2& b, const Pen& style) {
   calls_.push_back({Kind::Segment, {a, b}, 0.0, {}, style});
 }
-void DrawList::point(const Vec2& p, const sim::debug::DrawStyle& style) { calls_.push_back({Kind::Point, {p}, 0.0, {}, style}); }
-void DrawList::arrow(const Vec2& tail, const Vec2& head, const sim::debug::DrawStyle& style) {
+void DrawList::point(const Vec2& p, const Pen& style) { calls_.push_back({Kind::Point, {p}, 0.0, {}, style}); }
+void DrawList::arrow(const Vec2& tail, const Vec2& head, const Pen& style) {
   calls_.push_back({Kind::Arrow, {tail, head}, 0.0, {}, style});
 }
-void DrawList::text(const Vec2& at, const std::string& text, const sim::debug::DrawStyle& style) {
+void DrawList::text(const Vec2& at, const std::string& text, const Pen& style) {
   calls_.push_back({Kind::Text, {at}, 0.0, text, style});
 }
 
-void DrawList::replay(sim::debug::DebugDraw& target, double opacity) const {
+void DrawList::replay(Canvas& target, double opacity) const {
   for (const Call& c : calls_) {
-    sim::debug::DrawStyle s = c.style;
+    Pen s = c.style;
     s.opacity *= opacity;
     switch (c.kind) {
       case Kind::Polygon: target.polygon(c.points, s); break;

@@ -12,7 +12,6 @@ namespace render::draw {
 
 namespace {
 
-using sim::debug::DrawRole;
 
 const Color kWhite{1.0, 1.0, 1.0, 1.0};
 const Color kBlack{0.0, 0.0, 0.0, 1.0};
@@ -63,76 +62,46 @@ Image GlCanvas::finish() {
   return image;
 }
 
-Color GlCanvas::fillColor(const sim::debug::DrawStyle& s) const {
+Color GlCanvas::fillColor(const Pen& s) const {
   switch (s.role) {
-    case DrawRole::Body: return style_.body(s.body).mixed(kWhite, 0.35);
-    case DrawRole::StaticBody: return style_.body(s.body).mixed(kWhite, 0.6);
-    case DrawRole::RotationalBar: return style_.body(s.body).mixed(kWhite, 0.45);
+    case Role::Body: return style_.body(s.body).mixed(kWhite, 0.35);
+    case Role::StaticBody: return style_.body(s.body).mixed(kWhite, 0.6);
+    case Role::RotationalBar: return style_.body(s.body).mixed(kWhite, 0.45);
     // a panel lets what is behind it show a little
-    case DrawRole::Panel: return style_.panel.withAlpha(0.85);
+    case Role::Panel: return style_.role(Role::Panel).withAlpha(0.85);
     default: return strokeColor(s);
   }
 }
 
-Color GlCanvas::strokeColor(const sim::debug::DrawStyle& s) const {
+Color GlCanvas::strokeColor(const Pen& s) const {
   // a teaching arrow's own `color`
   if (s.color >= 0 && s.color < static_cast<int>(style_.arrows.size()) && style_.arrows[s.color].a > 0.0)
     return style_.arrows[s.color];
   switch (s.role) {
-    case DrawRole::Body:
-    case DrawRole::BodyAxis: return style_.body(s.body).mixed(kBlack, 0.35);
-    case DrawRole::StaticBody: return style_.body(s.body).mixed(kBlack, 0.25);
-    case DrawRole::ContactPoint: return style_.contact;
-    case DrawRole::ContactNormal: return style_.normal;
-    case DrawRole::Impulse: return style_.impulse;
-    case DrawRole::Velocity: return style_.velocity;
-    case DrawRole::Trail: return style_.body(s.body);
-    case DrawRole::ReferenceEdge: return style_.referenceEdge;
-    case DrawRole::IncidentVertex: return style_.incidentVertex;
-    case DrawRole::Spring: return style_.spring;
-    case DrawRole::Offset: return style_.offset;
-    case DrawRole::AngularVelocity: return style_.omega;
-    case DrawRole::BodyFrame: return style_.frame;
-    case DrawRole::Path: return style_.path;
-    case DrawRole::Force: return style_.force;
-    case DrawRole::Torque: return style_.torque;
-    case DrawRole::Momentum: return style_.momentum;
-    case DrawRole::KineticBar:
-    case DrawRole::RotationalBar: return style_.body(s.body);
-    case DrawRole::PotentialBar: return style_.potential;
-    case DrawRole::TotalBar: return style_.total;
-    case DrawRole::Panel: return style_.panel;
-    case DrawRole::Label:
-    case DrawRole::Caption: return style_.text;
-  }
-  return style_.text;
-}
-
-double GlCanvas::strokeWidth(DrawRole role) const {
-  const double w = style_.lineWidth;
-  switch (role) {
-    case DrawRole::Impulse: return 1.5 * w;
-    case DrawRole::Trail:
-    case DrawRole::Path: return 0.75 * w;
-    case DrawRole::Force: return 1.5 * w;
-    case DrawRole::ReferenceEdge: return 3.0 * w;
-    default: return w;
+    case Role::Body:
+    case Role::BodyAxis: return style_.body(s.body).mixed(kBlack, 0.35);
+    case Role::StaticBody: return style_.body(s.body).mixed(kBlack, 0.25);
+    // a trail is its body's color (the trail color's for none), as the bars are
+    case Role::Trail: return style_.body(s.body);
+    default: return info(s.role).colorKey.empty() ? style_.body(s.body) : style_.role(s.role);
   }
 }
 
-void GlCanvas::polygon(const std::vector<Vec2>& vertices, const sim::debug::DrawStyle& s) {
+double GlCanvas::strokeWidth(Role role) const { return info(role).width * style_.lineWidth; }
+
+void GlCanvas::polygon(const std::vector<Vec2>& vertices, const Pen& s) {
   if (vertices.empty()) return;
   // bars and panels are areas without an outline
-  if (s.role >= DrawRole::KineticBar && s.role <= DrawRole::Panel) {
+  if (info(s.role).area) {
     beginPrimitive(fillColor(s), s.opacity);
     fillConvex(vertices);
     return;
   }
-  const bool solid = s.role == DrawRole::Body || s.role == DrawRole::StaticBody;
+  const bool solid = s.role == Role::Body || s.role == Role::StaticBody;
   if (solid) {
-    beginPrimitive(fillColor(s), s.opacity, s.role == DrawRole::StaticBody);
+    beginPrimitive(fillColor(s), s.opacity, s.role == Role::StaticBody);
     fillConvex(vertices);
-    if (s.role == DrawRole::StaticBody) {
+    if (s.role == Role::StaticBody) {
       Bounds area;
       for (const Vec2& v : vertices) area.add(v);
       hatch(area, strokeColor(s), s.opacity);
@@ -142,12 +111,12 @@ void GlCanvas::polygon(const std::vector<Vec2>& vertices, const sim::debug::Draw
   strokeClosed(vertices, strokeWidth(s.role));
 }
 
-void GlCanvas::circle(const Vec2& center, double radius, const sim::debug::DrawStyle& s) {
-  const bool solid = s.role == DrawRole::Body || s.role == DrawRole::StaticBody;
+void GlCanvas::circle(const Vec2& center, double radius, const Pen& s) {
+  const bool solid = s.role == Role::Body || s.role == Role::StaticBody;
   if (solid) {
-    beginPrimitive(fillColor(s), s.opacity, s.role == DrawRole::StaticBody);
+    beginPrimitive(fillColor(s), s.opacity, s.role == Role::StaticBody);
     fillDisc(center, radius);
-    if (s.role == DrawRole::StaticBody) {
+    if (s.role == Role::StaticBody) {
       Bounds area;
       area.add(center - Vec2(radius, radius));
       area.add(center + Vec2(radius, radius));
@@ -158,7 +127,7 @@ void GlCanvas::circle(const Vec2& center, double radius, const sim::debug::DrawS
   ring(center, radius, strokeWidth(s.role));
 }
 
-void GlCanvas::halfPlane(const Vec2& point, const Vec2& normal, const sim::debug::DrawStyle& s) {
+void GlCanvas::halfPlane(const Vec2& point, const Vec2& normal, const Pen& s) {
   if (!(normal.norm() > 0.0)) return;
   const Vec2 n = normal.normalized(), t = perpendicular(n);
   const Bounds view = camera_.view();
@@ -173,20 +142,20 @@ void GlCanvas::halfPlane(const Vec2& point, const Vec2& normal, const sim::debug
   strokeSegment(p0 - t * reach, p0 + t * reach, strokeWidth(s.role));
 }
 
-void GlCanvas::segment(const Vec2& a, const Vec2& b, const sim::debug::DrawStyle& s) {
+void GlCanvas::segment(const Vec2& a, const Vec2& b, const Pen& s) {
   beginPrimitive(strokeColor(s), s.opacity);
   strokeSegment(a, b, strokeWidth(s.role));
 }
 
-void GlCanvas::point(const Vec2& p, const sim::debug::DrawStyle& s) {
+void GlCanvas::point(const Vec2& p, const Pen& s) {
   const double w = style_.lineWidth;
   switch (s.role) {
-    case DrawRole::IncidentVertex:
+    case Role::IncidentVertex:
       // a ring, so the vertex itself stays visible inside it
       beginPrimitive(strokeColor(s), s.opacity);
       ring(p, 4.0 * w * px_, w);
       break;
-    case DrawRole::ContactPoint:
+    case Role::ContactPoint:
       // a dot with a rim of the background, visible over a body of the same color
       beginPrimitive(style_.background, s.opacity);
       fillDisc(p, 2.9 * w * px_);
@@ -199,13 +168,13 @@ void GlCanvas::point(const Vec2& p, const sim::debug::DrawStyle& s) {
   }
 }
 
-void GlCanvas::arrow(const Vec2& tail, const Vec2& head, const sim::debug::DrawStyle& s) {
+void GlCanvas::arrow(const Vec2& tail, const Vec2& head, const Pen& s) {
   beginPrimitive(strokeColor(s), s.opacity);
   strokeArrow(tail, head, strokeWidth(s.role));
 }
 
-void GlCanvas::text(const Vec2& at, const std::string& text, const sim::debug::DrawStyle& s) {
-  const Anchor anchor = s.role == DrawRole::Caption ? Anchor::TopLeft : Anchor::Center;
+void GlCanvas::text(const Vec2& at, const std::string& text, const Pen& s) {
+  const Anchor anchor = s.role == Role::Caption ? Anchor::TopLeft : Anchor::Center;
   texts_.push_back({camera_.toPixel(at), text, anchor, strokeColor(s).withAlpha(s.opacity)});
 }
 

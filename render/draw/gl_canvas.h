@@ -16,11 +16,11 @@
 #include "render/draw/gl_context.h"
 #include "render/draw/style.h"
 #include "render/draw/text.h"
-#include "sim/debug/debug_draw.h"
+#include "render/draw/canvas.h"
 
 namespace render::draw {
 
-class GlCanvas : public sim::debug::DebugDraw {
+class GlCanvas final : public Canvas {
  public:
   GlCanvas(GlContext& gl, TextRenderer& text, const Style& style);
 
@@ -29,13 +29,13 @@ class GlCanvas : public sim::debug::DebugDraw {
   // the frame, with the queued text on top
   Image finish();
 
-  void polygon(const std::vector<Vec2>& vertices, const sim::debug::DrawStyle& style) override;
-  void circle(const Vec2& center, double radius, const sim::debug::DrawStyle& style) override;
-  void halfPlane(const Vec2& point, const Vec2& normal, const sim::debug::DrawStyle& style) override;
-  void segment(const Vec2& a, const Vec2& b, const sim::debug::DrawStyle& style) override;
-  void point(const Vec2& p, const sim::debug::DrawStyle& style) override;
-  void arrow(const Vec2& tail, const Vec2& head, const sim::debug::DrawStyle& style) override;
-  void text(const Vec2& at, const std::string& text, const sim::debug::DrawStyle& style) override;
+  void polygon(const std::vector<Vec2>& vertices, const Pen& style) override;
+  void circle(const Vec2& center, double radius, const Pen& style) override;
+  void halfPlane(const Vec2& point, const Vec2& normal, const Pen& style) override;
+  void segment(const Vec2& a, const Vec2& b, const Pen& style) override;
+  void point(const Vec2& p, const Pen& style) override;
+  void arrow(const Vec2& tail, const Vec2& head, const Pen& style) override;
+  void text(const Vec2& at, const std::string& text, const Pen& style) override;
 
  private:
   struct QueuedText {
@@ -45,10 +45,10 @@ class GlCanvas : public sim::debug::DebugDraw {
     Color color;
   };
   // colors of a role: a fill (for shapes) and a stroke
-  Color fillColor(const sim::debug::DrawStyle& s) const;
-  Color strokeColor(const sim::debug::DrawStyle& s) const;
+  Color fillColor(const Pen& s) const;
+  Color strokeColor(const Pen& s) const;
   // a stroke's width in output pixels
-  double strokeWidth(sim::debug::DrawRole role) const;
+  double strokeWidth(Role role) const;
 
   // the GL work, vertices relative to the camera center. A primitive in color c at `opacity`: a
   // translucent one, or one that `marks` its pixels (for hatching), under a fresh stencil value

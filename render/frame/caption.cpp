@@ -5,6 +5,7 @@
 #include <sstream>
 
 namespace render::frame {
+using namespace render::scene;
 
 namespace {
 
@@ -75,14 +76,14 @@ std::string firstSentence(const std::string& text) {
   return sentence;
 }
 
-std::string captionOf(const sim::scene::SceneDef& def) {
+std::string captionOf(const render::scene::Scene& def) {
   if (!def.render.caption.empty()) return def.render.caption;
-  return def.render.captionFromDescription ? firstSentence(def.description) : "";
+  return def.render.captionFromDescription ? firstSentence(def.model.description) : "";
 }
 
-std::string titleOf(const sim::scene::SceneDef& def) {
+std::string titleOf(const render::scene::Scene& def) {
   if (!def.render.title.empty()) return def.render.title;
-  std::string title = def.name;
+  std::string title = def.model.name;
   std::replace(title.begin(), title.end(), '_', ' ');
   return title;
 }

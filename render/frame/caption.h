@@ -7,9 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "sim/scene/scene_def.h"
+#include "render/scene/scene.h"
 
 namespace render::frame {
+using namespace render::scene;
 
 // the width in pixels of a line of UTF-8 text
 using TextWidth = std::function<int(const std::string&)>;
@@ -37,9 +38,9 @@ std::vector<std::string> wrapLines(const std::string& text, int maxWidth, int ma
 std::string firstSentence(const std::string& text);
 
 // the caption the scene asks for: its `caption` text, the first sentence of its description, or ""
-std::string captionOf(const sim::scene::SceneDef& def);
+std::string captionOf(const render::scene::Scene& def);
 
 // the title of its card: `title`, or the scene's name with '_' as spaces
-std::string titleOf(const sim::scene::SceneDef& def);
+std::string titleOf(const render::scene::Scene& def);
 
 }  // namespace render::frame

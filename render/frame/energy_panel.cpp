@@ -6,15 +6,16 @@
 #include "render/draw/style.h"
 #include "render/draw/text.h"
 #include "render/frame/quantity_text.h"
+#include "render/scene/scene_style.h"
 #include "sim/scene/scene_build.h"
 #include "sim/world/diagnostics.h"
 
 namespace render::frame {
 using namespace render::draw;
+using namespace render::scene;
 
 namespace {
 
-using sim::debug::DrawRole;
 
 // the layout in text heights (em): inset from the frame's edges as the time caption, padding inside,
 // the pitch of rows, the bars' width
@@ -47,28 +48,28 @@ std::vector<double> energyValues(const sim::world::World& world) {
   return values;
 }
 
-std::vector<EnergyBar> energyBars(const sim::scene::SceneDef& def, const sim::world::World& world) {
+std::vector<EnergyBar> energyBars(const render::scene::Scene& def, const sim::world::World& world) {
   const std::vector<double> values = energyValues(world);
   std::vector<EnergyBar> bars;
   // the names and roles in energyValues' order: two bars per moving body, then U when there is one, E
   for (size_t i = 0; i < world.bodies.size(); ++i) {
     if (world.bodies[i].isStatic) continue;
-    const std::string& name = def.bodies[i].label.empty() ? def.bodies[i].name : def.bodies[i].label;
-    bars.push_back({name + " ½mv²", values[bars.size()], DrawRole::KineticBar, static_cast<int>(i)});
-    bars.push_back({name + " ½Iω²", values[bars.size()], DrawRole::RotationalBar, static_cast<int>(i)});
+    const std::string& name = def.render.bodies[i].label.empty() ? def.model.bodies[i].name : def.render.bodies[i].label;
+    bars.push_back({name + " ½mv²", values[bars.size()], Role::KineticBar, static_cast<int>(i)});
+    bars.push_back({name + " ½Iω²", values[bars.size()], Role::RotationalBar, static_cast<int>(i)});
   }
-  if (bars.size() + 2 == values.size()) bars.push_back({"U", values[bars.size()], DrawRole::PotentialBar, -1});
-  bars.push_back({"E", values.back(), DrawRole::TotalBar, -1});
+  if (bars.size() + 2 == values.size()) bars.push_back({"U", values[bars.size()], Role::PotentialBar, -1});
+  bars.push_back({"E", values.back(), Role::TotalBar, -1});
   return bars;
 }
 
-double EnergyPanel::widthPx(const sim::scene::SceneDef& def, const RunSurvey& survey, double em) {
+double EnergyPanel::widthPx(const render::scene::Scene& def, const RunSurvey& survey, double em) {
   const bool energy = def.render.overlays.energy, momentum = def.render.overlays.momentum;
   // the widest texts: each bar's name with the run's largest magnitude, negative; p and L likewise
   const double most = std::max(std::abs(survey.maxEnergy), std::abs(survey.minEnergy));
   double energyWidth = 0.0, momentumWidth = 0.0;
   if (energy)
-    for (EnergyBar bar : energyBars(def, sim::scene::buildWorld(def))) {
+    for (EnergyBar bar : energyBars(def, sim::scene::buildWorld(def.model))) {
       bar.value = -most;
       energyWidth = std::max(energyWidth, kBar + 0.5 + textWidth(energyText(bar)));
     }
@@ -79,14 +80,14 @@ double EnergyPanel::widthPx(const sim::scene::SceneDef& def, const RunSurvey& su
   return (2.0 * kPad + std::max(energyWidth, momentumWidth)) * em;
 }
 
-double EnergyPanel::bandPx(const sim::scene::SceneDef& def, const RunSurvey& survey, int heightPx) {
-  const sim::scene::OverlaysDef& o = def.render.overlays;
+double EnergyPanel::bandPx(const render::scene::Scene& def, const RunSurvey& survey, int heightPx) {
+  const render::scene::OverlaysDef& o = def.render.overlays;
   if (!o.energy && !o.momentum) return 0.0;
   const double em = fontSizeFor(def.render, heightPx);
   return widthPx(def, survey, em) + 2.0 * kInset * em;
 }
 
-EnergyPanel::EnergyPanel(const sim::scene::SceneDef& def, const Camera& camera, const RunSurvey& survey)
+EnergyPanel::EnergyPanel(const render::scene::Scene& def, const Camera& camera, const RunSurvey& survey)
     : def_(def),
       camera_(camera),
       energy_(def.render.overlays.energy),
@@ -100,11 +101,11 @@ EnergyPanel::EnergyPanel(const sim::scene::SceneDef& def, const Camera& camera, 
   textLeft_ = barLeft_ + (kBar + 0.5) * em_;
 }
 
-void EnergyPanel::draw(const sim::world::World& world, sim::debug::DebugDraw& draw) const {
+void EnergyPanel::draw(const sim::world::World& world, Canvas& draw) const {
   const std::vector<EnergyBar> bars = energy_ ? energyBars(def_, world) : std::vector<EnergyBar>{};
   const int rows = static_cast<int>(bars.size()) + (momentum_ ? 2 : 0);
   const double top = kInset * em_, right = left_ + width_, bottom = top + (2.0 * kPad + kRow * rows) * em_;
-  draw.polygon({at(left_, top), at(right, top), at(right, bottom), at(left_, bottom)}, {DrawRole::Panel, -1, 1.0});
+  draw.polygon({at(left_, top), at(right, top), at(right, bottom), at(left_, bottom)}, {Role::Panel, -1, 1.0});
   double y = top + kPad * em_;
   // a bar from the zero of the shared scale, to the right for positive values
   const double zero = barLeft_ + (span_ > 0.0 ? -lowest_ / span_ : 0.0) * kBar * em_;
@@ -114,12 +115,12 @@ void EnergyPanel::draw(const sim::world::World& world, sim::debug::DebugDraw& dr
     // a bar under half a pixel long is not drawn: nothing to see, and no sliver
     if (std::abs(end - zero) >= 0.5)
       draw.polygon({at(zero, y0), at(end, y0), at(end, y1), at(zero, y1)}, {bar.role, bar.body, 1.0});
-    draw.text(at(textLeft_, y), energyText(bar), {DrawRole::Caption, -1, 1.0});
+    draw.text(at(textLeft_, y), energyText(bar), {Role::Caption, -1, 1.0});
     y += kRow * em_;
   }
   if (momentum_) {
-    draw.text(at(barLeft_, y), momentumText(world), {DrawRole::Caption, -1, 1.0});
-    draw.text(at(barLeft_, y + kRow * em_), angularText(world), {DrawRole::Caption, -1, 1.0});
+    draw.text(at(barLeft_, y), momentumText(world), {Role::Caption, -1, 1.0});
+    draw.text(at(barLeft_, y + kRow * em_), angularText(world), {Role::Caption, -1, 1.0});
   }
 }
 

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "sim/debug/describe.h"
+
 namespace render::frame {
 using namespace render::draw;
 
@@ -26,13 +28,10 @@ void History::afterStep(const sim::world::World& world) {
 
 void History::afterEvent(const sim::world::World& world, const sim::world::ImpulseEvent& e) {
   if (!options_.eventImpulses) return;
-  const sim::core::Body& b = world.bodies[e.body];
-  const Vec2 r = e.pointInWorld ? e.point : b.pose().toWorld(e.point);
-  // the arrow ends where the impulse is applied, as a blow that strikes the body there
   Moment m{world.time, {}, Moment::Kind::Event, {-1, -1}};
-  const Vec2 tail = r - options_.impulseScale * e.impulse;
-  m.calls.arrow(tail, r, {sim::debug::DrawRole::Impulse, e.body, 1.0});
-  if (options_.labels) options_.labels->event(e, tail, r, m.calls);
+  PhysicsDraw physics(m.calls);
+  const sim::debug::Arrow arrow = sim::debug::describeEventImpulse(world, e, options_.impulseScale, physics);
+  if (options_.labels) options_.labels->event(e, arrow.tail, arrow.head, m.calls);
   moments_.push_back(std::move(m));
 }
 
@@ -58,14 +57,8 @@ void History::observeImpacts(const sim::world::World& world) {
     }
     DrawList& d = m->calls;
     const bool first = d.empty();
-    // the impulse on each moving body (γ n̂ on A, −γ n̂ on B), from the point
-    const Vec2 j = options_.impulseScale * r.impulse * r.normal;
-    if (!world.bodies[r.a].isStatic) d.arrow(r.point, r.point + j, {sim::debug::DrawRole::Impulse, r.a, 1.0});
-    if (!world.bodies[r.b].isStatic) d.arrow(r.point, r.point - j, {sim::debug::DrawRole::Impulse, r.b, 1.0});
-    // the normal as the notes draw it, from B into A; turned into B when A does not move (a floor)
-    const Vec2 n = world.bodies[r.a].isStatic ? Vec2(-r.normal) : r.normal;
-    d.arrow(r.point, r.point + options_.normalLength * n, {sim::debug::DrawRole::ContactNormal, -1, 1.0});
-    d.point(r.point, {sim::debug::DrawRole::ContactPoint, -1, 1.0});
+    PhysicsDraw physics(d);
+    sim::debug::describeImpact(world, r, options_.impulseScale, options_.normalLength, physics);
     if (options_.labels) options_.labels->impact(world, r, first, d);
   }
 }
@@ -104,11 +97,11 @@ void History::forgetOld(double now) {
   touching_ = index;
 }
 
-void History::drawTrails(sim::debug::DebugDraw& draw, double spacing) const {
-  for (size_t i = 0; i < trails_.size(); ++i) drawPath(trails_[i], spacing, {sim::debug::DrawRole::Trail, static_cast<int>(i), 1.0}, draw);
+void History::drawTrails(Canvas& draw, double spacing) const {
+  for (size_t i = 0; i < trails_.size(); ++i) drawPath(trails_[i], spacing, {Role::Trail, static_cast<int>(i), 1.0}, draw);
 }
 
-void History::drawPath(const std::vector<Vec2>& path, double spacing, const sim::debug::DrawStyle& style, sim::debug::DebugDraw& draw) {
+void History::drawPath(const std::vector<Vec2>& path, double spacing, const Pen& style, Canvas& draw) {
   if (path.size() < 2) return;
   Vec2 from = path.front();
   for (size_t k = 1; k < path.size(); ++k) {
@@ -119,7 +112,7 @@ void History::drawPath(const std::vector<Vec2>& path, double spacing, const sim:
   }
 }
 
-void History::drawAfterimages(double t, sim::debug::DebugDraw& draw) const {
+void History::drawAfterimages(double t, Canvas& draw) const {
   const double hold = options_.hold;
   for (const Moment& m : moments_) {
     const double age = t - m.time;

@@ -19,7 +19,7 @@ using namespace render::draw;
 class History : public sim::world::StepObserver {
  public:
   // describes the contacts of the world now (points, normals, impulses, the SAT overlay)
-  using ContactDescriber = std::function<void(const sim::world::World&, sim::debug::DebugDraw&)>;
+  using ContactDescriber = std::function<void(const sim::world::World&, Canvas&)>;
 
   struct Options {
     bool trails = false;
@@ -40,13 +40,13 @@ class History : public sim::world::StepObserver {
   void afterEvent(const sim::world::World& world, const sim::world::ImpulseEvent& event) override;
 
   // every dynamic body's path up to now as Trail segments, points closer than `spacing` merged
-  void drawTrails(sim::debug::DebugDraw& draw, double spacing) const;
+  void drawTrails(Canvas& draw, double spacing) const;
   // the path so far of Options::points[k]
   const std::vector<Vec2>& pointPath(size_t k) const { return points_[k]; }
   // a path as segments in `style`, points closer than `spacing` merged (the last one always kept)
-  static void drawPath(const std::vector<Vec2>& path, double spacing, const sim::debug::DrawStyle& style, sim::debug::DebugDraw& draw);
+  static void drawPath(const std::vector<Vec2>& path, double spacing, const Pen& style, Canvas& draw);
   // what happened at most `hold` before `t`, its opacity falling linearly from 1 to 0 with age
-  void drawAfterimages(double t, sim::debug::DebugDraw& draw) const;
+  void drawAfterimages(double t, Canvas& draw) const;
 
  private:
   struct Moment {

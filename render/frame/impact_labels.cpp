@@ -6,12 +6,12 @@
 #include "render/frame/quantity_text.h"
 
 namespace render::frame {
+using namespace render::draw;
 
-using sim::debug::DrawRole;
 using sim::core::Vec2;
 
-void ImpactLabels::impact(const sim::world::World& world, const sim::world::ImpactRecord& r, bool first, sim::debug::DebugDraw& draw) const {
-  const sim::debug::DrawStyle style{DrawRole::Label, -1, 1.0};
+void ImpactLabels::impact(const sim::world::World& world, const sim::world::ImpactRecord& r, bool first, Canvas& draw) const {
+  const Pen style{Role::Label, -1, 1.0};
   // the arrows as the history draws them: γ n̂ on A, −γ n̂ on B; the normal into the moving body
   const Vec2 j = impulseScale_ * r.impulse * r.normal;
   const Vec2 n = world.bodies[r.a].isStatic ? Vec2(-r.normal) : r.normal;
@@ -28,10 +28,10 @@ void ImpactLabels::impact(const sim::world::World& world, const sim::world::Impa
   draw.text(labelBeyond(r.point, across, v, em_) + 0.6 * em_ * n, v, style);
 }
 
-void ImpactLabels::event(const sim::world::ImpulseEvent& e, const Vec2& tail, const Vec2& head, sim::debug::DebugDraw& draw) const {
+void ImpactLabels::event(const sim::world::ImpulseEvent& e, const Vec2& tail, const Vec2& head, Canvas& draw) const {
   const std::string text = quantityText("j", e.impulse.norm(), "N·s");
   // before the tail: the head strikes the body
-  draw.text(labelBeyond(tail, directionOr(tail - head, Vec2::UnitY()), text, em_), text, {DrawRole::Label, e.body, 1.0});
+  draw.text(labelBeyond(tail, directionOr(tail - head, Vec2::UnitY()), text, em_), text, {Role::Label, e.body, 1.0});
 }
 
 std::string ImpactLabels::velocitiesText(double vnBefore, double vnAfter) {

@@ -3,10 +3,11 @@
 // event's impulse arrow with "j = 1.00 N·s". The history keeps them with the arrows, fading alike.
 #pragma once
 
-#include "sim/debug/debug_draw.h"
+#include "render/draw/canvas.h"
 #include "sim/world/world.h"
 
 namespace render::frame {
+using namespace render::draw;
 
 class ImpactLabels {
  public:
@@ -15,9 +16,9 @@ class ImpactLabels {
       : em_(em), impulseScale_(impulseScale), normalLength_(normalLength) {}
 
   // the labels of one impact record; the normal and the velocities once per pair and instant (`first`)
-  void impact(const sim::world::World& world, const sim::world::ImpactRecord& r, bool first, sim::debug::DebugDraw& draw) const;
+  void impact(const sim::world::World& world, const sim::world::ImpactRecord& r, bool first, Canvas& draw) const;
   // the label of an event's impulse arrow from `tail` to `head`
-  void event(const sim::world::ImpulseEvent& e, const sim::core::Vec2& tail, const sim::core::Vec2& head, sim::debug::DebugDraw& draw) const;
+  void event(const sim::world::ImpulseEvent& e, const sim::core::Vec2& tail, const sim::core::Vec2& head, Canvas& draw) const;
 
   // "v_n⁻ = −1.00 m/s → v_n⁺ = 0.50 m/s"
   static std::string velocitiesText(double vnBefore, double vnAfter);

@@ -22,13 +22,13 @@ Image composePanels(const std::vector<Image>& frames, const std::vector<std::str
   const int gap = std::max(4, w / 160);
   const int n = static_cast<int>(frames.size());
   Image out(n * w + (n - 1) * gap, strip + h, style.background);
-  const Color rule = style.background.mixed(style.text, 0.25);
+  const Color rule = style.background.mixed(style.role(Role::Label), 0.25);
   for (int i = 0; i < n; ++i) {
     const int x = i * (w + gap);
     paste(frames[i], out, x, strip);
     if (i < static_cast<int>(titles.size()))
       text.draw(out, titles[i], x + 0.5 * w, 0.5 * (strip - titleSize) - 0.1 * titleSize, Anchor::TopCenter, titleSize,
-                style.text, style.background, 0);
+                style.role(Role::Label), style.background, 0);
     if (i + 1 < n) {
       const int rx = x + w + gap / 2 - 1;
       for (int y = 0; y < out.height; ++y)

@@ -3,11 +3,13 @@
 #include <stdexcept>
 
 #include "render/frame/title_card.h"
+#include "render/scene/scene_style.h"
 #include "sim/debug/describe.h"
 #include "sim/scene/scene_build.h"
 
 namespace render::frame {
 using namespace render::draw;
+using namespace render::scene;
 
 namespace {
 
@@ -23,13 +25,13 @@ TextWidth textWidth(TextRenderer* text, int sizePx) {
 
 }  // namespace
 
-SceneRun::SceneRun(const sim::scene::SceneDef& def, const Camera& camera, const RunSurvey& survey, GlContext* gl,
+SceneRun::SceneRun(const render::scene::Scene& def, const Camera& camera, const RunSurvey& survey, GlContext* gl,
                    TextRenderer* text)
     : def_(def),
       camera_(camera),
       style_(makeStyle(def, camera.heightPx())),
       painter_(def, camera, survey, textWidth(text, style_.fontSize)),
-      world_(sim::scene::buildWorld(def)),
+      world_(sim::scene::buildWorld(def.model)),
       history_(world_, painter_.historyOptions()),
       text_(text) {
   if (gl && text) canvas_ = std::make_unique<GlCanvas>(*gl, *text, style_);
@@ -42,10 +44,11 @@ std::vector<DrawList> SceneRun::advance(double t, int strobe) {
     world_.advanceTo(t * i / strobe, &history_);
     DrawList ghost;
     const double opacity = kOldestGhost + (kNewestGhost - kOldestGhost) * i / std::max(1, strobe - 1);
-    sim::debug::describeBodies(world_, ghost, opacity);
+    PhysicsDraw physics(ghost);
+    sim::debug::describeBodies(world_, physics, opacity);
     // ghosts of moving bodies only: a static body's ghost would only darken it
     ghosts.emplace_back();
-    RoleFilter moving(ghosts.back(), [](sim::debug::DrawRole r) { return r != sim::debug::DrawRole::StaticBody; });
+    RoleFilter moving(ghosts.back(), [](Role r) { return r != Role::StaticBody; });
     ghost.replay(moving);
   }
   world_.advanceTo(t, &history_);
@@ -61,7 +64,7 @@ Image SceneRun::frameAt(double t, int strobe) {
 }
 
 Image SceneRun::titleCard() {
-  return composeTitleCard(frameAt(0.0), titleOf(def_), def_.description, style_, *text_);
+  return composeTitleCard(frameAt(0.0), titleOf(def_), def_.model.description, style_, *text_);
 }
 
 DrawList SceneRun::drawListAt(double t, int strobe) {

@@ -13,12 +13,13 @@
 
 namespace render::frame {
 using namespace render::draw;
+using namespace render::scene;
 
 class SceneRun {
  public:
   // `def` must outlive the run; the GL context is the frame's size and current on this thread
   // (without one, only draw lists can be made)
-  SceneRun(const sim::scene::SceneDef& def, const Camera& camera, const RunSurvey& survey, GlContext* gl = nullptr,
+  SceneRun(const render::scene::Scene& def, const Camera& camera, const RunSurvey& survey, GlContext* gl = nullptr,
            TextRenderer* text = nullptr);
 
   // the frame at exactly time t, which must not be earlier than the last one; with `strobe` > 0,
@@ -37,7 +38,7 @@ class SceneRun {
  private:
   std::vector<DrawList> advance(double t, int strobe);
 
-  const sim::scene::SceneDef& def_;
+  const render::scene::Scene& def_;
   Camera camera_;
   Style style_;
   FramePainter painter_;

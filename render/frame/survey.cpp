@@ -7,18 +7,20 @@
 #include "render/frame/caption.h"
 #include "render/frame/energy_panel.h"
 #include "render/frame/point_forces.h"
+#include "render/scene/scene_style.h"
 #include "sim/scene/scene_build.h"
 #include "sim/world/diagnostics.h"
 
 namespace render::frame {
 using namespace render::draw;
+using namespace render::scene;
 
 namespace {
 
 // the bodies' extent and speed after every step
 class Surveyor : public sim::world::StepObserver {
  public:
-  Surveyor(const sim::scene::SceneDef& def, RunSurvey& out) : def_(def), out_(out) {}
+  Surveyor(const render::scene::Scene& def, RunSurvey& out) : def_(def), out_(out) {}
   void afterStep(const sim::world::World& world) override {
     for (const sim::core::Body& b : world.bodies) {
       out_.bounds.add(bodyBounds(b));
@@ -29,7 +31,7 @@ class Surveyor : public sim::world::StepObserver {
   void afterEvent(const sim::world::World& world, const sim::world::ImpulseEvent&) override { afterStep(world); }
 
  private:
-  const sim::scene::SceneDef& def_;
+  const render::scene::Scene& def_;
   RunSurvey& out_;
 };
 
@@ -52,22 +54,22 @@ Bounds bodyBounds(const sim::core::Body& b) {
   return box;
 }
 
-RunSurvey surveyRun(const sim::scene::SceneDef& def, double until) {
+RunSurvey surveyRun(const render::scene::Scene& def, double until) {
   RunSurvey survey;
-  for (const sim::scene::EventDef& e : def.events) survey.maxImpulse = std::max(survey.maxImpulse, e.impulse.norm());
-  sim::world::World world = sim::scene::buildWorld(def);
+  for (const sim::scene::EventDef& e : def.model.events) survey.maxImpulse = std::max(survey.maxImpulse, e.impulse.norm());
+  sim::world::World world = sim::scene::buildWorld(def.model);
   Surveyor surveyor(def, survey);
   surveyor.afterStep(world);
   // a spring's world anchor belongs in the picture with what hangs from it
   for (const sim::core::Spring& sp : world.forces.springs)
     if (sp.bodyB == sim::core::kWorldAnchor) survey.bounds.add(sp.pointB);
-  world.advanceTo(until < 0.0 ? def.duration : until, &surveyor);
+  world.advanceTo(until < 0.0 ? def.model.duration : until, &surveyor);
   for (const sim::world::ImpactRecord& r : world.impacts) survey.maxImpulse = std::max(survey.maxImpulse, std::abs(r.impulse));
   survey.impactTimes = impactTimes(world);
   return survey;
 }
 
-void surveyOverlays(const sim::scene::SceneDef& def, const sim::world::World& world, RunSurvey& out) {
+void surveyOverlays(const render::scene::Scene& def, const sim::world::World& world, RunSurvey& out) {
   for (size_t i = 0; i < world.bodies.size(); ++i) {
     const sim::core::Body& b = world.bodies[i];
     if (b.isStatic) continue;
@@ -79,7 +81,7 @@ void surveyOverlays(const sim::scene::SceneDef& def, const sim::world::World& wo
     out.maxTorque = std::max(out.maxTorque, std::abs(torqueOf(b, forces)));
   }
   // the panel's values cost a pass over the bodies: only for scenes that show it
-  const sim::scene::OverlaysDef& o = def.render.overlays;
+  const render::scene::OverlaysDef& o = def.render.overlays;
   if (o.energy)
     for (double value : energyValues(world)) {
       out.minEnergy = std::min(out.minEnergy, value);
@@ -98,10 +100,10 @@ double arrowScale(double given, double largest, const Camera& camera) {
   return largest > 0.0 ? kArrowFraction * camera.worldHeight() / largest : 1.0;
 }
 
-Camera cameraFor(const sim::scene::SceneDef& def, const RunSurvey& survey) { return cameraFor(def, survey, survey.bounds); }
+Camera cameraFor(const render::scene::Scene& def, const RunSurvey& survey) { return cameraFor(def, survey, survey.bounds); }
 
-Camera cameraFor(const sim::scene::SceneDef& def, const RunSurvey& survey, const Bounds& bounds) {
-  const sim::scene::RenderDef& r = def.render;
+Camera cameraFor(const render::scene::Scene& def, const RunSurvey& survey, const Bounds& bounds) {
+  const render::scene::RenderDef& r = def.render;
   if (!r.camera.automatic) return Camera(r.camera.center, r.camera.height, r.width, r.height);
   // with a caption the bodies are fitted above its band, and with an energy panel left of it, so
   // that neither ever covers them

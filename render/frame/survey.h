@@ -6,11 +6,12 @@
 #include <vector>
 
 #include "render/draw/camera.h"
-#include "sim/scene/scene_def.h"
+#include "render/scene/scene.h"
 #include "sim/world/world.h"
 
 namespace render::frame {
 using namespace render::draw;
+using namespace render::scene;
 
 struct RunSurvey {
   Bounds bounds;                    // every body's shape at every step, m
@@ -28,9 +29,9 @@ struct RunSurvey {
 };
 
 // the scene run from 0 to `until` (its duration when negative); throws sim::world::Diverged
-RunSurvey surveyRun(const sim::scene::SceneDef& def, double until = -1.0);
+RunSurvey surveyRun(const render::scene::Scene& def, double until = -1.0);
 // the overlays' extremes of the world now, added into `out` (by surveyRun after every step)
-void surveyOverlays(const sim::scene::SceneDef& def, const sim::world::World& world, RunSurvey& out);
+void surveyOverlays(const render::scene::Scene& def, const sim::world::World& world, RunSurvey& out);
 
 // every survey's arrow and bar scales (not its bounds or impacts) set to the extremes over all of
 // them, so that side-by-side pictures of variants compare at one scale
@@ -45,8 +46,8 @@ double arrowScale(double given, double largest, const Camera& camera);
 
 // the scene's camera: its fixed one, or fitted over `bounds` (the survey's own by default) with its
 // margin, above the caption's band when it has a caption and left of the energy panel's when it has one
-Camera cameraFor(const sim::scene::SceneDef& def, const RunSurvey& survey);
-Camera cameraFor(const sim::scene::SceneDef& def, const RunSurvey& survey, const Bounds& bounds);
+Camera cameraFor(const render::scene::Scene& def, const RunSurvey& survey);
+Camera cameraFor(const render::scene::Scene& def, const RunSurvey& survey, const Bounds& bounds);
 
 // the times at which the world's collision response applied impulses so far, ascending, each once
 std::vector<double> impactTimes(const sim::world::World& world);

@@ -8,15 +8,16 @@
 #include "render/frame/label_place.h"
 #include "render/frame/point_forces.h"
 #include "render/frame/quantity_text.h"
+#include "render/scene/scene_style.h"
 #include "sim/scene/scene_build.h"
 
 namespace render::frame {
 using namespace render::draw;
+using namespace render::scene;
 
 namespace {
 
-using sim::debug::DrawRole;
-using Show = sim::scene::ArrowDef::Show;
+using Show = render::scene::ArrowDef::Show;
 
 constexpr double kPi = std::numbers::pi;
 // the largest |ω| (|τ|) of the run sweeps this much; the arcs' radii as fractions of the view's height
@@ -26,18 +27,18 @@ constexpr double kOmegaRadius = 0.06, kTorqueRadius = 0.09, kFrameLength = 0.1;
 // a curved arrow's head is drawn as a straight arrow over its last 14 px of arc
 constexpr double kHeadPx = 14.0;
 
-DrawRole roleOf(Show show) {
+Role roleOf(Show show) {
   switch (show) {
-    case Show::Velocity: return DrawRole::Velocity;
-    case Show::Offset: return DrawRole::Offset;
-    case Show::Omega: return DrawRole::AngularVelocity;
-    case Show::Frame: return DrawRole::BodyFrame;
-    case Show::Path: return DrawRole::Path;
-    case Show::Force: return DrawRole::Force;
-    case Show::Torque: return DrawRole::Torque;
-    case Show::Momentum: return DrawRole::Momentum;
+    case Show::Velocity: return Role::Velocity;
+    case Show::Offset: return Role::Offset;
+    case Show::Omega: return Role::AngularVelocity;
+    case Show::Frame: return Role::BodyFrame;
+    case Show::Path: return Role::Path;
+    case Show::Force: return Role::Force;
+    case Show::Torque: return Role::Torque;
+    case Show::Momentum: return Role::Momentum;
   }
-  return DrawRole::Velocity;
+  return Role::Velocity;
 }
 
 Vec2 onCircle(const Vec2& center, double radius, double angle) {
@@ -46,7 +47,7 @@ Vec2 onCircle(const Vec2& center, double radius, double angle) {
 
 }  // namespace
 
-TeachingArrows::TeachingArrows(const sim::scene::SceneDef& def, const Camera& camera, const RunSurvey& survey,
+TeachingArrows::TeachingArrows(const render::scene::Scene& def, const Camera& camera, const RunSurvey& survey,
                                double velocityScale)
     : px_(camera.pixelSize()),
       em_(fontSizeFor(def.render, camera.heightPx()) * camera.pixelSize()),
@@ -57,9 +58,9 @@ TeachingArrows::TeachingArrows(const sim::scene::SceneDef& def, const Camera& ca
       maxOmega_(survey.maxOmega),
       maxTorque_(survey.maxTorque) {
   int paths = 0;
-  for (const sim::scene::ArrowDef& a : def.render.overlays.arrows) {
+  for (const render::scene::ArrowDef& a : def.render.overlays.arrows) {
     // `at` is written as a force's point: in the shape's coordinates, before the centroid shift
-    const Vec2 local = a.at - sim::scene::massProperties(def.bodies[a.body]).centroid;
+    const Vec2 local = a.at - sim::scene::massProperties(def.model.bodies[a.body]).centroid;
     arrows_.push_back({a, local, a.show == Show::Path ? paths++ : -1});
   }
 }
@@ -86,7 +87,7 @@ std::string TeachingArrows::defaultLabel(Show show) {
 }
 
 void TeachingArrows::curvedArrow(const Vec2& center, double radius, double middle, double sweep, double pixel,
-                                 const sim::debug::DrawStyle& style, sim::debug::DebugDraw& draw) {
+                                 const Pen& style, Canvas& draw) {
   const double length = std::abs(sweep) * radius;
   if (!(length > pixel)) return;
   const double sign = sweep > 0.0 ? 1.0 : -1.0, from = middle - 0.5 * sweep, to = middle + 0.5 * sweep;
@@ -100,21 +101,21 @@ void TeachingArrows::curvedArrow(const Vec2& center, double radius, double middl
   draw.arrow(onCircle(center, radius, to - sign * head), onCircle(center, radius, to), style);
 }
 
-void TeachingArrows::draw(const sim::world::World& world, const History& history, sim::debug::DebugDraw& draw) const {
+void TeachingArrows::draw(const sim::world::World& world, const History& history, Canvas& draw) const {
   for (size_t i = 0; i < arrows_.size(); ++i) drawOne(arrows_[i], static_cast<int>(i), world, history, draw);
 }
 
 void TeachingArrows::label(const Arrow& a, const std::string& value, const Vec2& anchor, const Vec2& direction,
-                           sim::debug::DebugDraw& draw) const {
+                           Canvas& draw) const {
   const std::string name = a.def.label.empty() ? defaultLabel(a.def.show) : a.def.label;
   const std::string text = a.def.value && !value.empty() ? name + value : name;
-  draw.text(labelBeyond(anchor, direction, text, em_), text, {DrawRole::Label, a.def.body, 1.0});
+  draw.text(labelBeyond(anchor, direction, text, em_), text, {Role::Label, a.def.body, 1.0});
 }
 
 void TeachingArrows::drawOne(const Arrow& a, int index, const sim::world::World& world, const History& history,
-                             sim::debug::DebugDraw& draw) const {
+                             Canvas& draw) const {
   const sim::core::Body& b = world.bodies[a.def.body];
-  const sim::debug::DrawStyle style{roleOf(a.def.show), a.def.body, 1.0, a.def.color.empty() ? -1 : index};
+  const Pen style{roleOf(a.def.show), a.def.body, 1.0, a.def.color.empty() ? -1 : index};
   const Vec2 point = b.pose().toWorld(a.local);
   // the value after the label: " = 1.25 m/s"
   const auto value = [](double x, const std::string& unit) { return quantityText("", x, unit); };
@@ -162,7 +163,7 @@ void TeachingArrows::drawOne(const Arrow& a, int index, const sim::world::World&
       const Vec2 x = b.q.apply(Vec2::UnitX()), y = b.q.apply(Vec2::UnitY());
       draw.arrow(b.x, b.x + length * x, style);
       draw.arrow(b.x, b.x + length * y, style);
-      const sim::debug::DrawStyle text{DrawRole::Label, a.def.body, 1.0};
+      const Pen text{Role::Label, a.def.body, 1.0};
       draw.text(labelBeyond(b.x + length * x, x, "x_b", em_), "x_b", text);
       draw.text(labelBeyond(b.x + length * y, y, "y_b", em_), "y_b", text);
       break;

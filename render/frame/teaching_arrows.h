@@ -10,38 +10,39 @@
 #include "render/draw/camera.h"
 #include "render/frame/history.h"
 #include "render/frame/survey.h"
-#include "sim/scene/scene_def.h"
+#include "render/scene/scene.h"
 #include "sim/world/world.h"
 
 namespace render::frame {
 using namespace render::draw;
+using namespace render::scene;
 
 class TeachingArrows {
  public:
   // `velocityScale`: m of arrow per m/s, as the frame's velocity arrows
-  TeachingArrows(const sim::scene::SceneDef& def, const Camera& camera, const RunSurvey& survey, double velocityScale);
+  TeachingArrows(const render::scene::Scene& def, const Camera& camera, const RunSurvey& survey, double velocityScale);
 
   // the body points whose paths the history must keep (`show: path`), in body coordinates
   std::vector<std::pair<int, Vec2>> paths() const;
   // every arrow at the world's present state; `history` kept the paths()
-  void draw(const sim::world::World& world, const History& history, sim::debug::DebugDraw& draw) const;
+  void draw(const sim::world::World& world, const History& history, Canvas& draw) const;
 
   // "v", "r′", "ω", "x_b", "r", "f", "τ", "p"
-  static std::string defaultLabel(sim::scene::ArrowDef::Show show);
+  static std::string defaultLabel(render::scene::ArrowDef::Show show);
   // a curved arrow around `center`, `radius` from it, sweeping `sweep` (counter-clockwise when
   // positive) centered on the direction `middle` (an angle); `pixel`: the world length of a pixel
   static void curvedArrow(const Vec2& center, double radius, double middle, double sweep, double pixel,
-                          const sim::debug::DrawStyle& style, sim::debug::DebugDraw& draw);
+                          const Pen& style, Canvas& draw);
 
  private:
   struct Arrow {
-    sim::scene::ArrowDef def;
+    render::scene::ArrowDef def;
     Vec2 local;       // `at` in body coordinates after the centroid shift
     int path = -1;    // index among paths()
   };
-  void drawOne(const Arrow& a, int index, const sim::world::World& world, const History& history, sim::debug::DebugDraw& draw) const;
+  void drawOne(const Arrow& a, int index, const sim::world::World& world, const History& history, Canvas& draw) const;
   // the arrow's label (with its value) beyond `anchor` in `direction`
-  void label(const Arrow& a, const std::string& value, const Vec2& anchor, const Vec2& direction, sim::debug::DebugDraw& draw) const;
+  void label(const Arrow& a, const std::string& value, const Vec2& anchor, const Vec2& direction, Canvas& draw) const;
 
   std::vector<Arrow> arrows_;
   double px_, em_, viewHeight_;                         // world lengths of a pixel, of a line of text, of the view

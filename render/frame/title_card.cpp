@@ -7,6 +7,7 @@
 
 namespace render::frame {
 using namespace render::draw;
+using namespace render::scene;
 
 namespace {
 
@@ -43,12 +44,12 @@ Image composeTitleCard(Image frame, const std::string& title, const std::string&
   double y = std::round(0.5 * (frame.height - height));
   const double x = 0.5 * frame.width;
   for (const std::string& line : titleLines) {
-    text.draw(frame, line, x, y, Anchor::TopCenter, titleSize, style.text, bg, std::max(1, titleSize / 10));
+    text.draw(frame, line, x, y, Anchor::TopCenter, titleSize, style.role(Role::Label), bg, std::max(1, titleSize / 10));
     y += titleLine;
   }
   y += gap;
   for (const std::string& line : bodyLines) {
-    text.draw(frame, line, x, y, Anchor::TopCenter, bodySize, style.text, bg, std::max(1, bodySize / 10));
+    text.draw(frame, line, x, y, Anchor::TopCenter, bodySize, style.role(Role::Label), bg, std::max(1, bodySize / 10));
     y += bodyLine;
   }
   return frame;

@@ -14,6 +14,7 @@ namespace render::video {
 using namespace render::jobs;
 using namespace render::draw;
 using namespace render::frame;
+using namespace render::scene;
 
 namespace {
 

@@ -15,6 +15,7 @@
 namespace render::video {
 using namespace render::draw;
 using namespace render::frame;
+using namespace render::scene;
 
 // where finished frames go; called on the second thread, in frame order
 class FrameSink {

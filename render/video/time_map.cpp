@@ -4,6 +4,7 @@
 #include <cmath>
 
 namespace render::video {
+using namespace render::scene;
 
 std::vector<SlowWindow> mergeWindows(std::vector<SlowWindow> windows, double duration) {
   for (SlowWindow& w : windows) w.from = std::max(0.0, w.from), w.to = std::min(duration, w.to);
@@ -54,9 +55,9 @@ double TimeMap::factorAt(double t) const {
   return 1.0;
 }
 
-TimeMap timeMapFor(const sim::scene::RenderDef& render, const std::vector<double>& impactTimes, double duration) {
+TimeMap timeMapFor(const render::scene::RenderDef& render, const std::vector<double>& impactTimes, double duration) {
   std::vector<SlowWindow> windows;
-  for (const sim::scene::SlowMotionDef& s : render.slowMotion) {
+  for (const render::scene::SlowMotionDef& s : render.slowMotion) {
     if (s.window > 0.0)
       for (double t : impactTimes) windows.push_back({t - 0.5 * s.window, t + 0.5 * s.window, s.factor});
     else

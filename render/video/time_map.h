@@ -6,9 +6,10 @@
 
 #include <vector>
 
-#include "sim/scene/render_def.h"
+#include "render/scene/render_def.h"
 
 namespace render::video {
+using namespace render::scene;
 
 // simulation times [from, to) shown `factor` times slower
 struct SlowWindow {
@@ -44,6 +45,6 @@ class TimeMap {
 
 // the scene's map: its title card, and its slow_motion windows (around each of `impactTimes`, or
 // explicit) over a run of `duration`
-TimeMap timeMapFor(const sim::scene::RenderDef& render, const std::vector<double>& impactTimes, double duration);
+TimeMap timeMapFor(const render::scene::RenderDef& render, const std::vector<double>& impactTimes, double duration);
 
 }  // namespace render::video

@@ -5,7 +5,7 @@
 
 namespace sim::core::settings {
 
-// default fixed time step, s: 1 ms resolves a 1 m lecture scene's motion to plot accuracy
+// default fixed time step, s: 1 ms resolves the motion of a scene 1 m across to plot accuracy
 inline constexpr double kDefaultDt = 1e-3;
 
 // default simulated duration, s

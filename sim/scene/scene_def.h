@@ -1,5 +1,6 @@
-// A scene as plain definitions, free of any file format: what the YAML loader produces and
-// buildWorld consumes (MuJoCo's split of the model from the simulation state).
+// A scene's model as plain definitions, free of any file format and of any picture: what the YAML
+// loader produces and buildWorld consumes (MuJoCo's split of the model from the simulation state,
+// and of the model from its visual scene: how to draw it is the renderer's own definition).
 #pragma once
 
 #include <optional>
@@ -9,7 +10,6 @@
 #include "sim/core/integrators.h"
 #include "sim/core/settings.h"
 #include "sim/core/shape.h"
-#include "sim/scene/render_def.h"
 #include "sim/world/contact.h"
 
 namespace sim::scene {
@@ -34,8 +34,6 @@ struct BodyDef {
   Vec2 velocity = Vec2::Zero();
   double angularVelocity = 0.0;
   bool isStatic = false;
-  std::string color;  // "#rrggbb"; empty for the renderer's choice
-  std::string label;
   std::optional<double> restitution;  // c_r; the world's when absent
   std::optional<double> friction;     // μ; the world's when absent
   SourceLoc loc;
@@ -92,17 +90,6 @@ struct ExpectDef {
   SourceLoc loc;
 };
 
-// how `rigidreel stability` probes the scene: the parameter it searches for the largest value at
-// which the scene still holds (documented in scenes/README.md)
-struct StabilityDef {
-  enum class Parameter { Dt, Speed, MassRatio, StackHeight };
-  Parameter parameter = Parameter::Dt;
-  std::string body;   // speed: whose speed; mass_ratio: whose mass and inertia are scaled
-  double from = 0.0;  // where the search starts (0: from the scene's own value)
-  double to = 0.0;    // the largest value tried (0: no limit but the search's own)
-  bool stack = false; // the stack criterion applies: the top box must not drift
-};
-
 struct SceneDef {
   std::string name;
   std::string description;
@@ -123,8 +110,6 @@ struct SceneDef {
   std::vector<DragDef> drags;
   std::vector<EventDef> events;
   std::vector<ExpectDef> expects;
-  RenderDef render;
-  StabilityDef stability;
 
   // index of the body with this name, or -1
   int bodyIndex(const std::string& name) const;

@@ -1,72 +1,17 @@
 #include "sim/yaml/scene_yaml.h"
 
-#include "sim/yaml/render_yaml.h"
-#include "sim/yaml/yaml_reader.h"
-
 #include <algorithm>
-#include <cctype>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <sstream>
-#include <utility>
+
+#include "sim/yaml/yaml_reader.h"
 
 namespace sim::yaml {
 using namespace sim::core;
 using namespace sim::world;
 using namespace sim::scene;
-using namespace sim::core;
-using namespace sim::world;
-using namespace sim::scene;
-
-SceneError::SceneError(std::string f, int l, int c, const std::string& m)
-    : std::runtime_error(l > 0 ? f + ":" + std::to_string(l) + ":" + std::to_string(c) + ": " + m : f + ": " + m),
-      file(std::move(f)),
-      line(l),
-      column(c),
-      message(m) {}
 
 namespace {
-
-using yaml::describe;
-using yaml::Keys;
-using yaml::Reader;
-
-// base[key] = value, keeping the key's position in the file for messages about a new key
-// (looked up through a const node: yaml-cpp's non-const operator[] adds an empty entry)
-void setKey(YAML::Node base, const YAML::Node& key, const YAML::Node& value) {
-  if (std::as_const(base)[key.Scalar()]) base[key.Scalar()] = value;
-  else base.force_insert(key, value);
-}
-
-// variants are merged over the scene: maps key by key, the bodies list by name, other values whole
-void mergeBodies(YAML::Node base, const YAML::Node& over) {
-  for (const YAML::Node& body : over) {
-    bool merged = false;
-    if (body.IsMap() && body["name"]) {
-      for (YAML::Node b : base)
-        if (b.IsMap() && std::as_const(b)["name"] && std::as_const(b)["name"].Scalar() == body["name"].Scalar()) {
-          for (const auto& kv : body) setKey(b, kv.first, kv.second);
-          merged = true;
-        }
-    }
-    if (!merged) base.push_back(body);
-  }
-}
-
-void mergeMaps(YAML::Node base, const YAML::Node& over) {
-  for (const auto& kv : over) {
-    const std::string key = kv.first.Scalar();
-    const YAML::Node current = std::as_const(base)[key];
-    if (current && current.IsMap() && kv.second.IsMap()) {
-      mergeMaps(current, kv.second);
-    } else if (key == "bodies" && current && current.IsSequence() && kv.second.IsSequence()) {
-      mergeBodies(current, kv.second);
-    } else {
-      setKey(base, kv.first, kv.second);
-    }
-  }
-}
 
 std::string joined(const std::vector<std::string_view>& names) {
   std::string s;
@@ -76,15 +21,17 @@ std::string joined(const std::vector<std::string_view>& names) {
 
 class SceneReader : public Reader {
  public:
-  using Reader::Reader;
+  SceneReader(const SceneSource& source, const OtherKeys& others) : Reader(source.file), others_(others) {}
 
-  SceneDef read(YAML::Node root, const std::string& defaultName, const std::string& variant) {
-    if (!root.IsMap()) fail(root, "a scene is a map with at least 'bodies:'; got " + describe(root));
+  SceneDef read(const SceneSource& source) {
+    const YAML::Node root = source.root;
     SceneDef s;
-    readVariants(root, s, variant);
-    checkKeys(root, {"name", "description", "duration", "world", "sim", "bodies", "forces", "events", "variants", "expect", "render", "stability"},
+    s.variant = source.variant;
+    s.variantNames = source.variantNames;
+    checkKeys(root, with({"name", "description", "duration", "world", "sim", "bodies", "forces", "events", "variants", "expect"},
+                         others_.scene),
               "the scene");
-    s.name = root["name"] ? text(root["name"], "name") : defaultName;
+    s.name = root["name"] ? text(root["name"], "name") : source.stem;
     if (root["description"]) s.description = text(root["description"], "description");
     if (root["duration"]) s.duration = positive(root["duration"], "duration");
     if (const YAML::Node w = root["world"]) {
@@ -97,8 +44,8 @@ class SceneReader : public Reader {
       checkKeys(sim, {"integrator", "dt", "collisions", "iterations", "position_iterations"}, "sim");
       if (sim["collisions"])
         s.collisions = named(sim["collisions"], "collisions", collisionMethodFromName, joined(collisionMethodNames()));
-      if (sim["iterations"]) s.velocityIterations = count(sim["iterations"], "iterations");
-      if (sim["position_iterations"]) s.positionIterations = count(sim["position_iterations"], "position_iterations", 0);
+      if (sim["iterations"]) s.velocityIterations = wholeNumber(sim["iterations"], "iterations", 1, 1000);
+      if (sim["position_iterations"]) s.positionIterations = wholeNumber(sim["position_iterations"], "position_iterations", 0, 1000);
       if (sim["integrator"])
         s.integrator = named(sim["integrator"], "integrator", integratorFromName, joined(integratorNames()));
       if (sim["dt"]) s.dt = positive(sim["dt"], "dt");
@@ -118,40 +65,13 @@ class SceneReader : public Reader {
       if (!expect.IsSequence()) fail(expect, "'expect' must be a list, got " + describe(expect));
       for (const YAML::Node& e : expect) s.expects.push_back(readExpect(e, s));
     }
-    if (const YAML::Node r = root["render"]) {
-      yaml::readRender(r, *this, s.render);
-      yaml::readOverlays(r, *this, s, s.render.overlays);
-    }
-    const YAML::Node render = root["render"];
-    yaml::readPanels(render ? render["panels"] : render, *this, s.duration, s.variantNames.size(), s.render.panels);
-    if (const YAML::Node st = root["stability"]) s.stability = readStability(st, s);
     return s;
   }
 
  private:
-  void readVariants(YAML::Node root, SceneDef& s, const std::string& variant) {
-    const YAML::Node variants = root["variants"];
-    if (variants) {
-      if (!variants.IsMap()) fail(variants, "'variants' must be a map from names to changes, got " + describe(variants));
-      for (const auto& kv : variants) {
-        if (!kv.second.IsMap() && !kv.second.IsNull())
-          fail(kv.second, "variant '" + kv.first.Scalar() + "' must be a map of changes, got " + describe(kv.second));
-        s.variantNames.push_back(kv.first.Scalar());
-      }
-    }
-    if (variant.empty()) return;
-    if (std::find(s.variantNames.begin(), s.variantNames.end(), variant) == s.variantNames.end()) {
-      std::string known;
-      for (const auto& n : s.variantNames) known += (known.empty() ? "" : ", ") + n;
-      fail(variants ? variants : root, "unknown variant '" + variant + "'; " +
-                                           (known.empty() ? "this scene has no variants" : "this scene has: " + known));
-    }
-    const YAML::Node changes = variants[variant];
-    if (changes.IsMap()) {
-      if (changes["variants"]) fail(changes["variants"], "a variant cannot define variants");
-      mergeMaps(root, changes);
-    }
-    s.variant = variant;
+  static Keys with(Keys own, const Keys& others) {
+    own.insert(own.end(), others.begin(), others.end());
+    return own;
   }
 
   Shape readShape(const YAML::Node& n) {
@@ -185,8 +105,9 @@ class SceneReader : public Reader {
   }
 
   BodyDef readBody(const YAML::Node& n, const SceneDef& s) {
-    checkKeys(n, {"name", "shape", "density", "mass", "inertia", "position", "angle", "velocity", "angular_velocity",
-                  "static", "color", "label", "restitution", "friction"},
+    checkKeys(n, with({"name", "shape", "density", "mass", "inertia", "position", "angle", "velocity", "angular_velocity",
+                       "static", "restitution", "friction"},
+                      others_.body),
               "a body");
     BodyDef b;
     b.loc = {n.Mark().line + 1, n.Mark().column + 1};
@@ -215,27 +136,7 @@ class SceneReader : public Reader {
     }
     if (b.isStatic && (b.velocity != Vec2::Zero() || b.angularVelocity != 0.0))
       fail(n, "static body '" + b.name + "' cannot move; remove its velocity or make it dynamic");
-    if (n["color"]) {
-      b.color = text(n["color"], "color");
-      const bool hex = b.color.size() == 7 && b.color[0] == '#' &&
-                       std::all_of(b.color.begin() + 1, b.color.end(), [](char c) { return std::isxdigit(c); });
-      if (!hex) fail(n["color"], "color must be written \"#rrggbb\", got '" + b.color + "'");
-    }
-    b.label = n["label"] ? text(n["label"], "label") : b.name;
     return b;
-  }
-
-  std::string bodyRef(const YAML::Node& map, const std::string& key, const SceneDef& s, const std::string& what) {
-    const YAML::Node n = required(map, key, what);
-    const std::string name = text(n, key);
-    if (s.bodyIndex(name) < 0) fail(n, "no body named '" + name + "'" + knownBodies(s));
-    return name;
-  }
-
-  static std::string knownBodies(const SceneDef& s) {
-    std::string known;
-    for (const BodyDef& b : s.bodies) known += (known.empty() ? "; the bodies are: " : ", ") + b.name;
-    return known;
   }
 
   void readForce(const YAML::Node& n, SceneDef& s) {
@@ -270,7 +171,7 @@ class SceneReader : public Reader {
       f.body = bodyRef(n, "body", s, "a force");
       if (n["point"]) f.point = vec2(n["point"], "point");
       f.force = vec2(required(n, "force", "a force"), "force");
-      if (n["frame"]) f.bodyFrame = frame(n["frame"]) == "body";
+      if (n["frame"]) f.bodyFrame = coordinateFrame(n["frame"]) == "body";
       if (n["from"]) f.from = nonNegative(n["from"], "from");
       if (n["until"]) {
         f.until = finite(n["until"], "until");
@@ -295,37 +196,9 @@ class SceneReader : public Reader {
     return c;
   }
 
-  int count(const YAML::Node& n, const std::string& key, int least = 1) {
-    const double x = number(n, key);
-    if (x != std::floor(x) || x < least || x > 1000)
-      fail(n, "'" + key + "' must be a whole number from " + std::to_string(least) + " to 1000, got " + n.Scalar());
-    return static_cast<int>(x);
-  }
-
-  StabilityDef readStability(const YAML::Node& n, const SceneDef& s) {
-    checkKeys(n, {"parameter", "body", "from", "to", "stack"}, "stability");
-    StabilityDef d;
-    if (n["parameter"]) {
-      const std::string p = text(n["parameter"], "parameter");
-      if (p == "dt") d.parameter = StabilityDef::Parameter::Dt;
-      else if (p == "speed") d.parameter = StabilityDef::Parameter::Speed;
-      else if (p == "mass_ratio") d.parameter = StabilityDef::Parameter::MassRatio;
-      else if (p == "stack_height") d.parameter = StabilityDef::Parameter::StackHeight;
-      else fail(n["parameter"], "unknown stability parameter '" + p + "'; choose one of: dt, speed, mass_ratio, stack_height");
-    }
-    const bool needsBody = d.parameter == StabilityDef::Parameter::Speed || d.parameter == StabilityDef::Parameter::MassRatio;
-    if (needsBody) d.body = bodyRef(n, "body", s, "stability with this parameter");
-    else if (n["body"]) fail(n["body"], "'body' goes with the parameters speed and mass_ratio");
-    if (n["from"]) d.from = positive(n["from"], "from");
-    if (n["to"]) d.to = positive(n["to"], "to");
-    if (d.to > 0.0 && d.from > 0.0 && !(d.to > d.from)) fail(n["to"], "'to' must be larger than 'from'");
-    if (n["stack"]) d.stack = boolean(n["stack"], "stack");
-    if (d.parameter == StabilityDef::Parameter::StackHeight) d.stack = true;
-    return d;
-  }
-
-  std::string frame(const YAML::Node& n) {
-    const std::string f = text(n, "frame");
+  // the coordinate frame a point or a force is written in
+  std::string coordinateFrame(const YAML::Node& n) {
+    const std::string f = text(n, "frame");  // "body" or "world"
     if (f != "body" && f != "world") fail(n, "frame must be 'body' or 'world', got '" + f + "'");
     return f;
   }
@@ -351,7 +224,7 @@ class SceneReader : public Reader {
     e.body = bodyRef(n, "body", s, "an event");
     e.impulse = vec2(required(n, "impulse", "an event"), "impulse");
     if (n["point"]) e.point = vec2(n["point"], "point");
-    if (n["frame"]) e.pointInWorld = frame(n["frame"]) == "world";
+    if (n["frame"]) e.pointInWorld = coordinateFrame(n["frame"]) == "world";
     return e;
   }
 
@@ -379,42 +252,22 @@ class SceneReader : public Reader {
     if (n["tolerance"]) e.tolerance = positive(n["tolerance"], "tolerance");
     return e;
   }
-};
 
-std::string stem(const std::string& path) {
-  std::string base = path.substr(path.find_last_of('/') + 1);
-  if (base.size() > 5 && base.ends_with(".yaml")) base.resize(base.size() - 5);
-  else if (base.size() > 4 && base.ends_with(".yml")) base.resize(base.size() - 4);
-  return base;
-}
+  const OtherKeys& others_;
+};
 
 }  // namespace
 
+SceneDef readModel(const SceneSource& source, const OtherKeys& others) {
+  return readGuarded(source.file, [&] { return SceneReader(source, others).read(source); });
+}
+
 SceneDef loadSceneText(const std::string& text, const std::string& file, const std::string& variant) {
-  YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::ParserException& e) {
-    throw SceneError(file, e.mark.line + 1, e.mark.column + 1, "invalid YAML: " + e.msg);
-  }
-  if (!root || root.IsNull()) throw SceneError(file, 1, 1, "the scene is empty; it needs at least 'bodies:'");
-  try {
-    return SceneReader(file).read(root, stem(file), variant);
-  } catch (const YAML::Exception& e) {
-    // a tree shape the reader did not foresee: still a message with a position, not a crash
-    throw SceneError(file, e.mark.line + 1, e.mark.column + 1, e.msg);
-  }
+  return readModel(sceneSourceText(text, file, variant));
 }
 
 SceneDef loadSceneFile(const std::string& path, const std::string& variant) {
-  if (std::filesystem::is_directory(path))
-    throw SceneError(path, 0, 0, "is a directory, not a scene file; give the path of a .yaml file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw SceneError(path, 0, 0, "cannot open the scene file (does it exist and is it readable?)");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw SceneError(path, 0, 0, "cannot read the scene file");
-  return loadSceneText(text.str(), path, variant);
+  return readModel(readSceneSource(path, variant));
 }
 
 }  // namespace sim::yaml

@@ -1,6 +1,6 @@
 // Reading YAML nodes into typed values, failing with FILE:LINE:COL and a message that says what to
-// do. Shared by the scene reader and the readers of its sub-blocks; an internal header of the
-// rigidreel_scene target (it includes yaml-cpp, which the simulator never sees).
+// do. Shared by every layer's reader of a scene file (the model's here, the render: block's and
+// stability:'s in the renderer); it includes yaml-cpp, which the simulator never sees.
 #pragma once
 
 #include <yaml-cpp/yaml.h>
@@ -12,12 +12,11 @@
 #include <vector>
 
 #include "sim/core/math.h"
-#include "sim/yaml/scene_yaml.h"
+#include "sim/scene/scene_def.h"
+#include "sim/yaml/scene_error.h"
 
 namespace sim::yaml {
-using namespace sim::core;
-using namespace sim::world;
-using namespace sim::scene;
+using sim::core::Vec2;
 
 // edit distance, to name the valid key nearest to a misspelled one
 inline size_t editDistance(const std::string& a, const std::string& b) {
@@ -98,6 +97,15 @@ class Reader {
     return x;
   }
 
+  // a whole number from `least` to `most`
+  int wholeNumber(const YAML::Node& n, const std::string& key, int least, int most) const {
+    const double x = number(n, key);
+    if (!(x >= least && x <= most) || x != std::floor(x))
+      fail(n, "'" + key + "' must be a whole number from " + std::to_string(least) + " to " + std::to_string(most) +
+                  ", got " + n.Scalar());
+    return static_cast<int>(x);
+  }
+
   double nonNegative(const YAML::Node& n, const std::string& key) const {
     const double x = number(n, key);
     if (!(x >= 0.0) || !std::isfinite(x))
@@ -136,6 +144,19 @@ class Reader {
     return n;
   }
 
+  // the name under `key` (required), which must name a body of `scene`, listing them when it does not
+  std::string bodyRef(const YAML::Node& map, const std::string& key, const sim::scene::SceneDef& scene,
+                      const std::string& what) const {
+    const YAML::Node n = required(map, key, what);
+    const std::string name = text(n, key);
+    if (scene.bodyIndex(name) < 0) {
+      std::string known;
+      for (const sim::scene::BodyDef& b : scene.bodies) known += (known.empty() ? "; the bodies are: " : ", ") + b.name;
+      fail(n, "no body named '" + name + "'" + known);
+    }
+    return name;
+  }
+
   // one of `names`, listing them when it is not
   template <class Lookup>
   auto named(const YAML::Node& n, const std::string& key, Lookup lookup, const std::string& choices) const {
@@ -147,5 +168,16 @@ class Reader {
 
   std::string file_;
 };
+
+// runs `read`, turning a tree shape it did not foresee (yaml-cpp's exceptions) into a SceneError with
+// a position: still a message, never a crash
+template <class Read>
+auto readGuarded(const std::string& file, Read read) {
+  try {
+    return read();
+  } catch (const YAML::Exception& e) {
+    throw SceneError(file, e.mark.line + 1, e.mark.column + 1, e.msg);
+  }
+}
 
 }  // namespace sim::yaml

@@ -31,4 +31,12 @@ for folder in sim/*/ render/*/; do
     grep -Eq "^namespace $namespace(::[a-z_]+)? \{" "$file" || { echo "FAIL: $file does not declare namespace $namespace"; failures=$((failures + 1)); }
   done
 done
+# the simulator knows nothing of pictures: no colors, panels, videos, lectures or pixels, and
+# "frame" only as a coordinate frame (a body's, the world's)
+pictures=$(grep -rniwE 'colou?rs?|panels?|videos?|lectures?|pixels?' sim/)
+frames=$(grep -rniw 'frames\?' sim/ | grep -viE 'body|world|coordinate')
+if [ -n "$pictures$frames" ]; then
+  echo "FAIL: sim/ mentions pictures:"; printf '%s\n' "$pictures" "$frames" | grep .
+  failures=$((failures + 1))
+fi
 [ $failures -eq 0 ] && echo "layers hold" || { echo "$failures failures"; exit 1; }

@@ -1,4 +1,4 @@
-// Loading an inline scene's render: block in the tests of its readers (render_yaml.cpp and
+// Loading an inline scene's render: block in the tests of its readers (render/scene/render_yaml.cpp and
 // render_timing_yaml.cpp): the block read, or its SceneError checked for line and words.
 #pragma once
 
@@ -6,16 +6,14 @@
 
 #include <string>
 
-#include "sim/yaml/scene_yaml.h"
+#include "support/drawn_scene.h"
 
 namespace render_block {
 
 // one body on lines 1-2; the render: block starts on line 3
 inline const std::string kBody = "bodies:\n  - {name: a, shape: {circle: 1}}\n";
 
-inline sim::scene::RenderDef renderOf(const std::string& block) {
-  return sim::yaml::loadSceneText(kBody + block, "inline.yaml").render;
-}
+inline render::scene::RenderDef renderOf(const std::string& block) { return drawn_scene::load(kBody + block).render; }
 
 // loading the block must fail at `line` with a message containing `words`
 inline void expectError(const std::string& block, int line, const std::string& words) {

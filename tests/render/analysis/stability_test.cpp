@@ -9,6 +9,15 @@
 
 namespace {
 
+// the model and its stability: block, as `rigidreel stability` reads them
+render::analysis::Study study(const std::string& yaml, const std::string& variant = "") {
+  const sim::yaml::SceneSource source = sim::yaml::sceneSourceText(yaml, "inline.yaml", variant);
+  render::analysis::Study s;
+  s.model = sim::yaml::readModel(source, {{render::analysis::kStabilityKey}, {}});
+  s.stability = render::analysis::readStability(source, s.model);
+  return s;
+}
+
 // an undamped mass on a spring: m = 1, k = 4, so ω = 2
 const char* kSpringMass = R"(
 duration: 20
@@ -20,9 +29,9 @@ constexpr double kOmega = 2.0;
 
 double boundary(const char* yaml, sim::core::Integrator method, sim::world::CollisionMethod collisions = sim::world::CollisionMethod::Auto,
                 const std::string& variant = "") {
-  sim::scene::SceneDef def = sim::yaml::loadSceneText(yaml, "inline.yaml", variant);
-  def.integrator = method;
-  if (collisions != sim::world::CollisionMethod::Auto) def.collisions = collisions;
+  render::analysis::Study def = study(yaml, variant);
+  def.model.integrator = method;
+  if (collisions != sim::world::CollisionMethod::Auto) def.model.collisions = collisions;
   const render::analysis::StabilityResult r = render::analysis::findBoundary(def);
   MESSAGE(render::analysis::describeFailure(def, r));
   CHECK_FALSE(r.failsEverywhere);
@@ -69,8 +78,8 @@ stability: {parameter: speed, body: bullet, from: 0.5, to: 10000}
   const double allowed = 0.5 * (0.05 + 0.05) * 60.0;
   CHECK(boundary(yaml, sim::core::Integrator::SymplecticEuler, sim::world::CollisionMethod::Isolated) == doctest::Approx(allowed).epsilon(0.10));
 
-  sim::scene::SceneDef def = sim::yaml::loadSceneText(yaml, "inline.yaml");
-  def.collisions = sim::world::CollisionMethod::Event;
+  render::analysis::Study def = study(yaml);
+  def.model.collisions = sim::world::CollisionMethod::Event;
   const render::analysis::StabilityResult r = render::analysis::findBoundary(def);
   CHECK(r.holdsToLimit);
 }
@@ -86,13 +95,13 @@ bodies:
 )";
   for (int i = 0; i < 6; ++i)
     yaml += "  - {name: box" + std::to_string(i) + ", shape: {box: [1, 1]}, position: [0, " + std::to_string(0.5 + i) + "]}\n";
-  sim::scene::SceneDef def = sim::yaml::loadSceneText(yaml, "inline.yaml");
-  def.collisions = sim::world::CollisionMethod::Sequential;
+  render::analysis::Study def = study(yaml);
+  def.model.collisions = sim::world::CollisionMethod::Sequential;
   const render::analysis::StabilityResult held = render::analysis::findBoundary(def);
   MESSAGE(render::analysis::describeFailure(def, held));
   CHECK(held.holdsToLimit);
   CHECK(held.largestStable == 6.0);
-  def.collisions = sim::world::CollisionMethod::Isolated;
+  def.model.collisions = sim::world::CollisionMethod::Isolated;
   const render::analysis::StabilityResult isolated = render::analysis::findBoundary(def);
   MESSAGE(render::analysis::describeFailure(def, isolated));
   CHECK(isolated.largestStable < 6.0);

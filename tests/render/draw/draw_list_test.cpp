@@ -5,17 +5,17 @@
 #include "render/draw/draw_list.h"
 
 using render::draw::DrawList;
-using sim::debug::DrawRole;
+using render::draw::Role;
 
 TEST_CASE("every kind of call is one line, numbers to 6 significant digits") {
   DrawList d;
-  d.polygon({{0, 0}, {1, 0}, {0, 1.0 / 3.0}}, {DrawRole::Body, 0, 1.0});
-  d.circle({1, 2}, 0.5, {DrawRole::StaticBody, 1, 1.0});
-  d.halfPlane({0, -1}, {0, 1}, {DrawRole::StaticBody, 2, 1.0});
-  d.segment({0, 0}, {1e-17, 2}, {DrawRole::BodyAxis, 0, 1.0});
-  d.point({3, 4}, {DrawRole::ContactPoint, -1, 1.0});
-  d.arrow({0, 0}, {1, 1}, {DrawRole::Impulse, 0, 0.5});
-  d.text({0, 0}, "ω", {DrawRole::Label, 0, 1.0});
+  d.polygon({{0, 0}, {1, 0}, {0, 1.0 / 3.0}}, {Role::Body, 0, 1.0});
+  d.circle({1, 2}, 0.5, {Role::StaticBody, 1, 1.0});
+  d.halfPlane({0, -1}, {0, 1}, {Role::StaticBody, 2, 1.0});
+  d.segment({0, 0}, {1e-17, 2}, {Role::BodyAxis, 0, 1.0});
+  d.point({3, 4}, {Role::ContactPoint, -1, 1.0});
+  d.arrow({0, 0}, {1, 1}, {Role::Impulse, 0, 0.5});
+  d.text({0, 0}, "ω", {Role::Label, 0, 1.0});
   CHECK(d.toText() ==
         "polygon Body#0 (0,0) (1,0) (0,0.333333)\n"
         "circle StaticBody#1 (1,2) r=0.5\n"
@@ -28,19 +28,19 @@ TEST_CASE("every kind of call is one line, numbers to 6 significant digits") {
 
 TEST_CASE("a replay repeats the calls with their opacity scaled") {
   DrawList a, b;
-  a.point({1, 1}, {DrawRole::ContactPoint, -1, 0.5});
-  a.arrow({0, 0}, {0, 1}, {DrawRole::ContactNormal, -1, 1.0});
+  a.point({1, 1}, {Role::ContactPoint, -1, 0.5});
+  a.arrow({0, 0}, {0, 1}, {Role::ContactNormal, -1, 1.0});
   a.replay(b, 0.5);
   CHECK(b.toText() == "point ContactPoint@0.25 (1,1)\narrow ContactNormal@0.5 (0,0) -> (0,1)\n");
 }
 
 TEST_CASE("a role filter passes only the roles it keeps") {
   DrawList all, kept;
-  all.polygon({{0, 0}, {1, 0}, {1, 1}}, {DrawRole::StaticBody, 0, 1.0});
-  all.polygon({{0, 0}, {1, 0}, {1, 1}}, {DrawRole::Body, 1, 1.0});
-  all.point({0, 0}, {DrawRole::ContactPoint, -1, 1.0});
-  render::draw::RoleFilter filter(kept, [](DrawRole r) { return r == DrawRole::StaticBody; });
+  all.polygon({{0, 0}, {1, 0}, {1, 1}}, {Role::StaticBody, 0, 1.0});
+  all.polygon({{0, 0}, {1, 0}, {1, 1}}, {Role::Body, 1, 1.0});
+  all.point({0, 0}, {Role::ContactPoint, -1, 1.0});
+  render::draw::RoleFilter filter(kept, [](render::draw::Role r) { return r == Role::StaticBody; });
   all.replay(filter);
   REQUIRE(kept.calls().size() == 1);
-  CHECK(kept.calls()[0].style.role == DrawRole::StaticBody);
+  CHECK(kept.calls()[0].style.role == Role::StaticBody);
 }

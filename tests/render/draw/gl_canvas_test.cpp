@@ -9,8 +9,8 @@
 using render::draw::Camera;
 using render::draw::Color;
 using render::draw::Image;
-using sim::debug::DrawRole;
-using sim::debug::DrawStyle;
+using render::draw::Role;
+using render::draw::Pen;
 using sim::core::Vec2;
 
 namespace {
@@ -19,14 +19,6 @@ render::draw::Style testStyle() {
   render::draw::Style s;
   s.background = Color::parse("#ffffff");
   s.bodies = {Color::parse("#4e79a7"), Color::parse("#8c8c8c")};
-  s.staticBody = Color::parse("#8c8c8c");
-  s.contact = s.normal = Color::parse("#d62728");
-  s.impulse = Color::parse("#2ca02c");
-  s.velocity = s.text = Color::parse("#1f1f1f");
-  s.trail = Color::parse("#9a9a9a");
-  s.referenceEdge = Color::parse("#ff7f0e");
-  s.incidentVertex = Color::parse("#9467bd");
-  s.spring = Color::parse("#4d4d4d");
   s.lineWidth = 2.0;
   s.fontSize = 12;
   return s;
@@ -52,7 +44,7 @@ struct Fixture {
 
 TEST_CASE_FIXTURE(Fixture, "a body is filled inside, outlined darker, and nothing is drawn outside it") {
   canvas.begin(camera);
-  canvas.polygon({{-2, -2}, {2, -2}, {2, 2}, {-2, 2}}, {DrawRole::Body, 0, 1.0});
+  canvas.polygon({{-2, -2}, {2, -2}, {2, 2}, {-2, 2}}, {Role::Body, 0, 1.0});
   const Image i = canvas.finish();
   const Color base = style.bodies[0];
   CHECK(near(i, 50, 50, base.mixed({1, 1, 1, 1}, 0.35)));
@@ -63,7 +55,7 @@ TEST_CASE_FIXTURE(Fixture, "a body is filled inside, outlined darker, and nothin
 
 TEST_CASE_FIXTURE(Fixture, "a translucent outline blends once, at its joins as along its edges") {
   canvas.begin(camera);
-  canvas.polygon({{-3, -3}, {3, -3}, {3, 3}, {-3, 3}}, {DrawRole::Body, 0, 0.5});
+  canvas.polygon({{-3, -3}, {3, -3}, {3, 3}, {-3, 3}}, {Role::Body, 0, 0.5});
   const Image i = canvas.finish();
   // the corner (-3, 3) is pixel (20, 20): quads of two edges and a round join overlap there
   const uint8_t* corner = i.pixel(20, 20);
@@ -73,13 +65,13 @@ TEST_CASE_FIXTURE(Fixture, "a translucent outline blends once, at its joins as a
 
 TEST_CASE_FIXTURE(Fixture, "a half-plane fills its side out to the edges of the view, hatched") {
   canvas.begin(camera);
-  canvas.halfPlane({0, -2}, {0, 1}, {DrawRole::StaticBody, 1, 1.0});
+  canvas.halfPlane({0, -2}, {0, 1}, {Role::StaticBody, 1, 1.0});
   const Image i = canvas.finish();
   // above the boundary (y = -2 m, pixel row 70) nothing; below it the fill or the hatching everywhere
   CHECK(near(i, 0, 60, style.background, 0));
   CHECK(near(i, 99, 60, style.background, 0));
   int fill = 0, hatch = 0;
-  const Color fillColor = style.staticBody.mixed({1, 1, 1, 1}, 0.6);
+  const Color fillColor = style.role(Role::StaticBody).mixed({1, 1, 1, 1}, 0.6);
   for (int x = 0; x < 100; ++x)
     for (int y = 75; y < 100; ++y) {
       CHECK_FALSE(near(i, x, y, style.background, 0));
@@ -91,14 +83,14 @@ TEST_CASE_FIXTURE(Fixture, "a half-plane fills its side out to the edges of the 
 
 TEST_CASE_FIXTURE(Fixture, "contact points, arrows and captions are drawn in their colors") {
   canvas.begin(camera);
-  canvas.point({-2, 2}, {DrawRole::ContactPoint, -1, 1.0});
-  canvas.arrow({0, -2}, {3, -2}, {DrawRole::ContactNormal, -1, 1.0});
-  canvas.segment({-4, -4}, {4, -4}, {DrawRole::ReferenceEdge, -1, 1.0});
-  canvas.text(camera.toWorld({2, 2}), "t = 0", {DrawRole::Caption, -1, 1.0});
+  canvas.point({-2, 2}, {Role::ContactPoint, -1, 1.0});
+  canvas.arrow({0, -2}, {3, -2}, {Role::ContactNormal, -1, 1.0});
+  canvas.segment({-4, -4}, {4, -4}, {Role::ReferenceEdge, -1, 1.0});
+  canvas.text(camera.toWorld({2, 2}), "t = 0", {Role::Caption, -1, 1.0});
   const Image i = canvas.finish();
-  CHECK(near(i, 30, 30, style.contact));
-  CHECK(near(i, 60, 70, style.normal));  // the arrow's shaft, y = -2 m
-  CHECK(near(i, 50, 90, style.referenceEdge));
+  CHECK(near(i, 30, 30, style.role(Role::ContactPoint)));
+  CHECK(near(i, 60, 70, style.role(Role::ContactNormal)));  // the arrow's shaft, y = -2 m
+  CHECK(near(i, 50, 90, style.role(Role::ReferenceEdge)));
   int dark = 0;
   for (int y = 0; y < 20; ++y)
     for (int x = 0; x < 40; ++x) dark += i.pixel(x, y)[0] < 100;
@@ -108,9 +100,9 @@ TEST_CASE_FIXTURE(Fixture, "contact points, arrows and captions are drawn in the
 TEST_CASE_FIXTURE(Fixture, "the same calls give the same pixels") {
   auto draw = [&] {
     canvas.begin(camera);
-    canvas.circle({0.3, 0.1}, 2.7, {DrawRole::Body, 0, 1.0});
-    canvas.polygon({{-4, -4}, {-1, -4.5}, {-2, -1}}, {DrawRole::StaticBody, 1, 0.6});
-    canvas.text({0.3, 0.1}, "ω", {DrawRole::Label, 0, 1.0});
+    canvas.circle({0.3, 0.1}, 2.7, {Role::Body, 0, 1.0});
+    canvas.polygon({{-4, -4}, {-1, -4.5}, {-2, -1}}, {Role::StaticBody, 1, 0.6});
+    canvas.text({0.3, 0.1}, "ω", {Role::Label, 0, 1.0});
     return canvas.finish();
   };
   const Image a = draw();
@@ -124,7 +116,7 @@ TEST_CASE("supersampled and multisampled contexts both give frames of the output
     const render::draw::Style style = testStyle();
     render::draw::GlCanvas canvas(gl, text, style);
     canvas.begin(Camera({0, 0}, 3.2, 64, 32));
-    canvas.circle({0, 0}, 1.0, {DrawRole::Body, 0, 1.0});
+    canvas.circle({0, 0}, 1.0, {Role::Body, 0, 1.0});
     const Image i = canvas.finish();
     CHECK(i.width == 64);
     CHECK(i.height == 32);

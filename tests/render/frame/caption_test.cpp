@@ -55,9 +55,9 @@ TEST_CASE("the first sentence, its white space made single") {
 }
 
 TEST_CASE("the caption and the title a scene asks for") {
-  sim::scene::SceneDef def;
-  def.name = "poll_bar_impulse";
-  def.description = "An impulse at the end. It spins.";
+  render::scene::Scene def;
+  def.model.name = "poll_bar_impulse";
+  def.model.description = "An impulse at the end. It spins.";
   CHECK(render::frame::captionOf(def).empty());
   def.render.captionFromDescription = true;
   CHECK(render::frame::captionOf(def) == "An impulse at the end.");

@@ -6,9 +6,10 @@
 #include "render/frame/energy_panel.h"
 #include "sim/scene/scene_build.h"
 #include "sim/yaml/scene_yaml.h"
+#include "support/drawn_scene.h"
 
 using render::draw::DrawList;
-using sim::debug::DrawRole;
+using render::draw::Role;
 using sim::core::Vec2;
 
 namespace {
@@ -22,13 +23,13 @@ render: {size: [320, 180], camera: {center: [0, 0], height: 10}, energy: true, m
 )";
 
 DrawList panelAt(const std::string& yaml, render::draw::Camera* cameraOut = nullptr, render::frame::RunSurvey* surveyOut = nullptr) {
-  const sim::scene::SceneDef def = sim::yaml::loadSceneText(yaml, "inline.yaml");
+  const render::scene::Scene def = drawn_scene::load(yaml);
   const render::frame::RunSurvey survey = render::frame::surveyRun(def);
   if (surveyOut) *surveyOut = survey;
   const render::draw::Camera camera = render::frame::cameraFor(def, survey);
   if (cameraOut) *cameraOut = camera;
   DrawList list;
-  render::frame::EnergyPanel(def, camera, survey).draw(sim::scene::buildWorld(def), list);
+  render::frame::EnergyPanel(def, camera, survey).draw(sim::scene::buildWorld(def.model), list);
   return list;
 }
 
@@ -49,16 +50,16 @@ TEST_CASE("the panel: ½mv² and ½Iω² of each moving body, the total, then p 
                                            "p = (6.00, 0.00) kg·m/s", "L = −4.00 kg·m²/s"});
   // the panel first, its right edge half a line (5.5 px) in from the frame's
   const auto& panel = list.calls()[0];
-  CHECK(panel.style.role == DrawRole::Panel);
+  CHECK(panel.style.role == Role::Panel);
   CHECK(camera.toPixel(panel.points[1]).x() == doctest::Approx(320 - 5.5));
   CHECK(camera.toPixel(panel.points[0]).y() == doctest::Approx(5.5));
   // bars on one scale: the largest value of the run (E = 11 J) fills the 88 px
   const auto& kinetic = list.calls()[1];
-  CHECK(kinetic.style.role == DrawRole::KineticBar);
+  CHECK(kinetic.style.role == Role::KineticBar);
   CHECK(kinetic.style.body == 0);
   CHECK(widthPx(kinetic, camera) == doctest::Approx(88.0 * 9.0 / 11.0));
   CHECK(widthPx(list.calls()[3], camera) == doctest::Approx(88.0 * 2.0 / 11.0));
-  CHECK(list.calls()[5].style.role == DrawRole::TotalBar);
+  CHECK(list.calls()[5].style.role == Role::TotalBar);
   CHECK(widthPx(list.calls()[5], camera) == doctest::Approx(88.0));
 }
 
@@ -75,8 +76,8 @@ TEST_CASE("with gravity the potential energy has a bar; the run's negative value
   CHECK(list.toText().find("\"U = 20.00 J\"") != std::string::npos);
   const DrawList::Call *kinetic = nullptr, *potential = nullptr;
   for (const auto& c : list.calls()) {
-    if (c.style.role == DrawRole::KineticBar) kinetic = &c;
-    if (c.style.role == DrawRole::PotentialBar) potential = &c;
+    if (c.style.role == Role::KineticBar) kinetic = &c;
+    if (c.style.role == Role::PotentialBar) potential = &c;
   }
   REQUIRE(kinetic);
   REQUIRE(potential);

@@ -7,6 +7,7 @@
 #include "render/frame/energy_panel.h"
 #include "render/frame/scene_run.h"
 #include "sim/yaml/scene_yaml.h"
+#include "support/drawn_scene.h"
 
 using render::frame::FramePainter;
 
@@ -25,7 +26,7 @@ render: {velocities: true, trails: true, size: [320, 180]}
 )";
 
 render::draw::DrawList frameAt(const std::string& yaml, double t, int strobe = 0) {
-  const sim::scene::SceneDef def = sim::yaml::loadSceneText(yaml, "inline.yaml");
+  const render::scene::Scene def = drawn_scene::load(yaml);
   const render::frame::RunSurvey survey = render::frame::surveyRun(def);
   const render::draw::Camera camera = render::frame::cameraFor(def, survey);
   render::frame::SceneRun run(def, camera, survey);
@@ -140,7 +141,7 @@ TEST_CASE("the caption: wrapped at the bottom left, at most two lines; the slow-
       "  - {name: ball, shape: {circle: 0.1}, velocity: [1, 0]}\n"
       "render: {caption: true, labels: false, size: [320, 180], camera: {center: [0, 0], height: 1.8},\n"
       "         slow_motion: {factor: 4, from: 0.2, to: 0.4}}\n";
-  const sim::scene::SceneDef def = sim::yaml::loadSceneText(text, "inline.yaml");
+  const render::scene::Scene def = drawn_scene::load(text);
   const render::frame::RunSurvey survey = render::frame::surveyRun(def);
   render::frame::SceneRun run(def, render::frame::cameraFor(def, survey), survey);
   // the video's time map slows [0.2, 0.4) fourfold (time_map_test.cpp tests the map itself)
@@ -169,14 +170,14 @@ TEST_CASE("with a caption the automatic camera fits the bodies above its band, a
       "bodies:\n"
       "  - {name: ball, shape: {circle: 1}}\n"
       "render: {size: [320, 180], camera: {margin: 0}}\n";
-  const sim::scene::SceneDef plain = sim::yaml::loadSceneText(scene, "inline.yaml");
+  const render::scene::Scene plain = drawn_scene::load(scene);
   const render::frame::RunSurvey survey = render::frame::surveyRun(plain);
   const render::draw::Camera before = render::frame::cameraFor(plain, survey);
   CHECK(before.worldHeight() == doctest::Approx(2.0));
   CHECK(before.toPixel({0, -1}).y() == doctest::Approx(180.0));
   std::string captioned = scene;
   captioned.replace(captioned.find("margin: 0}"), 10, "margin: 0}, caption: true");
-  const render::draw::Camera after = render::frame::cameraFor(sim::yaml::loadSceneText(captioned, "inline.yaml"), survey);
+  const render::draw::Camera after = render::frame::cameraFor(drawn_scene::load(captioned), survey);
   // 11 px text: a band of 5.5 + 2 × 14 px; the ball fills the 147 px above it (whole pixels)
   CHECK(after.toPixel({0, 1}).y() == doctest::Approx(0.0));
   CHECK(after.toPixel({0, -1}).y() == doctest::Approx(147.0));
@@ -187,7 +188,7 @@ TEST_CASE("with an energy panel the automatic camera fits the bodies left of its
       "bodies:\n"
       "  - {name: ball, shape: {circle: 1}, velocity: [0, 0.001]}\n"
       "render: {size: [640, 180], camera: {margin: 0}, energy: true}\n";
-  const sim::scene::SceneDef def = sim::yaml::loadSceneText(scene, "inline.yaml");
+  const render::scene::Scene def = drawn_scene::load(scene);
   const render::frame::RunSurvey survey = render::frame::surveyRun(def);
   const double band = render::frame::EnergyPanel::bandPx(def, survey, 180);
   // a real panel, narrower than the frame
@@ -200,7 +201,7 @@ TEST_CASE("with an energy panel the automatic camera fits the bodies left of its
   CHECK(camera.toPixel({0, 0}).x() == doctest::Approx(0.5 * std::lround(640 - band)).epsilon(1e-9));
   CHECK(camera.toPixel({1, 0}).x() < 640.0 - band);
   // without the panel the ball is in the middle of the frame
-  sim::scene::SceneDef plain = def;
+  render::scene::Scene plain = def;
   plain.render.overlays.energy = false;
   CHECK(render::frame::cameraFor(plain, survey).toPixel({0, 0}).x() == doctest::Approx(320.0));
 }

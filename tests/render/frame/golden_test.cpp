@@ -13,14 +13,16 @@
 #include "render/draw/png_io.h"
 #include "render/frame/panels.h"
 #include "render/frame/scene_run.h"
+#include "render/scene/scene_style.h"
 #include "render/video/time_map.h"
 #include "sim/world/diagnostics.h"
 #include "sim/yaml/scene_yaml.h"
+#include "support/drawn_scene.h"
 #include "support/golden_compare.h"
 
 namespace fs = std::filesystem;
 using render::draw::Image;
-using sim::debug::DrawRole;
+using render::draw::Role;
 using golden::checkGolden;
 
 namespace {
@@ -28,11 +30,11 @@ namespace {
 // an inline scene ready to paint at its own size, through its own camera
 struct InlineRun {
   explicit InlineRun(const std::string& yaml, const std::string& variant = "")
-      : def(sim::yaml::loadSceneText(yaml, "inline.yaml", variant)),
+      : def(drawn_scene::load(yaml, variant)),
         survey(render::frame::surveyRun(def)),
         gl(def.render.width, def.render.height),
         run(def, render::frame::cameraFor(def, survey), survey, &gl, &text) {}
-  const sim::scene::SceneDef def;
+  const render::scene::Scene def;
   const render::frame::RunSurvey survey;
   render::draw::GlContext gl;
   render::draw::TextRenderer text;
@@ -163,11 +165,11 @@ TEST_CASE("golden: trails and velocity arrows") { checkGolden("trails_velocities
 TEST_CASE("golden: a strobe image") { checkGolden("strobe", frame(kProjectile, 1.2, "", 8)); }
 
 TEST_CASE("golden: the poll panel, A | B at the same instant") {
-  std::vector<sim::scene::SceneDef> defs;
+  std::vector<render::scene::Scene> defs;
   render::draw::Bounds bounds;
   std::vector<render::frame::RunSurvey> surveys;
   for (const char* v : {"center", "end"}) {
-    defs.push_back(sim::yaml::loadSceneText(kPoll, "inline.yaml", v));
+    defs.push_back(drawn_scene::load(kPoll, v));
     surveys.push_back(render::frame::surveyRun(defs.back()));
     bounds.add(surveys.back().bounds);
   }
@@ -178,29 +180,29 @@ TEST_CASE("golden: the poll panel, A | B at the same instant") {
     render::frame::SceneRun run(defs[i], render::frame::cameraFor(defs[i], surveys[i], bounds), surveys[i], &gl, &text);
     frames.push_back(run.frameAt(1.5));
   }
-  const render::draw::Style style = render::draw::makeStyle(defs[0], 180);
+  const render::draw::Style style = render::scene::makeStyle(defs[0], 180);
   checkGolden("poll_panel", render::frame::composePanels(frames, {"A: center", "B: end"}, style, text));
 }
 
 TEST_CASE("golden: the separating-axis overlay, drawn from a hand-written draw list") {
   // two boxes, A resting 0.05 m into B: B's top face is the reference edge, A's lower-left corner
   // the incident vertex; two contact points with their normals (from B to A)
-  const sim::scene::SceneDef def = sim::yaml::loadSceneText(kBodies, "inline.yaml");
-  const render::draw::Style style = render::draw::makeStyle(def, 180);
+  const render::scene::Scene def = drawn_scene::load(kBodies);
+  const render::draw::Style style = render::scene::makeStyle(def, 180);
   render::draw::GlContext gl(320, 180);
   render::draw::TextRenderer text;
   render::draw::GlCanvas canvas(gl, text, style);
   canvas.begin(render::draw::Camera({0, 0}, 2.4, 320, 180));
-  canvas.polygon({{-1.5, -0.9}, {1.5, -0.9}, {1.5, -0.1}, {-1.5, -0.1}}, {DrawRole::Body, 1, 1.0});
-  canvas.polygon({{-0.6, -0.15}, {0.5, -0.05}, {0.45, 0.75}, {-0.65, 0.65}}, {DrawRole::Body, 0, 1.0});
-  canvas.segment({-1.5, -0.1}, {1.5, -0.1}, {DrawRole::ReferenceEdge, 1, 1.0});
-  canvas.point({-0.6, -0.15}, {DrawRole::IncidentVertex, 0, 1.0});
+  canvas.polygon({{-1.5, -0.9}, {1.5, -0.9}, {1.5, -0.1}, {-1.5, -0.1}}, {Role::Body, 1, 1.0});
+  canvas.polygon({{-0.6, -0.15}, {0.5, -0.05}, {0.45, 0.75}, {-0.65, 0.65}}, {Role::Body, 0, 1.0});
+  canvas.segment({-1.5, -0.1}, {1.5, -0.1}, {Role::ReferenceEdge, 1, 1.0});
+  canvas.point({-0.6, -0.15}, {Role::IncidentVertex, 0, 1.0});
   for (const sim::core::Vec2& p : {sim::core::Vec2(-0.6, -0.125), sim::core::Vec2(0.5, -0.075)}) {
-    canvas.arrow(p, p + sim::core::Vec2(0, 0.5), {DrawRole::ContactNormal, -1, 1.0});
-    canvas.point(p, {DrawRole::ContactPoint, -1, 1.0});
+    canvas.arrow(p, p + sim::core::Vec2(0, 0.5), {Role::ContactNormal, -1, 1.0});
+    canvas.point(p, {Role::ContactPoint, -1, 1.0});
   }
-  canvas.text({0.9, 0.5}, "separation −0.05 m", {DrawRole::Label, -1, 1.0});
-  canvas.text({-1.9, 1.1}, "t = 0.000 s", {DrawRole::Caption, -1, 1.0});
+  canvas.text({0.9, 0.5}, "separation −0.05 m", {Role::Label, -1, 1.0});
+  canvas.text({-1.9, 1.1}, "t = 0.000 s", {Role::Caption, -1, 1.0});
   checkGolden("sat_overlay", canvas.finish());
 }
 
@@ -222,13 +224,13 @@ TEST_CASE("golden: a title card over the first frame, faded") {
 
 TEST_CASE("golden: a caption of two lines and the slow-motion note of a video frame") {
   InlineRun lecture(kPoll, "lecture");
-  const render::video::TimeMap map = render::video::timeMapFor(lecture.def.render, lecture.survey.impactTimes, lecture.def.duration);
+  const render::video::TimeMap map = render::video::timeMapFor(lecture.def.render, lecture.survey.impactTimes, lecture.def.model.duration);
   lecture.run.showSlowMotion([&map](double t) { return map.factorAt(t); });
   checkGolden("caption", lecture.run.frameAt(0.6));
 }
 
 TEST_CASE("the same scene rendered twice gives byte-identical PNGs and the same state hash") {
-  const sim::scene::SceneDef def = sim::yaml::loadSceneText(kImpact, "inline.yaml");
+  const render::scene::Scene def = drawn_scene::load(kImpact);
   const render::frame::RunSurvey survey = render::frame::surveyRun(def);
   render::draw::GlContext gl(def.render.width, def.render.height);
   render::draw::TextRenderer text;

@@ -8,7 +8,7 @@
 
 using render::draw::DrawList;
 using render::frame::History;
-using sim::debug::DrawRole;
+using render::draw::Role;
 
 namespace {
 
@@ -24,9 +24,9 @@ sim::world::World ballWorld() {
 }
 
 // a made-up contact while the ball's center is in [0.2, 0.4] (with room for round-off)
-void fakeContacts(const sim::world::World& w, sim::debug::DebugDraw& d) {
+void fakeContacts(const sim::world::World& w, render::draw::Canvas& d) {
   const double x = w.bodies[0].x.x();
-  if (x >= 0.1995 && x <= 0.4005) d.point({x, 0}, {DrawRole::ContactPoint, -1, 1.0});
+  if (x >= 0.1995 && x <= 0.4005) d.point({x, 0}, {Role::ContactPoint, -1, 1.0});
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include "render/frame/impact_labels.h"
 #include "render/frame/scene_run.h"
 #include "sim/yaml/scene_yaml.h"
+#include "support/drawn_scene.h"
 
 using render::draw::DrawList;
 
@@ -22,7 +23,7 @@ render: {size: [320, 180], impact_values: true}
 )";
 
 std::vector<std::string> textsAt(double t, sim::world::World* worldOut = nullptr, bool impactValues = true) {
-  sim::scene::SceneDef def = sim::yaml::loadSceneText(kDrop, "inline.yaml");
+  render::scene::Scene def = drawn_scene::load(kDrop);
   def.render.overlays.impactValues = impactValues;
   const render::frame::RunSurvey survey = render::frame::surveyRun(def);
   render::frame::SceneRun run(def, render::frame::cameraFor(def, survey), survey);

@@ -10,6 +10,7 @@
 
 #include "render/frame/scene_run.h"
 #include "sim/yaml/scene_yaml.h"
+#include "support/drawn_scene.h"
 #include "support/golden_compare.h"
 
 namespace fs = std::filesystem;
@@ -38,13 +39,13 @@ TEST_CASE("golden: a frame of every lecture scene at half its duration") {
   render::draw::TextRenderer text;
   for (const fs::path& file : files) {
     CAPTURE(file.string());
-    const sim::scene::SceneDef base = sim::yaml::loadSceneFile(file.string());
-    const std::string variant = base.variantNames.empty() ? "" : base.variantNames.front();
-    sim::scene::SceneDef def = sim::yaml::loadSceneFile(file.string(), variant);
+    const render::scene::Scene base = drawn_scene::loadFile(file.string());
+    const std::string variant = base.model.variantNames.empty() ? "" : base.model.variantNames.front();
+    render::scene::Scene def = drawn_scene::loadFile(file.string(), variant);
     def.render.width = kWidth;
     def.render.height = kHeight;
     const render::frame::RunSurvey survey = render::frame::surveyRun(def);
     render::frame::SceneRun run(def, render::frame::cameraFor(def, survey), survey, &gl, &text);
-    golden::checkGolden("lecture/" + file.stem().string(), run.frameAt(0.5 * def.duration));
+    golden::checkGolden("lecture/" + file.stem().string(), run.frameAt(0.5 * def.model.duration));
   }
 }

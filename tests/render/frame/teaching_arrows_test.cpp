@@ -8,9 +8,10 @@
 #include "render/frame/teaching_arrows.h"
 #include "sim/scene/scene_build.h"
 #include "sim/yaml/scene_yaml.h"
+#include "support/drawn_scene.h"
 
 using render::draw::DrawList;
-using sim::debug::DrawRole;
+using render::draw::Role;
 using sim::core::Vec2;
 
 namespace {
@@ -33,7 +34,7 @@ render:
 )";
 
 struct Drawn {
-  sim::scene::SceneDef def;
+  render::scene::Scene def;
   render::frame::RunSurvey survey;
   sim::world::World world;
   DrawList list;
@@ -41,11 +42,11 @@ struct Drawn {
 
 // the arrows of `entries` at time t
 Drawn arrowsAt(const std::string& entries, double t = 0.0) {
-  Drawn d{sim::yaml::loadSceneText(kScene + entries, "inline.yaml"), {}, {}, {}};
+  Drawn d{drawn_scene::load(kScene + entries), {}, {}, {}};
   d.survey = render::frame::surveyRun(d.def);
   const render::draw::Camera camera = render::frame::cameraFor(d.def, d.survey);
   const render::frame::TeachingArrows arrows(d.def, camera, d.survey, 1.0);
-  d.world = sim::scene::buildWorld(d.def);
+  d.world = sim::scene::buildWorld(d.def.model);
   render::frame::History::Options o;
   o.points = arrows.paths();
   render::frame::History history(d.world, o);
@@ -68,12 +69,12 @@ TEST_CASE("velocity at a body point is v + ω × R r_b, labeled with its magnitu
   REQUIRE(d.list.calls().size() == 2);
   const auto& arrow = d.list.calls()[0];
   CHECK(arrow.kind == DrawList::Kind::Arrow);
-  CHECK(arrow.style.role == DrawRole::Velocity);
+  CHECK(arrow.style.role == Role::Velocity);
   const Vec2 v = Vec2(1, 0.5) + 2.0 * Vec2(-kTop.y(), kTop.x());
   checkPoint(arrow.points[0], kTop);
   checkPoint(arrow.points[1], kTop + v);
   CHECK(d.list.calls()[1].text == render::frame::quantityText("v", v.norm(), "m/s"));
-  CHECK(d.list.calls()[1].style.role == DrawRole::Label);
+  CHECK(d.list.calls()[1].style.role == Role::Label);
 }
 
 TEST_CASE("offset r′ = R r_b from the center of mass, `at` as written before the centroid shift") {

@@ -8,6 +8,7 @@
 
 #include "render/video/recorder.h"
 #include "sim/yaml/scene_yaml.h"
+#include "support/drawn_scene.h"
 
 namespace fs = std::filesystem;
 
@@ -37,7 +38,7 @@ const char* const kScene =
 }  // namespace
 
 TEST_CASE("frames come in order, one per k / fps, and the run ends at the last one's time") {
-  const sim::scene::SceneDef def = sim::yaml::loadSceneText(kScene, "inline.yaml");
+  const render::scene::Scene def = drawn_scene::load(kScene);
   const render::frame::RunSurvey survey = render::frame::surveyRun(def);
   render::draw::GlContext gl(64, 48);
   render::draw::TextRenderer text;
@@ -53,7 +54,7 @@ TEST_CASE("frames come in order, one per k / fps, and the run ends at the last o
 }
 
 TEST_CASE("a sink that fails stops the recording with its error") {
-  const sim::scene::SceneDef def = sim::yaml::loadSceneText(kScene, "inline.yaml");
+  const render::scene::Scene def = drawn_scene::load(kScene);
   const render::frame::RunSurvey survey = render::frame::surveyRun(def);
   render::draw::GlContext gl(64, 48);
   render::draw::TextRenderer text;
@@ -76,15 +77,14 @@ TEST_CASE("PNG frames are numbered with at least five digits") {
 
 TEST_CASE("a title card opens the video, painted once and held; slow motion stretches the run") {
   // 0.2 s of card, then 1 s of run whose [0.2, 0.4) takes twice as long: 1.4 s, 14 frames at 10 fps
-  const sim::scene::SceneDef def = sim::yaml::loadSceneText(
+  const render::scene::Scene def = drawn_scene::load(
       "duration: 1\n"
       "bodies:\n"
       "  - {name: ball, shape: {circle: 0.5}, velocity: [1, 0]}\n"
       "render: {size: [64, 48], camera: {center: [0.5, 0], height: 2}, title_card: 0.2,\n"
-      "         slow_motion: {factor: 2, from: 0.2, to: 0.4}}\n",
-      "inline.yaml");
+      "         slow_motion: {factor: 2, from: 0.2, to: 0.4}}\n");
   const render::frame::RunSurvey survey = render::frame::surveyRun(def);
-  const render::video::TimeMap map = render::video::timeMapFor(def.render, survey.impactTimes, def.duration);
+  const render::video::TimeMap map = render::video::timeMapFor(def.render, survey.impactTimes, def.model.duration);
   render::draw::GlContext gl(64, 48);
   render::draw::TextRenderer text;
   render::frame::SceneRun run(def, render::frame::cameraFor(def, survey), survey, &gl, &text);

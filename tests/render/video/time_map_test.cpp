@@ -77,7 +77,7 @@ TEST_CASE("windows are sorted, clipped to the run, and merged where they overlap
 }
 
 TEST_CASE("windows around impacts come from the survey's impact times, plus the explicit ones") {
-  sim::scene::RenderDef r;
+  render::scene::RenderDef r;
   r.titleCard = 1.0;
   r.slowMotion = {{4.0, 0.2, 0.0, 0.0}, {2.0, 0.0, 0.0, 0.05}};
   // impacts 0.05 s apart share one window; the last is cut at the end of the run
@@ -85,7 +85,7 @@ TEST_CASE("windows around impacts come from the survey's impact times, plus the 
   CHECK(map.windows() == std::vector<SlowWindow>{{0.0, 0.05, 2.0}, {0.4, 0.65, 4.0}, {0.9, 1.05, 4.0}});
   CHECK(map.videoLength() == doctest::Approx(1.0 + 1.05 + 0.05 + 3 * 0.25 + 3 * 0.15).epsilon(1e-12));
   // without impacts a window around them is nothing
-  sim::scene::RenderDef around;
+  render::scene::RenderDef around;
   around.slowMotion = {{4.0, 0.2, 0.0, 0.0}};
   CHECK(render::video::timeMapFor(around, {}, 2.0).videoLength() == 2.0);
 }

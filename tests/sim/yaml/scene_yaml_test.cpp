@@ -53,8 +53,9 @@ const std::string kOneBody =
     "  - name: a\n"
     "    shape: {circle: 1}\n";
 
+// the model of a scene whose bodies may have the renderer's keys too, as the command line reads it
 sim::scene::SceneDef load(const std::string& text, const std::string& variant = "") {
-  return sim::yaml::loadSceneText(text, kFile, variant);
+  return sim::yaml::readModel(sim::yaml::sceneSourceText(text, kFile, variant), {{}, {"color", "label"}});
 }
 
 }  // namespace
@@ -405,7 +406,7 @@ const std::string kVariantScene =
     "    shape: {box: [1, 2]}\n"                                // 7
     "    mass: 3\n"                                             // 8
     "    position: [1, 2]\n"                                    // 9
-    "    label: first\n"                                        // 10
+    "    friction: 0.25\n"                                      // 10
     "  - name: b\n"                                             // 11
     "    shape: {circle: 0.5}\n"                                // 12
     "events:\n"                                                 // 13
@@ -496,15 +497,12 @@ TEST_CASE("a valid scene loads with its values") {
   CHECK(bar.velocity == sim::core::Vec2(0.5, 0.75));
   CHECK(bar.angularVelocity == -1.5);
   CHECK_FALSE(bar.isStatic);
-  CHECK(bar.color == "#3b6ea5");
-  CHECK(bar.label == "the bar");
   const sim::scene::BodyDef& ground = s.bodies[1];
   CHECK(ground.shape.kind == sim::core::ShapeKind::Circle);
   CHECK(ground.shape.radius == 2.0);
   CHECK(ground.density == 7.0);
   CHECK_FALSE(ground.mass.has_value());
   CHECK(ground.isStatic);
-  CHECK(ground.label == "ground");
   CHECK(s.bodyIndex("ground") == 1);
   CHECK(s.bodyIndex("nope") == -1);
 
@@ -551,7 +549,7 @@ TEST_CASE("a valid scene loads with its values") {
   CHECK(s.expects[1].tolerance == 1e-9);  // the default
 }
 
-TEST_CASE("defaults: name from the file stem, dt 0.001, symplectic Euler, no gravity, label = name") {
+TEST_CASE("defaults: name from the file stem, dt 0.001, symplectic Euler, no gravity") {
   const sim::scene::SceneDef s = load(kOneBody);
   CHECK(s.name == "inline");
   CHECK(s.description.empty());
@@ -563,8 +561,6 @@ TEST_CASE("defaults: name from the file stem, dt 0.001, symplectic Euler, no gra
   CHECK(s.variantNames.empty());
   REQUIRE(s.bodies.size() == 1);
   const sim::scene::BodyDef& a = s.bodies[0];
-  CHECK(a.label == "a");
-  CHECK(a.color.empty());
   CHECK_FALSE(a.mass.has_value());
   CHECK_FALSE(a.inertia.has_value());
   CHECK_FALSE(a.density.has_value());
@@ -584,6 +580,28 @@ TEST_CASE("defaults: name from the file stem, dt 0.001, symplectic Euler, no gra
   CHECK(t.integrator == sim::core::Integrator::SymplecticEuler);
   // the stem drops the directory and .yml too
   CHECK(sim::yaml::loadSceneText(kOneBody, "some/dir/ramp.yml").name == "ramp");
+}
+
+TEST_CASE("the model reads its own keys: another layer's key is unknown unless that layer is named") {
+  const std::string text = "bodies:\n  - {name: a, shape: {circle: 1}, color: \"#112233\"}\nrender: {fps: 30}\n";
+  // the renderer reads `color` and `render`; the model alone rejects them, naming the key
+  try {
+    (void)sim::yaml::loadSceneText(text, kFile);
+    FAIL_CHECK("the scene loaded; expected a SceneError");
+  } catch (const sim::yaml::SceneError& e) {
+    CHECK(e.line == 3);
+    CHECK(e.message.find("unknown key 'render' in the scene") != std::string::npos);
+  }
+  try {
+    (void)sim::yaml::readModel(sim::yaml::sceneSourceText(text, kFile), {{"render"}, {}});
+    FAIL_CHECK("the scene loaded; expected a SceneError");
+  } catch (const sim::yaml::SceneError& e) {
+    CHECK(e.line == 2);
+    CHECK(e.message.find("unknown key 'color' in a body") != std::string::npos);
+  }
+  const sim::scene::SceneDef s =
+      sim::yaml::readModel(sim::yaml::sceneSourceText(text, kFile), {{"render"}, {"color"}});
+  CHECK(s.bodies.size() == 1);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -621,7 +639,7 @@ TEST_CASE("a variant deep-merges: maps key by key, bodies by name, other lists w
   CHECK(a.mass == 6.0);
   CHECK(a.velocity == sim::core::Vec2(4, 5));
   CHECK(a.position == sim::core::Vec2(1, 2));
-  CHECK(a.label == "first");
+  CHECK(a.friction == 0.25);
   CHECK(a.shape.kind == sim::core::ShapeKind::Polygon);
   CHECK(sim::core::areaProperties(a.shape).area == doctest::Approx(2.0));
   CHECK(s.bodies[1].name == "b");
@@ -629,7 +647,6 @@ TEST_CASE("a variant deep-merges: maps key by key, bodies by name, other lists w
   CHECK(s.bodies[2].name == "c");
   CHECK(s.bodies[2].shape.radius == 1.0);
   CHECK(s.bodies[2].position == sim::core::Vec2(7, 8));
-  CHECK(s.bodies[2].label == "c");
   // events: replaced whole
   REQUIRE(s.events.size() == 1);
   CHECK(s.events[0].time == 1.5);

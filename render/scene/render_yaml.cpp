@@ -1,14 +1,13 @@
-#include "sim/yaml/render_yaml.h"
+#include "render/scene/render_yaml.h"
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <sstream>
 
-namespace sim::yaml {
-using namespace sim::core;
-using namespace sim::world;
-using namespace sim::scene;
+namespace render::scene {
+using sim::yaml::describe;
+using sim::yaml::Reader;
 
 namespace {
 
@@ -31,18 +30,10 @@ class RenderReader {
     return c;
   }
 
-  int integer(const YAML::Node& n, const std::string& key, int lo, int hi) const {
-    const double x = r_.number(n, key);
-    if (!(x >= lo && x <= hi) || x != std::floor(x))
-      r_.fail(n, "'" + key + "' must be a whole number from " + std::to_string(lo) + " to " + std::to_string(hi) +
-                     ", got " + n.Scalar());
-    return static_cast<int>(x);
-  }
-
   void size(const YAML::Node& n, RenderDef& out) const {
     if (!n.IsSequence() || n.size() != 2) r_.fail(n, "expected [width, height] in pixels for 'size', got " + describe(n));
-    out.width = integer(n[0], "size", kMinFrameSide, kMaxFrameSide);
-    out.height = integer(n[1], "size", kMinFrameSide, kMaxFrameSide);
+    out.width = r_.wholeNumber(n[0], "size", kMinFrameSide, kMaxFrameSide);
+    out.height = r_.wholeNumber(n[1], "size", kMinFrameSide, kMaxFrameSide);
     if (out.width % 2 || out.height % 2)
       r_.fail(n, "'size' must have even sides (H.264 video halves the color planes); try [" +
                      std::to_string(out.width + out.width % 2) + ", " + std::to_string(out.height + out.height % 2) + "]");
@@ -68,29 +59,22 @@ class RenderReader {
     }
   }
 
+  // the palette, and each role's color by its key in the role table
   void colors(const YAML::Node& n, ColorsDef& out) const {
-    r_.checkKeys(n, {"palette", "static", "contact", "normal", "impulse", "velocity", "trail", "reference_edge",
-                     "incident_vertex", "spring", "text", "offset", "omega", "frame", "path", "force", "torque",
-                     "momentum", "potential", "total", "panel"},
-                 "colors");
+    sim::yaml::Keys keys = {"palette"};
+    for (const draw::RoleInfo& role : draw::kRoles)
+      if (!role.colorKey.empty() && std::find(keys.begin(), keys.end(), role.colorKey) == keys.end())
+        keys.emplace_back(role.colorKey);
+    r_.checkKeys(n, keys, "colors");
     if (const YAML::Node p = n["palette"]) {
       if (!p.IsSequence() || p.size() == 0) r_.fail(p, "'palette' must be a list of at least one \"#rrggbb\" color");
       out.palette.clear();
       for (const YAML::Node& c : p) out.palette.push_back(color(c, "palette"));
     }
-    const std::pair<const char*, std::string*> roles[] = {
-        {"static", &out.staticBody},  {"contact", &out.contact},
-        {"normal", &out.normal},      {"impulse", &out.impulse},
-        {"velocity", &out.velocity},  {"trail", &out.trail},
-        {"reference_edge", &out.referenceEdge}, {"incident_vertex", &out.incidentVertex},
-        {"spring", &out.spring},      {"text", &out.text},
-        {"offset", &out.offset},      {"omega", &out.omega},
-        {"frame", &out.frame},        {"path", &out.path},
-        {"force", &out.force},        {"torque", &out.torque},
-        {"momentum", &out.momentum},  {"potential", &out.potential},
-        {"total", &out.total},        {"panel", &out.panel}};
-    for (const auto& [key, value] : roles)
-      if (n[key]) *value = color(n[key], key);
+    for (const draw::RoleInfo& role : draw::kRoles) {
+      const std::string key(role.colorKey);
+      if (!key.empty() && n[key]) out.roles[static_cast<size_t>(role.role)] = color(n[key], key);
+    }
   }
 
  private:
@@ -99,7 +83,10 @@ class RenderReader {
 
 }  // namespace
 
-void readRender(const YAML::Node& node, const Reader& reader, RenderDef& out) {
+namespace {
+
+// the block's own keys, but for the overlays and panels read after it
+void readBlock(const YAML::Node& node, const Reader& reader, RenderDef& out) {
   reader.checkKeys(node, {"size", "fps", "background", "line_width", "font_size", "colors", "camera", "contacts",
                           "contact_hold", "impulses", "impulse_scale", "velocities", "velocity_scale", "trails", "sat",
                           "strobe", "springs", "labels", "time", "panels",
@@ -128,28 +115,21 @@ void readRender(const YAML::Node& node, const Reader& reader, RenderDef& out) {
   if (node["velocity_scale"]) out.velocityScale = reader.positive(node["velocity_scale"], "velocity_scale");
   if (node["trails"]) out.trails = reader.boolean(node["trails"], "trails");
   if (node["sat"]) out.sat = reader.boolean(node["sat"], "sat");
-  if (node["strobe"]) out.strobe = r.integer(node["strobe"], "strobe", 0, 100);
+  if (node["strobe"]) out.strobe = reader.wholeNumber(node["strobe"], "strobe", 0, 100);
   if (node["springs"]) out.springs = reader.boolean(node["springs"], "springs");
   if (node["labels"]) out.labels = reader.boolean(node["labels"], "labels");
   if (node["time"]) out.time = reader.boolean(node["time"], "time");
   readTiming(node, reader, out);
 }
 
-namespace {
-
 // the `show:` names, in the order of ArrowDef::Show
 constexpr const char* kShowNames[] = {"velocity", "offset", "omega", "frame", "path", "force", "torque", "momentum"};
 
-ArrowDef readArrow(const YAML::Node& n, const Reader& reader, const SceneDef& scene) {
+ArrowDef readArrow(const YAML::Node& n, const Reader& reader, const sim::scene::SceneDef& scene) {
   reader.checkKeys(n, {"body", "show", "at", "label", "value", "color"}, "an arrow");
   ArrowDef a;
   const YAML::Node body = reader.required(n, "body", "an arrow");
-  a.body = scene.bodyIndex(reader.text(body, "body"));
-  if (a.body < 0) {
-    std::string known;
-    for (const BodyDef& b : scene.bodies) known += (known.empty() ? "" : ", ") + b.name;
-    reader.fail(body, "no body named '" + body.Scalar() + "'; the bodies are: " + known);
-  }
+  a.body = scene.bodyIndex(reader.bodyRef(n, "body", scene, "an arrow"));
   const YAML::Node show = reader.required(n, "show", "an arrow");
   const std::string name = reader.text(show, "show");
   const auto* found = std::find(std::begin(kShowNames), std::end(kShowNames), name);
@@ -165,7 +145,7 @@ ArrowDef readArrow(const YAML::Node& n, const Reader& reader, const SceneDef& sc
 
 }  // namespace
 
-void readOverlays(const YAML::Node& node, const Reader& reader, const SceneDef& scene, OverlaysDef& out) {
+void readOverlays(const YAML::Node& node, const Reader& reader, const sim::scene::SceneDef& scene, OverlaysDef& out) {
   if (const YAML::Node arrows = node["arrows"]) {
     if (!arrows.IsSequence()) reader.fail(arrows, "'arrows' must be a list of {body, show}, got " + describe(arrows));
     out.arrows.clear();
@@ -204,4 +184,36 @@ void readPanels(const YAML::Node& node, const Reader& reader, double duration, s
   }
 }
 
-}  // namespace sim::yaml
+namespace {
+
+// each body's `color` (checked) and `label` (its name by default), in the model's order
+std::vector<BodyLook> readLooks(const YAML::Node& bodies, const RenderReader& r, const Reader& reader) {
+  std::vector<BodyLook> looks;
+  for (const YAML::Node& n : bodies) {
+    BodyLook look;
+    if (n["color"]) look.color = r.color(n["color"], "color");
+    look.label = n["label"] ? reader.text(n["label"], "label") : n["name"].Scalar();
+    looks.push_back(std::move(look));
+  }
+  return looks;
+}
+
+}  // namespace
+
+RenderDef readRender(const sim::yaml::SceneSource& source, const sim::scene::SceneDef& model) {
+  return sim::yaml::readGuarded(source.file, [&] {
+    const Reader reader(source.file);
+    const RenderReader r(reader);
+    RenderDef out;
+    out.bodies = readLooks(source.root["bodies"], r, reader);
+    const YAML::Node block = source.root[kRenderKey];
+    if (block) {
+      readBlock(block, reader, out);
+      readOverlays(block, reader, model, out.overlays);
+    }
+    readPanels(block ? block["panels"] : block, reader, model.duration, model.variantNames.size(), out.panels);
+    return out;
+  });
+}
+
+}  // namespace render::scene

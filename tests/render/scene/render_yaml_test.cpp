@@ -5,14 +5,16 @@
 #include <string>
 #include <vector>
 
+#include "support/drawn_scene.h"
 #include "support/render_block.h"
 
+using render::draw::Role;
 using render_block::expectError;
 using render_block::kBody;
 using render_block::renderOf;
 
 TEST_CASE("without a render block the documented defaults hold") {
-  const sim::scene::RenderDef r = renderOf("");
+  const render::scene::RenderDef r = renderOf("");
   CHECK(r.width == 1280);
   CHECK(r.height == 720);
   CHECK(r.fps == 60.0);
@@ -28,12 +30,12 @@ TEST_CASE("without a render block the documented defaults hold") {
   CHECK_FALSE(r.sat);
   CHECK(r.strobe == 0);
   CHECK(r.springs);
-  CHECK(r.colors.spring == "#4d4d4d");
+  CHECK(r.colors[Role::Spring] == "#4d4d4d");
   CHECK(r.colors.palette.size() == 10);
 }
 
 TEST_CASE("every key is read") {
-  const sim::scene::RenderDef r = renderOf(
+  const render::scene::RenderDef r = renderOf(
       "render:\n"
       "  size: [320, 180]\n"
       "  fps: 30\n"
@@ -62,10 +64,11 @@ TEST_CASE("every key is read") {
   CHECK(r.fontSize == 14.0);
   REQUIRE(r.colors.palette.size() == 1);
   CHECK(r.colors.palette[0] == "#112233");
-  CHECK(r.colors.staticBody == "#010203");
-  CHECK(r.colors.contact == "#aabbcc");
-  CHECK(r.colors.text == "#ffffff");
-  CHECK(r.colors.normal == "#d62728");  // untouched keys keep their defaults
+  CHECK(r.colors[Role::StaticBody] == "#010203");
+  CHECK(r.colors[Role::ContactPoint] == "#aabbcc");
+  CHECK(r.colors[Role::Label] == "#ffffff");
+  CHECK(r.colors[Role::Caption] == "#ffffff");  // both text roles take the key `text`
+  CHECK(r.colors[Role::ContactNormal] == "#d62728");  // untouched keys keep their defaults
   CHECK_FALSE(r.camera.automatic);
   CHECK(r.camera.center == sim::core::Vec2(1, 2));
   CHECK(r.camera.height == 5.0);
@@ -83,9 +86,32 @@ TEST_CASE("every key is read") {
   CHECK_FALSE(r.time);
 }
 
+TEST_CASE("each body's color and label: its own, or the palette's and its name; a variant merges them by name") {
+  const std::string text =
+      "bodies:\n"
+      "  - {name: bar, shape: {box: [1, 2]}, color: \"#3b6ea5\", label: the bar}\n"
+      "  - {name: ground, shape: {circle: 2}, static: true}\n"
+      "variants:\n"
+      "  relabeled: {bodies: [{name: ground, label: floor}]}\n";
+  const render::scene::RenderDef r = drawn_scene::load(text).render;
+  REQUIRE(r.bodies.size() == 2);
+  CHECK(r.bodies[0].color == "#3b6ea5");
+  CHECK(r.bodies[0].label == "the bar");
+  CHECK(r.bodies[1].color.empty());
+  CHECK(r.bodies[1].label == "ground");
+  CHECK(drawn_scene::load(text, "relabeled").render.bodies[1].label == "floor");
+  try {
+    (void)drawn_scene::load("bodies:\n  - {name: a, shape: {circle: 1}, color: blue}\n");
+    FAIL_CHECK("the scene loaded; expected a SceneError");
+  } catch (const sim::yaml::SceneError& e) {
+    CHECK(e.line == 2);
+    CHECK(e.message.find("\"#rrggbb\"") != std::string::npos);
+  }
+}
+
 TEST_CASE("the camera is auto, auto with a margin, or fixed") {
   CHECK(renderOf("render: {camera: auto}").camera.automatic);
-  const sim::scene::RenderDef m = renderOf("render: {camera: {margin: 0.2}}");
+  const render::scene::RenderDef m = renderOf("render: {camera: {margin: 0.2}}");
   CHECK(m.camera.automatic);
   CHECK(m.camera.margin == 0.2);
 }
@@ -95,7 +121,7 @@ TEST_CASE("variants can change the render block") {
                            "render: {size: [640, 360], trails: true}\n"
                            "variants:\n"
                            "  small: {render: {size: [320, 180]}}\n";
-  const sim::scene::RenderDef r = sim::yaml::loadSceneText(text, "inline.yaml", "small").render;
+  const render::scene::RenderDef r = drawn_scene::load(text, "small").render;
   CHECK(r.width == 320);
   CHECK(r.trails);  // merged key by key
 }
@@ -122,7 +148,7 @@ TEST_CASE("bad render values name the line and what to write") {
 
 // the lecture overlays (render.overlays)
 TEST_CASE("the lecture overlays are off by default") {
-  const sim::scene::OverlaysDef o = renderOf("").overlays;
+  const render::scene::OverlaysDef o = renderOf("").overlays;
   CHECK(o.arrows.empty());
   CHECK(o.forceScale == 0.0);
   CHECK(o.momentumScale == 0.0);
@@ -133,7 +159,7 @@ TEST_CASE("the lecture overlays are off by default") {
 }
 
 TEST_CASE("arrows name their body and what to show; the other overlay keys are read") {
-  const sim::scene::OverlaysDef o = renderOf(
+  const render::scene::OverlaysDef o = renderOf(
                                  "render:\n"
                                  "  arrows:\n"
                                  "    - {body: a, show: velocity, at: [0, 2], value: true}\n"
@@ -148,11 +174,11 @@ TEST_CASE("arrows name their body and what to show; the other overlay keys are r
                                  .overlays;
   REQUIRE(o.arrows.size() == 2);
   CHECK(o.arrows[0].body == 0);
-  CHECK(o.arrows[0].show == sim::scene::ArrowDef::Show::Velocity);
+  CHECK(o.arrows[0].show == render::scene::ArrowDef::Show::Velocity);
   CHECK(o.arrows[0].at == sim::core::Vec2(0, 2));
   CHECK(o.arrows[0].value);
   CHECK(o.arrows[0].label.empty());
-  CHECK(o.arrows[1].show == sim::scene::ArrowDef::Show::Torque);
+  CHECK(o.arrows[1].show == render::scene::ArrowDef::Show::Torque);
   CHECK(o.arrows[1].label == "tau");
   CHECK(o.arrows[1].color == "#00ff00");
   CHECK(o.arrows[1].at == sim::core::Vec2::Zero());
@@ -162,7 +188,7 @@ TEST_CASE("arrows name their body and what to show; the other overlay keys are r
   CHECK(o.energy);
   CHECK(o.momentum);
   CHECK(o.satAxes);
-  CHECK(renderOf("render: {colors: {force: '#010203'}}\n").colors.force == "#010203");
+  CHECK(renderOf("render: {colors: {force: '#010203'}}\n").colors[Role::Force] == "#010203");
 }
 
 TEST_CASE("bad arrows name the line, the column and what to write") {
@@ -191,14 +217,14 @@ TEST_CASE("panels: the duration for two or more variants, none otherwise, or the
   CHECK(renderOf("variants: {a: {}}\n").panels.times.empty());  // one variant: nothing to compare
   CHECK(renderOf(two).panels.times == std::vector<double>{3.0});
   CHECK(renderOf(two + "render: {panels: [0, 1.5, 3]}\n").panels.times == std::vector<double>{0.0, 1.5, 3.0});
-  const sim::scene::RenderDef impacts = renderOf(two + "render: {panels: impacts}\n");
+  const render::scene::RenderDef impacts = renderOf(two + "render: {panels: impacts}\n");
   CHECK(impacts.panels.impacts);
   CHECK(impacts.panels.times.empty());
   CHECK(renderOf(two + "render: {panels: []}\n").panels.times.empty());  // explicitly none
   // a variant may change them, and its duration moves the default
   const std::string text = kBody + "duration: 3\nvariants: {a: {duration: 2}, b: {render: {panels: impacts}}}\n";
-  CHECK(sim::yaml::loadSceneText(text, "inline.yaml", "a").render.panels.times == std::vector<double>{2.0});
-  CHECK(sim::yaml::loadSceneText(text, "inline.yaml", "b").render.panels.impacts);
+  CHECK(drawn_scene::load(text, "a").render.panels.times == std::vector<double>{2.0});
+  CHECK(drawn_scene::load(text, "b").render.panels.impacts);
 }
 
 TEST_CASE("bad panels name the line and what to write") {

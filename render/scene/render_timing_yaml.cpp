@@ -3,12 +3,11 @@
 #include <cctype>
 #include <sstream>
 
-#include "sim/yaml/render_yaml.h"
+#include "render/scene/render_yaml.h"
 
-namespace sim::yaml {
-using namespace sim::core;
-using namespace sim::world;
-using namespace sim::scene;
+namespace render::scene {
+using sim::yaml::describe;
+using sim::yaml::Reader;
 
 namespace {
 
@@ -73,4 +72,4 @@ void readTiming(const YAML::Node& node, const Reader& reader, RenderDef& out) {
   }
 }
 
-}  // namespace sim::yaml
+}  // namespace render::scene

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "support/drawn_scene.h"
 #include "support/render_block.h"
 
 using render_block::expectError;
@@ -11,7 +12,7 @@ using render_block::kBody;
 using render_block::renderOf;
 
 TEST_CASE("timing and text are off by default") {
-  const sim::scene::RenderDef r = renderOf("");
+  const render::scene::RenderDef r = renderOf("");
   CHECK(r.title.empty());
   CHECK(r.titleCard == 0.0);
   CHECK_FALSE(r.captionFromDescription);
@@ -20,7 +21,7 @@ TEST_CASE("timing and text are off by default") {
 }
 
 TEST_CASE("title, title_card, caption and slow_motion are read in each of their forms") {
-  const sim::scene::RenderDef r = renderOf("render: {title: Impulses, title_card: 2.5, caption: true, slow_motion: {factor: 4, window: 0.2}}");
+  const render::scene::RenderDef r = renderOf("render: {title: Impulses, title_card: 2.5, caption: true, slow_motion: {factor: 4, window: 0.2}}");
   CHECK(r.title == "Impulses");
   CHECK(r.titleCard == 2.5);
   CHECK(r.captionFromDescription);
@@ -29,7 +30,7 @@ TEST_CASE("title, title_card, caption and slow_motion are read in each of their 
   CHECK(r.slowMotion[0].factor == 4.0);
   CHECK(r.slowMotion[0].window == 0.2);
 
-  const sim::scene::RenderDef s = renderOf(
+  const render::scene::RenderDef s = renderOf(
       "render:\n"
       "  caption: \"The bar turns about its center of mass.\"\n"
       "  slow_motion: [{factor: 2, from: 0.9, to: 1.1}, {factor: 8, window: 0.1}]\n");
@@ -54,15 +55,15 @@ TEST_CASE("a variant replaces the caption and the whole slow_motion list, or tur
                            "  text: {render: {caption: \"Hello\", slow_motion: {factor: 3, from: 1, to: 2}}}\n"
                            "  off: {render: {caption: false, slow_motion: false}}\n"
                            "  empty: {render: {slow_motion: []}}\n";
-  const sim::scene::RenderDef t = sim::yaml::loadSceneText(text, "inline.yaml", "text").render;
+  const render::scene::RenderDef t = drawn_scene::load(text, "text").render;
   CHECK_FALSE(t.captionFromDescription);
   CHECK(t.caption == "Hello");
   REQUIRE(t.slowMotion.size() == 1);
   CHECK(t.slowMotion[0].factor == 3.0);
-  const sim::scene::RenderDef off = sim::yaml::loadSceneText(text, "inline.yaml", "off").render;
+  const render::scene::RenderDef off = drawn_scene::load(text, "off").render;
   CHECK_FALSE(off.captionFromDescription);
   CHECK(off.slowMotion.empty());
-  CHECK(sim::yaml::loadSceneText(text, "inline.yaml", "empty").render.slowMotion.empty());
+  CHECK(drawn_scene::load(text, "empty").render.slowMotion.empty());
 }
 
 TEST_CASE("bad timing values name the line and what to write") {

@@ -1,14 +1,16 @@
-// The `render:` block of a scene, as plain definitions (documented in scenes/README.md).
-// The simulator never reads it; the renderer does. Colors are "#rrggbb" strings, as in BodyDef.
+// How to draw a scene: the `render:` block and each body's `color` and `label`, as plain
+// definitions (documented in scenes/README.md). The simulator never sees them; colors are
+// "#rrggbb" strings.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "render/draw/roles.h"
 #include "sim/core/math.h"
 
-namespace sim::scene {
-using namespace sim::core;
+namespace render::scene {
+using sim::core::Vec2;
 
 // frame sides are even (H.264 in yuv420p halves the chroma planes) and at most this many pixels:
 // a 8192 × 8192 RGBA frame is 256 MiB, and supersampled several times that
@@ -25,31 +27,28 @@ struct CameraDef {
   double height = 0.0;           // fixed: world height the frame shows, m
 };
 
-// colors of what is not a body's own; bodies without `color` take the palette in order
+// colors of what is not a body's own (the roles' keys, render/draw/roles.h); bodies without
+// `color` take the palette in order
 struct ColorsDef {
   std::vector<std::string> palette = {"#4e79a7", "#f28e2b", "#e15759", "#76b7b2", "#59a14f",
                                       "#edc948", "#b07aa1", "#ff9da7", "#9c755f", "#bab0ac"};
-  std::string staticBody = "#8c8c8c";
-  std::string contact = "#d62728";
-  std::string normal = "#d62728";
-  std::string impulse = "#2ca02c";
-  std::string velocity = "#1f1f1f";
-  std::string trail = "#9a9a9a";
-  std::string referenceEdge = "#ff7f0e";
-  std::string incidentVertex = "#9467bd";
-  std::string spring = "#4d4d4d";
-  std::string text = "#1f1f1f";
-  // the teaching overlays (OverlaysDef)
-  std::string offset = "#7f7f7f";
-  std::string omega = "#17becf";
-  std::string frame = "#8c564b";
-  std::string path = "#e377c2";
-  std::string force = "#e6550d";
-  std::string torque = "#a55194";
-  std::string momentum = "#3182bd";
-  std::string potential = "#31a354";
-  std::string total = "#636363";
-  std::string panel = "#f2f2f2";
+  // by role, its table default unless the scene gives its key ("" for roles in their body's color)
+  std::array<std::string, draw::kRoleCount> roles = defaults();
+
+  const std::string& operator[](draw::Role role) const { return roles[static_cast<size_t>(role)]; }
+
+ private:
+  static std::array<std::string, draw::kRoleCount> defaults() {
+    std::array<std::string, draw::kRoleCount> out;
+    for (const draw::RoleInfo& r : draw::kRoles) out[static_cast<size_t>(r.role)] = r.color;
+    return out;
+  }
+};
+
+// a body's look: its own color ("#rrggbb"; empty for the palette's) and its label
+struct BodyLook {
+  std::string color;
+  std::string label;
 };
 
 // a teaching vector drawn every frame: one entry of `arrows:`
@@ -92,6 +91,7 @@ struct PanelsDef {
 };
 
 struct RenderDef {
+  std::vector<BodyLook> bodies;        // by body index of the model
   int width = 1280;                    // pixels
   int height = 720;
   double fps = 60.0;                   // frames per second of a video
@@ -122,4 +122,4 @@ struct RenderDef {
   PanelsDef panels;                    // `rigidreel lecture`'s poll panels
 };
 
-}  // namespace sim::scene
+}  // namespace render::scene

@@ -1,0 +1,34 @@
+#include "render/analysis/stability_def.h"
+
+#include "sim/yaml/scene_source.h"
+#include "sim/yaml/yaml_reader.h"
+
+namespace render::analysis {
+
+StabilityDef readStability(const sim::yaml::SceneSource& source, const sim::scene::SceneDef& model) {
+  StabilityDef d;
+  const YAML::Node n = source.root[kStabilityKey];
+  if (!n) return d;
+  return sim::yaml::readGuarded(source.file, [&] {
+    const sim::yaml::Reader r(source.file);
+    r.checkKeys(n, {"parameter", "body", "from", "to", "stack"}, "stability");
+    using Parameter = StabilityDef::Parameter;
+    if (const YAML::Node p = n["parameter"]) {
+      const std::string name = r.text(p, "parameter");
+      const auto parsed = kParameterNames.parse(name);
+      if (!parsed) r.fail(p, "unknown stability parameter '" + name + "'; choose one of: " + kParameterNames.list());
+      d.parameter = *parsed;
+    }
+    const bool needsBody = d.parameter == Parameter::Speed || d.parameter == Parameter::MassRatio;
+    if (needsBody) d.body = r.bodyRef(n, "body", model, "stability with this parameter");
+    else if (n["body"]) r.fail(n["body"], "'body' goes with the parameters speed and mass_ratio");
+    if (n["from"]) d.from = r.positive(n["from"], "from");
+    if (n["to"]) d.to = r.positive(n["to"], "to");
+    if (d.to > 0.0 && d.from > 0.0 && !(d.to > d.from)) r.fail(n["to"], "'to' must be larger than 'from'");
+    if (n["stack"]) d.stack = r.boolean(n["stack"], "stack");
+    if (d.parameter == Parameter::StackHeight) d.stack = true;
+    return d;
+  });
+}
+
+}  // namespace render::analysis

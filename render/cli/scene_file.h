@@ -1,0 +1,29 @@
+// A scene file as the command line reads it: one parse, and each layer's reader for its own keys
+// (the model by sim/yaml, the render: block and the bodies' looks by render/scene, stability: by
+// the analysis), so every key of the file is checked whatever the command needs of it.
+#pragma once
+
+#include <string>
+
+#include "render/analysis/stability_def.h"
+#include "render/scene/scene.h"
+
+namespace render::cli {
+
+struct SceneFile {
+  render::scene::Scene scene;                // the model and how to draw it
+  render::analysis::StabilityDef stability;  // what `rigidreel stability` searches
+
+  const sim::scene::SceneDef& model() const { return scene.model; }
+  sim::scene::SceneDef& model() { return scene.model; }
+  // the model with its stability: block, as the stability search takes it
+  render::analysis::Study study() const { return {scene.model, stability}; }
+};
+
+// the scene in `path` with the named variant merged in ("" for the base scene); throws
+// sim::yaml::SceneError at the fault's FILE:LINE:COL
+SceneFile readSceneFile(const std::string& path, const std::string& variant = "");
+// the same from text; `file` names it in messages
+SceneFile sceneFileText(const std::string& text, const std::string& file, const std::string& variant = "");
+
+}  // namespace render::cli

@@ -1,0 +1,65 @@
+// The renderer's drawing interface: the simulator's (sim::debug::DebugDraw) with the renderer's
+// roles. GlCanvas draws it with OpenGL; DrawList records it for tests and for afterimages. World
+// coordinates, y up.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "render/draw/roles.h"
+#include "sim/core/math.h"
+
+namespace render::draw {
+using sim::core::Vec2;
+
+class Canvas {
+ public:
+  virtual ~Canvas() = default;
+  // a closed convex polygon
+  virtual void polygon(const std::vector<Vec2>& vertices, const Pen& pen) = 0;
+  virtual void circle(const Vec2& center, double radius, const Pen& pen) = 0;
+  // the half-plane {r : n·(r − point) ≤ 0}, filled out to the edges of the view
+  virtual void halfPlane(const Vec2& point, const Vec2& normal, const Pen& pen) = 0;
+  virtual void segment(const Vec2& a, const Vec2& b, const Pen& pen) = 0;
+  virtual void point(const Vec2& p, const Pen& pen) = 0;
+  virtual void arrow(const Vec2& tail, const Vec2& head, const Pen& pen) = 0;
+  virtual void text(const Vec2& at, const std::string& text, const Pen& pen) = 0;
+};
+
+// the simulator's drawing calls onto a canvas, each role as its row of the table (Box2D's
+// b2DebugDraw, implemented by the application)
+class PhysicsDraw final : public sim::debug::DebugDraw {
+ public:
+  explicit PhysicsDraw(Canvas& canvas) : canvas_(canvas) {}
+  void polygon(const std::vector<Vec2>& v, const sim::debug::DrawStyle& s) override { canvas_.polygon(v, pen(s)); }
+  void circle(const Vec2& c, double r, const sim::debug::DrawStyle& s) override { canvas_.circle(c, r, pen(s)); }
+  void halfPlane(const Vec2& p, const Vec2& n, const sim::debug::DrawStyle& s) override { canvas_.halfPlane(p, n, pen(s)); }
+  void segment(const Vec2& a, const Vec2& b, const sim::debug::DrawStyle& s) override { canvas_.segment(a, b, pen(s)); }
+  void point(const Vec2& p, const sim::debug::DrawStyle& s) override { canvas_.point(p, pen(s)); }
+  void arrow(const Vec2& t, const Vec2& h, const sim::debug::DrawStyle& s) override { canvas_.arrow(t, h, pen(s)); }
+  void text(const Vec2& at, const std::string& t, const sim::debug::DrawStyle& s) override { canvas_.text(at, t, pen(s)); }
+
+ private:
+  static Pen pen(const sim::debug::DrawStyle& s) { return {fromPhysics(s.role), s.body, s.opacity}; }
+  Canvas& canvas_;
+};
+
+// every call into `target` whose role `keep` accepts (e.g. static bodies first)
+template <class Keep>
+class RoleFilter final : public Canvas {
+ public:
+  RoleFilter(Canvas& target, Keep keep) : target_(target), keep_(keep) {}
+  void polygon(const std::vector<Vec2>& v, const Pen& p) override { if (keep_(p.role)) target_.polygon(v, p); }
+  void circle(const Vec2& c, double r, const Pen& p) override { if (keep_(p.role)) target_.circle(c, r, p); }
+  void halfPlane(const Vec2& q, const Vec2& n, const Pen& p) override { if (keep_(p.role)) target_.halfPlane(q, n, p); }
+  void segment(const Vec2& a, const Vec2& b, const Pen& p) override { if (keep_(p.role)) target_.segment(a, b, p); }
+  void point(const Vec2& q, const Pen& p) override { if (keep_(p.role)) target_.point(q, p); }
+  void arrow(const Vec2& t, const Vec2& h, const Pen& p) override { if (keep_(p.role)) target_.arrow(t, h, p); }
+  void text(const Vec2& at, const std::string& t, const Pen& p) override { if (keep_(p.role)) target_.text(at, t, p); }
+
+ private:
+  Canvas& target_;
+  Keep keep_;
+};
+
+}  // namespace render::draw

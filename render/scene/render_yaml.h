@@ -1,0 +1,27 @@
+// How to draw a scene, read from its file's YAML tree: the `render:` block and each body's `color`
+// and `label`, every fault at FILE:LINE:COL (sim::yaml::SceneError).
+#pragma once
+
+#include "render/scene/render_def.h"
+#include "sim/scene/scene_def.h"
+#include "sim/yaml/scene_source.h"
+#include "sim/yaml/yaml_reader.h"
+
+namespace render::scene {
+
+// the keys of a scene file this reader reads: `render` at the top level, these in each body
+inline constexpr const char* kRenderKey = "render";
+inline const sim::yaml::Keys kBodyKeys = {"color", "label"};
+
+// the look of the scene in `source`, whose model (read before) is `model`
+RenderDef readRender(const sim::yaml::SceneSource& source, const sim::scene::SceneDef& model);
+
+// the block's parts, each in its own file: video timing and text (render_timing_yaml.cpp), the
+// lecture overlays, and `panels:` (`node` may be null): times within [0, duration], or `impacts`;
+// default the duration when the scene has two or more variants; asking for panels of a scene
+// without variants fails, since there is nothing to put side by side
+void readTiming(const YAML::Node& node, const sim::yaml::Reader& reader, RenderDef& out);
+void readOverlays(const YAML::Node& node, const sim::yaml::Reader& reader, const sim::scene::SceneDef& scene, OverlaysDef& out);
+void readPanels(const YAML::Node& node, const sim::yaml::Reader& reader, double duration, size_t variants, PanelsDef& out);
+
+}  // namespace render::scene

@@ -1,0 +1,35 @@
+#include "render/scene/scene_style.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace render::scene {
+using draw::Color;
+using draw::Role;
+
+draw::Style makeStyle(const Scene& scene, int frameHeight) {
+  const RenderDef& r = scene.render;
+  draw::Style s;
+  s.background = Color::parse(r.background);
+  for (const draw::RoleInfo& role : draw::kRoles)
+    if (!role.colorKey.empty()) s.roles[static_cast<size_t>(role.role)] = Color::parse(r.colors[role.role]);
+  for (const ArrowDef& a : r.overlays.arrows) s.arrows.push_back(a.color.empty() ? Color{0.0, 0.0, 0.0, 0.0} : Color::parse(a.color));
+  // the palette in order over the bodies without a color of their own (static ones are gray)
+  size_t next = 0;
+  for (size_t i = 0; i < scene.model.bodies.size(); ++i) {
+    const std::string& own = i < r.bodies.size() ? r.bodies[i].color : std::string();
+    if (!own.empty()) s.bodies.push_back(Color::parse(own));
+    else if (scene.model.bodies[i].isStatic) s.bodies.push_back(s.role(Role::StaticBody));
+    else s.bodies.push_back(Color::parse(r.colors.palette[next++ % r.colors.palette.size()]));
+  }
+  s.lineWidth = r.lineWidth;
+  s.fontSize = fontSizeFor(r, frameHeight);
+  return s;
+}
+
+int fontSizeFor(const RenderDef& r, int frameHeight) {
+  if (r.fontSize > 0) return static_cast<int>(std::lround(r.fontSize));
+  return std::max(11, static_cast<int>(std::lround(frameHeight / 36.0)));
+}
+
+}  // namespace render::scene

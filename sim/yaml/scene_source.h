@@ -1,0 +1,29 @@
+// One scene file as a YAML tree with the chosen variant merged in: what every layer's reader reads
+// its own keys from (the model here in sim/yaml, the render: block in the renderer, stability: in
+// the analysis), so that the file is parsed and merged once.
+#pragma once
+
+#include <yaml-cpp/yaml.h>
+
+#include <string>
+#include <vector>
+
+#include "sim/yaml/scene_error.h"
+
+namespace sim::yaml {
+
+struct SceneSource {
+  std::string file;                       // as given: it names the file in messages
+  std::string stem;                       // the file name without .yaml: the default scene name
+  std::string variant;                    // the variant merged in, empty for the base scene
+  std::vector<std::string> variantNames;  // every variant the file defines, in order
+  YAML::Node root;                        // a map; variants deep-merged over the base scene
+};
+
+// the scene in `path`, with the named variant deep-merged over it ("" for the base scene): maps key
+// by key, the bodies list by name, other values whole. Throws SceneError.
+SceneSource readSceneSource(const std::string& path, const std::string& variant = "");
+// the same from text; `file` names it in messages
+SceneSource sceneSourceText(const std::string& text, const std::string& file, const std::string& variant = "");
+
+}  // namespace sim::yaml
