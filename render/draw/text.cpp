@@ -61,6 +61,13 @@ TextBox TextRenderer::measure(const std::string& text, int sizePx) {
   TextBox box;
   box.ascent = static_cast<int>((m.ascender + 63) >> 6);
   box.descent = static_cast<int>((-m.descender + 63) >> 6);
+  const long pen = layOut(text, sizePx, [](const Glyph&, long) {});
+  box.width = static_cast<int>((pen + 63) >> 6);
+  return box;
+}
+
+template <class Visit>
+long TextRenderer::layOut(const std::string& text, int sizePx, Visit visit) {
   long pen = 0;
   unsigned previous = 0;
   for (char32_t c : decodeUtf8(text)) {
@@ -71,11 +78,11 @@ TextBox TextRenderer::measure(const std::string& text, int sizePx) {
       FT_Get_Kerning(ft_->face, previous, g.index, FT_KERNING_DEFAULT, &k);
       pen += k.x;
     }
+    visit(g, pen);
     pen += g.advance;
     previous = g.index;
   }
-  box.width = static_cast<int>((pen + 63) >> 6);
-  return box;
+  return pen;
 }
 
 const TextRenderer::Mask& TextRenderer::mask(const std::string& text, int sizePx, int haloPx) {
@@ -91,16 +98,7 @@ const TextRenderer::Mask& TextRenderer::mask(const std::string& text, int sizePx
   m.width = m.box.width + 2 * m.pad + sizePx;
   m.height = m.box.ascent + m.box.descent + 2 * m.pad;
   m.coverage.assign(static_cast<size_t>(m.width) * m.height, 0);
-  long pen = 0;
-  unsigned previous = 0;
-  for (char32_t c : decodeUtf8(text)) {
-    const Glyph& g = glyph(c, sizePx);
-    setSize(sizePx);
-    if (previous && FT_HAS_KERNING(ft_->face)) {
-      FT_Vector k;
-      FT_Get_Kerning(ft_->face, previous, g.index, FT_KERNING_DEFAULT, &k);
-      pen += k.x;
-    }
+  layOut(text, sizePx, [&m](const Glyph& g, long pen) {
     const int gx = m.pad + static_cast<int>(pen >> 6) + g.left, gy = m.pad + m.box.ascent - g.top;
     for (int r = 0; r < g.rows; ++r)
       for (int col = 0; col < g.width; ++col) {
@@ -109,9 +107,7 @@ const TextRenderer::Mask& TextRenderer::mask(const std::string& text, int sizePx
         uint8_t& v = m.coverage[static_cast<size_t>(my) * m.width + mx];
         v = std::max(v, g.coverage[static_cast<size_t>(r) * g.width + col]);
       }
-    pen += g.advance;
-    previous = g.index;
-  }
+  });
   if (haloPx > 0) {
     // the halo: the coverage dilated by a (2·haloPx + 1)² square, as a horizontal then a vertical
     // running maximum (separable; at 1-3 px a square looks the same as a disc)

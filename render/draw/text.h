@@ -58,6 +58,10 @@ class TextRenderer {
   using MaskKey = std::tuple<std::string, int, int>;  // text, size, halo
 
   const Glyph& glyph(char32_t code, int sizePx);
+  // each glyph of `text` in order with the pen's position before it (26.6 fixed point, kerned);
+  // returns the pen after the last glyph: the advance of the whole line
+  template <class Visit>
+  long layOut(const std::string& text, int sizePx, Visit visit);
   const Mask& mask(const std::string& text, int sizePx, int haloPx);
   void setSize(int sizePx);
 

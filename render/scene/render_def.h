@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "render/draw/roles.h"
+#include "sim/core/enum_names.h"
 #include "sim/core/math.h"
 
 namespace render::scene {
@@ -61,6 +62,18 @@ struct ArrowDef {
   bool value = false;       // the magnitude with its unit after the label
   std::string color;        // "#rrggbb"; empty: the color of `show`'s role
 };
+
+// the `show:` names
+inline constexpr sim::core::EnumNames<ArrowDef::Show, 8> kShowNames{{{
+    {ArrowDef::Show::Velocity, "velocity"},
+    {ArrowDef::Show::Offset, "offset"},
+    {ArrowDef::Show::Omega, "omega"},
+    {ArrowDef::Show::Frame, "frame"},
+    {ArrowDef::Show::Path, "path"},
+    {ArrowDef::Show::Force, "force"},
+    {ArrowDef::Show::Torque, "torque"},
+    {ArrowDef::Show::Momentum, "momentum"},
+}}};
 
 // the lecture overlays of a frame (scenes/README.md, render:), all off by default
 struct OverlaysDef {

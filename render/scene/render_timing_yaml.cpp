@@ -48,8 +48,8 @@ SlowMotionDef slowMotion(const YAML::Node& n, const Reader& r) {
 }  // namespace
 
 void readTiming(const YAML::Node& node, const Reader& reader, RenderDef& out) {
-  if (node["title"]) out.title = reader.text(node["title"], "title");
-  if (node["title_card"]) out.titleCard = reader.nonNegative(node["title_card"], "title_card");
+  reader.optional(node, "title", out.title, &Reader::text);
+  reader.optional(node, "title_card", out.titleCard, &Reader::nonNegative);
   if (const YAML::Node c = node["caption"]) {
     if (!c.IsScalar()) reader.fail(c, "expected true, false or a text for 'caption', got " + describe(c));
     // true or false; any other text (even "yes") is the caption itself

@@ -103,42 +103,34 @@ void readBlock(const YAML::Node& node, const Reader& reader, RenderDef& out) {
     if (out.fps > kMaxFps) reader.fail(n, "'fps' must be at most " + formatted(kMaxFps) + ", got " + n.Scalar());
   }
   if (node["background"]) out.background = r.color(node["background"], "background");
-  if (node["line_width"]) out.lineWidth = reader.positive(node["line_width"], "line_width");
-  if (node["font_size"]) out.fontSize = reader.positive(node["font_size"], "font_size");
+  reader.optional(node, "line_width", out.lineWidth, &Reader::positive);
+  reader.optional(node, "font_size", out.fontSize, &Reader::positive);
   if (node["colors"]) r.colors(node["colors"], out.colors);
   if (node["camera"]) r.camera(node["camera"], out.camera);
-  if (node["contacts"]) out.contacts = reader.boolean(node["contacts"], "contacts");
-  if (node["contact_hold"]) out.contactHold = reader.nonNegative(node["contact_hold"], "contact_hold");
-  if (node["impulses"]) out.impulses = reader.boolean(node["impulses"], "impulses");
-  if (node["impulse_scale"]) out.impulseScale = reader.positive(node["impulse_scale"], "impulse_scale");
-  if (node["velocities"]) out.velocities = reader.boolean(node["velocities"], "velocities");
-  if (node["velocity_scale"]) out.velocityScale = reader.positive(node["velocity_scale"], "velocity_scale");
-  if (node["trails"]) out.trails = reader.boolean(node["trails"], "trails");
-  if (node["sat"]) out.sat = reader.boolean(node["sat"], "sat");
+  reader.optional(node, "contacts", out.contacts, &Reader::boolean);
+  reader.optional(node, "contact_hold", out.contactHold, &Reader::nonNegative);
+  reader.optional(node, "impulses", out.impulses, &Reader::boolean);
+  reader.optional(node, "impulse_scale", out.impulseScale, &Reader::positive);
+  reader.optional(node, "velocities", out.velocities, &Reader::boolean);
+  reader.optional(node, "velocity_scale", out.velocityScale, &Reader::positive);
+  reader.optional(node, "trails", out.trails, &Reader::boolean);
+  reader.optional(node, "sat", out.sat, &Reader::boolean);
   if (node["strobe"]) out.strobe = reader.wholeNumber(node["strobe"], "strobe", 0, 100);
-  if (node["springs"]) out.springs = reader.boolean(node["springs"], "springs");
-  if (node["labels"]) out.labels = reader.boolean(node["labels"], "labels");
-  if (node["time"]) out.time = reader.boolean(node["time"], "time");
+  reader.optional(node, "springs", out.springs, &Reader::boolean);
+  reader.optional(node, "labels", out.labels, &Reader::boolean);
+  reader.optional(node, "time", out.time, &Reader::boolean);
   readTiming(node, reader, out);
 }
-
-// the `show:` names, in the order of ArrowDef::Show
-constexpr const char* kShowNames[] = {"velocity", "offset", "omega", "frame", "path", "force", "torque", "momentum"};
 
 ArrowDef readArrow(const YAML::Node& n, const Reader& reader, const sim::scene::SceneDef& scene) {
   reader.checkKeys(n, {"body", "show", "at", "label", "value", "color"}, "an arrow");
   ArrowDef a;
-  const YAML::Node body = reader.required(n, "body", "an arrow");
   a.body = scene.bodyIndex(reader.bodyRef(n, "body", scene, "an arrow"));
-  const YAML::Node show = reader.required(n, "show", "an arrow");
-  const std::string name = reader.text(show, "show");
-  const auto* found = std::find(std::begin(kShowNames), std::end(kShowNames), name);
-  if (found == std::end(kShowNames))
-    reader.fail(show, "unknown show '" + name + "'; choose one of: velocity, offset, omega, frame, path, force, torque, momentum");
-  a.show = static_cast<ArrowDef::Show>(found - std::begin(kShowNames));
-  if (n["at"]) a.at = reader.vec2(n["at"], "at");
-  if (n["label"]) a.label = reader.text(n["label"], "label");
-  if (n["value"]) a.value = reader.boolean(n["value"], "value");
+  a.show = reader.named(reader.required(n, "show", "an arrow"), "show",
+                        [](const std::string& s) { return kShowNames.parse(s); }, kShowNames.list());
+  reader.optional(n, "at", a.at, &Reader::vec2);
+  reader.optional(n, "label", a.label, &Reader::text);
+  reader.optional(n, "value", a.value, &Reader::boolean);
   if (n["color"]) a.color = RenderReader(reader).color(n["color"], "color");
   return a;
 }
@@ -151,12 +143,12 @@ void readOverlays(const YAML::Node& node, const Reader& reader, const sim::scene
     out.arrows.clear();
     for (const YAML::Node& a : arrows) out.arrows.push_back(readArrow(a, reader, scene));
   }
-  if (node["force_scale"]) out.forceScale = reader.positive(node["force_scale"], "force_scale");
-  if (node["momentum_scale"]) out.momentumScale = reader.positive(node["momentum_scale"], "momentum_scale");
-  if (node["impact_values"]) out.impactValues = reader.boolean(node["impact_values"], "impact_values");
-  if (node["energy"]) out.energy = reader.boolean(node["energy"], "energy");
-  if (node["momentum"]) out.momentum = reader.boolean(node["momentum"], "momentum");
-  if (node["sat_axes"]) out.satAxes = reader.boolean(node["sat_axes"], "sat_axes");
+  reader.optional(node, "force_scale", out.forceScale, &Reader::positive);
+  reader.optional(node, "momentum_scale", out.momentumScale, &Reader::positive);
+  reader.optional(node, "impact_values", out.impactValues, &Reader::boolean);
+  reader.optional(node, "energy", out.energy, &Reader::boolean);
+  reader.optional(node, "momentum", out.momentum, &Reader::boolean);
+  reader.optional(node, "sat_axes", out.satAxes, &Reader::boolean);
 }
 
 void readPanels(const YAML::Node& node, const Reader& reader, double duration, size_t variants, PanelsDef& out) {

@@ -32,13 +32,13 @@ class SceneReader : public Reader {
                          others_.scene),
               "the scene");
     s.name = root["name"] ? text(root["name"], "name") : source.stem;
-    if (root["description"]) s.description = text(root["description"], "description");
-    if (root["duration"]) s.duration = positive(root["duration"], "duration");
+    optional(root, "description", s.description, &Reader::text);
+    optional(root, "duration", s.duration, &Reader::positive);
     if (const YAML::Node w = root["world"]) {
       checkKeys(w, {"gravity", "restitution", "friction"}, "world");
-      if (w["gravity"]) s.gravity = vec2(w["gravity"], "gravity");
+      optional(w, "gravity", s.gravity, &Reader::vec2);
       if (w["restitution"]) s.restitution = restitution(w["restitution"]);
-      if (w["friction"]) s.friction = nonNegative(w["friction"], "friction");
+      optional(w, "friction", s.friction, &Reader::nonNegative);
     }
     if (const YAML::Node sim = root["sim"]) {
       checkKeys(sim, {"integrator", "dt", "collisions", "iterations", "position_iterations"}, "sim");
@@ -48,7 +48,7 @@ class SceneReader : public Reader {
       if (sim["position_iterations"]) s.positionIterations = wholeNumber(sim["position_iterations"], "position_iterations", 0, 1000);
       if (sim["integrator"])
         s.integrator = named(sim["integrator"], "integrator", integratorFromName, joined(integratorNames()));
-      if (sim["dt"]) s.dt = positive(sim["dt"], "dt");
+      optional(sim, "dt", s.dt, &Reader::positive);
     }
     const YAML::Node bodies = required(root, "bodies", "a scene");
     if (!bodies.IsSequence() || bodies.size() == 0) fail(bodies, "'bodies' must be a list of at least one body");
@@ -115,16 +115,16 @@ class SceneReader : public Reader {
     if (b.name.empty()) fail(n, "a body's name cannot be empty");
     if (s.bodyIndex(b.name) >= 0) fail(n["name"], "duplicate body name '" + b.name + "'; names must be unique");
     b.shape = readShape(required(n, "shape", "body '" + b.name + "'"));
-    if (n["density"]) b.density = positive(n["density"], "density");
-    if (n["mass"]) b.mass = positive(n["mass"], "mass");
-    if (n["inertia"]) b.inertia = positive(n["inertia"], "inertia");
-    if (n["position"]) b.position = vec2(n["position"], "position");
-    if (n["angle"]) b.angle = finite(n["angle"], "angle");
-    if (n["velocity"]) b.velocity = vec2(n["velocity"], "velocity");
-    if (n["angular_velocity"]) b.angularVelocity = finite(n["angular_velocity"], "angular_velocity");
-    if (n["static"]) b.isStatic = boolean(n["static"], "static");
+    optional(n, "density", b.density, &Reader::positive);
+    optional(n, "mass", b.mass, &Reader::positive);
+    optional(n, "inertia", b.inertia, &Reader::positive);
+    optional(n, "position", b.position, &Reader::vec2);
+    optional(n, "angle", b.angle, &Reader::finite);
+    optional(n, "velocity", b.velocity, &Reader::vec2);
+    optional(n, "angular_velocity", b.angularVelocity, &Reader::finite);
+    optional(n, "static", b.isStatic, &Reader::boolean);
     if (n["restitution"]) b.restitution = restitution(n["restitution"]);
-    if (n["friction"]) b.friction = nonNegative(n["friction"], "friction");
+    optional(n, "friction", b.friction, &Reader::nonNegative);
     if (b.shape.kind == ShapeKind::Plane) {
       // a half-plane is an obstacle: static, placed by its point
       if (n["static"] && !b.isStatic) fail(n["static"], "a plane is always static");
@@ -132,7 +132,7 @@ class SceneReader : public Reader {
         if (n[key]) fail(n[key], std::string("a plane has no '") + key + "'; place it with its 'point' and 'normal'");
       b.isStatic = true;
       const YAML::Node plane = n["shape"]["plane"];
-      if (plane["point"]) b.position = vec2(plane["point"], "point");
+      optional(plane, "point", b.position, &Reader::vec2);
     }
     if (b.isStatic && (b.velocity != Vec2::Zero() || b.angularVelocity != 0.0))
       fail(n, "static body '" + b.name + "' cannot move; remove its velocity or make it dynamic");
@@ -151,28 +151,28 @@ class SceneReader : public Reader {
       checkKeys(n, {"type", "body", "point", "anchor", "body2", "point2", "stiffness", "rest_length", "damping"}, "a spring");
       SpringDef sp;
       sp.body = bodyRef(n, "body", s, "a spring");
-      if (n["point"]) sp.point = vec2(n["point"], "point");
+      optional(n, "point", sp.point, &Reader::vec2);
       if (n["body2"]) {
         if (n["anchor"]) fail(n["anchor"], "a spring has either 'anchor' (a world point) or 'body2', not both");
         sp.body2 = bodyRef(n, "body2", s, "a spring");
         if (sp.body2 == sp.body) fail(n["body2"], "a spring needs two different bodies");
-        if (n["point2"]) sp.point2 = vec2(n["point2"], "point2");
+        optional(n, "point2", sp.point2, &Reader::vec2);
       } else {
         if (n["point2"]) fail(n["point2"], "'point2' goes with 'body2'");
         sp.anchor = vec2(required(n, "anchor", "a spring without 'body2'"), "anchor");
       }
       sp.stiffness = nonNegative(required(n, "stiffness", "a spring"), "stiffness");
-      if (n["rest_length"]) sp.restLength = nonNegative(n["rest_length"], "rest_length");
-      if (n["damping"]) sp.damping = nonNegative(n["damping"], "damping");
+      optional(n, "rest_length", sp.restLength, &Reader::nonNegative);
+      optional(n, "damping", sp.damping, &Reader::nonNegative);
       s.springs.push_back(sp);
     } else if (type == "force") {
       checkKeys(n, {"type", "body", "point", "frame", "force", "from", "until"}, "a force");
       PointForceDef f;
       f.body = bodyRef(n, "body", s, "a force");
-      if (n["point"]) f.point = vec2(n["point"], "point");
+      optional(n, "point", f.point, &Reader::vec2);
       f.force = vec2(required(n, "force", "a force"), "force");
       if (n["frame"]) f.bodyFrame = coordinateFrame(n["frame"]) == "body";
-      if (n["from"]) f.from = nonNegative(n["from"], "from");
+      optional(n, "from", f.from, &Reader::nonNegative);
       if (n["until"]) {
         f.until = finite(n["until"], "until");
         if (!(f.until > f.from)) fail(n["until"], "'until' must come after 'from'");
@@ -182,8 +182,8 @@ class SceneReader : public Reader {
       checkKeys(n, {"type", "body", "linear", "angular"}, "a drag");
       DragDef d;
       d.body = bodyRef(n, "body", s, "a drag");
-      if (n["linear"]) d.linear = nonNegative(n["linear"], "linear");
-      if (n["angular"]) d.angular = nonNegative(n["angular"], "angular");
+      optional(n, "linear", d.linear, &Reader::nonNegative);
+      optional(n, "angular", d.angular, &Reader::nonNegative);
       s.drags.push_back(d);
     } else {
       fail(n["type"], "unknown force type '" + type + "'; choose one of: spring, force, drag (gravity is set in world:)");
@@ -223,7 +223,7 @@ class SceneReader : public Reader {
     checkTime(t, e.time, s, "event");
     e.body = bodyRef(n, "body", s, "an event");
     e.impulse = vec2(required(n, "impulse", "an event"), "impulse");
-    if (n["point"]) e.point = vec2(n["point"], "point");
+    optional(n, "point", e.point, &Reader::vec2);
     if (n["frame"]) e.pointInWorld = coordinateFrame(n["frame"]) == "world";
     return e;
   }
@@ -240,16 +240,16 @@ class SceneReader : public Reader {
     if (n["body"]) e.body = bodyRef(n, "body", s, "an expect entry");
     for (const char* key : {"position", "angle", "velocity", "angular_velocity"})
       if (n[key] && e.body.empty()) fail(n[key], std::string("'") + key + "' is a body's: add 'body:'");
-    if (n["position"]) e.position = vec2(n["position"], "position");
-    if (n["angle"]) e.angle = finite(n["angle"], "angle");
-    if (n["velocity"]) e.velocity = vec2(n["velocity"], "velocity");
-    if (n["angular_velocity"]) e.angularVelocity = finite(n["angular_velocity"], "angular_velocity");
-    if (n["kinetic_energy"]) e.kineticEnergy = finite(n["kinetic_energy"], "kinetic_energy");
-    if (n["potential_energy"]) e.potentialEnergy = finite(n["potential_energy"], "potential_energy");
-    if (n["total_energy"]) e.totalEnergy = finite(n["total_energy"], "total_energy");
-    if (n["momentum"]) e.momentum = vec2(n["momentum"], "momentum");
-    if (n["angular_momentum"]) e.angularMomentum = finite(n["angular_momentum"], "angular_momentum");
-    if (n["tolerance"]) e.tolerance = positive(n["tolerance"], "tolerance");
+    optional(n, "position", e.position, &Reader::vec2);
+    optional(n, "angle", e.angle, &Reader::finite);
+    optional(n, "velocity", e.velocity, &Reader::vec2);
+    optional(n, "angular_velocity", e.angularVelocity, &Reader::finite);
+    optional(n, "kinetic_energy", e.kineticEnergy, &Reader::finite);
+    optional(n, "potential_energy", e.potentialEnergy, &Reader::finite);
+    optional(n, "total_energy", e.totalEnergy, &Reader::finite);
+    optional(n, "momentum", e.momentum, &Reader::vec2);
+    optional(n, "angular_momentum", e.angularMomentum, &Reader::finite);
+    optional(n, "tolerance", e.tolerance, &Reader::positive);
     return e;
   }
 

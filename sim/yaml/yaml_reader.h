@@ -137,6 +137,14 @@ class Reader {
     fail(n, "expected true or false for '" + key + "', got " + describe(n));
   }
 
+  // out = read(map[key], key) when the map has `key`: every optional key reads this way, e.g.
+  // optional(body, "mass", def.mass, &Reader::positive)
+  template <class T, class Value>
+  void optional(const YAML::Node& map, const std::string& key, T& out,
+                Value (Reader::*read)(const YAML::Node&, const std::string&) const) const {
+    if (const YAML::Node n = map[key]) out = (this->*read)(n, key);
+  }
+
   // the value under `key`, which must be present
   YAML::Node required(const YAML::Node& map, const std::string& key, const std::string& what) const {
     const YAML::Node n = map[key];

@@ -44,11 +44,22 @@ TEST_CASE("drawn text darkens pixels only around its anchor, over a halo") {
   CHECK(outside == 0);
 }
 
-TEST_CASE("text at the edge is clipped, not a crash") {
+TEST_CASE("text over the edge is clipped to the image: the part inside is drawn, the rest dropped") {
   render::draw::TextRenderer text;
-  Image image(10, 10);
-  text.draw(image, "clipped text", -5, -5, Anchor::TopLeft, 30, {0, 0, 0, 1}, {1, 1, 1, 1}, 3);
-  text.draw(image, "far away", 1000, 1000, Anchor::Center, 30, {0, 0, 0, 1}, {1, 1, 1, 1}, 3);
+  const Color black{0.0, 0.0, 0.0, 1.0}, white{1.0, 1.0, 1.0, 1.0};
+  // 30 px letters from 5 px above and left of the corner: the first letter's lower right is inside
+  Image image(10, 10, white);
+  text.draw(image, "clipped text", -5, -5, Anchor::TopLeft, 30, black, white, 3);
+  int dark = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) dark += image.pixel(x, y)[0] < 128;
+  CHECK(dark > 0);
+  CHECK(dark < image.width * image.height);
+  // wholly outside: nothing changes (and nothing is written past the buffer; ASan runs this too)
+  Image untouched(10, 10, white);
+  text.draw(untouched, "far away", 1000, 1000, Anchor::Center, 30, black, white, 3);
+  text.draw(untouched, "far away", -1000, -1000, Anchor::Center, 30, black, white, 3);
+  CHECK(untouched == Image(10, 10, white));
 }
 
 TEST_CASE("a missing font is an error that names it") {
