@@ -1,0 +1,37 @@
+#include "sim/world3d/diagnostics.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sim::world3d {
+
+KineticEnergy kineticEnergy(const Body& b) {
+  return {0.5 * b.mass * b.v.squaredNorm(), 0.5 * b.omega.dot(b.angularMomentum())};
+}
+
+Energy energy(const World& world) {
+  Energy e;
+  for (const Body& b : world.bodies) e.kinetic += kineticEnergy(b).total();
+  e.potential = world.forces.potentialEnergy(world.bodies);
+  return e;
+}
+
+Vec3 linearMomentum(const World& world) {
+  Vec3 p = Vec3::Zero();
+  for (const Body& b : world.bodies) p += b.mass * b.v;
+  return p;
+}
+
+Vec3 angularMomentum(const World& world) {
+  Vec3 l = Vec3::Zero();
+  for (const Body& b : world.bodies) l += b.x.cross(b.mass * b.v) + b.angularMomentum();
+  return l;
+}
+
+double quaternionDrift(const World& world) {
+  double drift = 0.0;
+  for (const Body& b : world.bodies) drift = std::max(drift, std::abs(b.q.norm() - 1.0));
+  return drift;
+}
+
+}  // namespace sim::world3d
