@@ -31,29 +31,64 @@
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
 struct RunOptions {
   int steps = 600;
   int every = 0;                  // print the measures every this many steps (0: only at the end)
+  int sample = 10;                // over the second half, measure every this many steps (untimed)
   bool box2dOuterSkin = true;     // Box2D boxes as wide as ours (see the top of the file)
   bool box2dContinuous = false;   // Box2D's time of impact against static bodies (rigidreel has none)
-  bool box2dWarmStarting = true;
+};
+
+// one engine holding one layout: step it, read the boxes back (in layout order)
+class StackRun {
+ public:
+  virtual ~StackRun() = default;
+  virtual void advance(int steps) = 0;  // throws on divergence
+  virtual std::vector<bench::BodyEnd> ends() const = 0;
 };
 
 struct RunResult {
-  bench::StackMetrics metrics;
+  bench::StackMetrics metrics;      // at the end
+  double worstTop = 0.0;            // the largest top displacement over the second half
+  double worstSpeed = 0.0;          // the fastest body over the second half
   double msPerStep = 0.0;
   bool diverged = false;
 };
 
-void printTrace(const char* engine, const bench::StackLayout& layout, int step, const std::vector<bench::BodyEnd>& end) {
-  const bench::StackMetrics m = bench::measure(layout, end);
-  std::printf("  %-7s step %4d: top %.4f m, max |x - rest x| %.4f m, fastest %.4f m/s, moved %d\n", engine, step,
-              m.topDisplacement, m.maxOffRestX, m.fastestSpeed, m.moved);
+// run `steps` steps, timing only the stepping; the second half is sampled for its worst values
+RunResult run(StackRun& engine, const char* name, const bench::StackLayout& layout, const RunOptions& o) {
+  using Clock = std::chrono::steady_clock;
+  RunResult r;
+  double seconds = 0.0;
+  const int half = o.steps / 2;
+  try {
+    for (int done = 0; done < o.steps;) {
+      int next = o.steps;
+      if (o.every > 0) next = std::min(next, (done / o.every + 1) * o.every);
+      if (done >= half) next = std::min(next, done + o.sample);
+      else next = std::min(next, half);
+      const auto start = Clock::now();
+      engine.advance(next - done);
+      seconds += std::chrono::duration<double>(Clock::now() - start).count();
+      done = next;
+      const std::vector<bench::BodyEnd> end = engine.ends();
+      const bench::StackMetrics m = bench::measure(layout, end);
+      if (done >= half) r.worstTop = std::max(r.worstTop, m.topDisplacement), r.worstSpeed = std::max(r.worstSpeed, m.fastestSpeed);
+      if (o.every > 0 && done % o.every == 0)
+        std::printf("  %-7s step %4d: top %.4f m, max |x - rest x| %.4f m, fastest %.4f m/s, moved %d\n", name, done,
+                    m.topDisplacement, m.maxOffRestX, m.fastestSpeed, m.moved);
+    }
+  } catch (const std::exception&) {
+    r.diverged = true;
+  }
+  const std::vector<bench::BodyEnd> end = engine.ends();
+  r.metrics = bench::measure(layout, end);
+  for (const bench::BodyEnd& e : end) r.diverged |= !std::isfinite(e.x) || !std::isfinite(e.y);
+  r.msPerStep = 1000.0 * seconds / o.steps;
+  return r;
 }
 
-// --- rigidreel, through a scene definition ---
+// --- rigidreel, through a scene definition and World's public members ---
 
 sim::scene::SceneDef sceneOf(const bench::StackLayout& layout, const bench::StackSettings& s) {
   sim::scene::SceneDef def;
@@ -83,104 +118,90 @@ sim::scene::SceneDef sceneOf(const bench::StackLayout& layout, const bench::Stac
   return def;
 }
 
-std::vector<bench::BodyEnd> endsOf(const sim::world::World& world) {
-  std::vector<bench::BodyEnd> end;
-  for (size_t i = 1; i < world.bodies.size(); ++i) {  // body 0 is the ground
-    const sim::core::Body& b = world.bodies[i];
-    end.push_back({b.x.x(), b.x.y(), b.v.x(), b.v.y(), b.omega});
+class OurRun : public StackRun {
+ public:
+  OurRun(const bench::StackLayout& layout, const bench::StackSettings& s)
+      : world_(sim::scene::buildWorld(sceneOf(layout, s))), dt_(s.dt) {
+    world_.start();
   }
-  return end;
-}
-
-RunResult runOurs(const bench::StackLayout& layout, const bench::StackSettings& s, const RunOptions& o) {
-  const sim::scene::SceneDef def = sceneOf(layout, s);
-  sim::world::World world = sim::scene::buildWorld(def);
-  world.start();
-  RunResult r;
-  double seconds = 0.0;
-  try {
-    for (int done = 0; done < o.steps;) {
-      const int chunk = o.every > 0 ? std::min(o.every, o.steps - done) : o.steps;
-      const auto start = Clock::now();
-      world.advanceTo((done + chunk) * s.dt);
-      seconds += std::chrono::duration<double>(Clock::now() - start).count();
-      done += chunk;
-      if (o.every > 0) printTrace("ours", layout, done, endsOf(world));
+  void advance(int steps) override {
+    steps_ += steps;
+    world_.advanceTo(steps_ * dt_);
+  }
+  std::vector<bench::BodyEnd> ends() const override {
+    std::vector<bench::BodyEnd> end;
+    for (size_t i = 1; i < world_.bodies.size(); ++i) {  // body 0 is the ground
+      const sim::core::Body& b = world_.bodies[i];
+      end.push_back({b.x.x(), b.x.y(), b.v.x(), b.v.y(), b.omega});
     }
-  } catch (const sim::world::Diverged&) {
-    r.diverged = true;
+    return end;
   }
-  r.msPerStep = 1000.0 * seconds / o.steps;
-  r.metrics = bench::measure(layout, endsOf(world));
-  return r;
-}
+
+ private:
+  sim::world::World world_;
+  double dt_;
+  long steps_ = 0;
+};
 
 // --- Box2D 2.4 ---
 
-std::vector<bench::BodyEnd> endsOf(const std::vector<b2Body*>& boxes) {
-  std::vector<bench::BodyEnd> end;
-  for (const b2Body* b : boxes) {
-    const b2Vec2 p = b->GetPosition(), v = b->GetLinearVelocity();
-    end.push_back({p.x, p.y, v.x, v.y, b->GetAngularVelocity()});
+class Box2dRun : public StackRun {
+ public:
+  Box2dRun(const bench::StackLayout& layout, const bench::StackSettings& s, const RunOptions& o)
+      : world_(b2Vec2(0.0f, static_cast<float>(s.gravity))), settings_(s) {
+    world_.SetAllowSleeping(false);
+    world_.SetContinuousPhysics(o.box2dContinuous);
+    // the rounding radius every Box2D polygon carries; taken off the core so the outer box is ours
+    const float skin = o.box2dOuterSkin ? b2_polygonRadius : 0.0f;
+
+    b2BodyDef groundDef;
+    groundDef.position.Set(static_cast<float>(layout.groundCenterX), -0.5f);
+    b2Body* ground = world_.CreateBody(&groundDef);
+    b2PolygonShape groundShape;
+    groundShape.SetAsBox(static_cast<float>(layout.groundHalfWidth) - skin, 0.5f - skin);
+    b2FixtureDef groundFixture;
+    groundFixture.shape = &groundShape;
+    groundFixture.friction = static_cast<float>(s.friction);
+    groundFixture.restitution = static_cast<float>(s.restitution);
+    ground->CreateFixture(&groundFixture);
+
+    const float half = 0.5f * static_cast<float>(layout.boxSize);
+    b2PolygonShape boxShape;
+    boxShape.SetAsBox(half - skin, half - skin);
+    b2FixtureDef boxFixture;
+    boxFixture.shape = &boxShape;
+    boxFixture.density = static_cast<float>(s.density);
+    boxFixture.friction = static_cast<float>(s.friction);
+    boxFixture.restitution = static_cast<float>(s.restitution);
+    // bodies made in the same order as rigidreel's (bottom row first): Box2D's islands, and so the
+    // order its solver visits contacts in, follow creation order
+    for (const bench::BoxPlacement& p : layout.boxes) {
+      b2BodyDef bd;
+      bd.type = b2_dynamicBody;
+      bd.position.Set(static_cast<float>(p.x), static_cast<float>(p.y));
+      b2Body* body = world_.CreateBody(&bd);
+      body->CreateFixture(&boxFixture);
+      boxes_.push_back(body);
+    }
   }
-  return end;
-}
-
-RunResult runBox2d(const bench::StackLayout& layout, const bench::StackSettings& s, const RunOptions& o) {
-  b2World world(b2Vec2(0.0f, static_cast<float>(s.gravity)));
-  world.SetAllowSleeping(false);
-  world.SetContinuousPhysics(o.box2dContinuous);
-  world.SetWarmStarting(o.box2dWarmStarting);
-  // the rounding radius every Box2D polygon carries; taken off the core so the outer box is ours
-  const float skin = o.box2dOuterSkin ? b2_polygonRadius : 0.0f;
-
-  b2BodyDef groundDef;
-  groundDef.position.Set(static_cast<float>(layout.groundCenterX), -0.5f);
-  b2Body* ground = world.CreateBody(&groundDef);
-  b2PolygonShape groundShape;
-  groundShape.SetAsBox(static_cast<float>(layout.groundHalfWidth) - skin, 0.5f - skin);
-  b2FixtureDef groundFixture;
-  groundFixture.shape = &groundShape;
-  groundFixture.friction = static_cast<float>(s.friction);
-  groundFixture.restitution = static_cast<float>(s.restitution);
-  ground->CreateFixture(&groundFixture);
-
-  const float half = 0.5f * static_cast<float>(layout.boxSize);
-  b2PolygonShape boxShape;
-  boxShape.SetAsBox(half - skin, half - skin);
-  b2FixtureDef boxFixture;
-  boxFixture.shape = &boxShape;
-  boxFixture.density = static_cast<float>(s.density);
-  boxFixture.friction = static_cast<float>(s.friction);
-  boxFixture.restitution = static_cast<float>(s.restitution);
-  // bodies made in the same order as rigidreel's (bottom row first): Box2D's islands, and so the
-  // order its solver visits contacts in, follow creation order
-  std::vector<b2Body*> boxes;
-  for (const bench::BoxPlacement& p : layout.boxes) {
-    b2BodyDef bd;
-    bd.type = b2_dynamicBody;
-    bd.position.Set(static_cast<float>(p.x), static_cast<float>(p.y));
-    b2Body* body = world.CreateBody(&bd);
-    body->CreateFixture(&boxFixture);
-    boxes.push_back(body);
+  void advance(int steps) override {
+    for (int k = 0; k < steps; ++k)
+      world_.Step(static_cast<float>(settings_.dt), settings_.velocityIterations, settings_.positionIterations);
+  }
+  std::vector<bench::BodyEnd> ends() const override {
+    std::vector<bench::BodyEnd> end;
+    for (const b2Body* b : boxes_) {
+      const b2Vec2 p = b->GetPosition(), v = b->GetLinearVelocity();
+      end.push_back({p.x, p.y, v.x, v.y, b->GetAngularVelocity()});
+    }
+    return end;
   }
 
-  RunResult r;
-  double seconds = 0.0;
-  for (int done = 0; done < o.steps;) {
-    const int chunk = o.every > 0 ? std::min(o.every, o.steps - done) : o.steps;
-    const auto start = Clock::now();
-    for (int k = 0; k < chunk; ++k)
-      world.Step(static_cast<float>(s.dt), s.velocityIterations, s.positionIterations);
-    seconds += std::chrono::duration<double>(Clock::now() - start).count();
-    done += chunk;
-    if (o.every > 0) printTrace("box2d", layout, done, endsOf(boxes));
-  }
-  r.msPerStep = 1000.0 * seconds / o.steps;
-  r.metrics = bench::measure(layout, endsOf(boxes));
-  for (const bench::BodyEnd& e : endsOf(boxes)) r.diverged |= !std::isfinite(e.x) || !std::isfinite(e.y);
-  return r;
-}
+ private:
+  b2World world_;
+  bench::StackSettings settings_;
+  std::vector<b2Body*> boxes_;
+};
 
 // "pyramid:100:touching", "pyramid:20:dropped", "stack:10"
 std::optional<bench::StackLayout> parseLayout(const std::string& spec) {
@@ -224,15 +245,19 @@ int main(int argc, char** argv) {
   if (!csvPath.empty()) {
     const bool fresh = !std::ifstream(csvPath).good();
     csv.open(csvPath, std::ios::app);
-    if (fresh) csv << "layout,engine,boxes,steps,velocity_iterations,position_iterations,ms_per_step,top_displacement_m,max_off_rest_x_m,fastest_m_per_s,fastest_rad_per_s,moved,diverged\n";
+    if (fresh)
+      csv << "layout,engine,boxes,steps,velocity_iterations,position_iterations,ms_per_step,top_displacement_m,"
+             "max_off_rest_x_m,fastest_m_per_s,fastest_rad_per_s,moved,worst_top_second_half_m,"
+             "worst_fastest_second_half_m_per_s,diverged\n";
   }
   std::printf("gravity %g, dt %.6g, %d velocity and %d position iterations, friction %g, restitution %g, %d steps; "
-              "Box2D %d.%d.%d, skin %s, continuous %s, sleeping off\n",
+              "Box2D (b2_version %d.%d.%d), skin %s, continuous %s, sleeping off\n",
               settings.gravity, settings.dt, settings.velocityIterations, settings.positionIterations, settings.friction,
               settings.restitution, options.steps, b2_version.major, b2_version.minor, b2_version.revision, skin.c_str(),
               options.box2dContinuous ? "on" : "off");
-  std::printf("%-22s %-6s %6s %10s %10s %14s %12s %10s %6s\n", "layout", "engine", "boxes", "ms/step", "top (m)",
-              "|x-rest x| (m)", "fastest m/s", "|w| rad/s", "moved");
+  // at the end (10 s at 600 steps), and the worst over the second half, sampled every 10 steps
+  std::printf("%-22s %-6s %6s %9s %9s %13s %11s %9s %6s %12s %12s\n", "layout", "engine", "boxes", "ms/step", "top m",
+              "|x-rest x| m", "fastest m/s", "|w| rad/s", "moved", "worst top m", "worst m/s");
   int status = 0;
   for (const std::string& spec : layoutSpecs) {
     const std::optional<bench::StackLayout> layout = parseLayout(spec);
@@ -243,18 +268,24 @@ int main(int argc, char** argv) {
     std::optional<RunResult> ours, peer;
     auto row = [&](const char* name, const RunResult& r) {
       const bench::StackMetrics& m = r.metrics;
-      std::printf("%-22s %-6s %6zu %10.3f %10.4f %14.4f %12.4f %10.4f %6d%s\n", layout->name.c_str(), name,
+      std::printf("%-22s %-6s %6zu %9.3f %9.4f %13.4f %11.4f %9.4f %6d %12.4f %12.4f%s\n", layout->name.c_str(), name,
                   layout->boxes.size(), r.msPerStep, m.topDisplacement, m.maxOffRestX, m.fastestSpeed, m.fastestSpin,
-                  m.moved, r.diverged ? "  DIVERGED" : "");
+                  m.moved, r.worstTop, r.worstSpeed, r.diverged ? "  DIVERGED" : "");
       if (csv.is_open())
         csv << layout->name << ',' << name << ',' << layout->boxes.size() << ',' << options.steps << ','
             << settings.velocityIterations << ',' << settings.positionIterations << ',' << r.msPerStep << ','
             << m.topDisplacement << ',' << m.maxOffRestX << ',' << m.fastestSpeed << ',' << m.fastestSpin << ','
-            << m.moved << ',' << r.diverged << '\n';
+            << m.moved << ',' << r.worstTop << ',' << r.worstSpeed << ',' << r.diverged << '\n';
       std::fflush(stdout);
     };
-    if (engine != "box2d") row("ours", *(ours = runOurs(*layout, settings, options)));
-    if (engine != "ours") row("box2d", *(peer = runBox2d(*layout, settings, options)));
+    if (engine != "box2d") {
+      OurRun e(*layout, settings);
+      row("ours", *(ours = run(e, "ours", *layout, options)));
+    }
+    if (engine != "ours") {
+      Box2dRun e(*layout, settings, options);
+      row("box2d", *(peer = run(e, "box2d", *layout, options)));
+    }
     if (ours && peer)
       std::printf("%-22s ratio  ours/box2d time per step %.2f\n", layout->name.c_str(), ours->msPerStep / peer->msPerStep);
     status |= (ours && ours->diverged) || (peer && peer->diverged);
