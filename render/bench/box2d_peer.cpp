@@ -19,6 +19,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <fstream>
 #include <iostream>
 #include <optional>
@@ -51,15 +52,22 @@ struct RunResult {
   bench::StackMetrics metrics;      // at the end
   double worstTop = 0.0;            // the largest top displacement over the second half
   double worstSpeed = 0.0;          // the fastest body over the second half
-  double msPerStep = 0.0;
+  double msPerStep = 0.0;     // wall time
+  double cpuMsPerStep = 0.0;  // this thread's processor time: what a busy shared machine changes least
   bool diverged = false;
 };
+
+double threadCpuSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
 
 // run `steps` steps, timing only the stepping; the second half is sampled for its worst values
 RunResult run(StackRun& engine, const char* name, const bench::StackLayout& layout, const RunOptions& o) {
   using Clock = std::chrono::steady_clock;
   RunResult r;
-  double seconds = 0.0;
+  double seconds = 0.0, cpuSeconds = 0.0;
   const int half = o.steps / 2;
   try {
     for (int done = 0; done < o.steps;) {
@@ -68,7 +76,9 @@ RunResult run(StackRun& engine, const char* name, const bench::StackLayout& layo
       if (done >= half) next = std::min(next, done + o.sample);
       else next = std::min(next, half);
       const auto start = Clock::now();
+      const double cpuStart = threadCpuSeconds();
       engine.advance(next - done);
+      cpuSeconds += threadCpuSeconds() - cpuStart;
       seconds += std::chrono::duration<double>(Clock::now() - start).count();
       done = next;
       const std::vector<bench::BodyEnd> end = engine.ends();
@@ -85,6 +95,7 @@ RunResult run(StackRun& engine, const char* name, const bench::StackLayout& layo
   r.metrics = bench::measure(layout, end);
   for (const bench::BodyEnd& e : end) r.diverged |= !std::isfinite(e.x) || !std::isfinite(e.y);
   r.msPerStep = 1000.0 * seconds / o.steps;
+  r.cpuMsPerStep = 1000.0 * cpuSeconds / o.steps;
   return r;
 }
 
@@ -248,7 +259,7 @@ int main(int argc, char** argv) {
     if (fresh)
       csv << "layout,engine,boxes,steps,velocity_iterations,position_iterations,ms_per_step,top_displacement_m,"
              "max_off_rest_x_m,fastest_m_per_s,fastest_rad_per_s,moved,worst_top_second_half_m,"
-             "worst_fastest_second_half_m_per_s,diverged\n";
+             "worst_fastest_second_half_m_per_s,diverged,cpu_ms_per_step\n";
   }
   std::printf("gravity %g, dt %.6g, %d velocity and %d position iterations, friction %g, restitution %g, %d steps; "
               "Box2D (b2_version %d.%d.%d), skin %s, continuous %s, sleeping off\n",
@@ -256,7 +267,7 @@ int main(int argc, char** argv) {
               settings.restitution, options.steps, b2_version.major, b2_version.minor, b2_version.revision, skin.c_str(),
               options.box2dContinuous ? "on" : "off");
   // at the end (10 s at 600 steps), and the worst over the second half, sampled every 10 steps
-  std::printf("%-22s %-6s %6s %9s %9s %13s %11s %9s %6s %12s %12s\n", "layout", "engine", "boxes", "ms/step", "top m",
+  std::printf("%-22s %-6s %6s %9s %9s %9s %13s %11s %9s %6s %12s %12s\n", "layout", "engine", "boxes", "ms/step", "cpu ms", "top m",
               "|x-rest x| m", "fastest m/s", "|w| rad/s", "moved", "worst top m", "worst m/s");
   int status = 0;
   for (const std::string& spec : layoutSpecs) {
@@ -268,14 +279,14 @@ int main(int argc, char** argv) {
     std::optional<RunResult> ours, peer;
     auto row = [&](const char* name, const RunResult& r) {
       const bench::StackMetrics& m = r.metrics;
-      std::printf("%-22s %-6s %6zu %9.3f %9.4f %13.4f %11.4f %9.4f %6d %12.4f %12.4f%s\n", layout->name.c_str(), name,
-                  layout->boxes.size(), r.msPerStep, m.topDisplacement, m.maxOffRestX, m.fastestSpeed, m.fastestSpin,
+      std::printf("%-22s %-6s %6zu %9.3f %9.3f %9.4f %13.4f %11.4f %9.4f %6d %12.4f %12.4f%s\n", layout->name.c_str(), name,
+                  layout->boxes.size(), r.msPerStep, r.cpuMsPerStep, m.topDisplacement, m.maxOffRestX, m.fastestSpeed, m.fastestSpin,
                   m.moved, r.worstTop, r.worstSpeed, r.diverged ? "  DIVERGED" : "");
       if (csv.is_open())
         csv << layout->name << ',' << name << ',' << layout->boxes.size() << ',' << options.steps << ','
             << settings.velocityIterations << ',' << settings.positionIterations << ',' << r.msPerStep << ','
             << m.topDisplacement << ',' << m.maxOffRestX << ',' << m.fastestSpeed << ',' << m.fastestSpin << ','
-            << m.moved << ',' << r.worstTop << ',' << r.worstSpeed << ',' << r.diverged << '\n';
+            << m.moved << ',' << r.worstTop << ',' << r.worstSpeed << ',' << r.diverged << ',' << r.cpuMsPerStep << '\n';
       std::fflush(stdout);
     };
     if (engine != "box2d") {
@@ -287,7 +298,8 @@ int main(int argc, char** argv) {
       row("box2d", *(peer = run(e, "box2d", *layout, options)));
     }
     if (ours && peer)
-      std::printf("%-22s ratio  ours/box2d time per step %.2f\n", layout->name.c_str(), ours->msPerStep / peer->msPerStep);
+      std::printf("%-22s ratio  ours/box2d time per step %.2f (wall), %.2f (cpu)\n", layout->name.c_str(),
+                  ours->msPerStep / peer->msPerStep, ours->cpuMsPerStep / peer->cpuMsPerStep);
     status |= (ours && ours->diverged) || (peer && peer->diverged);
   }
   return status;
