@@ -418,6 +418,29 @@ TEST_CASE("a box lying flat on a bigger box: two points, normal from B up to A, 
   CHECK(rightmost(swapped).separation == doctest::Approx(-depth).epsilon(1e-12));
 }
 
+TEST_CASE("two equal boxes as in a pyramid: the ids stay when the reference edge passes from one box to the other") {
+  // A rests on B half a box to the right, 5 mm deep. Turned a little clockwise, A's bottom edge is
+  // the reference; turned counter-clockwise, the line of A's bottom edge cuts deep under B's far
+  // corner, and B's top edge is the reference. Either way the same two features make the points:
+  // A's bottom-left corner on B's top edge (left) and B's top-right corner on A's bottom edge
+  // (right). Equal boxes face to face pass between the two cases from step to step; a changed id
+  // would lose the point's warm start.
+  const sim::core::Shape box = sim::core::makeBox(1.0, 1.0);
+  const double depth = 0.005, turn = 0.004;
+  const sim::collision::Manifold onB = sim::collision::collide(box, pose(0.5625, 1.0 - depth, turn), box, pose(0, 0), kMargin);
+  const sim::collision::Manifold onA = sim::collision::collide(box, pose(0.5625, 1.0 - depth, -turn), box, pose(0, 0), kMargin);
+  REQUIRE(onB.count == 2);
+  REQUIRE(onA.count == 2);
+  // the normal is the reference edge's: B's top edge (not turned), or A's bottom edge (turned)
+  CHECK(onB.normal.x() == 0.0);
+  CHECK(onA.normal.x() == doctest::Approx(std::sin(turn)).epsilon(1e-9));
+  CHECK(leftmost(onB).point.x() == doctest::Approx(0.0625).epsilon(0.05));
+  CHECK(rightmost(onB).point.x() == doctest::Approx(0.5).epsilon(0.01));
+  CHECK(leftmost(onA).id == leftmost(onB).id);
+  CHECK(rightmost(onA).id == rightmost(onB).id);
+  CHECK(leftmost(onB).id != rightmost(onB).id);
+}
+
 TEST_CASE("a wide box on a narrow one: the points are at the narrow box's corners") {
   const sim::core::Shape wide = sim::core::makeBox(3.0, 0.5), narrow = sim::core::makeBox(1.0, 1.0);
   const sim::collision::Manifold m = sim::collision::collide(wide, pose(0.2, 0.5 + 0.25 - 0.004), narrow, pose(0, 0), kMargin);
