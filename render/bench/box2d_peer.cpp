@@ -1,8 +1,8 @@
 // rigidreel_box2d_peer: the same stack layouts (stack_layouts.h) run through rigidreel's World and
 // through Box2D 2.4 (Debian's libbox2d-dev) with the same settings, in one run, and measured the
-// same way: the top box's displacement, the bulge |x − rest x|, the fastest body at the end, and
-// the wall time per step. Timings are never asserted; ratios are taken within one run, since the
-// machines are shared and noisy.
+// same way: the top box's displacement, the bulge |x − rest x|, the fastest body at the end and the
+// worst of both over the second half, and the wall and processor time per step. Timings are never
+// asserted; ratios are taken within one run, since the machines are shared and noisy.
 //
 // rigidreel is reached only through scene definitions and World's public members (bodies,
 // advanceTo), so the program does not depend on how World is organised inside.
@@ -49,11 +49,11 @@ class StackRun {
 };
 
 struct RunResult {
-  bench::StackMetrics metrics;      // at the end
-  double worstTop = 0.0;            // the largest top displacement over the second half
-  double worstSpeed = 0.0;          // the fastest body over the second half
-  double msPerStep = 0.0;     // wall time
-  double cpuMsPerStep = 0.0;  // this thread's processor time: what a busy shared machine changes least
+  bench::StackMetrics metrics;  // at the end
+  double worstTop = 0.0;        // the largest top displacement over the second half
+  double worstSpeed = 0.0;      // the fastest body over the second half
+  double msPerStep = 0.0;       // wall time
+  double cpuMsPerStep = 0.0;    // this thread's processor time: what a busy shared machine changes least
   bool diverged = false;
 };
 
