@@ -19,23 +19,12 @@ using render::video::RenderPlan;
 
 namespace {
 
-// a ball that bounces off a wall at t = 0.5, in two variants
-const char* const kLesson = R"(
-name: lesson
-duration: 1
-world: {restitution: 1}
-sim: {collisions: event}
-bodies:
-  - {name: ball, shape: {circle: 0.25}, position: [0, 0], velocity: [1, 0]}
-  - {name: wall, shape: {box: [0.2, 2]}, position: [0.85, 0], static: true}
-render: {title_card: 0.2, slow_motion: {factor: 2, window: 0.2}, panels: impacts}
-variants:
-  slow: {}
-  fast: {bodies: [{name: ball, velocity: [2, 0]}]}
-)";
-
+// a ball that bounces off a wall at t = 0.5, in two variants, with poll panels at the impacts
 render::video::LoadVariant lesson() {
-  return [](const std::string& variant) { return drawn_scene::load(kLesson, variant, "lesson.yaml"); };
+  const std::string yaml = drawn_scene::bounce("1",
+                                               "render: {title_card: 0.2, slow_motion: {factor: 2, window: 0.2}, panels: impacts}\n"
+                                               "variants:\n  slow: {}\n  fast: {bodies: [{name: ball, velocity: [2, 0]}]}\n");
+  return [yaml](const std::string& variant) { return drawn_scene::load(yaml, variant, "lesson.yaml"); };
 }
 
 // a scratch directory, removed afterwards

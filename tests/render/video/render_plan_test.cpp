@@ -35,23 +35,13 @@ struct Loader {
   }
 };
 
-// an inline scene: a ball that hits a wall at t = 0.5, and a variant that runs half as long
-const char* const kLesson = R"(
-name: lesson
-duration: 2
-world: {restitution: 1}
-sim: {collisions: event}
-bodies:
-  - {name: ball, shape: {circle: 0.25}, position: [0, 0], velocity: [1, 0]}
-  - {name: wall, shape: {box: [0.2, 2]}, position: [0.85, 0], static: true}
-render: {title_card: 1, slow_motion: {factor: 4, window: 0.2}, size: [320, 180]}
-variants:
-  long: {}
-  brief: {duration: 1}
-)";
+// a ball that hits a wall at t = 0.5, and a variant that runs half as long
+const std::string kLesson = drawn_scene::bounce("2",
+                                                "render: {title_card: 1, slow_motion: {factor: 4, window: 0.2}, size: [320, 180]}\n"
+                                                "variants:\n  long: {}\n  brief: {duration: 1}\n");
 
-render::video::LoadVariant lesson() {
-  return [](const std::string& variant) { return drawn_scene::load(kLesson, variant, "lesson.yaml"); };
+render::video::LoadVariant lesson(const std::string& yaml = kLesson) {
+  return [yaml](const std::string& variant) { return drawn_scene::load(yaml, variant, "lesson.yaml"); };
 }
 
 std::string usageError(const std::function<void()>& plan) {
@@ -229,21 +219,20 @@ TEST_CASE("lecture panels: the default at the shortest variant's duration; impac
   CHECK(plan.stills->shots.front().instants == std::vector<double>{1, 1});
 
   // the base scene's panels: impacts, each variant with its impact at 0.5 s
-  const std::string withPanels = std::string(kLesson).replace(std::string(kLesson).find("size: [320, 180]"), 16,
-                                                                  "size: [320, 180], panels: impacts");
   const RenderPlan impacts = render::video::planLecture(
-      [&](const std::string& v) { return drawn_scene::load(withPanels, v, "lesson.yaml"); }, {.file = "lesson.yaml"});
+      lesson(drawn_scene::bounce("2", "render: {panels: impacts}\nvariants:\n  long: {}\n  brief: {duration: 1}\n")),
+      {.file = "lesson.yaml"});
   CHECK(impacts.paths().back() == "out/lecture/lesson/lesson-panels-impact1.png");
 
   // a variant that ends before its impact has none: refused at the panels line, before rendering
-  const std::string early = std::string(withPanels).replace(withPanels.find("brief: {duration: 1}"), 20, "brief: {duration: 0.3}");
   try {
-    render::video::planLecture([&](const std::string& v) { return drawn_scene::load(early, v, "lesson.yaml"); },
-                               {.file = "lesson.yaml"});
+    render::video::planLecture(
+        lesson(drawn_scene::bounce("2", "render: {panels: impacts}\nvariants:\n  long: {}\n  brief: {duration: 0.3}\n")),
+        {.file = "lesson.yaml"});
     FAIL("no error");
   } catch (const sim::yaml::SceneError& e) {
-    CHECK(std::string(e.what()).find("lesson.yaml:9:") == 0);
-    CHECK(std::string(e.what()).find("'panels: impacts' needs an impact in every variant, and variant 'brief' has none; "
-                                     "give panel times instead, e.g. [0, 0.3]") != std::string::npos);
+    CHECK(e.line == 8);
+    CHECK(e.message ==
+          "'panels: impacts' needs an impact in every variant, and variant 'brief' has none; give panel times instead, e.g. [0, 0.3]");
   }
 }
