@@ -37,12 +37,6 @@ struct World::Impact {
 
 namespace {
 
-constexpr int kMaxSearchIterations = 100000;
-
-// approaching slower than this, m/s, does not count as an impact (round-off after an impulse)
-constexpr double kApproachFloor = 1e-3 * settings::kRestingSpeed;
-
-
 bool isResting(const std::vector<std::pair<int, int>>& resting, int a, int b) {
   return std::find(resting.begin(), resting.end(), std::make_pair(a, b)) != resting.end();
 }
@@ -151,14 +145,14 @@ World::Impact World::earliestImpact(const States& from, double span) const {
       const States y = motion(from, tau);
       return collide(a.shape, poseOf(y[i]), b.shape, poseOf(y[j]), 0.0).separation;
     };
-    const double safety = constantForces_ ? 1.0 : 1.25;
+    const double safety = constantForces_ ? 1.0 : settings::kApproachBoundMargin;
     const double bound =
         safety * std::max(approachBound(a, b, from[i], from[j]), approachBound(a, b, end[i], end[j]));
     if (bound == 0.0) continue;
 
     // regula falsi (Illinois) between lo (gap ≥ 0) and hi (overlap), ending on the gap side
     auto refine = [&](double lo, double slo, double hi, double shi) {
-      for (int k = 0; k < 200 && slo > tol && hi - lo > 1e-15 * span; ++k) {
+      for (int k = 0; k < settings::kMaxRefineIterations && slo > tol && hi - lo > settings::kImpactBracket * span; ++k) {
         const double mid = std::clamp(lo + (hi - lo) * slo / (slo - shi), lo, hi);
         const double s = gap(mid);
         if (s >= 0.0) lo = mid, slo = s, shi *= 0.5;
@@ -173,7 +167,7 @@ World::Impact World::earliestImpact(const States& from, double span) const {
     if (s <= touch) {
       // touching and not approaching (impacts at this instant are already resolved): look for
       // the moment the pair is clear of the touching band, doubling the look-ahead
-      double ahead = 1e-12 * span, last = 0.0, sLast = std::max(s, 0.0);
+      double ahead = settings::kLookAheadStart * span, last = 0.0, sLast = std::max(s, 0.0);
       while (true) {
         ahead = std::min(ahead, horizon);
         const double sa = gap(ahead);
@@ -193,7 +187,7 @@ World::Impact World::earliestImpact(const States& from, double span) const {
     }
     // conservative advancement, with a secant probe to bracket the root early
     double prevTau = -1.0, prevS = 0.0;
-    for (int k = 0; !found && k < kMaxSearchIterations; ++k) {
+    for (int k = 0; !found && k < settings::kMaxAdvancementIterations; ++k) {
       if (s <= tol) {
         found = true;
         break;
@@ -227,7 +221,7 @@ void World::resolveImpactsAt(double t) {
   const double touch = settings::kTouchingTolerance * sceneSize_;
   std::vector<Contact> touching = findContacts(touch);
   std::erase_if(touching, [&](const Contact& c) { return isResting(restingPairs_, c.a, c.b); });
-  for (int sweep = 0; sweep < 1000; ++sweep) {
+  for (int sweep = 0; sweep < settings::kMaxImpactSweeps; ++sweep) {
     bool any = false;
     for (const Contact& c : touching) {
       Body &a = bodies[c.a], &b = bodies[c.b];
@@ -236,7 +230,7 @@ void World::resolveImpactsAt(double t) {
       int approaching[2], count = 0;
       for (int k = 0; k < c.manifold.count; ++k) {
         vn[k] = n.dot(relativeVelocity(a, b, c.manifold.points[k].point));
-        if (vn[k] < -kApproachFloor) approaching[count++] = k;
+        if (vn[k] < -settings::kApproachFloor) approaching[count++] = k;
       }
       if (count == 0) continue;
       any = true;
@@ -256,7 +250,7 @@ void World::resolveImpactsAt(double t) {
         const double k12 = a.invMass + b.invMass + a.invInertia * ra1 * ra2 + b.invInertia * rb1 * rb2;
         const double det = k11 * k22 - k12 * k12;
         const double d1 = -(1.0 + c.restitution) * rec[0].vnBefore, d2 = -(1.0 + c.restitution) * rec[1].vnBefore;
-        if (det > 1e-12 * k11 * k22) {
+        if (det > settings::kMinBlockDeterminant * k11 * k22) {
           const double g1 = (k22 * d1 - k12 * d2) / det, g2 = (k11 * d2 - k12 * d1) / det;
           if (g1 >= 0.0 && g2 >= 0.0) {
             applyImpulsePair(a, b, r1, g1 * n);
@@ -313,7 +307,7 @@ void World::holdRestingContacts() {
   const double touch = settings::kTouchingTolerance * sceneSize_;
   std::erase_if(restingPairs_, [&](const std::pair<int, int>& p) {
     Body &a = bodies[p.first], &b = bodies[p.second];
-    const Manifold m = collide(a.shape, a.pose(), b.shape, b.pose(), 100.0 * touch);
+    const Manifold m = collide(a.shape, a.pose(), b.shape, b.pose(), settings::kRestingReach * touch);
     if (m.count == 0) return true;  // they came apart
     bool separating = true;
     for (int k = 0; k < m.count; ++k) {
@@ -342,7 +336,7 @@ void World::restingForces(const States& y, std::vector<Vec2>& force, std::vector
   std::vector<Row> rows;
   for (const auto& [i, j] : restingPairs_) {
     const Manifold m = collide(bodies[i].shape, poseOf(y[i]), bodies[j].shape, poseOf(y[j]),
-                               100.0 * settings::kTouchingTolerance * sceneSize_);
+                               settings::kRestingReach * settings::kTouchingTolerance * sceneSize_);
     for (int k = 0; k < m.count; ++k) {
       Body a = bodies[i], b = bodies[j];
       a.x = y[i].x, b.x = y[j].x;
@@ -362,7 +356,7 @@ void World::restingForces(const States& y, std::vector<Vec2>& force, std::vector
     const Vec2 ab = acc[w.b] + cross(alpha[w.b], rb) - y[w.b].omega * y[w.b].omega * rb;
     return w.n.dot(aa - ab);
   };
-  for (int sweep = 0; sweep < 50; ++sweep)
+  for (int sweep = 0; sweep < settings::kRestingForceSweeps; ++sweep)
     for (Row& w : rows) {
       if (w.k == 0.0) continue;
       const double total = std::max(w.lambda - normalAcceleration(w) / w.k, 0.0);

@@ -157,7 +157,7 @@ bool World::solveNormalBlock(Contact& c) {
   const double k12 = a.invMass + b.invMass + a.invInertia * ra1 * ra2 + b.invInertia * rb1 * rb2;
   const double det = k11 * k22 - k12 * k12;
   // an ill-conditioned pair (the two points nearly one) is left to the point-by-point sweep
-  if (!(k11 * k11 < 1000.0 * det)) return false;
+  if (!(k11 * k11 < settings::kMaxConditionNumber * det)) return false;
 
   // with x the new accumulated impulses: v_n = K x + b' must be ≥ 0 where x > 0, x ≥ 0
   const double x1Old = s1.normalImpulse, x2Old = s2.normalImpulse;
@@ -210,7 +210,7 @@ bool World::solvePositions() {
     }
   }
   // Box2D stops when the deepest point is within three times the slop
-  return deepest >= -3.0 * settings::kLinearSlop;
+  return deepest >= -settings::kPositionSolvedDepth;
 }
 
 }  // namespace sim::world

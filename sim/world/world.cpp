@@ -79,7 +79,7 @@ void World::start() {
     all.lower = all.lower.cwiseMin(box.lower);
     all.upper = all.upper.cwiseMax(box.upper);
   }
-  if (all.upper.x() >= all.lower.x()) sceneSize_ = std::max((all.upper - all.lower).maxCoeff(), 1e-9);
+  if (all.upper.x() >= all.lower.x()) sceneSize_ = std::max((all.upper - all.lower).maxCoeff(), settings::kMinSceneSize);
 
   // `auto`: the least model the scene needs
   if (collisions == CollisionMethod::Auto) {

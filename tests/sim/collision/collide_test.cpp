@@ -311,7 +311,7 @@ TEST_CASE("sat: 12,000 random convex polygon pairs against a brute-force referen
       for (int k = 0; k < m.count; ++k) {
         CHECK(m.points[k].separation <= kMargin);
         // measured against a reference edge within the manifold's hysteresis of the best one
-        CHECK(m.points[k].separation >= f.separation - 0.05 * kMargin - tol);
+        CHECK(m.points[k].separation >= f.separation - sim::core::settings::kReferenceEdgeHysteresis - tol);
         smallest = std::min(smallest, m.points[k].separation);
       }
       CHECK(m.separation == smallest);
