@@ -41,8 +41,6 @@ bool isResting(const std::vector<std::pair<int, int>>& resting, int a, int b) {
   return std::find(resting.begin(), resting.end(), std::make_pair(a, b)) != resting.end();
 }
 
-Pose poseOf(const BodyState& s) { return {s.x, Rot::fromAngle(s.angle)}; }
-
 // the fastest any point of the pair can approach the other, for conservative advancement
 double approachBound(const Body& a, const Body& b, const BodyState& sa, const BodyState& sb) {
   double bound = (sa.v - sb.v).norm();
@@ -123,8 +121,8 @@ World::Impact World::earliestImpact(const States& from, double span) const {
   std::vector<Aabb> boxes;
   std::vector<bool> fixed;
   for (size_t i = 0; i < bodies.size(); ++i) {
-    Aabb box = bounds(bodies[i].shape, poseOf(from[i]));
-    const Aabb last = bounds(bodies[i].shape, poseOf(end[i]));
+    Aabb box = bounds(bodies[i].shape, from[i].pose());
+    const Aabb last = bounds(bodies[i].shape, end[i].pose());
     box.lower = box.lower.cwiseMin(last.lower) - Vec2::Constant(touch);
     box.upper = box.upper.cwiseMax(last.upper) + Vec2::Constant(touch);
     boxes.push_back(box);
@@ -139,11 +137,11 @@ World::Impact World::earliestImpact(const States& from, double span) const {
     const Body &a = bodies[i], &b = bodies[j];
     auto gap = [&](double tau) {
       if (constantForces_)
-        return collide(a.shape, poseOf(uniformlyAccelerated(from[i], k0[i], tau)), b.shape,
-                       poseOf(uniformlyAccelerated(from[j], k0[j], tau)), 0.0)
+        return collide(a.shape, uniformlyAccelerated(from[i], k0[i], tau).pose(), b.shape,
+                       uniformlyAccelerated(from[j], k0[j], tau).pose(), 0.0)
             .separation;
       const States y = motion(from, tau);
-      return collide(a.shape, poseOf(y[i]), b.shape, poseOf(y[j]), 0.0).separation;
+      return collide(a.shape, y[i].pose(), b.shape, y[j].pose(), 0.0).separation;
     };
     const double safety = constantForces_ ? 1.0 : settings::kApproachBoundMargin;
     const double bound =
@@ -290,7 +288,7 @@ void World::resolveImpactsAt(double t) {
     if (fastest > settings::kRestingSpeed) continue;
     for (size_t i = 0; i < bodies.size(); ++i) now[i] = bodies[i].state();
     const States ahead = motion(now, dt);
-    const double gap = collide(a.shape, poseOf(ahead[c.a]), b.shape, poseOf(ahead[c.b]), 0.0).separation;
+    const double gap = collide(a.shape, ahead[c.a].pose(), b.shape, ahead[c.b].pose(), 0.0).separation;
     if (gap >= -touch) continue;
     // the rest of the geometric series of bounces is below kRestingSpeed: end it here
     for (int k = 0; k < c.manifold.count; ++k) {
@@ -335,7 +333,7 @@ void World::restingForces(const States& y, std::vector<Vec2>& force, std::vector
   };
   std::vector<Row> rows;
   for (const auto& [i, j] : restingPairs_) {
-    const Manifold m = collide(bodies[i].shape, poseOf(y[i]), bodies[j].shape, poseOf(y[j]),
+    const Manifold m = collide(bodies[i].shape, y[i].pose(), bodies[j].shape, y[j].pose(),
                                settings::kRestingReach * settings::kTouchingTolerance * sceneSize_);
     for (int k = 0; k < m.count; ++k) {
       Body a = bodies[i], b = bodies[j];

@@ -34,7 +34,6 @@ void World::stepSequential(double h) {
   for (size_t i = 0; i < bodies.size(); ++i) {
     bodies[i].x = before[i].x;
     bodies[i].angle = before[i].angle;
-    bodies[i].q = Rot::fromAngle(before[i].angle);
   }
   warmStart();
   for (int k = 0; k < velocityIterations; ++k) solveVelocities();
@@ -46,7 +45,6 @@ void World::stepSequential(double h) {
     if (b.isStatic) continue;
     b.x = free[i].x + h * (b.v - free[i].v);
     b.angle = free[i].angle + h * (b.omega - free[i].omega);
-    b.q = Rot::fromAngle(b.angle);
   }
   for (int k = 0; k < positionIterations; ++k)
     if (solvePositions()) break;
@@ -203,10 +201,8 @@ bool World::solvePositions() {
       const Vec2 ra = r - a.x, rb = r - b.x;
       a.x += a.invMass * push;
       a.angle += a.invInertia * cross(ra, push);
-      a.q = Rot::fromAngle(a.angle);
       b.x -= b.invMass * push;
       b.angle -= b.invInertia * cross(rb, push);
-      b.q = Rot::fromAngle(b.angle);
     }
   }
   // Box2D stops when the deepest point is within three times the slop
