@@ -242,14 +242,12 @@ void World::resolveImpactsAt(double t) {
       if (count == 2 && c.friction == 0.0) {
         // both points at once: the impulses (γ1, γ2) that give each v_n⁺ = −c_r v_n⁻ together
         const Vec2 r1 = rec[0].point, r2 = rec[1].point;
-        const double ra1 = cross(r1 - a.x, n), ra2 = cross(r2 - a.x, n);
-        const double rb1 = cross(r1 - b.x, n), rb2 = cross(r2 - b.x, n);
-        const double k11 = inverseEffectiveMass(a, b, r1, n), k22 = inverseEffectiveMass(a, b, r2, n);
-        const double k12 = a.invMass + b.invMass + a.invInertia * ra1 * ra2 + b.invInertia * rb1 * rb2;
-        const double det = k11 * k22 - k12 * k12;
+        const NormalBlock K =
+            normalBlock(a, b, r1, r2, n, inverseEffectiveMass(a, b, r1, n), inverseEffectiveMass(a, b, r2, n));
         const double d1 = -(1.0 + c.restitution) * rec[0].vnBefore, d2 = -(1.0 + c.restitution) * rec[1].vnBefore;
-        if (det > settings::kMinBlockDeterminant * k11 * k22) {
-          const double g1 = (k22 * d1 - k12 * d2) / det, g2 = (k11 * d2 - k12 * d1) / det;
+        if (K.det > settings::kMinBlockDeterminant * K.k11 * K.k22) {
+          const Vec2 gamma = K.solve(d1, d2);
+          const double g1 = gamma.x(), g2 = gamma.y();
           if (g1 >= 0.0 && g2 >= 0.0) {
             applyImpulsePair(a, b, r1, g1 * n);
             applyImpulsePair(a, b, r2, g2 * n);

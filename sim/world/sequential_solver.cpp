@@ -149,21 +149,18 @@ bool World::solveNormalBlock(Contact& c) {
   const Vec2 n = c.manifold.normal;
   const Vec2 r1 = c.manifold.points[0].point, r2 = c.manifold.points[1].point;
   ContactPointState &s1 = c.state[0], &s2 = c.state[1];
-  const double ra1 = cross(r1 - a.x, n), ra2 = cross(r2 - a.x, n);
-  const double rb1 = cross(r1 - b.x, n), rb2 = cross(r2 - b.x, n);
-  const double k11 = 1.0 / s1.normalMass, k22 = 1.0 / s2.normalMass;
-  const double k12 = a.invMass + b.invMass + a.invInertia * ra1 * ra2 + b.invInertia * rb1 * rb2;
-  const double det = k11 * k22 - k12 * k12;
+  const NormalBlock K = normalBlock(a, b, r1, r2, n, 1.0 / s1.normalMass, 1.0 / s2.normalMass);
+  const double k11 = K.k11, k12 = K.k12, k22 = K.k22;
   // an ill-conditioned pair (the two points nearly one) is left to the point-by-point sweep
-  if (!(k11 * k11 < settings::kMaxConditionNumber * det)) return false;
+  if (!(k11 * k11 < settings::kMaxConditionNumber * K.det)) return false;
 
   // with x the new accumulated impulses: v_n = K x + b' must be ≥ 0 where x > 0, x ≥ 0
   const double x1Old = s1.normalImpulse, x2Old = s2.normalImpulse;
   const double b1 = n.dot(relativeVelocity(a, b, r1)) - s1.bias - (k11 * x1Old + k12 * x2Old);
   const double b2 = n.dot(relativeVelocity(a, b, r2)) - s2.bias - (k12 * x1Old + k22 * x2Old);
   double x1 = 0.0, x2 = 0.0;
-  if (const double y1 = (-k22 * b1 + k12 * b2) / det, y2 = (k12 * b1 - k11 * b2) / det; y1 >= 0.0 && y2 >= 0.0) {
-    x1 = y1, x2 = y2;  // both points push
+  if (const Vec2 both = K.solve(-b1, -b2); both.x() >= 0.0 && both.y() >= 0.0) {
+    x1 = both.x(), x2 = both.y();  // both points push
   } else if (const double z1 = -b1 / k11; z1 >= 0.0 && k12 * z1 + b2 >= 0.0) {
     x1 = z1;  // only the first
   } else if (const double z2 = -b2 / k22; z2 >= 0.0 && k12 * z2 + b1 >= 0.0) {
