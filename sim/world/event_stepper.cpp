@@ -24,6 +24,7 @@
 
 #include "sim/collision/broad_phase.h"
 #include "sim/collision/impulse.h"
+#include "sim/collision/time_of_impact.h"
 #include "sim/world/world.h"
 
 namespace sim::world {
@@ -39,14 +40,6 @@ namespace {
 
 bool isResting(const std::vector<std::pair<int, int>>& resting, int a, int b) {
   return std::find(resting.begin(), resting.end(), std::make_pair(a, b)) != resting.end();
-}
-
-// the fastest any point of the pair can approach the other, for conservative advancement
-double approachBound(const Body& a, const Body& b, const BodyState& sa, const BodyState& sb) {
-  double bound = (sa.v - sb.v).norm();
-  if (sa.omega != 0.0) bound += std::abs(sa.omega) * boundingRadius(a.shape);
-  if (sb.omega != 0.0) bound += std::abs(sb.omega) * boundingRadius(b.shape);
-  return bound;
 }
 
 }  // namespace
@@ -135,81 +128,21 @@ World::Impact World::earliestImpact(const States& from, double span) const {
   for (const auto& [i, j] : overlappingPairs(boxes, fixed)) {
     if (isResting(restingPairs_, i, j)) continue;
     const Body &a = bodies[i], &b = bodies[j];
-    auto gap = [&](double tau) {
+    ToiInput in;
+    in.a = &a.shape, in.b = &b.shape;
+    in.motion = [&](double tau) -> PosePair {
       if (constantForces_)
-        return collide(a.shape, uniformlyAccelerated(from[i], k0[i], tau).pose(), b.shape,
-                       uniformlyAccelerated(from[j], k0[j], tau).pose(), 0.0)
-            .separation;
+        return {uniformlyAccelerated(from[i], k0[i], tau).pose(), uniformlyAccelerated(from[j], k0[j], tau).pose()};
       const States y = motion(from, tau);
-      return collide(a.shape, y[i].pose(), b.shape, y[j].pose(), 0.0).separation;
+      return {y[i].pose(), y[j].pose()};
     };
     const double safety = constantForces_ ? 1.0 : settings::kApproachBoundMargin;
-    const double bound =
-        safety * std::max(approachBound(a, b, from[i], from[j]), approachBound(a, b, end[i], end[j]));
-    if (bound == 0.0) continue;
-
-    // regula falsi (Illinois) between lo (gap ≥ 0) and hi (overlap), ending on the gap side
-    auto refine = [&](double lo, double slo, double hi, double shi) {
-      for (int k = 0; k < settings::kMaxRefineIterations && slo > tol && hi - lo > settings::kImpactBracket * span; ++k) {
-        const double mid = std::clamp(lo + (hi - lo) * slo / (slo - shi), lo, hi);
-        const double s = gap(mid);
-        if (s >= 0.0) lo = mid, slo = s, shi *= 0.5;
-        else hi = mid, shi = s, slo *= 0.5;
-        if (s >= 0.0 && s <= tol) return mid;
-      }
-      return lo;
-    };
-
-    double tau = 0.0, s = gap(0.0);
-    bool found = false;
-    if (s <= touch) {
-      // touching and not approaching (impacts at this instant are already resolved): look for
-      // the moment the pair is clear of the touching band, doubling the look-ahead
-      double ahead = settings::kLookAheadStart * span, last = 0.0, sLast = std::max(s, 0.0);
-      while (true) {
-        ahead = std::min(ahead, horizon);
-        const double sa = gap(ahead);
-        if (sa < -tol) {  // it came back in: an impact inside (last, ahead)
-          tau = refine(last, sLast, ahead, sa);
-          found = true;
-          break;
-        }
-        if (sa > touch || ahead >= horizon) {
-          tau = ahead, s = sa;
-          break;
-        }
-        last = ahead, sLast = std::max(sa, 0.0);
-        ahead *= 2.0;
-      }
-      if (!found && (tau >= horizon)) continue;
-    }
-    // conservative advancement, with a secant probe to bracket the root early
-    double prevTau = -1.0, prevS = 0.0;
-    for (int k = 0; !found && k < settings::kMaxAdvancementIterations; ++k) {
-      if (s <= tol) {
-        found = true;
-        break;
-      }
-      const double advance = s / bound;
-      if (prevTau >= 0.0 && prevS > s) {
-        const double probe = tau + s * (tau - prevTau) / (prevS - s);
-        if (probe > tau + advance && probe < horizon) {
-          const double sp = gap(probe);
-          if (sp < 0.0) {
-            tau = refine(tau, s, probe, sp);
-            found = true;
-            break;
-          }
-        }
-      }
-      prevTau = tau, prevS = s;
-      tau += advance;
-      if (tau > horizon) break;
-      s = gap(tau);
-    }
-    if (found && tau <= horizon) {
-      best = {true, tau};
-      horizon = tau;
+    in.approachBound = safety * std::max(approachBound(a.shape, from[i], b.shape, from[j]),
+                                         approachBound(a.shape, end[i], b.shape, end[j]));
+    in.horizon = horizon, in.span = span, in.tolerance = tol, in.touching = touch;
+    if (const std::optional<double> tau = timeOfImpact(in)) {
+      best = {true, *tau};
+      horizon = *tau;
     }
   }
   return best;
