@@ -46,9 +46,10 @@ bench: build
 clean:
 	rm -rf $(BUILD)
 
-# regenerate tests/golden/*.png on purpose, after a deliberate change to how frames look (see
+# regenerate tests/golden/*.png on purpose, after a deliberate change to how frames or charts look (see
 # tests/golden/README.md); review the new images before committing them
 .PHONY: golden
 golden: build
 	RIGIDREEL_UPDATE_GOLDEN=1 ./$(BUILD)/tests/golden_test
 	RIGIDREEL_UPDATE_GOLDEN=1 ./$(BUILD)/tests/lecture_golden_test
+	RIGIDREEL_UPDATE_GOLDEN=1 ./$(BUILD)/tests/chart_test
