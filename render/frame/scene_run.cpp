@@ -64,7 +64,8 @@ Image SceneRun::frameAt(double t, int strobe) {
 }
 
 Image SceneRun::titleCard() {
-  return composeTitleCard(frameAt(0.0), titleOf(def_), def_.model.description, style_, *text_);
+  if (!text_) throw std::logic_error("SceneRun::titleCard needs a text renderer");
+  return composeTitleCard(camera_.widthPx(), camera_.heightPx(), titleOf(def_), def_.model.description, style_, *text_);
 }
 
 DrawList SceneRun::drawListAt(double t, int strobe) {

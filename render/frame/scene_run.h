@@ -28,7 +28,7 @@ class SceneRun {
   Image frameAt(double t, int strobe = 0);
   // the draw calls of the frame at time t, without GL (the draw-list level of the tests)
   DrawList drawListAt(double t, int strobe = 0);
-  // the title card over the frame at t = 0 (title_card.h); needs the GL context
+  // the title card alone (title_card.h), the frame's size; needs the text renderer
   Image titleCard();
   // video frames say when they are slowed (empty: never), see FramePainter
   void showSlowMotion(FramePainter::SlowFactor factorAt) { painter_.showSlowMotion(std::move(factorAt)); }
