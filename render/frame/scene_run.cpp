@@ -68,10 +68,10 @@ Image SceneRun::titleCard() {
   return composeTitleCard(camera_.widthPx(), camera_.heightPx(), titleOf(def_), def_.model.description, style_, *text_);
 }
 
-DrawList SceneRun::drawListAt(double t, int strobe) {
+DrawList SceneRun::drawListAt(double t, int strobe, std::vector<PlacedText>* placed) {
   const std::vector<DrawList> ghosts = advance(t, strobe);
   DrawList list;
-  painter_.paint(world_, history_, ghosts, list);
+  painter_.paint(world_, history_, ghosts, list, placed);
   return list;
 }
 

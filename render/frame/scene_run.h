@@ -26,8 +26,9 @@ class SceneRun {
   // that many earlier poses at t·i/strobe (i = 0 … strobe − 1) drawn fading behind the present one,
   // which needs a fresh run (nothing drawn yet). Throws sim::world::Diverged.
   Image frameAt(double t, int strobe = 0);
-  // the draw calls of the frame at time t, without GL (the draw-list level of the tests)
-  DrawList drawListAt(double t, int strobe = 0);
+  // the draw calls of the frame at time t, without GL (the draw-list level of the tests); `placed`
+  // (when given) is told where each text went (its box in pixels, the anchor it names)
+  DrawList drawListAt(double t, int strobe = 0, std::vector<PlacedText>* placed = nullptr);
   // the title card alone (title_card.h), the frame's size; needs the text renderer
   Image titleCard();
   // video frames say when they are slowed (empty: never), see FramePainter
