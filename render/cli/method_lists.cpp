@@ -45,8 +45,8 @@ std::vector<sim::core::Integrator> MethodLists::integratorList() const {
   return namedList(integrators, sim::core::integratorFromName, sim::core::integratorNames(), "--integrators");
 }
 
-std::vector<sim::world::CollisionMethod> MethodLists::collisionList(sim::world::CollisionMethod scenes) const {
-  if (collisions.empty()) return {scenes};
+std::vector<sim::world::CollisionMethod> MethodLists::collisionList(const std::vector<sim::world::CollisionMethod>& defaults) const {
+  if (collisions.empty()) return defaults;
   return namedList(collisions, sim::world::collisionMethodFromName, sim::world::collisionMethodNames(), "--collisions");
 }
 

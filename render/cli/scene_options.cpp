@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "render/cli/commands.h"
+#include "render/jobs/json_writer.h"
 #include "sim/scene/scene_build.h"
 #include "sim/yaml/scene_yaml.h"
 
@@ -78,6 +79,13 @@ std::string describeCollisionMethod(const sim::world::World& world) {
       return s + " (auto: bodies touch at the start under load, so contacts persist and need the iterative solver)";
   }
   return s;
+}
+
+std::string describeResting(const sim::scene::SceneDef& def, const sim::world::RestingRecord& r) {
+  const std::string pair = "'" + def.bodies[r.a].name + "' and '" + def.bodies[r.b].name + "'";
+  const std::string t = render::jobs::formatNumber(r.t);
+  if (r.moving) return pair + " stay in contact from t = " + t + " (impacts piled up; they keep moving while touching)";
+  return pair + " came to rest at t = " + t + " (impacts piled up; the contact now rests)";
 }
 
 }  // namespace render::cli

@@ -60,6 +60,9 @@ struct ImpactRecord {
 struct RestingRecord {
   double t = 0.0;
   int a = 0, b = 0;
+  // the pair still slides or turns while it touches (a plastic impact of a spinning bar): it stays in
+  // contact rather than coming to rest
+  bool moving = false;
 };
 
 // pair coefficients (documented in scenes/README.md): the larger restitution (a bouncy ball
