@@ -22,11 +22,8 @@ SceneFile SceneOptions::load() const {
   sim::scene::SceneDef& def = file.model();
   if (!integrator.empty()) {
     const auto method = sim::core::integratorFromName(integrator);
-    if (!method) {
-      std::string names;
-      for (auto n : sim::core::integratorNames()) names += (names.empty() ? "" : ", ") + std::string(n);
-      throw UsageError("--integrator: unknown integrator '" + integrator + "'; choose one of: " + names);
-    }
+    if (!method)
+      throw UsageError("--integrator: unknown integrator '" + integrator + "'; choose one of: " + sim::core::kIntegratorNames.list());
     def.integrator = *method;
   }
   if (dt) {
@@ -35,11 +32,8 @@ SceneFile SceneOptions::load() const {
   }
   if (!collisions.empty()) {
     const auto method = sim::world::collisionMethodFromName(collisions);
-    if (!method) {
-      std::string names;
-      for (auto n : sim::world::collisionMethodNames()) names += (names.empty() ? "" : ", ") + std::string(n);
-      throw UsageError("--collisions: unknown collision method '" + collisions + "'; choose one of: " + names);
-    }
+    if (!method)
+      throw UsageError("--collisions: unknown collision method '" + collisions + "'; choose one of: " + sim::world::kCollisionMethodNames.list());
     def.collisions = *method;
   }
   return file;

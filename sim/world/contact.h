@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "sim/collision/collide.h"
+#include "sim/core/enum_names.h"
 
 namespace sim::world {
 using namespace sim::core;
@@ -21,9 +22,16 @@ enum class CollisionMethod {
   Sequential,  // fixed steps, sequential impulses with warm starting, friction, position correction
 };
 
-std::string_view collisionMethodName(CollisionMethod method);
-std::optional<CollisionMethod> collisionMethodFromName(std::string_view name);
-const std::vector<std::string_view>& collisionMethodNames();
+// names as written in scenes and on the command line
+inline constexpr EnumNames<CollisionMethod, 5> kCollisionMethodNames{{{
+    {CollisionMethod::Auto, "auto"},
+    {CollisionMethod::None, "none"},
+    {CollisionMethod::Event, "event"},
+    {CollisionMethod::Isolated, "isolated"},
+    {CollisionMethod::Sequential, "sequential"},
+}}};
+inline std::string_view collisionMethodName(CollisionMethod method) { return kCollisionMethodNames.name(method); }
+inline std::optional<CollisionMethod> collisionMethodFromName(std::string_view name) { return kCollisionMethodNames.parse(name); }
 
 // solver state of one manifold point (sequential impulses, Catto 2006)
 struct ContactPointState {
