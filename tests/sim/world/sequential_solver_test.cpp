@@ -139,7 +139,7 @@ Settled dropPyramid(int positionIterations) {
 }  // namespace
 
 // Box2D's testbed pyramid drops into place. Measured (issue 14): 0.0577 m and 0.0001 m/s with 3
-// position passes, 0.0563 m with 10; Box2D 2.4 in the same run 0.068 m (rigidreel_box2d_peer).
+// position passes, 0.0563 m with 10; Box2D 2.4 in the same run 0.068 m (rigidreel_stack_bench).
 // Before the flip-invariant feature ids it bulged 0.36 m and crept at 0.02 m/s.
 TEST_CASE("sequential: the dropped 20-base pyramid settles in place; 10 position passes do no worse than 3") {
   const Settled three = dropPyramid(3), ten = dropPyramid(10);
