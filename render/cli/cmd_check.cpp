@@ -52,6 +52,12 @@ void reportResting(const sim::scene::SceneDef& def, const sim::world::World& w) 
               << "' came to rest at t = " << formatNumber(r.t) << " (impacts piled up; the contact now rests)\n";
 }
 
+// say when `auto` went from the event method to the stack solver during the run
+void reportSwitch(const sim::world::World& w) {
+  if (w.methodSwitchTime)
+    std::cout << "  switched: " << describeCollisionMethod(w) << '\n';
+}
+
 // one scene, one variant ("" for the base); returns false when an expect fails
 bool checkCase(const std::string& file, const std::string& variant) {
   const sim::scene::SceneDef def = readSceneFile(file, variant).model();
@@ -65,6 +71,7 @@ bool checkCase(const std::string& file, const std::string& variant) {
     if (!w.impacts.empty()) std::cout << ", " << w.impacts.size() << " impulses";
     std::cout << '\n';
     reportResting(def, w);
+    reportSwitch(w);
     return true;
   }
   bool ok = true;
@@ -75,6 +82,7 @@ bool checkCase(const std::string& file, const std::string& variant) {
               << formatNumber(r.error) << " (tolerance " << formatNumber(r.tolerance) << ")\n";
   }
   reportResting(def, w);
+  reportSwitch(w);
   return ok;
 }
 

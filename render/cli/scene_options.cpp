@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "render/cli/commands.h"
+#include "render/jobs/json_writer.h"
 #include "sim/scene/scene_build.h"
 #include "sim/yaml/scene_yaml.h"
 
@@ -76,6 +77,9 @@ std::string describeCollisionMethod(const sim::world::World& world) {
       return s + " (auto: no bodies touch at the start, so impacts are isolated and can be resolved exactly)";
     case sim::world::MethodReason::PersistentContacts:
       return s + " (auto: bodies touch at the start under load, so contacts persist and need the iterative solver)";
+    case sim::world::MethodReason::StackFormed:
+      return s + " (auto: event until impacts piled up, a stack forming; the iterative solver from t = " +
+             render::jobs::formatNumber(world.methodSwitchTime.value_or(0.0)) + " on)";
   }
   return s;
 }
