@@ -19,6 +19,7 @@ enum class CollisionMethod {
   Event,       // exact: advance to each time of impact, apply the notes' impulse there
   Isolated,    // the notes' model on fixed steps: one impulse per approaching contact, then push apart
   Sequential,  // fixed steps, sequential impulses with warm starting, friction, position correction
+  SoftStep,    // fixed steps in substeps, soft contacts with relax passes (Box2D v3)
 };
 
 std::string_view collisionMethodName(CollisionMethod method);
@@ -61,6 +62,10 @@ struct RestingRecord {
   double t = 0.0;
   int a = 0, b = 0;
 };
+
+// the same pair and the same features as last step start from last step's impulses (warm
+// starting); both lists sorted by pair
+void matchWarmStart(const std::vector<Contact>& previous, std::vector<Contact>& fresh);
 
 // pair coefficients (documented in scenes/README.md): the larger restitution (a bouncy ball
 // bounces on any floor, as in Box2D) and the geometric mean of the frictions

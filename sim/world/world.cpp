@@ -129,6 +129,7 @@ std::unique_ptr<Method> makeMethod(CollisionMethod method) {
     case CollisionMethod::None: return makeFreeMotion();
     case CollisionMethod::Isolated: return makeIsolatedSolver();
     case CollisionMethod::Sequential: return makeSequentialSolver();
+    case CollisionMethod::SoftStep: return makeSoftStepSolver();
     case CollisionMethod::Event: return makeEventStepper();
   }
   return makeFreeMotion();

@@ -76,6 +76,7 @@ class World {
   std::optional<double> methodSwitchTime;  // when `auto` went from event to the stack solver
   int velocityIterations = settings::kVelocityIterations;
   int positionIterations = settings::kPositionIterations;
+  int substeps = settings::kSubsteps;  // soft_step: substeps per step
 
   double time = 0.0;
   long steps = 0;
