@@ -47,7 +47,7 @@ bench: build
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
 	@cmake --build $(BUILD) -j $(JOBS) --target rigidreel_bench rigidreel_stack_bench
 	@mkdir -p out/bench && rm -f out/bench/stacks.csv
-	./$(BUILD)/rigidreel_stack_bench --method sequential --csv out/bench/stacks.csv
+	./$(BUILD)/rigidreel_stack_bench --method sequential --method soft_step --csv out/bench/stacks.csv
 	./$(BUILD)/rigidreel_bench ./$(BUILD)/rigidreel scenes/three_collisions_poll.yaml
 
 clean:
