@@ -7,6 +7,8 @@ DEMO     ?= scenes/poll_bar_impulse.yaml
 PACKAGES := g++ cmake make pkg-config libeigen3-dev libyaml-cpp-dev doctest-dev libcli11-dev \
             libosmesa6-dev libpng-dev libfreetype-dev fonts-dejavu-core ffmpeg gnuplot-nox \
             chromium tidy parallel python3
+# `make bench` only: Box2D 2.4, the stacks' peer in the same run (the build and the tests never need it)
+BENCH_PACKAGES := libbox2d-dev
 SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 .PHONY: all deps build demo lecture test bench clean
@@ -41,9 +43,14 @@ lecture: build
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
 
-# timings (never asserted in tests): pyramids, 720p render fps, render against ffmpeg alone
+# timings (never asserted in tests): stacks against Box2D 2.4 in the same run (both pyramids, both
+# layouts, 600 steps), 720p render fps, render against ffmpeg alone
 bench: build
-	@cmake --build $(BUILD) -j $(JOBS) --target rigidreel_bench
+	@$(MAKE) --no-print-directory deps PACKAGES="$(BENCH_PACKAGES)"
+	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
+	@cmake --build $(BUILD) -j $(JOBS) --target rigidreel_bench rigidreel_stack_bench
+	@mkdir -p out/bench && rm -f out/bench/stacks.csv
+	./$(BUILD)/rigidreel_stack_bench --method sequential --method soft_step --csv out/bench/stacks.csv
 	./$(BUILD)/rigidreel_bench ./$(BUILD)/rigidreel scenes/three_collisions_poll.yaml
 
 clean:

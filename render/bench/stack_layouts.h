@@ -1,4 +1,4 @@
-// Stack layouts shared by rigidreel and its peer engines (Box2D 2.4 in box2d_peer.cpp), free of
+// Stack layouts shared by rigidreel and its peer engines (Box2D 2.4 in stack_bench.cpp), free of
 // either engine's types, and the measures that say whether a stack held: one layout is built in
 // each engine from the same numbers, run with the same settings, and measured the same way.
 //

@@ -50,6 +50,12 @@ void reportResting(const sim::scene::SceneDef& def, const sim::world::World& w) 
   for (const sim::world::RestingRecord& r : w.resting) std::cout << "  resting: " << describeResting(def, r) << '\n';
 }
 
+// say when `auto` went from the event method to the stack solver during the run
+void reportSwitch(const sim::world::World& w) {
+  if (w.methodSwitchTime)
+    std::cout << "  switched: " << describeCollisionMethod(w) << '\n';
+}
+
 // one scene, one variant ("" for the base); returns false when an expect fails
 bool checkCase(const std::string& file, const std::string& variant) {
   const sim::scene::SceneDef def = readSceneFile(file, variant).model();
@@ -63,6 +69,7 @@ bool checkCase(const std::string& file, const std::string& variant) {
     if (!w.impacts.empty()) std::cout << ", " << w.impacts.size() << " impulses";
     std::cout << '\n';
     reportResting(def, w);
+    reportSwitch(w);
     return true;
   }
   bool ok = true;
@@ -73,6 +80,7 @@ bool checkCase(const std::string& file, const std::string& variant) {
               << formatNumber(r.error) << " (tolerance " << formatNumber(r.tolerance) << ")\n";
   }
   reportResting(def, w);
+  reportSwitch(w);
   return ok;
 }
 

@@ -75,6 +75,8 @@ void printJson(const sim::scene::SceneDef& def, const sim::world::World& w) {
   j.field("angular_momentum", sim::world::angularMomentum(w));
   j.field("collision_method", sim::world::collisionMethodName(w.collisions));
   j.field("collision_method_reason", describeCollisionMethod(w));
+  // only when `auto` switched to the stack solver during the run (the JSON is otherwise unchanged)
+  if (w.methodSwitchTime) j.field("collision_method_switch_time", *w.methodSwitchTime);
   auto name = [&](int i) { return def.bodies[i].name; };
   auto pair = [&](const sim::core::Vec2& v) -> JsonWriter& { return j.beginArray().value(v.x()).value(v.y()).endArray(); };
   // every impulse the collision response applied; b is the obstacle for a body–obstacle collision

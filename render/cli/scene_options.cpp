@@ -14,7 +14,7 @@ void SceneOptions::addTo(CLI::App& command) {
   command.add_option("--variant", variant, "the named variant of the scene to run");
   command.add_option("--integrator", integrator, "explicit_euler, symplectic_euler, midpoint or rk4");
   command.add_option("--dt", dt, "fixed time step in seconds");
-  command.add_option("--collisions", collisions, "auto, none, event, isolated or sequential");
+  command.add_option("--collisions", collisions, "auto, none, event, isolated, sequential or soft_step");
 }
 
 SceneFile SceneOptions::load() const {
@@ -71,6 +71,9 @@ std::string describeCollisionMethod(const sim::world::World& world) {
       return s + " (auto: no bodies touch at the start, so impacts are isolated and can be resolved exactly)";
     case sim::world::MethodReason::PersistentContacts:
       return s + " (auto: bodies touch at the start under load, so contacts persist and need the iterative solver)";
+    case sim::world::MethodReason::StackFormed:
+      return s + " (auto: event until impacts piled up, a stack forming; the iterative solver from t = " +
+             render::jobs::formatNumber(world.methodSwitchTime.value_or(0.0)) + " on)";
   }
   return s;
 }

@@ -71,6 +71,28 @@ inline constexpr double kPositionSolvedDepth = 3.0 * kLinearSlop;
 // block is left to the point-by-point sweep (Box2D 2.4's k_maxConditionNumber)
 inline constexpr double kMaxConditionNumber = 1000.0;
 
+// --- soft_step (Box2D v3's soft step; Catto, "Solver2D", 2024) ---
+
+// substeps per step by default: each integrates velocities, solves the contacts once with their
+// softness, integrates positions and relaxes once (Box2D v3's b2_defaultSubStepCount)
+inline constexpr int kSubsteps = 4;
+
+// contact stiffness, Hz, at most a quarter of the substep rate (Box2D v3's contactHertz: 30, and
+// min(contactHertz, 0.25 × substep rate)); contacts with a static body twice as stiff (Solver2D)
+inline constexpr double kContactHertz = 30.0;
+inline constexpr double kContactHertzPerSubstepRate = 0.25;
+
+// contact damping ratio, relative to critical (Box2D v3's contactDampingRatio: 10, heavily damped,
+// so a soft contact pushes out without bouncing)
+inline constexpr double kContactDampingRatio = 10.0;
+
+// the fastest a soft contact pushes overlapping bodies apart, m/s (Box2D v3's contactPushMaxVelocity)
+inline constexpr double kContactPushMaxSpeed = 3.0;
+
+// relax passes per substep: the contacts solved again without the soft push, so the push's speed
+// does not stay in the bodies as energy (Box2D v3: one, useBias = false)
+inline constexpr int kRelaxIterations = 1;
+
 // default coefficients: restitution halfway between elastic and plastic, frictionless as in the
 // notes
 inline constexpr double kDefaultRestitution = 0.5;

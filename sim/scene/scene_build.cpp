@@ -31,6 +31,7 @@ World buildWorld(const SceneDef& def) {
   w.collisions = def.collisions;
   w.velocityIterations = def.velocityIterations;
   w.positionIterations = def.positionIterations;
+  w.substeps = def.substeps;
 
   // body points are written in the shape's coordinates; the body origin moves to the centroid
   std::vector<Vec2> centroid;

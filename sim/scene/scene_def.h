@@ -104,6 +104,7 @@ struct SceneDef {
   CollisionMethod collisions = CollisionMethod::Auto;
   int velocityIterations = settings::kVelocityIterations;
   int positionIterations = settings::kPositionIterations;
+  int substeps = settings::kSubsteps;  // soft_step
   std::vector<BodyDef> bodies;
   std::vector<PointForceDef> pointForces;
   std::vector<SpringDef> springs;

@@ -20,15 +20,17 @@ enum class CollisionMethod {
   Event,       // exact: advance to each time of impact, apply the notes' impulse there
   Isolated,    // the notes' model on fixed steps: one impulse per approaching contact, then push apart
   Sequential,  // fixed steps, sequential impulses with warm starting, friction, position correction
+  SoftStep,    // fixed steps in substeps, soft contacts with relax passes (Box2D v3)
 };
 
 // names as written in scenes and on the command line
-inline constexpr EnumNames<CollisionMethod, 5> kCollisionMethodNames{{{
+inline constexpr EnumNames<CollisionMethod, 6> kCollisionMethodNames{{{
     {CollisionMethod::Auto, "auto"},
     {CollisionMethod::None, "none"},
     {CollisionMethod::Event, "event"},
     {CollisionMethod::Isolated, "isolated"},
     {CollisionMethod::Sequential, "sequential"},
+    {CollisionMethod::SoftStep, "soft_step"},
 }}};
 inline std::string_view collisionMethodName(CollisionMethod method) { return kCollisionMethodNames.name(method); }
 inline std::optional<CollisionMethod> collisionMethodFromName(std::string_view name) { return kCollisionMethodNames.parse(name); }
@@ -72,6 +74,10 @@ struct RestingRecord {
   // contact rather than coming to rest
   bool moving = false;
 };
+
+// the same pair and the same features as last step start from last step's impulses (warm
+// starting); both lists sorted by pair
+void matchWarmStart(const std::vector<Contact>& previous, std::vector<Contact>& fresh);
 
 // pair coefficients (documented in scenes/README.md): the larger restitution (a bouncy ball
 // bounces on any floor, as in Box2D) and the geometric mean of the frictions

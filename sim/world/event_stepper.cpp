@@ -170,10 +170,7 @@ class EventStepper final : public Method {
   void resolveCollisions(World& world, const TimeStep& step) override {
     if (!atImpact_) return;
     resolveImpactsAt(world, step, now_);
-    if (++count_ > settings::kMaxImpactsPerStep)
-      throw std::runtime_error("more than " + std::to_string(settings::kMaxImpactsPerStep) +
-                               " impacts in one step at t = " + std::to_string(now_) +
-                               ": impacts pile up; use --collisions sequential");
+    if (++count_ > settings::kMaxImpactsPerStep) throw ImpactsPileUp(now_, settings::kMaxImpactsPerStep);
   }
 
   // contact forces of the resting pairs at state y: the smallest pushes that keep every resting

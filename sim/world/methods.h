@@ -5,6 +5,7 @@
 //   none        free_motion.cpp        bodies pass through each other
 //   isolated    isolated_solver.cpp    the notes' impulse at each overlap after a fixed step
 //   sequential  sequential_solver.cpp  sequential impulses, warm started (Catto 2006)
+//   soft_step   soft_step_solver.cpp   soft contacts in substeps, relaxed (Box2D v3, Catto 2024)
 //   event       event_stepper.cpp      exact: to each time of impact, the notes' impulse there
 #pragma once
 
@@ -52,6 +53,7 @@ class Method {
 std::unique_ptr<Method> makeFreeMotion();
 std::unique_ptr<Method> makeIsolatedSolver();
 std::unique_ptr<Method> makeSequentialSolver();
+std::unique_ptr<Method> makeSoftStepSolver();
 std::unique_ptr<Method> makeEventStepper();
 // the unit of a method by its name (`auto` must be resolved first: World::start)
 std::unique_ptr<Method> makeMethod(CollisionMethod method);

@@ -14,6 +14,11 @@ using namespace sim::collision;
 Diverged::Diverged(double t, int b)
     : std::runtime_error("state is no longer finite at t = " + std::to_string(t)), time(t), body(b) {}
 
+ImpactsPileUp::ImpactsPileUp(double t, int n)
+    : std::runtime_error("more than " + std::to_string(n) + " impacts in one step at t = " + std::to_string(t) +
+                         ": impacts pile up; use --collisions sequential"),
+      time(t) {}
+
 InitialOverlap::InitialOverlap(int a_, int b_, double d)
     : std::runtime_error("bodies overlap at the start"), a(a_), b(b_), depth(d) {}
 
@@ -114,6 +119,7 @@ void World::chooseMethod() {
   } else {
     collisions = CollisionMethod::Event;
     methodReason = MethodReason::IsolatedImpacts;
+    mayStackUp_ = true;
   }
 }
 
@@ -123,6 +129,7 @@ std::unique_ptr<Method> makeMethod(CollisionMethod method) {
     case CollisionMethod::None: return makeFreeMotion();
     case CollisionMethod::Isolated: return makeIsolatedSolver();
     case CollisionMethod::Sequential: return makeSequentialSolver();
+    case CollisionMethod::SoftStep: return makeSoftStepSolver();
     case CollisionMethod::Event: return makeEventStepper();
   }
   return makeFreeMotion();
@@ -158,10 +165,33 @@ void World::advanceTo(double tEnd, StepObserver* observer) {
 }
 
 // one step of size h, in the notes' order (Box2D-Lite's World::Step); what each stage does is the
-// collision method's (methods.h)
+// collision method's (methods.h). Under `auto`, when the event method finds impacts piling up (a
+// stack or a pile forming), the step is done again from where it began by the stack solver, which
+// goes on from there (issue 14: `auto` builds a stack instead of failing).
 void World::step(double h) {
   const TimeStep thisStep{time, h};
-  Method& method = *method_;
+  if (!mayStackUp_) {
+    stepWith(*method_, thisStep);
+  } else {
+    stepStart_ = states();
+    const size_t impactsBefore = impacts.size(), restingBefore = resting.size();
+    try {
+      stepWith(*method_, thisStep);
+    } catch (const ImpactsPileUp&) {
+      setStates(stepStart_);
+      // what the undone attempt recorded did not happen
+      impacts.resize(impactsBefore);
+      resting.resize(restingBefore);
+      switchToStackSolver(thisStep.start);
+      stepWith(*method_, thisStep);
+    }
+  }
+  ++steps;
+  // stop at the first non-finite state rather than carry NaN forward
+  checkFinite(time + h);
+}
+
+void World::stepWith(Method& method, const TimeStep& thisStep) {
   // what the method needs of where the step begins (sequential: the contacts, warm started)
   method.beginStep(*this, thisStep);
   bool atImpact = false;
@@ -172,9 +202,17 @@ void World::step(double h) {
     // collisions and impulses where the motion stopped; after an impact the motion goes on
     method.resolveCollisions(*this, thisStep);
   } while (atImpact);
-  ++steps;
-  // stop at the first non-finite state rather than carry NaN forward
-  checkFinite(time + h);
+}
+
+// the stack solver from `at` on: the start of the step in which the impacts piled up
+void World::switchToStackSolver(double at) {
+  collisions = CollisionMethod::Sequential;
+  methodReason = MethodReason::StackFormed;
+  methodSwitchTime = at;
+  mayStackUp_ = false;
+  contacts.clear();
+  method_ = OwnedMethod(makeMethod(collisions));
+  method_->start(*this);
 }
 
 void World::applyDueEvents(StepObserver* observer) {

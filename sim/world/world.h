@@ -3,6 +3,7 @@
 // "Collisions").
 #pragma once
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -51,8 +52,15 @@ struct InitialOverlap : std::runtime_error {
   double depth;
 };
 
-// why the collision method is what it is (`auto` explains its choice)
-enum class MethodReason { Requested, FewBodies, IsolatedImpacts, PersistentContacts };
+// the event method gave up: impacts piled up in one step (a stack or a pile is forming)
+struct ImpactsPileUp : std::runtime_error {
+  ImpactsPileUp(double time, int impacts);
+  double time;
+};
+
+// why the collision method is what it is (`auto` explains its choice, and its switch when a stack
+// forms during the run: StackFormed, at methodSwitchTime)
+enum class MethodReason { Requested, FewBodies, IsolatedImpacts, PersistentContacts, StackFormed };
 
 // The world holds the bodies, the forces, the contacts and the time; the collision method
 // (methods.h) decides how a step answers touching bodies.
@@ -65,8 +73,10 @@ class World {
   double dt = settings::kDefaultDt;
   CollisionMethod collisions = CollisionMethod::Auto;  // resolved when the run starts
   MethodReason methodReason = MethodReason::Requested;
+  std::optional<double> methodSwitchTime;  // when `auto` went from event to the stack solver
   int velocityIterations = settings::kVelocityIterations;
   int positionIterations = settings::kPositionIterations;
+  int substeps = settings::kSubsteps;  // soft_step: substeps per step
 
   double time = 0.0;
   long steps = 0;
@@ -101,6 +111,8 @@ class World {
   void chooseMethod();
   double nextStop(double tEnd) const;
   void step(double h);
+  void stepWith(Method& method, const TimeStep& step);
+  void switchToStackSolver(double at);
   void applyDueEvents(StepObserver* observer);
   void checkFinite(double t) const;
 
@@ -111,6 +123,8 @@ class World {
   long gridIndex_ = 0;                 // time lies in [gridIndex_ dt, (gridIndex_ + 1) dt)
   double sceneSize_ = 1.0;
   OwnedMethod method_;                 // the unit of `collisions`, made by start()
+  bool mayStackUp_ = false;            // `auto` chose event: a stack forming switches to sequential
+  States stepStart_;                   // the states where the step began, to redo it on a switch
   mutable std::vector<Vec2> force_;    // scratch of rates()
   mutable std::vector<double> torque_;
 };

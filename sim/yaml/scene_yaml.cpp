@@ -35,11 +35,12 @@ class SceneReader : public Reader {
       optional(w, "friction", s.friction, &Reader::nonNegative);
     }
     if (const YAML::Node sim = root["sim"]) {
-      checkKeys(sim, {"integrator", "dt", "collisions", "iterations", "position_iterations"}, "sim");
+      checkKeys(sim, {"integrator", "dt", "collisions", "iterations", "position_iterations", "substeps"}, "sim");
       if (sim["collisions"])
         s.collisions = named(sim["collisions"], "collisions", collisionMethodFromName, kCollisionMethodNames.list());
       if (sim["iterations"]) s.velocityIterations = wholeNumber(sim["iterations"], "iterations", 1, 1000);
       if (sim["position_iterations"]) s.positionIterations = wholeNumber(sim["position_iterations"], "position_iterations", 0, 1000);
+      if (sim["substeps"]) s.substeps = wholeNumber(sim["substeps"], "substeps", 1, 1000);
       if (sim["integrator"])
         s.integrator = named(sim["integrator"], "integrator", integratorFromName, kIntegratorNames.list());
       optional(sim, "dt", s.dt, &Reader::positive);

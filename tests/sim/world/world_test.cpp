@@ -2,7 +2,9 @@
 
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <string>
+#include <vector>
 
 #include "sim/scene/scene_build.h"
 #include "sim/world/diagnostics.h"
@@ -203,7 +205,7 @@ forces:
 
 TEST_CASE("pinned state hashes after N steps: a stack (sequential), impacts (event), isolated, forces (rk4)") {
   const Pinned pinned[] = {
-      {"stack", kStack, 300, 7338306113260989510ull},
+      {"stack", kStack, 300, 10102337099448949820ull},
       {"collisions", kCollisions, 300, 4991025036088471707ull},
       {"isolated", kIsolated, 400, 7426225104588946998ull},
       {"forces", kForces, 150, 17502462243100700567ull},
@@ -229,4 +231,57 @@ TEST_CASE("a copy of a world goes on exactly as the world would: the collision m
   copy.advanceTo(3.0);
   CHECK(sim::world::stateHash(copy) == sim::world::stateHash(original));
   CHECK(copy.impacts.size() == original.impacts.size());
+}
+
+namespace {
+
+// Box2D's testbed pyramid, base 5: rows of 1 m boxes 0.25 m apart, dropped onto a ground box; no
+// two bodies touch at the start, so `auto` begins with the event method
+std::string droppedPile(const char* collisions) {
+  std::string s = std::string("world: {gravity: [0, -10], friction: 0.6, restitution: 0}\nsim: {collisions: ") +
+                  collisions + ", dt: 0.016666666666666667}\nbodies:\n"
+                  "  - {name: ground, shape: {box: [40, 1]}, static: true, position: [0, -0.5]}\n";
+  for (int r = 0; r < 5; ++r)
+    for (int j = 0; j < 5 - r; ++j)
+      s += "  - {name: b" + std::to_string(r) + std::to_string(j) + ", shape: {box: [1, 1]}, position: [" +
+           std::to_string(-2.25 + 0.5625 * r + 1.125 * j) + ", " + std::to_string(0.75 + 1.25 * r) + "]}\n";
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("auto builds a stack: events until impacts pile up, then the stack solver from that step on") {
+  sim::world::World w = sim::scene::buildWorld(sim::yaml::loadSceneText(droppedPile("auto"), "inline.yaml"));
+  std::vector<double> restX;
+  for (const sim::core::Body& b : w.bodies) restX.push_back(b.x.x());
+  w.start();
+  CHECK(w.collisions == sim::world::CollisionMethod::Event);
+  CHECK_FALSE(w.methodSwitchTime);
+  w.advanceTo(10.0);
+  // the switch, reported: which method, why, and from when (the start of a step, as the pile forms
+  // once the lowest rows land, before 1 s)
+  CHECK(w.collisions == sim::world::CollisionMethod::Sequential);
+  CHECK(w.methodReason == sim::world::MethodReason::StackFormed);
+  REQUIRE(w.methodSwitchTime);
+  CHECK(*w.methodSwitchTime > 0.0);
+  CHECK(*w.methodSwitchTime < 1.0);
+  const double steps = *w.methodSwitchTime / w.dt;
+  CHECK(std::abs(steps - std::round(steps)) < 1e-6);
+  // the pile at rest, in place: every box slower than 1 cm/s and within 0.1 m of its rest x
+  for (size_t i = 1; i < w.bodies.size(); ++i) {
+    CAPTURE(i);
+    CHECK(w.bodies[i].v.norm() < 0.01);
+    CHECK(std::abs(w.bodies[i].omega) < 0.01);
+    CHECK(std::abs(w.bodies[i].x.x() - restX[i]) < 0.1);
+  }
+  // the records of the attempt that was undone are gone: no impact at or after the switch is
+  // the event method's, and every later one is at a step's end
+  for (const sim::world::ImpactRecord& r : w.impacts)
+    if (r.t > *w.methodSwitchTime) CHECK(std::abs(r.t / w.dt - std::round(r.t / w.dt)) < 1e-6);
+  for (const sim::world::RestingRecord& r : w.resting) CHECK(r.t <= *w.methodSwitchTime);
+
+  // named explicitly, event keeps to itself and gives up as before
+  sim::world::World event = sim::scene::buildWorld(sim::yaml::loadSceneText(droppedPile("event"), "inline.yaml"));
+  CHECK_THROWS_AS(event.advanceTo(10.0), sim::world::ImpactsPileUp);
+  CHECK(event.collisions == sim::world::CollisionMethod::Event);
 }

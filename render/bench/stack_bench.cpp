@@ -1,8 +1,10 @@
-// rigidreel_box2d_peer: the same stack layouts (stack_layouts.h) run through rigidreel's World and
-// through Box2D 2.4 (Debian's libbox2d-dev) with the same settings, in one run, and measured the
-// same way: the top box's displacement, the bulge |x − rest x|, the fastest body at the end and the
-// worst of both over the second half, and the wall and processor time per step. Timings are never
-// asserted; ratios are taken within one run, since the machines are shared and noisy.
+// rigidreel_stack_bench (`make bench`): the same stack layouts (stack_layouts.h) run through
+// rigidreel's stack solvers (`--method`, repeatable) and, where Debian's libbox2d-dev was found at
+// build time, through Box2D 2.4 with the same settings, in one run, and measured the same way: the
+// top box's displacement, the bulge |x − rest x|, the fastest body at the end and the worst of both
+// over the second half, and the wall and processor time per step over all the steps (after
+// building). Timings are never asserted; ratios are taken within one run, since the machines are
+// shared and noisy.
 //
 // rigidreel is reached only through scene definitions and World's public members (bodies,
 // advanceTo), so the program does not depend on how World is organised inside.
@@ -13,7 +15,9 @@
 // the boxes as Box2D's testbed does (its touching layout then starts 2 cm deep at every contact).
 // Box2D's tolerances are compiled into the library; rigidreel's match them (sim/core/settings.h:
 // linear slop 0.5 cm, Baumgarte 0.2, largest correction 0.2 m, restitution threshold 1 m/s).
+#if RIGIDREEL_HAVE_BOX2D
 #include <box2d/box2d.h>
+#endif
 
 #include <CLI/CLI.hpp>
 #include <chrono>
@@ -101,7 +105,8 @@ RunResult run(StackRun& engine, const char* name, const bench::StackLayout& layo
 
 // --- rigidreel, through a scene definition and World's public members ---
 
-sim::scene::SceneDef sceneOf(const bench::StackLayout& layout, const bench::StackSettings& s) {
+sim::scene::SceneDef sceneOf(const bench::StackLayout& layout, const bench::StackSettings& s,
+                             sim::world::CollisionMethod method) {
   sim::scene::SceneDef def;
   def.name = layout.name;
   def.gravity = {0.0, s.gravity};
@@ -109,7 +114,7 @@ sim::scene::SceneDef sceneOf(const bench::StackLayout& layout, const bench::Stac
   def.duration = 1e9;
   def.friction = s.friction;
   def.restitution = s.restitution;
-  def.collisions = sim::world::CollisionMethod::Sequential;
+  def.collisions = method;
   def.velocityIterations = s.velocityIterations;
   def.positionIterations = s.positionIterations;
   sim::scene::BodyDef ground;
@@ -131,8 +136,8 @@ sim::scene::SceneDef sceneOf(const bench::StackLayout& layout, const bench::Stac
 
 class OurRun : public StackRun {
  public:
-  OurRun(const bench::StackLayout& layout, const bench::StackSettings& s)
-      : world_(sim::scene::buildWorld(sceneOf(layout, s))), dt_(s.dt) {
+  OurRun(const bench::StackLayout& layout, const bench::StackSettings& s, sim::world::CollisionMethod method)
+      : world_(sim::scene::buildWorld(sceneOf(layout, s, method))), dt_(s.dt) {
     world_.start();
   }
   void advance(int steps) override {
@@ -155,6 +160,7 @@ class OurRun : public StackRun {
 };
 
 // --- Box2D 2.4 ---
+#if RIGIDREEL_HAVE_BOX2D
 
 class Box2dRun : public StackRun {
  public:
@@ -213,6 +219,7 @@ class Box2dRun : public StackRun {
   bench::StackSettings settings_;
   std::vector<b2Body*> boxes_;
 };
+#endif
 
 // "pyramid:100:touching", "pyramid:20:dropped", "stack:10"
 std::optional<bench::StackLayout> parseLayout(const std::string& spec) {
@@ -231,13 +238,15 @@ std::optional<bench::StackLayout> parseLayout(const std::string& spec) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"rigidreel against Box2D 2.4 on the same stack layouts, at Box2D's benchmark settings"};
+  CLI::App app{"rigidreel's stack solvers against Box2D 2.4 on the same stack layouts, at Box2D's benchmark settings"};
   std::vector<std::string> layoutSpecs{"pyramid:20:touching", "pyramid:20:dropped", "pyramid:100:touching",
                                        "pyramid:100:dropped"};
+  std::vector<std::string> methods{"sequential"};
   std::string engine = "both", skin = "outer", csvPath;
   bench::StackSettings settings;
   RunOptions options;
   app.add_option("--layout", layoutSpecs, "pyramid:BASE:touching, pyramid:BASE:dropped or stack:HEIGHT (repeatable)");
+  app.add_option("--method", methods, "rigidreel's collision method (repeatable): sequential, soft_step, ...");
   app.add_option("--engine", engine, "both, ours or box2d")->check(CLI::IsMember({"both", "ours", "box2d"}));
   app.add_option("--steps", options.steps, "steps of dt (600: 10 s)")->check(CLI::PositiveNumber);
   app.add_option("--dt", settings.dt, "time step, s");
@@ -251,6 +260,24 @@ int main(int argc, char** argv) {
   app.add_option("--csv", csvPath, "append one row per layout and engine to this file");
   CLI11_PARSE(app, argc, argv);
   options.box2dOuterSkin = skin == "outer";
+  std::vector<sim::world::CollisionMethod> ourMethods;
+  for (const std::string& name : methods) {
+    const std::optional<sim::world::CollisionMethod> m = sim::world::collisionMethodFromName(name);
+    if (!m || *m == sim::world::CollisionMethod::Auto) {
+      std::cerr << "--method: unknown collision method '" << name << "'\n";
+      return 2;
+    }
+    ourMethods.push_back(*m);
+  }
+#if RIGIDREEL_HAVE_BOX2D
+  const bool box2d = engine != "ours";
+  std::printf("Box2D %d.%d.%d (b2_version), skin %s, continuous %s, sleeping off\n", b2_version.major, b2_version.minor,
+              b2_version.revision, skin.c_str(), options.box2dContinuous ? "on" : "off");
+#else
+  [[maybe_unused]] const bool box2d = false;
+  std::printf("Box2D: not built in (install Debian's libbox2d-dev and reconfigure; `make bench` does)\n");
+#endif
+  if (engine == "box2d") ourMethods.clear();
 
   std::ofstream csv;
   if (!csvPath.empty()) {
@@ -261,14 +288,14 @@ int main(int argc, char** argv) {
              "max_off_rest_x_m,fastest_m_per_s,fastest_rad_per_s,moved,worst_top_second_half_m,"
              "worst_fastest_second_half_m_per_s,diverged,cpu_ms_per_step\n";
   }
-  std::printf("gravity %g, dt %.6g, %d velocity and %d position iterations, friction %g, restitution %g, %d steps; "
-              "Box2D (b2_version %d.%d.%d), skin %s, continuous %s, sleeping off\n",
+  std::printf("gravity %g, dt %.6g, %d velocity and %d position iterations, friction %g, restitution %g, %d steps, "
+              "all timed after building\n",
               settings.gravity, settings.dt, settings.velocityIterations, settings.positionIterations, settings.friction,
-              settings.restitution, options.steps, b2_version.major, b2_version.minor, b2_version.revision, skin.c_str(),
-              options.box2dContinuous ? "on" : "off");
+              settings.restitution, options.steps);
   // at the end (10 s at 600 steps), and the worst over the second half, sampled every 10 steps
-  std::printf("%-22s %-6s %6s %9s %9s %9s %13s %11s %9s %6s %12s %12s\n", "layout", "engine", "boxes", "ms/step", "cpu ms", "top m",
-              "|x-rest x| m", "fastest m/s", "|w| rad/s", "moved", "worst top m", "worst m/s");
+  std::printf("%-22s %-10s %6s %9s %9s %9s %13s %11s %9s %6s %12s %12s %9s\n", "layout", "engine", "boxes", "ms/step",
+              "cpu ms", "top m", "|x-rest x| m", "fastest m/s", "|w| rad/s", "moved", "worst top m", "worst m/s",
+              "/box2d");
   int status = 0;
   for (const std::string& spec : layoutSpecs) {
     const std::optional<bench::StackLayout> layout = parseLayout(spec);
@@ -276,31 +303,36 @@ int main(int argc, char** argv) {
       std::cerr << "unknown layout '" << spec << "'\n";
       return 2;
     }
-    std::optional<RunResult> ours, peer;
-    auto row = [&](const char* name, const RunResult& r) {
+    // Box2D first, so that each of ours prints its ratio to it
+    std::optional<RunResult> peer;
+    auto row = [&](const std::string& name, const RunResult& r) {
       const bench::StackMetrics& m = r.metrics;
-      std::printf("%-22s %-6s %6zu %9.3f %9.3f %9.4f %13.4f %11.4f %9.4f %6d %12.4f %12.4f%s\n", layout->name.c_str(), name,
-                  layout->boxes.size(), r.msPerStep, r.cpuMsPerStep, m.topDisplacement, m.maxOffRestX, m.fastestSpeed, m.fastestSpin,
-                  m.moved, r.worstTop, r.worstSpeed, r.diverged ? "  DIVERGED" : "");
+      char ratio[32] = "";
+      if (peer && &r != &*peer) std::snprintf(ratio, sizeof ratio, "%9.2f", r.cpuMsPerStep / peer->cpuMsPerStep);
+      std::printf("%-22s %-10s %6zu %9.3f %9.3f %9.4f %13.4f %11.4f %9.4f %6d %12.4f %12.4f %9s%s\n", layout->name.c_str(),
+                  name.c_str(), layout->boxes.size(), r.msPerStep, r.cpuMsPerStep, m.topDisplacement, m.maxOffRestX,
+                  m.fastestSpeed, m.fastestSpin, m.moved, r.worstTop, r.worstSpeed, ratio, r.diverged ? "  DIVERGED" : "");
       if (csv.is_open())
         csv << layout->name << ',' << name << ',' << layout->boxes.size() << ',' << options.steps << ','
             << settings.velocityIterations << ',' << settings.positionIterations << ',' << r.msPerStep << ','
             << m.topDisplacement << ',' << m.maxOffRestX << ',' << m.fastestSpeed << ',' << m.fastestSpin << ','
             << m.moved << ',' << r.worstTop << ',' << r.worstSpeed << ',' << r.diverged << ',' << r.cpuMsPerStep << '\n';
       std::fflush(stdout);
+      status |= r.diverged;
     };
-    if (engine != "box2d") {
-      OurRun e(*layout, settings);
-      row("ours", *(ours = run(e, "ours", *layout, options)));
-    }
-    if (engine != "ours") {
+#if RIGIDREEL_HAVE_BOX2D
+    if (box2d) {
       Box2dRun e(*layout, settings, options);
-      row("box2d", *(peer = run(e, "box2d", *layout, options)));
+      peer = run(e, "box2d", *layout, options);
+      row("box2d", *peer);
     }
-    if (ours && peer)
-      std::printf("%-22s ratio  ours/box2d time per step %.2f (wall), %.2f (cpu)\n", layout->name.c_str(),
-                  ours->msPerStep / peer->msPerStep, ours->cpuMsPerStep / peer->cpuMsPerStep);
-    status |= (ours && ours->diverged) || (peer && peer->diverged);
+#endif
+    for (sim::world::CollisionMethod method : ourMethods) {
+      const std::string name(sim::world::collisionMethodName(method));
+      OurRun e(*layout, settings, method);
+      row(name, run(e, name.c_str(), *layout, options));
+    }
   }
+  std::printf("/box2d: processor time per step against Box2D 2.4's in this run\n");
   return status;
 }
