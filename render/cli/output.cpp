@@ -46,7 +46,11 @@ std::string outputDirectory(const std::string& root, const std::string& scene) {
   return dir.string();
 }
 
-std::string outputBase(const sim::scene::SceneDef& def) { return def.variant.empty() ? def.name : def.name + "-" + def.variant; }
+std::string outputBase(const sim::scene::SceneDef& def) { return outputBase(def.name, def.variant); }
+
+std::string outputBase(const std::string& scene, const std::string& variant) {
+  return variant.empty() ? scene : scene + "-" + variant;
+}
 
 std::string timeForName(double t) {
   char buf[32];

@@ -21,6 +21,7 @@ void checkFps(double fps, const std::string& option = "--fps");
 std::string outputDirectory(const std::string& root, const std::string& scene);
 // "<scene>" or "<scene>-<variant>": the start of every output name of a run
 std::string outputBase(const sim::scene::SceneDef& def);
+std::string outputBase(const std::string& scene, const std::string& variant);
 // the poll slide's file name: "<scene>-panels<when>[-strobe<N>].png", `when` "-t1.5" or "-impact2"
 std::string panelsFileName(const std::string& scene, const std::string& when, int strobe);
 // "-strobe<N>" for a still with N ghosts, "" without

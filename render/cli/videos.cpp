@@ -1,7 +1,5 @@
 #include "render/cli/videos.h"
 
-#include <unistd.h>
-
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -12,6 +10,7 @@
 #include "render/cli/output.h"
 #include "render/draw/png_io.h"
 #include "render/frame/scene_run.h"
+#include "render/jobs/atomic_file.h"
 #include "render/jobs/progress.h"
 #include "render/video/recorder.h"
 #include "render/video/time_map.h"
@@ -35,30 +34,6 @@ class VideoSink : public FrameSink {
 
  private:
   VideoWriter& video_;
-};
-
-// a directory filled under a temporary name and renamed over the old one when complete
-class StagedDirectory {
- public:
-  explicit StagedDirectory(const fs::path& final)
-      : final_(final), staging_(final.parent_path() / ("." + final.filename().string() + ".part-" + std::to_string(::getpid()))) {
-    fs::remove_all(staging_);
-    fs::create_directories(staging_);
-  }
-  ~StagedDirectory() {
-    std::error_code ignored;
-    if (!committed_) fs::remove_all(staging_, ignored);
-  }
-  std::string path() const { return staging_.string(); }
-  void commit() {
-    fs::remove_all(final_);
-    fs::rename(staging_, final_);
-    committed_ = true;
-  }
-
- private:
-  fs::path final_, staging_;
-  bool committed_ = false;
 };
 
 // one video of one variant (or of the base scene)
@@ -86,7 +61,7 @@ void renderOne(const VideoOptions& o, const render::scene::Scene& def, const Wro
   std::unique_ptr<StagedDirectory> framesDir;
   std::unique_ptr<PngFrames> pngFrames;
   if (o.frames) {
-    framesDir = std::make_unique<StagedDirectory>(fs::path(dir) / (base + "-frames"));
+    framesDir = std::make_unique<StagedDirectory>((fs::path(dir) / (base + "-frames")).string());
     pngFrames = std::make_unique<PngFrames>(framesDir->path(), count);
     sinks.push_back(pngFrames.get());
   }

@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <stdexcept>
 
 namespace render::jobs {
@@ -27,6 +28,26 @@ void AtomicFile::commit() {
   out_.close();
   if (!ok || std::rename(temporary_.c_str(), path_.c_str()) != 0)
     throw std::runtime_error(path_ + ": could not finish writing (" + std::strerror(errno) + ")");
+  committed_ = true;
+}
+
+namespace fs = std::filesystem;
+
+StagedDirectory::StagedDirectory(const std::string& final) : final_(final) {
+  const fs::path path(final);
+  staging_ = (path.parent_path() / ("." + path.filename().string() + ".part-" + std::to_string(::getpid()))).string();
+  fs::remove_all(staging_);
+  fs::create_directories(staging_);
+}
+
+StagedDirectory::~StagedDirectory() {
+  std::error_code ignored;
+  if (!committed_) fs::remove_all(staging_, ignored);
+}
+
+void StagedDirectory::commit() {
+  fs::remove_all(final_);
+  fs::rename(staging_, final_);
   committed_ = true;
 }
 
