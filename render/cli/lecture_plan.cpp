@@ -6,6 +6,7 @@
 #include "render/cli/commands.h"
 #include "render/cli/output.h"
 #include "render/cli/scene_options.h"
+#include "render/cli/space3d.h"
 #include "render/frame/survey.h"
 #include "sim/yaml/scene_yaml.h"
 
@@ -63,6 +64,11 @@ void checkPanels(LecturePlan& plan) {
 }  // namespace
 
 LecturePlan planLecture(const std::string& file) {
+  if (isSceneFile3d(file)) {
+    LecturePlan plan = planLecture3d(file);
+    checkPanels(plan);
+    return plan;
+  }
   LecturePlan plan{file, readSceneFile(file).scene, {}};
   if (plan.base.model.variantNames.empty()) plan.videos.push_back(plan.base);
   for (const std::string& v : plan.base.model.variantNames) plan.videos.push_back(readSceneFile(file, v).scene);

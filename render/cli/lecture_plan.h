@@ -14,6 +14,8 @@ namespace render::cli {
 // a path that does not exist and for a directory without scenes
 std::vector<std::string> lectureSceneFiles(const std::vector<std::string>& arguments);
 
+// for a 3D scene (dimensions: 3) the scenes hold its names, durations and render: blocks, all the
+// pack reads of them (lecture_plan3d.cpp)
 struct LecturePlan {
   std::string file;
   render::scene::Scene base;                 // the scene without a variant: its name and its `panels`

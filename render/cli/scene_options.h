@@ -22,6 +22,9 @@ struct SceneOptions {
   void addTo(CLI::App& command);
   // the scene with the overrides applied; throws sim::yaml::SceneError or UsageError
   SceneFile load() const;
+  // the same for a 3D scene (dimensions: 3), whose integrators include the splitting and which has
+  // no collision method to choose
+  SceneFile3 load3() const;
 };
 
 // the scene's world, started: `auto` resolved and the start state checked; bodies that overlap

@@ -4,6 +4,7 @@
 
 #include "render/cli/commands.h"
 #include "render/cli/output.h"
+#include "render/cli/space3d.h"
 #include "render/draw/png_io.h"
 #include "render/frame/energy_panel.h"
 #include "render/frame/panels.h"
@@ -32,6 +33,7 @@ void writeSnapshots(const SnapshotOptions& o, const Wrote& wrote) {
   if (o.strobe && (*o.strobe < 0 || *o.strobe > 100)) throw UsageError("--strobe: give a number of ghosts from 0 to 100");
   std::optional<FrameSize> size;
   if (!o.size.empty()) size = parseSize(o.size);
+  if (isSceneFile3d(o.scene)) return writeSnapshots3d(o, size, wrote);
 
   // the variants: every one side by side, or the one asked for (or the base scene)
   std::vector<std::string> names = {o.variant};

@@ -8,6 +8,7 @@
 
 #include "render/cli/commands.h"
 #include "render/cli/output.h"
+#include "render/cli/space3d.h"
 #include "render/draw/png_io.h"
 #include "render/frame/scene_run.h"
 #include "render/jobs/atomic_file.h"
@@ -99,6 +100,7 @@ int renderVideos(const VideoOptions& o, const Wrote& wrote) {
   if (o.fps) checkFps(*o.fps);
   if (o.duration && (!(*o.duration > 0.0) || !std::isfinite(*o.duration)))
     throw UsageError("--duration: the length of the video must be a positive number of seconds");
+  if (isSceneFile3d(o.scene)) return renderVideos3d(o, size, wrote);
 
   // the variants to render: every one (the base scene when there are none, as `check` does), the
   // one asked for, or the base scene
