@@ -6,6 +6,8 @@
 #include <string>
 
 #include "render/cli/scene_file.h"
+#include "render/video/render_plan.h"
+#include "render/video/render_plan3.h"
 #include "sim/scene/scene_def.h"
 #include "sim/world/world.h"
 
@@ -25,6 +27,10 @@ struct SceneOptions {
   // the same for a 3D scene (dimensions: 3), whose integrators include the splitting and which has
   // no collision method to choose
   SceneFile3 load3() const;
+  // any variant of the scene ("" the base scene) with the overrides applied, as a render plan reads them
+  render::video::LoadVariant variantLoader() const;
+  // the same for a 3D scene's variants
+  render::video::LoadVariant3 variantLoader3() const;
 };
 
 // the scene's world, started: `auto` resolved and the start state checked; bodies that overlap
@@ -33,5 +39,10 @@ sim::world::World startWorld(const sim::scene::SceneDef& def, const std::string&
 
 // "event: no bodies touch at the start, so impacts are isolated"
 std::string describeCollisionMethod(const sim::world::World& world);
+
+// where the event method turned a pile-up of impacts into resting contact: "'ball' and 'floor' came
+// to rest at t = 2.4 (...)", or, when the pair keeps sliding or turning while it touches, "'bar' and
+// 'floor' stay in contact from t = 0.5 (...)"
+std::string describeResting(const sim::scene::SceneDef& def, const sim::world::RestingRecord& record);
 
 }  // namespace render::cli

@@ -5,12 +5,10 @@
 #include <optional>
 #include <string>
 
-#include "render/cli/lecture_plan.h"
 #include "render/cli/method_lists.h"
 #include "render/cli/output.h"
 #include "render/cli/scene_options.h"
-#include "render/cli/snapshots.h"
-#include "render/cli/videos.h"
+#include "render/video/render_plan3.h"
 #include "sim/world3d/world.h"
 
 namespace render::cli {
@@ -24,13 +22,8 @@ bool check3d(const std::string& file);
 // `sweep` and `stability`
 int sweep3d(const SceneOptions& scene, const MethodLists& methods, const std::string& dt, int repeat, const std::string& outDir);
 int stability3d(const SceneOptions& scene, const MethodLists& methods, const std::string& outDir);
-// `render`, `snapshot` and a `lecture` job, as renderVideos and writeSnapshots, once they have
-// checked the options (a --size among them); the snapshots' times are checked here
-int renderVideos3d(const VideoOptions& options, const std::optional<FrameSize>& size, const Wrote& wrote);
-void writeSnapshots3d(const SnapshotOptions& options, const std::optional<FrameSize>& size, const Wrote& wrote);
-// `lecture`'s plan of a 3D scene: its names, durations and render: blocks in the plan's 2D scenes
-// (what the pack's list and jobs read of them); each variant is read and its world built once
-LecturePlan planLecture3d(const std::string& file);
+// (`render`, `snapshot` and `lecture` make a 3D scene's plan with render_plan3.h and write it with
+// plan_writer3.h)
 
 // "the simulation diverged at t = …: body '…' has a non-finite state; try …", for standard error
 std::string divergedMessage(const std::string& file, const sim::scene3d::SceneDef& def, const sim::world3d::Diverged& d);

@@ -6,7 +6,7 @@
 #include <cstdio>
 
 #include "render/frame/frame_painter.h"
-#include "render/frame/label_place.h"
+#include "render/draw/text.h"
 #include "render/frame/quantity_text.h"
 #include "render/scene/scene_style.h"
 
@@ -28,6 +28,20 @@ constexpr double kPathSpacingPx = 1.5;
 double arrowScale(double given, double largest, const Camera3& camera) {
   if (given > 0.0) return given;
   return largest > 0.0 ? kArrowFraction * camera.viewHeight() / largest : 1.0;
+}
+
+// the center of `text`'s box (`em` its size, px) beyond `anchor` in the unit `direction`, a third of a
+// line clear of it: the half-extent of the box along the direction is its support distance
+Vec2 labelBeyond(const Vec2& anchor, const Vec2& direction, const std::string& text, double em) {
+  const double halfWidth = 0.5 * render::draw::approximateWidth(text, em), halfHeight = 0.5 * render::draw::kLineHeight * em;
+  const double reach = std::abs(direction.x()) * halfWidth + std::abs(direction.y()) * halfHeight;
+  return anchor + direction * (reach + em / 3.0);
+}
+
+// a unit vector along v, or `fallback` when v has no length
+Vec2 directionOr(const Vec2& v, const Vec2& fallback) {
+  const double n = v.norm();
+  return n > 0.0 ? Vec2(v / n) : fallback;
 }
 
 std::string defaultLabel(Arrow3Def::Show show) {
@@ -86,7 +100,7 @@ void FramePainter3::arrow(const Vec3& tail, const Vec3& head, const Pen& pen, co
   // an arrow under a pixel long has nothing to show, not even its direction
   if ((*h - *t).norm() >= 1.0) draw.arrow(*t, *h, pen);
   if (!label.empty())
-    draw.text(render::frame::labelBeyond(*h, render::frame::directionOr(*h - *t, Vec2::UnitY()), label, em_), label,
+    draw.text(labelBeyond(*h, directionOr(*h - *t, Vec2::UnitY()), label, em_), label,
               {Role::Label, pen.body, 1.0});
 }
 
@@ -143,7 +157,7 @@ void FramePainter3::paintArrows(const World& world, const History3& history, Can
         path(points, Vec3::Zero(), {Role::Path, a.body, 1.0, color}, draw);
         if (const std::optional<Vec2> p = screen(points.back())) {
           draw.point(*p, {Role::Path, a.body, 1.0, color});
-          if (!name.empty()) draw.text(render::frame::labelBeyond(*p, Vec2::UnitY(), name, em_), name, {Role::Label, a.body, 1.0});
+          if (!name.empty()) draw.text(labelBeyond(*p, Vec2::UnitY(), name, em_), name, {Role::Label, a.body, 1.0});
         }
         break;
       }

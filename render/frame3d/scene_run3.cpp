@@ -38,7 +38,8 @@ render::draw::Image SceneRun3::frameAt(double t) {
 }
 
 render::draw::Image SceneRun3::titleCard() {
-  return render::frame::composeTitleCard(frameAt(0.0), render::frame::titleOf(def_.render, def_.model.name),
+  if (!text_) throw std::logic_error("SceneRun3::titleCard needs a text renderer");
+  return render::frame::composeTitleCard(camera_.widthPx(), camera_.heightPx(), render::frame::titleOf(def_.render, def_.model.name),
                                          def_.model.description, style_, *text_);
 }
 

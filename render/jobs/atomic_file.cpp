@@ -35,7 +35,11 @@ namespace fs = std::filesystem;
 
 StagedDirectory::StagedDirectory(const std::string& final) : final_(final) {
   const fs::path path(final);
-  staging_ = (path.parent_path() / ("." + path.filename().string() + ".part-" + std::to_string(::getpid()))).string();
+  // ".<name>.part-<pid>", appended piece by piece: g++ 12 warns of overlapping copies in "." + name
+  std::string name = ".";
+  name += path.filename().string();
+  name += ".part-" + std::to_string(::getpid());
+  staging_ = (path.parent_path() / name).string();
   fs::remove_all(staging_);
   fs::create_directories(staging_);
 }

@@ -48,25 +48,38 @@ EdgeSeparation maxSeparation(const WorldPolygon& p, const WorldPolygon& q) {
   return best;
 }
 
-// feature ids: which polygon holds the reference edge, that edge, the incident edge, and how the
-// point arose (incident vertex 0 or 1, or clipped by side plane 1 or 2)
-std::uint32_t featureId(bool referenceOnA, int referenceEdge, int incidentEdge, int tag) {
-  return (referenceOnA ? 1u : 0u) | (static_cast<std::uint32_t>(referenceEdge) & 0xffu) << 1 |
-         (static_cast<std::uint32_t>(incidentEdge) & 0xffu) << 9 | static_cast<std::uint32_t>(tag) << 17;
+// A point's id names the two features that make it, one of A and one of B: a vertex of one
+// polygon against an edge of the other (Box2D's b2ContactFeature). Which polygon holds the
+// reference edge does not enter it, so the id survives the reference passing from one polygon to
+// the other between steps, as it does all the time for two equal boxes face to face (their two
+// separations tie within round-off), and the sequential solver keeps warm starting the point.
+enum class FeatureKind : std::uint32_t { Vertex = 0, Edge = 1 };
+struct Feature {
+  FeatureKind kind;
+  int index;  // vertex i, or edge i from vertex i to i + 1
+};
+
+std::uint32_t featureId(bool referenceOnA, Feature reference, Feature incident) {
+  const auto bits = [](Feature f) {
+    return static_cast<std::uint32_t>(f.kind) | (static_cast<std::uint32_t>(f.index) & 0xffu) << 1;
+  };
+  return referenceOnA ? bits(reference) | bits(incident) << 9 : bits(incident) | bits(reference) << 9;
 }
 
 struct ClipPoint {
   Vec2 p;
-  int tag;
+  int incidentVertex;   // the incident edge's end it is, or -1
+  int referenceVertex;  // the reference vertex whose side plane cut the incident edge here, or -1
 };
 
-// keep the part of segment (in[0], in[1]) where normal·x ≤ offset (Box2D-Lite's ClipSegmentToLine)
-int clipSegment(const ClipPoint in[2], ClipPoint out[2], const Vec2& normal, double offset, int clipTag) {
+// keep the part of segment (in[0], in[1]) where normal·x ≤ offset (Box2D-Lite's ClipSegmentToLine);
+// the side plane is that of reference vertex `sideVertex`
+int clipSegment(const ClipPoint in[2], ClipPoint out[2], const Vec2& normal, double offset, int sideVertex) {
   int count = 0;
   const double d0 = normal.dot(in[0].p) - offset, d1 = normal.dot(in[1].p) - offset;
   if (d0 <= 0.0) out[count++] = in[0];
   if (d1 <= 0.0) out[count++] = in[1];
-  if (d0 * d1 < 0.0) out[count++] = {in[0].p + (d0 / (d0 - d1)) * (in[1].p - in[0].p), clipTag};
+  if (d0 * d1 < 0.0) out[count++] = {in[0].p + (d0 / (d0 - d1)) * (in[1].p - in[0].p), -1, sideVertex};
   return count;
 }
 
@@ -88,16 +101,21 @@ void clipToReference(const WorldPolygon& A, const WorldPolygon& B, const EdgeSep
     const double d = inc.n[i].dot(nRef);
     if (d < most) most = d, incEdge = static_cast<int>(i);
   }
-  const ClipPoint incident[2] = {{inc.v[incEdge], 0}, {inc.v[(incEdge + 1) % inc.size()], 1}};
-  const Vec2 v1 = ref.v[edge], v2 = ref.v[(edge + 1) % ref.size()];
+  const int incNext = (incEdge + 1) % static_cast<int>(inc.size()), refNext = (edge + 1) % static_cast<int>(ref.size());
+  const ClipPoint incident[2] = {{inc.v[incEdge], incEdge, -1}, {inc.v[incNext], incNext, -1}};
+  const Vec2 v1 = ref.v[edge], v2 = ref.v[refNext];
   const Vec2 t = (v2 - v1).normalized();
   ClipPoint once[3], twice[3];
-  if (clipSegment(incident, once, -t, -t.dot(v1), 2) < 2) return;
-  if (clipSegment(once, twice, t, t.dot(v2), 3) < 2) return;
+  if (clipSegment(incident, once, -t, -t.dot(v1), edge) < 2) return;
+  if (clipSegment(once, twice, t, t.dot(v2), refNext) < 2) return;
   for (int k = 0; k < 2; ++k) {
     const double sep = nRef.dot(twice[k].p - v1);
     if (sep > margin) continue;
-    m.points[m.count++] = {twice[k].p - 0.5 * sep * nRef, sep, featureId(refA, edge, incEdge, twice[k].tag)};
+    // an incident vertex against the reference edge, or a reference vertex against the incident edge
+    const std::uint32_t id = twice[k].referenceVertex >= 0
+                                 ? featureId(refA, {FeatureKind::Vertex, twice[k].referenceVertex}, {FeatureKind::Edge, incEdge})
+                                 : featureId(refA, {FeatureKind::Edge, edge}, {FeatureKind::Vertex, twice[k].incidentVertex});
+    m.points[m.count++] = {twice[k].p - 0.5 * sep * nRef, sep, id};
   }
 }
 
@@ -113,7 +131,7 @@ Manifold polygons(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb
   m.separation = m.sat.separation;
   // for the manifold, keep A's edge unless B's is clearly better, so the choice does not flip
   // from step to step on near ties (Box2D's b2CollidePolygons does the same)
-  const bool refA = !(eb.separation > ea.separation + 0.05 * settings::kContactMargin);
+  const bool refA = !(eb.separation > ea.separation + settings::kReferenceEdgeHysteresis);
   clipToReference(A, B, ea, eb, refA, margin, m);
   if (m.separation > margin) return m;
   // the kept edge's sides can miss the incident edge near a corner: then use the best edge
@@ -133,7 +151,7 @@ Manifold polygons(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb
     if (sep > margin) return m;
     m.normal = bestA ? Vec2(-n) : n;
     m.count = 1;
-    m.points[0] = {w - 0.5 * sep * n, sep, featureId(bestA, e, m.sat.incidentVertex, 4)};
+    m.points[0] = {w - 0.5 * sep * n, sep, featureId(bestA, {FeatureKind::Edge, e}, {FeatureKind::Vertex, m.sat.incidentVertex})};
   }
   m.separation = kInf;
   for (int k = 0; k < m.count; ++k) m.separation = std::min(m.separation, m.points[k].separation);
