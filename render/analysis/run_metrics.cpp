@@ -63,14 +63,27 @@ class Recorder : public StepObserver {
 
 }  // namespace
 
+void startEnergy(double kinetic, double potential, RunMetrics& m) {
+  // energies are relative to the start: |E(0)|, or its kinetic and potential parts when they cancel
+  m.energyStart = kinetic + potential;
+  m.energyScale = std::max({std::abs(m.energyStart), kinetic + std::abs(potential), 1e-300});
+}
+
+void summarizeEnergies(const std::vector<double>& e, RunMetrics& m) {
+  if (e.empty()) return;
+  for (double x : e) m.energyDrift = std::max(m.energyDrift, std::abs(x - m.energyStart) / m.energyScale);
+  const size_t third = std::max<size_t>(1, e.size() / 3);
+  const double first = *std::max_element(e.begin(), e.begin() + third);
+  const double last = *std::max_element(e.end() - third, e.end());
+  m.energyTrend = (last - first) / m.energyScale;
+}
+
 RunMetrics measureRun(World& world, double until, const MetricsOptions& options) {
   RunMetrics m;
   world.start();
   Recorder recorder(m, options);
-  // energies are relative to the start: |E(0)|, or its kinetic and potential parts when they cancel
   const Energy e0 = energy(world);
-  m.energyStart = e0.total();
-  m.energyScale = std::max({std::abs(m.energyStart), e0.kinetic + std::abs(e0.potential), 1e-300});
+  startEnergy(e0.kinetic, e0.potential, m);
 
   // watch every pair that starts apart: a dynamic body against anything
   for (const Contact& c : world.findContacts(std::numeric_limits<double>::infinity())) {
@@ -94,14 +107,7 @@ RunMetrics measureRun(World& world, double until, const MetricsOptions& options)
     m.divergedAt = d.time;
   }
   m.energyEnd = energy(world).total();
-  const std::vector<double>& e = recorder.energies;
-  if (!e.empty()) {
-    for (double x : e) m.energyDrift = std::max(m.energyDrift, std::abs(x - m.energyStart) / m.energyScale);
-    const size_t third = std::max<size_t>(1, e.size() / 3);
-    const double first = *std::max_element(e.begin(), e.begin() + third);
-    const double last = *std::max_element(e.end() - third, e.end());
-    m.energyTrend = (last - first) / m.energyScale;
-  }
+  summarizeEnergies(recorder.energies, m);
   if (top >= 0 && m.finite) m.topDrift = (world.bodies[top].x - topStart).norm() / topSize;
   return m;
 }

@@ -26,6 +26,9 @@ struct RunMetrics {
   int tunnelA = -1, tunnelB = -1;
   double topDrift = 0.0;        // the highest dynamic body's displacement over its size
   long steps = 0;
+  // 3D runs (run_metrics3.h): the largest |L(t) − L(0)| / |L(0)| about the origin, and | |q| − 1 |
+  double angularMomentumDrift = 0.0;
+  double quaternionDrift = 0.0;
   const char* failure = "";     // the first criterion that failed, or "" (see holds())
 };
 
@@ -34,6 +37,11 @@ struct MetricsOptions {
   bool energy = true;       // the energy criterion applies (no source of energy in the scene)
   bool stack = false;       // the stack-drift criterion applies
 };
+
+// the run's energy at the start, E(0) = kinetic + potential, and the scale drifts are relative to
+void startEnergy(double kinetic, double potential, RunMetrics& metrics);
+// the drift and the trend of the energies after every step (E(0) set by startEnergy)
+void summarizeEnergies(const std::vector<double>& energies, RunMetrics& metrics);
 
 // runs the world to `until` (it must not have started), recording the metrics step by step;
 // a divergence ends the run and is recorded, not thrown

@@ -99,15 +99,19 @@ bool holdsAt(const Study& study, double value, RunMetrics& metrics) {
 }
 
 StabilityResult findBoundary(const Study& def) {
-  StabilityResult r;
   const StabilityDef& s = def.stability;
   const bool integer = s.parameter == Parameter::StackHeight;
-  const double limit = s.to > 0.0 ? s.to : (integer ? 1000.0 : 1e12);
+  return searchBoundary(startValue(def), s.to > 0.0 ? s.to : (integer ? 1000.0 : 1e12), integer,
+                        [&](double value, RunMetrics& m) { return holdsAt(def, value, m); });
+}
+
+StabilityResult searchBoundary(double start, double limit, bool integer, const std::function<bool(double, RunMetrics&)>& holds) {
+  StabilityResult r;
   RunMetrics m;
-  double good = startValue(def), bad = 0.0;
+  double good = start, bad = 0.0;
 
   // a value that holds: halve until one does
-  for (int k = 0; !holdsAt(def, good, m); ++k) {
+  for (int k = 0; !holds(good, m); ++k) {
     bad = good, r.failing = m;
     if (k == 40 || (integer && good <= 1.0)) {
       r.failsEverywhere = true;
@@ -121,7 +125,7 @@ StabilityResult findBoundary(const Study& def) {
     double next = good;
     for (int k = 0;; ++k) {
       next = std::min(integer ? good + 1.0 : 2.0 * good, limit);
-      if (!holdsAt(def, next, m)) {
+      if (!holds(next, m)) {
         bad = next, r.failing = m;
         break;
       }
@@ -136,7 +140,7 @@ StabilityResult findBoundary(const Study& def) {
   // bisect the bracket
   while (integer ? bad - good > 1.0 : (bad - good) > 1e-3 * good) {
     const double mid = integer ? std::floor(0.5 * (good + bad)) : 0.5 * (good + bad);
-    if (holdsAt(def, mid, m)) good = mid;
+    if (holds(mid, m)) good = mid;
     else bad = mid, r.failing = m;
   }
   r.largestStable = good;
@@ -145,10 +149,15 @@ StabilityResult findBoundary(const Study& def) {
 }
 
 std::string describeFailure(const Study& study, const StabilityResult& r) {
-  std::ostringstream o;
   const sim::scene::SceneDef& def = study.model;
-  o << sim::core::integratorName(def.integrator) << " + " << sim::world::collisionMethodName(def.collisions) << ": ";
-  const std::string_view p = kParameterNames.name(study.stability.parameter);
+  return describeBoundary(std::string(sim::core::integratorName(def.integrator)) + " + " +
+                              std::string(sim::world::collisionMethodName(def.collisions)),
+                          kParameterNames.name(study.stability.parameter), r);
+}
+
+std::string describeBoundary(const std::string& method, std::string_view p, const StabilityResult& r) {
+  std::ostringstream o;
+  o << method << ": ";
   if (r.holdsToLimit) {
     o << "holds up to " << p << " = " << r.largestStable << " (the search's limit)";
     return o.str();
@@ -165,6 +174,10 @@ std::string describeFailure(const Study& study, const StabilityResult& r) {
     o << "the top drifts " << std::lround(100.0 * m.topDrift) << " % of its size";
   else if (failure == "penetration")
     o << "penetration " << m.maxPenetration << " m (over 2 × slop)";
+  else if (failure == "angular momentum drifts")
+    o << "|L| drifts " << std::lround(100.0 * m.angularMomentumDrift) << " %";
+  else if (failure == "quaternion drifts")
+    o << "|q| drifts " << m.quaternionDrift << " from 1";
   else
     o << failure;
   o << " at " << p << " = " << r.firstFailing;

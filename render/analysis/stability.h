@@ -2,7 +2,9 @@
 // a mass ratio, a stack's height) at which a scene still holds, found by bisection.
 #pragma once
 
+#include <functional>
 #include <string>
+#include <string_view>
 
 #include "render/analysis/run_metrics.h"
 #include "render/analysis/stability_def.h"
@@ -32,8 +34,13 @@ bool holdsAt(const Study& study, double value, RunMetrics& metrics);
 
 // the boundary, by growing and halving to a bracket and then bisecting to 0.1 % of the value
 StabilityResult findBoundary(const Study& study);
+// the same search for any scene: from `start`, up to `limit`, whole numbers when `integer`;
+// `holds(value, metrics)` runs the scene at a value
+StabilityResult searchBoundary(double start, double limit, bool integer, const std::function<bool(double, RunMetrics&)>& holds);
 
 // "explicit_euler: energy +37 % at dt = 0.021"
 std::string describeFailure(const Study& study, const StabilityResult& result);
+// the same for any method's label and parameter name
+std::string describeBoundary(const std::string& method, std::string_view parameter, const StabilityResult& result);
 
 }  // namespace render::analysis

@@ -5,9 +5,12 @@
 
 #include "render/cli/commands.h"
 #include "render/cli/scene_options.h"
+#include "render/cli/space3d.h"
 #include "render/jobs/json_writer.h"
 #include "sim/scene/expect.h"
 #include "sim/scene/scene_build.h"
+#include "sim/scene3d/expect.h"
+#include "sim/scene3d/scene_build.h"
 #include "sim/yaml/scene_yaml.h"
 
 namespace render::cli {
@@ -20,20 +23,26 @@ std::string plural(size_t n, const std::string& word) {
   return std::to_string(n) + " " + (word.ends_with("y") ? word.substr(0, word.size() - 1) + "ies" : word + "s");
 }
 
-// what the scene makes the simulator model: a scene pays only for what it uses
-std::string describeModel(const sim::scene::SceneDef& d) {
-  size_t dynamic = 0;
-  for (const auto& b : d.bodies) dynamic += !b.isStatic;
-  std::ostringstream o;
-  o << plural(d.bodies.size(), "body") << " (" << dynamic << " dynamic); forces:";
+// " gravity, 2 springs, drag" or " none": the forces of a 2D or a 3D scene's definitions
+template <class Def>
+std::string forcesOf(const Def& d, bool gravity) {
   std::string forces;
-  if (d.gravity != sim::core::Vec2::Zero()) forces += " gravity,";
+  if (gravity) forces += " gravity,";
   if (!d.springs.empty()) forces += " " + plural(d.springs.size(), "spring") + ",";
   if (!d.pointForces.empty()) forces += " " + plural(d.pointForces.size(), "point force") + ",";
   if (!d.drags.empty()) forces += " " + std::string("drag,");
   if (forces.empty()) forces = " none,";
   forces.pop_back();
-  o << forces << "; " << plural(d.events.size(), "impulse event") << "; integrator " << sim::core::integratorName(d.integrator)
+  return forces;
+}
+
+// what the scene makes the simulator model: a scene pays only for what it uses
+std::string describeModel(const sim::scene::SceneDef& d) {
+  size_t dynamic = 0;
+  for (const auto& b : d.bodies) dynamic += !b.isStatic;
+  std::ostringstream o;
+  o << plural(d.bodies.size(), "body") << " (" << dynamic << " dynamic); forces:"
+    << forcesOf(d, d.gravity != sim::core::Vec2::Zero()) << "; " << plural(d.events.size(), "impulse event") << "; integrator " << sim::core::integratorName(d.integrator)
     << ", dt " << formatNumber(d.dt) << " s, duration " << formatNumber(d.duration) << " s";
   return o.str();
 }
@@ -43,6 +52,18 @@ std::string formatValues(const std::vector<double>& v) {
   std::string s = "(";
   for (size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + formatNumber(v[i]);
   return s + ")";
+}
+
+// each comparison with its error; false when one failed
+bool report(const std::vector<sim::core::CheckResult>& results) {
+  bool ok = true;
+  for (const sim::core::CheckResult& r : results) {
+    ok = ok && r.passed();
+    std::cout << (r.passed() ? "  ok    " : "  FAIL  ") << "t = " << formatNumber(r.time) << "  " << r.quantity
+              << " = " << formatValues(r.actual) << ", expected " << formatValues(r.expected) << ", error "
+              << formatNumber(r.error) << " (tolerance " << formatNumber(r.tolerance) << ")\n";
+  }
+  return ok;
 }
 
 // say where the event method found impacts piling up and made the contact resting
@@ -72,22 +93,46 @@ bool checkCase(const std::string& file, const std::string& variant) {
     reportSwitch(w);
     return true;
   }
-  bool ok = true;
-  for (const sim::scene::CheckResult& r : sim::scene::runExpects(def, w)) {
-    ok = ok && r.passed();
-    std::cout << (r.passed() ? "  ok    " : "  FAIL  ") << "t = " << formatNumber(r.time) << "  " << r.quantity
-              << " = " << formatValues(r.actual) << ", expected " << formatValues(r.expected) << ", error "
-              << formatNumber(r.error) << " (tolerance " << formatNumber(r.tolerance) << ")\n";
-  }
+  const bool ok = report(sim::scene::runExpects(def, w));
   reportResting(def, w);
   reportSwitch(w);
   return ok;
+}
+
+// what a 3D scene models: free bodies, their forces and events, the integrator and whether q is
+// normalized after each step
+std::string describeModel3(const sim::scene3d::SceneDef& d) {
+  std::ostringstream o;
+  o << plural(d.bodies.size(), "body") << " (3D, free); forces:" << forcesOf(d, d.gravity != sim::world3d::Vec3::Zero())
+    << "; " << plural(d.events.size(), "impulse event") << "; integrator "
+    << sim::world3d::kIntegratorNames.name(d.integrator) << (d.normalize ? " (q normalized after each step)" : " (q left unnormalized)")
+    << ", dt " << formatNumber(d.dt) << " s, duration " << formatNumber(d.duration) << " s";
+  return o.str();
+}
+
+// one variant of a 3D scene ("" for the base); false when an expect fails
+bool checkCase3d(const std::string& file, const std::string& variant) {
+  const sim::scene3d::SceneDef def = readSceneFile3(file, variant).model();
+  std::cout << file << (variant.empty() ? "" : " [" + variant + "]") << ": " << describeModel3(def) << '\n';
+  std::cout << "  contacts: none (3D scenes model free rigid bodies: nothing collides, bodies pass through each other)\n";
+  sim::world3d::World w = sim::scene3d::buildWorld(def);
+  if (def.expects.empty()) {
+    // still run it: a scene that diverges is not a good scene
+    w.advanceTo(def.duration);
+    std::cout << "  ran to t = " << formatNumber(def.duration) << " (no expect entries)\n";
+    return true;
+  }
+  return report(sim::scene3d::runExpects(def, w));
 }
 
 int check(const std::vector<std::string>& files) {
   int code = kExitOk;
   for (const std::string& file : files) {
     try {
+      if (isSceneFile3d(file)) {
+        if (!check3d(file) && code == kExitOk) code = kExitFailure;
+        continue;
+      }
       const sim::scene::SceneDef base = readSceneFile(file).model();
       std::vector<std::string> cases = base.variantNames;
       if (cases.empty()) cases.push_back("");
@@ -100,6 +145,10 @@ int check(const std::vector<std::string>& files) {
       std::cerr << file << ": the simulation diverged at t = " << formatNumber(d.time) << " (body #" << d.body
                 << "); use a smaller dt or another integrator\n";
       if (code == kExitOk) code = kExitFailure;
+    } catch (const sim::world3d::Diverged& d) {
+      std::cerr << file << ": the simulation diverged at t = " << formatNumber(d.time) << " (body #" << d.body
+                << "); use a smaller dt or another integrator\n";
+      if (code == kExitOk) code = kExitFailure;
     } catch (const std::runtime_error& e) {
       std::cerr << file << ": " << e.what() << '\n';
       if (code == kExitOk) code = kExitFailure;
@@ -109,6 +158,14 @@ int check(const std::vector<std::string>& files) {
 }
 
 }  // namespace
+
+bool check3d(const std::string& file) {
+  std::vector<std::string> cases = readSceneFile3(file).model().variantNames;
+  if (cases.empty()) cases.push_back("");
+  bool ok = true;
+  for (const std::string& v : cases) ok = checkCase3d(file, v) && ok;
+  return ok;
+}
 
 void addCheckCommand(CLI::App& app, int& exitCode) {
   auto files = std::make_shared<std::vector<std::string>>();

@@ -19,11 +19,13 @@
 #include "render/cli/lecture_page.h"
 #include "render/cli/lecture_summary.h"
 #include "render/cli/output.h"
+#include "render/cli/space3d.h"
 #include "render/jobs/interrupt.h"
 #include "render/jobs/job_runner.h"
 #include "render/page/page.h"
 #include "render/video/output_names.h"
 #include "render/video/plan_writer.h"
+#include "render/video/plan_writer3.h"
 
 namespace render::cli {
 using namespace render::jobs;
@@ -52,6 +54,11 @@ struct PackScene {
   render::scene::Scene base;  // without a variant: its title, description and `panels:`, for the page
   std::optional<RenderPlan> plan;
   std::exception_ptr diverged;
+  // a 3D scene's (dimensions: 3), instead of `base` and `plan`
+  std::optional<render::scene3d::Scene> base3;
+  std::optional<RenderPlan3> plan3;
+
+  std::vector<std::string> paths() const { return plan3 ? plan3->paths() : plan->paths(); }
 };
 
 double since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
@@ -86,13 +93,24 @@ std::vector<std::string> jobCommand(const LectureCommand& o, const std::string& 
 // throws sim::yaml::SceneError
 PackScene planScene(LectureRequest request, const std::string& file) {
   request.file = file;
+  if (isSceneFile3d(file)) {
+    const LoadVariant3 load = lectureLoader3(file);
+    PackScene scene{file, "", {}, std::nullopt, nullptr, load(""), std::nullopt};
+    scene.name = scene.base3->model.name;
+    try {
+      scene.plan3 = planLecture3(load, request);
+    } catch (const VariantDiverged3&) {
+      scene.diverged = std::current_exception();
+    }
+    return scene;
+  }
   const LoadVariant load = lectureLoader(file);
   render::scene::Scene base = load("");
   try {
     RenderPlan plan = planLecture(load, request);
-    return {file, plan.scene, std::move(base), std::move(plan), nullptr};
+    return {file, plan.scene, std::move(base), std::move(plan), nullptr, std::nullopt, std::nullopt};
   } catch (const VariantDiverged& d) {
-    return {file, d.model.name, std::move(base), std::nullopt, std::current_exception()};
+    return {file, d.model.name, std::move(base), std::nullopt, std::current_exception(), std::nullopt, std::nullopt};
   }
 }
 
@@ -107,9 +125,14 @@ SceneResult runHere(const PackScene& scene, const std::string& root) {
       std::cout << "wrote " << path << std::endl;
       r.outputs.push_back(path);
     };
-    writePlan(*scene.plan, true, wrote);
     // the record last: the page shows a scene only once every file it names is there
-    writeLectureRecord(*scene.plan, scene.base, scene.file, root, since(start), wrote);
+    if (scene.plan3) {
+      writePlan3(*scene.plan3, true, wrote);
+      writeLectureRecord(*scene.plan3, *scene.base3, scene.file, root, since(start), wrote);
+    } else {
+      writePlan(*scene.plan, true, wrote);
+      writeLectureRecord(*scene.plan, scene.base, scene.file, root, since(start), wrote);
+    }
     r.ok = true;
   } catch (const VariantDiverged& d) {
     if (d.when == VariantDiverged::While::Stills)
@@ -117,6 +140,9 @@ SceneResult runHere(const PackScene& scene, const std::string& root) {
                 << "; try a smaller step (sim: {dt: ...}) or another integrator\n";
     else
       std::cerr << videoDiverged(scene.file, d);
+    r.message = "see the message above";
+  } catch (const VariantDiverged3& d) {
+    std::cerr << divergedMessage(scene.file, d.model, d) << '\n';
     r.message = "see the message above";
   } catch (const Interrupted&) {
     throw;
@@ -156,7 +182,7 @@ int lecture(const LectureCommand& o) {
     for (const PackScene& scene : scenes)
       if (scene.diverged) std::rethrow_exception(scene.diverged);
     for (const PackScene& scene : scenes) {
-      for (const std::string& path : scene.plan->paths()) std::cout << path << '\n';
+      for (const std::string& path : scene.paths()) std::cout << path << '\n';
       std::cout << lectureRecordPath(scene.name, o.output) << '\n';
     }
     std::cout << lecturePagePath(o.output) << '\n';

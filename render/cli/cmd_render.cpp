@@ -8,7 +8,9 @@
 #include "render/cli/output.h"
 #include "render/cli/scene_options.h"
 #include "render/jobs/interrupt.h"
+#include "render/cli/space3d.h"
 #include "render/video/plan_writer.h"
+#include "render/video/plan_writer3.h"
 
 namespace render::cli {
 using namespace render::jobs;
@@ -42,6 +44,13 @@ VideoRequest request(const RenderCommand& o) {
 
 int render(const RenderCommand& o) {
   const VideoRequest r = request(o);
+  if (isSceneFile3d(o.scene)) try {
+      writePlan3(planVideos3(o.variantLoader3(), r), o.quiet, [](const std::string&) {});
+      return kExitOk;
+    } catch (const VariantDiverged3& d) {
+      std::cerr << divergedMessage(o.scene, d.model, d) << '\n';
+      return kExitFailure;
+    }
   try {
     writePlan(planVideos(o.variantLoader(), r), o.quiet, [](const std::string&) {});
   } catch (const VariantDiverged& d) {

@@ -7,6 +7,7 @@
 
 #include "render/cli/commands.h"
 #include "render/cli/scene_options.h"
+#include "render/cli/space3d.h"
 #include "render/jobs/atomic_file.h"
 #include "render/jobs/json_writer.h"
 #include "sim/scene/scene_build.h"
@@ -140,6 +141,7 @@ void printText(const sim::scene::SceneDef& def, const sim::world::World& w) {
 }
 
 int simulate(const SimulateOptions& o) {
+  if (isSceneFile3d(o.scene)) return simulate3d(o, o.until, o.json, o.trace);
   const sim::scene::SceneDef def = o.load().model();
   const double until = o.until.value_or(def.duration);
   if (!(until >= 0.0) || !std::isfinite(until)) throw UsageError("--until: the end time must be zero or a positive finite number");

@@ -9,7 +9,9 @@
 #include "render/cli/output.h"
 #include "render/cli/scene_options.h"
 #include "render/video/output_names.h"
+#include "render/cli/space3d.h"
 #include "render/video/plan_writer.h"
+#include "render/video/plan_writer3.h"
 
 namespace render::cli {
 using namespace render::video;
@@ -61,8 +63,16 @@ StillRequest request(const SnapshotCommand& o) {
 }
 
 int snapshot(const SnapshotCommand& o) {
+  const auto print = [](const std::string& path) { std::cout << path << '\n'; };
+  if (isSceneFile3d(o.scene)) try {
+      writePlan3(planStills3(o.variantLoader3(), request(o)), true, print);
+      return kExitOk;
+    } catch (const VariantDiverged3& d) {
+      std::cerr << divergedMessage(o.scene, d.model, d) << '\n';
+      return kExitFailure;
+    }
   try {
-    writePlan(planStills(o.variantLoader(), request(o)), true, [](const std::string& path) { std::cout << path << '\n'; });
+    writePlan(planStills(o.variantLoader(), request(o)), true, print);
   } catch (const sim::world::Diverged& d) {
     std::cerr << o.scene << ": the simulation diverged at t = " << timeForName(d.time)
               << "; try a smaller step (--dt) or another integrator (--integrator rk4)\n";

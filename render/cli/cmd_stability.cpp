@@ -9,6 +9,7 @@
 #include "render/cli/commands.h"
 #include "render/cli/method_lists.h"
 #include "render/cli/scene_options.h"
+#include "render/cli/space3d.h"
 #include "render/jobs/atomic_file.h"
 #include "render/jobs/json_writer.h"
 
@@ -44,6 +45,7 @@ int stability(const StabilityOptions& o) {
   SceneOptions so;
   so.scene = o.scene;
   so.variant = o.variant;
+  if (isSceneFile3d(o.scene)) return stability3d(so, o, o.outDir);
   const render::analysis::Study study = so.load().study();
   const sim::scene::SceneDef& def = study.model;
   startWorld(def, o.scene);

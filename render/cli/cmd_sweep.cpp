@@ -11,6 +11,7 @@
 #include "render/cli/commands.h"
 #include "render/cli/method_lists.h"
 #include "render/cli/scene_options.h"
+#include "render/cli/space3d.h"
 #include "render/jobs/atomic_file.h"
 #include "render/jobs/json_writer.h"
 
@@ -35,6 +36,7 @@ int sweep(const SweepOptions& o) {
   SceneOptions so;
   so.scene = o.scene;
   so.variant = o.variant;
+  if (isSceneFile3d(o.scene)) return sweep3d(so, o, o.dt, o.repeat, o.outDir);
   const sim::scene::SceneDef def = so.load().model();
   startWorld(def, o.scene);  // bad start states are reported before the long run
 

@@ -5,6 +5,7 @@
 
 #include "render/cli/commands.h"
 #include "render/cli/scene_options.h"
+#include "sim/scene3d/scene_build.h"
 
 namespace render::cli {
 namespace fs = std::filesystem;
@@ -33,6 +34,18 @@ render::video::LoadVariant lectureLoader(const std::string& file) {
   return [file](const std::string& variant) {
     render::scene::Scene scene = readSceneFile(file, variant).scene;
     if (!variant.empty() || scene.model.variantNames.empty()) (void)startWorld(scene.model, file);
+    return scene;
+  };
+}
+
+render::video::LoadVariant3 lectureLoader3(const std::string& file) {
+  return [file](const std::string& variant) {
+    render::scene3d::Scene scene = readSceneFile3(file, variant).scene;
+    try {
+      (void)sim::scene3d::buildWorld(scene.model);
+    } catch (const std::invalid_argument& e) {
+      throw sim::yaml::SceneError(file, 0, 0, (variant.empty() ? "" : "variant '" + variant + "': ") + e.what());
+    }
     return scene;
   };
 }

@@ -8,6 +8,7 @@
 #include "render/page/page.h"
 #include "render/video/output_names.h"
 #include "sim/scene/expect.h"
+#include "sim/scene3d/expect.h"
 
 namespace render::cli {
 
@@ -19,32 +20,64 @@ std::string lectureRecordPath(const std::string& scene, const std::string& root)
 
 std::string lecturePagePath(const std::string& root) { return (fs::path(root) / render::page::kPageName).string(); }
 
-void writeLectureRecord(const render::video::RenderPlan& plan, const render::scene::Scene& base, const std::string& file,
-                        const std::string& root, double seconds, const std::function<void(const std::string&)>& wrote) {
+namespace {
+
+// the record's part every scene has: its title, description and time, its videos and its poll
+// panels (a panel at t = 0 shows the poll's question, nothing has happened yet; any later one, its
+// answer); `variants` names each planned variant
+template <class Plan>
+render::page::SceneRecord recordOf(const Plan& plan, const render::scene::RenderDef& look, const std::string& title,
+                                   const std::string& description, const std::vector<std::string>& variants,
+                                   const std::string& file, const std::string& path, double seconds) {
   render::page::SceneRecord r;
   r.scene = plan.scene;
   r.file = file;
-  r.title = render::frame::titleOf(base);
-  r.description = base.model.description;
+  r.title = title;
+  r.description = description;
   r.seconds = seconds;
-  const std::string path = lectureRecordPath(plan.scene, root);
   // the files as the plan names them, relative to the record's folder (a variant may rename its own)
   const auto name = [&](const std::string& p) { return fs::path(p).lexically_relative(fs::path(path).parent_path()).string(); };
-  for (const render::video::VideoOutput& v : plan.videos)
-    r.videos.push_back({plan.variants[v.variant].scene.model.variant, name(v.path), name(v.posterPath), v.fps});
-  // a panel at t = 0 shows the poll's question (nothing has happened yet); any later one, its answer
+  for (const auto& v : plan.videos) r.videos.push_back({variants[v.variant], name(v.path), name(v.posterPath), v.fps});
   if (plan.stills)
     for (size_t i = 0; i < plan.stills->shots.size(); ++i) {
       const render::video::StillOutput& shot = plan.stills->shots[i];
-      if (base.render.panels.impacts)
+      if (look.panels.impacts)
         r.panels.push_back({name(shot.path), "impact " + std::to_string(i + 1), false});
       else
         r.panels.push_back({name(shot.path), "t = " + render::video::timeForName(shot.instants.at(0)) + " s", shot.instants.at(0) == 0.0});
     }
-  // the closed forms of every variant, as `rigidreel check` measures them
-  for (const render::video::PlannedVariant& v : plan.variants)
-    for (const sim::scene::CheckResult& c : sim::scene::runExpects(v.scene.model))
-      r.checks.push_back({v.scene.model.variant, c.time, c.quantity, c.expected, c.actual, c.error, c.tolerance});
+  return r;
+}
+
+// the closed forms of a variant, as `rigidreel check` measures them
+template <class Results>
+void addChecks(const std::string& variant, const Results& results, render::page::SceneRecord& r) {
+  for (const auto& c : results) r.checks.push_back({variant, c.time, c.quantity, c.expected, c.actual, c.error, c.tolerance});
+}
+
+}  // namespace
+
+void writeLectureRecord(const render::video::RenderPlan& plan, const render::scene::Scene& base, const std::string& file,
+                        const std::string& root, double seconds, const std::function<void(const std::string&)>& wrote) {
+  const std::string path = lectureRecordPath(plan.scene, root);
+  std::vector<std::string> variants;
+  for (const render::video::PlannedVariant& v : plan.variants) variants.push_back(v.scene.model.variant);
+  render::page::SceneRecord r =
+      recordOf(plan, base.render, render::frame::titleOf(base), base.model.description, variants, file, path, seconds);
+  for (const render::video::PlannedVariant& v : plan.variants) addChecks(v.scene.model.variant, sim::scene::runExpects(v.scene.model), r);
+  render::page::writeSceneRecord(r, path);
+  wrote(path);
+}
+
+void writeLectureRecord(const render::video::RenderPlan3& plan, const render::scene3d::Scene& base, const std::string& file,
+                        const std::string& root, double seconds, const std::function<void(const std::string&)>& wrote) {
+  const std::string path = lectureRecordPath(plan.scene, root);
+  std::vector<std::string> variants;
+  for (const render::video::PlannedVariant3& v : plan.variants) variants.push_back(v.scene.model.variant);
+  render::page::SceneRecord r = recordOf(plan, base.render, render::frame::titleOf(base.render, base.model.name),
+                                         base.model.description, variants, file, path, seconds);
+  for (const render::video::PlannedVariant3& v : plan.variants)
+    addChecks(v.scene.model.variant, sim::scene3d::runExpects(v.scene.model), r);
   render::page::writeSceneRecord(r, path);
   wrote(path);
 }

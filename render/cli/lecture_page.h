@@ -9,6 +9,7 @@
 
 #include "render/scene/scene.h"
 #include "render/video/render_plan.h"
+#include "render/video/render_plan3.h"
 
 namespace render::cli {
 
@@ -21,6 +22,9 @@ std::string lecturePagePath(const std::string& root);
 // description and `panels:`, each video with its poster and fps, each variant's `expect` entries
 // checked; tells `wrote` the record's path
 void writeLectureRecord(const render::video::RenderPlan& plan, const render::scene::Scene& base, const std::string& file,
+                        const std::string& root, double seconds, const std::function<void(const std::string&)>& wrote);
+// the same for a 3D scene's plan
+void writeLectureRecord(const render::video::RenderPlan3& plan, const render::scene3d::Scene& base, const std::string& file,
                         const std::string& root, double seconds, const std::function<void(const std::string&)>& wrote);
 
 // the page rebuilt from the records in `root`: "page: DIR/index.html (N scenes)" on standard

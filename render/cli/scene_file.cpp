@@ -1,5 +1,7 @@
 #include "render/cli/scene_file.h"
 
+#include "render/analysis/analysis3d.h"
+
 namespace render::cli {
 
 namespace {
@@ -19,6 +21,16 @@ SceneFile readSceneFile(const std::string& path, const std::string& variant) {
 
 SceneFile sceneFileText(const std::string& text, const std::string& file, const std::string& variant) {
   return read(sim::yaml::sceneSourceText(text, file, variant));
+}
+
+bool isSceneFile3d(const std::string& path) { return sim::yaml::readSceneSource(path).dimensions == 3; }
+
+SceneFile3 readSceneFile3(const std::string& path, const std::string& variant) {
+  const sim::yaml::SceneSource source = sim::yaml::readSceneSource(path, variant);
+  SceneFile3 f;
+  f.scene = render::scene3d::readScene(source, {{render::analysis::kStabilityKey}, {}});
+  f.stability = render::analysis::readStability3(source);
+  return f;
 }
 
 }  // namespace render::cli

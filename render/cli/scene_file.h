@@ -7,6 +7,7 @@
 
 #include "render/analysis/stability_def.h"
 #include "render/scene/scene.h"
+#include "render/scene3d/scene.h"
 
 namespace render::cli {
 
@@ -25,5 +26,20 @@ struct SceneFile {
 SceneFile readSceneFile(const std::string& path, const std::string& variant = "");
 // the same from text; `file` names it in messages
 SceneFile sceneFileText(const std::string& text, const std::string& file, const std::string& variant = "");
+
+// a 3D scene file (`dimensions: 3`), read the same way: its model and look (render/scene3d) and its
+// stability: block (dt only)
+struct SceneFile3 {
+  render::scene3d::Scene scene;
+  render::analysis::StabilityDef stability;
+
+  const sim::scene3d::SceneDef& model() const { return scene.model; }
+  sim::scene3d::SceneDef& model() { return scene.model; }
+};
+
+// whether the scene in `path` is 3D: every command asks first and takes the 3D path for it; throws
+// sim::yaml::SceneError for a file that cannot be read
+bool isSceneFile3d(const std::string& path);
+SceneFile3 readSceneFile3(const std::string& path, const std::string& variant = "");
 
 }  // namespace render::cli

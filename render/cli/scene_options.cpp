@@ -12,7 +12,7 @@ namespace render::cli {
 
 void SceneOptions::addTo(CLI::App& command) {
   command.add_option("--variant", variant, "the named variant of the scene to run");
-  command.add_option("--integrator", integrator, "explicit_euler, symplectic_euler, midpoint or rk4");
+  command.add_option("--integrator", integrator, "explicit_euler, symplectic_euler, midpoint or rk4 (and splitting in 3D)");
   command.add_option("--dt", dt, "fixed time step in seconds");
   command.add_option("--collisions", collisions, "auto, none, event, isolated, sequential or soft_step");
 }
@@ -39,11 +39,38 @@ SceneFile SceneOptions::load() const {
   return file;
 }
 
+SceneFile3 SceneOptions::load3() const {
+  SceneFile3 file = readSceneFile3(scene, variant);
+  sim::scene3d::SceneDef& def = file.model();
+  if (!integrator.empty()) {
+    const auto method = sim::world3d::kIntegratorNames.parse(integrator);
+    if (!method)
+      throw UsageError("--integrator: unknown integrator '" + integrator + "'; choose one of: " +
+                       sim::world3d::kIntegratorNames.list());
+    def.integrator = *method;
+  }
+  if (dt) {
+    if (!(*dt > 0.0) || !std::isfinite(*dt)) throw UsageError("--dt: the time step must be a positive finite number");
+    def.dt = *dt;
+  }
+  if (!collisions.empty())
+    throw UsageError("--collisions: " + scene + " is a 3D scene, and 3D scenes have no contacts (bodies pass through each other)");
+  return file;
+}
+
 render::video::LoadVariant SceneOptions::variantLoader() const {
   return [options = *this](const std::string& variant) {
     SceneOptions one = options;
     one.variant = variant;
     return one.load().scene;
+  };
+}
+
+render::video::LoadVariant3 SceneOptions::variantLoader3() const {
+  return [options = *this](const std::string& variant) {
+    SceneOptions one = options;
+    one.variant = variant;
+    return one.load3().scene;
   };
 }
 

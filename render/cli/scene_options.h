@@ -7,6 +7,7 @@
 
 #include "render/cli/scene_file.h"
 #include "render/video/render_plan.h"
+#include "render/video/render_plan3.h"
 #include "sim/scene/scene_def.h"
 #include "sim/world/world.h"
 
@@ -23,8 +24,13 @@ struct SceneOptions {
   void addTo(CLI::App& command);
   // the scene with the overrides applied; throws sim::yaml::SceneError or UsageError
   SceneFile load() const;
+  // the same for a 3D scene (dimensions: 3), whose integrators include the splitting and which has
+  // no collision method to choose
+  SceneFile3 load3() const;
   // any variant of the scene ("" the base scene) with the overrides applied, as a render plan reads them
   render::video::LoadVariant variantLoader() const;
+  // the same for a 3D scene's variants
+  render::video::LoadVariant3 variantLoader3() const;
 };
 
 // the scene's world, started: `auto` resolved and the start state checked; bodies that overlap

@@ -24,7 +24,11 @@ Vec2 perpendicular(const Vec2& d) { return {-d.y(), d.x()}; }
 GlCanvas::GlCanvas(GlContext& gl, TextRenderer& text, const Style& style)
     : gl_(gl), textRenderer_(text), style_(style) {}
 
-void GlCanvas::begin(const Camera& camera) {
+void GlCanvas::begin(const Camera& camera) { start(camera, true); }
+
+void GlCanvas::beginOverlay(const Camera& camera) { start(camera, false); }
+
+void GlCanvas::start(const Camera& camera, bool clear) {
   camera_ = camera;
   px_ = camera.pixelSize();
   texts_.clear();
@@ -40,7 +44,7 @@ void GlCanvas::begin(const Camera& camera) {
   const Color& bg = style_.background;
   glClearColor(static_cast<float>(bg.r), static_cast<float>(bg.g), static_cast<float>(bg.b), 1.0f);
   glClearStencil(0);
-  glClear(GL_COLOR_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  glClear(clear ? GL_COLOR_BUFFER_BIT | GL_STENCIL_BUFFER_BIT : GL_STENCIL_BUFFER_BIT);
   // world units, y up, centered on the camera: vertices are sent relative to the center, so that
   // single-precision GL keeps its digits for what is on screen
   glMatrixMode(GL_PROJECTION);

@@ -26,6 +26,8 @@ class GlCanvas final : public Canvas {
 
   // start a frame: clear to the background and look through `camera`
   void begin(const Camera& camera);
+  // draw over what the frame holds already (a 3D frame's solids), through `camera`
+  void beginOverlay(const Camera& camera);
   // the frame, with the queued text on top
   Image finish();
 
@@ -46,6 +48,7 @@ class GlCanvas final : public Canvas {
     Anchor anchor;
     Color color;
   };
+  void start(const Camera& camera, bool clear);
   // colors of a role: a fill (for shapes) and a stroke
   Color fillColor(const Pen& s) const;
   Color strokeColor(const Pen& s) const;

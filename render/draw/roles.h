@@ -40,8 +40,13 @@ enum class Role {
   PotentialBar,     // the potential energy's bar, filled
   TotalBar,         // the total energy's bar, filled
   Panel,            // the background of a panel fixed to the frame, filled
+  // the 3D frames' (render/draw3d)
+  AxisX,            // a body's or the world's x axis: an arrow
+  AxisY,            // y
+  AxisZ,            // z
+  AngularMomentum,  // L = I ω from the center of mass: an arrow
 };
-inline constexpr size_t kRoleCount = static_cast<size_t>(Role::Panel) + 1;
+inline constexpr size_t kRoleCount = static_cast<size_t>(Role::AngularMomentum) + 1;
 
 struct RoleInfo {
   Role role;
@@ -80,6 +85,11 @@ inline constexpr std::array<RoleInfo, kRoleCount> kRoles{{
     {Role::PotentialBar, "PotentialBar", "potential", "#31a354", 1.0, true},
     {Role::TotalBar, "TotalBar", "total", "#636363", 1.0, true},
     {Role::Panel, "Panel", "panel", "#f2f2f2", 1.0, true},
+    // the usual red, green and blue of x, y and z
+    {Role::AxisX, "AxisX", "axis_x", "#d62728", 1.0, false},
+    {Role::AxisY, "AxisY", "axis_y", "#2ca02c", 1.0, false},
+    {Role::AxisZ, "AxisZ", "axis_z", "#1f77b4", 1.0, false},
+    {Role::AngularMomentum, "AngularMomentum", "angular_momentum", "#6a3d9a", 1.5, false},
 }};
 
 constexpr const RoleInfo& info(Role role) { return kRoles[static_cast<size_t>(role)]; }

@@ -76,14 +76,18 @@ std::string firstSentence(const std::string& text) {
   return sentence;
 }
 
-std::string captionOf(const render::scene::Scene& def) {
-  if (!def.render.caption.empty()) return def.render.caption;
-  return def.render.captionFromDescription ? firstSentence(def.model.description) : "";
+std::string captionOf(const render::scene::Scene& def) { return captionOf(def.render, def.model.description); }
+
+std::string captionOf(const render::scene::RenderDef& render, const std::string& description) {
+  if (!render.caption.empty()) return render.caption;
+  return render.captionFromDescription ? firstSentence(description) : "";
 }
 
-std::string titleOf(const render::scene::Scene& def) {
-  if (!def.render.title.empty()) return def.render.title;
-  std::string title = def.model.name;
+std::string titleOf(const render::scene::Scene& def) { return titleOf(def.render, def.model.name); }
+
+std::string titleOf(const render::scene::RenderDef& render, const std::string& name) {
+  if (!render.title.empty()) return render.title;
+  std::string title = name;
   std::replace(title.begin(), title.end(), '_', ' ');
   return title;
 }

@@ -39,8 +39,11 @@ std::string firstSentence(const std::string& text);
 
 // the caption the scene asks for: its `caption` text, the first sentence of its description, or ""
 std::string captionOf(const render::scene::Scene& def);
+// the same from a render: block (2D or 3D) and the scene's description
+std::string captionOf(const render::scene::RenderDef& render, const std::string& description);
 
 // the title of its card: `title`, or the scene's name with '_' as spaces
 std::string titleOf(const render::scene::Scene& def);
+std::string titleOf(const render::scene::RenderDef& render, const std::string& name);
 
 }  // namespace render::frame

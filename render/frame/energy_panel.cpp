@@ -25,8 +25,6 @@ constexpr double kBarTop = 0.5 * kLineHeight - 0.45, kBarBottom = 0.5 * kLineHei
 // the panel is laid out once, from the widest text the run can write, in em
 double textWidth(const std::string& text) { return approximateWidth(text, 1.0); }
 
-std::string energyText(const EnergyBar& bar) { return quantityText(bar.name, bar.value, "J"); }
-
 std::string momentumText(const sim::world::World& world) { return vectorText("p", sim::world::linearMomentum(world), "kg·m/s"); }
 
 std::string angularText(const sim::world::World& world) { return quantityText("L", sim::world::angularMomentum(world), "kg·m²/s"); }
@@ -63,47 +61,28 @@ std::vector<EnergyBar> energyBars(const render::scene::Scene& def, const sim::wo
   return bars;
 }
 
-double EnergyPanel::widthPx(const render::scene::Scene& def, const RunSurvey& survey, double em) {
-  const bool energy = def.render.overlays.energy, momentum = def.render.overlays.momentum;
-  // the widest texts: each bar's name with the run's largest magnitude, negative; p and L likewise
-  const double most = std::max(std::abs(survey.maxEnergy), std::abs(survey.minEnergy));
-  double energyWidth = 0.0, momentumWidth = 0.0;
-  if (energy)
-    for (EnergyBar bar : energyBars(def, sim::scene::buildWorld(def.model))) {
-      bar.value = -most;
-      energyWidth = std::max(energyWidth, kBar + 0.5 + textWidth(energyText(bar)));
-    }
-  if (momentum) {
-    const double p = survey.maxLinearMomentum, l = survey.maxAngularMomentum;
-    momentumWidth = std::max(textWidth(vectorText("p", {-p, -p}, "kg·m/s")), textWidth(quantityText("L", -l, "kg·m²/s")));
-  }
-  return (2.0 * kPad + std::max(energyWidth, momentumWidth)) * em;
-}
-
-double EnergyPanel::bandPx(const render::scene::Scene& def, const RunSurvey& survey, int heightPx) {
-  const render::scene::OverlaysDef& o = def.render.overlays;
-  if (!o.energy && !o.momentum) return 0.0;
-  const double em = fontSizeFor(def.render, heightPx);
-  return widthPx(def, survey, em) + 2.0 * kInset * em;
-}
-
-EnergyPanel::EnergyPanel(const render::scene::Scene& def, const Camera& camera, const RunSurvey& survey)
-    : def_(def),
-      camera_(camera),
-      energy_(def.render.overlays.energy),
-      momentum_(def.render.overlays.momentum),
-      lowest_(std::min(0.0, survey.minEnergy)),
-      span_(std::max(0.0, survey.maxEnergy) - std::min(0.0, survey.minEnergy)),
-      em_(fontSizeFor(def.render, camera.heightPx())) {
-  width_ = widthPx(def, survey, em_);
+BarPanel::BarPanel(const std::vector<std::string>& widestBarTexts, const std::vector<std::string>& widestLines,
+                   double lowest, double highest, const Camera& camera, double em)
+    : camera_(camera), lowest_(std::min(0.0, lowest)), span_(std::max(0.0, highest) - std::min(0.0, lowest)), em_(em) {
+  width_ = widthPx(widestBarTexts, widestLines, em_);
   left_ = camera.widthPx() - kInset * em_ - width_;
   barLeft_ = left_ + kPad * em_;
   textLeft_ = barLeft_ + (kBar + 0.5) * em_;
 }
 
-void EnergyPanel::draw(const sim::world::World& world, Canvas& draw) const {
-  const std::vector<EnergyBar> bars = energy_ ? energyBars(def_, world) : std::vector<EnergyBar>{};
-  const int rows = static_cast<int>(bars.size()) + (momentum_ ? 2 : 0);
+std::string BarPanel::barText(const EnergyBar& bar) { return quantityText(bar.name, bar.value, "J"); }
+
+double BarPanel::widthPx(const std::vector<std::string>& widestBarTexts, const std::vector<std::string>& widestLines, double em) {
+  double barWidth = 0.0, lineWidth = 0.0;
+  for (const std::string& t : widestBarTexts) barWidth = std::max(barWidth, kBar + 0.5 + textWidth(t));
+  for (const std::string& t : widestLines) lineWidth = std::max(lineWidth, textWidth(t));
+  return (2.0 * kPad + std::max(barWidth, lineWidth)) * em;
+}
+
+double BarPanel::bandPx(double widthPx, double em) { return widthPx + 2.0 * kInset * em; }
+
+void BarPanel::draw(const std::vector<EnergyBar>& bars, const std::vector<std::string>& lines, Canvas& draw) const {
+  const int rows = static_cast<int>(bars.size() + lines.size());
   const double top = kInset * em_, right = left_ + width_, bottom = top + (2.0 * kPad + kRow * rows) * em_;
   draw.polygon({at(left_, top), at(right, top), at(right, bottom), at(left_, bottom)}, {Role::Panel, -1, 1.0});
   double y = top + kPad * em_;
@@ -115,13 +94,50 @@ void EnergyPanel::draw(const sim::world::World& world, Canvas& draw) const {
     // a bar under half a pixel long is not drawn: nothing to see, and no sliver
     if (std::abs(end - zero) >= 0.5)
       draw.polygon({at(zero, y0), at(end, y0), at(end, y1), at(zero, y1)}, {bar.role, bar.body, 1.0});
-    draw.text(at(textLeft_, y), energyText(bar), {Role::Caption, -1, 1.0});
+    draw.text(at(textLeft_, y), barText(bar), {Role::Caption, -1, 1.0});
     y += kRow * em_;
   }
-  if (momentum_) {
-    draw.text(at(barLeft_, y), momentumText(world), {Role::Caption, -1, 1.0});
-    draw.text(at(barLeft_, y + kRow * em_), angularText(world), {Role::Caption, -1, 1.0});
+  for (const std::string& line : lines) {
+    draw.text(at(barLeft_, y), line, {Role::Caption, -1, 1.0});
+    y += kRow * em_;
   }
+}
+
+std::vector<std::string> EnergyPanel::widestBarTexts(const render::scene::Scene& def, const RunSurvey& survey) {
+  std::vector<std::string> texts;
+  if (!def.render.overlays.energy) return texts;
+  const double most = std::max(std::abs(survey.maxEnergy), std::abs(survey.minEnergy));
+  for (EnergyBar bar : energyBars(def, sim::scene::buildWorld(def.model))) {
+    bar.value = -most;
+    texts.push_back(BarPanel::barText(bar));
+  }
+  return texts;
+}
+
+std::vector<std::string> EnergyPanel::widestLines(const render::scene::Scene& def, const RunSurvey& survey) {
+  if (!def.render.overlays.momentum) return {};
+  const double p = survey.maxLinearMomentum, l = survey.maxAngularMomentum;
+  return {vectorText("p", Vec2(-p, -p), "kg·m/s"), quantityText("L", -l, "kg·m²/s")};
+}
+
+double EnergyPanel::bandPx(const render::scene::Scene& def, const RunSurvey& survey, int heightPx) {
+  const render::scene::OverlaysDef& o = def.render.overlays;
+  if (!o.energy && !o.momentum) return 0.0;
+  const double em = fontSizeFor(def.render, heightPx);
+  return BarPanel::bandPx(BarPanel::widthPx(widestBarTexts(def, survey), widestLines(def, survey), em), em);
+}
+
+EnergyPanel::EnergyPanel(const render::scene::Scene& def, const Camera& camera, const RunSurvey& survey)
+    : def_(def),
+      energy_(def.render.overlays.energy),
+      momentum_(def.render.overlays.momentum),
+      panel_(widestBarTexts(def, survey), widestLines(def, survey), survey.minEnergy, survey.maxEnergy, camera,
+             fontSizeFor(def.render, camera.heightPx())) {}
+
+void EnergyPanel::draw(const sim::world::World& world, Canvas& draw) const {
+  std::vector<std::string> lines;
+  if (momentum_) lines = {momentumText(world), angularText(world)};
+  panel_.draw(energy_ ? energyBars(def_, world) : std::vector<EnergyBar>{}, lines, draw);
 }
 
 }  // namespace render::frame

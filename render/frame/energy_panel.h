@@ -29,6 +29,35 @@ std::vector<double> energyValues(const sim::world::World& world);
 // the panel's bars at the world's present state, in the order drawn
 std::vector<EnergyBar> energyBars(const render::scene::Scene& def, const sim::world::World& world);
 
+// a panel fixed to the frame's top-right corner: rows of bars, each with its text, then lines of
+// text; laid out once from the widest texts it will hold, its bars on one scale from `lowest` to
+// `highest` (≤ 0, ≥ 0) so that it neither moves nor rescales over a run. The energy panel of 2D and
+// 3D frames alike.
+class BarPanel {
+ public:
+  BarPanel(const std::vector<std::string>& widestBarTexts, const std::vector<std::string>& widestLines, double lowest,
+           double highest, const Camera& camera, double em);
+  // the bars (each with its value in J after its name) and the lines under them
+  void draw(const std::vector<EnergyBar>& bars, const std::vector<std::string>& lines, Canvas& draw) const;
+  // the panel's width at text size `em` px, insets excluded
+  static double widthPx(const std::vector<std::string>& widestBarTexts, const std::vector<std::string>& widestLines,
+                        double em);
+  // the right-hand band of the frame a panel of width `widthPx` takes, insets included, px
+  static double bandPx(double widthPx, double em);
+  // a bar's text: "name = 1.50 J"
+  static std::string barText(const EnergyBar& bar);
+
+ private:
+  // a pixel of the frame in world coordinates
+  Vec2 at(double xPx, double yPx) const { return camera_.toWorld({xPx, yPx}); }
+
+  Camera camera_;
+  double lowest_, span_;   // the bars' scale: the run's least value (≤ 0) and largest − least, J
+  double em_;              // the text size, px
+  double left_, width_;    // the panel's left edge and width, px
+  double barLeft_, textLeft_;
+};
+
 class EnergyPanel {
  public:
   EnergyPanel(const render::scene::Scene& def, const Camera& camera, const RunSurvey& survey);
@@ -38,18 +67,14 @@ class EnergyPanel {
   static double bandPx(const render::scene::Scene& def, const RunSurvey& survey, int heightPx);
 
  private:
-  // the panel's width at text size `em` px, from its widest texts over the run
-  static double widthPx(const render::scene::Scene& def, const RunSurvey& survey, double em);
-  // a pixel of the frame in world coordinates
-  Vec2 at(double xPx, double yPx) const { return camera_.toWorld({xPx, yPx}); }
+  // the widest texts over the run: each bar's name with the run's largest magnitude, negative; p and
+  // L likewise
+  static std::vector<std::string> widestBarTexts(const render::scene::Scene& def, const RunSurvey& survey);
+  static std::vector<std::string> widestLines(const render::scene::Scene& def, const RunSurvey& survey);
 
   const render::scene::Scene& def_;
-  Camera camera_;
   bool energy_, momentum_;
-  double lowest_, span_;   // the bars' scale: the run's least value (≤ 0) and largest − least, J
-  double em_;              // the text size, px
-  double left_, width_;    // the panel's left edge and width, px
-  double barLeft_, textLeft_;
+  BarPanel panel_;
 };
 
 }  // namespace render::frame

@@ -21,4 +21,8 @@ std::string vectorText(const std::string& name, const sim::core::Vec2& v, const 
   return name + " = (" + signedNumber(v.x()) + ", " + signedNumber(v.y()) + ") " + unit;
 }
 
+std::string vectorText(const std::string& name, const Eigen::Vector3d& v, const std::string& unit) {
+  return name + " = (" + signedNumber(v.x()) + ", " + signedNumber(v.y()) + ", " + signedNumber(v.z()) + ") " + unit;
+}
+
 }  // namespace render::frame

@@ -14,5 +14,7 @@ std::string signedNumber(double x, int decimals = 2);
 std::string quantityText(const std::string& name, double x, const std::string& unit);
 // "name = (x, y) unit"
 std::string vectorText(const std::string& name, const sim::core::Vec2& v, const std::string& unit);
+// "name = (x, y, z) unit"
+std::string vectorText(const std::string& name, const Eigen::Vector3d& v, const std::string& unit);
 
 }  // namespace render::frame

@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <stdexcept>
 
 namespace render::jobs {
@@ -27,6 +28,30 @@ void AtomicFile::commit() {
   out_.close();
   if (!ok || std::rename(temporary_.c_str(), path_.c_str()) != 0)
     throw std::runtime_error(path_ + ": could not finish writing (" + std::strerror(errno) + ")");
+  committed_ = true;
+}
+
+namespace fs = std::filesystem;
+
+StagedDirectory::StagedDirectory(const std::string& final) : final_(final) {
+  const fs::path path(final);
+  // ".<name>.part-<pid>", appended piece by piece: g++ 12 warns of overlapping copies in "." + name
+  std::string name = ".";
+  name += path.filename().string();
+  name += ".part-" + std::to_string(::getpid());
+  staging_ = (path.parent_path() / name).string();
+  fs::remove_all(staging_);
+  fs::create_directories(staging_);
+}
+
+StagedDirectory::~StagedDirectory() {
+  std::error_code ignored;
+  if (!committed_) fs::remove_all(staging_, ignored);
+}
+
+void StagedDirectory::commit() {
+  fs::remove_all(final_);
+  fs::rename(staging_, final_);
   committed_ = true;
 }
 

@@ -26,4 +26,20 @@ class AtomicFile {
   bool committed_ = false;
 };
 
+// a directory filled under a temporary name (".<name>.part-<pid>" beside it) and renamed over the
+// old one when complete (video frames as PNG)
+class StagedDirectory {
+ public:
+  explicit StagedDirectory(const std::string& final);
+  ~StagedDirectory();
+  StagedDirectory(const StagedDirectory&) = delete;
+  StagedDirectory& operator=(const StagedDirectory&) = delete;
+  std::string path() const { return staging_; }
+  void commit();
+
+ private:
+  std::string final_, staging_;
+  bool committed_ = false;
+};
+
 }  // namespace render::jobs

@@ -83,6 +83,21 @@ class RenderReader {
 
 }  // namespace
 
+void readFrame(const YAML::Node& node, const Reader& reader, RenderDef& out) {
+  const RenderReader r(reader);
+  if (node["size"]) r.size(node["size"], out);
+  if (const YAML::Node n = node["fps"]) {
+    out.fps = reader.positive(n, "fps");
+    if (out.fps > kMaxFps) reader.fail(n, "'fps' must be at most " + formatted(kMaxFps) + ", got " + n.Scalar());
+  }
+  if (node["background"]) out.background = r.color(node["background"], "background");
+  reader.optional(node, "line_width", out.lineWidth, &Reader::positive);
+  reader.optional(node, "font_size", out.fontSize, &Reader::positive);
+  if (node["colors"]) r.colors(node["colors"], out.colors);
+}
+
+std::string readColor(const YAML::Node& n, const Reader& reader, const std::string& key) { return RenderReader(reader).color(n, key); }
+
 namespace {
 
 // the block's own keys, but for the overlays and panels read after it
@@ -97,15 +112,7 @@ void readBlock(const YAML::Node& node, const Reader& reader, RenderDef& out) {
                           "arrows", "force_scale", "momentum_scale", "impact_values", "energy", "momentum", "sat_axes"},
                    "render");
   const RenderReader r(reader);
-  if (node["size"]) r.size(node["size"], out);
-  if (const YAML::Node n = node["fps"]) {
-    out.fps = reader.positive(n, "fps");
-    if (out.fps > kMaxFps) reader.fail(n, "'fps' must be at most " + formatted(kMaxFps) + ", got " + n.Scalar());
-  }
-  if (node["background"]) out.background = r.color(node["background"], "background");
-  reader.optional(node, "line_width", out.lineWidth, &Reader::positive);
-  reader.optional(node, "font_size", out.fontSize, &Reader::positive);
-  if (node["colors"]) r.colors(node["colors"], out.colors);
+  readFrame(node, reader, out);
   if (node["camera"]) r.camera(node["camera"], out.camera);
   reader.optional(node, "contacts", out.contacts, &Reader::boolean);
   reader.optional(node, "contact_hold", out.contactHold, &Reader::nonNegative);
@@ -176,28 +183,22 @@ void readPanels(const YAML::Node& node, const Reader& reader, double duration, s
   }
 }
 
-namespace {
-
-// each body's `color` (checked) and `label` (its name by default), in the model's order
-std::vector<BodyLook> readLooks(const YAML::Node& bodies, const RenderReader& r, const Reader& reader) {
+std::vector<BodyLook> readLooks(const YAML::Node& bodies, const Reader& reader) {
   std::vector<BodyLook> looks;
   for (const YAML::Node& n : bodies) {
     BodyLook look;
-    if (n["color"]) look.color = r.color(n["color"], "color");
+    if (n["color"]) look.color = readColor(n["color"], reader, "color");
     look.label = n["label"] ? reader.text(n["label"], "label") : n["name"].Scalar();
     looks.push_back(std::move(look));
   }
   return looks;
 }
 
-}  // namespace
-
 RenderDef readRender(const sim::yaml::SceneSource& source, const sim::scene::SceneDef& model) {
   return sim::yaml::readGuarded(source.file, [&] {
     const Reader reader(source.file);
-    const RenderReader r(reader);
     RenderDef out;
-    out.bodies = readLooks(source.root["bodies"], r, reader);
+    out.bodies = readLooks(source.root["bodies"], reader);
     const YAML::Node block = source.root[kRenderKey];
     if (block) {
       readBlock(block, reader, out);

@@ -16,6 +16,14 @@ inline const sim::yaml::Keys kBodyKeys = {"color", "label"};
 // the look of the scene in `source`, whose model (read before) is `model`
 RenderDef readRender(const sim::yaml::SceneSource& source, const sim::scene::SceneDef& model);
 
+// the keys of the frame itself, which 2D and 3D scenes share: size, fps, background, line_width,
+// font_size, colors
+void readFrame(const YAML::Node& node, const sim::yaml::Reader& reader, RenderDef& out);
+// a color written "#rrggbb" under `key`
+std::string readColor(const YAML::Node& n, const sim::yaml::Reader& reader, const std::string& key);
+// each body's `color` (checked) and `label` (its name by default), in the order of `bodies`
+std::vector<BodyLook> readLooks(const YAML::Node& bodies, const sim::yaml::Reader& reader);
+
 // the block's parts, each in its own file: video timing and text (render_timing_yaml.cpp), the
 // lecture overlays, and `panels:` (`node` may be null): times within [0, duration], or `impacts`;
 // default the duration when the scene has two or more variants; asking for panels of a scene

@@ -14,5 +14,9 @@ int fontSizeFor(const RenderDef& render, int frameHeight);
 // the scene's style for frames `frameHeight` pixels high: each body its own color, or the palette's
 // next one (static bodies the static color), the render: block's colors, line width and font size
 draw::Style makeStyle(const Scene& scene, int frameHeight);
+// the same from the block itself (2D or 3D): `staticBodies` by body index (gray unless colored),
+// each teaching arrow's own color ("" for its role's)
+draw::Style makeStyle(const RenderDef& render, const std::vector<bool>& staticBodies,
+                      const std::vector<std::string>& arrowColors, int frameHeight);
 
 }  // namespace render::scene

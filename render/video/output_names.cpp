@@ -4,7 +4,11 @@
 
 namespace render::video {
 
-std::string outputBase(const sim::scene::SceneDef& def) { return def.variant.empty() ? def.name : def.name + "-" + def.variant; }
+std::string outputBase(const sim::scene::SceneDef& def) { return outputBase(def.name, def.variant); }
+
+std::string outputBase(const std::string& scene, const std::string& variant) {
+  return variant.empty() ? scene : scene + "-" + variant;
+}
 
 std::string timeForName(double t) {
   char buf[32];

@@ -10,6 +10,8 @@ namespace render::video {
 
 // "<scene>" or "<scene>-<variant>": the start of every output name of a run
 std::string outputBase(const sim::scene::SceneDef& def);
+// the same from the scene's name and its variant's ("" for the base scene), for 3D scenes too
+std::string outputBase(const std::string& scene, const std::string& variant);
 // the poll slide's file name: "<scene>-panels<when>[-strobe<N>].png", `when` "-t1.5" or "-impact2"
 std::string panelsFileName(const std::string& scene, const std::string& when, int strobe);
 // "-strobe<N>" for a still with N ghosts, "" without

@@ -10,6 +10,7 @@
 #include "render/draw/png_io.h"
 #include "render/frame/panels.h"
 #include "render/frame/scene_run.h"
+#include "render/jobs/atomic_file.h"
 #include "render/jobs/exit_status.h"
 #include "render/jobs/progress.h"
 #include "render/scene/scene_style.h"
@@ -26,16 +27,6 @@ namespace fs = std::filesystem;
 // the stills drawn by one run of each variant: their frames wait in memory for the panels to be put
 // together (16 frames of 1280×720 are 59 MB a variant)
 constexpr size_t kShotsPerRun = 16;
-
-// `dir`, created when missing; throws UsageError when it cannot be created or written
-void createDirectory(const std::string& dir) {
-  std::error_code error;
-  fs::create_directories(dir, error);
-  if (error || !fs::is_directory(dir))
-    throw UsageError("-o: cannot create the output directory " + dir + " (" +
-                     (error ? error.message() : "a file is in the way") + "); choose another with -o DIR");
-  if (::access(dir.c_str(), W_OK) != 0) throw UsageError("-o: cannot write in " + dir + "; choose another directory with -o DIR");
-}
 
 // `draw()`, a divergence of the simulation naming the variant and what was being drawn
 template <class Draw>
@@ -56,37 +47,6 @@ class VideoSink : public FrameSink {
   VideoWriter& video_;
 };
 
-// a directory filled under a temporary name and renamed over the old one when complete
-class StagedDirectory {
- public:
-  explicit StagedDirectory(const fs::path& final) : final_(final), staging_(final.parent_path() / stagingName(final)) {
-    fs::remove_all(staging_);
-    fs::create_directories(staging_);
-  }
-  ~StagedDirectory() {
-    std::error_code ignored;
-    if (!committed_) fs::remove_all(staging_, ignored);
-  }
-  std::string path() const { return staging_.string(); }
-  void commit() {
-    fs::remove_all(final_);
-    fs::rename(staging_, final_);
-    committed_ = true;
-  }
-
- private:
-  // ".<name>.part-<pid>" (appended piece by piece: g++ 12 warns of overlapping copies in "." + name)
-  static std::string stagingName(const fs::path& final) {
-    std::string name = ".";
-    name += final.filename().string();
-    name += ".part-" + std::to_string(::getpid());
-    return name;
-  }
-
-  fs::path final_, staging_;
-  bool committed_ = false;
-};
-
 // one video, its frames as PNG when asked for, then its poster
 void writeVideo(const PlannedVariant& v, const VideoOutput& out, bool quiet, const Wrote& wrote) {
   GlContext gl(out.width, out.height);
@@ -100,7 +60,7 @@ void writeVideo(const PlannedVariant& v, const VideoOutput& out, bool quiet, con
   std::unique_ptr<PngFrames> pngFrames;
   if (!out.framesPath.empty()) {
     // (the path ends in '/', a directory's name)
-    framesDir = std::make_unique<StagedDirectory>(fs::path(out.framesPath).parent_path());
+    framesDir = std::make_unique<StagedDirectory>(fs::path(out.framesPath).parent_path().string());
     pngFrames = std::make_unique<PngFrames>(framesDir->path(), out.frameCount);
     sinks.push_back(pngFrames.get());
   }
@@ -159,14 +119,23 @@ void writeStills(const RenderPlan& plan, const Stills& stills, const Wrote& wrot
 
 }  // namespace
 
+void createOutputDirectory(const std::string& dir) {
+  std::error_code error;
+  fs::create_directories(dir, error);
+  if (error || !fs::is_directory(dir))
+    throw UsageError("-o: cannot create the output directory " + dir + " (" +
+                     (error ? error.message() : "a file is in the way") + "); choose another with -o DIR");
+  if (::access(dir.c_str(), W_OK) != 0) throw UsageError("-o: cannot write in " + dir + "; choose another directory with -o DIR");
+}
+
 void writePlan(const RenderPlan& plan, bool quiet, const Wrote& wrote) {
   for (const VideoOutput& video : plan.videos) {
     const PlannedVariant& v = plan.variants[video.variant];
-    createDirectory(video.directory);
+    createOutputDirectory(video.directory);
     drawing(v, VariantDiverged::While::Video, [&] { writeVideo(v, video, quiet, wrote); });
   }
   if (plan.stills) {
-    createDirectory(plan.stills->directory);
+    createOutputDirectory(plan.stills->directory);
     writeStills(plan, *plan.stills, wrote);
   }
 }

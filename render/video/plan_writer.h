@@ -13,6 +13,9 @@ namespace render::video {
 // told the path of each output file (or frames directory) once it is complete
 using Wrote = std::function<void(const std::string& path)>;
 
+// `dir`, created when missing; throws UsageError when it cannot be created or written
+void createOutputDirectory(const std::string& dir);
+
 // writes every output of `plan`, in the order of plan.paths(), telling `wrote` each; without
 // `quiet`, a progress bar per video and a summary of each on standard output. Throws UsageError (a
 // directory that cannot be created or written), VariantDiverged, std::runtime_error (ffmpeg) and

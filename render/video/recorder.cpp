@@ -88,7 +88,29 @@ void PngFrames::frame(long index, const Image& image) {
   writePng(image, directory_ + "/" + name);
 }
 
+namespace {
+
+// a 2D scene's run as a source of frames
+class SceneRunFrames final : public FrameSource {
+ public:
+  explicit SceneRunFrames(SceneRun& run) : run_(run) {}
+  Image frameAt(double t) override { return run_.frameAt(t); }
+  Image titleCard() override { return run_.titleCard(); }
+  void showSlowMotion(std::function<double(double)> factorAt) override { run_.showSlowMotion(std::move(factorAt)); }
+
+ private:
+  SceneRun& run_;
+};
+
+}  // namespace
+
 void record(SceneRun& run, const TimeMap& map, double fps, const std::vector<FrameSink*>& sinks,
+            const std::function<void(long)>& progress) {
+  SceneRunFrames frames(run);
+  record(frames, map, fps, sinks, progress);
+}
+
+void record(FrameSource& run, const TimeMap& map, double fps, const std::vector<FrameSink*>& sinks,
             const std::function<void(long)>& progress) {
   const long count = map.frameCount(fps);
   run.showSlowMotion([&map](double t) { return map.factorAt(t); });

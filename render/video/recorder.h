@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "render/draw/image.h"
+#include "render/frame/frame_source.h"
 #include "render/frame/scene_run.h"
 #include "render/video/time_map.h"
 
@@ -41,6 +42,9 @@ class PngFrames : public FrameSink {
 // it (painted once), then the scene at map.simTime(k / fps), saying when it is slowed; `progress`
 // (may be empty) is told after each frame is painted. Throws what a sink or the simulation throws,
 // and Interrupted on Ctrl-C.
+void record(FrameSource& run, const TimeMap& map, double fps, const std::vector<FrameSink*>& sinks,
+            const std::function<void(long done)>& progress = {});
+// the same from a 2D scene's run
 void record(SceneRun& run, const TimeMap& map, double fps, const std::vector<FrameSink*>& sinks,
             const std::function<void(long done)>& progress = {});
 

@@ -14,9 +14,7 @@ using namespace sim::world;
 namespace {
 
 CheckResult compare(const ExpectDef& e, std::string quantity, std::vector<double> expected, std::vector<double> actual) {
-  double sum = 0.0;
-  for (size_t i = 0; i < expected.size(); ++i) sum += (actual[i] - expected[i]) * (actual[i] - expected[i]);
-  return {e.time, std::move(quantity), std::move(expected), std::move(actual), std::sqrt(sum), e.tolerance};
+  return compareValues(e.time, e.tolerance, std::move(quantity), std::move(expected), std::move(actual));
 }
 
 std::vector<double> pair(const Vec2& v) { return {v.x(), v.y()}; }

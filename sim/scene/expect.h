@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/core/check_result.h"
 #include "sim/scene/scene_def.h"
 #include "sim/world/world.h"
 
@@ -12,14 +13,7 @@ using namespace sim::core;
 using namespace sim::collision;
 using namespace sim::world;
 
-struct CheckResult {
-  double time = 0.0;
-  std::string quantity;  // e.g. "bar.velocity", "total_energy"
-  std::vector<double> expected, actual;
-  double error = 0.0;    // Euclidean norm of actual − expected
-  double tolerance = 0.0;
-  bool passed() const { return error <= tolerance; }
-};
+using sim::core::CheckResult;
 
 // every quantity of one entry, for a world already at the entry's time
 std::vector<CheckResult> evaluate(const ExpectDef& expect, const SceneDef& def, const World& world);

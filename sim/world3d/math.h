@@ -60,7 +60,7 @@ inline Quat unitQuaternion(double w, double x, double y, double z) {
   const Quat q(w, x, y, z);
   if (!q.coeffs().allFinite() || !(std::abs(q.norm() - 1.0) <= settings::kUnitQuaternionTolerance))
     throw std::invalid_argument("an orientation quaternion [w, x, y, z] must have unit length; this one has length " +
-                                std::to_string(q.norm()));
+                                std::to_string(q.norm()) + " (divide it by its length, or write {axis: [x, y, z], angle: θ})");
   return q.normalized();
 }
 

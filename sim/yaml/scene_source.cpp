@@ -57,6 +57,8 @@ void mergeVariant(const Reader& r, SceneSource& s) {
       if (!kv.second.IsMap() && !kv.second.IsNull())
         r.fail(kv.second, "variant '" + kv.first.Scalar() + "' must be a map of changes, got " + describe(kv.second));
       s.variantNames.push_back(kv.first.Scalar());
+      if (kv.second.IsMap() && kv.second["dimensions"])
+        r.fail(kv.second["dimensions"], "a variant cannot change 'dimensions': a scene is 2D or 3D throughout");
     }
   }
   if (s.variant.empty()) return;
@@ -83,7 +85,7 @@ std::string stem(const std::string& path) {
 }  // namespace
 
 SceneSource sceneSourceText(const std::string& text, const std::string& file, const std::string& variant) {
-  SceneSource s{file, stem(file), variant, {}, {}};
+  SceneSource s{file, stem(file), variant, {}, {}, 2};
   try {
     s.root = YAML::Load(text);
   } catch (const YAML::ParserException& e) {
@@ -94,6 +96,11 @@ SceneSource sceneSourceText(const std::string& text, const std::string& file, co
     const Reader r(file);
     if (!s.root.IsMap()) r.fail(s.root, "a scene is a map with at least 'bodies:'; got " + describe(s.root));
     mergeVariant(r, s);
+    if (const YAML::Node d = std::as_const(s.root)["dimensions"]) {
+      const double n = r.number(d, "dimensions");
+      if (n != 2.0 && n != 3.0) r.fail(d, "'dimensions' is 2 (the default: a plane) or 3 (space), got " + d.Scalar());
+      s.dimensions = static_cast<int>(n);
+    }
   });
   return s;
 }

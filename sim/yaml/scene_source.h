@@ -18,6 +18,7 @@ struct SceneSource {
   std::string variant;                    // the variant merged in, empty for the base scene
   std::vector<std::string> variantNames;  // every variant the file defines, in order
   YAML::Node root;                        // a map; variants deep-merged over the base scene
+  int dimensions = 2;                     // `dimensions:`, 2 (the default) or 3; no variant changes it
 };
 
 // the scene in `path`, with the named variant deep-merged over it ("" for the base scene): maps key

@@ -22,9 +22,13 @@ class SceneReader : public Reader {
     SceneDef s;
     s.variant = source.variant;
     s.variantNames = source.variantNames;
-    checkKeys(root, with({"name", "description", "duration", "world", "sim", "bodies", "forces", "events", "variants", "expect"},
+    checkKeys(root, with({"name", "description", "duration", "world", "sim", "bodies", "forces", "events", "variants", "expect",
+                          "dimensions"},
                          others_.scene),
               "the scene");
+    // sceneSourceText has read `dimensions`; a 3D scene's model is sim/yaml3d's to read
+    if (source.dimensions != 2)
+      fail(root["dimensions"], "this reads 2D scenes, and this one is 3D (dimensions: 3); read it with sim::yaml3d::readModel");
     s.name = root["name"] ? text(root["name"], "name") : source.stem;
     optional(root, "description", s.description, &Reader::text);
     optional(root, "duration", s.duration, &Reader::positive);
@@ -191,31 +195,12 @@ class SceneReader : public Reader {
     return c;
   }
 
-  // the coordinate frame a point or a force is written in
-  std::string coordinateFrame(const YAML::Node& n) {
-    const std::string f = text(n, "frame");  // "body" or "world"
-    if (f != "body" && f != "world") fail(n, "frame must be 'body' or 'world', got '" + f + "'");
-    return f;
-  }
-
-  void checkTime(const YAML::Node& n, double t, const SceneDef& s, const std::string& what) {
-    if (t < 0.0 || t > s.duration)
-      fail(n, what + " time " + n.Scalar() + " is outside the scene's duration [0, " + formatNumber(s.duration) +
-                  "]; move it or lengthen 'duration'");
-  }
-
-  static std::string formatNumber(double x) {
-    std::ostringstream o;
-    o << x;
-    return o.str();
-  }
-
   EventDef readEvent(const YAML::Node& n, const SceneDef& s) {
     checkKeys(n, {"time", "body", "impulse", "point", "frame"}, "an event");
     EventDef e;
     const YAML::Node t = required(n, "time", "an event");
     e.time = finite(t, "time");
-    checkTime(t, e.time, s, "event");
+    checkTime(t, e.time, s.duration, "event");
     e.body = bodyRef(n, "body", s, "an event");
     e.impulse = vec2(required(n, "impulse", "an event"), "impulse");
     optional(n, "point", e.point, &Reader::vec2);
@@ -231,7 +216,7 @@ class SceneReader : public Reader {
     e.loc = {n.Mark().line + 1, n.Mark().column + 1};
     const YAML::Node t = required(n, "time", "an expect entry");
     e.time = finite(t, "time");
-    checkTime(t, e.time, s, "expect");
+    checkTime(t, e.time, s.duration, "expect");
     if (n["body"]) e.body = bodyRef(n, "body", s, "an expect entry");
     for (const char* key : {"position", "angle", "velocity", "angular_velocity"})
       if (n[key] && e.body.empty()) fail(n[key], std::string("'") + key + "' is a body's: add 'body:'");

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -139,10 +140,11 @@ class Reader {
 
   // out = read(map[key], key) when the map has `key`: every optional key reads this way, e.g.
   // optional(body, "mass", def.mass, &Reader::positive)
-  template <class T, class Value>
+  // (`read` may be a method of a reader derived from this one, such as the 3D reader's vec3)
+  template <class T, class Self, class Value>
   void optional(const YAML::Node& map, const std::string& key, T& out,
-                Value (Reader::*read)(const YAML::Node&, const std::string&) const) const {
-    if (const YAML::Node n = map[key]) out = (this->*read)(n, key);
+                Value (Self::*read)(const YAML::Node&, const std::string&) const) const {
+    if (const YAML::Node n = map[key]) out = (static_cast<const Self*>(this)->*read)(n, key);
   }
 
   // the value under `key`, which must be present
@@ -152,17 +154,35 @@ class Reader {
     return n;
   }
 
-  // the name under `key` (required), which must name a body of `scene`, listing them when it does not
-  std::string bodyRef(const YAML::Node& map, const std::string& key, const sim::scene::SceneDef& scene,
-                      const std::string& what) const {
+  // the name under `key` (required), which must name a body of `scene` (a 2D or a 3D scene's
+  // definitions), listing them when it does not
+  template <class Scene>
+  std::string bodyRef(const YAML::Node& map, const std::string& key, const Scene& scene, const std::string& what) const {
     const YAML::Node n = required(map, key, what);
     const std::string name = text(n, key);
     if (scene.bodyIndex(name) < 0) {
       std::string known;
-      for (const sim::scene::BodyDef& b : scene.bodies) known += (known.empty() ? "; the bodies are: " : ", ") + b.name;
+      for (const auto& b : scene.bodies) known += (known.empty() ? "; the bodies are: " : ", ") + b.name;
       fail(n, "no body named '" + name + "'" + known);
     }
     return name;
+  }
+
+  // the coordinate frame a point or a force is written in: "body" or "world"
+  std::string coordinateFrame(const YAML::Node& n) const {
+    const std::string f = text(n, "frame");  // "body" or "world"
+    if (f != "body" && f != "world") fail(n, "frame must be 'body' or 'world', got '" + f + "'");
+    return f;
+  }
+
+  // an event's or an expect entry's time t, which must lie within [0, duration]
+  void checkTime(const YAML::Node& n, double t, double duration, const std::string& what) const {
+    if (t < 0.0 || t > duration) {
+      std::ostringstream d;
+      d << duration;
+      fail(n, what + " time " + n.Scalar() + " is outside the scene's duration [0, " + d.str() +
+                  "]; move it or lengthen 'duration'");
+    }
   }
 
   // one of `names`, listing them when it is not

@@ -306,5 +306,34 @@ else
   ok "sweep and stability leave no partial files"
 fi
 
+# ---- 3D scenes (dimensions: 3): check, simulate --json/--trace, snapshot, and their bad input ----
+
+TOP=$SCENES/lecture/13_symmetric_top.yaml
+expect "check of a 3D scene passes its closed forms and says it has no contacts" 0 out "contacts: none" check "$TOP"
+run simulate "$TOP" --variant oblate --until 0.5 --json --trace top.csv
+json_check "simulate --json of a 3D scene names each quantity as the issue does" \
+  'sorted(b.keys()) == ["angular_momentum", "angular_velocity", "kinetic_energy", "name", "orientation", "position", "velocity"]' \
+  'len(b["position"]) == 3 and len(b["orientation"]) == 4 and len(b["angular_momentum"]) == 3' \
+  'abs(sum(x * x for x in b["orientation"]) - 1) < 1e-12' \
+  'sorted(d["energy"].keys()) == ["kinetic", "potential", "total"]' \
+  'len(d["momentum"]) == 3 and len(d["angular_momentum"]) == 3' \
+  'abs(d["energy"]["total"] - 1.2365308684529426) < 1e-5'
+if [ "$(head -n 1 top.csv 2>/dev/null)" = "t,body,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,kinetic_energy" ] && [ "$(wc -l < top.csv)" -eq 502 ]; then
+  ok "simulate --trace of a 3D scene: the issue's header, a row per step"
+else
+  not_ok "simulate --trace of a 3D scene: the issue's header, a row per step" "$(head -n 2 top.csv 2>&1)"
+fi
+cat >far_quaternion.yaml <<'EOF'
+dimensions: 3
+bodies:
+  - name: a
+    shape: {sphere: 1}
+    orientation: [1, 1, 0, 0]
+EOF
+expect "a quaternion far from unit length is bad input at FILE:LINE:COL" 2 err "far_quaternion.yaml:5:18" check far_quaternion.yaml
+expect "--collisions on a 3D scene exits 2: nothing collides in 3D" 2 err "no contacts" simulate "$TOP" --collisions event
+expect "snapshot --impacts of a 3D scene exits 2" 2 err "nothing collides in 3D" snapshot "$TOP" --impacts -o snap3
+expect "snapshot of a 3D scene writes its PNG" 0 out "13_symmetric_top-oblate-t0.5.png" snapshot "$TOP" --variant oblate --at 0.5 --size 160x90 -o snap3
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

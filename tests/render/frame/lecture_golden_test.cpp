@@ -1,5 +1,6 @@
-// A golden frame of each lecture scene (scenes/lecture/*.yaml): its first variant (or the scene
-// itself) at half its duration, drawn 640 × 360, against tests/golden/lecture/<scene>.png. Half
+// A golden frame of each lecture scene (scenes/lecture/*.yaml, the 3D ones in perspective): its first
+// variant (or the scene itself) at half its duration, drawn 640 × 360, against
+// tests/golden/lecture/<scene>.png. Half
 // the duration shows each scene's idea under way: the held impacts, the overlays, the failures.
 #include <doctest/doctest.h>
 
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "render/frame/scene_run.h"
+#include "render/frame3d/scene_run3.h"
 #include "render/scene/scene_style.h"
 #include "sim/yaml/scene_yaml.h"
 #include "support/drawn_scene.h"
@@ -29,6 +31,20 @@ std::vector<fs::path> lectureScenes() {
     if (entry.path().extension() == ".yaml") files.push_back(entry.path());
   std::sort(files.begin(), files.end());
   return files;
+}
+
+// a 3D scene's frame, as the 2D ones: its first variant at half its duration
+render::draw::Image frame3d(const std::string& file, render::draw::GlContext& gl, render::draw::TextRenderer& text) {
+  const auto load = [&](const std::string& variant) {
+    return render::scene3d::readScene(sim::yaml::readSceneSource(file, variant), {{"stability"}, {}});
+  };
+  const render::scene3d::Scene base = load("");
+  render::scene3d::Scene def = load(base.model.variantNames.empty() ? "" : base.model.variantNames.front());
+  def.render.width = kWidth;
+  def.render.height = kHeight;
+  const render::frame3d::RunSurvey3 survey = render::frame3d::surveyRun(def);
+  render::frame3d::SceneRun3 run(def, render::frame3d::cameraFor(def, survey), survey, &gl, &text);
+  return run.frameAt(0.5 * def.model.duration);
 }
 
 }  // namespace
@@ -92,6 +108,8 @@ TEST_CASE("every text of every lecture scene stands apart: no two overlap, none 
   render::draw::TextRenderer text;
   size_t frames = 0, texts = 0;
   for (const fs::path& file : lectureScenes()) {
+    // (the 2D frames' texts: a 3D frame's are its state text and arrow labels, placed by frame3d)
+    if (sim::yaml::readSceneSource(file.string()).dimensions == 3) continue;
     const render::scene::Scene base = drawn_scene::loadFile(file.string());
     std::vector<std::string> variants = base.model.variantNames;
     if (variants.empty()) variants.push_back("");
@@ -124,6 +142,10 @@ TEST_CASE("golden: a frame of every lecture scene at half its duration") {
   render::draw::TextRenderer text;
   for (const fs::path& file : files) {
     CAPTURE(file.string());
+    if (sim::yaml::readSceneSource(file.string()).dimensions == 3) {
+      golden::checkGolden("lecture/" + file.stem().string(), frame3d(file.string(), gl, text));
+      continue;
+    }
     const render::scene::Scene base = drawn_scene::loadFile(file.string());
     const std::string variant = base.model.variantNames.empty() ? "" : base.model.variantNames.front();
     render::scene::Scene def = drawn_scene::loadFile(file.string(), variant);

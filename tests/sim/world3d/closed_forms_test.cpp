@@ -6,35 +6,13 @@
 #include <numbers>
 
 #include "sim/world3d/diagnostics.h"
+#include "sim/world3d/measures.h"
 #include "support/world3d_fixtures.h"
 
 using namespace sim::world3d;
 using fixtures3d::relativeError;
 
 namespace {
-
-// how far a vector turns in the plane of unit vectors (e1, e2), unwrapped from sample to sample
-struct TurningAngle {
-  Vec3 e1, e2;
-  double first = 0.0, angle = 0.0;
-  bool started = false;
-  void add(const Vec3& v) {
-    const double a = std::atan2(v.dot(e2), v.dot(e1));
-    if (!started) {
-      first = angle = a, started = true;
-      return;
-    }
-    angle += std::remainder(a - std::remainder(angle, 2 * std::numbers::pi), 2 * std::numbers::pi);
-  }
-  double turned() const { return angle - first; }
-};
-
-// two unit vectors completing n into a right-handed frame
-std::pair<Vec3, Vec3> planeNormalTo(const Vec3& n) {
-  const Vec3 u = n.normalized();
-  const Vec3 e1 = u.unitOrthogonal();
-  return {e1, u.cross(e1)};
-}
 
 // a torque-free symmetric ellipsoid, semi-axes (0.3, 0.3, 0.1): I₁ = I₂ = 0.02 m, I₃ = 0.036 m
 World symmetricTop(Integrator method, double dt, const Vec3& omegaBody) {
@@ -60,24 +38,18 @@ World racket(Integrator method, double dt) {
   return w;
 }
 
-// the period of ω_b,y measured over `periods` periods: from its sign changes, each located by
-// linear interpolation between the steps around it (two changes a period)
+// the period of ω_b,y measured over `periods` periods: from its sign changes, each located on
+// Hermite's cubic between the steps around it (two changes a period)
 double measuredFlipPeriod(World w, int periods) {
   struct Crossings : StepObserver {
-    double last = 0.0, lastTime = 0.0;
-    std::vector<double> times;
-    void afterStep(const World& world) override {
-      const Body& b = world.bodies[0];
-      const double wy = (b.rotation().transpose() * b.omega).y();
-      if (last != 0.0 && (wy < 0) != (last < 0)) times.push_back(lastTime + (world.time - lastTime) * last / (last - wy));
-      last = wy, lastTime = world.time;
-    }
-  } crossings;
-  crossings.last = (w.bodies[0].rotation().transpose() * w.bodies[0].omega).y();
+    explicit Crossings(const World& w) : measures(w.bodies[0], w.time) {}
+    void afterStep(const World& world) override { measures.add(world.bodies[0], world.time); }
+    FreeBodyMeasures measures;
+  } crossings(w);
   const size_t needed = 2 * periods + 1;
-  while (crossings.times.size() < needed && w.time < 100.0) w.advanceTo(w.time + 1.0, &crossings);
-  REQUIRE(crossings.times.size() >= needed);  // a body that never flips fails here, not by hanging
-  return (crossings.times[2 * periods] - crossings.times[0]) / periods;
+  while (crossings.measures.signChanges() < needed && w.time < 100.0) w.advanceTo(w.time + 1.0, &crossings);
+  REQUIRE(crossings.measures.signChanges() >= needed);  // a body that never flips fails here, not by hanging
+  return crossings.measures.flipPeriod();
 }
 
 }  // namespace
@@ -115,8 +87,8 @@ TEST_CASE("the symmetric top: Ω = ω₃ (I₃ − I₁)/I₁ in the body, |L|/I
         coneError = std::max(coneError, std::abs(std::atan2(b.omega.cross(l).norm(), b.omega.dot(l)) - coneAngle));
       }
     } p;
-    p.body.e1 = Vec3::UnitX(), p.body.e2 = Vec3::UnitY();
-    std::tie(p.space.e1, p.space.e2) = planeNormalTo(b0.angularMomentum());
+    p.body = TurningAngle(Vec3::UnitZ());
+    p.space = TurningAngle(b0.angularMomentum());
     p.coneAngle = coneAngle(top);
     World w = start;
     p.afterStep(w);  // the first sample, at t = 0

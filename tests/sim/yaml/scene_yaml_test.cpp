@@ -12,32 +12,19 @@
 #include <unistd.h>
 
 #include "sim/yaml/scene_yaml.h"
+#include "support/scene_error_check.h"
 
 namespace {
 
 const char* const kFile = "inline.yaml";
 
-// loading `text` (with `variant`) must throw a SceneError at `line`:`column` (1-based; column 0:
-// not checked) whose message contains every one of `words`
+// loading `text` (with `variant`) must throw a SceneError at `line`:`column` (column 0: not
+// checked) whose message contains every one of `words`
 void expectSceneError(const std::string& text, int line, int column, std::initializer_list<std::string> words,
                       const std::string& variant = "") {
-  INFO("scene text:\n", text);
-  INFO("variant: '", variant, "'");
-  try {
-    (void)sim::yaml::loadSceneText(text, kFile, variant);
-    FAIL_CHECK("the scene loaded; expected a SceneError");
-  } catch (const sim::yaml::SceneError& e) {
-    INFO("what(): ", std::string(e.what()));
-    CHECK(e.file == kFile);
-    CHECK(e.line == line);
-    if (column > 0) CHECK(e.column == column);
-    for (const std::string& w : words) CHECK_MESSAGE(e.message.find(w) != std::string::npos, "message lacks '" << w << "'");
-    // what() is FILE:LINE:COL: message
-    CHECK(std::string(e.what()) ==
-          std::string(kFile) + ":" + std::to_string(e.line) + ":" + std::to_string(e.column) + ": " + e.message);
-  } catch (const std::exception& e) {
-    FAIL_CHECK("expected a SceneError, got another exception: " << e.what());
-  }
+  scene_errors::expectSceneError(
+      [](const std::string& t, const std::string& f, const std::string& v) { return sim::yaml::loadSceneText(t, f, v); },
+      kFile, text, line, column, words, variant);
 }
 
 // names the call site in failures reported from inside the helper

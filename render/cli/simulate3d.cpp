@@ -1,0 +1,133 @@
+// `rigidreel simulate` of a 3D scene: the state at the end time as text or one JSON object (every
+// body's position, orientation [w, x, y, z], velocity, angular velocity and angular momentum, world
+// frame; the energies and momenta of the whole scene), and every step as a CSV trace.
+#include <iomanip>
+#include <sstream>
+#include <iostream>
+#include <memory>
+
+#include "render/cli/commands.h"
+#include "render/cli/space3d.h"
+#include "render/jobs/atomic_file.h"
+#include "render/jobs/json_writer.h"
+#include "sim/scene3d/scene_build.h"
+#include "sim/world3d/diagnostics.h"
+
+namespace render::cli {
+using namespace render::jobs;
+using namespace sim::world3d;
+
+namespace {
+
+// one CSV row per body per step, and again after each event
+class Trace3 : public StepObserver {
+ public:
+  Trace3(std::ostream& out, const sim::scene3d::SceneDef& def) : out_(out), def_(def) {
+    out_ << "t,body,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,kinetic_energy\n";
+  }
+  void afterStep(const World& w) override { rows(w); }
+  void afterEvent(const World& w, const ImpulseEvent&) override { rows(w); }
+  void rows(const World& w) {
+    for (size_t i = 0; i < w.bodies.size(); ++i) {
+      const Body& b = w.bodies[i];
+      out_ << formatNumber(w.time) << ',' << def_.bodies[i].name;
+      for (double x : {b.x.x(), b.x.y(), b.x.z(), b.q.w(), b.q.x(), b.q.y(), b.q.z(), b.v.x(), b.v.y(), b.v.z(),
+                       b.omega.x(), b.omega.y(), b.omega.z(), kineticEnergy(b).total()})
+        out_ << ',' << formatNumber(x);
+      out_ << '\n';
+    }
+  }
+
+ private:
+  std::ostream& out_;
+  const sim::scene3d::SceneDef& def_;
+};
+
+JsonWriter& vector3(JsonWriter& j, const Vec3& v) { return j.beginArray().value(v.x()).value(v.y()).value(v.z()).endArray(); }
+
+void printJson(const sim::scene3d::SceneDef& def, const World& w) {
+  JsonWriter j(std::cout);
+  j.beginObject();
+  j.field("scene", def.name);
+  j.key("variant");
+  def.variant.empty() ? j.null() : j.value(def.variant);
+  j.field("t", w.time).field("integrator", kIntegratorNames.name(w.integrator)).field("dt", w.dt).field("steps", w.steps);
+  j.key("bodies").beginArray();
+  for (size_t i = 0; i < w.bodies.size(); ++i) {
+    const Body& b = w.bodies[i];
+    j.beginObject().field("name", def.bodies[i].name);
+    vector3(j.key("position"), b.x);
+    j.key("orientation").beginArray().value(b.q.w()).value(b.q.x()).value(b.q.y()).value(b.q.z()).endArray();
+    vector3(j.key("velocity"), b.v);
+    vector3(j.key("angular_velocity"), b.omega);
+    vector3(j.key("angular_momentum"), b.angularMomentum());
+    j.field("kinetic_energy", kineticEnergy(b).total()).endObject();
+  }
+  j.endArray();
+  const Energy e = energy(w);
+  j.key("energy").beginObject().field("kinetic", e.kinetic).field("potential", e.potential).field("total", e.total()).endObject();
+  vector3(j.key("momentum"), linearMomentum(w));
+  vector3(j.key("angular_momentum"), angularMomentum(w));
+  j.endObject();
+  std::cout << '\n';
+}
+
+std::string triple(const Vec3& v) {
+  std::ostringstream o;
+  o << std::setprecision(6) << '(' << v.x() << ", " << v.y() << ", " << v.z() << ')';
+  return o.str();
+}
+
+void printText(const sim::scene3d::SceneDef& def, const World& w) {
+  std::cout << def.name << (def.variant.empty() ? "" : " [" + def.variant + "]") << ": t = " << formatNumber(w.time)
+            << ", " << kIntegratorNames.name(w.integrator) << (w.normalizeQuaternions ? "" : " (q unnormalized)")
+            << ", dt = " << formatNumber(w.dt) << ", " << w.steps << " steps\n";
+  for (size_t i = 0; i < w.bodies.size(); ++i) {
+    const Body& b = w.bodies[i];
+    std::cout << def.bodies[i].name << ": x = " << triple(b.x) << ", q = [" << std::setprecision(6) << b.q.w() << ", "
+              << b.q.x() << ", " << b.q.y() << ", " << b.q.z() << "] (|q| = " << std::setprecision(10) << b.q.norm()
+              << ")\n  v = " << triple(b.v) << ", omega = " << triple(b.omega) << ", L = " << triple(b.angularMomentum())
+              << ", kinetic " << std::setprecision(10) << kineticEnergy(b).total() << '\n';
+  }
+  const Energy e = energy(w);
+  std::cout << std::setprecision(10) << "energy: kinetic " << e.kinetic << ", potential " << e.potential << ", total "
+            << e.total() << "\nmomentum: " << triple(linearMomentum(w)) << ", angular momentum about the origin: "
+            << triple(angularMomentum(w)) << "\ncontacts: none (3D scenes model free bodies)\n";
+}
+
+}  // namespace
+
+std::string divergedMessage(const std::string& file, const sim::scene3d::SceneDef& def, const Diverged& d) {
+  return file + ": the simulation diverged at t = " + formatNumber(d.time) + ": body '" + def.bodies[d.body].name +
+         "' has a non-finite state; try a smaller step (--dt " + formatNumber(def.dt / 4) +
+         ") or another integrator (--integrator splitting)";
+}
+
+int simulate3d(const SceneOptions& o, std::optional<double> until, bool json, const std::string& tracePath) {
+  const sim::scene3d::SceneDef def = o.load3().model();
+  const double end = until.value_or(def.duration);
+  if (!(end >= 0.0) || !std::isfinite(end)) throw UsageError("--until: the end time must be zero or a positive finite number");
+  World world = sim::scene3d::buildWorld(def);
+  std::unique_ptr<AtomicFile> traceFile;
+  std::unique_ptr<Trace3> trace;
+  if (!tracePath.empty()) {
+    try {
+      traceFile = std::make_unique<AtomicFile>(tracePath);
+    } catch (const std::runtime_error& e) {
+      throw UsageError(std::string("--trace: ") + e.what());
+    }
+    trace = std::make_unique<Trace3>(traceFile->stream(), def);
+    trace->rows(world);
+  }
+  try {
+    world.advanceTo(end, trace.get());
+  } catch (const Diverged& d) {
+    std::cerr << divergedMessage(o.scene, def, d) << '\n';
+    return kExitFailure;
+  }
+  if (traceFile) traceFile->commit();
+  json ? printJson(def, world) : printText(def, world);
+  return kExitOk;
+}
+
+}  // namespace render::cli

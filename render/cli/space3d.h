@@ -1,0 +1,31 @@
+// The command line's 3D path: each subcommand asks isSceneFile3d first and hands a 3D scene
+// (dimensions: 3) to these; the 2D path stays as it is.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "render/cli/method_lists.h"
+#include "render/cli/output.h"
+#include "render/cli/scene_options.h"
+#include "render/video/render_plan3.h"
+#include "sim/world3d/world.h"
+
+namespace render::cli {
+
+// `simulate`: the state at `until` (the duration by default) as text or JSON, every step to a CSV
+// trace; kExitOk, or kExitFailure when the simulation diverged
+int simulate3d(const SceneOptions& options, std::optional<double> until, bool json, const std::string& trace);
+// `check` of one file: every variant's model described and its expect entries compared; false when
+// one fails. Throws sim::yaml::SceneError, sim::world3d::Diverged
+bool check3d(const std::string& file);
+// `sweep` and `stability`
+int sweep3d(const SceneOptions& scene, const MethodLists& methods, const std::string& dt, int repeat, const std::string& outDir);
+int stability3d(const SceneOptions& scene, const MethodLists& methods, const std::string& outDir);
+// (`render`, `snapshot` and `lecture` make a 3D scene's plan with render_plan3.h and write it with
+// plan_writer3.h)
+
+// "the simulation diverged at t = …: body '…' has a non-finite state; try …", for standard error
+std::string divergedMessage(const std::string& file, const sim::scene3d::SceneDef& def, const sim::world3d::Diverged& d);
+
+}  // namespace render::cli

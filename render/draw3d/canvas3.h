@@ -1,0 +1,48 @@
+// The drawing interface of 3D frames: solids in perspective, and a 2D canvas over them for
+// everything drawn on top (arrows, trails, text, panels), in pixels with y up (overlayPoint).
+// GlCanvas3 draws it with OpenGL; DrawList3 records it for tests, as DrawList does in 2D.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "render/draw/camera.h"
+#include "render/draw/draw_list.h"
+#include "render/draw3d/mesh.h"
+
+namespace render::draw3d {
+using render::draw::Canvas;
+using render::draw::Pen;
+
+class Canvas3 {
+ public:
+  virtual ~Canvas3() = default;
+  // `mesh` (body coordinates) at the pose r = x + R r_b, shaded in its body's color (pen.body), with
+  // a depth buffer, its creases, silhouette and curves outlined
+  virtual void solid(const Mesh& mesh, const Vec3& x, const Mat3& rotation, const Pen& pen) = 0;
+  // the canvas over the solids: pixels, x to the right and y up from the bottom-left corner
+  virtual Canvas& overlay() = 0;
+};
+
+// a pixel (y down from the top, as Camera3 gives it) in the overlay's coordinates (y up)
+inline Vec2 overlayPoint(const Vec2& pixel, int heightPx) { return {pixel.x(), heightPx - pixel.y()}; }
+// the 2D camera whose world is the overlay's: one unit a pixel, y up
+render::draw::Camera overlayCamera(int widthPx, int heightPx);
+
+// the calls as text lines: a solid per line, then the overlay's lines (DrawList::lines)
+class DrawList3 final : public Canvas3 {
+ public:
+  void solid(const Mesh& mesh, const Vec3& x, const Mat3& rotation, const Pen& pen) override;
+  Canvas& overlay() override { return overlay_; }
+
+  // e.g. "solid Body#0 box 0.1 0.4 0.8 x=(0,0,0) R=(1,0,0)(0,1,0)(0,0,1)" (R by its rows)
+  std::vector<std::string> lines() const;
+  std::string toText() const;
+  const render::draw::DrawList& overlayCalls() const { return overlay_; }
+
+ private:
+  std::vector<std::string> solids_;
+  render::draw::DrawList overlay_;
+};
+
+}  // namespace render::draw3d

@@ -1,0 +1,54 @@
+// 3D frames drawn with OpenGL 1.x (fixed function, through OSMesa, 4× multisampled as 2D frames):
+// solids as triangles in clip coordinates that Camera3 computes (GL's matrices stay identity), with
+// a depth buffer; shaded on the CPU by a diffuse light from the viewer's upper left (Lambert), so
+// that a face's brightness tells its slope; creases, silhouettes and surface curves outlined as
+// screen-space strips at the depth of their points, over faces pushed back by a polygon offset.
+// Then the 2D overlay: render::draw::GlCanvas on the same context, in pixels, over the solids.
+#pragma once
+
+#include "render/draw/gl_canvas.h"
+#include "render/draw3d/canvas3.h"
+
+namespace render::draw3d {
+using render::draw::Color;
+using render::draw::GlContext;
+using render::draw::Image;
+using render::draw::Style;
+using render::draw::TextRenderer;
+
+// the light of 3D frames: a fraction of each color always, and the rest by the cosine of the angle
+// between the surface and the light (from the upper left, behind the viewer)
+struct Lighting {
+  double ambient = 0.55;
+  double diffuse = 0.45;
+  Vec3 toLight = Vec3(-0.45, 0.6, -1.0).normalized();  // camera coordinates: right, up, forward
+};
+
+// the color of a surface of color `base` with outward normal `normal` (world), seen by `camera`
+Color shade(const Color& base, const Vec3& normal, const Camera3& camera, const Lighting& light = {});
+
+class GlCanvas3 final : public Canvas3 {
+ public:
+  GlCanvas3(GlContext& gl, TextRenderer& text, const Style& style);
+
+  // start a frame: clear color and depth, look through `camera`
+  void begin(const Camera3& camera);
+  // the frame, the overlay's text on top
+  Image finish();
+
+  void solid(const Mesh& mesh, const Vec3& x, const Mat3& rotation, const Pen& pen) override;
+  Canvas& overlay() override;
+
+ private:
+  // a line from a to b (world) `widthPx` wide on the frame, at the depth of its points, clipped to
+  // the near plane
+  void strokeLine(const Vec3& a, const Vec3& b, double widthPx);
+
+  GlContext& gl_;
+  const Style& style_;
+  Camera3 camera_;
+  render::draw::GlCanvas overlay_;
+  bool overlaid_ = false;  // GL is set up for the overlay
+};
+
+}  // namespace render::draw3d

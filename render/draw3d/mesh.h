@@ -1,0 +1,39 @@
+// The solids of 3D frames as triangle meshes in body coordinates: a box's six faces (flat, its
+// twelve edges outlined), an ellipsoid's latitude-longitude grid (smooth, its silhouette and its
+// three principal ellipses outlined, so that a turning sphere is seen to turn).
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "render/draw3d/camera3.h"
+#include "sim/world3d/shape.h"
+
+namespace render::draw3d {
+
+struct Mesh {
+  std::string name;                           // e.g. "box 0.1 0.4 0.8", for draw lists
+  std::vector<Vec3> positions;                // body coordinates
+  std::vector<Vec3> normals;                  // per position, outward, unit
+  std::vector<std::array<int, 3>> triangles;  // counter-clockwise seen from outside
+  std::vector<std::array<int, 2>> creases;    // edges always outlined (a box's)
+  std::vector<std::vector<Vec3>> curves;      // closed lines on the surface always drawn, body coordinates
+  // a smooth mesh's interior edges (a, b) with the two triangles that share them: an edge is on the
+  // silhouette when one of them faces the eye and the other does not
+  std::vector<std::array<int, 4>> edges;
+};
+
+Mesh boxMesh(const Vec3& sides);
+// `rings` latitudes from pole to pole, `segments` longitudes: at 24 × 48 the silhouette's facets
+// are under a pixel for an ellipsoid 300 px across
+Mesh ellipsoidMesh(const Vec3& semiAxes, int rings = 24, int segments = 48);
+Mesh meshOf(const sim::world3d::Shape& shape);
+
+// whether triangle t of the mesh faces a point (body coordinates)
+bool facing(const Mesh& mesh, int triangle, const Vec3& point);
+// the silhouette seen from `eye` (body coordinates): the smooth mesh's edges between a triangle
+// facing it and one facing away
+std::vector<std::array<int, 2>> silhouette(const Mesh& mesh, const Vec3& eye);
+
+}  // namespace render::draw3d

@@ -1,0 +1,262 @@
+#include "render/frame3d/frame_painter3.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+
+#include "render/frame/frame_painter.h"
+#include "render/draw/text.h"
+#include "render/frame/quantity_text.h"
+#include "render/scene/scene_style.h"
+
+namespace render::frame3d {
+using render::draw::Role;
+using render::scene3d::Arrow3Def;
+using namespace sim::world3d;
+
+namespace {
+
+// the largest arrow of each kind is this fraction of the view's height at the camera's target: long enough
+// to stick out of the bodies, short enough to stay clear of the text in the corners
+constexpr double kArrowFraction = 1.0 / 4.0;
+// a body's axes stick out of it: this many times its bounding radius long
+constexpr double kAxesLength = 1.3;
+// paths are drawn with points at least this many pixels apart: smooth, and a few hundred segments
+constexpr double kPathSpacingPx = 1.5;
+
+double arrowScale(double given, double largest, const Camera3& camera) {
+  if (given > 0.0) return given;
+  return largest > 0.0 ? kArrowFraction * camera.viewHeight() / largest : 1.0;
+}
+
+// the center of `text`'s box (`em` its size, px) beyond `anchor` in the unit `direction`, a third of a
+// line clear of it: the half-extent of the box along the direction is its support distance
+Vec2 labelBeyond(const Vec2& anchor, const Vec2& direction, const std::string& text, double em) {
+  const double halfWidth = 0.5 * render::draw::approximateWidth(text, em), halfHeight = 0.5 * render::draw::kLineHeight * em;
+  const double reach = std::abs(direction.x()) * halfWidth + std::abs(direction.y()) * halfHeight;
+  return anchor + direction * (reach + em / 3.0);
+}
+
+// a unit vector along v, or `fallback` when v has no length
+Vec2 directionOr(const Vec2& v, const Vec2& fallback) {
+  const double n = v.norm();
+  return n > 0.0 ? Vec2(v / n) : fallback;
+}
+
+std::string defaultLabel(Arrow3Def::Show show) {
+  switch (show) {
+    case Arrow3Def::Show::Omega: return "ω";
+    case Arrow3Def::Show::AngularMomentum: return "L";
+    case Arrow3Def::Show::Velocity: return "v";
+    case Arrow3Def::Show::Path: return "r";
+    default: return "";
+  }
+}
+
+}  // namespace
+
+FramePainter3::FramePainter3(const render::scene3d::Scene& def, const Camera3& camera, const RunSurvey3& survey,
+                             const render::frame::TextWidth& width)
+    : def_(def),
+      camera_(camera),
+      overlay_(overlayCamera(camera.widthPx(), camera.heightPx())),
+      omegaScale_(arrowScale(def.space.omegaScale, survey.maxOmega, camera)),
+      momentumScale_(arrowScale(def.space.angularMomentumScale, survey.maxAngularMomentum, camera)),
+      velocityScale_(arrowScale(def.space.velocityScale, survey.maxSpeed, camera)),
+      em_(render::scene::fontSizeFor(def.render, camera.heightPx())),
+      panel_(def, overlay_, survey) {
+  for (const sim::scene3d::BodyDef& b : def.model.bodies) meshes_.push_back(meshOf(b.shape));
+  // the caption is the same in every frame: wrapped once, to the frame less an inset on each side
+  const std::string caption = render::frame::captionOf(def.render, def.model.description);
+  const render::frame::CaptionLayout layout = render::frame::captionLayout(static_cast<int>(em_));
+  if (!caption.empty())
+    captionLines_ = render::frame::wrapLines(caption, camera.widthPx() - static_cast<int>(2 * layout.inset), layout.maxLines,
+                                             width ? width : render::frame::estimatedWidth(static_cast<int>(em_)));
+}
+
+History3::Options FramePainter3::historyOptions() const {
+  History3::Options o;
+  o.trails = def_.render.trails;
+  for (const Arrow3Def& a : def_.space.arrows) {
+    if (a.show == Arrow3Def::Show::Path) o.points.emplace_back(a.body, a.at);
+    if (a.show == Arrow3Def::Show::OmegaPath) o.omegaTips.push_back(a.body);
+  }
+  // a pixel at the target's depth
+  o.spacing = camera_.viewHeight() / camera_.heightPx();
+  o.omegaSpacing = o.spacing / omegaScale_;
+  return o;
+}
+
+std::optional<Vec2> FramePainter3::screen(const Vec3& world) const {
+  const Vec3 c = camera_.toCamera(world);
+  if (!(c.z() > camera_.nearDepth())) return std::nullopt;
+  return overlayPoint(camera_.pixelOf(c), camera_.heightPx());
+}
+
+void FramePainter3::arrow(const Vec3& tail, const Vec3& head, const Pen& pen, const std::string& label, Canvas& draw) const {
+  const std::optional<Vec2> t = screen(tail), h = screen(head);
+  if (!t || !h) return;
+  // an arrow under a pixel long has nothing to show, not even its direction
+  if ((*h - *t).norm() >= 1.0) draw.arrow(*t, *h, pen);
+  if (!label.empty())
+    draw.text(labelBeyond(*h, directionOr(*h - *t, Vec2::UnitY()), label, em_), label,
+              {Role::Label, pen.body, 1.0});
+}
+
+void FramePainter3::path(const std::vector<Vec3>& points, const Vec3& offset, const Pen& pen, Canvas& draw) const {
+  std::optional<Vec2> last;
+  for (size_t i = 0; i < points.size(); ++i) {
+    const std::optional<Vec2> p = screen(offset + points[i]);
+    if (!p) {
+      last.reset();
+      continue;
+    }
+    // points closer than the spacing merged, the newest always drawn to
+    if (last && (*p - *last).norm() < kPathSpacingPx && i + 1 < points.size()) continue;
+    if (last) draw.segment(*last, *p, pen);
+    last = p;
+  }
+}
+
+void FramePainter3::paintArrows(const World& world, const History3& history, Canvas& draw) const {
+  size_t pointPaths = 0, omegaPaths = 0;
+  for (size_t k = 0; k < def_.space.arrows.size(); ++k) {
+    const Arrow3Def& a = def_.space.arrows[k];
+    const Body& b = world.bodies[a.body];
+    const int color = a.color.empty() ? -1 : static_cast<int>(k);
+    const std::string name = a.label.empty() ? defaultLabel(a.show) : a.label;
+    auto labeled = [&](const Vec3& v, const char* unit) {
+      return a.value ? render::frame::vectorText(name, v, unit) : name;
+    };
+    switch (a.show) {
+      case Arrow3Def::Show::Axes: {
+        const Mat3 r = b.rotation();
+        const double length = kAxesLength * boundingRadius(b.shape);
+        const std::array<Role, 3> roles = {Role::AxisX, Role::AxisY, Role::AxisZ};
+        const std::array<const char*, 3> names = {"x_b", "y_b", "z_b"};
+        for (int i = 0; i < 3; ++i)
+          arrow(b.x, b.x + length * r.col(i), {roles[i], a.body, 1.0, color}, a.label.empty() ? names[i] : a.label, draw);
+        break;
+      }
+      case Arrow3Def::Show::Omega:
+        arrow(b.x, b.x + omegaScale_ * b.omega, {Role::AngularVelocity, a.body, 1.0, color}, labeled(b.omega, "rad/s"), draw);
+        break;
+      case Arrow3Def::Show::AngularMomentum: {
+        const Vec3 l = b.angularMomentum();
+        arrow(b.x, b.x + momentumScale_ * l, {Role::AngularMomentum, a.body, 1.0, color}, labeled(l, "kg·m²/s"), draw);
+        break;
+      }
+      case Arrow3Def::Show::Velocity: {
+        const Vec3 r = b.toWorld(a.at), v = b.pointVelocity(r);
+        arrow(r, r + velocityScale_ * v, {Role::Velocity, a.body, 1.0, color}, labeled(v, "m/s"), draw);
+        break;
+      }
+      case Arrow3Def::Show::Path: {
+        const std::vector<Vec3>& points = history.pointPath(pointPaths++);
+        path(points, Vec3::Zero(), {Role::Path, a.body, 1.0, color}, draw);
+        if (const std::optional<Vec2> p = screen(points.back())) {
+          draw.point(*p, {Role::Path, a.body, 1.0, color});
+          if (!name.empty()) draw.text(labelBeyond(*p, Vec2::UnitY(), name, em_), name, {Role::Label, a.body, 1.0});
+        }
+        break;
+      }
+      case Arrow3Def::Show::OmegaPath: {
+        // ω's tip over the run, drawn from the center now: the cone ω sweeps
+        std::vector<Vec3> tips = history.omegaPath(omegaPaths++);
+        for (Vec3& w : tips) w *= omegaScale_;
+        path(tips, b.x, {Role::AngularVelocity, a.body, 0.6, color}, draw);
+        break;
+      }
+      case Arrow3Def::Show::State: break;  // text, with the time (paintText)
+    }
+  }
+}
+
+std::vector<std::string> FramePainter3::stateText(const Body& b) {
+  char q[160], norm[64];
+  std::snprintf(q, sizeof q, "q = [%s, %s, %s, %s]", render::frame::signedNumber(b.q.w(), 3).c_str(),
+                render::frame::signedNumber(b.q.x(), 3).c_str(), render::frame::signedNumber(b.q.y(), 3).c_str(),
+                render::frame::signedNumber(b.q.z(), 3).c_str());
+  std::snprintf(norm, sizeof norm, "|q| = %.6f", b.q.norm());
+  return {render::frame::vectorText("x", b.x, "m"), q, norm};
+}
+
+void FramePainter3::paintText(const World& world, Canvas& draw) const {
+  const render::frame::CaptionLayout layout = render::frame::captionLayout(static_cast<int>(em_));
+  const double inset = layout.inset, line = layout.line;
+  auto at = [&](double xPx, double yPx) { return overlay_.toWorld({xPx, yPx}); };
+  const Pen caption{Role::Caption, -1, 1.0};
+  double row = 0.0;
+  if (def_.render.time) draw.text(at(inset, inset), render::frame::FramePainter::timeText(world.time), caption), row += 1.0;
+  // a video's slow-motion note has its row under the time; the state text keeps its rows below it
+  const double factor = slowMotion_ ? slowMotion_(world.time) : 1.0;
+  if (factor > 1.0) draw.text(at(inset, inset + row * line), render::frame::FramePainter::slowMotionText(factor), caption);
+  if (!def_.render.slowMotion.empty()) row += 1.0;
+  for (const Arrow3Def& a : def_.space.arrows) {
+    if (a.show != Arrow3Def::Show::State) continue;
+    std::vector<std::string> lines = stateText(world.bodies[a.body]);
+    // several bodies: each block says whose
+    if (world.bodies.size() > 1) {
+      const std::string& label = def_.render.bodies[a.body].label;
+      lines.insert(lines.begin(), (label.empty() ? def_.model.bodies[a.body].name : label) + ":");
+    }
+    for (const std::string& text : lines) draw.text(at(inset, inset + row * line), text, caption), row += 1.0;
+  }
+  const double bottom = camera_.heightPx() - inset;
+  for (size_t i = 0; i < captionLines_.size(); ++i)
+    draw.text(at(inset, bottom - line * static_cast<double>(captionLines_.size() - i)), captionLines_[i], caption);
+}
+
+void FramePainter3::paintWorldAxes(Canvas& draw) const {
+  // bottom right, above the caption's band: which way x, y and z point, the farthest drawn first
+  const double band = captionLines_.empty() ? 0.0 : render::frame::captionLayout(static_cast<int>(em_)).band();
+  const Vec2 origin = overlay_.toWorld({camera_.widthPx() - 3.0 * em_, camera_.heightPx() - band - 2.5 * em_});
+  std::array<int, 3> order = {0, 1, 2};
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return camera_.basis()(2, a) > camera_.basis()(2, b); });
+  const std::array<Role, 3> roles = {Role::AxisX, Role::AxisY, Role::AxisZ};
+  const std::array<const char*, 3> names = {"x", "y", "z"};
+  for (int k : order) {
+    const Vec2 d = camera_.screenDirection(Vec3::Unit(k));
+    const Vec2 up(d.x(), -d.y());  // the overlay's y is up
+    const Vec2 head = origin + 1.6 * em_ * up;
+    if ((head - origin).norm() >= 1.0) draw.arrow(origin, head, {roles[k], -1, 1.0});
+    draw.text(origin + 2.3 * em_ * up, names[k], {Role::Label, -1, 1.0});
+  }
+}
+
+void FramePainter3::paint(const World& world, const History3& history, Canvas3& canvas) const {
+  const render::scene::RenderDef& r = def_.render;
+  for (size_t i = 0; i < world.bodies.size(); ++i) {
+    const Body& b = world.bodies[i];
+    canvas.solid(meshes_[i], b.x, b.rotation(), {Role::Body, static_cast<int>(i), 1.0});
+  }
+  Canvas& draw = canvas.overlay();
+  if (r.trails)
+    for (size_t i = 0; i < world.bodies.size(); ++i) path(history.trail(i), Vec3::Zero(), {Role::Trail, static_cast<int>(i), 1.0}, draw);
+  if (r.springs)
+    for (const Spring& sp : world.forces.springs) {
+      const Vec3 a = world.bodies[sp.bodyA].toWorld(sp.pointA);
+      const Vec3 b = sp.bodyB == kWorldAnchor ? sp.pointB : world.bodies[sp.bodyB].toWorld(sp.pointB);
+      const std::optional<Vec2> pa = screen(a), pb = screen(b);
+      if (pa && pb) draw.segment(*pa, *pb, {Role::Spring, -1, 1.0});
+      if (pb && sp.bodyB == kWorldAnchor) draw.point(*pb, {Role::Spring, -1, 1.0});
+    }
+  paintArrows(world, history, draw);
+  if (r.labels)
+    for (size_t i = 0; i < world.bodies.size(); ++i) {
+      const Body& b = world.bodies[i];
+      const std::string& label = r.bodies[i].label;
+      const Vec3 c = camera_.toCamera(b.x);
+      if (label.empty() || !(c.z() > camera_.nearDepth())) continue;
+      // below the body, clear of the arrows from its center
+      const double radius = boundingRadius(b.shape) * camera_.pixelsPerMeter(c.z());
+      const Vec2 below = overlayPoint(camera_.pixelOf(c), camera_.heightPx()) - Vec2(0.0, radius + 0.8 * em_);
+      draw.text(below, label, {Role::Label, static_cast<int>(i), 1.0});
+    }
+  if (def_.space.worldAxes) paintWorldAxes(draw);
+  panel_.draw(world, draw);
+  paintText(world, draw);
+}
+
+}  // namespace render::frame3d

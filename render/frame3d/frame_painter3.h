@@ -1,0 +1,58 @@
+// A 3D frame of a scene, on a Canvas3 from the world, its history and the render: block, back to
+// front: the solids (shaded, outlined, with a depth buffer); then over them, in pixels: trails,
+// springs, the paths of body points and of ω's tip, the teaching arrows (body axes, ω, L, v) with
+// their labels, the bodies' labels, the time and the state text (x, q, |q|), the world's axes, the
+// energy panel, the slow-motion note and the caption.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "render/draw3d/canvas3.h"
+#include "render/frame/caption.h"
+#include "render/frame3d/energy3.h"
+#include "render/frame3d/history3.h"
+#include "render/frame3d/survey3.h"
+
+namespace render::frame3d {
+
+class FramePainter3 {
+ public:
+  // `width` measures text at the frame's font size, to wrap the caption (empty: an estimate)
+  FramePainter3(const render::scene3d::Scene& def, const Camera3& camera, const RunSurvey3& survey,
+                const render::frame::TextWidth& width = {});
+
+  // what the history of a run must record for these frames
+  History3::Options historyOptions() const;
+  void paint(const sim::world3d::World& world, const History3& history, Canvas3& canvas) const;
+  void showSlowMotion(std::function<double(double)> factorAt) { slowMotion_ = std::move(factorAt); }
+
+  // "x = (1.00, −0.50, 0.20) m", "q = [0.924, 0.000, 0.383, 0.000]", "|q| = 1.000000"
+  static std::vector<std::string> stateText(const sim::world3d::Body& body);
+
+  double omegaScale() const { return omegaScale_; }
+  double angularMomentumScale() const { return momentumScale_; }
+
+ private:
+  // a world point on the overlay (pixels, y up), when it lies in front of the camera
+  std::optional<Vec2> screen(const Vec3& world) const;
+  void arrow(const Vec3& tail, const Vec3& head, const Pen& pen, const std::string& label, Canvas& draw) const;
+  void path(const std::vector<Vec3>& points, const Vec3& offset, const Pen& pen, Canvas& draw) const;
+  void paintArrows(const sim::world3d::World& world, const History3& history, Canvas& draw) const;
+  void paintText(const sim::world3d::World& world, Canvas& draw) const;
+  void paintWorldAxes(Canvas& draw) const;
+
+  const render::scene3d::Scene& def_;
+  Camera3 camera_;
+  render::draw::Camera overlay_;  // pixels, y up
+  std::vector<Mesh> meshes_;      // by body
+  double omegaScale_, momentumScale_, velocityScale_;  // m of arrow per rad/s, kg·m²/s, m/s
+  double em_;                     // text size, px
+  EnergyPanel3 panel_;
+  std::vector<std::string> captionLines_;
+  std::function<double(double)> slowMotion_;
+};
+
+}  // namespace render::frame3d

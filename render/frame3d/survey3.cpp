@@ -1,0 +1,105 @@
+#include "render/frame3d/survey3.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "render/frame/caption.h"
+#include "render/frame3d/energy3.h"
+#include "render/scene/scene_style.h"
+#include "sim/scene3d/scene_build.h"
+#include "sim/world3d/diagnostics.h"
+
+namespace render::frame3d {
+using namespace sim::world3d;
+
+namespace {
+
+class Surveyor : public StepObserver {
+ public:
+  Surveyor(const render::scene3d::Scene& def, RunSurvey3& out) : def_(def), out_(out) {}
+  void afterStep(const World& w) override {
+    for (const Body& b : w.bodies) {
+      out_.bounds.add(Ball{b.x, boundingRadius(b.shape)});
+      out_.maxSpeed = std::max(out_.maxSpeed, b.v.norm());
+      out_.maxOmega = std::max(out_.maxOmega, b.omega.norm());
+      out_.maxAngularMomentum = std::max(out_.maxAngularMomentum, b.angularMomentum().norm());
+    }
+    // the panel's values cost a pass over the bodies: only for scenes that show it
+    if (def_.render.overlays.energy)
+      for (double value : energyValues(w)) out_.minEnergy = std::min(out_.minEnergy, value), out_.maxEnergy = std::max(out_.maxEnergy, value);
+    if (def_.render.overlays.momentum) {
+      out_.maxLinearMomentum = std::max(out_.maxLinearMomentum, linearMomentum(w).norm());
+      out_.maxWorldAngularMomentum = std::max(out_.maxWorldAngularMomentum, angularMomentum(w).norm());
+    }
+  }
+  void afterEvent(const World& w, const ImpulseEvent&) override { afterStep(w); }
+
+ private:
+  const render::scene3d::Scene& def_;
+  RunSurvey3& out_;
+};
+
+}  // namespace
+
+std::vector<double> energyValues(const World& world) {
+  std::vector<double> values;
+  for (const Body& b : world.bodies) {
+    const KineticEnergy k = kineticEnergy(b);
+    values.push_back(k.translational);
+    values.push_back(k.rotational);
+  }
+  const Energy e = energy(world);
+  // gravity or a spring: the scene has a potential energy (zero at the world origin, as in `check`)
+  if (world.forces.gravity != Vec3::Zero() || !world.forces.springs.empty()) values.push_back(e.potential);
+  values.push_back(e.total());
+  return values;
+}
+
+RunSurvey3 surveyRun(const render::scene3d::Scene& def, double until) {
+  RunSurvey3 survey;
+  World world = sim::scene3d::buildWorld(def.model);
+  Surveyor surveyor(def, survey);
+  surveyor.afterStep(world);
+  // a spring's world anchor belongs in the picture with what hangs from it
+  for (const Spring& sp : world.forces.springs)
+    if (sp.bodyB == kWorldAnchor) survey.bounds.add(sp.pointB);
+  world.advanceTo(until < 0.0 ? def.model.duration : until, &surveyor);
+  return survey;
+}
+
+void shareScales(const std::vector<RunSurvey3*>& surveys) {
+  if (surveys.empty()) return;
+  RunSurvey3 all = *surveys.front();
+  for (const RunSurvey3* s : surveys) {
+    all.maxSpeed = std::max(all.maxSpeed, s->maxSpeed);
+    all.maxOmega = std::max(all.maxOmega, s->maxOmega);
+    all.maxAngularMomentum = std::max(all.maxAngularMomentum, s->maxAngularMomentum);
+    all.minEnergy = std::min(all.minEnergy, s->minEnergy);
+    all.maxEnergy = std::max(all.maxEnergy, s->maxEnergy);
+    all.maxLinearMomentum = std::max(all.maxLinearMomentum, s->maxLinearMomentum);
+    all.maxWorldAngularMomentum = std::max(all.maxWorldAngularMomentum, s->maxWorldAngularMomentum);
+  }
+  for (RunSurvey3* s : surveys) {
+    all.bounds = s->bounds;
+    *s = all;
+  }
+}
+
+Camera3 cameraFor(const render::scene3d::Scene& def, const RunSurvey3& survey) { return cameraFor(def, survey, survey.bounds); }
+
+Camera3 cameraFor(const render::scene3d::Scene& def, const RunSurvey3& survey, const Box3& bounds) {
+  const render::scene::RenderDef& r = def.render;
+  const render::scene3d::Camera3Def& c = def.space.camera;
+  if (!c.automatic) return Camera3::look(c.eye, c.target, c.up, c.fov, r.width, r.height, bounds.ball());
+  // with a caption the bodies are fitted above its band, with an energy panel left of it (a panel
+  // wider than half the frame is drawn over the bodies instead: they need the room more)
+  const double band = render::frame::captionOf(r, def.model.description).empty()
+                          ? 0.0
+                          : render::frame::captionLayout(render::scene::fontSizeFor(r, r.height)).band();
+  const double panel = EnergyPanel3::bandPx(def, survey, r.height);
+  const int above = static_cast<int>(std::lround(r.height - band));
+  const int left = static_cast<int>(std::lround(panel <= 0.5 * r.width ? r.width - panel : r.width));
+  return Camera3::fit(bounds, c.direction, c.up, c.fov, c.margin, r.width, r.height, left, above);
+}
+
+}  // namespace render::frame3d

@@ -1,0 +1,40 @@
+// A run of the whole 3D scene before anything is drawn, as render/frame's survey does for 2D: the
+// region the bodies cover (for the automatic camera), and the largest |v|, |ω|, |L| and energies
+// (for the arrows' and the energy panel's scales, fixed over a video).
+#pragma once
+
+#include <vector>
+
+#include "render/draw3d/camera3.h"
+#include "render/scene3d/scene.h"
+#include "sim/world3d/world.h"
+
+namespace render::frame3d {
+using namespace render::draw3d;
+
+struct RunSurvey3 {
+  Box3 bounds;                      // every body's bounding ball at every step, and the anchors, m
+  double maxSpeed = 0.0;            // |v| of any body, m/s
+  double maxOmega = 0.0;            // |ω| of any body, rad/s
+  double maxAngularMomentum = 0.0;  // |L| of any body about its center, kg·m²/s
+  double minEnergy = 0.0, maxEnergy = 0.0;  // of any bar of the energy panel (≤ 0, ≥ 0), J
+  double maxLinearMomentum = 0.0;   // |Σ m v|, kg·m/s
+  double maxWorldAngularMomentum = 0.0;  // |L| about the origin, kg·m²/s
+  std::vector<double> impactTimes;  // none: 3D has no contacts (for the video's time map)
+};
+
+// the scene run from 0 to `until` (its duration when negative); throws sim::world3d::Diverged
+RunSurvey3 surveyRun(const render::scene3d::Scene& def, double until = -1.0);
+// the scales (not the bounds) of every survey set to the extremes over all, for panels side by side
+void shareScales(const std::vector<RunSurvey3*>& surveys);
+
+// the energy panel's bars now: per body ½ m v·v and ½ ω·L, the potential energy (with gravity or a
+// spring), the total
+std::vector<double> energyValues(const sim::world3d::World& world);
+
+// the scene's camera: fixed, or fitted over `bounds` (the survey's own by default) along its view
+// direction, above the caption's band and left of the energy panel's
+Camera3 cameraFor(const render::scene3d::Scene& def, const RunSurvey3& survey);
+Camera3 cameraFor(const render::scene3d::Scene& def, const RunSurvey3& survey, const Box3& bounds);
+
+}  // namespace render::frame3d

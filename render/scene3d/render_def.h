@@ -1,0 +1,56 @@
+// How to draw a 3D scene: what its render: block adds to the keys every scene shares (size, fps,
+// colors, title card, caption, slow motion, panels, labels, time, trails, springs, energy, momentum;
+// render::scene::RenderDef): the perspective camera, the 3D teaching arrows and the world's axes.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "sim/core/enum_names.h"
+#include "sim/world3d/math.h"
+
+namespace render::scene3d {
+using sim::world3d::Vec3;
+
+// the perspective camera: fitted over everything the run covers, looking along `direction`, or
+// placed at `eye` looking at `target`; `up` is the world direction drawn upward
+struct Camera3Def {
+  bool automatic = true;
+  Vec3 direction = Vec3(1.0, -1.7, 0.9);  // auto: from the fitted center toward the eye
+  double margin = 0.08;                   // auto: free space on each side, a fraction of the view
+  Vec3 eye = Vec3::Zero(), target = Vec3::Zero();  // fixed
+  Vec3 up = Vec3::UnitZ();
+  double fov = 35.0;                      // vertical field of view, degrees
+};
+
+// a teaching vector or text drawn every frame: one entry of `arrows:`
+struct Arrow3Def {
+  enum class Show { Axes, Omega, AngularMomentum, Velocity, Path, OmegaPath, State };
+  Show show = Show::Axes;
+  int body = 0;            // index into the model's bodies
+  Vec3 at = Vec3::Zero();  // a body point, body coordinates (velocity, path)
+  std::string label;       // empty: the default of `show`
+  bool value = false;      // the vector's value after the label
+  std::string color;       // "#rrggbb"; empty: the color of `show`'s role
+};
+
+inline constexpr sim::core::EnumNames<Arrow3Def::Show, 7> kShow3Names{{{
+    {Arrow3Def::Show::Axes, "axes"},
+    {Arrow3Def::Show::Omega, "omega"},
+    {Arrow3Def::Show::AngularMomentum, "angular_momentum"},
+    {Arrow3Def::Show::Velocity, "velocity"},
+    {Arrow3Def::Show::Path, "path"},
+    {Arrow3Def::Show::OmegaPath, "omega_path"},
+    {Arrow3Def::Show::State, "state"},
+}}};
+
+struct Render3Def {
+  Camera3Def camera;
+  std::vector<Arrow3Def> arrows;
+  // m of arrow per rad/s, per kg·m²/s, per m/s; 0: the run's largest is a quarter of the view's height
+  // at the camera's target
+  double omegaScale = 0.0, angularMomentumScale = 0.0, velocityScale = 0.0;
+  bool worldAxes = true;  // the world's x, y, z in the bottom-left corner
+};
+
+}  // namespace render::scene3d

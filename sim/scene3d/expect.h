@@ -1,0 +1,25 @@
+// The closed-form answers of a 3D scene's `expect` entries, compared with a simulated World: the
+// state at an instant, and what the run up to it measures (precession rates, the flip period).
+#pragma once
+
+#include <vector>
+
+#include "sim/core/check_result.h"
+#include "sim/scene3d/scene_def.h"
+#include "sim/world3d/measures.h"
+#include "sim/world3d/world.h"
+
+namespace sim::scene3d {
+using sim::core::CheckResult;
+
+// every quantity of one entry, for a world at the entry's time; `measures` followed each body from
+// t = 0 (by body index)
+std::vector<CheckResult> evaluate(const ExpectDef& expect, const SceneDef& def, const World& world,
+                                  const std::vector<FreeBodyMeasures>& measures);
+
+// runs the scene's world from t = 0 through every expect entry in time order, measuring as it goes
+std::vector<CheckResult> runExpects(const SceneDef& def, World& world);
+// the same on a world built from the definitions
+std::vector<CheckResult> runExpects(const SceneDef& def);
+
+}  // namespace sim::scene3d

@@ -1,0 +1,51 @@
+#include "sim/scene3d/scene_build.h"
+
+namespace sim::scene3d {
+
+int SceneDef::bodyIndex(const std::string& name) const {
+  for (size_t i = 0; i < bodies.size(); ++i)
+    if (bodies[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+MassProperties massProperties(const BodyDef& b) {
+  // the shape at unit density: its volume and its inertia per kg/m³
+  const MassProperties unit = massProperties(b.shape, 1.0);
+  const double density = b.density.value_or(b.mass ? *b.mass / unit.mass : settings::kDefaultDensity);
+  MassProperties out;
+  out.mass = b.mass.value_or(density * unit.mass);
+  // given only the mass, the mass is spread uniformly over the shape
+  out.inertia = b.inertia.value_or(out.mass / unit.mass * unit.inertia);
+  return out;
+}
+
+Body buildBody(const BodyDef& def) {
+  const MassProperties p = massProperties(def);
+  Body b = makeBody(def.shape, p.mass, p.inertia);
+  b.x = def.position;
+  b.q = def.orientation;
+  b.v = def.velocity;
+  b.omega = def.angularVelocity;
+  return b;
+}
+
+World buildWorld(const SceneDef& s) {
+  World w;
+  for (const BodyDef& b : s.bodies) w.bodies.push_back(buildBody(b));
+  w.integrator = s.integrator;
+  w.dt = s.dt;
+  w.normalizeQuaternions = s.normalize;
+  w.forces.gravity = s.gravity;
+  for (const PointForceDef& f : s.pointForces)
+    w.forces.pointForces.push_back({s.bodyIndex(f.body), f.point, f.force, f.bodyFrame, f.from, f.until});
+  for (const SpringDef& sp : s.springs) {
+    const bool anchored = sp.body2.empty();
+    w.forces.springs.push_back({s.bodyIndex(sp.body), sp.point, anchored ? kWorldAnchor : s.bodyIndex(sp.body2),
+                                anchored ? sp.anchor : sp.point2, sp.stiffness, sp.restLength, sp.damping});
+  }
+  for (const DragDef& d : s.drags) w.forces.drags.push_back({s.bodyIndex(d.body), d.linear, d.angular});
+  for (const EventDef& e : s.events) w.events.push_back({e.time, s.bodyIndex(e.body), e.point, e.pointInWorld, e.impulse});
+  return w;
+}
+
+}  // namespace sim::scene3d

@@ -1,0 +1,113 @@
+// A 3D scene's model (`dimensions: 3`) as plain definitions, free of any file format and of any
+// picture: what the 3D reader produces and buildWorld consumes, as sim/scene's SceneDef is for 2D.
+// No contacts in 3D: there are no static bodies, planes, restitution or collision methods.
+#pragma once
+
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sim/core/settings.h"
+#include "sim/world3d/integrators.h"
+#include "sim/world3d/shape.h"
+
+namespace sim::scene3d {
+using namespace sim::world3d;
+
+// where a definition came from in its file (1-based; 0 when unknown), for messages
+struct SourceLoc {
+  int line = 0;
+  int column = 0;
+};
+
+struct BodyDef {
+  std::string name;
+  Shape shape;                    // body coordinates, centered on the center of mass
+  std::optional<double> density;  // kg/m³
+  std::optional<double> mass;     // kg
+  std::optional<Mat3> inertia;    // kg·m² about the center, body axes
+  Vec3 position = Vec3::Zero();   // of the center of mass, world
+  Quat orientation = Quat::Identity();  // body to world, unit
+  Vec3 velocity = Vec3::Zero();         // world
+  Vec3 angularVelocity = Vec3::Zero();  // world
+  SourceLoc loc;
+  SourceLoc massLoc;  // where the mass properties are written (the body when they are not)
+};
+
+struct PointForceDef {
+  std::string body;
+  Vec3 point = Vec3::Zero();  // body coordinates
+  Vec3 force = Vec3::Zero();  // world, or body coordinates when bodyFrame
+  bool bodyFrame = false;
+  double from = 0.0;
+  double until = std::numeric_limits<double>::infinity();
+};
+
+struct SpringDef {
+  std::string body;
+  Vec3 point = Vec3::Zero();
+  std::string body2;  // empty: the spring is anchored in the world at `anchor`
+  Vec3 point2 = Vec3::Zero();
+  Vec3 anchor = Vec3::Zero();
+  double stiffness = 0.0;
+  double restLength = 0.0;
+  double damping = 0.0;
+};
+
+struct DragDef {
+  std::string body;
+  double linear = 0.0;
+  double angular = 0.0;
+};
+
+struct EventDef {
+  double time = 0.0;
+  std::string body;
+  Vec3 impulse = Vec3::Zero();  // world coordinates
+  Vec3 point = Vec3::Zero();    // body coordinates, or world when pointInWorld
+  bool pointInWorld = false;
+};
+
+// a closed-form answer that `rigidreel check` compares against; absent fields are not checked
+struct ExpectDef {
+  double time = 0.0;
+  std::string body;  // empty for world-wide quantities
+  // a body's state at `time`
+  std::optional<Vec3> position, velocity, angularVelocity;
+  std::optional<Quat> orientation;       // q and −q are the same rotation: compared with the nearer
+  std::optional<double> quaternionNorm;  // |q|, which drifts without normalization
+  // energies (kinetic: the body's, or the world's without a body) and momenta (angular: the body's
+  // about its center, or the world's about the origin without a body)
+  std::optional<double> kineticEnergy, potentialEnergy, totalEnergy;
+  std::optional<Vec3> momentum, angularMomentum;
+  // the free body's closed forms (closed_forms.h): the angle between ω and L at `time`, and what the
+  // run from t = 0 to `time` measures (measures.h): the rates at which ω turns about the symmetry
+  // axis in the body and the symmetry axis about L in space, and the period of ω's middle-axis part
+  std::optional<double> coneAngle, precessionRate, spacePrecessionRate, flipPeriod;
+  double tolerance = sim::core::settings::kDefaultExpectTolerance;
+  SourceLoc loc;
+};
+
+struct SceneDef {
+  std::string name;
+  std::string description;
+  std::string variant;  // the variant merged in, empty for the base scene
+  std::vector<std::string> variantNames;
+  double duration = sim::core::settings::kDefaultDuration;
+  Vec3 gravity = Vec3::Zero();
+  Integrator integrator = Integrator::Splitting;
+  double dt = sim::core::settings::kDefaultDt;
+  bool normalize = true;  // q ← q/|q| after every step (World::normalizeQuaternions)
+  std::vector<BodyDef> bodies;
+  std::vector<PointForceDef> pointForces;
+  std::vector<SpringDef> springs;
+  std::vector<DragDef> drags;
+  std::vector<EventDef> events;
+  std::vector<ExpectDef> expects;
+
+  // index of the body with this name, or -1
+  int bodyIndex(const std::string& name) const;
+};
+
+}  // namespace sim::scene3d

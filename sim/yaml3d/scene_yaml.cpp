@@ -1,0 +1,255 @@
+#include "sim/yaml3d/scene_yaml.h"
+
+#include <utility>
+
+#include "sim/scene3d/scene_build.h"
+#include "sim/yaml3d/reader3.h"
+
+namespace sim::yaml3d {
+using namespace sim::scene3d;
+using sim::yaml::Keys;
+
+namespace {
+
+// keys of a 2D scene that 3D has no use for, and why: said instead of "unknown key"
+const char* const kNoContacts = "3D scenes have no contacts (bodies pass through each other), so no '";
+using Refusals = std::vector<std::pair<const char*, std::string>>;
+const Refusals kWorldRefusals = {{"restitution", std::string(kNoContacts) + "restitution'"},
+                                 {"friction", std::string(kNoContacts) + "friction'"}};
+const Refusals kSimRefusals = {{"collisions", std::string(kNoContacts) + "collisions'"},
+                               {"iterations", std::string(kNoContacts) + "iterations' of a contact solver"},
+                               {"position_iterations", std::string(kNoContacts) + "position_iterations' of a contact solver"}};
+const Refusals kBodyRefusals = {
+    {"angle", "a 3D body turns by 'orientation': a unit quaternion [w, x, y, z] or {axis: [x, y, z], angle: θ}"},
+    {"static", std::string(kNoContacts) + "static' bodies: a body that must not move is no part of a free-body scene"},
+    {"restitution", std::string(kNoContacts) + "restitution'"},
+    {"friction", std::string(kNoContacts) + "friction'"}};
+const Refusals kShapeRefusals = {
+    {"circle", "'circle' is a 2D shape; in 3D a shape is {box: [a, b, c]}, {sphere: r} or {ellipsoid: [a, b, c]}"},
+    {"polygon", "'polygon' is a 2D shape; in 3D a shape is {box: [a, b, c]}, {sphere: r} or {ellipsoid: [a, b, c]}"},
+    {"plane", std::string(kNoContacts) + "plane' obstacles"}};
+const Refusals kExpectRefusals = {{"angle", "a 3D body's rotation is checked by 'orientation': [w, x, y, z]"}};
+
+class SceneReader3 : public Reader3 {
+ public:
+  SceneReader3(const SceneSource& source, const OtherKeys& others) : Reader3(source.file), others_(others) {}
+
+  SceneDef read(const SceneSource& source) {
+    const YAML::Node root = source.root;
+    SceneDef s;
+    s.variant = source.variant;
+    s.variantNames = source.variantNames;
+    checkKeys(root, with({"name", "description", "dimensions", "duration", "world", "sim", "bodies", "forces", "events",
+                          "variants", "expect"},
+                         others_.scene),
+              "the scene");
+    if (source.dimensions != 3) fail(root, "this reads 3D scenes, which say 'dimensions: 3'");
+    s.name = root["name"] ? text(root["name"], "name") : source.stem;
+    optional(root, "description", s.description, &Reader::text);
+    optional(root, "duration", s.duration, &Reader::positive);
+    if (const YAML::Node w = root["world"]) {
+      keys(w, {"gravity"}, kWorldRefusals, "world");
+      optional(w, "gravity", s.gravity, &Reader3::vec3);
+    }
+    if (const YAML::Node sim = root["sim"]) {
+      keys(sim, {"integrator", "dt", "normalize"}, kSimRefusals, "sim");
+      if (sim["integrator"])
+        s.integrator = named(sim["integrator"], "integrator", [](const std::string& n) { return kIntegratorNames.parse(n); },
+                             kIntegratorNames.list());
+      optional(sim, "dt", s.dt, &Reader::positive);
+      optional(sim, "normalize", s.normalize, &Reader::boolean);
+    }
+    const YAML::Node bodies = required(root, "bodies", "a scene");
+    if (!bodies.IsSequence() || bodies.size() == 0) fail(bodies, "'bodies' must be a list of at least one body");
+    for (const YAML::Node& b : bodies) s.bodies.push_back(readBody(b, s));
+    if (const YAML::Node forces = root["forces"]) {
+      if (!forces.IsSequence()) fail(forces, "'forces' must be a list, got " + describe(forces));
+      for (const YAML::Node& f : forces) readForce(f, s);
+    }
+    if (const YAML::Node events = root["events"]) {
+      if (!events.IsSequence()) fail(events, "'events' must be a list, got " + describe(events));
+      for (const YAML::Node& e : events) s.events.push_back(readEvent(e, s));
+    }
+    if (const YAML::Node expect = root["expect"]) {
+      if (!expect.IsSequence()) fail(expect, "'expect' must be a list, got " + describe(expect));
+      for (const YAML::Node& e : expect) s.expects.push_back(readExpect(e, s));
+    }
+    return s;
+  }
+
+ private:
+  static Keys with(Keys own, const Keys& others) {
+    own.insert(own.end(), others.begin(), others.end());
+    return own;
+  }
+
+  // every key of `map` one of `allowed`; a 2D key among `refused` fails with its reason
+  void keys(const YAML::Node& map, const Keys& allowed, const Refusals& refused, const std::string& what) const {
+    if (map.IsMap())
+      for (const auto& [key, reason] : refused)
+        if (const YAML::Node n = map[key]) fail(n, reason);
+    checkKeys(map, allowed, what);
+  }
+
+  Shape readShape(const YAML::Node& n) {
+    if (n.IsMap())
+      for (const auto& [key, reason] : kShapeRefusals)
+        if (n[key]) fail(n, reason);
+    checkKeys(n, {"box", "sphere", "ellipsoid"}, "shape");
+    if (n.size() != 1) fail(n, "a shape is exactly one of {box: [a, b, c]} (sides), {sphere: r}, {ellipsoid: [a, b, c]} (semi-axes)");
+    try {
+      if (const YAML::Node box = n["box"]) return makeBox(vec3(box, "box"));
+      if (const YAML::Node sphere = n["sphere"]) return makeSphere(positive(sphere, "sphere"));
+      return makeEllipsoid(vec3(n["ellipsoid"], "ellipsoid"));
+    } catch (const std::invalid_argument& e) {
+      fail(n, e.what());
+    }
+  }
+
+  BodyDef readBody(const YAML::Node& n, const SceneDef& s) {
+    if (!n.IsMap()) fail(n, "expected a map for a body, got " + describe(n));
+    keys(n, with({"name", "shape", "density", "mass", "inertia", "position", "orientation", "velocity", "angular_velocity"},
+                 others_.body),
+         kBodyRefusals, "a body");
+    BodyDef b;
+    b.loc = b.massLoc = {n.Mark().line + 1, n.Mark().column + 1};
+    b.name = text(required(n, "name", "every body"), "name");
+    if (b.name.empty()) fail(n, "a body's name cannot be empty");
+    if (s.bodyIndex(b.name) >= 0) fail(n["name"], "duplicate body name '" + b.name + "'; names must be unique");
+    b.shape = readShape(required(n, "shape", "body '" + b.name + "'"));
+    optional(n, "density", b.density, &Reader::positive);
+    optional(n, "mass", b.mass, &Reader::positive);
+    if (const YAML::Node i = n["inertia"]) b.inertia = inertia(i, "inertia");
+    optional(n, "position", b.position, &Reader3::vec3);
+    optional(n, "orientation", b.orientation, &Reader3::orientation);
+    optional(n, "velocity", b.velocity, &Reader3::vec3);
+    optional(n, "angular_velocity", b.angularVelocity, &Reader3::vec3);
+    // a tensor that no solid has (not symmetric, a moment not positive, I1 + I2 < I3) is located here
+    try {
+      (void)buildBody(b);
+    } catch (const std::invalid_argument& e) {
+      fail(n["inertia"] ? n["inertia"] : n["mass"] ? n["mass"] : n, std::string(e.what()));
+    }
+    return b;
+  }
+
+  void readForce(const YAML::Node& n, SceneDef& s) {
+    if (!n.IsMap()) fail(n, "expected a map for a force, got " + describe(n));
+    // without a type, a misspelled key is the likelier fault: name it
+    if (!n["type"])
+      checkKeys(n, {"type", "body", "point", "anchor", "body2", "point2", "stiffness", "rest_length", "damping", "frame",
+                    "force", "from", "until", "linear", "angular"},
+                "a force");
+    const std::string type = text(required(n, "type", "every force"), "type");
+    if (type == "spring") {
+      checkKeys(n, {"type", "body", "point", "anchor", "body2", "point2", "stiffness", "rest_length", "damping"}, "a spring");
+      SpringDef sp;
+      sp.body = bodyRef(n, "body", s, "a spring");
+      optional(n, "point", sp.point, &Reader3::vec3);
+      if (n["body2"]) {
+        if (n["anchor"]) fail(n["anchor"], "a spring has either 'anchor' (a world point) or 'body2', not both");
+        sp.body2 = bodyRef(n, "body2", s, "a spring");
+        if (sp.body2 == sp.body) fail(n["body2"], "a spring needs two different bodies");
+        optional(n, "point2", sp.point2, &Reader3::vec3);
+      } else {
+        if (n["point2"]) fail(n["point2"], "'point2' goes with 'body2'");
+        sp.anchor = vec3(required(n, "anchor", "a spring without 'body2'"), "anchor");
+      }
+      sp.stiffness = nonNegative(required(n, "stiffness", "a spring"), "stiffness");
+      optional(n, "rest_length", sp.restLength, &Reader::nonNegative);
+      optional(n, "damping", sp.damping, &Reader::nonNegative);
+      s.springs.push_back(sp);
+    } else if (type == "force") {
+      checkKeys(n, {"type", "body", "point", "frame", "force", "from", "until"}, "a force");
+      PointForceDef f;
+      f.body = bodyRef(n, "body", s, "a force");
+      optional(n, "point", f.point, &Reader3::vec3);
+      f.force = vec3(required(n, "force", "a force"), "force");
+      if (n["frame"]) f.bodyFrame = coordinateFrame(n["frame"]) == "body";
+      optional(n, "from", f.from, &Reader::nonNegative);
+      if (n["until"]) {
+        f.until = finite(n["until"], "until");
+        if (!(f.until > f.from)) fail(n["until"], "'until' must come after 'from'");
+      }
+      s.pointForces.push_back(f);
+    } else if (type == "drag") {
+      checkKeys(n, {"type", "body", "linear", "angular"}, "a drag");
+      DragDef d;
+      d.body = bodyRef(n, "body", s, "a drag");
+      optional(n, "linear", d.linear, &Reader::nonNegative);
+      optional(n, "angular", d.angular, &Reader::nonNegative);
+      s.drags.push_back(d);
+    } else {
+      fail(n["type"], "unknown force type '" + type + "'; choose one of: spring, force, drag (gravity is set in world:)");
+    }
+  }
+
+  EventDef readEvent(const YAML::Node& n, const SceneDef& s) {
+    checkKeys(n, {"time", "body", "impulse", "point", "frame"}, "an event");
+    EventDef e;
+    const YAML::Node t = required(n, "time", "an event");
+    e.time = finite(t, "time");
+    checkTime(t, e.time, s.duration, "event");
+    e.body = bodyRef(n, "body", s, "an event");
+    e.impulse = vec3(required(n, "impulse", "an event"), "impulse");
+    optional(n, "point", e.point, &Reader3::vec3);
+    if (n["frame"]) e.pointInWorld = coordinateFrame(n["frame"]) == "world";
+    return e;
+  }
+
+  ExpectDef readExpect(const YAML::Node& n, const SceneDef& s) {
+    if (!n.IsMap()) fail(n, "expected a map for an expect entry, got " + describe(n));
+    keys(n, {"time", "body", "position", "orientation", "velocity", "angular_velocity", "quaternion_norm", "kinetic_energy",
+             "potential_energy", "total_energy", "momentum", "angular_momentum", "cone_angle", "precession_rate",
+             "space_precession_rate", "flip_period", "tolerance"},
+         kExpectRefusals, "an expect entry");
+    ExpectDef e;
+    e.loc = {n.Mark().line + 1, n.Mark().column + 1};
+    const YAML::Node t = required(n, "time", "an expect entry");
+    e.time = finite(t, "time");
+    checkTime(t, e.time, s.duration, "expect");
+    if (n["body"]) e.body = bodyRef(n, "body", s, "an expect entry");
+    for (const char* key : {"position", "orientation", "velocity", "angular_velocity", "quaternion_norm", "cone_angle",
+                            "precession_rate", "space_precession_rate", "flip_period"})
+      if (n[key] && e.body.empty()) fail(n[key], std::string("'") + key + "' is a body's: add 'body:'");
+    optional(n, "position", e.position, &Reader3::vec3);
+    // typed as the scene's orientation is, but as an answer: a quaternion is compared as written
+    if (const YAML::Node q = n["orientation"]) {
+      if (!q.IsSequence() || q.size() != 4) fail(q, "expected [w, x, y, z] for 'orientation'");
+      e.orientation = Quat(finite(q[0], "orientation"), finite(q[1], "orientation"), finite(q[2], "orientation"),
+                           finite(q[3], "orientation"));
+    }
+    optional(n, "velocity", e.velocity, &Reader3::vec3);
+    optional(n, "angular_velocity", e.angularVelocity, &Reader3::vec3);
+    optional(n, "quaternion_norm", e.quaternionNorm, &Reader::positive);
+    optional(n, "kinetic_energy", e.kineticEnergy, &Reader::finite);
+    optional(n, "potential_energy", e.potentialEnergy, &Reader::finite);
+    optional(n, "total_energy", e.totalEnergy, &Reader::finite);
+    optional(n, "momentum", e.momentum, &Reader3::vec3);
+    optional(n, "angular_momentum", e.angularMomentum, &Reader3::vec3);
+    optional(n, "cone_angle", e.coneAngle, &Reader::nonNegative);
+    optional(n, "precession_rate", e.precessionRate, &Reader::finite);
+    optional(n, "space_precession_rate", e.spacePrecessionRate, &Reader::finite);
+    optional(n, "flip_period", e.flipPeriod, &Reader::positive);
+    optional(n, "tolerance", e.tolerance, &Reader::positive);
+    return e;
+  }
+
+  const OtherKeys& others_;
+};
+
+}  // namespace
+
+SceneDef readModel(const SceneSource& source, const OtherKeys& others) {
+  return sim::yaml::readGuarded(source.file, [&] { return SceneReader3(source, others).read(source); });
+}
+
+SceneDef loadSceneText(const std::string& text, const std::string& file, const std::string& variant) {
+  return sim::yaml3d::readModel(sim::yaml::sceneSourceText(text, file, variant));
+}
+
+SceneDef loadSceneFile(const std::string& path, const std::string& variant) {
+  return sim::yaml3d::readModel(sim::yaml::readSceneSource(path, variant));
+}
+
+}  // namespace sim::yaml3d

@@ -1,0 +1,38 @@
+// A bad scene must throw sim::yaml::SceneError at a given FILE:LINE:COL with a message naming the
+// fault: the check the 2D and the 3D readers' tests share.
+#pragma once
+
+#include <doctest/doctest.h>
+
+#include <initializer_list>
+#include <string>
+
+#include "sim/yaml/scene_error.h"
+
+namespace scene_errors {
+
+// load(text, file, variant) must throw a SceneError at `line`:`column` (1-based; column 0: not
+// checked) whose message contains every one of `words`
+template <class Load>
+void expectSceneError(Load load, const std::string& file, const std::string& text, int line, int column,
+                      std::initializer_list<std::string> words, const std::string& variant = "") {
+  INFO("scene text:\n", text);
+  INFO("variant: '", variant, "'");
+  try {
+    (void)load(text, file, variant);
+    FAIL_CHECK("the scene loaded; expected a SceneError");
+  } catch (const sim::yaml::SceneError& e) {
+    INFO("what(): ", std::string(e.what()));
+    CHECK(e.file == file);
+    CHECK(e.line == line);
+    if (column > 0) CHECK(e.column == column);
+    for (const std::string& w : words) CHECK_MESSAGE(e.message.find(w) != std::string::npos, "message lacks '" << w << "'");
+    // what() is FILE:LINE:COL: message
+    CHECK(std::string(e.what()) ==
+          file + ":" + std::to_string(e.line) + ":" + std::to_string(e.column) + ": " + e.message);
+  } catch (const std::exception& e) {
+    FAIL_CHECK("expected a SceneError, got another exception: " << e.what());
+  }
+}
+
+}  // namespace scene_errors
