@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "render/draw/gl_library.h"
+
 namespace render::draw {
 
 // 4× multisampling. Measured by build/rigidreel_frame_bench (render/frame_bench.cpp) on a 1280×720
@@ -23,6 +25,7 @@ Antialiasing defaultAntialiasing() { return {1, 4}; }
 
 GlContext::GlContext(int width, int height, Antialiasing aa) : width_(width), height_(height), aa_(aa) {
   const int w = width * aa.supersample, h = height * aa.supersample;
+  loadGlLibrary();
   // RGBA, 24 depth bits (unused, but llvmpipe pairs stencil with depth), 8 stencil bits
   context_ = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, nullptr);
   if (!context_) throw std::runtime_error("OSMesa could not create an OpenGL context (is libosmesa6 installed?)");
