@@ -38,10 +38,13 @@ lecture: build
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
 
-# timings (never asserted in tests): pyramids, 720p render fps, render against ffmpeg alone
+# timings (never asserted in tests): pyramids, check's start-up, the video pipeline's parts per frame
+# and the whole render against ffmpeg alone at 720p and 1080p, the lecture pack's wall time;
+# BENCH_BASELINE=path/to/another/rigidreel times that build too, in the same run
+BENCH_BASELINE ?=
 bench: build
 	@cmake --build $(BUILD) -j $(JOBS) --target rigidreel_bench
-	./$(BUILD)/rigidreel_bench ./$(BUILD)/rigidreel scenes/three_collisions_poll.yaml
+	./$(BUILD)/rigidreel_bench ./$(BUILD)/rigidreel scenes/three_collisions_poll.yaml $(BENCH_BASELINE)
 
 clean:
 	rm -rf $(BUILD)
