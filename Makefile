@@ -44,14 +44,17 @@ test: build
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
 
 # timings (never asserted in tests): stacks against Box2D 2.4 in the same run (both pyramids, both
-# layouts, 600 steps), 720p render fps, render against ffmpeg alone
+# layouts, 600 steps); check's start-up, the video pipeline's parts per frame and the whole render
+# against ffmpeg alone at 720p and 1080p, the lecture pack's wall time;
+# BENCH_BASELINE=path/to/another/rigidreel times that build too, in the same run
+BENCH_BASELINE ?=
 bench: build
 	@$(MAKE) --no-print-directory deps PACKAGES="$(BENCH_PACKAGES)"
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
 	@cmake --build $(BUILD) -j $(JOBS) --target rigidreel_bench rigidreel_stack_bench
 	@mkdir -p out/bench && rm -f out/bench/stacks.csv
 	./$(BUILD)/rigidreel_stack_bench --method sequential --method soft_step --csv out/bench/stacks.csv
-	./$(BUILD)/rigidreel_bench ./$(BUILD)/rigidreel scenes/three_collisions_poll.yaml
+	./$(BUILD)/rigidreel_bench ./$(BUILD)/rigidreel scenes/three_collisions_poll.yaml $(BENCH_BASELINE)
 
 clean:
 	rm -rf $(BUILD)

@@ -39,12 +39,12 @@ void GlCanvas::start(const Camera& camera, bool clear) {
   glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   glEnable(GL_STENCIL_TEST);
   glStencilMask(0xff);
-  lastStencil_ = 0;
   stencil_ = -1;  // unknown: the first primitive sets the stencil state
   const Color& bg = style_.background;
   glClearColor(static_cast<float>(bg.r), static_cast<float>(bg.g), static_cast<float>(bg.b), 1.0f);
-  glClearStencil(0);
-  glClear(clear ? GL_COLOR_BUFFER_BIT | GL_STENCIL_BUFFER_BIT : GL_STENCIL_BUFFER_BIT);
+  // the color only (an overlay keeps what is drawn): each primitive's stencil value is one no pixel
+  // holds (GlContext::freshStencil)
+  if (clear) glClear(GL_COLOR_BUFFER_BIT);
   // world units, y up, centered on the camera: vertices are sent relative to the center, so that
   // single-precision GL keeps its digits for what is on screen
   glMatrixMode(GL_PROJECTION);
@@ -56,14 +56,19 @@ void GlCanvas::start(const Camera& camera, bool clear) {
 }
 
 Image GlCanvas::finish() {
-  Image image = gl_.read();
+  Image image;
+  finish(image);
+  return image;
+}
+
+void GlCanvas::finish(Image& image) {
+  gl_.read(image);
   // a halo of the background around each letter, a tenth of the size: legible over any line
   const int halo = std::max(1, style_.fontSize / 10);
   for (const QueuedText& t : texts_)
     textRenderer_.draw(image, t.text, t.pixel.x(), t.pixel.y(), t.anchor, style_.fontSize, t.color,
                        style_.background.withAlpha(t.color.a), halo);
   texts_.clear();
-  return image;
 }
 
 Color GlCanvas::fillColor(const Pen& s) const {
@@ -204,12 +209,7 @@ void GlCanvas::beginPrimitive(const Color& c, double opacity, bool marks) {
     stencil_ = 0;
     return;
   }
-  // 8 stencil bits: after 255 primitives start over from a cleared stencil
-  if (++lastStencil_ > 255) {
-    glClear(GL_STENCIL_BUFFER_BIT);
-    lastStencil_ = 1;
-  }
-  stencil_ = lastStencil_;
+  stencil_ = gl_.freshStencil();
   glStencilFunc(GL_NOTEQUAL, stencil_, 0xff);
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
 }

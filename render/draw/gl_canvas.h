@@ -30,6 +30,8 @@ class GlCanvas final : public Canvas {
   void beginOverlay(const Camera& camera);
   // the frame, with the queued text on top
   Image finish();
+  // the same into `frame`, whose storage is reused when it has the frame's size already
+  void finish(Image& frame);
 
   void polygon(const std::vector<Vec2>& vertices, const Pen& style) override;
   void circle(const Vec2& center, double radius, const Pen& style) override;
@@ -74,8 +76,7 @@ class GlCanvas final : public Canvas {
   const Style& style_;
   Camera camera_{Vec2::Zero(), 1.0, 1, 1};
   double px_ = 1.0;  // world length of one output pixel
-  int stencil_ = -1;     // the stencil value of the primitive being drawn, 0 for none
-  int lastStencil_ = 0;  // the last value given out since the stencil was cleared
+  int stencil_ = -1;  // the stencil value of the primitive being drawn, 0 for none
   std::vector<QueuedText> texts_;
 };
 

@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "render/draw/gl_library.h"
+
 namespace render::draw {
 
 // 4× multisampling. Measured by build/rigidreel_frame_bench (render/frame_bench.cpp) on a 1280×720
@@ -21,8 +23,21 @@ namespace render::draw {
 // double the time, which a 60 fps lecture video does not need.
 Antialiasing defaultAntialiasing() { return {1, 4}; }
 
+namespace {
+
+// How the stencil is cleared. llvmpipe keeps depth and stencil in one 32-bit word per sample, so a
+// stencil clear alone is a masked read-modify-write of all of them (at 720p with 4 samples, 14.7 MB
+// a clear and 14 % of a render's CPU time in `perf`); with the depth (which 2D drawing never tests)
+// it is a plain store. And it is done only when the 255 values run out (every 5 to 25 frames of the
+// lecture's scenes) rather than every frame: a value given out once since the last clear is held by
+// no pixel but the ones its own primitive marks, which is all the canvas's stencil test asks.
+constexpr GLbitfield kStencilClear = GL_STENCIL_BUFFER_BIT | GL_DEPTH_BUFFER_BIT;
+
+}  // namespace
+
 GlContext::GlContext(int width, int height, Antialiasing aa) : width_(width), height_(height), aa_(aa) {
   const int w = width * aa.supersample, h = height * aa.supersample;
+  loadGlLibrary();
   // RGBA, 24 depth bits (unused, but llvmpipe pairs stencil with depth), 8 stencil bits
   context_ = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, nullptr);
   if (!context_) throw std::runtime_error("OSMesa could not create an OpenGL context (is libosmesa6 installed?)");
@@ -49,6 +64,7 @@ GlContext::GlContext(int width, int height, Antialiasing aa) : width_(width), he
     }
   }
   glViewport(0, 0, w, h);
+  clearStencil();
 }
 
 GlContext::~GlContext() {
@@ -69,8 +85,37 @@ void GlContext::makeCurrent() {
   if (framebuffer_) glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
 }
 
+void GlContext::clearStencil() {
+  glStencilMask(0xff);
+  glClearStencil(0);
+  glClear(kStencilClear);
+  lastStencil_ = 0;
+}
+
+int GlContext::freshStencil() {
+  if (lastStencil_ == 255) clearStencil();
+  return ++lastStencil_;
+}
+
 Image GlContext::read() {
+  Image frame;
+  read(frame);
+  return frame;
+}
+
+void GlContext::read(Image& frame) {
   const int w = width_ * aa_.supersample, h = height_ * aa_.supersample;
+  // OSMesa copies what GL drew into the buffer it was made current with: the frame itself, unless
+  // it is to be downsampled
+  uint8_t* target = buffer_.data();
+  if (aa_.supersample == 1) {
+    frame.width = w;
+    frame.height = h;
+    frame.rgba.resize(static_cast<size_t>(w) * h * 4);
+    target = frame.rgba.data();
+  }
+  if (!OSMesaMakeCurrent(context_, target, GL_UNSIGNED_BYTE, w, h))
+    throw std::runtime_error("OSMesa could not make its OpenGL context current");
   if (framebuffer_) {
     // the resolve is a copy: no per-fragment tests may mask it
     glDisable(GL_STENCIL_TEST);
@@ -81,12 +126,14 @@ Image GlContext::read() {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
   }
   glFinish();
-  if (framebuffer_) glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+  // OSMesa's own buffer again, so that it never keeps a pointer into a frame handed on
+  makeCurrent();
+  if (aa_.supersample == 1) return;
   Image drawn;
   drawn.width = w;
   drawn.height = h;
   drawn.rgba = buffer_;
-  return downsample(drawn, aa_.supersample);
+  frame = downsample(drawn, aa_.supersample);
 }
 
 }  // namespace render::draw

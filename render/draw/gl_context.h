@@ -38,6 +38,12 @@ class GlContext {
   void makeCurrent();
   // wait for GL, resolve the samples and return the frame at the output size, top row first
   Image read();
+  // the same into `frame`: OSMesa copies the frame straight into its storage, which is reused
+  // (neither allocated nor cleared) when it has the frame's size already
+  void read(Image& frame);
+  // a stencil value no pixel holds, for a primitive that marks its pixels: values count up from 1
+  // and the stencil is cleared only when the 8 bits run out, not every frame (see gl_context.cpp)
+  int freshStencil();
 
  private:
   int width_, height_;
@@ -45,6 +51,9 @@ class GlContext {
   osmesa_context* context_ = nullptr;
   std::vector<uint8_t> buffer_;  // OSMesa's color buffer: the drawn size, top row first
   unsigned framebuffer_ = 0, renderbuffers_[2] = {0, 0};
+  int lastStencil_ = 0;  // the last value given out since the stencil was cleared
+  // the stencil (and depth) cleared, every value free again
+  void clearStencil();
 };
 
 }  // namespace render::draw

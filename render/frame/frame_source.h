@@ -13,6 +13,8 @@ class FrameSource {
   virtual ~FrameSource() = default;
   // the frame at exactly time t, not earlier than the last one asked for
   virtual render::draw::Image frameAt(double t) = 0;
+  // the same into `frame`, whose storage a source may reuse (a video's few buffers); by default a copy
+  virtual void frameAt(double t, render::draw::Image& frame) { frame = frameAt(t); }
   // the title card over the frame at t = 0 (title_card.h)
   virtual render::draw::Image titleCard() = 0;
   // video frames say when they are slowed: how many times slower simulation time t is shown (empty: never)

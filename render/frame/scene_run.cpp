@@ -70,10 +70,21 @@ Image SceneRun::frameAt(double t, int strobe) {
   return paint(state_, ghosts);
 }
 
+void SceneRun::frameAt(double t, Image& frame) {
+  if (!canvas_) throw std::logic_error("SceneRun::frameAt needs a GL context");
+  paint(state_, advance(state_, t, 0), frame);
+}
+
 Image SceneRun::paint(const State& state, const std::vector<DrawList>& ghosts) {
+  Image frame;
+  paint(state, ghosts, frame);
+  return frame;
+}
+
+void SceneRun::paint(const State& state, const std::vector<DrawList>& ghosts, Image& frame) {
   canvas_->begin(camera_);
   painter_.paint(state.world, state.history, ghosts, *canvas_);
-  return canvas_->finish();
+  canvas_->finish(frame);
 }
 
 Image SceneRun::titleCard() {

@@ -27,6 +27,9 @@ class SceneRun {
   // that many earlier poses at t·i/strobe (i = 0 … strobe − 1) drawn fading behind the present one,
   // which needs a fresh run (nothing drawn yet). Throws sim::world::Diverged.
   Image frameAt(double t, int strobe = 0);
+  // the same without ghosts into `frame`, whose storage is reused when it has the frame's size (a
+  // video's frames, drawn into a few buffers over and over)
+  void frameAt(double t, Image& frame);
   // the draw calls of the frame at time t, without GL (the draw-list level of the tests); `placed`
   // (when given) is told where each text went (its box in pixels, the anchor it names)
   DrawList drawListAt(double t, int strobe = 0, std::vector<PlacedText>* placed = nullptr);
@@ -62,6 +65,7 @@ class SceneRun {
   void branchAt(const std::vector<double>& instants, int strobe, const Branch& reached);
   // the frame of `state` through GL
   Image paint(const State& state, const std::vector<DrawList>& ghosts);
+  void paint(const State& state, const std::vector<DrawList>& ghosts, Image& frame);
 
   const render::scene::Scene& def_;
   Camera camera_;

@@ -6,7 +6,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <thread>
 
@@ -59,6 +61,17 @@ Child spawnChild(const std::vector<std::string>& argv, Stream input, Stream outp
   child.output = pipes[1][0];
   child.errors = pipes[2][0];
   return child;
+}
+
+void widenPipe(int fd, size_t bytes) {
+  if (::fcntl(fd, F_SETPIPE_SZ, static_cast<int>(std::min<size_t>(bytes, 1u << 30))) >= 0) return;
+  // more than the system allows: its maximum, then
+  size_t most = 0;
+  if (std::FILE* f = std::fopen("/proc/sys/fs/pipe-max-size", "r")) {
+    if (std::fscanf(f, "%zu", &most) != 1) most = 0;
+    std::fclose(f);
+  }
+  if (most > 0 && most < bytes) ::fcntl(fd, F_SETPIPE_SZ, static_cast<int>(most));
 }
 
 int waitChild(pid_t pid) {

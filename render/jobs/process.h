@@ -30,6 +30,10 @@ struct SpawnError : std::runtime_error {
 
 // starts argv[0] (looked up on PATH when it has no '/'); throws SpawnError
 Child spawnChild(const std::vector<std::string>& argv, Stream input, Stream output, Stream errors);
+// asks the kernel to let the pipe `fd` hold `bytes` (a whole video frame) rather than its default
+// 64 KiB, or as much as an unprivileged process may (/proc/sys/fs/pipe-max-size, 1 MiB by default):
+// fewer, larger writes, and fewer wake-ups of the reader. Best effort: a pipe left as it was still works
+void widenPipe(int fd, size_t bytes);
 // waits for the child to end (through EINTR); its raw wait status (WIFEXITED, …)
 int waitChild(pid_t pid);
 // appends what `fd` gives until its end, keeping about the last `keep` characters of `into`

@@ -100,6 +100,7 @@ VideoWriter::VideoWriter(const std::string& path, VideoFormat format, int width,
   pid_ = child.pid;
   input_ = child.input;
   errors_ = child.errors;
+  widenPipe(input_, static_cast<size_t>(width) * height * 4);
   errorReader_ = std::thread([this] { readTail(errors_, errorTail_, kTailChars); });
 }
 

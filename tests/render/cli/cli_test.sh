@@ -335,5 +335,23 @@ expect "--collisions on a 3D scene exits 2: nothing collides in 3D" 2 err "no co
 expect "snapshot --impacts of a 3D scene exits 2" 2 err "nothing collides in 3D" snapshot "$TOP" --impacts -o snap3
 expect "snapshot of a 3D scene writes its PNG" 0 out "13_symmetric_top-oblate-t0.5.png" snapshot "$TOP" --variant oblate --at 0.5 --size 160x90 -o snap3
 
+# ---- the GL library, loaded only to draw ---------------------------------------------------
+
+# loads NAME ARGS...: the dynamic loader's record (LD_DEBUG=files) of running ARGS names libOSMesa
+loads_gl() {
+  LD_DEBUG=files "$BIN" "$@" >"$CAP/out" 2>"$CAP/err"
+  grep -q "file=libOSMesa" "$CAP/err"
+}
+for command in "check $POLL" "simulate $POLL --json" "sweep $MASS --integrators rk4 --dt 0.1:0.05:2 --repeat 1 -o gl_sw" \
+               "stability $MASS --integrators symplectic_euler -o gl_st"; do
+  # shellcheck disable=SC2086
+  if loads_gl $command; then not_ok "${command%% *} never loads libOSMesa"; else ok "${command%% *} never loads libOSMesa"; fi
+done
+if loads_gl snapshot "$POLL" --at 0.5 -o gl_snap; then
+  ok "snapshot loads libOSMesa to draw"
+else
+  not_ok "snapshot loads libOSMesa to draw"
+fi
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -109,6 +109,28 @@ TEST_CASE_FIXTURE(Fixture, "the same calls give the same pixels") {
   CHECK(draw() == a);
 }
 
+// the stencil is cleared only when its 255 values run out, in the middle of a frame too (4 values a
+// frame here): every frame after is the first one's pixels, drawn into the same storage each time
+TEST_CASE_FIXTURE(Fixture, "frames past the stencil's 255 values, into a reused buffer, are the first frame") {
+  auto draw = [&](Image& into) {
+    canvas.begin(camera);
+    canvas.polygon({{-3, -3}, {3, -3}, {3, 3}, {-3, 3}}, {Role::Body, 0, 0.5});
+    canvas.circle({1, 1}, 1.5, {Role::Body, 0, 0.5});
+    canvas.finish(into);
+  };
+  Image first, frame;
+  draw(first);
+  draw(frame);
+  const uint8_t* storage = frame.rgba.data();
+  int differing = 0;
+  for (int k = 0; k < 200; ++k) {
+    draw(frame);
+    differing += frame != first;
+  }
+  CHECK(differing == 0);
+  CHECK(frame.rgba.data() == storage);
+}
+
 TEST_CASE("supersampled and multisampled contexts both give frames of the output size") {
   for (const render::draw::Antialiasing aa : {render::draw::Antialiasing{1, 1}, render::draw::Antialiasing{2, 1}, render::draw::Antialiasing{1, 4}}) {
     render::draw::GlContext gl(64, 32, aa);
