@@ -21,7 +21,9 @@ struct SceneSource {
 };
 
 // the scene in `path`, with the named variant deep-merged over it ("" for the base scene): maps key
-// by key, the bodies list by name, other values whole. Throws SceneError.
+// by key, the bodies list by name, other values whole. The merge builds new maps and never changes
+// a node of the file, so that aliases (&a, *a) stay what they were written as. Throws
+// SceneError.
 SceneSource readSceneSource(const std::string& path, const std::string& variant = "");
 // the same from text; `file` names it in messages
 SceneSource sceneSourceText(const std::string& text, const std::string& file, const std::string& variant = "");
