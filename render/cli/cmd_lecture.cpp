@@ -2,7 +2,8 @@
 // panels, one job per scene. Every scene file is checked before anything renders; then each job
 // runs as a child process of this same program (`rigidreel lecture SCENE -j 1 ...`, so that one
 // job is one command line, which GNU Parallel or a Slurm array can run as well), at most -j at a
-// time, its output captured and reported when it ends.
+// time, its output captured and reported when it ends. Every scene's render plan (render_plan.h)
+// is made before anything renders: --list prints its paths, a job writes them.
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -12,23 +13,39 @@
 #include <thread>
 
 #include "render/cli/commands.h"
-#include "render/cli/lecture_job.h"
+#include "render/cli/lecture_files.h"
 #include "render/cli/lecture_summary.h"
 #include "render/cli/output.h"
 #include "render/jobs/interrupt.h"
 #include "render/jobs/job_runner.h"
+#include "render/video/output_names.h"
+#include "render/video/plan_writer.h"
 
 namespace render::cli {
 using namespace render::jobs;
+using namespace render::video;
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
 
-struct LectureCommand : LectureOptions {
+struct LectureCommand {
   std::vector<std::string> paths;
+  std::string output = "out/lecture";
   size_t jobs = std::max(1u, std::thread::hardware_concurrency());
+  std::string size;  // "WxH", or empty for the scene's
+  std::optional<double> fps;
+  bool quiet = false;
   bool list = false;
+};
+
+// a scene of the pack, checked before anything renders: its plan, or the divergence of a simulation
+// that stopped it, which the scene's job reports as it reports any failure
+struct PackScene {
+  std::string file;
+  std::string name;
+  std::optional<RenderPlan> plan;
+  std::exception_ptr diverged;
 };
 
 double since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
@@ -59,16 +76,37 @@ std::vector<std::string> jobCommand(const LectureCommand& o, const std::string& 
   return argv;
 }
 
-// one scene in this process; its failure is a result, not an exception, so that the table follows
-SceneResult runHere(const LecturePlan& plan, const LectureOptions& o) {
-  SceneResult r{plan.base.model.name, plan.file, false, {}, 0.0, {}};
+// the scene's plan: its variants loaded and their worlds started, surveyed, its outputs named;
+// throws sim::yaml::SceneError
+PackScene planScene(LectureRequest request, const std::string& file) {
+  request.file = file;
+  try {
+    RenderPlan plan = planLecture(lectureLoader(file), request);
+    return {file, plan.scene, std::move(plan), nullptr};
+  } catch (const VariantDiverged& d) {
+    return {file, d.model.name, std::nullopt, std::current_exception()};
+  }
+}
+
+// one scene in this process, as `render --all-variants` and `snapshot --panels` would write it,
+// quietly; its failure is a result, not an exception, so that the table follows
+SceneResult runHere(const PackScene& scene) {
+  SceneResult r{scene.name, scene.file, false, {}, 0.0, {}};
   const auto start = Clock::now();
   try {
-    r.ok = runLectureJob(plan, o, [&](const std::string& path) {
-             std::cout << "wrote " << path << std::endl;
-             r.outputs.push_back(path);
-           }) == kExitOk;
-    if (!r.ok) r.message = "see the message above";
+    if (scene.diverged) std::rethrow_exception(scene.diverged);
+    writePlan(*scene.plan, true, [&](const std::string& path) {
+      std::cout << "wrote " << path << std::endl;
+      r.outputs.push_back(path);
+    });
+    r.ok = true;
+  } catch (const VariantDiverged& d) {
+    if (d.when == VariantDiverged::While::Stills)
+      std::cerr << scene.file << ": the simulation diverged at t = " << timeForName(d.time)
+                << "; try a smaller step (sim: {dt: ...}) or another integrator\n";
+    else
+      std::cerr << videoDiverged(scene.file, d);
+    r.message = "see the message above";
   } catch (const Interrupted&) {
     throw;
   } catch (const std::exception& e) {
@@ -81,22 +119,26 @@ SceneResult runHere(const LecturePlan& plan, const LectureOptions& o) {
 
 int lecture(const LectureCommand& o) {
   const auto start = Clock::now();
-  if (!o.size.empty()) parseSize(o.size);
+  LectureRequest request{.root = o.output, .file = {}, .size = {}, .fps = o.fps};
+  if (!o.size.empty()) request.size = parseSize(o.size);
   if (o.fps) checkFps(*o.fps);
   if (o.jobs < 1) throw UsageError("-j: run at least 1 job at a time");
 
   // every scene checked before anything renders: a bad file stops the whole pack (exit 2)
-  std::vector<LecturePlan> plans;
+  std::vector<PackScene> scenes;
   std::set<std::string> names;
   for (const std::string& file : lectureSceneFiles(o.paths)) {
-    plans.push_back(planLecture(file));
-    if (!names.insert(plans.back().base.model.name).second)
-      throw UsageError(file + ": another file of the pack also names its scene '" + plans.back().base.model.name +
+    scenes.push_back(planScene(request, file));
+    if (!names.insert(scenes.back().name).second)
+      throw UsageError(file + ": another file of the pack also names its scene '" + scenes.back().name +
                        "'; their outputs would overwrite each other under " + o.output + "/; give it its own 'name:'");
   }
+  // the paths each job's plan writes
   if (o.list) {
-    for (const LecturePlan& plan : plans)
-      for (const std::string& path : lectureOutputs(plan, o.output)) std::cout << path << '\n';
+    for (const PackScene& scene : scenes)
+      if (scene.diverged) std::rethrow_exception(scene.diverged);
+    for (const PackScene& scene : scenes)
+      for (const std::string& path : scene.plan->paths()) std::cout << path << '\n';
     return kExitOk;
   }
   std::error_code error;
@@ -105,27 +147,27 @@ int lecture(const LectureCommand& o) {
 
   std::vector<SceneResult> results;
   size_t parallel = 1;
-  if (plans.size() == 1) {
-    results.push_back(runHere(plans.front(), o));
+  if (scenes.size() == 1) {
+    results.push_back(runHere(scenes.front()));
   } else {
-    parallel = std::min(o.jobs, plans.size());
+    parallel = std::min(o.jobs, scenes.size());
     std::vector<std::vector<std::string>> commands;
-    for (const LecturePlan& plan : plans) commands.push_back(jobCommand(o, plan.file));
-    results.resize(plans.size());
+    for (const PackScene& scene : scenes) commands.push_back(jobCommand(o, scene.file));
+    results.resize(scenes.size());
     size_t finished = 0;
     runJobs(commands, parallel, [&](const JobResult& job) {
       SceneResult& r = results[job.job];
-      r = {plans[job.job].base.model.name, plans[job.job].file, succeeded(job), wroteLines(job.output), job.seconds, {}};
+      r = {scenes[job.job].name, scenes[job.job].file, succeeded(job), wroteLines(job.output), job.seconds, {}};
       r.message = job.errors.empty() ? describeStatus(job.status) : job.errors;
       ++finished;
-      const std::string counter = "[" + std::to_string(finished) + "/" + std::to_string(plans.size()) + "] ";
+      const std::string counter = "[" + std::to_string(finished) + "/" + std::to_string(scenes.size()) + "] ";
       if (r.ok && !o.quiet)
         std::cout << counter << r.scene << ": " << r.outputs.size() << " outputs in " << secondsText(job.seconds) << " s" << std::endl;
       if (!r.ok)
         std::cerr << counter << r.scene << " FAILED (" << describeStatus(job.status) << "):\n" << indented(job.errors) << std::flush;
     });
   }
-  printLectureSummary(results, since(start), parallel, plans.size() == 1, std::cout, std::cerr);
+  printLectureSummary(results, since(start), parallel, scenes.size() == 1, std::cout, std::cerr);
   for (const SceneResult& r : results)
     if (!r.ok) return kExitFailure;
   return kExitOk;

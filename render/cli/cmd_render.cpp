@@ -1,16 +1,60 @@
 // `rigidreel render`: a scene into a video (mp4, webm or gif) with a poster PNG, and optionally
-// every frame as PNG, under out/<scene>/.
+// every frame as PNG, under out/<scene>/: the options checked, the plan made, the plan written.
+#include <cmath>
+#include <iostream>
 #include <memory>
 
 #include "render/cli/commands.h"
-#include "render/cli/videos.h"
+#include "render/cli/output.h"
+#include "render/cli/scene_options.h"
 #include "render/jobs/interrupt.h"
+#include "render/video/plan_writer.h"
 
 namespace render::cli {
 using namespace render::jobs;
+using namespace render::video;
+
+namespace {
+
+struct RenderCommand : SceneOptions {
+  std::string output = "out";
+  bool allVariants = false;
+  std::string size;
+  std::optional<double> fps;
+  std::optional<double> duration;
+  std::string format = "mp4";
+  bool frames = false;
+  bool quiet = false;
+};
+
+// the plan's request, each value checked (UsageError)
+VideoRequest request(const RenderCommand& o) {
+  const std::optional<VideoFormat> format = videoFormatFromName(o.format);
+  if (!format) throw UsageError("--format: unknown format '" + o.format + "'; choose mp4, webm or gif");
+  VideoRequest r{.root = o.output, .variant = o.variant, .allVariants = o.allVariants, .size = {}, .fps = o.fps,
+                 .duration = o.duration, .format = *format, .frames = o.frames};
+  if (!o.size.empty()) r.size = parseSize(o.size);
+  if (o.fps) checkFps(*o.fps);
+  if (o.duration && (!(*o.duration > 0.0) || !std::isfinite(*o.duration)))
+    throw UsageError("--duration: the length of the video must be a positive number of seconds");
+  return r;
+}
+
+int render(const RenderCommand& o) {
+  const VideoRequest r = request(o);
+  try {
+    writePlan(planVideos(o.variantLoader(), r), o.quiet, [](const std::string&) {});
+  } catch (const VariantDiverged& d) {
+    std::cerr << videoDiverged(o.scene, d);
+    return kExitFailure;
+  }
+  return kExitOk;
+}
+
+}  // namespace
 
 void addRenderCommand(CLI::App& app, int& exitCode) {
-  auto o = std::make_shared<VideoOptions>();
+  auto o = std::make_shared<RenderCommand>();
   CLI::App* cmd = app.add_subcommand("render", "render a scene into a video under out/<scene>/, with a poster PNG");
   cmd->add_option("scene", o->scene, "the scene file (YAML)")->required();
   o->addTo(*cmd);
@@ -22,7 +66,7 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--format", o->format, "mp4 (H.264, default), webm (VP9) or gif");
   cmd->add_flag("--frames", o->frames, "also write every frame as PNG into <scene>-frames/");
   cmd->add_flag("--quiet", o->quiet, "no progress bar and no summary");
-  cmd->callback([o, &exitCode] { exitCode = runInterruptible([&] { return renderVideos(*o, [](const std::string&) {}); }); });
+  cmd->callback([o, &exitCode] { exitCode = runInterruptible([&] { return render(*o); }); });
 }
 
 }  // namespace render::cli

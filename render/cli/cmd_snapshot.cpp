@@ -1,16 +1,29 @@
 // `rigidreel snapshot`: still frames of a scene at exact times or at its impacts, one PNG each, or
-// with --panels every variant side by side in one labeled image (the poll slide).
+// with --panels every variant side by side in one labeled image (the poll slide): the options
+// checked, the plan made, the plan written.
 #include <cmath>
 #include <iostream>
 #include <sstream>
 
 #include "render/cli/commands.h"
 #include "render/cli/output.h"
-#include "render/cli/snapshots.h"
+#include "render/cli/scene_options.h"
+#include "render/video/output_names.h"
+#include "render/video/plan_writer.h"
 
 namespace render::cli {
+using namespace render::video;
 
 namespace {
+
+struct SnapshotCommand : SceneOptions {
+  std::string at;  // "T1,T2,..."
+  bool impacts = false;
+  bool panels = false;
+  std::optional<int> strobe;
+  std::string output = "out";
+  std::string size;
+};
 
 // "0.5,1,2.25" → {0.5, 1, 2.25}; throws UsageError
 std::vector<double> parseTimes(const std::string& text) {
@@ -34,31 +47,44 @@ std::vector<double> parseTimes(const std::string& text) {
   return times;
 }
 
+// the plan's request, each value checked (UsageError)
+StillRequest request(const SnapshotCommand& o) {
+  StillRequest r{.root = o.output, .file = o.scene, .variant = o.variant, .times = {}, .impacts = o.impacts,
+                 .panels = o.panels, .strobe = o.strobe, .size = {}};
+  if (!o.at.empty()) r.times = parseTimes(o.at);
+  if (r.times.empty() == !o.impacts) throw UsageError("give the times with --at T1,T2,... or ask for --impacts (one of them)");
+  if (o.panels && !o.variant.empty())
+    throw UsageError("--panels shows every variant side by side; leave out --variant");
+  if (o.strobe && (*o.strobe < 0 || *o.strobe > 100)) throw UsageError("--strobe: give a number of ghosts from 0 to 100");
+  if (!o.size.empty()) r.size = parseSize(o.size);
+  return r;
+}
+
+int snapshot(const SnapshotCommand& o) {
+  try {
+    writePlan(planStills(o.variantLoader(), request(o)), true, [](const std::string& path) { std::cout << path << '\n'; });
+  } catch (const sim::world::Diverged& d) {
+    std::cerr << o.scene << ": the simulation diverged at t = " << timeForName(d.time)
+              << "; try a smaller step (--dt) or another integrator (--integrator rk4)\n";
+    return kExitFailure;
+  }
+  return kExitOk;
+}
+
 }  // namespace
 
 void addSnapshotCommand(CLI::App& app, int& exitCode) {
-  auto o = std::make_shared<SnapshotOptions>();
-  auto at = std::make_shared<std::string>();
+  auto o = std::make_shared<SnapshotCommand>();
   CLI::App* cmd = app.add_subcommand("snapshot", "still frames of a scene as PNG under out/<scene>/");
   cmd->add_option("scene", o->scene, "the scene file (YAML)")->required();
   o->addTo(*cmd);
-  cmd->add_option("--at", *at, "times in seconds, separated by commas: one PNG each");
+  cmd->add_option("--at", o->at, "times in seconds, separated by commas: one PNG each");
   cmd->add_flag("--impacts", o->impacts, "one PNG at each impact the collision response resolves");
   cmd->add_flag("--panels", o->panels, "every variant side by side in one labeled image");
   cmd->add_option("--strobe", o->strobe, "draw this many earlier poses, fading, behind the present one");
   cmd->add_option("-o,--output", o->output, "the output directory (default: out)");
   cmd->add_option("--size", o->size, "frame size WIDTHxHEIGHT in pixels, even (default: the scene's, 1280x720)");
-  cmd->callback([o, at, &exitCode] {
-    try {
-      if (!at->empty()) o->times = parseTimes(*at);
-      writeSnapshots(*o, [](const std::string& path) { std::cout << path << '\n'; });
-      exitCode = kExitOk;
-    } catch (const sim::world::Diverged& d) {
-      std::cerr << o->scene << ": the simulation diverged at t = " << timeForName(d.time)
-                << "; try a smaller step (--dt) or another integrator (--integrator rk4)\n";
-      exitCode = kExitFailure;
-    }
-  });
+  cmd->callback([o, &exitCode] { exitCode = snapshot(*o); });
 }
 
 }  // namespace render::cli

@@ -1,23 +1,20 @@
 #include "render/cli/output.h"
 
-#include <unistd.h>
-
-#include <cmath>
-#include <cstdio>
-#include <filesystem>
 #include <regex>
 
 #include "render/cli/commands.h"
 #include "render/scene/render_def.h"
+#include "render/video/output_names.h"
 
 namespace render::cli {
+using render::video::timeForName;
 
-FrameSize parseSize(const std::string& text, const std::string& option) {
+render::video::FrameSize parseSize(const std::string& text, const std::string& option) {
   static const std::regex form(R"((\d{1,6})[xX](\d{1,6}))");
   std::smatch m;
   if (!std::regex_match(text, m, form))
     throw UsageError(option + ": expected WIDTHxHEIGHT in pixels, e.g. 1280x720, got '" + text + "'");
-  const FrameSize s{std::stoi(m[1]), std::stoi(m[2])};
+  const render::video::FrameSize s{std::stoi(m[1]), std::stoi(m[2])};
   const auto inRange = [](int v) { return v >= render::scene::kMinFrameSide && v <= render::scene::kMaxFrameSide; };
   if (!inRange(s.width) || !inRange(s.height))
     throw UsageError(option + ": each side must be from " + std::to_string(render::scene::kMinFrameSide) + " to " +
@@ -33,35 +30,10 @@ void checkFps(double fps, const std::string& option) {
     throw UsageError(option + ": frames per second must be above 0 and at most 1000, got " + timeForName(fps));
 }
 
-std::string outputDirectory(const std::string& root, const std::string& scene) {
-  namespace fs = std::filesystem;
-  const fs::path dir = fs::path(root) / scene;
-  std::error_code error;
-  fs::create_directories(dir, error);
-  if (error || !fs::is_directory(dir))
-    throw UsageError("-o: cannot create the output directory " + dir.string() + " (" +
-                     (error ? error.message() : "a file is in the way") + "); choose another with -o DIR");
-  if (::access(dir.c_str(), W_OK) != 0)
-    throw UsageError("-o: cannot write in " + dir.string() + "; choose another directory with -o DIR");
-  return dir.string();
-}
-
-std::string outputBase(const sim::scene::SceneDef& def) { return def.variant.empty() ? def.name : def.name + "-" + def.variant; }
-
-std::string timeForName(double t) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", t);
-  return buf;
-}
-
-}  // namespace render::cli
-
-namespace render::cli {
-
-std::string strobeSuffix(int strobe) { return strobe > 0 ? "-strobe" + std::to_string(strobe) : ""; }
-
-std::string panelsFileName(const std::string& scene, const std::string& when, int strobe) {
-  return scene + "-panels" + when + strobeSuffix(strobe) + ".png";
+std::string videoDiverged(const std::string& file, const render::video::VariantDiverged& d) {
+  return file + ": the simulation diverged at t = " + timeForName(d.time) + ": body '" + d.model.bodies[d.body].name +
+         "' has a non-finite state; try a smaller step (--dt " + timeForName(d.model.dt / 4) +
+         ") or another integrator (--integrator rk4)\n";
 }
 
 }  // namespace render::cli

@@ -44,6 +44,14 @@ SceneFile SceneOptions::load() const {
   return file;
 }
 
+render::video::LoadVariant SceneOptions::variantLoader() const {
+  return [options = *this](const std::string& variant) {
+    SceneOptions one = options;
+    one.variant = variant;
+    return one.load().scene;
+  };
+}
+
 sim::world::World startWorld(const sim::scene::SceneDef& def, const std::string& file) {
   sim::world::World world = sim::scene::buildWorld(def);
   try {

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "render/cli/scene_file.h"
+#include "render/video/render_plan.h"
 #include "sim/scene/scene_def.h"
 #include "sim/world/world.h"
 
@@ -22,6 +23,8 @@ struct SceneOptions {
   void addTo(CLI::App& command);
   // the scene with the overrides applied; throws sim::yaml::SceneError or UsageError
   SceneFile load() const;
+  // any variant of the scene ("" the base scene) with the overrides applied, as a render plan reads them
+  render::video::LoadVariant variantLoader() const;
 };
 
 // the scene's world, started: `auto` resolved and the start state checked; bodies that overlap

@@ -3,6 +3,7 @@
 // time painted with GL.
 #pragma once
 
+#include <functional>
 #include <memory>
 
 #include "render/draw/gl_canvas.h"
@@ -28,22 +29,44 @@ class SceneRun {
   Image frameAt(double t, int strobe = 0);
   // the draw calls of the frame at time t, without GL (the draw-list level of the tests)
   DrawList drawListAt(double t, int strobe = 0);
+  // the frames at each of `instants` (s, in any order) from a fresh run, each exactly what a fresh
+  // run's frameAt(t, strobe) paints, told to `shot` with the instant's index, earliest first.
+  // Without ghosts the world runs once: a fresh run advanced to t takes the same steps as a longer
+  // one up to its last step before t, then a shorter step to t (advanceTo splits the step there), so
+  // a copy of this run kept at that step and advanced to t is that fresh run. Ghosts split the steps
+  // at t·i/strobe, so with them each picture starts from a copy of the first state. Afterwards this
+  // run is spent. Throws sim::world::Diverged.
+  void framesAt(const std::vector<double>& instants, int strobe, const std::function<void(size_t, Image)>& shot);
+  // the same as draw lists, without GL
+  void drawListsAt(const std::vector<double>& instants, int strobe, const std::function<void(size_t, DrawList)>& shot);
   // the title card over the frame at t = 0 (title_card.h); needs the GL context
   Image titleCard();
   // video frames say when they are slowed (empty: never), see FramePainter
   void showSlowMotion(FramePainter::SlowFactor factorAt) { painter_.showSlowMotion(std::move(factorAt)); }
 
-  const sim::world::World& world() const { return world_; }
+  const sim::world::World& world() const { return state_.world; }
 
  private:
-  std::vector<DrawList> advance(double t, int strobe);
+  // the world and what its history holds, at one moment of a run (copied to branch the run)
+  struct State {
+    sim::world::World world;
+    History history;
+  };
+  using Branch = std::function<void(size_t, State&)>;
+  // the world built and its history started
+  static State startState(const sim::scene::SceneDef& model, History::Options options);
+  // `state` advanced to t, and the strobe ghosts on the way
+  static std::vector<DrawList> advance(State& state, double t, int strobe);
+  // the state from which each instant is reached as a fresh run reaches it (see framesAt)
+  void branchAt(const std::vector<double>& instants, int strobe, const Branch& reached);
+  // the frame of `state` through GL
+  Image paint(const State& state, const std::vector<DrawList>& ghosts);
 
   const render::scene::Scene& def_;
   Camera camera_;
   Style style_;
   FramePainter painter_;
-  sim::world::World world_;
-  History history_;
+  State state_;
   std::unique_ptr<GlCanvas> canvas_;
   TextRenderer* text_;
 };

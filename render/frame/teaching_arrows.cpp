@@ -160,7 +160,7 @@ void TeachingArrows::drawOne(const Arrow& a, int index, const sim::world::World&
     }
     case Show::Frame: {
       const double length = kFrameLength * viewHeight_;
-      const Vec2 x = b.q.apply(Vec2::UnitX()), y = b.q.apply(Vec2::UnitY());
+      const Vec2 x = b.q().apply(Vec2::UnitX()), y = b.q().apply(Vec2::UnitY());
       draw.arrow(b.x, b.x + length * x, style);
       draw.arrow(b.x, b.x + length * y, style);
       const Pen text{Role::Label, a.def.body, 1.0};

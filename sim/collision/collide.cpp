@@ -131,7 +131,7 @@ Manifold polygons(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb
   m.separation = m.sat.separation;
   // for the manifold, keep A's edge unless B's is clearly better, so the choice does not flip
   // from step to step on near ties (Box2D's b2CollidePolygons does the same)
-  const bool refA = !(eb.separation > ea.separation + 0.05 * settings::kContactMargin);
+  const bool refA = !(eb.separation > ea.separation + settings::kReferenceEdgeHysteresis);
   clipToReference(A, B, ea, eb, refA, margin, m);
   if (m.separation > margin) return m;
   // the kept edge's sides can miss the incident edge near a corner: then use the best edge

@@ -20,6 +20,21 @@ double inverseEffectiveMass(const Body& a, const Body& b, const Vec2& r, const V
 // j to A and −j to B at world point r
 void applyImpulsePair(Body& a, Body& b, const Vec2& r, const Vec2& j);
 
+// two contact points r1, r2 that share the normal n̂, solved together (Catto 2006; Box2D 2.4's
+// block solver): normal impulses γ = (γ1, γ2) change the points' normal velocities by K γ, with
+//   K_ii = m_eff⁻¹ at point i,
+//   K_12 = m_a⁻¹ + m_b⁻¹ + (r_a1 × n̂)(r_a2 × n̂)/I_a + (r_b1 × n̂)(r_b2 × n̂)/I_b
+struct NormalBlock {
+  double k11 = 0.0, k12 = 0.0, k22 = 0.0;
+  double det = 0.0;  // k11 k22 − k12²
+  // the γ with K γ = d, by Cramer's rule; the caller checks that det is safely away from zero
+  Vec2 solve(double d1, double d2) const { return {(k22 * d1 - k12 * d2) / det, (k11 * d2 - k12 * d1) / det}; }
+};
+// K for the points r1, r2, with its diagonal as the caller holds it (the sequential solver keeps
+// the effective masses, the event method the inverse ones)
+NormalBlock normalBlock(const Body& a, const Body& b, const Vec2& r1, const Vec2& r2, const Vec2& n, double k11,
+                        double k22);
+
 struct ImpulseResult {
   double gamma = 0.0;    // along n̂
   double tangent = 0.0;  // friction impulse along (−n_y, n_x)

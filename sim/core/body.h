@@ -1,4 +1,5 @@
-// A rigid body: the notes' state (x, q, v, ω) plus the constant mass properties.
+// A rigid body: the notes' state (x, q, v, ω) plus the constant mass properties; the orientation is
+// stored once, as the angle θ, and q = (cos θ, sin θ) derived from it.
 #pragma once
 
 #include <limits>
@@ -15,6 +16,10 @@ struct BodyState {
   double angle = 0.0;
   Vec2 v = Vec2::Zero();
   double omega = 0.0;
+
+  // the notes' q = (cos θ, sin θ), derived from the one stored orientation
+  Rot q() const { return Rot::fromAngle(angle); }
+  Pose pose() const { return {x, q()}; }
 };
 
 struct Body {
@@ -26,20 +31,22 @@ struct Body {
   double friction = 0.0;     // Coulomb μ
 
   Vec2 x = Vec2::Zero();  // center of mass, world
-  double angle = 0.0;     // continuous (not wrapped), counter-clockwise
-  Rot q;                  // (cos θ, sin θ)
+  double angle = 0.0;     // continuous (not wrapped), counter-clockwise: the one stored orientation
   Vec2 v = Vec2::Zero();
   double omega = 0.0;     // counter-clockwise positive
+
+  // the notes' q = (cos θ, sin θ), derived: a solver that turns the body changes the angle alone,
+  // and q can never lag behind it
+  Rot q() const { return Rot::fromAngle(angle); }
+  Pose pose() const { return {x, q()}; }
 
   BodyState state() const { return {x, angle, v, omega}; }
   void setState(const BodyState& s) {
     x = s.x;
     angle = s.angle;
-    q = Rot::fromAngle(s.angle);
     v = s.v;
     omega = s.omega;
   }
-  Pose pose() const { return {x, q}; }
   // velocity of the body point at world position r: v + ω × r′ with r′ = r - x
   Vec2 pointVelocity(const Vec2& r) const { return v + cross(omega, r - x); }
 

@@ -7,8 +7,7 @@ namespace sim::core {
 namespace {
 
 Vec2 worldPoint(const std::vector<BodyState>& states, int body, const Vec2& local) {
-  const BodyState& s = states[body];
-  return s.x + Rot::fromAngle(s.angle).apply(local);
+  return states[body].pose().toWorld(local);
 }
 
 Vec2 pointVelocity(const BodyState& s, const Vec2& r) { return s.v + cross(s.omega, r - s.x); }
@@ -36,7 +35,7 @@ void ForceSet::accumulate(double window, const std::vector<Body>& bodies,
   for (const PointForce& p : pointForces) {
     if (window < p.from || window >= p.until) continue;
     const BodyState& s = states[p.body];
-    const Vec2 f = p.bodyFrame ? Rot::fromAngle(s.angle).apply(p.force) : p.force;
+    const Vec2 f = p.bodyFrame ? s.q().apply(p.force) : p.force;
     applyAt(states, p.body, worldPoint(states, p.body, p.point), f, force, torque);
   }
 

@@ -53,6 +53,9 @@ struct ForceSet {
 
   // times at which a force switches on or off: the step is split there
   std::vector<double> breakpoints() const;
+
+  // only gravity acts (or nothing): every body falls on a parabola of its own, exactly
+  bool gravityOnly() const { return pointForces.empty() && springs.empty() && drags.empty(); }
 };
 
 }  // namespace sim::core

@@ -21,6 +21,10 @@ inline constexpr double kTimeSnap = 1e-9;
 // collinear or repeated vertices are rejected instead of giving zero-length edges
 inline constexpr double kPolygonTurnTolerance = 1e-12;
 
+// a convex polygon's turns add up to 2π, rad; a star's to 4π or more: this slack takes atan2's
+// round-off over many vertices and is still far below the 2π that tells the two apart
+inline constexpr double kPolygonWindingTolerance = 1e-6;
+
 // default absolute tolerance of an `expect` check (SI units of the checked quantity)
 inline constexpr double kDefaultExpectTolerance = 1e-9;
 
@@ -33,6 +37,11 @@ namespace sim::core::settings {
 // contact points are kept while the surfaces are closer than this, m (Box2D: 2 × linear slop),
 // so resting contacts do not flicker in and out from step to step
 inline constexpr double kContactMargin = 0.01;
+
+// a polygon pair keeps A's edge as the reference unless B's separates by more than this, m, so the
+// manifold does not flip between two edges on near ties from step to step (Box2D's
+// b2CollidePolygons: 0.1 × linear slop, 0.5 mm)
+inline constexpr double kReferenceEdgeHysteresis = 0.05 * kContactMargin;
 
 // penetration the sequential solver leaves uncorrected, m (Box2D's b2_linearSlop: 0.5 cm), so
 // resting contacts do not jitter
@@ -53,6 +62,15 @@ inline constexpr double kRestitutionThreshold = 1.0;
 inline constexpr int kVelocityIterations = 8;
 inline constexpr int kPositionIterations = 3;
 
+// the position pass stops when the deepest point is within this, m (Box2D 2.4's
+// b2ContactSolver::SolvePositionConstraints: 3 × linear slop)
+inline constexpr double kPositionSolvedDepth = 3.0 * kLinearSlop;
+
+// the sequential solver solves a two-point manifold's normal impulses together (the 2×2 block)
+// only while its condition number, estimated as K₁₁²/det K, is below this; nearer one point the
+// block is left to the point-by-point sweep (Box2D 2.4's k_maxConditionNumber)
+inline constexpr double kMaxConditionNumber = 1000.0;
+
 // default coefficients: restitution halfway between elastic and plastic, frictionless as in the
 // notes
 inline constexpr double kDefaultRestitution = 0.5;
@@ -71,5 +89,55 @@ inline constexpr double kRestingSpeed = 1e-6;
 
 // event method: at most this many impacts in one step before giving up with an error
 inline constexpr int kMaxImpactsPerStep = 10000;
+
+// --- event method: time of impact (time_of_impact.h) ---
+
+// the approach speed bound of conservative advancement is taken at the two ends of the span; under
+// forces other than gravity the speed between them can be higher, so the bound is raised by this
+// factor (a margin, not a proof: a stiff enough spring can exceed it); under gravity alone the
+// speeds change linearly, and the ends bound them
+inline constexpr double kApproachBoundMargin = 1.25;
+
+// the first look-ahead out of a touching contact, as a fraction of the step: small enough to come
+// before any next impact, doubled until the pair is clear of the touching band
+inline constexpr double kLookAheadStart = 1e-12;
+
+// the root bracket is not narrowed below this fraction of the step: a few units in the last place
+// of a time near the step's length, where regula falsi can gain nothing more
+inline constexpr double kImpactBracket = 1e-15;
+
+// regula falsi (Illinois) iterations at most: it converges superlinearly, a few dozen reach
+// kImpactTolerance; the bound only guards against a gap that never settles
+inline constexpr int kMaxRefineIterations = 200;
+
+// conservative advancement steps of one pair in one span at most, before the pair counts as not
+// meeting: each step advances by gap / bound, so only a pair grazing at the tolerance comes near
+inline constexpr int kMaxAdvancementIterations = 100000;
+
+// --- event method: impacts and resting contact ---
+
+// approaching slower than this, m/s, does not count as an impact: round-off after an impulse
+// (a thousandth of kRestingSpeed)
+inline constexpr double kApproachFloor = 1e-3 * kRestingSpeed;
+
+// Gauss–Seidel sweeps over simultaneous impacts at most, before the motion goes on (what still
+// approaches is found again as an impact at once): a guard, far above what a cradle needs
+inline constexpr int kMaxImpactSweeps = 1000;
+
+// two impacting points are solved together unless det K ≤ this × K₁₁ K₂₂ (relative): then the
+// two points act as one and the fastest is answered alone
+inline constexpr double kMinBlockDeterminant = 1e-12;
+
+// a resting contact is kept, and its forces found, while the surfaces are within this many
+// touching tolerances: wider than the touching band, so that round-off does not release it
+inline constexpr double kRestingReach = 100.0;
+
+// projected Gauss–Seidel sweeps for the resting contacts' forces: a fixed count, so that the
+// forces (recomputed at every evaluation of the motion) are the same every run
+inline constexpr int kRestingForceSweeps = 50;
+
+// the smallest scene size, m: the event method's tolerances are fractions of the scene's size and
+// must stay positive when every body is a point (circles of radius 0)
+inline constexpr double kMinSceneSize = 1e-9;
 
 }  // namespace sim::core::settings

@@ -81,7 +81,7 @@ Shape makePolygon(std::vector<Vec2> v) {
     }
     turning += std::atan2(turn, e0.dot(e1));
   }
-  if (std::abs(turning - 2.0 * std::numbers::pi) > 1e-6)
+  if (std::abs(turning - 2.0 * std::numbers::pi) > settings::kPolygonWindingTolerance)
     throw std::invalid_argument("self-intersecting polygon: its boundary winds more than once; give the vertices of a convex polygon in order");
 
   Shape s;

@@ -54,7 +54,7 @@ void describeBodies(const World& world, DebugDraw& draw, double opacity) {
         draw.segment(b.x, pose.toWorld({b.shape.radius, 0.0}), {DrawRole::BodyAxis, static_cast<int>(i), opacity});
         break;
       case ShapeKind::Plane:
-        draw.halfPlane(b.x, b.q.apply(b.shape.planeNormal), style);
+        draw.halfPlane(b.x, b.q().apply(b.shape.planeNormal), style);
         break;
     }
   }

@@ -16,7 +16,7 @@ namespace {
 void labelEdge(const Body& polygon, int body, int e, const char* text, double labelOffset, DebugDraw& draw) {
   const std::vector<Vec2>& v = polygon.shape.vertices;
   const Vec2 p = polygon.pose().toWorld(v[e]), q = polygon.pose().toWorld(v[(e + 1) % v.size()]);
-  const Vec2 outward = polygon.q.apply(polygon.shape.normals[e]);
+  const Vec2 outward = polygon.q().apply(polygon.shape.normals[e]);
   draw.text(0.5 * (p + q) - labelOffset * outward, text, {DrawRole::Label, body, 1.0});
 }
 
@@ -38,7 +38,7 @@ void describeCandidateAxes(const World& world, int a, int b, int skipEdge, doubl
 
 double edgeSeparation(const Body& polygon, int edge, const Body& other) {
   const Vec2 p = polygon.pose().toWorld(polygon.shape.vertices[edge]);
-  const Vec2 n = polygon.q.apply(polygon.shape.normals[edge]);
+  const Vec2 n = polygon.q().apply(polygon.shape.normals[edge]);
   double least = std::numeric_limits<double>::infinity();
   for (const Vec2& v : other.shape.vertices) least = std::min(least, n.dot(other.pose().toWorld(v) - p));
   return least;

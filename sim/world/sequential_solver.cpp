@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "sim/collision/impulse.h"
+#include "sim/world/methods.h"
 #include "sim/world/world.h"
 
 namespace sim::world {
@@ -13,59 +14,11 @@ using namespace sim::core;
 using namespace sim::collision;
 
 namespace {
+
 Vec2 tangentOf(const Vec2& n) { return {-n.y(), n.x()}; }
-}  // namespace
-
-void World::stepSequential(double h) {
-  now_ = time + h;
-  // find the contacts where the bodies are now, carrying over last step's impulses
-  std::vector<Contact> fresh = findContacts(settings::kContactMargin);
-  matchWarmStart(fresh);
-  contacts = std::move(fresh);
-  prepareContacts(h);
-
-  // move freely, remembering where the free motion would end
-  std::vector<BodyState> before(bodies.size());
-  for (size_t i = 0; i < bodies.size(); ++i) before[i] = bodies[i].state();
-  integrateFree(h);
-  std::vector<BodyState> free(bodies.size());
-  for (size_t i = 0; i < bodies.size(); ++i) free[i] = bodies[i].state();
-  // solve the contacts on the free velocities, from where the step began
-  for (size_t i = 0; i < bodies.size(); ++i) {
-    bodies[i].x = before[i].x;
-    bodies[i].angle = before[i].angle;
-    bodies[i].q = Rot::fromAngle(before[i].angle);
-  }
-  warmStart();
-  for (int k = 0; k < velocityIterations; ++k) solveVelocities();
-
-  // the free motion plus the contact velocity change over the step (for symplectic Euler this is
-  // exactly x + h v⁺, Box2D's integration of positions)
-  for (size_t i = 0; i < bodies.size(); ++i) {
-    Body& b = bodies[i];
-    if (b.isStatic) continue;
-    b.x = free[i].x + h * (b.v - free[i].v);
-    b.angle = free[i].angle + h * (b.omega - free[i].omega);
-    b.q = Rot::fromAngle(b.angle);
-  }
-  for (int k = 0; k < positionIterations; ++k)
-    if (solvePositions()) break;
-
-  // log the impacts: contacts that arrived faster than the restitution threshold
-  for (const Contact& c : contacts)
-    for (int k = 0; k < c.manifold.count; ++k) {
-      const ContactPointState& s = c.state[k];
-      if (s.vnBefore >= -settings::kRestitutionThreshold || s.normalImpulse <= 0.0) continue;
-      const Vec2 r = c.manifold.points[k].point, n = c.manifold.normal;
-      ImpactRecord rec{now_, c.a, c.b, r, n, s.normalImpulse, s.tangentImpulse};
-      rec.vnBefore = s.vnBefore;
-      rec.vnAfter = n.dot(relativeVelocity(bodies[c.a], bodies[c.b], r));
-      impacts.push_back(rec);
-    }
-}
 
 // the same pair and the same features as last step start from last step's impulses
-void World::matchWarmStart(std::vector<Contact>& fresh) const {
+void matchWarmStart(const std::vector<Contact>& contacts, std::vector<Contact>& fresh) {
   size_t old = 0;
   for (Contact& c : fresh) {
     while (old < contacts.size() && std::make_pair(contacts[old].a, contacts[old].b) < std::make_pair(c.a, c.b)) ++old;
@@ -81,8 +34,9 @@ void World::matchWarmStart(std::vector<Contact>& fresh) const {
 }
 
 // effective masses, anchors and the velocity each contact must reach
-void World::prepareContacts(double h) {
-  for (Contact& c : contacts) {
+void prepareContacts(World& world, double h) {
+  const std::vector<Body>& bodies = world.bodies;
+  for (Contact& c : world.contacts) {
     const Body &a = bodies[c.a], &b = bodies[c.b];
     const Vec2 n = c.manifold.normal, t = tangentOf(n);
     for (int k = 0; k < c.manifold.count; ++k) {
@@ -105,8 +59,9 @@ void World::prepareContacts(double h) {
   }
 }
 
-void World::warmStart() {
-  for (const Contact& c : contacts) {
+void warmStart(World& world) {
+  std::vector<Body>& bodies = world.bodies;
+  for (const Contact& c : world.contacts) {
     const Vec2 n = c.manifold.normal, t = tangentOf(n);
     for (int k = 0; k < c.manifold.count; ++k)
       applyImpulsePair(bodies[c.a], bodies[c.b], c.manifold.points[k].point,
@@ -114,58 +69,26 @@ void World::warmStart() {
   }
 }
 
-// one Gauss–Seidel sweep over the contacts: friction, then the normal impulses
-void World::solveVelocities() {
-  for (Contact& c : contacts) {
-    Body &a = bodies[c.a], &b = bodies[c.b];
-    const Vec2 n = c.manifold.normal, t = tangentOf(n);
-    // Coulomb friction: the accumulated tangent impulse stays within ±μ times the normal one
-    if (c.friction > 0.0)
-      for (int k = 0; k < c.manifold.count; ++k) {
-        ContactPointState& s = c.state[k];
-        const Vec2 r = c.manifold.points[k].point;
-        const double lambda = -s.tangentMass * t.dot(relativeVelocity(a, b, r));
-        const double limit = c.friction * s.normalImpulse;
-        const double total = std::clamp(s.tangentImpulse + lambda, -limit, limit);
-        applyImpulsePair(a, b, r, (total - s.tangentImpulse) * t);
-        s.tangentImpulse = total;
-      }
-    if (c.manifold.count == 2 && solveNormalBlock(c)) continue;
-    // the normal impulse pushes, never pulls: clamp the accumulated impulse at zero
-    for (int k = 0; k < c.manifold.count; ++k) {
-      ContactPointState& s = c.state[k];
-      const Vec2 r = c.manifold.points[k].point;
-      const double lambda = -s.normalMass * (n.dot(relativeVelocity(a, b, r)) - s.bias);
-      const double total = std::max(s.normalImpulse + lambda, 0.0);
-      applyImpulsePair(a, b, r, (total - s.normalImpulse) * n);
-      s.normalImpulse = total;
-    }
-  }
-}
-
 // both points of a two-point manifold at once: point by point, the first impulse would tip the
 // body and the second undo it, so a resting box rocks (Box2D's block solver: the 2×2 linear
 // complementarity problem solved by trying its four cases)
-bool World::solveNormalBlock(Contact& c) {
+bool solveNormalBlock(std::vector<Body>& bodies, Contact& c) {
   Body &a = bodies[c.a], &b = bodies[c.b];
   const Vec2 n = c.manifold.normal;
   const Vec2 r1 = c.manifold.points[0].point, r2 = c.manifold.points[1].point;
   ContactPointState &s1 = c.state[0], &s2 = c.state[1];
-  const double ra1 = cross(r1 - a.x, n), ra2 = cross(r2 - a.x, n);
-  const double rb1 = cross(r1 - b.x, n), rb2 = cross(r2 - b.x, n);
-  const double k11 = 1.0 / s1.normalMass, k22 = 1.0 / s2.normalMass;
-  const double k12 = a.invMass + b.invMass + a.invInertia * ra1 * ra2 + b.invInertia * rb1 * rb2;
-  const double det = k11 * k22 - k12 * k12;
+  const NormalBlock K = normalBlock(a, b, r1, r2, n, 1.0 / s1.normalMass, 1.0 / s2.normalMass);
+  const double k11 = K.k11, k12 = K.k12, k22 = K.k22;
   // an ill-conditioned pair (the two points nearly one) is left to the point-by-point sweep
-  if (!(k11 * k11 < 1000.0 * det)) return false;
+  if (!(k11 * k11 < settings::kMaxConditionNumber * K.det)) return false;
 
   // with x the new accumulated impulses: v_n = K x + b' must be ≥ 0 where x > 0, x ≥ 0
   const double x1Old = s1.normalImpulse, x2Old = s2.normalImpulse;
   const double b1 = n.dot(relativeVelocity(a, b, r1)) - s1.bias - (k11 * x1Old + k12 * x2Old);
   const double b2 = n.dot(relativeVelocity(a, b, r2)) - s2.bias - (k12 * x1Old + k22 * x2Old);
   double x1 = 0.0, x2 = 0.0;
-  if (const double y1 = (-k22 * b1 + k12 * b2) / det, y2 = (k12 * b1 - k11 * b2) / det; y1 >= 0.0 && y2 >= 0.0) {
-    x1 = y1, x2 = y2;  // both points push
+  if (const Vec2 both = K.solve(-b1, -b2); both.x() >= 0.0 && both.y() >= 0.0) {
+    x1 = both.x(), x2 = both.y();  // both points push
   } else if (const double z1 = -b1 / k11; z1 >= 0.0 && k12 * z1 + b2 >= 0.0) {
     x1 = z1;  // only the first
   } else if (const double z2 = -b2 / k22; z2 >= 0.0 && k12 * z2 + b1 >= 0.0) {
@@ -180,10 +103,41 @@ bool World::solveNormalBlock(Contact& c) {
   return true;
 }
 
+// one Gauss–Seidel sweep over the contacts: friction, then the normal impulses
+void solveVelocities(World& world) {
+  std::vector<Body>& bodies = world.bodies;
+  for (Contact& c : world.contacts) {
+    Body &a = bodies[c.a], &b = bodies[c.b];
+    const Vec2 n = c.manifold.normal, t = tangentOf(n);
+    // Coulomb friction: the accumulated tangent impulse stays within ±μ times the normal one
+    if (c.friction > 0.0)
+      for (int k = 0; k < c.manifold.count; ++k) {
+        ContactPointState& s = c.state[k];
+        const Vec2 r = c.manifold.points[k].point;
+        const double lambda = -s.tangentMass * t.dot(relativeVelocity(a, b, r));
+        const double limit = c.friction * s.normalImpulse;
+        const double total = std::clamp(s.tangentImpulse + lambda, -limit, limit);
+        applyImpulsePair(a, b, r, (total - s.tangentImpulse) * t);
+        s.tangentImpulse = total;
+      }
+    if (c.manifold.count == 2 && solveNormalBlock(bodies, c)) continue;
+    // the normal impulse pushes, never pulls: clamp the accumulated impulse at zero
+    for (int k = 0; k < c.manifold.count; ++k) {
+      ContactPointState& s = c.state[k];
+      const Vec2 r = c.manifold.points[k].point;
+      const double lambda = -s.normalMass * (n.dot(relativeVelocity(a, b, r)) - s.bias);
+      const double total = std::max(s.normalImpulse + lambda, 0.0);
+      applyImpulsePair(a, b, r, (total - s.normalImpulse) * n);
+      s.normalImpulse = total;
+    }
+  }
+}
+
 // one pass of position correction; true when every contact is within the slop
-bool World::solvePositions() {
+bool solvePositions(World& world) {
+  std::vector<Body>& bodies = world.bodies;
   double deepest = 0.0;
-  for (const Contact& c : contacts) {
+  for (const Contact& c : world.contacts) {
     Body &a = bodies[c.a], &b = bodies[c.b];
     const Vec2 n = c.manifold.normal;
     for (int k = 0; k < c.manifold.count; ++k) {
@@ -203,14 +157,79 @@ bool World::solvePositions() {
       const Vec2 ra = r - a.x, rb = r - b.x;
       a.x += a.invMass * push;
       a.angle += a.invInertia * cross(ra, push);
-      a.q = Rot::fromAngle(a.angle);
       b.x -= b.invMass * push;
       b.angle -= b.invInertia * cross(rb, push);
-      b.q = Rot::fromAngle(b.angle);
     }
   }
   // Box2D stops when the deepest point is within three times the slop
-  return deepest >= -3.0 * settings::kLinearSlop;
+  return deepest >= -settings::kPositionSolvedDepth;
 }
+
+// the impacts of the step: contacts that arrived faster than the restitution threshold
+void recordImpacts(World& world, double t) {
+  for (const Contact& c : world.contacts)
+    for (int k = 0; k < c.manifold.count; ++k) {
+      const ContactPointState& s = c.state[k];
+      if (s.vnBefore >= -settings::kRestitutionThreshold || s.normalImpulse <= 0.0) continue;
+      const Vec2 r = c.manifold.points[k].point, n = c.manifold.normal;
+      ImpactRecord rec{t, c.a, c.b, r, n, s.normalImpulse, s.tangentImpulse};
+      rec.vnBefore = s.vnBefore;
+      rec.vnAfter = n.dot(relativeVelocity(world.bodies[c.a], world.bodies[c.b], r));
+      world.impacts.push_back(rec);
+    }
+}
+
+class SequentialSolver final : public Method {
+ public:
+  std::unique_ptr<Method> clone() const override { return std::make_unique<SequentialSolver>(*this); }
+
+  // the contacts where the bodies are now, carrying over last step's impulses (warm starting)
+  void beginStep(World& world, const TimeStep& step) override {
+    std::vector<Contact> fresh = world.findContacts(settings::kContactMargin);
+    matchWarmStart(world.contacts, fresh);
+    world.contacts = std::move(fresh);
+    prepareContacts(world, step.h);
+  }
+
+  // move freely, remembering where the step began and where the free motion ends
+  bool move(World& world, const TimeStep& step) override {
+    before_ = world.states();
+    moveFreely(world, step);
+    free_ = world.states();
+    return false;
+  }
+
+  // the contacts solved on the free velocities from where the step began, then the positions
+  void resolveCollisions(World& world, const TimeStep& step) override {
+    for (size_t i = 0; i < world.bodies.size(); ++i) {
+      world.bodies[i].x = before_[i].x;
+      world.bodies[i].angle = before_[i].angle;
+    }
+    warmStart(world);
+    for (int k = 0; k < world.velocityIterations; ++k) solveVelocities(world);
+    integratePositions(world, step.h);
+    for (int k = 0; k < world.positionIterations; ++k)
+      if (solvePositions(world)) break;
+    recordImpacts(world, step.end());
+  }
+
+ private:
+  // the free motion plus the contact velocity change over the step (for symplectic Euler this is
+  // exactly x + h v⁺, Box2D's integration of positions)
+  void integratePositions(World& world, double h) const {
+    for (size_t i = 0; i < world.bodies.size(); ++i) {
+      Body& b = world.bodies[i];
+      if (b.isStatic) continue;
+      b.x = free_[i].x + h * (b.v - free_[i].v);
+      b.angle = free_[i].angle + h * (b.omega - free_[i].omega);
+    }
+  }
+
+  States before_, free_;  // the states where the step began and where the free motion ended
+};
+
+}  // namespace
+
+std::unique_ptr<Method> makeSequentialSolver() { return std::make_unique<SequentialSolver>(); }
 
 }  // namespace sim::world

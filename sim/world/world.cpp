@@ -23,10 +23,11 @@ void World::applyImpulse(int i, const Vec2& r, const Vec2& j) {
   b.omega += b.invInertia * cross(r - b.x, j);
 }
 
-void World::rates(double, const States& y, Rates& out) const {
-  forces.accumulate(window_, bodies, y, force_, torque_);
-  // resting contacts push back with whatever force keeps them from sinking in
-  if (!restingPairs_.empty()) restingForces(y, force_, torque_);
+void World::rates(double t, const States& y, Rates& out) const {
+  // forces and torques: the applied forces on at t, and what the method's contacts push with
+  forces.accumulate(t, bodies, y, force_, torque_);
+  if (method_) method_->addContactForces(*this, y, force_, torque_);
+  // ẋ = v, θ̇ = ω, v̇ = f/m, ω̇ = τ/I
   out.resize(y.size());
   for (size_t i = 0; i < y.size(); ++i) {
     const Body& b = bodies[i];
@@ -36,6 +37,17 @@ void World::rates(double, const States& y, Rates& out) const {
     }
     out[i] = {y[i].v, y[i].omega, b.invMass * force_[i], b.invInertia * torque_[i]};
   }
+}
+
+States World::states() const {
+  States y(bodies.size());
+  for (size_t i = 0; i < bodies.size(); ++i) y[i] = bodies[i].state();
+  return y;
+}
+
+void World::setStates(const States& y) {
+  for (size_t i = 0; i < bodies.size(); ++i)
+    if (!bodies[i].isStatic) bodies[i].setState(y[i]);
 }
 
 std::vector<Contact> World::findContacts(double margin) const {
@@ -69,9 +81,15 @@ void World::start() {
                    [](const ImpulseEvent& a, const ImpulseEvent& b) { return a.time < b.time; });
   switches_ = forces.breakpoints();
   std::sort(switches_.begin(), switches_.end());
-  constantForces_ = forces.pointForces.empty() && forces.springs.empty() && forces.drags.empty();
+  measureScene();
+  if (collisions == CollisionMethod::Auto) chooseMethod();
+  method_ = OwnedMethod(makeMethod(collisions));
+  method_->start(*this);
+  started_ = true;
+}
 
-  // the scale of the event method's tolerances: the extent of everything finite at the start
+// the scale of the event method's tolerances: the extent of everything finite at the start
+void World::measureScene() {
   Aabb all{Vec2::Constant(std::numeric_limits<double>::infinity()), Vec2::Constant(-std::numeric_limits<double>::infinity())};
   for (const Body& b : bodies) {
     if (b.shape.kind == ShapeKind::Plane) continue;
@@ -79,30 +97,35 @@ void World::start() {
     all.lower = all.lower.cwiseMin(box.lower);
     all.upper = all.upper.cwiseMax(box.upper);
   }
-  if (all.upper.x() >= all.lower.x()) sceneSize_ = std::max((all.upper - all.lower).maxCoeff(), 1e-9);
+  if (all.upper.x() >= all.lower.x()) sceneSize_ = std::max((all.upper - all.lower).maxCoeff(), settings::kMinSceneSize);
+}
 
-  // `auto`: the least model the scene needs
-  if (collisions == CollisionMethod::Auto) {
-    size_t dynamic = 0;
-    for (const Body& b : bodies) dynamic += !b.isStatic;
-    const bool loaded = forces.gravity != Vec2::Zero() || !constantForces_;
-    if (dynamic == 0 || bodies.size() < 2) {
-      collisions = CollisionMethod::None;
-      methodReason = MethodReason::FewBodies;
-    } else if (loaded && !findContacts(settings::kContactMargin).empty()) {
-      collisions = CollisionMethod::Sequential;
-      methodReason = MethodReason::PersistentContacts;
-    } else {
-      collisions = CollisionMethod::Event;
-      methodReason = MethodReason::IsolatedImpacts;
-    }
+// `auto`: the least model the scene needs
+void World::chooseMethod() {
+  size_t dynamic = 0;
+  for (const Body& b : bodies) dynamic += !b.isStatic;
+  const bool loaded = forces.gravity != Vec2::Zero() || !forces.gravityOnly();
+  if (dynamic == 0 || bodies.size() < 2) {
+    collisions = CollisionMethod::None;
+    methodReason = MethodReason::FewBodies;
+  } else if (loaded && !findContacts(settings::kContactMargin).empty()) {
+    collisions = CollisionMethod::Sequential;
+    methodReason = MethodReason::PersistentContacts;
+  } else {
+    collisions = CollisionMethod::Event;
+    methodReason = MethodReason::IsolatedImpacts;
   }
-  // the event method advances to the instant of touching: it cannot start from an overlap
-  if (collisions == CollisionMethod::Event)
-    for (const Contact& c : findContacts(0.0))
-      if (c.manifold.separation < -settings::kTouchingTolerance * sceneSize_)
-        throw InitialOverlap(c.a, c.b, -c.manifold.separation);
-  started_ = true;
+}
+
+std::unique_ptr<Method> makeMethod(CollisionMethod method) {
+  switch (method) {
+    case CollisionMethod::Auto:  // resolved by World::start
+    case CollisionMethod::None: return makeFreeMotion();
+    case CollisionMethod::Isolated: return makeIsolatedSolver();
+    case CollisionMethod::Sequential: return makeSequentialSolver();
+    case CollisionMethod::Event: return makeEventStepper();
+  }
+  return makeFreeMotion();
 }
 
 // the next time to stop at: the next grid point, event, force switch or the end, whichever is first
@@ -134,37 +157,24 @@ void World::advanceTo(double tEnd, StepObserver* observer) {
   time = std::max(time, tEnd);
 }
 
-// one step of size h: each collision method is a short list of named stages
+// one step of size h, in the notes' order (Box2D-Lite's World::Step); what each stage does is the
+// collision method's (methods.h)
 void World::step(double h) {
-  window_ = time + 0.5 * h;
-  switch (collisions) {
-    case CollisionMethod::Auto:  // resolved by start()
-    case CollisionMethod::None: integrateFree(h); break;
-    case CollisionMethod::Isolated: stepIsolated(h); break;
-    case CollisionMethod::Sequential: stepSequential(h); break;
-    case CollisionMethod::Event: stepEvent(h); break;
-  }
+  const TimeStep thisStep{time, h};
+  Method& method = *method_;
+  // what the method needs of where the step begins (sequential: the contacts, warm started)
+  method.beginStep(*this, thisStep);
+  bool atImpact = false;
+  do {
+    // forces and torques, velocities, positions: the integrator over the step, or (event) up to
+    // the first time of impact
+    atImpact = method.move(*this, thisStep);
+    // collisions and impulses where the motion stopped; after an impact the motion goes on
+    method.resolveCollisions(*this, thisStep);
+  } while (atImpact);
   ++steps;
   // stop at the first non-finite state rather than carry NaN forward
   checkFinite(time + h);
-}
-
-// move every body by the integrator over h, as if nothing touched
-void World::integrateFree(double h) {
-  scratch_.resize(bodies.size());
-  for (size_t i = 0; i < bodies.size(); ++i) scratch_[i] = bodies[i].state();
-  integrate(integrator, *this, time, h, scratch_);
-  for (size_t i = 0; i < bodies.size(); ++i)
-    if (!bodies[i].isStatic) bodies[i].setState(scratch_[i]);
-}
-
-// the notes' model: move freely, then find the overlaps and answer each with one impulse
-void World::stepIsolated(double h) {
-  now_ = time + h;
-  integrateFree(h);
-  contacts = findContacts(0.0);
-  resolveDeepestFirst();
-  separateOverlaps();
 }
 
 void World::applyDueEvents(StepObserver* observer) {

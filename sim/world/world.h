@@ -12,6 +12,7 @@
 #include "sim/core/integrators.h"
 #include "sim/core/settings.h"
 #include "sim/world/contact.h"
+#include "sim/world/methods.h"
 
 namespace sim::world {
 using namespace sim::core;
@@ -53,7 +54,9 @@ struct InitialOverlap : std::runtime_error {
 // why the collision method is what it is (`auto` explains its choice)
 enum class MethodReason { Requested, FewBodies, IsolatedImpacts, PersistentContacts };
 
-class World : public Dynamics {
+// The world holds the bodies, the forces, the contacts and the time; the collision method
+// (methods.h) decides how a step answers touching bodies.
+class World {
  public:
   std::vector<Body> bodies;
   ForceSet forces;
@@ -79,8 +82,14 @@ class World : public Dynamics {
   // the notes' impulse at a world point r: v += j/m, ω += I⁻¹ (r − x) × j
   void applyImpulse(int body, const Vec2& r, const Vec2& j);
 
-  // Dynamics: ẋ = v, θ̇ = ω, v̇ = f/m, ω̇ = τ/I (with resting-contact forces under `event`)
-  void rates(double t, const States& y, Rates& out) const override;
+  // the notes' free-body equations at time t (notes: "Dynamics of a free body"): ẋ = v, θ̇ = ω,
+  // v̇ = f/m, ω̇ = τ/I with the forces and torques of the forces on at t and of the contacts the
+  // collision method holds (event: resting contacts)
+  void rates(double t, const States& y, Rates& out) const;
+
+  // every body's state; setStates moves the dynamic bodies to y (static ones never move)
+  States states() const;
+  void setStates(const States& y);
 
   // manifolds of every pair closer than `margin` now, sorted by pair
   std::vector<Contact> findContacts(double margin) const;
@@ -88,49 +97,22 @@ class World : public Dynamics {
   double sceneSize() const { return sceneSize_; }
 
  private:
+  void measureScene();
+  void chooseMethod();
   double nextStop(double tEnd) const;
   void step(double h);
   void applyDueEvents(StepObserver* observer);
   void checkFinite(double t) const;
-
-  // the stages the collision methods are made of
-  void integrateFree(double h);
-  void stepIsolated(double h);
-  void stepSequential(double h);
-  void stepEvent(double h);
-
-  // isolated (isolated_solver.cpp)
-  void resolveDeepestFirst();
-  void separateOverlaps();
-  // sequential (sequential_solver.cpp)
-  void matchWarmStart(std::vector<Contact>& fresh) const;
-  void prepareContacts(double h);
-  void warmStart();
-  void solveVelocities();
-  bool solveNormalBlock(Contact& c);
-  bool solvePositions();
-  // event (event_stepper.cpp)
-  struct Impact;
-  Impact earliestImpact(const States& from, double span) const;
-  void moveAlong(const States& from, double tau);
-  void resolveImpactsAt(double t);
-  void holdRestingContacts();
-  void restingForces(const States& y, std::vector<Vec2>& force, std::vector<double>& torque) const;
-  States motion(const States& from, double tau) const;
 
   bool started_ = false;
   std::vector<ImpulseEvent> pending_;  // sorted by time
   size_t nextEvent_ = 0;
   std::vector<double> switches_;       // sorted force on/off times
   long gridIndex_ = 0;                 // time lies in [gridIndex_ dt, (gridIndex_ + 1) dt)
-  double window_ = 0.0;                // a time inside the current step
-  double now_ = 0.0;                   // when the impulses being applied happen, for the records
   double sceneSize_ = 1.0;
-  bool constantForces_ = true;         // only gravity: the event method moves bodies exactly
-  std::vector<std::pair<int, int>> restingPairs_;
-  mutable std::vector<Vec2> force_;    // scratch for rates()
+  OwnedMethod method_;                 // the unit of `collisions`, made by start()
+  mutable std::vector<Vec2> force_;    // scratch of rates()
   mutable std::vector<double> torque_;
-  States scratch_;
 };
 
 }  // namespace sim::world

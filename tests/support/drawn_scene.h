@@ -18,4 +18,15 @@ inline render::scene::Scene loadFile(const std::string& path, const std::string&
   return render::scene::readScene(sim::yaml::readSceneSource(path, variant), {{"stability"}, {}});
 }
 
+// a scene named "lesson" of `duration` s in which a ball (radius 0.25 at the origin, 1 m/s to the
+// right) bounces off a static wall at t = 0.5 (the event method, c_r = 1), on lines 1-7; `rest` (a
+// render: block, variants) from line 8 on
+inline std::string bounce(const std::string& duration, const std::string& rest) {
+  return "name: lesson\nduration: " + duration +
+         "\nworld: {restitution: 1}\nsim: {collisions: event}\nbodies:\n"
+         "  - {name: ball, shape: {circle: 0.25}, position: [0, 0], velocity: [1, 0]}\n"
+         "  - {name: wall, shape: {box: [0.2, 2]}, position: [0.85, 0], static: true}\n" +
+         rest;
+}
+
 }  // namespace drawn_scene

@@ -224,3 +224,50 @@ TEST_CASE("friction stays in Coulomb's cone |j_t| ≤ μγ and stops the sliding
   CHECK(inside > 50);
   CHECK(onCone > 50);
 }
+
+TEST_CASE("two points solved together: the block impulses give both points the normal velocity change asked for") {
+  // random bodies and two points on a shared normal: K γ = d, applied as two impulses, changes
+  // the normal velocity of each point by exactly d_i (both points feel both impulses)
+  std::mt19937_64 rng(4242);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int k = 0; k < 200; ++k) {
+    RandomImpact c = randomImpact(rng);
+    const sim::core::Vec2 t(-c.n.y(), c.n.x());
+    const sim::core::Vec2 r1 = c.r + 0.4 * t, r2 = c.r - (0.1 + 0.3 * (u(rng) + 1.0)) * t;
+    const double k11 = sim::collision::inverseEffectiveMass(c.a, c.b, r1, c.n);
+    const double k22 = sim::collision::inverseEffectiveMass(c.a, c.b, r2, c.n);
+    const sim::collision::NormalBlock K = sim::collision::normalBlock(c.a, c.b, r1, r2, c.n, k11, k22);
+    // K is symmetric positive definite for two distinct points: det > 0
+    CHECK(K.det > 0.0);
+    const double v1 = normalVelocity(c.a, c.b, r1, c.n), v2 = normalVelocity(c.a, c.b, r2, c.n);
+    const double d1 = 2.0 * u(rng), d2 = 2.0 * u(rng);
+    const sim::core::Vec2 gamma = K.solve(d1, d2);
+    sim::collision::applyImpulsePair(c.a, c.b, r1, gamma.x() * c.n);
+    sim::collision::applyImpulsePair(c.a, c.b, r2, gamma.y() * c.n);
+    CAPTURE(k);
+    CHECK(normalVelocity(c.a, c.b, r1, c.n) - v1 == doctest::Approx(d1).epsilon(1e-9).scale(1.0));
+    CHECK(normalVelocity(c.a, c.b, r2, c.n) - v2 == doctest::Approx(d2).epsilon(1e-9).scale(1.0));
+  }
+}
+
+TEST_CASE("two points solved together: a box landing flat on a floor bounces without turning") {
+  // a 1 × 1 box (m = 1, I = 1/6) falling flat at 2 m/s onto a static floor, contact at its two
+  // bottom corners: the block gives equal impulses, c_r = 0.5 makes both corners leave at 1 m/s
+  sim::core::Body box = body(1.0, 1.0 / 6.0, {0.0, 0.5}, {0.0, -2.0}, 0.0);
+  sim::core::Body floor = obstacle();
+  const sim::core::Vec2 n(0.0, 1.0), r1(-0.5, 0.0), r2(0.5, 0.0);
+  const sim::collision::NormalBlock K = sim::collision::normalBlock(
+      box, floor, r1, r2, n, sim::collision::inverseEffectiveMass(box, floor, r1, n),
+      sim::collision::inverseEffectiveMass(box, floor, r2, n));
+  // K = [[1 + 0.25·6, 1 − 0.25·6], [1 − 0.25·6, 1 + 0.25·6]] = [[2.5, −0.5], [−0.5, 2.5]]
+  CHECK(K.k11 == 2.5);
+  CHECK(K.k12 == -0.5);
+  CHECK(K.k22 == 2.5);
+  const sim::core::Vec2 gamma = K.solve(3.0, 3.0);  // −(1 + c_r) v_n⁻ at each corner
+  CHECK(gamma.x() == doctest::Approx(1.5));
+  CHECK(gamma.y() == doctest::Approx(1.5));
+  sim::collision::applyImpulsePair(box, floor, r1, gamma.x() * n);
+  sim::collision::applyImpulsePair(box, floor, r2, gamma.y() * n);
+  CHECK(box.v.y() == doctest::Approx(1.0));
+  CHECK(box.omega == doctest::Approx(0.0).scale(1.0));
+}

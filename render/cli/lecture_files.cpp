@@ -1,0 +1,40 @@
+#include "render/cli/lecture_files.h"
+
+#include <algorithm>
+#include <filesystem>
+
+#include "render/cli/commands.h"
+#include "render/cli/scene_options.h"
+
+namespace render::cli {
+namespace fs = std::filesystem;
+
+std::vector<std::string> lectureSceneFiles(const std::vector<std::string>& arguments) {
+  std::vector<std::string> files;
+  for (const std::string& a : arguments) {
+    std::error_code error;
+    if (fs::is_directory(a, error)) {
+      std::vector<std::string> found;
+      for (const fs::directory_entry& e : fs::directory_iterator(a, error))
+        if (e.path().extension() == ".yaml" && !e.is_directory()) found.push_back(e.path().string());
+      if (found.empty()) throw UsageError(a + ": no scene files (*.yaml) in this directory; give a directory of scenes");
+      std::sort(found.begin(), found.end());
+      files.insert(files.end(), found.begin(), found.end());
+    } else if (fs::exists(a, error)) {
+      files.push_back(a);
+    } else {
+      throw UsageError(a + ": no such file or directory; give scene files (*.yaml) or directories of them");
+    }
+  }
+  return files;
+}
+
+render::video::LoadVariant lectureLoader(const std::string& file) {
+  return [file](const std::string& variant) {
+    render::scene::Scene scene = readSceneFile(file, variant).scene;
+    if (!variant.empty() || scene.model.variantNames.empty()) (void)startWorld(scene.model, file);
+    return scene;
+  };
+}
+
+}  // namespace render::cli

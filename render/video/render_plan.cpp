@@ -1,0 +1,249 @@
+#include "render/video/render_plan.h"
+
+#include <algorithm>
+#include <filesystem>
+
+#include "render/frame/energy_panel.h"
+#include "render/frame/panels.h"
+#include "render/jobs/exit_status.h"
+#include "render/video/output_names.h"
+#include "sim/yaml/scene_error.h"
+
+namespace render::video {
+using namespace render::jobs;
+
+namespace {
+
+// the scene's variants, each read for itself, or the base scene itself when it has none
+std::vector<render::scene::Scene> variantsOf(render::scene::Scene base, const LoadVariant& load) {
+  if (base.model.variantNames.empty()) return {std::move(base)};
+  std::vector<render::scene::Scene> scenes;
+  for (const std::string& name : base.model.variantNames) scenes.push_back(load(name));
+  return scenes;
+}
+
+// <root>/<scene>, where the scene's outputs go
+std::string directoryOf(const std::string& root, const sim::scene::SceneDef& model) {
+  return (std::filesystem::path(root) / model.name).string();
+}
+
+// each variant at the size (and frame rate) asked for, surveyed from 0 to `until` (its duration when
+// negative): the one run of its world before anything is drawn
+RenderPlan surveyed(std::vector<render::scene::Scene> scenes, const std::optional<FrameSize>& size,
+                    const std::optional<double>& fps, double until) {
+  RenderPlan plan;
+  plan.scene = scenes.front().model.name;
+  for (render::scene::Scene& scene : scenes) {
+    if (size) scene.render.width = size->width, scene.render.height = size->height;
+    if (fps) scene.render.fps = *fps;
+    try {
+      RunSurvey survey = surveyRun(scene, until);
+      plan.variants.push_back({std::move(scene), std::move(survey)});
+    } catch (const sim::world::Diverged& d) {
+      throw VariantDiverged(d, scene.model, VariantDiverged::While::Planning);
+    }
+  }
+  return plan;
+}
+
+// the video of variant `i` over `duration` s of simulation, and its poster at the end
+VideoOutput videoOf(const RenderPlan& plan, size_t i, const std::string& root, double duration, VideoFormat format, bool frames) {
+  const PlannedVariant& v = plan.variants[i];
+  const render::scene::RenderDef& r = v.scene.render;
+  const std::string directory = directoryOf(root, v.scene.model);
+  const std::string base = directory + "/" + outputBase(v.scene.model);
+  // frame k at the simulation time of video time k / fps, for every k / fps < the video's length:
+  // the title card, then `duration` stretched by the slow-motion windows (exactly `duration` without)
+  TimeMap map = timeMapFor(r, v.survey.impactTimes, duration);
+  const long count = map.frameCount(r.fps);
+  return {.variant = i,
+          .directory = directory,
+          .path = base + "." + videoExtension(format),
+          .posterPath = base + ".png",
+          .framesPath = frames ? base + "-frames/" : "",
+          .format = format,
+          .width = r.width,
+          .height = r.height,
+          .fps = r.fps,
+          .duration = duration,
+          .posterStrobe = r.strobe,
+          .timeMap = std::move(map),
+          .frameCount = count,
+          .camera = cameraFor(v.scene, v.survey)};
+}
+
+// what the stills show: the times asked for, or each variant's impacts
+struct StillSpec {
+  std::vector<double> times;
+  bool impacts = false;
+  bool panels = false;
+  std::optional<int> strobe;
+  std::string root;
+  std::string file;  // named in messages
+};
+
+// shot by shot, each variant at the same times, each inside every variant's duration
+std::vector<std::vector<double>> atTimes(const RenderPlan& plan, const std::vector<double>& times) {
+  std::vector<std::vector<double>> instants;  // [shot][variant]
+  for (double t : times) {
+    for (const PlannedVariant& v : plan.variants)
+      if (t < 0.0 || t > v.scene.model.duration)
+        throw UsageError("--at: " + timeForName(t) + " s is outside the scene's duration [0, " +
+                         timeForName(v.scene.model.duration) + "]");
+    instants.push_back(std::vector<double>(plan.variants.size(), t));
+  }
+  return instants;
+}
+
+// shot i: each variant at its i-th impact, or at its last when it has fewer
+std::vector<std::vector<double>> atImpacts(const RenderPlan& plan, const std::string& file) {
+  size_t most = 0;
+  for (const PlannedVariant& v : plan.variants) {
+    const sim::scene::SceneDef& model = v.scene.model;
+    if (v.survey.impactTimes.empty())
+      throw UsageError("--impacts: " + file + (model.variant.empty() ? "" : " (variant " + model.variant + ")") +
+                       " has no impacts in its " + timeForName(model.duration) +
+                       " s; nothing collides there (use --at to choose times)");
+    most = std::max(most, v.survey.impactTimes.size());
+  }
+  std::vector<std::vector<double>> instants;
+  for (size_t i = 0; i < most; ++i) {
+    std::vector<double> shot;
+    for (const PlannedVariant& v : plan.variants) shot.push_back(v.survey.impactTimes[std::min(i, v.survey.impactTimes.size() - 1)]);
+    instants.push_back(shot);
+  }
+  return instants;
+}
+
+// one camera for all panels, so that the variants compare at the same scale: over every variant's
+// run, beside the widest energy panel among them
+Camera sharedCamera(const RenderPlan& plan, const std::vector<RunSurvey>& surveys) {
+  Bounds bounds;
+  size_t widest = 0;
+  double widestBand = -1.0;
+  for (size_t i = 0; i < plan.variants.size(); ++i) {
+    const render::scene::Scene& def = plan.variants[i].scene;
+    bounds.add(surveys[i].bounds);
+    const double band = EnergyPanel::bandPx(def, surveys[i], def.render.height);
+    if (band > widestBand) widest = i, widestBand = band;
+  }
+  return cameraFor(plan.variants[widest].scene, surveys[widest], bounds);
+}
+
+// "A: center", or just "A" for a variant named A; at an impact, its time too
+std::string panelTitle(size_t i, const sim::scene::SceneDef& model, bool impacts, double t) {
+  std::string title = panelLetter(i);
+  if (model.variant != title) title += ": " + model.variant;
+  if (impacts) title += "  (t = " + timeForName(t) + " s)";
+  return title;
+}
+
+// the stills of every variant of the plan, at the times or impacts of `spec`
+Stills stillsOf(const RenderPlan& plan, const StillSpec& spec) {
+  const render::scene::Scene& first = plan.variants.front().scene;
+  std::vector<RunSurvey> surveys;
+  for (const PlannedVariant& v : plan.variants) surveys.push_back(v.survey);
+  // side by side, the variants' arrows and energy bars are drawn at one scale too
+  if (spec.panels) {
+    std::vector<RunSurvey*> all;
+    for (RunSurvey& survey : surveys) all.push_back(&survey);
+    shareScales(all);
+  }
+  const int strobe = spec.strobe.value_or(first.render.strobe);
+  const std::vector<std::vector<double>> instants = spec.impacts ? atImpacts(plan, spec.file) : atTimes(plan, spec.times);
+  Stills s{.directory = directoryOf(spec.root, first.model),
+           .surveys = surveys,
+           .panels = spec.panels,
+           .strobe = strobe,
+           .width = first.render.width,
+           .height = first.render.height,
+           .camera = sharedCamera(plan, surveys),
+           .shots = {}};
+  for (size_t shot = 0; shot < instants.size(); ++shot) {
+    StillOutput out{.path = s.directory + "/", .instants = instants[shot], .titles = {}};
+    const std::string impact = spec.impacts ? "-impact" + std::to_string(shot + 1) : "";
+    const std::string at = "-t" + timeForName(instants[shot][0]);
+    if (spec.panels) {
+      out.path += panelsFileName(first.model.name, spec.impacts ? impact : at, strobe);
+      for (size_t i = 0; i < plan.variants.size(); ++i)
+        out.titles.push_back(panelTitle(i, plan.variants[i].scene.model, spec.impacts, instants[shot][i]));
+    } else {
+      out.path += outputBase(first.model) + impact + at + strobeSuffix(strobe) + ".png";
+    }
+    s.shots.push_back(std::move(out));
+  }
+  return s;
+}
+
+// the scene's `panels:` for a lecture: the default time moved to the shortest variant's duration, and
+// `impacts` refused at its line when a variant has none, before anything renders (times asked for are
+// checked against each variant's duration when the variant is read)
+render::scene::PanelsDef lecturePanels(const render::scene::Scene& base, const RenderPlan& plan, const std::string& file) {
+  render::scene::PanelsDef panels = base.render.panels;
+  const bool defaulted = panels.line == 0;
+  double shortest = base.model.duration;
+  for (const PlannedVariant& v : plan.variants) shortest = std::min(shortest, v.scene.model.duration);
+  if (defaulted && !panels.times.empty()) panels.times = {shortest};
+  if (panels.impacts)
+    for (const PlannedVariant& v : plan.variants)
+      if (v.survey.impactTimes.empty())
+        throw sim::yaml::SceneError(file, panels.line, panels.column,
+                                    "'panels: impacts' needs an impact in every variant, and variant '" + v.scene.model.variant +
+                                        "' has none; give panel times instead, e.g. [0, " + timeForName(v.scene.model.duration) + "]");
+  return panels;
+}
+
+}  // namespace
+
+std::vector<std::string> RenderPlan::paths() const {
+  std::vector<std::string> all;
+  for (const VideoOutput& v : videos) {
+    all.push_back(v.path);
+    all.push_back(v.posterPath);
+    if (!v.framesPath.empty()) all.push_back(v.framesPath);
+  }
+  if (stills)
+    for (const StillOutput& shot : stills->shots) all.push_back(shot.path);
+  return all;
+}
+
+RenderPlan planVideos(const LoadVariant& load, const VideoRequest& r) {
+  std::vector<render::scene::Scene> scenes =
+      r.allVariants ? variantsOf(load(""), load) : std::vector<render::scene::Scene>{load(r.variant)};
+  // each variant surveyed over its video's duration, which --duration sets for all
+  RenderPlan plan = surveyed(std::move(scenes), r.size, r.fps, r.duration.value_or(-1.0));
+  for (size_t i = 0; i < plan.variants.size(); ++i) {
+    const double duration = r.duration.value_or(plan.variants[i].scene.model.duration);
+    plan.videos.push_back(videoOf(plan, i, r.root, duration, r.format, r.frames));
+  }
+  return plan;
+}
+
+RenderPlan planStills(const LoadVariant& load, const StillRequest& r) {
+  std::vector<render::scene::Scene> scenes;
+  if (r.panels) {
+    const std::vector<std::string> names = load("").model.variantNames;
+    if (names.empty()) throw UsageError("--panels: " + r.file + " has no variants to put side by side");
+    for (const std::string& name : names) scenes.push_back(load(name));
+  } else {
+    scenes.push_back(load(r.variant));
+  }
+  RenderPlan plan = surveyed(std::move(scenes), r.size, std::nullopt, -1.0);
+  plan.stills = stillsOf(plan, {r.times, r.impacts, r.panels, r.strobe, r.root, r.file});
+  return plan;
+}
+
+RenderPlan planLecture(const LoadVariant& load, const LectureRequest& r) {
+  const render::scene::Scene base = load("");
+  // each variant surveyed once, over its duration: the video's and the panels' survey alike
+  RenderPlan plan = surveyed(variantsOf(base, load), r.size, r.fps, -1.0);
+  plan.scene = base.model.name;
+  for (size_t i = 0; i < plan.variants.size(); ++i)
+    plan.videos.push_back(videoOf(plan, i, r.root, plan.variants[i].scene.model.duration, VideoFormat::Mp4, false));
+  // then the poll panels, as `snapshot --panels` draws them
+  const render::scene::PanelsDef panels = lecturePanels(base, plan, r.file);
+  if (!panels.times.empty() || panels.impacts) plan.stills = stillsOf(plan, {panels.times, panels.impacts, true, std::nullopt, r.root, r.file});
+  return plan;
+}
+
+}  // namespace render::video

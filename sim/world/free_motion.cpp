@@ -1,0 +1,33 @@
+// The `none` method: bodies move freely and pass through each other. Its stage, the free motion
+// by the chosen integrator, is the first stage of the fixed-step methods too.
+#include "sim/world/methods.h"
+#include "sim/world/world.h"
+
+namespace sim::world {
+using namespace sim::core;
+using namespace sim::collision;
+
+namespace {
+
+class FreeMotion final : public Method {
+ public:
+  std::unique_ptr<Method> clone() const override { return std::make_unique<FreeMotion>(*this); }
+  bool move(World& world, const TimeStep& step) override {
+    moveFreely(world, step);
+    return false;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Method> makeFreeMotion() { return std::make_unique<FreeMotion>(); }
+
+void StepDynamics::rates(double, const States& y, Rates& out) const { world_.rates(midpoint_, y, out); }
+
+void moveFreely(World& world, const TimeStep& step) {
+  States y = world.states();
+  integrate(world.integrator, StepDynamics(world, step), step.start, step.h, y);
+  world.setStates(y);
+}
+
+}  // namespace sim::world

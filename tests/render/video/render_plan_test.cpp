@@ -1,0 +1,238 @@
+// The render plan as a pure function (render_plan.cpp): what `render`, `snapshot` and `lecture`
+// will write, and how, decided from the scenes and the request alone: the paths, the instants (--at
+// times, each variant's impacts, the panels' default), one camera for all panels, the time map with
+// a title card and slow motion, each variant surveyed once, and the errors with their messages.
+#include <doctest/doctest.h>
+
+#include <map>
+
+#include "render/jobs/exit_status.h"
+#include "render/video/output_names.h"
+#include "render/video/render_plan.h"
+#include "sim/yaml/scene_error.h"
+#include "support/drawn_scene.h"
+
+using render::video::FrameSize;
+using render::video::LectureRequest;
+using render::video::RenderPlan;
+using render::video::StillRequest;
+using render::video::VideoRequest;
+
+namespace {
+
+const std::string kPoll = std::string(RIGIDREEL_SOURCE_DIR) + "/scenes/poll_bar_impulse.yaml";          // center, end
+const std::string kThree = std::string(RIGIDREEL_SOURCE_DIR) + "/scenes/three_collisions_poll.yaml";  // A, B, C
+
+// a file's variants as the command line reads them, counting the reads
+struct Loader {
+  std::string file;
+  std::map<std::string, int> reads;
+  render::video::LoadVariant operator()() {
+    return [this](const std::string& variant) {
+      ++reads[variant];
+      return drawn_scene::loadFile(file, variant);
+    };
+  }
+};
+
+// a ball that hits a wall at t = 0.5, and a variant that runs half as long
+const std::string kLesson = drawn_scene::bounce("2",
+                                                "render: {title_card: 1, slow_motion: {factor: 4, window: 0.2}, size: [320, 180]}\n"
+                                                "variants:\n  long: {}\n  brief: {duration: 1}\n");
+
+render::video::LoadVariant lesson(const std::string& yaml = kLesson) {
+  return [yaml](const std::string& variant) { return drawn_scene::load(yaml, variant, "lesson.yaml"); };
+}
+
+std::string usageError(const std::function<void()>& plan) {
+  try {
+    plan();
+  } catch (const render::jobs::UsageError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+}  // namespace
+
+TEST_CASE("render: each variant's video and poster, named under <root>/<scene>/") {
+  Loader poll{kPoll, {}};
+  const RenderPlan plan = render::video::planVideos(poll(), {.root = "o", .allVariants = true});
+  CHECK(plan.paths() == std::vector<std::string>{"o/poll_bar_impulse/poll_bar_impulse-center.mp4",
+                                                 "o/poll_bar_impulse/poll_bar_impulse-center.png",
+                                                 "o/poll_bar_impulse/poll_bar_impulse-end.mp4",
+                                                 "o/poll_bar_impulse/poll_bar_impulse-end.png"});
+  // the base scene for the names of its variants, then each variant once
+  CHECK(poll.reads == std::map<std::string, int>{{"", 1}, {"center", 1}, {"end", 1}});
+
+  Loader one{kPoll, {}};
+  const RenderPlan webm = render::video::planVideos(
+      one(), {.variant = "end", .size = FrameSize{160, 90}, .fps = 5, .format = render::video::VideoFormat::Webm, .frames = true});
+  CHECK(webm.paths() == std::vector<std::string>{"out/poll_bar_impulse/poll_bar_impulse-end.webm",
+                                                 "out/poll_bar_impulse/poll_bar_impulse-end.png",
+                                                 "out/poll_bar_impulse/poll_bar_impulse-end-frames/"});
+  CHECK(one.reads == std::map<std::string, int>{{"end", 1}});
+  const render::video::VideoOutput& video = webm.videos.front();
+  CHECK(video.width == 160);
+  CHECK(video.height == 90);
+  CHECK(video.fps == 5.0);
+  CHECK(video.frameCount == 10);  // 2 s at 5 fps
+  CHECK(video.duration == 2.0);
+}
+
+TEST_CASE("render: the time map with the title card and slow motion around each variant's own impacts") {
+  const RenderPlan plan = render::video::planVideos(lesson(), {.allVariants = true, .fps = 10, .duration = {}});
+  REQUIRE(plan.videos.size() == 2);
+  for (const render::video::VideoOutput& video : plan.videos) {
+    const render::video::PlannedVariant& v = plan.variants[video.variant];
+    CAPTURE(v.scene.model.variant);
+    // the ball's surface meets the wall's at x = 0.5: one impact at t = 0.5, slowed 4 times over 0.2 s
+    REQUIRE(v.survey.impactTimes.size() == 1);
+    CHECK(v.survey.impactTimes[0] == doctest::Approx(0.5));
+    CHECK(video.timeMap.windows().size() == 1);
+    CHECK(video.timeMap.videoLength() == doctest::Approx(1.0 + v.scene.model.duration + 3 * 0.2));
+    CHECK(video.frameCount == video.timeMap.frameCount(10.0));
+    CHECK(video.timeMap.inTitleCard(0.5));
+    CHECK(video.timeMap.simTime(1.25) == doctest::Approx(0.25));
+    CHECK(video.timeMap.factorAt(0.5) == 4.0);
+    // the poster at the end of the run, in simulation time
+    CHECK(video.duration == v.scene.model.duration);
+  }
+  // --duration sets every video's run, and the survey's
+  const RenderPlan shorter = render::video::planVideos(lesson(), {.variant = "long", .duration = 0.3});
+  CHECK(shorter.videos.front().duration == 0.3);
+  CHECK(shorter.variants.front().survey.impactTimes.empty());
+  CHECK(shorter.videos.front().timeMap.videoLength() == doctest::Approx(1.3));
+}
+
+TEST_CASE("render: the camera is fitted over the variant's one survey, the poster's too") {
+  const RenderPlan plan = render::video::planVideos(lesson(), {.variant = "brief"});
+  const render::video::PlannedVariant& v = plan.variants.front();
+  const render::frame::RunSurvey again = render::frame::surveyRun(v.scene);
+  CHECK(v.survey.bounds.min == again.bounds.min);
+  CHECK(v.survey.bounds.max == again.bounds.max);
+  CHECK(v.survey.impactTimes == again.impactTimes);
+  const render::draw::Camera camera = render::frame::cameraFor(v.scene, again);
+  CHECK(plan.videos.front().camera.center() == camera.center());
+  CHECK(plan.videos.front().camera.worldHeight() == camera.worldHeight());
+}
+
+TEST_CASE("snapshot: the same --at times for every variant, named by time and strobe") {
+  Loader poll{kPoll, {}};
+  const RenderPlan plan = render::video::planStills(
+      poll(), {.file = kPoll, .variant = "end", .times = {0.5, 2}, .strobe = 4, .size = FrameSize{160, 90}});
+  REQUIRE(plan.stills);
+  CHECK(plan.paths() == std::vector<std::string>{"out/poll_bar_impulse/poll_bar_impulse-end-t0.5-strobe4.png",
+                                                 "out/poll_bar_impulse/poll_bar_impulse-end-t2-strobe4.png"});
+  CHECK(plan.stills->shots[0].instants == std::vector<double>{0.5});
+  CHECK(plan.stills->shots[0].titles.empty());
+  CHECK(plan.stills->strobe == 4);
+  CHECK(plan.stills->width == 160);
+  CHECK(plan.videos.empty());
+
+  const RenderPlan panels = render::video::planStills(poll(), {.file = kPoll, .times = {1.5}, .panels = true});
+  CHECK(panels.paths() == std::vector<std::string>{"out/poll_bar_impulse/poll_bar_impulse-panels-t1.5.png"});
+  CHECK(panels.stills->shots[0].instants == std::vector<double>{1.5, 1.5});
+  CHECK(panels.stills->shots[0].titles == std::vector<std::string>{"A: center", "B: end"});
+}
+
+TEST_CASE("snapshot --impacts: shot i is each variant at its own i-th impact, or its last") {
+  const RenderPlan plan = render::video::planStills(Loader{kThree, {}}(), {.file = kThree, .impacts = true, .panels = true});
+  REQUIRE(plan.stills);
+  const std::vector<render::video::StillOutput>& shots = plan.stills->shots;
+  size_t most = 0;
+  for (const render::video::PlannedVariant& v : plan.variants) most = std::max(most, v.survey.impactTimes.size());
+  REQUIRE(shots.size() == most);
+  for (size_t shot = 0; shot < shots.size(); ++shot) {
+    CHECK(shots[shot].path == "out/three_collisions_poll/three_collisions_poll-panels-impact" + std::to_string(shot + 1) + ".png");
+    for (size_t i = 0; i < plan.variants.size(); ++i) {
+      const std::vector<double>& impacts = plan.variants[i].survey.impactTimes;
+      CHECK(shots[shot].instants[i] == impacts[std::min(shot, impacts.size() - 1)]);
+    }
+  }
+  // "A" needs no name after its letter; the time of the impact follows
+  CHECK(shots[0].titles[0] == "A  (t = " + render::video::timeForName(shots[0].instants[0]) + " s)");
+
+  const RenderPlan one = render::video::planStills(Loader{kThree, {}}(), {.file = kThree, .variant = "B", .impacts = true});
+  const double t = one.variants.front().survey.impactTimes.front();
+  CHECK(one.paths().front() == "out/three_collisions_poll/three_collisions_poll-B-impact1-t" + render::video::timeForName(t) + ".png");
+}
+
+TEST_CASE("panels share one camera, fitted over every variant's run, and one scale for arrows and bars") {
+  const RenderPlan plan = render::video::planStills(Loader{kThree, {}}(), {.file = kThree, .times = {2}, .panels = true});
+  const render::video::Stills& stills = *plan.stills;
+  const render::draw::Bounds view = stills.camera.view();
+  double fastest = 0.0;
+  for (const render::video::PlannedVariant& v : plan.variants) {
+    CAPTURE(v.scene.model.variant);
+    CHECK(view.min.x() <= v.survey.bounds.min.x());
+    CHECK(view.min.y() <= v.survey.bounds.min.y());
+    CHECK(view.max.x() >= v.survey.bounds.max.x());
+    CHECK(view.max.y() >= v.survey.bounds.max.y());
+    fastest = std::max(fastest, v.survey.maxSpeed);
+  }
+  for (const render::frame::RunSurvey& s : stills.surveys) CHECK(s.maxSpeed == fastest);
+  // a variant's own still keeps its own scales
+  const RenderPlan alone = render::video::planStills(Loader{kThree, {}}(), {.file = kThree, .variant = "B", .times = {2}});
+  CHECK(alone.stills->surveys.front().maxSpeed == alone.variants.front().survey.maxSpeed);
+}
+
+TEST_CASE("snapshot errors, with the messages the command has always given") {
+  CHECK(usageError([] { render::video::planStills(Loader{kPoll, {}}(), {.file = kPoll, .variant = "end", .times = {0.5, 7}}); }) ==
+        "--at: 7 s is outside the scene's duration [0, 2]");
+  CHECK(usageError([] { render::video::planStills(Loader{kPoll, {}}(), {.file = kPoll, .times = {-1}, .panels = true}); }) ==
+        "--at: -1 s is outside the scene's duration [0, 2]");
+  CHECK(usageError([] { render::video::planStills(Loader{kPoll, {}}(), {.file = kPoll, .variant = "end", .impacts = true}); }) ==
+        "--impacts: " + kPoll + " (variant end) has no impacts in its 2 s; nothing collides there (use --at to choose times)");
+  // a time after the brief variant's end: every variant must reach it
+  CHECK(usageError([] { render::video::planStills(lesson(), {.file = "lesson.yaml", .times = {1.5}, .panels = true}); }) ==
+        "--at: 1.5 s is outside the scene's duration [0, 1]");
+  const char* const single = "name: single\nbodies:\n  - {name: box, shape: {box: [1, 1]}}\n";
+  CHECK(usageError([&] {
+          render::video::planStills([&](const std::string& v) { return drawn_scene::load(single, v, "single.yaml"); },
+                                    {.file = "single.yaml", .times = {0.5}, .panels = true});
+        }) == "--panels: single.yaml has no variants to put side by side");
+}
+
+TEST_CASE("lecture: every variant's video and poster, then the panels, each variant read and surveyed once") {
+  Loader three{kThree, {}};
+  const RenderPlan plan = render::video::planLecture(three(), {.root = "pack", .file = kThree, .size = FrameSize{160, 90}, .fps = 10});
+  CHECK(three.reads == std::map<std::string, int>{{"", 1}, {"A", 1}, {"B", 1}, {"C", 1}});
+  CHECK(plan.scene == "three_collisions_poll");
+  const std::vector<std::string> paths = plan.paths();
+  REQUIRE(paths.size() == 7);  // three videos and posters, and the default panel at the duration
+  CHECK(paths[0] == "pack/three_collisions_poll/three_collisions_poll-A.mp4");
+  CHECK(paths[5] == "pack/three_collisions_poll/three_collisions_poll-C.png");
+  CHECK(paths[6] == "pack/three_collisions_poll/three_collisions_poll-panels-t2.png");
+  // the panels are drawn from the videos' surveys (at shared scales), not from runs of their own
+  for (size_t i = 0; i < plan.variants.size(); ++i) {
+    CHECK(plan.stills->surveys[i].impactTimes == plan.variants[i].survey.impactTimes);
+    CHECK(plan.stills->surveys[i].bounds.max == plan.variants[i].survey.bounds.max);
+  }
+  CHECK(plan.videos.front().fps == 10.0);
+  CHECK(plan.stills->width == 160);
+}
+
+TEST_CASE("lecture panels: the default at the shortest variant's duration; impacts where every variant has one") {
+  const RenderPlan plan = render::video::planLecture(lesson(), {.file = "lesson.yaml"});
+  CHECK(plan.paths().back() == "out/lecture/lesson/lesson-panels-t1.png");
+  CHECK(plan.stills->shots.front().instants == std::vector<double>{1, 1});
+
+  // the base scene's panels: impacts, each variant with its impact at 0.5 s
+  const RenderPlan impacts = render::video::planLecture(
+      lesson(drawn_scene::bounce("2", "render: {panels: impacts}\nvariants:\n  long: {}\n  brief: {duration: 1}\n")),
+      {.file = "lesson.yaml"});
+  CHECK(impacts.paths().back() == "out/lecture/lesson/lesson-panels-impact1.png");
+
+  // a variant that ends before its impact has none: refused at the panels line, before rendering
+  try {
+    render::video::planLecture(
+        lesson(drawn_scene::bounce("2", "render: {panels: impacts}\nvariants:\n  long: {}\n  brief: {duration: 0.3}\n")),
+        {.file = "lesson.yaml"});
+    FAIL("no error");
+  } catch (const sim::yaml::SceneError& e) {
+    CHECK(e.line == 8);
+    CHECK(e.message ==
+          "'panels: impacts' needs an impact in every variant, and variant 'brief' has none; give panel times instead, e.g. [0, 0.3]");
+  }
+}
