@@ -7,10 +7,13 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "render/jobs/stale_parts.h"
+
 namespace render::jobs {
 
 AtomicFile::AtomicFile(std::string path)
-    : path_(std::move(path)), temporary_(path_ + ".part-" + std::to_string(::getpid())) {
+    : path_(std::move(path)), temporary_(partName(path_)) {
+  removeStaleParts(path_);
   out_.open(temporary_, std::ios::binary | std::ios::trunc);
   if (!out_) throw std::runtime_error(path_ + ": cannot write here (" + std::strerror(errno) + "); choose a writable path");
 }

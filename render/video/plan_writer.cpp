@@ -12,6 +12,7 @@
 #include "render/frame/scene_run.h"
 #include "render/jobs/exit_status.h"
 #include "render/jobs/progress.h"
+#include "render/jobs/stale_parts.h"
 #include "render/scene/scene_style.h"
 #include "render/video/output_names.h"
 #include "render/video/recorder.h"
@@ -60,6 +61,7 @@ class VideoSink : public FrameSink {
 class StagedDirectory {
  public:
   explicit StagedDirectory(const fs::path& final) : final_(final), staging_(final.parent_path() / stagingName(final)) {
+    removeStaleParts(final_.string());
     fs::remove_all(staging_);
     fs::create_directories(staging_);
   }
