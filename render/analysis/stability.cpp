@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "sim/scene/scene_build.h"
+#include "sim/scene/step_limit.h"
 
 namespace render::analysis {
 
@@ -98,48 +99,73 @@ bool holdsAt(const Study& study, double value, RunMetrics& metrics) {
   return true;
 }
 
+namespace {
+
+// thrown when the next run would take the search past its budget of steps
+struct BudgetSpent {};
+
+}  // namespace
+
 StabilityResult findBoundary(const Study& def) {
   StabilityResult r;
   const StabilityDef& s = def.stability;
   const bool integer = s.parameter == Parameter::StackHeight;
   const double limit = s.to > 0.0 ? s.to : (integer ? 1000.0 : 1e12);
+  const double phases = s.parameter == Parameter::Speed ? 8.0 : 1.0;
   RunMetrics m;
   double good = startValue(def), bad = 0.0;
-
-  // a value that holds: halve until one does
-  for (int k = 0; !holdsAt(def, good, m); ++k) {
-    bad = good, r.failing = m;
-    if (k == 40 || (integer && good <= 1.0)) {
-      r.failsEverywhere = true;
-      r.firstFailing = good;
-      return r;
-    }
-    good = integer ? std::floor(good / 2.0) : good / 2.0;
-  }
-  // a value that fails: double until one does (or the limit holds too)
-  if (bad == 0.0) {
-    double next = good;
-    for (int k = 0;; ++k) {
-      next = std::min(integer ? good + 1.0 : 2.0 * good, limit);
-      if (!holdsAt(def, next, m)) {
-        bad = next, r.failing = m;
-        break;
-      }
-      good = next;
-      if (good >= limit || k == 60) {
-        r.holdsToLimit = true;
-        r.largestStable = good;
+  bool held = false;
+  // every run counts against the scene's max_steps: a scene that fails at every dt would otherwise
+  // halve dt 40 times, each run twice as long as the one before
+  auto holds = [&](double value) {
+    const sim::scene::SceneDef at = withParameter(def, value).model;
+    const double steps = phases * sim::scene::stepCount(at, stabilityDuration(at));
+    if (r.steps + steps > def.model.maxSteps) throw BudgetSpent{};
+    r.steps += steps;
+    return holdsAt(def, value, m);
+  };
+  try {
+    // a value that holds: halve until one does
+    for (int k = 0; !holds(good); ++k) {
+      bad = good, r.failing = m;
+      if (k == 40 || (integer && good <= 1.0)) {
+        r.failsEverywhere = true;
+        r.firstFailing = good;
         return r;
       }
+      good = integer ? std::floor(good / 2.0) : good / 2.0;
     }
+    held = true;
+    // a value that fails: double until one does (or the limit holds too)
+    if (bad == 0.0) {
+      double next = good;
+      for (int k = 0;; ++k) {
+        next = std::min(integer ? good + 1.0 : 2.0 * good, limit);
+        if (!holds(next)) {
+          bad = next, r.failing = m;
+          break;
+        }
+        good = next;
+        if (good >= limit || k == 60) {
+          r.holdsToLimit = true;
+          r.largestStable = good;
+          return r;
+        }
+      }
+    }
+    // bisect the bracket
+    while (integer ? bad - good > 1.0 : (bad - good) > 1e-3 * good) {
+      const double mid = integer ? std::floor(0.5 * (good + bad)) : 0.5 * (good + bad);
+      if (holds(mid)) good = mid;
+      else bad = mid, r.failing = m;
+    }
+  } catch (const BudgetSpent&) {
+    // what is known so far: the last value that held and the first that failed
+    r.budgetSpent = true;
+    r.failsEverywhere = !held && bad > 0.0;
+    r.holdsToLimit = held && bad == 0.0;
   }
-  // bisect the bracket
-  while (integer ? bad - good > 1.0 : (bad - good) > 1e-3 * good) {
-    const double mid = integer ? std::floor(0.5 * (good + bad)) : 0.5 * (good + bad);
-    if (holdsAt(def, mid, m)) good = mid;
-    else bad = mid, r.failing = m;
-  }
-  r.largestStable = good;
+  r.largestStable = held ? good : 0.0;
   r.firstFailing = bad;
   return r;
 }
@@ -149,8 +175,14 @@ std::string describeFailure(const Study& study, const StabilityResult& r) {
   const sim::scene::SceneDef& def = study.model;
   o << sim::core::integratorName(def.integrator) << " + " << sim::world::collisionMethodName(def.collisions) << ": ";
   const std::string_view p = kParameterNames.name(study.stability.parameter);
-  if (r.holdsToLimit) {
-    o << "holds up to " << p << " = " << r.largestStable << " (the search's limit)";
+  std::ostringstream budget;
+  if (r.budgetSpent)
+    budget << "; the search stopped early, after " << r.steps << " steps, as the next run would pass the scene's "
+           << "max_steps (" << def.maxSteps << "); raise it with 'sim: {max_steps: N}' to search further";
+  if (r.holdsToLimit || (r.budgetSpent && r.firstFailing == 0.0)) {
+    if (r.largestStable > 0.0) o << "holds up to " << p << " = " << r.largestStable;
+    else o << "no run fits in the budget";
+    o << (r.budgetSpent ? budget.str() : " (the search's limit)");
     return o.str();
   }
   const RunMetrics& m = r.failing;
@@ -170,6 +202,8 @@ std::string describeFailure(const Study& study, const StabilityResult& r) {
   o << " at " << p << " = " << r.firstFailing;
   if (r.failsEverywhere) o << " (fails at every value tried)";
   else o << "; holds at " << r.largestStable;
+  o << budget.str();
+  return o.str();
   return o.str();
 }
 

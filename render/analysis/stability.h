@@ -16,6 +16,8 @@ struct StabilityResult {
   RunMetrics failing;     // the metrics of the run at firstFailing
   bool failsEverywhere = false;
   bool holdsToLimit = false;
+  double steps = 0.0;        // the steps of every run of the search together
+  bool budgetSpent = false;  // stopped early: the next run would have passed the scene's max_steps
 };
 
 // a stability run lasts the scene's duration or this many steps, whichever is longer, so that a
@@ -30,7 +32,8 @@ Study withParameter(const Study& study, double value, double phase = 0.0);
 // does the scene hold at `value`? (for `speed`, at every one of eight phases of the step)
 bool holdsAt(const Study& study, double value, RunMetrics& metrics);
 
-// the boundary, by growing and halving to a bracket and then bisecting to 0.1 % of the value
+// the boundary, by growing and halving to a bracket and then bisecting to 0.1 % of the value, in at
+// most the scene's max_steps steps over all its runs
 StabilityResult findBoundary(const Study& study);
 
 // "explicit_euler: energy +37 % at dt = 0.021"

@@ -4,11 +4,11 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <sstream>
 #include <unordered_map>
 #include <unordered_set>
 #include <utility>
 
+#include "sim/yaml/path_name.h"
 #include "sim/yaml/yaml_reader.h"
 
 namespace sim::yaml {
@@ -129,6 +129,9 @@ void mergeVariant(const Reader& r, SceneSource& s, size_t fileBytes) {
     for (const auto& kv : variants) {
       if (!kv.second.IsMap() && !kv.second.IsNull())
         r.fail(kv.second, "variant '" + kv.first.Scalar() + "' must be a map of changes, got " + describe(kv.second));
+      if (const std::string fault = pathNameFault(kv.first.Scalar()); !fault.empty())
+        r.fail(kv.first, "variant name '" + kv.first.Scalar() + "' names output files but " + fault +
+                             "; use letters, digits, '-' or '_'");
       s.variantNames.push_back(kv.first.Scalar());
     }
   }
@@ -176,10 +179,17 @@ SceneSource readSceneSource(const std::string& path, const std::string& variant)
     throw SceneError(path, 0, 0, "is a directory, not a scene file; give the path of a .yaml file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SceneError(path, 0, 0, "cannot open the scene file (does it exist and is it readable?)");
-  std::ostringstream text;
-  text << in.rdbuf();
+  // read in pieces up to the limit, not to the end: /dev/zero and pipes have no end
+  std::string text;
+  char piece[65536];
+  while (in.read(piece, sizeof piece) || in.gcount() > 0) {
+    text.append(piece, static_cast<size_t>(in.gcount()));
+    if (text.size() > kMaxSceneBytes)
+      throw SceneError(path, 0, 0, "is larger than the limit of " + std::to_string(kMaxSceneBytes >> 20) +
+                                       " MiB for a scene file; is it a scene? (a scene of 100,000 bodies takes about 5 MiB)");
+  }
   if (in.bad()) throw SceneError(path, 0, 0, "cannot read the scene file");
-  return sceneSourceText(text.str(), path, variant);
+  return sceneSourceText(text, path, variant);
 }
 
 }  // namespace sim::yaml

@@ -12,6 +12,10 @@
 
 namespace sim::yaml {
 
+// the largest scene file read, bytes: yaml-cpp holds about 50 bytes of memory per byte of a file
+// (issue 13: 63 MB of bodies reached 3.6 GB), so this keeps a load under about 1 GB
+inline constexpr size_t kMaxSceneBytes = size_t{16} << 20;
+
 struct SceneSource {
   std::string file;                       // as given: it names the file in messages
   std::string stem;                       // the file name without .yaml: the default scene name

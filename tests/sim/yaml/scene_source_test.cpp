@@ -119,3 +119,13 @@ TEST_CASE("a variant keeps the scene's order of keys and bodies, and appends wha
   CHECK(s.root["bodies"][0]["mass"].as<double>() == 2.0);
   CHECK(s.root["bodies"][1]["name"].Scalar() == "c");
 }
+
+TEST_CASE("a file without end or larger than the limit is refused after reading at most the limit") {
+  try {
+    (void)sim::yaml::readSceneSource("/dev/zero");
+    FAIL_CHECK("/dev/zero loaded");
+  } catch (const sim::yaml::SceneError& e) {
+    CHECK(std::string(e.what()).find("/dev/zero") == 0);
+    CHECK(e.message.find("larger than the limit of 16 MiB") != std::string::npos);
+  }
+}
