@@ -2,8 +2,11 @@
 BUILD    ?= build
 JOBS     ?= $(shell nproc 2>/dev/null || echo 2)
 DEMO     ?= scenes/poll_bar_impulse.yaml
+# the last line is for the tests: the page in a real browser, HTML checked by tidy, the GNU Parallel
+# recipe, and the scripts' JSON checks
 PACKAGES := g++ cmake make pkg-config libeigen3-dev libyaml-cpp-dev doctest-dev libcli11-dev \
-            libosmesa6-dev libpng-dev libfreetype-dev fonts-dejavu-core ffmpeg gnuplot-nox
+            libosmesa6-dev libpng-dev libfreetype-dev fonts-dejavu-core ffmpeg gnuplot-nox \
+            chromium tidy parallel python3
 SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 .PHONY: all deps build demo lecture test bench clean
@@ -46,9 +49,11 @@ bench: build
 clean:
 	rm -rf $(BUILD)
 
-# regenerate tests/golden/*.png on purpose, after a deliberate change to how frames look (see
-# tests/golden/README.md); review the new images before committing them
+# regenerate tests/golden/*.png on purpose, after a deliberate change to how frames, charts or the
+# lecture page look (see tests/golden/README.md); review the new images before committing them
 .PHONY: golden
 golden: build
 	RIGIDREEL_UPDATE_GOLDEN=1 ./$(BUILD)/tests/golden_test
 	RIGIDREEL_UPDATE_GOLDEN=1 ./$(BUILD)/tests/lecture_golden_test
+	RIGIDREEL_UPDATE_GOLDEN=1 ./$(BUILD)/tests/chart_test
+	RIGIDREEL_UPDATE_GOLDEN=1 ctest --test-dir $(BUILD) -R '^(lecture_parallel|page_browser)$$' --output-on-failure

@@ -12,14 +12,19 @@ namespace render::analysis {
 struct ChartSeries {
   std::string title;
   std::vector<std::pair<double, double>> points;
+  // bars only: each value is a lower bound (a search that stopped at its limit, not at a failure):
+  // drawn hatched and labeled "≥ value"
+  bool lowerBounds = false;
 };
 
 struct Chart {
   std::string title, xLabel, yLabel;
   bool logX = false, logY = false;
   bool bars = false;  // one bar per point (x is the bar's index) instead of lines
-  std::vector<std::string> barLabels;
+  std::vector<std::string> barLabels;  // a tick label per bar; '\n' breaks a line
+  bool barValues = false;              // each bar labeled with its value, 3 significant digits
   std::vector<ChartSeries> series;
+  int width = 1280, height = 800;      // pixels
 };
 
 // the gnuplot script that draws `chart` into `pngPath`

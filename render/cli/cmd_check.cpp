@@ -47,9 +47,7 @@ std::string formatValues(const std::vector<double>& v) {
 
 // say where the event method found impacts piling up and made the contact resting
 void reportResting(const sim::scene::SceneDef& def, const sim::world::World& w) {
-  for (const sim::world::RestingRecord& r : w.resting)
-    std::cout << "  resting: '" << def.bodies[r.a].name << "' and '" << def.bodies[r.b].name
-              << "' came to rest at t = " << formatNumber(r.t) << " (impacts piled up; the contact now rests)\n";
+  for (const sim::world::RestingRecord& r : w.resting) std::cout << "  resting: " << describeResting(def, r) << '\n';
 }
 
 // one scene, one variant ("" for the base); returns false when an expect fails

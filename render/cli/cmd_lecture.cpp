@@ -3,7 +3,9 @@
 // runs as a child process of this same program (`rigidreel lecture SCENE -j 1 ...`, so that one
 // job is one command line, which GNU Parallel or a Slurm array can run as well), at most -j at a
 // time, its output captured and reported when it ends. Every scene's render plan (render_plan.h)
-// is made before anything renders: --list prints its paths, a job writes them.
+// is made before anything renders: --list prints its paths, a job writes them. Each job leaves its
+// scene's record for the page; the page, DIR/index.html, is rebuilt from the records the folder
+// holds (lecture_page.h).
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -14,10 +16,12 @@
 
 #include "render/cli/commands.h"
 #include "render/cli/lecture_files.h"
+#include "render/cli/lecture_page.h"
 #include "render/cli/lecture_summary.h"
 #include "render/cli/output.h"
 #include "render/jobs/interrupt.h"
 #include "render/jobs/job_runner.h"
+#include "render/page/page.h"
 #include "render/video/output_names.h"
 #include "render/video/plan_writer.h"
 
@@ -37,6 +41,7 @@ struct LectureCommand {
   std::optional<double> fps;
   bool quiet = false;
   bool list = false;
+  std::string page;  // --page DIR: only rebuild DIR's page
 };
 
 // a scene of the pack, checked before anything renders: its plan, or the divergence of a simulation
@@ -44,6 +49,7 @@ struct LectureCommand {
 struct PackScene {
   std::string file;
   std::string name;
+  render::scene::Scene base;  // without a variant: its title, description and `panels:`, for the page
   std::optional<RenderPlan> plan;
   std::exception_ptr diverged;
 };
@@ -80,25 +86,30 @@ std::vector<std::string> jobCommand(const LectureCommand& o, const std::string& 
 // throws sim::yaml::SceneError
 PackScene planScene(LectureRequest request, const std::string& file) {
   request.file = file;
+  const LoadVariant load = lectureLoader(file);
+  render::scene::Scene base = load("");
   try {
-    RenderPlan plan = planLecture(lectureLoader(file), request);
-    return {file, plan.scene, std::move(plan), nullptr};
+    RenderPlan plan = planLecture(load, request);
+    return {file, plan.scene, std::move(base), std::move(plan), nullptr};
   } catch (const VariantDiverged& d) {
-    return {file, d.model.name, std::nullopt, std::current_exception()};
+    return {file, d.model.name, std::move(base), std::nullopt, std::current_exception()};
   }
 }
 
 // one scene in this process, as `render --all-variants` and `snapshot --panels` would write it,
 // quietly; its failure is a result, not an exception, so that the table follows
-SceneResult runHere(const PackScene& scene) {
+SceneResult runHere(const PackScene& scene, const std::string& root) {
   SceneResult r{scene.name, scene.file, false, {}, 0.0, {}};
   const auto start = Clock::now();
   try {
     if (scene.diverged) std::rethrow_exception(scene.diverged);
-    writePlan(*scene.plan, true, [&](const std::string& path) {
+    const auto wrote = [&](const std::string& path) {
       std::cout << "wrote " << path << std::endl;
       r.outputs.push_back(path);
-    });
+    };
+    writePlan(*scene.plan, true, wrote);
+    // the record last: the page shows a scene only once every file it names is there
+    writeLectureRecord(*scene.plan, scene.base, scene.file, root, since(start), wrote);
     r.ok = true;
   } catch (const VariantDiverged& d) {
     if (d.when == VariantDiverged::While::Stills)
@@ -119,6 +130,13 @@ SceneResult runHere(const PackScene& scene) {
 
 int lecture(const LectureCommand& o) {
   const auto start = Clock::now();
+  if (!o.page.empty()) {
+    if (!o.paths.empty()) throw UsageError("--page rebuilds the page of a pack already rendered; leave out the scenes");
+    const size_t scenes = render::page::writePage(o.page);
+    std::cout << "wrote " << lecturePagePath(o.page) << " (" << scenes << (scenes == 1 ? " scene" : " scenes") << ")\n";
+    return kExitOk;
+  }
+  if (o.paths.empty()) throw UsageError("give scene files or directories of them (or --page DIR to rebuild a pack's page)");
   LectureRequest request{.root = o.output, .file = {}, .size = {}, .fps = o.fps};
   if (!o.size.empty()) request.size = parseSize(o.size);
   if (o.fps) checkFps(*o.fps);
@@ -137,8 +155,11 @@ int lecture(const LectureCommand& o) {
   if (o.list) {
     for (const PackScene& scene : scenes)
       if (scene.diverged) std::rethrow_exception(scene.diverged);
-    for (const PackScene& scene : scenes)
+    for (const PackScene& scene : scenes) {
       for (const std::string& path : scene.plan->paths()) std::cout << path << '\n';
+      std::cout << lectureRecordPath(scene.name, o.output) << '\n';
+    }
+    std::cout << lecturePagePath(o.output) << '\n';
     return kExitOk;
   }
   std::error_code error;
@@ -148,7 +169,7 @@ int lecture(const LectureCommand& o) {
   std::vector<SceneResult> results;
   size_t parallel = 1;
   if (scenes.size() == 1) {
-    results.push_back(runHere(scenes.front()));
+    results.push_back(runHere(scenes.front(), o.output));
   } else {
     parallel = std::min(o.jobs, scenes.size());
     std::vector<std::vector<std::string>> commands;
@@ -167,10 +188,13 @@ int lecture(const LectureCommand& o) {
         std::cerr << counter << r.scene << " FAILED (" << describeStatus(job.status) << "):\n" << indented(job.errors) << std::flush;
     });
   }
-  printLectureSummary(results, since(start), parallel, scenes.size() == 1, std::cout, std::cerr);
+  // the page from every record in the folder, this run's and any other's (after a single scene, it
+  // is this job's own last step, as under GNU Parallel or Slurm)
+  const bool page = rebuildLecturePage(o.output);
+  printLectureSummary(results, since(start), parallel, scenes.size() == 1, page, std::cout, std::cerr);
   for (const SceneResult& r : results)
     if (!r.ok) return kExitFailure;
-  return kExitOk;
+  return page ? kExitOk : kExitFailure;
 }
 
 }  // namespace
@@ -179,13 +203,14 @@ void addLectureCommand(CLI::App& app, int& exitCode) {
   auto o = std::make_shared<LectureCommand>();
   CLI::App* cmd = app.add_subcommand(
       "lecture", "a pack of scenes: every variant's video and poster and the poll panels, one job per scene");
-  cmd->add_option("scenes", o->paths, "scene files (YAML) and directories of them (every *.yaml)")->required();
+  cmd->add_option("scenes", o->paths, "scene files (YAML) and directories of them (every *.yaml)");
   cmd->add_option("-o,--output", o->output, "the output directory (default: out/lecture)");
   cmd->add_option("-j,--jobs", o->jobs, "scenes rendered at a time (default: the number of cores)");
   cmd->add_option("--size", o->size, "frame size WIDTHxHEIGHT in pixels, even (default: each scene's)");
   cmd->add_option("--fps", o->fps, "frames per second (default: each scene's)");
   cmd->add_flag("--quiet", o->quiet, "no line per scene as it ends (the summary and failures stay)");
   cmd->add_flag("--list", o->list, "print the paths the pack would write, one a line, and render nothing");
+  cmd->add_option("--page", o->page, "only rebuild DIR/index.html from the scenes DIR holds (after jobs run one by one)");
   cmd->callback([o, &exitCode] { exitCode = runInterruptible([&] { return lecture(*o); }); });
 }
 

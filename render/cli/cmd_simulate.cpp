@@ -108,7 +108,7 @@ void printJson(const sim::scene::SceneDef& def, const sim::world::World& w) {
   // contacts the event method turned into resting contact (impacts piling up in finite time)
   j.key("resting").beginArray();
   for (const sim::world::RestingRecord& r : w.resting)
-    j.beginObject().field("t", r.t).field("a", name(r.a)).field("b", name(r.b)).endObject();
+    j.beginObject().field("t", r.t).field("a", name(r.a)).field("b", name(r.b)).field("moving", r.moving).endObject();
   j.endArray();
   j.endObject();
   std::cout << '\n';
@@ -134,8 +134,7 @@ void printText(const sim::scene::SceneDef& def, const sim::world::World& w) {
             << e.total() << "\nmomentum: (" << p.x() << ", " << p.y() << "), angular momentum about the origin: "
             << sim::world::angularMomentum(w) << '\n';
   std::cout << "collisions: " << describeCollisionMethod(w) << "; " << w.impacts.size() << " impulses applied";
-  for (const sim::world::RestingRecord& r : w.resting)
-    std::cout << "; '" << def.bodies[r.a].name << "' and '" << def.bodies[r.b].name << "' came to rest at t = " << r.t;
+  for (const sim::world::RestingRecord& r : w.resting) std::cout << "; " << describeResting(def, r);
   std::cout << '\n';
 }
 

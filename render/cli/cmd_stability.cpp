@@ -1,5 +1,6 @@
 // `rigidreel stability`: for each method, the largest step (or speed, mass ratio, stack height, as
 // the scene's `stability:` block declares) at which the scene still holds, and how it fails beyond.
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 
@@ -21,6 +22,24 @@ struct StabilityOptions : MethodLists {
   std::string scene, variant, outDir = "out";
 };
 
+// the collision methods to compare without --collisions: those the scene's variants choose, so that
+// a scene whose variants are the methods compares them all; without variants (or with --variant) the
+// scene's own, and for a scene whose bodies can meet every method that makes them collide (`auto`
+// alone where no two bodies can meet: the others would repeat its numbers)
+std::vector<sim::world::CollisionMethod> defaultCollisions(const StabilityOptions& o, const sim::scene::SceneDef& def) {
+  using sim::world::CollisionMethod;
+  std::vector<CollisionMethod> methods;
+  if (o.variant.empty() && !def.variantNames.empty()) {
+    for (const std::string& v : def.variantNames) {
+      const CollisionMethod m = readSceneFile(o.scene, v).model().collisions;
+      if (std::find(methods.begin(), methods.end(), m) == methods.end()) methods.push_back(m);
+    }
+    return methods;
+  }
+  if (!o.variant.empty() || startWorld(def, o.scene).collisions == CollisionMethod::None) return {def.collisions};
+  return {CollisionMethod::Event, CollisionMethod::Isolated, CollisionMethod::Sequential};
+}
+
 int stability(const StabilityOptions& o) {
   SceneOptions so;
   so.scene = o.scene;
@@ -30,7 +49,7 @@ int stability(const StabilityOptions& o) {
   startWorld(def, o.scene);
 
   const auto integrators = o.integratorList();
-  const auto methods = o.collisionList(def.collisions);
+  const auto methods = o.collisionList(defaultCollisions(o, def));
   std::filesystem::create_directories(o.outDir);
   const std::string base = o.outDir + "/" + def.name + (def.variant.empty() ? "" : "-" + def.variant) + "-stability";
   const std::string parameter(kParameterNames.name(study.stability.parameter));
@@ -41,8 +60,11 @@ int stability(const StabilityOptions& o) {
   chart.title = def.name + ": the largest " + parameter + " at which each method holds";
   chart.yLabel = std::string("largest stable ") + parameter;
   chart.bars = true;
+  chart.barValues = true;
   chart.logY = study.stability.parameter != StabilityDef::Parameter::StackHeight;
+  // a method that held up to the search's limit has no boundary found: its bar is a lower bound
   ChartSeries bars{std::string("largest stable ") + parameter, {}};
+  ChartSeries bounds{"holds up to the search's limit (at least this)", {}, true};
   for (sim::world::CollisionMethod c : methods)
     for (sim::core::Integrator i : integrators) {
       Study d = study;
@@ -53,10 +75,12 @@ int stability(const StabilityOptions& o) {
       csv.stream() << sim::core::integratorName(i) << ',' << sim::world::collisionMethodName(c) << ',' << parameter << ','
                    << formatNumber(r.largestStable) << ',' << formatNumber(r.firstFailing) << ','
                    << (r.holdsToLimit ? "none" : r.failing.failure) << '\n';
-      chart.barLabels.push_back(std::string(sim::core::integratorName(i)) + "\\n" + std::string(sim::world::collisionMethodName(c)));
-      bars.points.emplace_back(static_cast<double>(bars.points.size()), r.largestStable > 0.0 ? r.largestStable : NAN);
+      const double x = static_cast<double>(chart.barLabels.size());
+      chart.barLabels.push_back(std::string(sim::core::integratorName(i)) + "\n" + std::string(sim::world::collisionMethodName(c)));
+      (r.holdsToLimit ? bounds : bars).points.emplace_back(x, r.largestStable > 0.0 ? r.largestStable : NAN);
     }
   chart.series.push_back(bars);
+  if (!bounds.points.empty()) chart.series.push_back(bounds);
   writeChart(chart, base + ".png");
   csv.commit();
   std::cout << "wrote " << base << ".csv and " << base << ".png\n";

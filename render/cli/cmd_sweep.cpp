@@ -39,7 +39,7 @@ int sweep(const SweepOptions& o) {
   startWorld(def, o.scene);  // bad start states are reported before the long run
 
   const auto integrators = o.integratorList();
-  const auto methods = o.collisionList(def.collisions);
+  const auto methods = o.collisionList({def.collisions});
   const std::vector<double> steps =
       o.dt.empty() ? parseRange(std::to_string(def.dt * 8) + ":" + std::to_string(def.dt / 8) + ":7", "--dt")
                    : parseRange(o.dt, "--dt");

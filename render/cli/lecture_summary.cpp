@@ -30,7 +30,7 @@ std::string indented(const std::string& text) {
 }
 
 void printLectureSummary(const std::vector<SceneResult>& results, double wallSeconds, size_t parallel,
-                         bool messagesShown, std::ostream& out, std::ostream& errors) {
+                         bool messagesShown, bool page, std::ostream& out, std::ostream& errors) {
   size_t nameWidth = 5;
   for (const SceneResult& r : results) nameWidth = std::max(nameWidth, r.scene.size());
   out << padded("scene", nameWidth) << "  status  outputs  seconds  files\n";
@@ -47,7 +47,8 @@ void printLectureSummary(const std::vector<SceneResult>& results, double wallSec
     outputs += r.outputs.size();
     failed += r.ok ? 0 : 1;
   }
-  out << "total: " << results.size() << " scenes, " << outputs << " outputs, " << secondsText(wallSeconds)
+  if (page) ++outputs;
+  out << "total: " << results.size() << " scenes, " << outputs << " outputs" << (page ? " with the page" : "") << ", " << secondsText(wallSeconds)
       << " s wall time (" << parallel << " at a time)";
   if (failed) out << "; " << failed << " failed";
   out << '\n';

@@ -17,15 +17,11 @@ std::vector<std::string> splitList(const std::string& text) {
 namespace {
 
 template <class Lookup>
-auto namedList(const std::string& text, Lookup lookup, const std::vector<std::string_view>& names, const std::string& option) {
+auto namedList(const std::string& text, Lookup lookup, const std::string& known, const std::string& option) {
   std::vector<typename decltype(lookup(""))::value_type> out;
   for (const std::string& item : splitList(text)) {
     const auto value = lookup(item);
-    if (!value) {
-      std::string known;
-      for (auto n : names) known += (known.empty() ? "" : ", ") + std::string(n);
-      throw UsageError(option + ": unknown name '" + item + "'; choose from: " + known);
-    }
+    if (!value) throw UsageError(option + ": unknown name '" + item + "'; choose from: " + known);
     out.push_back(*value);
   }
   if (out.empty()) throw UsageError(option + ": give at least one name");
@@ -40,14 +36,17 @@ void MethodLists::addTo(CLI::App& command) {
 }
 
 std::vector<sim::core::Integrator> MethodLists::integratorList() const {
-  if (integrators.empty())
-    return {sim::core::Integrator::ExplicitEuler, sim::core::Integrator::SymplecticEuler, sim::core::Integrator::Midpoint, sim::core::Integrator::Rk4};
-  return namedList(integrators, sim::core::integratorFromName, sim::core::integratorNames(), "--integrators");
+  if (integrators.empty()) {
+    std::vector<sim::core::Integrator> all;
+    for (const auto& entry : sim::core::kIntegratorNames.entries()) all.push_back(entry.value);
+    return all;
+  }
+  return namedList(integrators, sim::core::integratorFromName, sim::core::kIntegratorNames.list(), "--integrators");
 }
 
-std::vector<sim::world::CollisionMethod> MethodLists::collisionList(sim::world::CollisionMethod scenes) const {
-  if (collisions.empty()) return {scenes};
-  return namedList(collisions, sim::world::collisionMethodFromName, sim::world::collisionMethodNames(), "--collisions");
+std::vector<sim::world::CollisionMethod> MethodLists::collisionList(const std::vector<sim::world::CollisionMethod>& defaults) const {
+  if (collisions.empty()) return defaults;
+  return namedList(collisions, sim::world::collisionMethodFromName, sim::world::kCollisionMethodNames.list(), "--collisions");
 }
 
 }  // namespace render::cli

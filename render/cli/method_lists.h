@@ -19,8 +19,8 @@ struct MethodLists {
   void addTo(CLI::App& command);
   // the named integrators, or all four; throws UsageError naming the unknown one
   std::vector<sim::core::Integrator> integratorList() const;
-  // the named collision methods, or the scene's own
-  std::vector<sim::world::CollisionMethod> collisionList(sim::world::CollisionMethod scenes) const;
+  // the named collision methods, or `defaults` (the scene's own, or those its variants choose)
+  std::vector<sim::world::CollisionMethod> collisionList(const std::vector<sim::world::CollisionMethod>& defaults) const;
 };
 
 }  // namespace render::cli

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "render/cli/commands.h"
+#include "render/jobs/json_writer.h"
 #include "sim/scene/scene_build.h"
 #include "sim/scene/step_limit.h"
 #include "sim/yaml/scene_yaml.h"
@@ -22,11 +23,8 @@ SceneFile SceneOptions::load() const {
   sim::scene::SceneDef& def = file.model();
   if (!integrator.empty()) {
     const auto method = sim::core::integratorFromName(integrator);
-    if (!method) {
-      std::string names;
-      for (auto n : sim::core::integratorNames()) names += (names.empty() ? "" : ", ") + std::string(n);
-      throw UsageError("--integrator: unknown integrator '" + integrator + "'; choose one of: " + names);
-    }
+    if (!method)
+      throw UsageError("--integrator: unknown integrator '" + integrator + "'; choose one of: " + sim::core::kIntegratorNames.list());
     def.integrator = *method;
   }
   if (dt) {
@@ -37,11 +35,8 @@ SceneFile SceneOptions::load() const {
   }
   if (!collisions.empty()) {
     const auto method = sim::world::collisionMethodFromName(collisions);
-    if (!method) {
-      std::string names;
-      for (auto n : sim::world::collisionMethodNames()) names += (names.empty() ? "" : ", ") + std::string(n);
-      throw UsageError("--collisions: unknown collision method '" + collisions + "'; choose one of: " + names);
-    }
+    if (!method)
+      throw UsageError("--collisions: unknown collision method '" + collisions + "'; choose one of: " + sim::world::kCollisionMethodNames.list());
     def.collisions = *method;
   }
   return file;
@@ -81,6 +76,13 @@ std::string describeCollisionMethod(const sim::world::World& world) {
       return s + " (auto: bodies touch at the start under load, so contacts persist and need the iterative solver)";
   }
   return s;
+}
+
+std::string describeResting(const sim::scene::SceneDef& def, const sim::world::RestingRecord& r) {
+  const std::string pair = "'" + def.bodies[r.a].name + "' and '" + def.bodies[r.b].name + "'";
+  const std::string t = render::jobs::formatNumber(r.t);
+  if (r.moving) return pair + " stay in contact from t = " + t + " (impacts piled up; they keep moving while touching)";
+  return pair + " came to rest at t = " + t + " (impacts piled up; the contact now rests)";
 }
 
 }  // namespace render::cli

@@ -34,4 +34,9 @@ sim::world::World startWorld(const sim::scene::SceneDef& def, const std::string&
 // "event: no bodies touch at the start, so impacts are isolated"
 std::string describeCollisionMethod(const sim::world::World& world);
 
+// where the event method turned a pile-up of impacts into resting contact: "'ball' and 'floor' came
+// to rest at t = 2.4 (...)", or, when the pair keeps sliding or turning while it touches, "'bar' and
+// 'floor' stay in contact from t = 0.5 (...)"
+std::string describeResting(const sim::scene::SceneDef& def, const sim::world::RestingRecord& record);
+
 }  // namespace render::cli

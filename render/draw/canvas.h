@@ -3,6 +3,7 @@
 // coordinates, y up.
 #pragma once
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -23,8 +24,23 @@ class Canvas {
   virtual void segment(const Vec2& a, const Vec2& b, const Pen& pen) = 0;
   virtual void point(const Vec2& p, const Pen& pen) = 0;
   virtual void arrow(const Vec2& tail, const Vec2& head, const Pen& pen) = 0;
+  // text exactly there: a Label centered on `at`, a Caption (fixed to the frame) with its top-left corner there
   virtual void text(const Vec2& at, const std::string& text, const Pen& pen) = 0;
+  // a label of the point `anchor` (what it names: a body's center, an arrow's head): centered on it
+  // when `direction` is zero, else just beyond it along the unit `direction`, clear of it. A frame's
+  // labels go through render::frame::LabelPlacer, which may move them to a free spot; any other
+  // canvas draws them where they prefer to be
+  virtual void label(const Vec2& anchor, const Vec2& direction, const std::string& text, const Pen& pen) = 0;
 };
+
+// the center of a label's box, half-extents `halfWidth` × `halfHeight`, beyond `anchor` along the
+// unit `direction` with `gap` between the anchor and the box (its support distance along the
+// direction plus the gap), or on the anchor when the direction is zero; any one unit throughout
+inline Vec2 labelCenter(const Vec2& anchor, const Vec2& direction, double halfWidth, double halfHeight, double gap) {
+  if (direction.isZero()) return anchor;
+  const double reach = std::abs(direction.x()) * halfWidth + std::abs(direction.y()) * halfHeight;
+  return anchor + direction * (reach + gap);
+}
 
 // the simulator's drawing calls onto a canvas, each role as its row of the table (Box2D's
 // b2DebugDraw, implemented by the application)
@@ -37,7 +53,10 @@ class PhysicsDraw final : public sim::debug::DebugDraw {
   void segment(const Vec2& a, const Vec2& b, const sim::debug::DrawStyle& s) override { canvas_.segment(a, b, pen(s)); }
   void point(const Vec2& p, const sim::debug::DrawStyle& s) override { canvas_.point(p, pen(s)); }
   void arrow(const Vec2& t, const Vec2& h, const sim::debug::DrawStyle& s) override { canvas_.arrow(t, h, pen(s)); }
-  void text(const Vec2& at, const std::string& t, const sim::debug::DrawStyle& s) override { canvas_.text(at, t, pen(s)); }
+  // the simulator's text is a label written where it names (a separation inside its edge)
+  void text(const Vec2& at, const std::string& t, const sim::debug::DrawStyle& s) override {
+    canvas_.label(at, Vec2::Zero(), t, pen(s));
+  }
 
  private:
   static Pen pen(const sim::debug::DrawStyle& s) { return {fromPhysics(s.role), s.body, s.opacity}; }
@@ -56,6 +75,9 @@ class RoleFilter final : public Canvas {
   void point(const Vec2& q, const Pen& p) override { if (keep_(p.role)) target_.point(q, p); }
   void arrow(const Vec2& t, const Vec2& h, const Pen& p) override { if (keep_(p.role)) target_.arrow(t, h, p); }
   void text(const Vec2& at, const std::string& t, const Pen& p) override { if (keep_(p.role)) target_.text(at, t, p); }
+  void label(const Vec2& a, const Vec2& d, const std::string& t, const Pen& p) override {
+    if (keep_(p.role)) target_.label(a, d, t, p);
+  }
 
  private:
   Canvas& target_;

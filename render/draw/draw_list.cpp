@@ -51,6 +51,10 @@ void DrawList::text(const Vec2& at, const std::string& text, const Pen& style) {
   calls_.push_back({Kind::Text, {at}, 0.0, text, style});
 }
 
+void DrawList::label(const Vec2& anchor, const Vec2& direction, const std::string& text, const Pen& style) {
+  calls_.push_back({Kind::Label, {anchor, direction}, 0.0, text, style});
+}
+
 void DrawList::replay(Canvas& target, double opacity) const {
   for (const Call& c : calls_) {
     Pen s = c.style;
@@ -63,6 +67,7 @@ void DrawList::replay(Canvas& target, double opacity) const {
       case Kind::Point: target.point(c.points[0], s); break;
       case Kind::Arrow: target.arrow(c.points[0], c.points[1], s); break;
       case Kind::Text: target.text(c.points[0], c.text, s); break;
+      case Kind::Label: target.label(c.points[0], c.points[1], c.text, s); break;
     }
   }
 }
@@ -92,6 +97,10 @@ std::vector<std::string> DrawList::lines() const {
         break;
       case Kind::Text:
         line.append("text ").append(style).append(" ").append(coordinates(c.points[0])).append(" \"").append(c.text).append("\"");
+        break;
+      case Kind::Label:
+        line.append("label ").append(style).append(" ").append(coordinates(c.points[0])).append(" beyond ")
+            .append(coordinates(c.points[1])).append(" \"").append(c.text).append("\"");
         break;
     }
     out.push_back(std::move(line));

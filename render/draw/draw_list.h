@@ -14,10 +14,10 @@ using sim::core::Vec2;
 
 class DrawList final : public Canvas {
  public:
-  enum class Kind { Polygon, Circle, HalfPlane, Segment, Point, Arrow, Text };
+  enum class Kind { Polygon, Circle, HalfPlane, Segment, Point, Arrow, Text, Label };
   struct Call {
     Kind kind;
-    std::vector<Vec2> points;  // vertices; center; point and normal; a and b; point; tail and head; at
+    std::vector<Vec2> points;  // vertices; center; point and normal; a and b; point; tail and head; at; anchor and direction
     double radius = 0.0;
     std::string text;
     Pen style;
@@ -30,6 +30,7 @@ class DrawList final : public Canvas {
   void point(const Vec2& p, const Pen& style) override;
   void arrow(const Vec2& tail, const Vec2& head, const Pen& style) override;
   void text(const Vec2& at, const std::string& text, const Pen& style) override;
+  void label(const Vec2& anchor, const Vec2& direction, const std::string& text, const Pen& style) override;
 
   const std::vector<Call>& calls() const { return calls_; }
   bool empty() const { return calls_.empty(); }
@@ -40,6 +41,7 @@ class DrawList final : public Canvas {
   //   polygon Body#0 (-0.1,-2) (0.1,-2) (0.1,2) (-0.1,2)
   //   arrow Impulse@0.5 (0,1) -> (1,1)
   //   arrow Velocity#0~2 (0,0) -> (1,0)   (~2: the color of teaching arrow 2)
+  //   label Label#0 (0,1) beyond (0,1) "v"  (a label not yet placed)
   std::vector<std::string> lines() const;
   // the lines joined, each ending in a newline
   std::string toText() const;

@@ -178,6 +178,14 @@ void GlCanvas::text(const Vec2& at, const std::string& text, const Pen& s) {
   texts_.push_back({camera_.toPixel(at), text, anchor, strokeColor(s).withAlpha(s.opacity)});
 }
 
+void GlCanvas::label(const Vec2& anchor, const Vec2& direction, const std::string& text, const Pen& s) {
+  const TextBox box = textRenderer_.measure(text, style_.fontSize);
+  // in pixels, y down: the direction's y flips
+  const Vec2 center = labelCenter(camera_.toPixel(anchor), Vec2(direction.x(), -direction.y()), 0.5 * box.width,
+                                  0.5 * (box.ascent + box.descent), style_.fontSize / 3.0);
+  texts_.push_back({center, text, Anchor::Center, strokeColor(s).withAlpha(s.opacity)});
+}
+
 void GlCanvas::beginPrimitive(const Color& c, double opacity, bool marks) {
   const double alpha = c.a * std::clamp(opacity, 0.0, 1.0);
   glColor4d(c.r, c.g, c.b, alpha);

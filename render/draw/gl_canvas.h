@@ -36,6 +36,8 @@ class GlCanvas final : public Canvas {
   void point(const Vec2& p, const Pen& style) override;
   void arrow(const Vec2& tail, const Vec2& head, const Pen& style) override;
   void text(const Vec2& at, const std::string& text, const Pen& style) override;
+  // where it prefers, measured: a frame's labels reach here placed, as text
+  void label(const Vec2& anchor, const Vec2& direction, const std::string& text, const Pen& style) override;
 
  private:
   struct QueuedText {

@@ -79,5 +79,8 @@ std::u32string decodeUtf8(const std::string& text);
 double approximateWidth(const std::string& text, double size);
 // the height of a line of text at `size`: DejaVu Sans's ascent plus descent
 inline constexpr double kLineHeight = 1.17;
+// the same in whole pixels as TextRenderer::measure gives it at `sizePx`: FreeType rounds DejaVu Sans's
+// ascender (1901 of 2048 units per em) and descender (483) outward
+inline int lineHeightPx(int sizePx) { return (1901 * sizePx + 2047) / 2048 + (483 * sizePx + 2047) / 2048; }
 
 }  // namespace render::draw

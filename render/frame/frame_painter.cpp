@@ -26,6 +26,7 @@ FramePainter::FramePainter(const render::scene::Scene& def, const Camera& camera
       camera_(camera),
       impulseScale_(arrowScale(def.render.impulseScale, survey.maxImpulse, camera)),
       velocityScale_(arrowScale(def.render.velocityScale, survey.maxSpeed, camera)),
+      textWidth_(width),
       arrows_(def, camera, survey, velocityScale_),
       panel_(def, camera, survey) {
   // the caption is the same in every frame: wrapped once, to the frame less an inset on each side
@@ -60,8 +61,9 @@ History::Options FramePainter::historyOptions() const {
 }
 
 void FramePainter::paint(const sim::world::World& world, const History& history, const std::vector<DrawList>& ghosts,
-                         Canvas& draw) const {
+                         Canvas& target, std::vector<PlacedText>* placed) const {
   const render::scene::RenderDef& r = def_.render;
+  LabelPlacer draw(target, camera_, fontSizeFor(r, camera_.heightPx()), textWidth_);
   const double px = camera_.pixelSize();
   // static bodies and planes at the back, so that everything that moves is drawn over them
   RoleFilter statics(draw, [](Role role) { return role == Role::StaticBody; });
@@ -96,7 +98,7 @@ void FramePainter::paint(const sim::world::World& world, const History& history,
       const std::string& label = def_.render.bodies[i].label;
       // a half-plane has no middle to write on
       const bool bounded = b.shape.kind == sim::core::ShapeKind::Polygon || b.shape.kind == sim::core::ShapeKind::Circle;
-      if (!label.empty() && bounded) draw.text(b.x, label, {Role::Label, static_cast<int>(i), 1.0});
+      if (!label.empty() && bounded) draw.label(b.x, Vec2::Zero(), label, {Role::Label, static_cast<int>(i), 1.0});
     }
   if (r.time) {
     // the top-left corner, in from the edges by about half a line of text
@@ -105,6 +107,9 @@ void FramePainter::paint(const sim::world::World& world, const History& history,
   }
   if (r.overlays.energy || r.overlays.momentum) panel_.draw(world, draw);
   paintTimingText(world.time, draw);
+  draw.finish();
+  dropped_.report(draw.dropped(), world.time);
+  if (placed) *placed = draw.placed();
 }
 
 void FramePainter::paintTimingText(double t, Canvas& draw) const {

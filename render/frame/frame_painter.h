@@ -12,6 +12,7 @@
 #include "render/frame/caption.h"
 #include "render/frame/energy_panel.h"
 #include "render/frame/history.h"
+#include "render/frame/label_place.h"
 #include "render/frame/survey.h"
 #include "render/frame/teaching_arrows.h"
 #include "render/scene/scene.h"
@@ -28,9 +29,11 @@ class FramePainter {
 
   // what the history of a run must record for these frames
   History::Options historyOptions() const;
-  // the frame at the world's present time; `ghosts` are earlier poses (strobe), oldest first
+  // the frame at the world's present time; `ghosts` are earlier poses (strobe), oldest first. Every
+  // text goes through one LabelPlacer (label_place.h) and reaches `draw` last, placed; `placed` (when
+  // given) is told where each went
   void paint(const sim::world::World& world, const History& history, const std::vector<DrawList>& ghosts,
-             Canvas& draw) const;
+             Canvas& draw, std::vector<PlacedText>* placed = nullptr) const;
   // the text of the time caption, e.g. "t = 0.500 s"
   static std::string timeText(double t);
   // how many times slower a video shows simulation time t (the video's time map); frames say
@@ -49,6 +52,8 @@ class FramePainter {
   // video timing and text: the slow-motion note and the caption, drawn last
   void paintTimingText(double t, Canvas& draw) const;
   std::vector<std::string> captionLines_;
+  TextWidth textWidth_;                   // of the frame's texts, px (empty: estimated)
+  mutable DroppedLabels dropped_;         // said once each per run
   SlowFactor slowMotion_;
   TeachingArrows arrows_;                 // the lecture overlays
   EnergyPanel panel_;

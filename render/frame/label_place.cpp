@@ -1,17 +1,354 @@
 #include "render/frame/label_place.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <limits>
+#include <numbers>
 
 #include "render/draw/text.h"
 
 namespace render::frame {
 using namespace render::draw;
 
-sim::core::Vec2 labelBeyond(const sim::core::Vec2& anchor, const sim::core::Vec2& direction, const std::string& text, double em) {
-  // the half-extent of the box along the direction: its support distance
-  const double halfWidth = 0.5 * approximateWidth(text, em), halfHeight = 0.5 * kLineHeight * em;
-  const double reach = std::abs(direction.x()) * halfWidth + std::abs(direction.y()) * halfHeight;
-  return anchor + direction * (reach + em / 3.0);
+namespace {
+
+constexpr double kNever = std::numeric_limits<double>::infinity();
+// what covering each thing costs, in lines of text: another body as much as moving three lines (text
+// across a body hides what the frame is about), a line, an arrow or a dot a line and a half, a static
+// body's hatching or a trail (which a halo reads over) less than a third of a line
+constexpr double kBody = 3.0, kCovers = 1.5, kFaint = 0.3;
+// how far a label may move (in lines), its steps (in lines), and from how far it gets a leader line
+constexpr double kMaxMove = 4.0, kStep = 0.5, kLeaderFrom = 1.0;
+// a contact point's dot and an arrow's head (10 px long, 9 wide: gl_canvas.cpp) as discs, px
+constexpr double kDotPx = 4.0, kHeadPx = 5.0;
+
+PixelBox boundsOf(const std::vector<Vec2>& points, double grow) {
+  PixelBox b{kNever, kNever, -kNever, -kNever};
+  for (const Vec2& p : points) {
+    b.left = std::min(b.left, p.x()), b.right = std::max(b.right, p.x());
+    b.top = std::min(b.top, p.y()), b.bottom = std::max(b.bottom, p.y());
+  }
+  return b.grown(grow);
+}
+
+Vec2 closestInBox(const PixelBox& b, const Vec2& p) {
+  return {std::clamp(p.x(), b.left, b.right), std::clamp(p.y(), b.top, b.bottom)};
+}
+
+double distanceToSegment(const Vec2& p, const Vec2& a, const Vec2& b) {
+  const Vec2 d = b - a;
+  const double length2 = d.squaredNorm();
+  const double s = length2 > 0.0 ? std::clamp((p - a).dot(d) / length2, 0.0, 1.0) : 0.0;
+  return (p - (a + s * d)).norm();
+}
+
+// does segment ab cross the box? (Liang–Barsky clipping)
+bool segmentCrossesBox(const Vec2& a, const Vec2& b, const PixelBox& box) {
+  double t0 = 0.0, t1 = 1.0;
+  const Vec2 d = b - a;
+  const double p[4] = {-d.x(), d.x(), -d.y(), d.y()};
+  const double q[4] = {a.x() - box.left, box.right - a.x(), a.y() - box.top, box.bottom - a.y()};
+  for (int i = 0; i < 4; ++i) {
+    if (p[i] == 0.0) {
+      if (q[i] < 0.0) return false;
+      continue;
+    }
+    const double t = q[i] / p[i];
+    if (p[i] < 0.0) t0 = std::max(t0, t);
+    else t1 = std::min(t1, t);
+    if (t0 > t1) return false;
+  }
+  return true;
+}
+
+// a convex polygon against a box: separated along an axis of either (separating axis theorem)
+bool polygonOverlapsBox(const std::vector<Vec2>& polygon, const PixelBox& box) {
+  const Vec2 corners[4] = {{box.left, box.top}, {box.right, box.top}, {box.right, box.bottom}, {box.left, box.bottom}};
+  std::vector<Vec2> axes = {Vec2::UnitX(), Vec2::UnitY()};
+  for (size_t i = 0; i < polygon.size(); ++i) {
+    const Vec2 e = polygon[(i + 1) % polygon.size()] - polygon[i];
+    if (e.squaredNorm() > 0.0) axes.emplace_back(-e.y(), e.x());
+  }
+  for (const Vec2& axis : axes) {
+    double lo = kNever, hi = -kNever, boxLo = kNever, boxHi = -kNever;
+    for (const Vec2& v : polygon) lo = std::min(lo, v.dot(axis)), hi = std::max(hi, v.dot(axis));
+    for (const Vec2& c : corners) boxLo = std::min(boxLo, c.dot(axis)), boxHi = std::max(boxHi, c.dot(axis));
+    if (hi <= boxLo || boxHi <= lo) return false;
+  }
+  return true;
+}
+
+// how much covering a shape of `role` costs, in lines, as opaque as `opacity`
+double weightOf(Role role, double opacity) {
+  double w = kCovers;
+  switch (role) {
+    case Role::Body: w = kBody; break;
+    case Role::StaticBody:
+    case Role::Trail:
+    case Role::Path: w = kFaint; break;
+    case Role::Panel: return kNever;  // the energy panel: its rows are its own
+    case Role::KineticBar:
+    case Role::RotationalBar:
+    case Role::PotentialBar:
+    case Role::TotalBar: return 0.0;  // inside the panel
+    default: break;
+  }
+  return w * std::clamp(opacity, 0.0, 1.0);
+}
+
+Vec2 rotated(const Vec2& v, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
+}
+
+}  // namespace
+
+LabelPlacer::LabelPlacer(Canvas& target, const Camera& camera, int fontPx, TextWidth width)
+    : target_(target),
+      camera_(camera),
+      fontPx_(fontPx),
+      width_(width ? std::move(width) : TextWidth([fontPx](const std::string& s) {
+        return static_cast<int>(std::ceil(approximateWidth(s, fontPx)));
+      })),
+      line_(lineHeightPx(fontPx)),
+      pad_(std::max(1.0, std::round(fontPx / 10.0))) {}
+
+void LabelPlacer::addObstacle(Obstacle o) {
+  // anything but a segment ends a polyline
+  if (o.group < 0) lastSegment_.reset();
+  if (o.weight > 0.0) obstacles_.push_back(std::move(o));
+}
+
+void LabelPlacer::polygon(const std::vector<Vec2>& vertices, const Pen& pen) {
+  target_.polygon(vertices, pen);
+  std::vector<Vec2> px;
+  for (const Vec2& v : vertices) px.push_back(camera_.toPixel(v));
+  // the pixel frame flips y, which turns the polygon's winding but not its convexity
+  addObstacle({Obstacle::Shape::Polygon, px, 0.0, boundsOf(px, 0.0), pen.body, weightOf(pen.role, pen.opacity), true});
+}
+
+void LabelPlacer::circle(const Vec2& center, double radius, const Pen& pen) {
+  target_.circle(center, radius, pen);
+  const Vec2 c = camera_.toPixel(center);
+  const double r = radius / camera_.pixelSize();
+  addObstacle({Obstacle::Shape::Disc, {c}, r, boundsOf({c}, r), pen.body, weightOf(pen.role, pen.opacity), true});
+}
+
+void LabelPlacer::halfPlane(const Vec2& point, const Vec2& normal, const Pen& pen) {
+  target_.halfPlane(point, normal, pen);
+  if (!(normal.norm() > 0.0)) return;
+  const Vec2 p = camera_.toPixel(point), n = Vec2(normal.x(), -normal.y()).normalized();
+  const PixelBox frame{0, 0, static_cast<double>(camera_.widthPx()), static_cast<double>(camera_.heightPx())};
+  addObstacle({Obstacle::Shape::HalfPlane, {p, n}, 0.0, frame, pen.body, weightOf(pen.role, pen.opacity), true});
+  // its boundary is a line like any other
+  const Vec2 along(-n.y(), n.x());
+  const double reach = camera_.widthPx() + camera_.heightPx();
+  const std::vector<Vec2> ends = {p - reach * along, p + reach * along};
+  addObstacle({Obstacle::Shape::Stroke, ends, 1.0, boundsOf(ends, 1.0), -1, kCovers * std::clamp(pen.opacity, 0.0, 1.0)});
+}
+
+void LabelPlacer::segment(const Vec2& a, const Vec2& b, const Pen& pen) {
+  target_.segment(a, b, pen);
+  const std::vector<Vec2> ends = {camera_.toPixel(a), camera_.toPixel(b)};
+  const bool continues = lastSegment_ && lastSegment_->role == pen.role && lastSegment_->body == pen.body &&
+                         lastSegment_->opacity == pen.opacity && lastSegment_->color == pen.color;
+  if (!continues) ++groups_;
+  addObstacle({Obstacle::Shape::Stroke, ends, 1.5, boundsOf(ends, 1.5), pen.body, weightOf(pen.role, pen.opacity), false, groups_});
+  lastSegment_ = pen;
+}
+
+void LabelPlacer::point(const Vec2& p, const Pen& pen) {
+  target_.point(p, pen);
+  const Vec2 c = camera_.toPixel(p);
+  addObstacle({Obstacle::Shape::Disc, {c}, kDotPx, boundsOf({c}, kDotPx), -1, weightOf(pen.role, pen.opacity)});
+}
+
+void LabelPlacer::arrow(const Vec2& tail, const Vec2& head, const Pen& pen) {
+  target_.arrow(tail, head, pen);
+  const std::vector<Vec2> ends = {camera_.toPixel(tail), camera_.toPixel(head)};
+  const double w = weightOf(pen.role, pen.opacity);
+  addObstacle({Obstacle::Shape::Stroke, ends, 1.5, boundsOf(ends, 1.5), pen.body, w});
+  // the head: a disc over its barbs, behind the tip
+  const Vec2 d = ends[1] - ends[0];
+  if (d.norm() > kHeadPx) {
+    const Vec2 barbs = ends[1] - (kHeadPx / d.norm()) * d;
+    addObstacle({Obstacle::Shape::Disc, {barbs}, kHeadPx, boundsOf({barbs}, kHeadPx), pen.body, w});
+  }
+}
+
+void LabelPlacer::text(const Vec2& at, const std::string& text, const Pen& pen) {
+  pending_.push_back({camera_.toPixel(at), Vec2::Zero(), text, pen, true, static_cast<double>(width_(text))});
+}
+
+void LabelPlacer::label(const Vec2& anchor, const Vec2& direction, const std::string& text, const Pen& pen) {
+  // in pixels y points down
+  const Vec2 d(direction.x(), -direction.y());
+  pending_.push_back({camera_.toPixel(anchor), d.norm() > 0.0 ? Vec2(d.normalized()) : Vec2::Zero(), text, pen, false,
+                      static_cast<double>(width_(text))});
+}
+
+PixelBox LabelPlacer::boxAt(const Vec2& center, const Pending& p) const {
+  const double w = p.width;
+  // a caption's point is its top-left corner; a label's, its center (as GlCanvas draws them)
+  if (p.pen.role == Role::Caption) return {center.x(), center.y(), center.x() + w, center.y() + line_};
+  return {center.x() - 0.5 * w, center.y() - 0.5 * line_, center.x() + 0.5 * w, center.y() + 0.5 * line_};
+}
+
+double LabelPlacer::cost(const PixelBox& box, const Pending& p, size_t self) const {
+  // possible: inside the frame, clear of the texts placed and of the other labels' anchors
+  if (box.left < 0.0 || box.top < 0.0 || box.right > camera_.widthPx() || box.bottom > camera_.heightPx()) return kNever;
+  const PixelBox clear = box.grown(pad_);
+  for (const PlacedText& t : placed_)
+    if (clear.overlaps(t.box)) return kNever;
+  // a label beyond its anchor never covers it either (one on its anchor does, by design)
+  for (size_t i = 0; i < pending_.size(); ++i)
+    if (!pending_[i].fixed && (i != self || !p.direction.isZero()) && clear.contains(pending_[i].anchor)) return kNever;
+  // what it covers, each polyline once
+  double covered = 0.0;
+  int lastGroup = -1;
+  for (const Obstacle& o : obstacles_) {
+    if (o.group >= 0 && o.group == lastGroup) continue;
+    if (!o.bounds.overlaps(box)) continue;
+    // a label may lie on its own body. One written on what it names (a body's name, a separation)
+    // reads over lines and arrows with its halo and stays put, so that names do not hop from frame
+    // to frame as arrows turn and fade: only areas move it
+    if (o.body >= 0 && o.body == p.pen.body && o.area && o.weight < kNever) continue;
+    if (p.direction.isZero() && !o.area) continue;
+    bool hit = false;
+    switch (o.shape) {
+      case Obstacle::Shape::Polygon: hit = polygonOverlapsBox(o.points, box); break;
+      case Obstacle::Shape::Disc: hit = (closestInBox(box, o.points[0]) - o.points[0]).norm() < o.radius; break;
+      case Obstacle::Shape::Stroke: {
+        const Vec2 &a = o.points[0], &b = o.points[1];
+        hit = segmentCrossesBox(a, b, box);
+        if (!hit) {
+          double d = std::min((closestInBox(box, a) - a).norm(), (closestInBox(box, b) - b).norm());
+          for (const Vec2& c : {Vec2(box.left, box.top), Vec2(box.right, box.top), Vec2(box.right, box.bottom), Vec2(box.left, box.bottom)})
+            d = std::min(d, distanceToSegment(c, a, b));
+          hit = d < o.radius;
+        }
+        break;
+      }
+      case Obstacle::Shape::HalfPlane: {
+        // the solid side is n·(r − p) ≤ 0
+        const Vec2 &q = o.points[0], &n = o.points[1];
+        double least = kNever;
+        for (const Vec2& c : {Vec2(box.left, box.top), Vec2(box.right, box.top), Vec2(box.right, box.bottom), Vec2(box.left, box.bottom)})
+          least = std::min(least, n.dot(c - q));
+        hit = least <= 0.0;
+        break;
+      }
+    }
+    if (hit) {
+      if (o.weight == kNever) return kNever;
+      covered += o.weight;
+      lastGroup = o.group;
+    }
+  }
+  return covered * line_;
+}
+
+void LabelPlacer::place(const Pending& p, size_t self) {
+  const double halfWidth = 0.5 * p.width, halfHeight = 0.5 * line_, gap = fontPx_ / 3.0;
+  const Vec2 preferred = p.fixed ? p.anchor : labelCenter(p.anchor, p.direction, halfWidth, halfHeight, gap);
+  PlacedText out{p.text, p.pen, boxAt(preferred, p), p.fixed ? std::nullopt : std::optional<Vec2>(p.anchor), false};
+  if (p.fixed) {
+    // text fixed to the frame moves for nothing; it only must not land on another
+    for (const PlacedText& t : placed_)
+      if (out.box.overlaps(t.box)) {
+        dropped_.push_back(out);
+        return;
+      }
+    placed_.push_back(out);
+    return;
+  }
+  // the candidates, half a line apart: the preferred spot slid in the eight compass directions, and
+  // for a label beyond its anchor, the spot swung around the anchor by 45° steps and out from there
+  struct Candidate {
+    Vec2 center;
+    double moved;
+  };
+  std::vector<Candidate> candidates;
+  const int steps = static_cast<int>(kMaxMove / kStep);
+  const auto along = [&](const Vec2& start, const Vec2& u, int from) {
+    for (int k = from; k <= steps; ++k) {
+      const Vec2 c = start + (k * kStep * line_) * u;
+      candidates.push_back({c, (c - preferred).norm()});
+    }
+  };
+  for (int turn = 0; turn < 8; ++turn) along(preferred, rotated(Vec2::UnitX(), turn * 0.25 * std::numbers::pi), 1);
+  if (!p.direction.isZero())
+    for (int turn = 1; turn < 8; ++turn) {
+      // +45°, −45°, +90°, … , 180°: the nearest turns first
+      const Vec2 u = rotated(p.direction, (turn + 1) / 2 * (turn % 2 ? 1.0 : -1.0) * 0.25 * std::numbers::pi);
+      along(labelCenter(p.anchor, u, halfWidth, halfHeight, gap), u, 0);
+    }
+  candidates.insert(candidates.begin(), {preferred, 0.0});
+  std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) { return a.moved < b.moved; });
+  // the cheapest: a candidate that moved further than the best cost so far cannot beat it
+  double best = kNever;
+  Vec2 at = preferred;
+  for (const Candidate& c : candidates) {
+    if (c.moved >= best || c.moved > kMaxMove * line_ + 2.0 * halfWidth) break;
+    const double total = c.moved + cost(boxAt(c.center, p), p, self);
+    if (total < best) best = total, at = c.center;
+  }
+  if (best == kNever) {
+    dropped_.push_back(out);
+    return;
+  }
+  out.box = boxAt(at, p);
+  out.leader = (at - preferred).norm() > kLeaderFrom * line_ && !out.box.contains(p.anchor);
+  placed_.push_back(out);
+}
+
+void LabelPlacer::finish() {
+  // fixed texts first, as they were asked for; then labels on their anchors (bodies' names,
+  // separations), then labels beyond their anchors (values of arrows and impacts), each in call order
+  std::vector<size_t> order;
+  for (int pass = 0; pass < 3; ++pass)
+    for (size_t i = 0; i < pending_.size(); ++i) {
+      const Pending& p = pending_[i];
+      const int group = p.fixed ? 0 : p.direction.isZero() ? 1 : 2;
+      if (group == pass) order.push_back(i);
+    }
+  for (size_t i : order) place(pending_[i], i);
+  // leader lines under the texts, then the texts where they were placed
+  for (const PlacedText& t : placed_) {
+    if (!t.leader) continue;
+    const Vec2 a = *t.anchor, b = closestInBox(t.box, a);
+    const Vec2 d = b - a;
+    // from a little off the anchor to the box's edge
+    const Vec2 from = a + std::min(0.3 * d.norm(), 3.0) * d.normalized();
+    target_.segment(camera_.toWorld(from), camera_.toWorld(b), {Role::Label, t.pen.body, 0.6 * t.pen.opacity});
+  }
+  for (const PlacedText& t : placed_) {
+    const Vec2 at = t.pen.role == Role::Caption ? Vec2(t.box.left, t.box.top) : Vec2(0.5 * (t.box.left + t.box.right), 0.5 * (t.box.top + t.box.bottom));
+    target_.text(camera_.toWorld(at), t.text, t.pen);
+  }
+  pending_.clear();
+}
+
+DroppedLabels::DroppedLabels(std::function<void(const std::string&)> sink)
+    : sink_(sink ? std::move(sink) : [](const std::string& m) { std::cerr << "rigidreel: warning: " << m << '\n'; }) {}
+
+void DroppedLabels::report(const std::vector<PlacedText>& dropped, double t) {
+  // at most this many named per run
+  constexpr int kNamed = 5;
+  for (const PlacedText& d : dropped) {
+    std::string shape = d.text;
+    for (char& c : shape)
+      if (c >= '0' && c <= '9') c = '#';
+    if (std::find(seen_.begin(), seen_.end(), shape) != seen_.end()) continue;
+    seen_.push_back(shape);
+    if (told_ == kNamed) sink_("more labels dropped; not named");
+    if (told_++ >= kNamed) continue;
+    char when[32];
+    std::snprintf(when, sizeof when, "%.3f", t);
+    sink_("label '" + d.text + "' dropped at t = " + when + " s: no free spot for it in the frame");
+  }
 }
 
 sim::core::Vec2 directionOr(const sim::core::Vec2& v, const sim::core::Vec2& fallback) {

@@ -1,16 +1,129 @@
-// Where a label goes: beside what it names, clear of it, without measuring the text (the painter has
-// no fonts; text.h's approximate width is enough to keep a box off an arrow).
+// Where the texts of a frame go: one placer for all of them, so that no two ever overlap.
+//
+// LabelPlacer is a Canvas between the painter and the canvas that draws. Shapes pass straight
+// through and are remembered, in pixels, as what a label should not cover. Text fixed to the frame
+// (Canvas::text: the clock, the caption, the energy panel's rows) keeps its place and is taken
+// first. Labels (Canvas::label: a body's name, an arrow's value, an impact's n̂ and v_n, the
+// simulator's separations) wait until finish(), then each, in turn, goes to the cheapest spot: its
+// preferred one (on its anchor, or just beyond it along its direction), else the nearest free one
+// along its allowed directions (out along its direction and swung around its anchor by 45° steps;
+// the eight compass directions for a label centered on its anchor), where
+//
+//   cost = distance moved + Σ (line heights) over what the box covers: another body 3, an arrow,
+//          a segment or a contact point 1.5, a static body 0.3, a trail 0.3
+//
+// (a label written on what it names, a body's name or a separation, counts areas only: it reads
+// over lines with its halo, and stays put rather than hop as arrows turn and fade)
+//
+// and a spot is possible only inside the frame, clear of every text already placed (by the halo's
+// width), of every other label's anchor and of the energy panel. A label moved more than a line gets
+// a thin leader line back to its anchor; one with no possible spot within four lines is dropped
+// and reported, never drawn over another.
+//
+//            ┌─────────┐  ← swung 45° when the first spot is taken
+//     ●──────▶ label   │  ← preferred: beyond the head, a third of a line clear
+//  anchor    └─────────┘     then further out along the direction, half a line at a time
 #pragma once
 
+#include <functional>
+#include <optional>
 #include <string>
+#include <vector>
 
-#include "sim/core/math.h"
+#include "render/draw/camera.h"
+#include "render/draw/canvas.h"
+#include "render/frame/caption.h"
 
 namespace render::frame {
+using namespace render::draw;
 
-// the center of `text`'s box (`em` its size, world units) lying beyond `anchor` in the unit
-// `direction`, a third of a line clear of it
-sim::core::Vec2 labelBeyond(const sim::core::Vec2& anchor, const sim::core::Vec2& direction, const std::string& text, double em);
+// a box in pixels, y down
+struct PixelBox {
+  double left = 0, top = 0, right = 0, bottom = 0;
+  bool overlaps(const PixelBox& o) const { return left < o.right && o.left < right && top < o.bottom && o.top < bottom; }
+  bool contains(const Vec2& p) const { return p.x() >= left && p.x() <= right && p.y() >= top && p.y() <= bottom; }
+  PixelBox grown(double by) const { return {left - by, top - by, right + by, bottom + by}; }
+};
+
+// a text as the placer put it (or would have: a dropped one keeps its preferred box)
+struct PlacedText {
+  std::string text;
+  Pen pen;
+  PixelBox box;                // px
+  std::optional<Vec2> anchor;  // px: the point a label names; none for text fixed to the frame
+  bool leader = false;         // moved far: a leader line joins it to its anchor
+};
+
+class LabelPlacer final : public Canvas {
+ public:
+  // `target` draws; texts are `fontPx` high and `width` wide in pixels (an estimate without fonts)
+  LabelPlacer(Canvas& target, const Camera& camera, int fontPx, TextWidth width);
+
+  void polygon(const std::vector<Vec2>& vertices, const Pen& pen) override;
+  void circle(const Vec2& center, double radius, const Pen& pen) override;
+  void halfPlane(const Vec2& point, const Vec2& normal, const Pen& pen) override;
+  void segment(const Vec2& a, const Vec2& b, const Pen& pen) override;
+  void point(const Vec2& p, const Pen& pen) override;
+  void arrow(const Vec2& tail, const Vec2& head, const Pen& pen) override;
+  void text(const Vec2& at, const std::string& text, const Pen& pen) override;
+  void label(const Vec2& anchor, const Vec2& direction, const std::string& text, const Pen& pen) override;
+
+  // places every text and label and draws them into the target (leader lines, then texts as
+  // Canvas::text at their places); call once, after the last shape
+  void finish();
+  const std::vector<PlacedText>& placed() const { return placed_; }
+  // labels (or fixed texts over fixed texts) that found no free spot, not drawn
+  const std::vector<PlacedText>& dropped() const { return dropped_; }
+
+ private:
+  // something on screen a label should not cover, in pixels
+  struct Obstacle {
+    enum class Shape { Polygon, Disc, Stroke, HalfPlane } shape;
+    std::vector<Vec2> points;  // the vertices; the center; the ends; a point on the boundary and the outward normal
+    double radius = 0.0;       // a disc's radius, a stroke's half width
+    PixelBox bounds;           // around it all (the whole frame for a half-plane)
+    int body = -1;             // whose it is: a body's area is free to its labels, its marks to its name
+    double weight = 0.0;       // what covering it costs, in lines; infinity: never
+    bool area = false;         // a body's area rather than a mark drawn for it
+    int group = -1;            // the pieces of one polyline (a trail, an arc) share one: covered once
+  };
+  struct Pending {
+    Vec2 anchor;     // px
+    Vec2 direction;  // px, unit, y down; zero: centered on the anchor
+    std::string text;
+    Pen pen;
+    bool fixed;      // Canvas::text: stays where it was asked for (top-left for a caption)
+    double width;    // px
+  };
+  PixelBox boxAt(const Vec2& center, const Pending& p) const;
+  double cost(const PixelBox& box, const Pending& p, size_t self) const;  // infinity: not possible
+  void place(const Pending& p, size_t self);
+  void addObstacle(Obstacle o);
+
+  Canvas& target_;
+  Camera camera_;
+  int fontPx_;
+  TextWidth width_;
+  double line_, pad_;  // a line of text and the clearance between texts, px
+  std::vector<Obstacle> obstacles_;
+  std::optional<Pen> lastSegment_;  // consecutive segments in one pen are one polyline
+  int groups_ = 0;
+  std::vector<Pending> pending_;
+  std::vector<PlacedText> placed_, dropped_;
+};
+
+// the dropped labels of a run, said once each on standard error (or to `sink`): a label whose
+// numbers change from frame to frame is one label ("E = #.## J"), and at most a few are named
+class DroppedLabels {
+ public:
+  explicit DroppedLabels(std::function<void(const std::string&)> sink = {});
+  void report(const std::vector<PlacedText>& dropped, double t);
+
+ private:
+  std::function<void(const std::string&)> sink_;
+  std::vector<std::string> seen_;
+  int told_ = 0;
+};
 
 // a unit vector along v, or `fallback` when v has no length
 sim::core::Vec2 directionOr(const sim::core::Vec2& v, const sim::core::Vec2& fallback);

@@ -77,13 +77,14 @@ Image SceneRun::paint(const State& state, const std::vector<DrawList>& ghosts) {
 }
 
 Image SceneRun::titleCard() {
-  return composeTitleCard(frameAt(0.0), titleOf(def_), def_.model.description, style_, *text_);
+  if (!text_) throw std::logic_error("SceneRun::titleCard needs a text renderer");
+  return composeTitleCard(camera_.widthPx(), camera_.heightPx(), titleOf(def_), def_.model.description, style_, *text_);
 }
 
-DrawList SceneRun::drawListAt(double t, int strobe) {
+DrawList SceneRun::drawListAt(double t, int strobe, std::vector<PlacedText>* placed) {
   const std::vector<DrawList> ghosts = advance(state_, t, strobe);
   DrawList list;
-  painter_.paint(state_.world, state_.history, ghosts, list);
+  painter_.paint(state_.world, state_.history, ghosts, list, placed);
   return list;
 }
 

@@ -27,8 +27,9 @@ class SceneRun {
   // that many earlier poses at t·i/strobe (i = 0 … strobe − 1) drawn fading behind the present one,
   // which needs a fresh run (nothing drawn yet). Throws sim::world::Diverged.
   Image frameAt(double t, int strobe = 0);
-  // the draw calls of the frame at time t, without GL (the draw-list level of the tests)
-  DrawList drawListAt(double t, int strobe = 0);
+  // the draw calls of the frame at time t, without GL (the draw-list level of the tests); `placed`
+  // (when given) is told where each text went (its box in pixels, the anchor it names)
+  DrawList drawListAt(double t, int strobe = 0, std::vector<PlacedText>* placed = nullptr);
   // the frames at each of `instants` (s, in any order) from a fresh run, each exactly what a fresh
   // run's frameAt(t, strobe) paints, told to `shot` with the instant's index, earliest first.
   // Without ghosts the world runs once: a fresh run advanced to t takes the same steps as a longer
@@ -39,7 +40,7 @@ class SceneRun {
   void framesAt(const std::vector<double>& instants, int strobe, const std::function<void(size_t, Image)>& shot);
   // the same as draw lists, without GL
   void drawListsAt(const std::vector<double>& instants, int strobe, const std::function<void(size_t, DrawList)>& shot);
-  // the title card over the frame at t = 0 (title_card.h); needs the GL context
+  // the title card alone (title_card.h), the frame's size; needs the text renderer
   Image titleCard();
   // video frames say when they are slowed (empty: never), see FramePainter
   void showSlowMotion(FramePainter::SlowFactor factorAt) { painter_.showSlowMotion(std::move(factorAt)); }

@@ -50,7 +50,6 @@ Vec2 onCircle(const Vec2& center, double radius, double angle) {
 TeachingArrows::TeachingArrows(const render::scene::Scene& def, const Camera& camera, const RunSurvey& survey,
                                double velocityScale)
     : px_(camera.pixelSize()),
-      em_(fontSizeFor(def.render, camera.heightPx()) * camera.pixelSize()),
       viewHeight_(camera.worldHeight()),
       velocityScale_(velocityScale),
       forceScale_(arrowScale(def.render.overlays.forceScale, survey.maxForce, camera)),
@@ -109,7 +108,7 @@ void TeachingArrows::label(const Arrow& a, const std::string& value, const Vec2&
                            Canvas& draw) const {
   const std::string name = a.def.label.empty() ? defaultLabel(a.def.show) : a.def.label;
   const std::string text = a.def.value && !value.empty() ? name + value : name;
-  draw.text(labelBeyond(anchor, direction, text, em_), text, {Role::Label, a.def.body, 1.0});
+  draw.label(anchor, direction, text, {Role::Label, a.def.body, 1.0});
 }
 
 void TeachingArrows::drawOne(const Arrow& a, int index, const sim::world::World& world, const History& history,
@@ -164,8 +163,8 @@ void TeachingArrows::drawOne(const Arrow& a, int index, const sim::world::World&
       draw.arrow(b.x, b.x + length * x, style);
       draw.arrow(b.x, b.x + length * y, style);
       const Pen text{Role::Label, a.def.body, 1.0};
-      draw.text(labelBeyond(b.x + length * x, x, "x_b", em_), "x_b", text);
-      draw.text(labelBeyond(b.x + length * y, y, "y_b", em_), "y_b", text);
+      draw.label(b.x + length * x, x, "x_b", text);
+      draw.label(b.x + length * y, y, "y_b", text);
       break;
     }
     case Show::Path: {

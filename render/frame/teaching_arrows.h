@@ -45,7 +45,7 @@ class TeachingArrows {
   void label(const Arrow& a, const std::string& value, const Vec2& anchor, const Vec2& direction, Canvas& draw) const;
 
   std::vector<Arrow> arrows_;
-  double px_, em_, viewHeight_;                         // world lengths of a pixel, of a line of text, of the view
+  double px_, viewHeight_;                              // world lengths of a pixel and of the view
   double velocityScale_, forceScale_, momentumScale_;   // m of arrow per m/s, N, kg·m/s
   double maxOmega_, maxTorque_;                         // the run's, for the curved arrows' sweeps
 };

@@ -1,5 +1,6 @@
-// The card a lecture video opens with: the first frame faded toward the background, the title large
-// and the scene's description wrapped below it, both centered.
+// The card a lecture video opens with: the title large and the scene's description wrapped below it,
+// both centered on the background, and nothing else: no bodies, no clock, no caption, since the run
+// has not started while the card shows.
 #pragma once
 
 #include <string>
@@ -11,8 +12,8 @@
 namespace render::frame {
 using namespace render::draw;
 
-// `frame` with the card over it; text sizes follow the style's font size (the title 2.2 times it)
-Image composeTitleCard(Image frame, const std::string& title, const std::string& description, const Style& style,
+// the card, `width` × `height` pixels; text sizes follow the style's font size (the title 2.2 times it)
+Image composeTitleCard(int width, int height, const std::string& title, const std::string& description, const Style& style,
                        TextRenderer& text);
 
 }  // namespace render::frame

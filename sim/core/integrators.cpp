@@ -72,34 +72,4 @@ void integrate(Integrator method, const Dynamics& f, double t, double h, States&
   }
 }
 
-namespace {
-constexpr std::array<std::pair<Integrator, std::string_view>, 4> kNames{{
-    {Integrator::ExplicitEuler, "explicit_euler"},
-    {Integrator::SymplecticEuler, "symplectic_euler"},
-    {Integrator::Midpoint, "midpoint"},
-    {Integrator::Rk4, "rk4"},
-}};
-}  // namespace
-
-std::string_view integratorName(Integrator method) {
-  for (const auto& [m, name] : kNames)
-    if (m == method) return name;
-  return "?";
-}
-
-std::optional<Integrator> integratorFromName(std::string_view name) {
-  for (const auto& [m, n] : kNames)
-    if (n == name) return m;
-  return std::nullopt;
-}
-
-const std::vector<std::string_view>& integratorNames() {
-  static const std::vector<std::string_view> names = [] {
-    std::vector<std::string_view> v;
-    for (const auto& entry : kNames) v.push_back(entry.second);
-    return v;
-  }();
-  return names;
-}
-
 }  // namespace sim::core

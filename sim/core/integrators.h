@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "sim/core/body.h"
+#include "sim/core/enum_names.h"
 
 namespace sim::core {
 
@@ -36,9 +37,14 @@ void midpointStep(const Dynamics& f, double t, double h, States& y);
 void rk4Step(const Dynamics& f, double t, double h, States& y);
 void integrate(Integrator method, const Dynamics& f, double t, double h, States& y);
 
-// names as written in scenes and on the command line: explicit_euler, symplectic_euler, midpoint, rk4
-std::string_view integratorName(Integrator method);
-std::optional<Integrator> integratorFromName(std::string_view name);
-const std::vector<std::string_view>& integratorNames();
+// names as written in scenes and on the command line
+inline constexpr EnumNames<Integrator, 4> kIntegratorNames{{{
+    {Integrator::ExplicitEuler, "explicit_euler"},
+    {Integrator::SymplecticEuler, "symplectic_euler"},
+    {Integrator::Midpoint, "midpoint"},
+    {Integrator::Rk4, "rk4"},
+}}};
+inline std::string_view integratorName(Integrator method) { return kIntegratorNames.name(method); }
+inline std::optional<Integrator> integratorFromName(std::string_view name) { return kIntegratorNames.parse(name); }
 
 }  // namespace sim::core

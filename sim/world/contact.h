@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "sim/collision/collide.h"
+#include "sim/core/enum_names.h"
 
 namespace sim::world {
 using namespace sim::core;
@@ -21,9 +22,16 @@ enum class CollisionMethod {
   Sequential,  // fixed steps, sequential impulses with warm starting, friction, position correction
 };
 
-std::string_view collisionMethodName(CollisionMethod method);
-std::optional<CollisionMethod> collisionMethodFromName(std::string_view name);
-const std::vector<std::string_view>& collisionMethodNames();
+// names as written in scenes and on the command line
+inline constexpr EnumNames<CollisionMethod, 5> kCollisionMethodNames{{{
+    {CollisionMethod::Auto, "auto"},
+    {CollisionMethod::None, "none"},
+    {CollisionMethod::Event, "event"},
+    {CollisionMethod::Isolated, "isolated"},
+    {CollisionMethod::Sequential, "sequential"},
+}}};
+inline std::string_view collisionMethodName(CollisionMethod method) { return kCollisionMethodNames.name(method); }
+inline std::optional<CollisionMethod> collisionMethodFromName(std::string_view name) { return kCollisionMethodNames.parse(name); }
 
 // solver state of one manifold point (sequential impulses, Catto 2006)
 struct ContactPointState {
@@ -60,6 +68,9 @@ struct ImpactRecord {
 struct RestingRecord {
   double t = 0.0;
   int a = 0, b = 0;
+  // the pair still slides or turns while it touches (a plastic impact of a spinning bar): it stays in
+  // contact rather than coming to rest
+  bool moving = false;
 };
 
 // pair coefficients (documented in scenes/README.md): the larger restitution (a bouncy ball

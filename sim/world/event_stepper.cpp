@@ -282,7 +282,11 @@ class EventStepper final : public Method {
         if (vn != 0.0) applyImpulsePair(a, b, r, (-vn / inverseEffectiveMass(a, b, r, n)) * n);
       }
       restingPairs_.emplace_back(c.a, c.b);
-      world.resting.push_back({t, c.a, c.b});
+      // still moving: any point of either body faster than the resting speed
+      const auto moves = [](const Body& body) {
+        return !body.isStatic && body.v.norm() + std::abs(body.omega) * boundingRadius(body.shape) > settings::kRestingSpeed;
+      };
+      world.resting.push_back({t, c.a, c.b, moves(a) || moves(b)});
     }
   }
 

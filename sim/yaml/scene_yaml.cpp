@@ -16,12 +16,6 @@ using namespace sim::scene;
 
 namespace {
 
-std::string joined(const std::vector<std::string_view>& names) {
-  std::string s;
-  for (auto n : names) s += (s.empty() ? "" : ", ") + std::string(n);
-  return s;
-}
-
 class SceneReader : public Reader {
  public:
   SceneReader(const SceneSource& source, const OtherKeys& others) : Reader(source.file), others_(others) {}
@@ -50,11 +44,11 @@ class SceneReader : public Reader {
       checkKeys(sim, {"integrator", "dt", "collisions", "iterations", "position_iterations", "max_steps"}, "sim");
       optional(sim, "max_steps", s.maxSteps, &Reader::positive);
       if (sim["collisions"])
-        s.collisions = named(sim["collisions"], "collisions", collisionMethodFromName, joined(collisionMethodNames()));
+        s.collisions = named(sim["collisions"], "collisions", collisionMethodFromName, kCollisionMethodNames.list());
       if (sim["iterations"]) s.velocityIterations = wholeNumber(sim["iterations"], "iterations", 1, 1000);
       if (sim["position_iterations"]) s.positionIterations = wholeNumber(sim["position_iterations"], "position_iterations", 0, 1000);
       if (sim["integrator"])
-        s.integrator = named(sim["integrator"], "integrator", integratorFromName, joined(integratorNames()));
+        s.integrator = named(sim["integrator"], "integrator", integratorFromName, kIntegratorNames.list());
       optional(sim, "dt", s.dt, &Reader::positive);
     }
     const YAML::Node stepsAt = root["sim"] && root["sim"]["dt"] ? root["sim"]["dt"] : root["duration"] ? root["duration"] : root;

@@ -146,6 +146,17 @@ fi
 expect "simulate prints a text table by default" 0 out "poll_bar_impulse [end]: t = 1" \
   simulate "$POLL" --variant end --until 1
 
+# a plastic contact that goes on sliding and turning stays in contact; a ball lying still came to rest
+PLASTIC="$SRC/scenes/lecture/06_body_obstacle_collision.yaml"
+expect "a bar that keeps turning on the floor stays in contact (not 'came to rest')" 0 out \
+  "'floor' and 'bar' stay in contact from t = 0.70799" simulate "$PLASTIC" --variant plastic
+[[ "$out" != *"came to rest"* ]] && ok "the turning bar is never said to have come to rest" ||
+  not_ok "the turning bar is never said to have come to rest"
+run simulate "$PLASTIC" --variant plastic --json
+json_check "the JSON says the resting contact still moves" 'len(d["resting"]) >= 1' 'all(r["moving"] for r in d["resting"])'
+expect "a ball bouncing to a stop came to rest" 0 out "'floor' and 'ball' came to rest at t = 3.63469" \
+  check "$SRC/scenes/bouncing_ball.yaml"
+
 # ---- simulate: bad input exits 2 -----------------------------------------------------------
 
 expect "a missing scene file exits 2 naming the file" 2 err "missing.yaml: cannot open" simulate missing.yaml

@@ -22,11 +22,14 @@ cp "$SRC/scenes/two_bodies.yaml" pack/c_two.yaml
 run lecture pack "${SMALL[@]}" -o o --list
 sort out >planned
 cat >want <<'LIST'
+o/index.html
+o/poll_bar_impulse/page.json
 o/poll_bar_impulse/poll_bar_impulse-center.mp4
 o/poll_bar_impulse/poll_bar_impulse-center.png
 o/poll_bar_impulse/poll_bar_impulse-end.mp4
 o/poll_bar_impulse/poll_bar_impulse-end.png
 o/poll_bar_impulse/poll_bar_impulse-panels-t2.png
+o/three_collisions_poll/page.json
 o/three_collisions_poll/three_collisions_poll-A.mp4
 o/three_collisions_poll/three_collisions_poll-A.png
 o/three_collisions_poll/three_collisions_poll-B.mp4
@@ -34,11 +37,12 @@ o/three_collisions_poll/three_collisions_poll-B.png
 o/three_collisions_poll/three_collisions_poll-C.mp4
 o/three_collisions_poll/three_collisions_poll-C.png
 o/three_collisions_poll/three_collisions_poll-panels-impact1.png
+o/two_bodies/page.json
 o/two_bodies/two_bodies.mp4
 o/two_bodies/two_bodies.png
 LIST
 [ "$rc" -eq 0 ] && cmp -s planned want && [ ! -e o ]
-check "--list plans each variant's video and poster and the panels, and renders nothing" $? "$(diff planned want)"
+check "--list plans each variant's video and poster, the panels, each scene's record and the page, and renders nothing" $? "$(diff planned want)"
 
 run lecture pack "${SMALL[@]}" -o o -j 2
 find o -type f | sort >written
@@ -46,9 +50,14 @@ find o -type f | sort >written
 check "the pack writes exactly what --list planned" $? "$(diff written want)"
 [ "$(grep -c '^\[[0-9]/3\] .*: [0-9]* outputs in ' out)" -eq 3 ]
 check "one line per scene as its job ends" $?
-grep -q '^three_collisions_poll  *ok  *7  ' out && grep -q '^two_bodies  *ok  *2  ' out &&
-  grep -q '^total: 3 scenes, 14 outputs, .* s wall time (2 at a time)$' out
+grep -q '^three_collisions_poll  *ok  *8  ' out && grep -q '^two_bodies  *ok  *3  ' out &&
+  grep -q '^total: 3 scenes, 18 outputs with the page, .* s wall time (2 at a time)$' out
 check "the summary: each scene with its outputs, then the total wall time" $?
+grep -qx 'page: o/index.html (3 scenes)' out
+check "the page is rebuilt from the pack's records once the jobs end" $?
+[ "$(grep -c '<section id="scene-' o/index.html)" -eq 3 ] && grep -q '<video controls preload="metadata" width="160" height="90" poster="two_bodies/two_bodies.png"' o/index.html &&
+  grep -q '<span class="answer">answer</span> · impact 1' o/index.html && grep -q '<td class="ok">ok</td>' o/index.html
+check "the page: a section per scene, its videos at their size with posters, panels, checks" $?
 bad_png=0
 for f in $(grep '\.png$' want); do
   [ "$(head -c 8 "$f" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ] || bad_png=1
@@ -62,8 +71,25 @@ check "no temporary files left" $?
 # one scene is one job, in this process: the files it wrote, then its row
 run lecture pack/c_two.yaml "${SMALL[@]}" -o one -j 1
 [ "$rc" -eq 0 ] && grep -qx 'wrote one/two_bodies/two_bodies.mp4' out && grep -qx 'wrote one/two_bodies/two_bodies.png' out &&
-  grep -q '^two_bodies  *ok  *2 ' out
-check "a single scene runs in process and says what it wrote" $?
+  grep -qx 'wrote one/two_bodies/page.json' out && grep -q '^two_bodies  *ok  *3 ' out && grep -qx 'page: one/index.html (1 scene)' out
+check "a single scene runs in process and says what it wrote, then the page" $?
+
+# the page alone, from what a folder holds: the scenes rendered one by one, as GNU Parallel or a
+# Slurm array runs them, then --page; a bad record is reported at FILE:LINE:COL, the page untouched
+run lecture pack/a_poll.yaml "${SMALL[@]}" -o one -j 1
+cp one/index.html before.html
+rm one/index.html
+run lecture --page one
+[ "$rc" -eq 0 ] && grep -qx 'wrote one/index.html (2 scenes)' out && cmp -s one/index.html before.html
+check "--page rebuilds the page alone, the same page the last job wrote" $? "exit $rc"
+printf '{"scene": "two_bodies",\n "file": [7]}\n' >one/two_bodies/page.json
+expect "--page with a malformed record: exit 2 at its FILE:LINE:COL" 2 "one/two_bodies/page.json:2:10: 'file' has the wrong type" \
+  lecture --page one
+cmp -s one/index.html before.html
+check "a failed --page leaves the page as it was" $?
+expect "--page on a missing folder" 2 "nope: no such directory" lecture --page nope
+expect "--page with scenes too" 2 "leave out the scenes" lecture pack --page one
+expect "no scenes and no --page" 2 "give scene files or directories" lecture -o one
 
 # errors before anything renders: exit 2 with FILE:LINE:COL, nothing written
 expect "a missing directory" 2 "nope: no such file or directory" lecture nope -o o2
@@ -98,6 +124,8 @@ check "a failing scene: exit 1, named in the summary with its message" $? "exit 
 [ -f o3/poll_bar_impulse/poll_bar_impulse-panels-t2.png ] && [ -f o3/three_collisions_poll/three_collisions_poll-C.mp4 ] &&
   [ ! -e o3/two_bodies/two_bodies.mp4 ] && ! find o3 -name '*.part*' | grep -q .
 check "the other scenes finish; the failed one leaves no half file" $?
+[ ! -e o3/two_bodies/page.json ] && grep -qx 'page: o3/index.html (2 scenes)' out && ! grep -q 'scene-two_bodies' o3/index.html
+check "the page shows the scenes that finished, not the failed one" $?
 
 # Ctrl-C: the jobs are told too; exit 130 and no half file
 "$BIN" lecture pack --size 320x180 --fps 200 -o o4 >out 2>err &

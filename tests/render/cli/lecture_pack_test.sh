@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The lecture pack end to end (ctest lecture_pack): `rigidreel lecture PACK` at a small size and
 # frame rate writes every output that `rigidreel lecture PACK --list` plans (each variant's video
-# and poster, each panel image), every video H.264 at that size and every PNG a PNG. A missing or
-# empty pack fails: a test that cannot fail is no test.
+# and poster, each panel image, each scene's record, the page), every video H.264 at that size,
+# every PNG a PNG, every record JSON, and the page valid HTML by Debian's tidy in its strict mode,
+# with a section per scene. A missing or empty pack fails: a test that cannot fail is no test.
 #
 # usage: bash tests/lecture_pack_test.sh <path-to-rigidreel> <pack-dir> <work-dir>
 set -u
@@ -43,6 +44,14 @@ while read -r path; do
            [ "$got" = "h264,160,90" ] || { echo "FAIL: $path: ffprobe says '$got', expected h264,160,90"; failed=1; } ;;
     *.png) [ "$(head -c 8 "$path" 2>/dev/null | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ] ||
              { echo "FAIL: $path is missing or not a PNG"; failed=1; } ;;
+    */page.json) python3 -c 'import json, sys; json.load(open(sys.argv[1]))' "$path" 2>/dev/null ||
+             { echo "FAIL: $path is missing or not JSON"; failed=1; } ;;
+    */index.html)
+      # no error and no warning from tidy, tags and attributes checked against HTML5
+      problems=$(tidy -q -e --strict-tags-attributes yes --warn-proprietary-attributes yes "$path" 2>&1)
+      [ $? -eq 0 ] && [ -z "$problems" ] || { echo "FAIL: $path is not valid HTML: $problems"; failed=1; }
+      [ "$(grep -c '<section id="scene-' "$path")" -eq "$(ls "$PACK"/*.yaml | wc -l)" ] ||
+        { echo "FAIL: $path has not a section per scene"; failed=1; } ;;
     *) echo "FAIL: unexpected output $path"; failed=1 ;;
   esac
 done <"$3/expected"
@@ -50,5 +59,5 @@ done <"$3/expected"
 grep -q "outputs" "$3/summary" &&
   grep -q "^total: .* $(wc -l <"$3/expected") outputs" "$3/summary" || { echo "FAIL: the summary's count differs from --list"; failed=1; }
 [ "$(find "$OUT" -type f | wc -l)" -eq "$(wc -l <"$3/expected")" ] || { echo "FAIL: files written differ from --list"; failed=1; }
-[ "$failed" -eq 0 ] && echo "ok: every planned output exists and is valid"
+[ "$failed" -eq 0 ] && echo "ok: every planned output exists and is valid, the page too"
 exit "$failed"

@@ -66,3 +66,12 @@ TEST_CASE("a missing font is an error that names it") {
   CHECK_THROWS_WITH_AS(render::draw::TextRenderer("/nonexistent/font.ttf"), doctest::Contains("/nonexistent/font.ttf"),
                        std::runtime_error);
 }
+
+TEST_CASE("the line height in pixels without FreeType is the one FreeType measures, at every size") {
+  render::draw::TextRenderer text;
+  for (int size = 6; size <= 64; ++size) {
+    const render::draw::TextBox box = text.measure("Ag", size);
+    CAPTURE(size);
+    CHECK(render::draw::lineHeightPx(size) == box.ascent + box.descent);
+  }
+}

@@ -45,9 +45,9 @@ TEST_CASE("the poll at t = 0.75: static floor first, trail, bar, held impulse, v
         "polygon Body#0 (-0.265236,-1.97193) (-0.0667964,-1.99686) (0.431903,1.97193) (0.233463,1.99686)\n"
         "arrow Impulse#0@0.5 (-1.04216,2) -> (0,2)\n"
         "arrow Velocity#0 (0.0833333,0) -> (1.1255,0)\n"
+        "text Caption (-5.36714,2.31167) \"t = 0.750 s\"\n"
         "text Label#0 (0.0833333,0) \"bar\"\n"
-        "text Label#1 (0,-3) \"floor\"\n"
-        "text Caption (-5.36714,2.31167) \"t = 0.750 s\"\n");
+        "text Label#1 (0,-3) \"floor\"\n");
 }
 
 TEST_CASE("a strobe frame has its ghosts, faint to less faint, behind the present bar") {

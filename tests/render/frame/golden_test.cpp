@@ -5,6 +5,7 @@
 // byte-identical PNGs.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -218,8 +219,24 @@ render: {sat: true, size: [320, 180], camera: {center: [0, 0.5], height: 1.6}, l
 )", 0.0));
 }
 
-TEST_CASE("golden: a title card over the first frame, faded") {
-  checkGolden("title_card", InlineRun(kPoll, "lecture").run.titleCard());
+TEST_CASE("golden: a title card shows only the card: the title and the description, no bodies, clock or caption") {
+  InlineRun lecture(kPoll, "lecture");
+  const Image card = lecture.run.titleCard();
+  checkGolden("title_card", card);
+  // the text is gray on white: a pixel of the blue bar's color would be the run showing through
+  long colored = 0;
+  for (int y = 0; y < card.height; ++y)
+    for (int x = 0; x < card.width; ++x) {
+      const uint8_t* p = card.pixel(x, y);
+      colored += std::max({p[0], p[1], p[2]}) - std::min({p[0], p[1], p[2]}) > 8;
+    }
+  CHECK(colored == 0);
+  // where the clock and the caption would be (the top and bottom bands), only the background
+  long marked = 0;
+  for (int y = 0; y < card.height; ++y)
+    for (int x = 0; x < card.width; ++x)
+      if (y < card.height / 8 || y >= card.height - card.height / 8) marked += card.pixel(x, y)[0] != 255;
+  CHECK(marked == 0);
 }
 
 TEST_CASE("golden: a caption of two lines and the slow-motion note of a video frame") {

@@ -4,11 +4,13 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include "render/frame/scene_run.h"
+#include "render/scene/scene_style.h"
 #include "sim/yaml/scene_yaml.h"
 #include "support/drawn_scene.h"
 #include "support/golden_compare.h"
@@ -30,6 +32,89 @@ std::vector<fs::path> lectureScenes() {
 }
 
 }  // namespace
+
+namespace {
+
+// a text's box as the text renderer draws it (text.cpp): a label centered on its point, a caption
+// with its top-left corner there, whole pixels
+render::frame::PixelBox drawnBox(const render::draw::DrawList::Call& call, const render::draw::Camera& camera,
+                                 render::draw::TextRenderer& text, int fontPx) {
+  const render::draw::TextBox box = text.measure(call.text, fontPx);
+  const sim::core::Vec2 p = camera.toPixel(call.points[0]);
+  double left = p.x(), top = p.y();
+  if (call.style.role != render::draw::Role::Caption) left -= 0.5 * box.width, top -= 0.5 * (box.ascent + box.descent);
+  left = std::lround(left), top = std::lround(top);
+  return {left, top, left + box.width, top + box.ascent + box.descent};
+}
+
+// every text of the frames at `times` (ascending): no two boxes overlap, and no label covers the
+// anchor of another (what it names); returns how many texts the frames have
+size_t checkTextsApart(const render::scene::Scene& def, const std::vector<double>& times, render::draw::TextRenderer& text) {
+  const render::frame::RunSurvey survey = render::frame::surveyRun(def);
+  const render::draw::Camera camera = render::frame::cameraFor(def, survey);
+  render::frame::SceneRun run(def, camera, survey, nullptr, &text);
+  const int fontPx = render::scene::fontSizeFor(def.render, camera.heightPx());
+  size_t count = 0;
+  for (double t : times) {
+    std::vector<render::frame::PlacedText> placed;
+    const render::draw::DrawList list = run.drawListAt(t, 0, &placed);
+    std::vector<render::frame::PixelBox> boxes;
+    std::vector<std::string> texts;
+    for (const render::draw::DrawList::Call& c : list.calls()) {
+      // labels reach the canvas placed, as text
+      CHECK(c.kind != render::draw::DrawList::Kind::Label);
+      if (c.kind != render::draw::DrawList::Kind::Text) continue;
+      boxes.push_back(drawnBox(c, camera, text, fontPx));
+      texts.push_back(c.text);
+    }
+    REQUIRE(boxes.size() == placed.size());
+    for (size_t i = 0; i < boxes.size(); ++i)
+      for (size_t j = i + 1; j < boxes.size(); ++j) {
+        INFO("'" << texts[i] << "' and '" << texts[j] << "' at t = " << t);
+        CHECK_FALSE(boxes[i].overlaps(boxes[j]));
+      }
+    // (text fixed to the frame, the clock and the caption, has no anchor and may lie over one)
+    for (size_t i = 0; i < placed.size(); ++i) {
+      if (!placed[i].anchor) continue;
+      for (size_t j = 0; j < boxes.size(); ++j) {
+        INFO("'" << texts[j] << "' covers the anchor of '" << texts[i] << "' at t = " << t);
+        if (j != i && placed[j].anchor) CHECK_FALSE(boxes[j].contains(*placed[i].anchor));
+      }
+    }
+    count += boxes.size();
+  }
+  return count;
+}
+
+}  // namespace
+
+TEST_CASE("every text of every lecture scene stands apart: no two overlap, none covers what another names") {
+  render::draw::TextRenderer text;
+  size_t frames = 0, texts = 0;
+  for (const fs::path& file : lectureScenes()) {
+    const render::scene::Scene base = drawn_scene::loadFile(file.string());
+    std::vector<std::string> variants = base.model.variantNames;
+    if (variants.empty()) variants.push_back("");
+    for (const std::string& variant : variants) {
+      CAPTURE(file.string());
+      CAPTURE(variant);
+      render::scene::Scene def = drawn_scene::loadFile(file.string(), variant);
+      def.render.width = kWidth;
+      def.render.height = kHeight;
+      // the golden frame's instant, the poster's, the poll panels', and every tenth of the run
+      std::vector<double> times = {0.5 * def.model.duration, def.model.duration};
+      for (double t : base.render.panels.times)
+        if (t <= def.model.duration) times.push_back(t);
+      for (int k = 0; k < 10; ++k) times.push_back(0.1 * k * def.model.duration);
+      std::sort(times.begin(), times.end());
+      times.erase(std::unique(times.begin(), times.end()), times.end());
+      texts += checkTextsApart(def, times, text);
+      frames += times.size();
+    }
+  }
+  MESSAGE(texts << " texts on " << frames << " frames");
+  CHECK(frames >= 200);
+}
 
 TEST_CASE("golden: a frame of every lecture scene at half its duration") {
   const std::vector<fs::path> files = lectureScenes();

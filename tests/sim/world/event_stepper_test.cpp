@@ -256,6 +256,8 @@ TEST_CASE("bouncing ball: apexes fall by c_r², rest at t₀(1 + c_r)/(1 − c_r
   // flights it leaves out add up to 2 v_N/(g (1 − c_r)) ≤ 2 kRestingSpeed/(g (1 − c_r)) ≈ 1.02e-6 s,
   // so the recorded time is at most that early (and never late beyond round-off).
   REQUIRE(w.resting.size() == 1);
+  // the ball lies still on the floor: it came to rest
+  CHECK_FALSE(w.resting[0].moving);
   const double zeno = t0 * (1.0 + cr) / (1.0 - cr);
   const double neglected = 2.0 * sim::core::settings::kRestingSpeed / (g * (1.0 - cr));
   REQUIRE(neglected < 2e-6);
@@ -386,4 +388,19 @@ bodies:
   - {name: b, shape: {box: [1, 1]}, position: [1, 0.3]}
 )");
   CHECK_NOTHROW(touching.start());
+}
+
+TEST_CASE("a plastic contact that keeps turning while it touches stays in contact; it does not come to rest") {
+  // the lecture's body-obstacle collision, plastic: the bar lands on a corner, spins down and lies on
+  // the floor while it still slides and turns
+  sim::world::World w = build(R"(
+world: {restitution: 0}
+sim: {collisions: event}
+bodies:
+  - {name: floor, shape: {plane: {point: [0, 0], normal: [0, 1]}}}
+  - {name: bar, shape: {box: [2.0, 0.2]}, mass: 1, position: [0, 1.3910538555739002], angle: 0.3, velocity: [0, -2]}
+)");
+  w.advanceTo(1.2);
+  REQUIRE_FALSE(w.resting.empty());
+  for (const sim::world::RestingRecord& r : w.resting) CHECK(r.moving);
 }

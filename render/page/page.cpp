@@ -1,0 +1,257 @@
+#include "render/page/page.h"
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+#include "render/jobs/atomic_file.h"
+#include "render/jobs/exit_status.h"
+
+namespace render::page {
+using namespace render::jobs;
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// a number as people read it: up to `digits` significant digits, no trailing zeros
+std::string shown(double x, int digits = 4) {
+  if (!std::isfinite(x)) return "—";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, x);
+  return buf;
+}
+
+std::string shownValues(const std::vector<double>& v) {
+  if (v.size() == 1) return shown(v[0], 6);
+  std::string s = "(";
+  for (size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + shown(v[i], 6);
+  return s + ")";
+}
+
+// an id for a scene's section: letters, digits, '-' and '_' (HTML ids have no spaces)
+std::string sectionId(const std::string& scene) {
+  std::string id = "scene-";
+  for (unsigned char c : scene) id += std::isalnum(c) || c == '-' || c == '_' ? static_cast<char>(c) : '-';
+  return id;
+}
+
+// an exclusive lock on a directory, held while the object lives (flock(2) on the directory itself:
+// no lock file left behind). Where locks are not supported it goes without: `--page` rebuilds
+class DirectoryLock {
+ public:
+  explicit DirectoryLock(const std::string& dir) : fd_(::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC)) {
+    if (fd_ >= 0) ::flock(fd_, LOCK_EX);
+  }
+  ~DirectoryLock() {
+    if (fd_ >= 0) ::close(fd_);  // closing releases the lock
+  }
+  DirectoryLock(const DirectoryLock&) = delete;
+  DirectoryLock& operator=(const DirectoryLock&) = delete;
+
+ private:
+  int fd_;
+};
+
+const char* const kStyle = R"(
+:root { color-scheme: light; --ink: #1f1f1f; --muted: #5f6368; --line: #dadce0; --panel: #f6f7f9; --accent: #3b6ea5; }
+* { box-sizing: border-box; }
+body { margin: 0; font: 16px/1.5 "DejaVu Sans", system-ui, sans-serif; color: var(--ink); background: #fff; }
+header, main, footer { max-width: 1200px; margin: 0 auto; padding: 0 24px; }
+header { padding-top: 24px; border-bottom: 1px solid var(--line); }
+h1 { font-size: 28px; margin: 0 0 4px; }
+h2 { font-size: 22px; margin: 0 0 8px; }
+h3 { font-size: 16px; margin: 16px 0 8px; }
+a { color: var(--accent); }
+.muted { color: var(--muted); font-size: 14px; }
+nav ol { columns: 2; column-gap: 32px; padding-left: 24px; margin: 8px 0 16px; }
+section { padding: 24px 0; border-bottom: 1px solid var(--line); }
+.description { max-width: 80ch; white-space: pre-line; }
+/* a lone video or panel takes the width; two or three share it */
+.media { display: grid; grid-template-columns: repeat(auto-fit, minmax(360px, 1fr)); gap: 16px; }
+figure { margin: 0; padding: 8px; background: var(--panel); border-radius: 6px; }
+video, img { display: block; width: 100%; height: auto; background: #fff; border: 1px solid var(--line); }
+figcaption { font-size: 14px; margin-top: 6px; }
+.question { color: #8a4b08; font-weight: bold; }
+.answer { color: #1e6b34; font-weight: bold; }
+table { border-collapse: collapse; font-size: 14px; margin-top: 4px; }
+th, td { border-bottom: 1px solid var(--line); padding: 4px 10px; text-align: left; vertical-align: top; }
+td.number { text-align: right; font-variant-numeric: tabular-nums; white-space: nowrap; }
+.ok { color: #1e6b34; }
+.failed { color: #b3261e; font-weight: bold; }
+footer { padding-top: 16px; padding-bottom: 32px; }
+)";
+
+// a file of the scene's folder, relative to the page
+std::string href(const SceneRecord& r, const std::string& file) { return urlOf(r.scene + "/" + file); }
+
+void writeSection(std::ostream& h, const PageScene& s) {
+  const SceneRecord& r = s.record;
+  h << "<section id=\"" << sectionId(r.scene) << "\">\n<h2>" << escapeHtml(r.title) << "</h2>\n";
+  h << "<p class=\"muted\"><code>" << escapeHtml(r.file) << "</code></p>\n";
+  if (!r.description.empty()) h << "<p class=\"description\">" << escapeHtml(r.description) << "</p>\n";
+
+  h << "<h3>" << (r.videos.size() == 1 ? "Video" : "Videos") << "</h3>\n<div class=\"media\">\n";
+  for (size_t i = 0; i < r.videos.size(); ++i) {
+    const VideoRecord& v = r.videos[i];
+    const MediaInfo& m = s.videos[i];
+    h << "<figure>\n<video controls preload=\"metadata\" width=\"" << m.width << "\" height=\"" << m.height
+      << "\" poster=\"" << href(r, v.poster) << "\" data-duration=\"" << shown(m.duration, 9) << "\">"
+      << "<source src=\"" << href(r, v.video) << "\" type=\"video/mp4\">"
+      << "<a href=\"" << href(r, v.video) << "\">" << escapeHtml(v.video) << "</a></video>\n";
+    h << "<figcaption>" << (v.variant.empty() ? "" : "<strong>" + escapeHtml(v.variant) + "</strong> · ") << m.width << "×"
+      << m.height << ", " << shown(v.fps) << " fps, " << shown(m.duration) << " s · <a href=\"" << href(r, v.video)
+      << "\">video</a> · <a href=\"" << href(r, v.poster) << "\">poster</a></figcaption>\n</figure>\n";
+  }
+  h << "</div>\n";
+
+  if (!r.panels.empty()) {
+    h << "<h3>Poll panels</h3>\n<div class=\"media\">\n";
+    for (size_t i = 0; i < r.panels.size(); ++i) {
+      const PanelRecord& p = r.panels[i];
+      const MediaInfo& m = s.panels[i];
+      const char* role = p.question ? "question" : "answer";
+      h << "<figure>\n<a href=\"" << href(r, p.image) << "\"><img src=\"" << href(r, p.image) << "\" width=\"" << m.width
+        << "\" height=\"" << m.height << "\" alt=\"" << escapeHtml(r.title) << ", every variant side by side, " << role << " ("
+        << escapeHtml(p.when) << ")\"></a>\n<figcaption><span class=\"" << role << "\">" << role << "</span> · "
+        << escapeHtml(p.when) << " · <a href=\"" << href(r, p.image) << "\">" << escapeHtml(p.image) << "</a></figcaption>\n</figure>\n";
+    }
+    h << "</div>\n";
+  }
+
+  if (!r.checks.empty()) {
+    h << "<h3>Closed forms, checked</h3>\n<table>\n<thead><tr><th>variant</th><th>t (s)</th><th>quantity</th>"
+         "<th>closed form</th><th>simulated</th><th>error</th><th>tolerance</th><th></th></tr></thead>\n<tbody>\n";
+    for (const CheckRecord& c : r.checks)
+      h << "<tr><td>" << escapeHtml(c.variant.empty() ? "—" : c.variant) << "</td><td class=\"number\">" << shown(c.time, 6)
+        << "</td><td>" << escapeHtml(c.quantity) << "</td><td class=\"number\">" << shownValues(c.expected)
+        << "</td><td class=\"number\">" << shownValues(c.actual) << "</td><td class=\"number\">" << shown(c.error, 2)
+        << "</td><td class=\"number\">" << shown(c.tolerance, 2) << "</td><td class=\"" << (c.passed() ? "ok\">ok" : "failed\">FAILED")
+        << "</td></tr>\n";
+    h << "</tbody>\n</table>\n";
+  }
+  h << "</section>\n";
+}
+
+}  // namespace
+
+std::string escapeHtml(const std::string& text) {
+  std::string out;
+  for (char c : text) switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&#39;"; break;
+      default: out += c;
+    }
+  return out;
+}
+
+std::string urlOf(const std::string& path) {
+  std::string out;
+  for (unsigned char c : path) {
+    if (std::isalnum(c) || c == '-' || c == '.' || c == '_' || c == '~' || c == '/') {
+      out += static_cast<char>(c);
+    } else {
+      char buf[4];
+      std::snprintf(buf, sizeof buf, "%%%02X", c);
+      out += buf;
+    }
+  }
+  return out;
+}
+
+std::vector<PageScene> readPack(const std::string& dir) {
+  std::error_code error;
+  if (!fs::is_directory(dir, error))
+    throw UsageError(dir + ": no such directory; give the folder that `rigidreel lecture -o DIR` writes");
+  std::vector<fs::path> folders;
+  for (const fs::directory_entry& e : fs::directory_iterator(dir, error)) {
+    const std::string name = e.path().filename().string();
+    if (!name.empty() && name[0] != '.' && e.is_directory() && fs::exists(e.path() / kRecordName)) folders.push_back(e.path());
+  }
+  std::sort(folders.begin(), folders.end());
+  std::vector<PageScene> scenes;
+  for (const fs::path& folder : folders) {
+    const std::string recordPath = (folder / kRecordName).string();
+    PageScene s{readSceneRecord(recordPath), {}, {}, {}};
+    const SceneRecord& r = s.record;
+    if (r.scene != folder.filename().string())
+      throw UsageError(recordPath + ": it names scene '" + r.scene + "' but lies in folder '" + folder.filename().string() +
+                       "'; render the scene again to rewrite it");
+    // every file it names, read: what the page says of it is what the file holds
+    const auto media = [&](const std::string& file, bool video) {
+      const std::string path = (folder / file).string();
+      const std::optional<MediaInfo> m = video ? mp4Info(path) : pngInfo(path);
+      if (!m)
+        throw UsageError(recordPath + ": '" + file + "' is " + (fs::exists(path) ? std::string("not a readable ") + (video ? "MP4" : "PNG") : "missing") +
+                         " in " + folder.string() + "/; render the scene again");
+      return *m;
+    };
+    for (const VideoRecord& v : r.videos) {
+      s.videos.push_back(media(v.video, true));
+      s.posters.push_back(media(v.poster, false));
+    }
+    for (const PanelRecord& p : r.panels) s.panels.push_back(media(p.image, false));
+    scenes.push_back(std::move(s));
+  }
+  return scenes;
+}
+
+std::string pageHtml(const std::vector<PageScene>& scenes) {
+  size_t videos = 0, panels = 0;
+  for (const PageScene& s : scenes) videos += s.record.videos.size(), panels += s.record.panels.size();
+  std::ostringstream h;
+  h << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+       "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
+       "<title>Lecture pack: "
+    << scenes.size() << " scenes</title>\n<style>" << kStyle << "</style>\n</head>\n<body>\n";
+  h << "<header>\n<h1>Lecture pack</h1>\n<p class=\"muted\">" << scenes.size() << " scenes, " << videos << " videos, " << panels
+    << " poll panels, rendered by <code>rigidreel lecture</code>. Every file is in this folder: copy it to any web server "
+       "as it is.</p>\n<nav>\n<h2>Contents</h2>\n<ol>\n";
+  for (const PageScene& s : scenes)
+    h << "<li><a href=\"#" << sectionId(s.record.scene) << "\">" << escapeHtml(s.record.title) << "</a></li>\n";
+  h << "</ol>\n</nav>\n</header>\n<main>\n";
+  for (const PageScene& s : scenes) writeSection(h, s);
+  h << "</main>\n<footer>\n<h2>How it was made</h2>\n<table>\n<thead><tr><th>scene</th><th>videos</th><th>frame size</th>"
+       "<th>fps</th><th>job (s)</th></tr></thead>\n<tbody>\n";
+  double total = 0.0;
+  for (const PageScene& s : scenes) {
+    const SceneRecord& r = s.record;
+    std::string sizes, rates;
+    for (size_t i = 0; i < r.videos.size(); ++i) {
+      const std::string size = std::to_string(s.videos[i].width) + "×" + std::to_string(s.videos[i].height);
+      if (sizes.find(size) == std::string::npos) sizes += (sizes.empty() ? "" : ", ") + size;
+      if (rates.find(shown(r.videos[i].fps)) == std::string::npos) rates += (rates.empty() ? "" : ", ") + shown(r.videos[i].fps);
+    }
+    total += r.seconds;
+    h << "<tr><td><a href=\"#" << sectionId(r.scene) << "\">" << escapeHtml(r.scene) << "</a></td><td class=\"number\">"
+      << r.videos.size() << "</td><td>" << sizes << "</td><td>" << rates << "</td><td class=\"number seconds\">" << shown(r.seconds, 3)
+      << "</td></tr>\n";
+  }
+  h << "</tbody>\n</table>\n<p class=\"muted seconds\">" << shown(total, 4)
+    << " s of job time in all; jobs that ran at once overlap in wall time.</p>\n</footer>\n</body>\n</html>\n";
+  return h.str();
+}
+
+size_t writePage(const std::string& dir) {
+  // one writer at a time: the last job to take the lock reads every record written before it
+  DirectoryLock lock(dir);
+  const std::vector<PageScene> scenes = readPack(dir);
+  if (scenes.empty())
+    throw UsageError(dir + ": no scenes here (no <scene>/" + kRecordName + "); render some with `rigidreel lecture SCENE... -o " + dir + "`");
+  AtomicFile page((fs::path(dir) / kPageName).string());
+  page.stream() << pageHtml(scenes);
+  page.commit();
+  return scenes.size();
+}
+
+}  // namespace render::page

@@ -1,0 +1,252 @@
+// The lecture pack's page (render/page): a scene's record written and read back, its faults at
+// FILE:LINE:COL; sizes and durations read from the files themselves; the page's HTML; the page
+// built from what a folder holds, atomically and by one writer at a time.
+#include "render/page/page.h"
+
+#include <doctest/doctest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <sstream>
+#include <thread>
+
+#include "render/jobs/exit_status.h"
+
+namespace fs = std::filesystem;
+using namespace render::page;
+
+namespace {
+
+// a fresh directory for one test case, removed after
+struct TempDir {
+  explicit TempDir(const std::string& name)
+      : path(fs::temp_directory_path() / ("rigidreel-page-" + name + "-" + std::to_string(::getpid()))) {
+    fs::remove_all(path);
+    fs::create_directories(path);
+  }
+  ~TempDir() { fs::remove_all(path); }
+  fs::path path;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void spit(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
+
+// a real MP4 (H.264, as the renderer writes) and a PNG, made by ffmpeg
+void makeVideo(const fs::path& p, int w, int h, double seconds) {
+  const std::string command = "ffmpeg -v error -y -f lavfi -i testsrc=size=" + std::to_string(w) + "x" + std::to_string(h) +
+                              ":rate=10 -t " + std::to_string(seconds) +
+                              " -c:v libx264 -pix_fmt yuv420p -movflags +faststart '" + p.string() + "'";
+  REQUIRE(std::system(command.c_str()) == 0);
+}
+void makePng(const fs::path& p, int w, int h) {
+  const std::string command = "ffmpeg -v error -y -f lavfi -i testsrc=size=" + std::to_string(w) + "x" + std::to_string(h) +
+                              " -frames:v 1 '" + p.string() + "'";
+  REQUIRE(std::system(command.c_str()) == 0);
+}
+
+SceneRecord impulses() {
+  SceneRecord r;
+  r.scene = "05_impulses";
+  r.file = "scenes/lecture/05_impulses.yaml";
+  r.title = "Impulses";
+  r.description = "A bar struck at its end: \"j\" = (1, 0) N·s; <b>not</b> bold & kept as text.\nSecond line.";
+  r.seconds = 1.25;
+  r.videos = {{"center", "05_impulses-center.mp4", "05_impulses-center.png", 10}, {"end", "05_impulses-end.mp4", "05_impulses-end.png", 10}};
+  r.panels = {{"05_impulses-panels-t0.png", "t = 0 s", true}, {"05_impulses-panels-t2.5.png", "t = 2.5 s", false}};
+  r.checks = {{"end", 2.5, "bar.angular_velocity", {-0.5}, {-0.5000000000000001}, 1.1e-16, 1e-9},
+              {"end", 2.5, "bar.velocity", {1.0 / 3, 0}, {1.0 / 3, NAN}, 0.2, 1e-9}};
+  return r;
+}
+
+// a video of 160×90 and 1.5 s, a poster of 160×90 and a panel of 320×90, made once for the run
+const fs::path& sample(const std::string& name) {
+  static TempDir dir("samples");
+  static const bool made = [] {
+    makeVideo(dir.path / "video.mp4", 160, 90, 1.5);
+    makePng(dir.path / "poster.png", 160, 90);
+    makePng(dir.path / "panel.png", 320, 90);
+    return true;
+  }();
+  static std::map<std::string, fs::path> paths;
+  (void)made;
+  return paths.emplace(name, dir.path / name).first->second;
+}
+
+// the record's files in `dir`/<scene>/, copies of the samples
+void writeScene(const fs::path& dir, const SceneRecord& r) {
+  const fs::path folder = dir / r.scene;
+  fs::create_directories(folder);
+  for (const VideoRecord& v : r.videos) {
+    fs::copy_file(sample("video.mp4"), folder / v.video, fs::copy_options::skip_existing);
+    fs::copy_file(sample("poster.png"), folder / v.poster, fs::copy_options::skip_existing);
+  }
+  for (const PanelRecord& p : r.panels) fs::copy_file(sample("panel.png"), folder / p.image, fs::copy_options::skip_existing);
+  writeSceneRecord(r, (folder / kRecordName).string());
+}
+
+std::string errorOf(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const render::jobs::UsageError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("a scene's record reads back as it was written, text and numbers exact, non-finite as null") {
+  TempDir dir("record");
+  const SceneRecord r = impulses();
+  writeSceneRecord(r, (dir.path / "page.json").string());
+  const SceneRecord back = readSceneRecord((dir.path / "page.json").string());
+  CHECK(back.scene == r.scene);
+  CHECK(back.description == r.description);
+  CHECK(back.seconds == r.seconds);
+  REQUIRE(back.videos.size() == 2);
+  CHECK(back.videos[1].poster == "05_impulses-end.png");
+  CHECK(back.videos[1].fps == 10);
+  REQUIRE(back.panels.size() == 2);
+  CHECK(back.panels[0].question);
+  CHECK_FALSE(back.panels[1].question);
+  REQUIRE(back.checks.size() == 2);
+  CHECK(back.checks[0].actual[0] == -0.5000000000000001);
+  CHECK(back.checks[1].expected[0] == 1.0 / 3);
+  CHECK(std::isnan(back.checks[1].actual[1]));
+  CHECK_FALSE(back.checks[1].passed());
+  // written whole or not at all: no temporary file left beside it
+  CHECK(std::distance(fs::directory_iterator(dir.path), fs::directory_iterator()) == 1);
+}
+
+TEST_CASE("a malformed record is reported at FILE:LINE:COL with what to do") {
+  TempDir dir("bad");
+  const std::string path = (dir.path / "page.json").string();
+  spit(path, "{\"scene\": \"a\",\n \"file\": \"a.yaml\", \"title\": \"A\", \"description\": \"\",\n \"seconds\": \"soon\"}\n");
+  CHECK(errorOf([&] { readSceneRecord(path); }).starts_with(path + ":3:13: 'soon' is not a number"));
+  spit(path, "{\"scene\": \"a\",\n  \"file\": [1, 2]}\n");
+  CHECK(errorOf([&] { readSceneRecord(path); }).starts_with(path + ":2:11: 'file' has the wrong type"));
+  spit(path, "{\"scene\": \"a\", \"file\": \"f\"\n");
+  CHECK(errorOf([&] { readSceneRecord(path); }).starts_with(path + ":2:1: not a page record"));
+  spit(path, R"({"scene": "a", "file": "f", "title": "t", "description": "", "seconds": 1,
+ "videos": [{"variant": "", "video": "../../etc/passwd", "poster": "p.png", "fps": 10}], "panels": [], "checks": []})");
+  CHECK(errorOf([&] { readSceneRecord(path); }).find("'video' must name a file in the scene's folder") != std::string::npos);
+  CHECK(errorOf([&] { readSceneRecord(path); }).ends_with("render the scene again to rewrite it"));
+}
+
+TEST_CASE("an MP4's duration and frame size and a PNG's size come from the files") {
+  TempDir dir("media");
+  makeVideo(dir.path / "v.mp4", 160, 90, 1.3);
+  makePng(dir.path / "p.png", 64, 48);
+  const std::optional<MediaInfo> v = mp4Info((dir.path / "v.mp4").string());
+  REQUIRE(v);
+  CHECK(v->width == 160);
+  CHECK(v->height == 90);
+  CHECK(v->duration == doctest::Approx(1.3).epsilon(1e-6));
+  const std::optional<MediaInfo> p = pngInfo((dir.path / "p.png").string());
+  REQUIRE(p);
+  CHECK(p->width == 64);
+  CHECK(p->height == 48);
+  CHECK_FALSE(mp4Info((dir.path / "p.png").string()));
+  CHECK_FALSE(pngInfo((dir.path / "v.mp4").string()));
+  CHECK_FALSE(pngInfo((dir.path / "none.png").string()));
+}
+
+TEST_CASE("the page: a section per scene with its videos, posters, panels as question and answer, and checks") {
+  TempDir dir("html");
+  writeScene(dir.path, impulses());
+  const std::vector<PageScene> scenes = readPack(dir.path.string());
+  REQUIRE(scenes.size() == 1);
+  CHECK(scenes[0].videos[0].duration == doctest::Approx(1.5));
+  const std::string html = pageHtml(scenes);
+  CHECK(html.starts_with("<!DOCTYPE html>\n<html lang=\"en\">"));
+  CHECK(html.find("<li><a href=\"#scene-05_impulses\">Impulses</a></li>") != std::string::npos);
+  CHECK(html.find("<section id=\"scene-05_impulses\">") != std::string::npos);
+  CHECK(html.find("<video controls preload=\"metadata\" width=\"160\" height=\"90\" poster=\"05_impulses/05_impulses-center.png\" "
+                  "data-duration=\"1.5\"><source src=\"05_impulses/05_impulses-center.mp4\" type=\"video/mp4\">") != std::string::npos);
+  CHECK(html.find("<span class=\"question\">question</span> · t = 0 s") != std::string::npos);
+  CHECK(html.find("<span class=\"answer\">answer</span> · t = 2.5 s") != std::string::npos);
+  CHECK(html.find("width=\"320\" height=\"90\"") != std::string::npos);
+  // the description is text, never markup
+  CHECK(html.find("&lt;b&gt;not&lt;/b&gt; bold &amp; kept") != std::string::npos);
+  CHECK(html.find("<b>not") == std::string::npos);
+  CHECK(html.find("<td class=\"ok\">ok</td>") != std::string::npos);
+  CHECK(html.find("<td class=\"failed\">FAILED</td>") != std::string::npos);
+  CHECK(html.find("<script") == std::string::npos);
+  CHECK(html.find("http") == std::string::npos);  // nothing from the network
+}
+
+TEST_CASE("links are relative and percent-encoded; text is escaped") {
+  CHECK(urlOf("a b/ç?.png") == "a%20b/%C3%A7%3F.png");
+  CHECK(escapeHtml("<a href=\"x\">'&'</a>") == "&lt;a href=&quot;x&quot;&gt;&#39;&amp;&#39;&lt;/a&gt;");
+}
+
+TEST_CASE("the page is built from what the folder holds; a file a record names must be there") {
+  TempDir dir("pack");
+  CHECK(errorOf([&] { writePage(dir.path.string()); }).find("no scenes here") != std::string::npos);
+  CHECK(errorOf([&] { writePage((dir.path / "nope").string()); }).find("no such directory") != std::string::npos);
+  SceneRecord a = impulses();
+  SceneRecord b = impulses();
+  b.scene = "02_other", b.title = "Other", b.panels.clear();
+  for (VideoRecord& v : b.videos) v.video = "02_" + v.video, v.poster = "02_" + v.poster;
+  writeScene(dir.path, a);
+  writeScene(dir.path, b);
+  // a folder without a record and a hidden one are not scenes
+  fs::create_directories(dir.path / "notes");
+  fs::create_directories(dir.path / ".staging" / "x");
+  CHECK(writePage(dir.path.string()) == 2);
+  const std::string html = slurp(dir.path / kPageName);
+  // in the folders' order
+  CHECK(html.find("scene-02_other") < html.find("scene-05_impulses"));
+  CHECK_FALSE(fs::exists(dir.path / (std::string(kPageName) + ".part-" + std::to_string(::getpid()))));
+
+  fs::remove(dir.path / "05_impulses" / "05_impulses-end.png");
+  const std::string missing = errorOf([&] { writePage(dir.path.string()); });
+  CHECK(missing.find("'05_impulses-end.png' is missing") != std::string::npos);
+  // the old page stays as it was
+  CHECK(slurp(dir.path / kPageName) == html);
+  spit(dir.path / "05_impulses" / "05_impulses-end.png", "not a png");
+  CHECK(errorOf([&] { writePage(dir.path.string()); }).find("'05_impulses-end.png' is not a readable PNG") != std::string::npos);
+  fs::rename(dir.path / "02_other", dir.path / "03_moved");
+  CHECK(errorOf([&] { readPack(dir.path.string()); }).find("names scene '02_other' but lies in folder '03_moved'") != std::string::npos);
+}
+
+TEST_CASE("jobs that end together never lose a scene from the page: one writer at a time, the last sees all") {
+  TempDir dir("race");
+  // one scene's files, copied into twelve folders; then twelve writers at once, each writing its
+  // record and the page, as twelve `lecture` jobs of a GNU Parallel run do
+  SceneRecord first = impulses();
+  first.panels.clear();
+  writeScene(dir.path, first);
+  std::vector<SceneRecord> records;
+  for (int i = 0; i < 12; ++i) {
+    SceneRecord r = first;
+    r.scene = "scene" + std::to_string(10 + i);
+    fs::create_directories(dir.path / r.scene);
+    for (const VideoRecord& v : r.videos) {
+      fs::copy_file(dir.path / first.scene / v.video, dir.path / r.scene / v.video);
+      fs::copy_file(dir.path / first.scene / v.poster, dir.path / r.scene / v.poster);
+    }
+    records.push_back(r);
+  }
+  std::vector<std::thread> writers;
+  for (const SceneRecord& r : records)
+    writers.emplace_back([&dir, r] {
+      writeSceneRecord(r, (dir.path / r.scene / kRecordName).string());
+      writePage(dir.path.string());
+    });
+  for (std::thread& w : writers) w.join();
+  const std::string html = slurp(dir.path / kPageName);
+  for (const SceneRecord& r : records) CHECK(html.find("<section id=\"scene-" + r.scene + "\">") != std::string::npos);
+  CHECK(html.find("<title>Lecture pack: 13 scenes</title>") != std::string::npos);
+}
