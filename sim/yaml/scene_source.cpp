@@ -186,7 +186,7 @@ SceneSource readSceneSource(const std::string& path, const std::string& variant)
     text.append(piece, static_cast<size_t>(in.gcount()));
     if (text.size() > kMaxSceneBytes)
       throw SceneError(path, 0, 0, "is larger than the limit of " + std::to_string(kMaxSceneBytes >> 20) +
-                                       " MiB for a scene file; is it a scene? (a scene of 100,000 bodies takes about 5 MiB)");
+                                       " MiB for a scene file; is it a scene? (100,000 bodies written one a line take 6 MB)");
   }
   if (in.bad()) throw SceneError(path, 0, 0, "cannot read the scene file");
   return sceneSourceText(text, path, variant);

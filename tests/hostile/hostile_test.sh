@@ -15,14 +15,21 @@ run() {
   rc=$?
 }
 no_parts() { ! find "${1:-o}" -name '*.part*' | grep -q .; }
-# wait_or_kill PID: waits for PID, but kills it (exit 137) if it has not ended 10 s after the
-# signal: a signal that is not honoured shows as 137, not as a test that hangs
-wait_or_kill() {
-  (sleep 10; kill -KILL "$1" 2>/dev/null) &
-  local watchdog=$!
-  wait "$1"
+# signal_and_wait SIGNAL PID: sends SIGNAL every 0.5 s until PID ends (a background job starts
+# with SIGINT ignored until rigidreel installs its handler, so one early signal may be lost), and
+# kills it (exit 137) if it has not ended 10 s later: a signal that is not honoured shows as 137,
+# not as a test that hangs; sets rc
+signal_and_wait() {
+  local k
+  for ((k = 0; k < 20; k++)); do
+    # an ended child stays a zombie (state Z) until waited for, and a zombie takes signals
+    [ "$(cut -d' ' -f3 "/proc/$2/stat" 2>/dev/null)" = Z ] && break
+    kill -"$1" "$2" 2>/dev/null || break
+    sleep 0.5
+  done
+  kill -KILL "$2" 2>/dev/null
+  wait "$2"
   rc=$?
-  kill "$watchdog" 2>/dev/null
 }
 # a process id that has ended (a child that exited)
 dead_pid() { sh -c 'echo $$'; }
@@ -85,8 +92,7 @@ YAML
 "$BIN" render long.yaml -o o --size 160x90 --fps 10 --quiet >out 2>err &
 pid=$!
 sleep 1
-kill -INT $pid
-wait_or_kill $pid
+signal_and_wait INT $pid
 [ "$rc" -eq 130 ] && grep -q interrupted err && [ ! -e o/long/long.mp4 ] && no_parts
 check "Ctrl-C during the survey: exit 130, no output" $? "exit $rc"
 # an ffmpeg that reads nothing: the frames fill the pipe and the writer waits on it
@@ -96,8 +102,7 @@ chmod +x stalled/ffmpeg
 PATH=$WORK/stalled:$PATH "$BIN" "${RENDER[@]}" >out 2>err &
 pid=$!
 sleep 2
-kill -TERM $pid
-wait_or_kill $pid
+signal_and_wait TERM $pid
 [ "$rc" -eq 130 ] && cmp -s good.mp4 $V && no_parts && ! kill -0 "$(cat stalled.pid)" 2>/dev/null
 check "SIGTERM while ffmpeg is stalled: exit 130, ffmpeg stopped, the previous video kept" $? "exit $rc"
 # temporary files of a run killed outright: removed by the next run of the same outputs, unless
