@@ -12,8 +12,9 @@
 
 namespace sim::yaml {
 
-// the largest scene file read, bytes: yaml-cpp holds about 50 bytes of memory per byte of a file
-// (issue 13: 63 MB of bodies reached 3.6 GB), so this keeps a load under about 1 GB
+// the largest scene file read, bytes: yaml-cpp holds about 100 bytes of memory per byte of a file
+// (`check` of 250,000 bodies in 16 MB: 16 s, 1.5 GB at its peak; 63 MB of bodies reached 3.6 GB
+// and grew), so this keeps a load under 2 GB
 inline constexpr size_t kMaxSceneBytes = size_t{16} << 20;
 
 struct SceneSource {
