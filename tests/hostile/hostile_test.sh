@@ -31,6 +31,9 @@ signal_and_wait() {
   wait "$2"
   rc=$?
 }
+# bounded memory: 1 GB of address space, except under AddressSanitizer (make sanitize sets
+# ASAN_OPTIONS), which reserves terabytes of address space for its shadow memory at start
+limit_memory() { [ -n "${ASAN_OPTIONS:-}" ] || ulimit -v 1000000; }
 # a process id that has ended (a child that exited)
 dead_pid() { sh -c 'echo $$'; }
 
@@ -127,7 +130,7 @@ expect "--until past the limit is refused" 2 "--until: the run needs" simulate b
 expect "render --duration past the limit is refused" 2 "--duration: the run needs" render ball.yaml --duration 1e9 -o o
 
 # --- item 7: loading is bounded -----------------------------------------------------------------
-(ulimit -v 1000000; timeout -k 5 60 "$BIN" check /dev/zero >out 2>err)
+(limit_memory; timeout -k 5 60 "$BIN" check /dev/zero >out 2>err)
 rc=$?
 [ "$rc" -eq 2 ] && grep -q "/dev/zero: is larger than the limit of 16 MiB" err
 check "check /dev/zero: exit 2 with the file-size limit, in bounded memory" $? "exit $rc"
@@ -137,7 +140,7 @@ check "check /dev/zero: exit 2 with the file-size limit, in bounded memory" $? "
   echo "bodies:"
   for ((k = 0; k < 17 * 1024; k++)); do printf '  - {name: b%07d, shape: {circle: 0.1}, position: [%d, 0]}  %1000s\n' $k $k ""; done
 } >big.yaml
-(ulimit -v 1000000; timeout -k 5 60 "$BIN" check big.yaml >out 2>err)
+(limit_memory; timeout -k 5 60 "$BIN" check big.yaml >out 2>err)
 rc=$?
 [ "$rc" -eq 2 ] && grep -q "big.yaml: is larger than the limit" err
 check "a 17 MiB scene is refused by the file-size limit" $? "exit $rc"
