@@ -10,8 +10,14 @@ PACKAGES := g++ cmake make pkg-config libeigen3-dev libyaml-cpp-dev doctest-dev 
 # `make bench` only: Box2D 2.4, the stacks' peer in the same run (the build and the tests never need it)
 BENCH_PACKAGES := libbox2d-dev
 SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
+# clang and its runtimes (ASan, UBSan, libFuzzer) for `make sanitize` and `make fuzz` only
+CLANG_PACKAGES := clang libclang-rt-14-dev
+SANITIZE_BUILD ?= build-sanitize
+FUZZ_BUILD     ?= build-fuzz
+# seconds each fuzzer runs in `make fuzz`
+FUZZ_SECONDS   ?= 60
 
-.PHONY: all deps build demo lecture test bench clean
+.PHONY: all deps build demo lecture test bench clean sanitize fuzz clang-deps
 
 all: build
 
@@ -25,6 +31,10 @@ deps:
 	  $(SUDO) apt-get update -qq && \
 	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends $$missing; \
 	fi
+
+# the same, for the clang packages
+clang-deps:
+	@$(MAKE) --no-print-directory deps PACKAGES="$(PACKAGES) $(CLANG_PACKAGES)"
 
 build: deps
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
@@ -57,7 +67,7 @@ bench: build
 	./$(BUILD)/rigidreel_bench ./$(BUILD)/rigidreel scenes/three_collisions_poll.yaml $(BENCH_BASELINE)
 
 clean:
-	rm -rf $(BUILD)
+	rm -rf $(BUILD) $(SANITIZE_BUILD) $(FUZZ_BUILD)
 
 # regenerate tests/golden/*.png on purpose, after a deliberate change to how frames, charts or the
 # lecture page look (see tests/golden/README.md); review the new images before committing them
@@ -67,3 +77,28 @@ golden: build
 	RIGIDREEL_UPDATE_GOLDEN=1 ./$(BUILD)/tests/lecture_golden_test
 	RIGIDREEL_UPDATE_GOLDEN=1 ./$(BUILD)/tests/chart_test
 	RIGIDREEL_UPDATE_GOLDEN=1 ctest --test-dir $(BUILD) -R '^(lecture_parallel|page_browser)$$' --output-on-failure
+
+# the whole suite built by clang with AddressSanitizer and UndefinedBehaviorSanitizer, leaks checked;
+# the only leaks suppressed are Mesa's own inside libOSMesa (tests/sanitize/lsan.supp says why)
+SANITIZE_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+sanitize: clang-deps
+	@cmake -S . -B $(SANITIZE_BUILD) -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ \
+	  -DCMAKE_CXX_FLAGS="$(SANITIZE_FLAGS)" -DCMAKE_EXE_LINKER_FLAGS="$(SANITIZE_FLAGS)" >/dev/null
+	@cmake --build $(SANITIZE_BUILD) -j $(JOBS)
+	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=1 \
+	LSAN_OPTIONS=suppressions=$(CURDIR)/tests/sanitize/lsan.supp:print_suppressions=0 \
+	UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+	  ctest --test-dir $(SANITIZE_BUILD) --output-on-failure -j $(JOBS)
+
+# libFuzzer on the scene loader (the `check` path) and on the pair collision functions, each for
+# FUZZ_SECONDS, seeded with scenes/ and the hostile inputs kept in tests/fuzz/; what a fuzzer
+# finds is written to $(FUZZ_BUILD)/<target>-crash-* (see README: Fuzzing)
+fuzz: clang-deps
+	@cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ -DRIGIDREEL_FUZZ=ON >/dev/null
+	@cmake --build $(FUZZ_BUILD) -j $(JOBS) --target scene_loader_fuzz collide_fuzz
+	@mkdir -p $(FUZZ_BUILD)/corpus/scene_loader $(FUZZ_BUILD)/corpus/collide
+	$(FUZZ_BUILD)/tests/scene_loader_fuzz -max_total_time=$(FUZZ_SECONDS) -timeout=10 -rss_limit_mb=2048 \
+	  -max_len=4096 -dict=tests/fuzz/scene.dict -artifact_prefix=$(FUZZ_BUILD)/scene_loader- \
+	  $(FUZZ_BUILD)/corpus/scene_loader tests/fuzz/scene_loader scenes
+	$(FUZZ_BUILD)/tests/collide_fuzz -max_total_time=$(FUZZ_SECONDS) -timeout=10 \
+	  -artifact_prefix=$(FUZZ_BUILD)/collide- $(FUZZ_BUILD)/corpus/collide tests/fuzz/collide

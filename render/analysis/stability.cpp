@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "sim/scene/scene_build.h"
+#include "sim/scene/step_limit.h"
 
 namespace render::analysis {
 
@@ -101,49 +102,69 @@ bool holdsAt(const Study& study, double value, RunMetrics& metrics) {
 StabilityResult findBoundary(const Study& def) {
   const StabilityDef& s = def.stability;
   const bool integer = s.parameter == Parameter::StackHeight;
-  return searchBoundary(startValue(def), s.to > 0.0 ? s.to : (integer ? 1000.0 : 1e12), integer,
-                        [&](double value, RunMetrics& m) { return holdsAt(def, value, m); });
+  const double phases = s.parameter == Parameter::Speed ? 8.0 : 1.0;
+  // every run counts against the scene's max_steps: a scene that fails at every dt would otherwise
+  // halve dt 40 times, each run twice as long as the one before
+  double spent = 0.0;
+  StabilityResult r = searchBoundary(startValue(def), s.to > 0.0 ? s.to : (integer ? 1000.0 : 1e12), integer,
+                                     [&](double value, RunMetrics& m) {
+                                       const sim::scene::SceneDef at = withParameter(def, value).model;
+                                       const double steps = phases * sim::scene::stepCount(at, stabilityDuration(at));
+                                       if (spent + steps > def.model.maxSteps) throw BudgetSpent{};
+                                       spent += steps;
+                                       return holdsAt(def, value, m);
+                                     });
+  r.steps = spent;
+  return r;
 }
 
 StabilityResult searchBoundary(double start, double limit, bool integer, const std::function<bool(double, RunMetrics&)>& holds) {
   StabilityResult r;
   RunMetrics m;
   double good = start, bad = 0.0;
-
-  // a value that holds: halve until one does
-  for (int k = 0; !holds(good, m); ++k) {
-    bad = good, r.failing = m;
-    if (k == 40 || (integer && good <= 1.0)) {
-      r.failsEverywhere = true;
-      r.firstFailing = good;
-      return r;
-    }
-    good = integer ? std::floor(good / 2.0) : good / 2.0;
-  }
-  // a value that fails: double until one does (or the limit holds too)
-  if (bad == 0.0) {
-    double next = good;
-    for (int k = 0;; ++k) {
-      next = std::min(integer ? good + 1.0 : 2.0 * good, limit);
-      if (!holds(next, m)) {
-        bad = next, r.failing = m;
-        break;
-      }
-      good = next;
-      if (good >= limit || k == 60) {
-        r.holdsToLimit = true;
-        r.largestStable = good;
+  bool held = false;
+  try {
+    // a value that holds: halve until one does
+    for (int k = 0; !holds(good, m); ++k) {
+      bad = good, r.failing = m;
+      if (k == 40 || (integer && good <= 1.0)) {
+        r.failsEverywhere = true;
+        r.firstFailing = good;
         return r;
       }
+      good = integer ? std::floor(good / 2.0) : good / 2.0;
     }
+    held = true;
+    // a value that fails: double until one does (or the limit holds too)
+    if (bad == 0.0) {
+      double next = good;
+      for (int k = 0;; ++k) {
+        next = std::min(integer ? good + 1.0 : 2.0 * good, limit);
+        if (!holds(next, m)) {
+          bad = next, r.failing = m;
+          break;
+        }
+        good = next;
+        if (good >= limit || k == 60) {
+          r.holdsToLimit = true;
+          r.largestStable = good;
+          return r;
+        }
+      }
+    }
+    // bisect the bracket
+    while (integer ? bad - good > 1.0 : (bad - good) > 1e-3 * good) {
+      const double mid = integer ? std::floor(0.5 * (good + bad)) : 0.5 * (good + bad);
+      if (holds(mid, m)) good = mid;
+      else bad = mid, r.failing = m;
+    }
+  } catch (const BudgetSpent&) {
+    // what is known so far: the last value that held and the first that failed
+    r.budgetSpent = true;
+    r.failsEverywhere = !held && bad > 0.0;
+    r.holdsToLimit = held && bad == 0.0;
   }
-  // bisect the bracket
-  while (integer ? bad - good > 1.0 : (bad - good) > 1e-3 * good) {
-    const double mid = integer ? std::floor(0.5 * (good + bad)) : 0.5 * (good + bad);
-    if (holds(mid, m)) good = mid;
-    else bad = mid, r.failing = m;
-  }
-  r.largestStable = good;
+  r.largestStable = held ? good : 0.0;
   r.firstFailing = bad;
   return r;
 }
@@ -152,14 +173,20 @@ std::string describeFailure(const Study& study, const StabilityResult& r) {
   const sim::scene::SceneDef& def = study.model;
   return describeBoundary(std::string(sim::core::integratorName(def.integrator)) + " + " +
                               std::string(sim::world::collisionMethodName(def.collisions)),
-                          kParameterNames.name(study.stability.parameter), r);
+                          kParameterNames.name(study.stability.parameter), r, def.maxSteps);
 }
 
-std::string describeBoundary(const std::string& method, std::string_view p, const StabilityResult& r) {
+std::string describeBoundary(const std::string& method, std::string_view p, const StabilityResult& r, double maxSteps) {
   std::ostringstream o;
   o << method << ": ";
-  if (r.holdsToLimit) {
-    o << "holds up to " << p << " = " << r.largestStable << " (the search's limit)";
+  std::ostringstream budget;
+  if (r.budgetSpent)
+    budget << "; the search stopped early, after " << r.steps << " steps, as the next run would pass the scene's "
+           << "max_steps (" << maxSteps << "); raise it with 'sim: {max_steps: N}' to search further";
+  if (r.holdsToLimit || (r.budgetSpent && r.firstFailing == 0.0)) {
+    if (r.largestStable > 0.0) o << "holds up to " << p << " = " << r.largestStable;
+    else o << "no run fits in the budget";
+    o << (r.budgetSpent ? budget.str() : " (the search's limit)");
     return o.str();
   }
   const RunMetrics& m = r.failing;
@@ -183,6 +210,7 @@ std::string describeBoundary(const std::string& method, std::string_view p, cons
   o << " at " << p << " = " << r.firstFailing;
   if (r.failsEverywhere) o << " (fails at every value tried)";
   else o << "; holds at " << r.largestStable;
+  o << budget.str();
   return o.str();
 }
 

@@ -18,6 +18,8 @@ struct StabilityResult {
   RunMetrics failing;     // the metrics of the run at firstFailing
   bool failsEverywhere = false;
   bool holdsToLimit = false;
+  double steps = 0.0;        // the steps of every run of the search together
+  bool budgetSpent = false;  // stopped early: the next run would have passed the scene's max_steps
 };
 
 // a stability run lasts the scene's duration or this many steps, whichever is longer, so that a
@@ -32,15 +34,21 @@ Study withParameter(const Study& study, double value, double phase = 0.0);
 // does the scene hold at `value`? (for `speed`, at every one of eight phases of the step)
 bool holdsAt(const Study& study, double value, RunMetrics& metrics);
 
-// the boundary, by growing and halving to a bracket and then bisecting to 0.1 % of the value
+// the boundary, by growing and halving to a bracket and then bisecting to 0.1 % of the value, in at
+// most the scene's max_steps steps over all its runs
 StabilityResult findBoundary(const Study& study);
 // the same search for any scene: from `start`, up to `limit`, whole numbers when `integer`;
 // `holds(value, metrics)` runs the scene at a value
+// thrown by a search's `holds` when the next run would pass its budget of steps: the search stops
+// there and says what it knows (StabilityResult::budgetSpent)
+struct BudgetSpent {};
 StabilityResult searchBoundary(double start, double limit, bool integer, const std::function<bool(double, RunMetrics&)>& holds);
 
 // "explicit_euler: energy +37 % at dt = 0.021"
 std::string describeFailure(const Study& study, const StabilityResult& result);
 // the same for any method's label and parameter name
-std::string describeBoundary(const std::string& method, std::string_view parameter, const StabilityResult& result);
+// (`maxSteps`: the budget a search that stopped early names)
+std::string describeBoundary(const std::string& method, std::string_view parameter, const StabilityResult& result,
+                             double maxSteps = 0.0);
 
 }  // namespace render::analysis

@@ -11,6 +11,7 @@
 #include "render/jobs/atomic_file.h"
 #include "render/jobs/json_writer.h"
 #include "sim/scene/scene_build.h"
+#include "sim/scene/step_limit.h"
 #include "sim/world/diagnostics.h"
 
 namespace render::cli {
@@ -145,6 +146,8 @@ int simulate(const SimulateOptions& o) {
   const sim::scene::SceneDef def = o.load().model();
   const double until = o.until.value_or(def.duration);
   if (!(until >= 0.0) || !std::isfinite(until)) throw UsageError("--until: the end time must be zero or a positive finite number");
+  if (const std::string over = sim::scene::stepsOverLimit(def, until); !over.empty())
+    throw UsageError("--until: " + over + "; choose an earlier end, or raise the scene's 'sim: {max_steps: N}'");
   sim::world::World world = startWorld(def, o.scene);
 
   std::unique_ptr<AtomicFile> traceFile;

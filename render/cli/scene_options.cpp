@@ -6,6 +6,7 @@
 #include "render/cli/commands.h"
 #include "render/jobs/json_writer.h"
 #include "sim/scene/scene_build.h"
+#include "sim/scene/step_limit.h"
 #include "sim/yaml/scene_yaml.h"
 
 namespace render::cli {
@@ -29,6 +30,8 @@ SceneFile SceneOptions::load() const {
   if (dt) {
     if (!(*dt > 0.0) || !std::isfinite(*dt)) throw UsageError("--dt: the time step must be a positive finite number");
     def.dt = *dt;
+    if (const std::string over = sim::scene::stepsOverLimit(def, def.duration); !over.empty())
+      throw UsageError("--dt: " + over + "; choose a larger step, or raise the scene's 'sim: {max_steps: N}'");
   }
   if (!collisions.empty()) {
     const auto method = sim::world::collisionMethodFromName(collisions);

@@ -7,6 +7,7 @@
 #include "render/frame/caption.h"
 #include "render/frame/energy_panel.h"
 #include "render/frame/point_forces.h"
+#include "render/jobs/interrupt.h"
 #include "render/scene/scene_style.h"
 #include "sim/scene/scene_build.h"
 #include "sim/world/diagnostics.h"
@@ -22,6 +23,8 @@ class Surveyor : public sim::world::StepObserver {
  public:
   Surveyor(const render::scene::Scene& def, RunSurvey& out) : def_(def), out_(out) {}
   void afterStep(const sim::world::World& world) override {
+    // the survey runs the whole scene before the first frame: Ctrl-C must stop it too
+    render::jobs::checkInterrupted();
     for (const sim::core::Body& b : world.bodies) {
       out_.bounds.add(bodyBounds(b));
       out_.maxSpeed = std::max(out_.maxSpeed, b.v.norm());

@@ -8,10 +8,13 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "render/jobs/stale_parts.h"
+
 namespace render::jobs {
 
 AtomicFile::AtomicFile(std::string path)
-    : path_(std::move(path)), temporary_(path_ + ".part-" + std::to_string(::getpid())) {
+    : path_(std::move(path)), temporary_(partName(path_)) {
+  removeStaleParts(path_);
   out_.open(temporary_, std::ios::binary | std::ios::trunc);
   if (!out_) throw std::runtime_error(path_ + ": cannot write here (" + std::strerror(errno) + "); choose a writable path");
 }
@@ -40,6 +43,8 @@ StagedDirectory::StagedDirectory(const std::string& final) : final_(final) {
   name += path.filename().string();
   name += ".part-" + std::to_string(::getpid());
   staging_ = (path.parent_path() / name).string();
+  // the folders of runs killed outright (SIGKILL) before they could remove them
+  removeStaleParts(final);
   fs::remove_all(staging_);
   fs::create_directories(staging_);
 }

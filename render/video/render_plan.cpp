@@ -7,6 +7,7 @@
 #include "render/frame/panels.h"
 #include "render/jobs/exit_status.h"
 #include "render/video/output_names.h"
+#include "sim/scene/step_limit.h"
 #include "sim/yaml/scene_error.h"
 
 namespace render::video {
@@ -210,6 +211,10 @@ std::vector<std::string> RenderPlan::paths() const {
 RenderPlan planVideos(const LoadVariant& load, const VideoRequest& r) {
   std::vector<render::scene::Scene> scenes =
       r.allVariants ? variantsOf(load(""), load) : std::vector<render::scene::Scene>{load(r.variant)};
+  if (r.duration)
+    for (const render::scene::Scene& s : scenes)
+      if (const std::string over = sim::scene::stepsOverLimit(s.model, *r.duration); !over.empty())
+        throw UsageError("--duration: " + over + "; choose a shorter video, or raise the scene's 'sim: {max_steps: N}'");
   // each variant surveyed over its video's duration, which --duration sets for all
   RenderPlan plan = surveyed(std::move(scenes), r.size, r.fps, r.duration.value_or(-1.0));
   for (size_t i = 0; i < plan.variants.size(); ++i) {

@@ -1,5 +1,7 @@
 #include "render/video/video.h"
 
+#include <fcntl.h>
+#include <poll.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -11,7 +13,10 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "render/jobs/interrupt.h"
 #include "render/jobs/process.h"
+#include "render/jobs/stale_parts.h"
+#include "render/video/container_check.h"
 
 namespace render::video {
 using namespace render::jobs;
@@ -21,6 +26,10 @@ namespace {
 
 // the last lines of ffmpeg's standard error that a message quotes
 constexpr size_t kTailChars = 2000;
+// how often a wait for ffmpeg looks at the interrupt flag, µs, and for how many ticks an ffmpeg told
+// to stop may take before it is killed (2 s)
+constexpr int kTickMicroseconds = 20000;
+constexpr int kGraceTicks = 100;
 
 std::string fpsText(double fps) {
   char buf[32];
@@ -86,9 +95,10 @@ std::vector<std::string> ffmpegArguments(VideoFormat format, int width, int heig
 
 VideoWriter::VideoWriter(const std::string& path, VideoFormat format, int width, int height, double fps,
                          const std::string& program)
-    : path_(path), temporary_(temporaryName(path)), program_(program), width_(width), height_(height) {
+    : path_(path), temporary_(temporaryName(path)), program_(program), format_(format), width_(width), height_(height) {
   // a write to an ffmpeg that has died is an error to report (EPIPE), not a signal that kills us
   ::signal(SIGPIPE, SIG_IGN);
+  removeStaleParts(path_);
   std::vector<std::string> args = ffmpegArguments(format, width, height, fps, temporary_);
   args.insert(args.begin(), program_);
   Child child;
@@ -102,18 +112,38 @@ VideoWriter::VideoWriter(const std::string& path, VideoFormat format, int width,
   errors_ = child.errors;
   widenPipe(input_, static_cast<size_t>(width) * height * 4);
   errorReader_ = std::thread([this] { readTail(errors_, errorTail_, kTailChars); });
+  // writes that never block, so that Ctrl-C is seen while ffmpeg is stalled and reads nothing
+  ::fcntl(input_, F_SETFL, ::fcntl(input_, F_GETFL) | O_NONBLOCK);
 }
 
 VideoWriter::~VideoWriter() {
   if (pid_ <= 0) return;
   if (input_ >= 0) ::close(input_);
   ::kill(pid_, SIGTERM);
-  wait();
+  // an ffmpeg stopped or stuck in the kernel may not end on SIGTERM: SIGKILL after a grace period
+  for (int k = 0; k < kGraceTicks; ++k) {
+    if (::waitpid(pid_, nullptr, WNOHANG) == pid_) pid_ = -1;
+    if (pid_ < 0) break;
+    ::usleep(kTickMicroseconds);
+  }
+  if (pid_ > 0) ::kill(pid_, SIGKILL);
+  wait(false);
   std::remove(temporary_.c_str());
 }
 
-int VideoWriter::wait() {
-  const int status = pid_ > 0 ? waitChild(pid_) : 0;
+int VideoWriter::wait(bool interruptible) {
+  int status = 0;
+  // ffmpeg writing its trailer to a stalled disk must not make Ctrl-C wait for it
+  while (interruptible && pid_ > 0) {
+    const pid_t done = ::waitpid(pid_, &status, WNOHANG);
+    if (done == pid_ || (done < 0 && errno != EINTR)) {
+      pid_ = -1;
+      break;
+    }
+    checkInterrupted();
+    ::usleep(kTickMicroseconds);
+  }
+  if (pid_ > 0) status = waitChild(pid_);
   pid_ = -1;
   if (errorReader_.joinable()) errorReader_.join();
   if (errors_ >= 0) ::close(errors_);
@@ -145,11 +175,17 @@ void VideoWriter::write(const Image& frame) {
   size_t left = frame.rgba.size();
   while (left > 0) {
     const ssize_t n = ::write(input_, data, left);
-    if (n < 0 && errno == EINTR) continue;
+    if (n < 0 && (errno == EINTR || errno == EAGAIN)) {
+      checkInterrupted();
+      pollfd ready{input_, POLLOUT, 0};
+      ::poll(&ready, 1, kTickMicroseconds / 1000);
+      continue;
+    }
     if (n < 0) fail(path_ + ": ffmpeg stopped reading frames");
     data += n;
     left -= static_cast<size_t>(n);
   }
+  ++frames_;
 }
 
 void VideoWriter::finish() {
@@ -159,6 +195,14 @@ void VideoWriter::finish() {
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
     std::remove(temporary_.c_str());
     throw std::runtime_error(path_ + ": ffmpeg could not encode the video" + diagnosis(status));
+  }
+  // ffmpeg 5.1 exits 0 after "Error writing trailer of …: No space left on device": at -loglevel
+  // error anything it says is an error, and the file must read back whole
+  std::string defect = errorTail_.empty() ? videoDefect(temporary_, format_, frames_) : "ffmpeg reported an error";
+  if (!defect.empty()) {
+    std::remove(temporary_.c_str());
+    throw std::runtime_error(path_ + ": the video is incomplete (" + defect +
+                             "), so the previous file is kept; is the disk full?" + diagnosis(status));
   }
   if (std::rename(temporary_.c_str(), path_.c_str()) != 0) {
     const std::string why = std::strerror(errno);

@@ -1,7 +1,7 @@
 // Video through the ffmpeg program: raw RGBA frames on its standard input, spawned with an argument
 // vector (no shell, so no file name can inject a command), writing a temporary file beside the
-// output that is renamed into place only when ffmpeg has finished well. A missing or failing ffmpeg
-// is an error with the tail of what it printed.
+// output that is renamed into place only when ffmpeg has finished well and the file reads back whole
+// (container_check.h). A missing or failing ffmpeg is an error with the tail of what it printed.
 #pragma once
 
 #include <sys/types.h>
@@ -39,20 +39,24 @@ class VideoWriter {
 
   // one frame of the size given; throws std::runtime_error with ffmpeg's message when it has failed
   void write(const Image& frame);
-  // close ffmpeg's input, wait for it and rename the video into place; throws std::runtime_error
+  // close ffmpeg's input, wait for it, check the file and rename the video into place; throws
+  // std::runtime_error (the previous video at the path is then left as it was)
   void finish();
   const std::string& temporaryPath() const { return temporary_; }
 
  private:
   // stop feeding ffmpeg, wait for it, remove the temporary file and throw `what` with its message
   [[noreturn]] void fail(const std::string& what);
-  // ffmpeg's exit status, once it has exited (and its standard error read to the end)
-  int wait();
+  // ffmpeg's exit status, once it has exited (and its standard error read to the end); an
+  // interruptible wait throws Interrupted on Ctrl-C (the destructor then stops ffmpeg)
+  int wait(bool interruptible = true);
   // " (ffmpeg exited with status N); ffmpeg said:\n<the tail of its standard error>"
   std::string diagnosis(int status) const;
 
   std::string path_, temporary_, program_;
+  VideoFormat format_;
   int width_, height_;
+  long frames_ = 0;  // frames written
   pid_t pid_ = -1;
   int input_ = -1;           // ffmpeg's standard input
   int errors_ = -1;          // ffmpeg's standard error

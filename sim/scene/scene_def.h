@@ -101,6 +101,8 @@ struct SceneDef {
   double friction = settings::kDefaultFriction;
   Integrator integrator = Integrator::SymplecticEuler;
   double dt = settings::kDefaultDt;
+  double maxSteps = settings::kDefaultMaxSteps;  // the most steps a run may take (sim: max_steps)
+  SourceLoc stepsLoc;                            // where dt (or else duration) is set, for messages
   CollisionMethod collisions = CollisionMethod::Auto;
   int velocityIterations = settings::kVelocityIterations;
   int positionIterations = settings::kPositionIterations;

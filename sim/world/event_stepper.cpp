@@ -226,7 +226,10 @@ class EventStepper final : public Method {
     if (gravityOnly_) StepDynamics(world, step).rates(step.start, from, k0);
     std::optional<double> first;
     double horizon = span;
-    for (const auto& [i, j] : sweptPairs(world, from, end, touch)) {
+    for (const std::pair<int, int>& pair : sweptPairs(world, from, end, touch)) {
+      // plain ints, not structured bindings: the motion lambda captures them, which C++20 allows
+      // and clang 14 does not
+      const int i = pair.first, j = pair.second;
       if (isResting(i, j)) continue;
       const Shape &a = world.bodies[i].shape, &b = world.bodies[j].shape;
       ToiInput in;

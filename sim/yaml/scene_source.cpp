@@ -4,58 +4,134 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <unordered_map>
+#include <unordered_set>
 #include <utility>
 
+#include "sim/yaml/path_name.h"
 #include "sim/yaml/yaml_reader.h"
 
 namespace sim::yaml {
 
 namespace {
 
-// base[key] = value, keeping the key's position in the file for messages about a new key
-// (looked up through a const node: yaml-cpp's non-const operator[] adds an empty entry)
-void setKey(YAML::Node base, const YAML::Node& key, const YAML::Node& value) {
-  if (std::as_const(base)[key.Scalar()]) base[key.Scalar()] = value;
-  else base.force_insert(key, value);
-}
+// A variant merged over the scene: maps key by key, the bodies list by name (each body's keys
+// replaced whole), other values whole. The merge builds new maps and lists out of the file's
+// nodes and never changes one: yaml-cpp's nodes are shared by every alias of them, so a merge in
+// place would change every place an alias appears, and merging a map into itself (`{a: &m {...},
+// a: *m}`) would insert into the map it iterates. Each key-value pair of the file costs it at
+// least one byte, so a merge that visits more pairs than the file has bytes is repeating them
+// through aliases (an alias bomb, tenfold per level): it stops there instead of running for hours.
+class VariantMerge {
+ public:
+  VariantMerge(const Reader& r, std::string variant, size_t fileBytes)
+      : r_(r), variant_(std::move(variant)), budget_(fileBytes) {}
 
-// variants are merged over the scene: maps key by key, the bodies list by name, other values whole
-void mergeBodies(YAML::Node base, const YAML::Node& over) {
-  for (const YAML::Node& body : over) {
-    bool merged = false;
-    if (body.IsMap() && body["name"]) {
-      for (YAML::Node b : base)
-        if (b.IsMap() && std::as_const(b)["name"] && std::as_const(b)["name"].Scalar() == body["name"].Scalar()) {
-          for (const auto& kv : body) setKey(b, kv.first, kv.second);
-          merged = true;
-        }
+  YAML::Node map(const YAML::Node& base, const YAML::Node& over, bool deep) {
+    // the changes by name, each given once
+    std::unordered_map<std::string, std::pair<YAML::Node, YAML::Node>> changes;
+    std::vector<std::string> order;
+    for (const auto& kv : over) {
+      const std::string name = keyName(kv.first);
+      if (!changes.emplace(name, std::pair{kv.first, kv.second}).second)
+        r_.fail(kv.first, "duplicate key '" + name + "' in variant '" + variant_ + "'; give each key once");
+      order.push_back(name);
     }
-    if (!merged) base.push_back(body);
+    // the base's pairs in their order, changed where the variant says; then the variant's new keys
+    YAML::Node out = fresh(YAML::NodeType::Map);
+    std::unordered_set<std::string> merged;
+    for (const auto& kv : base) {
+      visit(kv.first);
+      const auto change = kv.first.IsScalar() ? changes.find(kv.first.Scalar()) : changes.end();
+      if (change == changes.end() || !merged.insert(change->first).second) {
+        out.force_insert(kv.first, kv.second);
+        continue;
+      }
+      const YAML::Node& value = change->second.second;
+      if (deep && kv.second.IsMap() && value.IsMap()) out.force_insert(kv.first, map(kv.second, value, true));
+      else if (deep && change->first == "bodies" && kv.second.IsSequence() && value.IsSequence())
+        out.force_insert(kv.first, bodies(kv.second, value));
+      else out.force_insert(kv.first, value);
+    }
+    for (const std::string& name : order)
+      if (!merged.count(name)) out.force_insert(changes[name].first, changes[name].second);
+    return out;
   }
-}
 
-void mergeMaps(YAML::Node base, const YAML::Node& over) {
-  for (const auto& kv : over) {
-    const std::string key = kv.first.Scalar();
-    const YAML::Node current = std::as_const(base)[key];
-    if (current && current.IsMap() && kv.second.IsMap()) {
-      mergeMaps(current, kv.second);
-    } else if (key == "bodies" && current && current.IsSequence() && kv.second.IsSequence()) {
-      mergeBodies(current, kv.second);
-    } else {
-      setKey(base, kv.first, kv.second);
+ private:
+  // the bodies by name: a body the variant names has its keys replaced, others are added
+  YAML::Node bodies(const YAML::Node& base, const YAML::Node& over) {
+    std::unordered_map<std::string, YAML::Node> changes;
+    for (const YAML::Node& body : over) {
+      visit(body);
+      const YAML::Node name = nameOf(body);
+      if (name && !changes.emplace(name.Scalar(), body).second)
+        r_.fail(name, "body '" + name.Scalar() + "' is changed twice in variant '" + variant_ + "'; give its changes once");
     }
+    YAML::Node out = fresh(YAML::NodeType::Sequence);
+    std::unordered_set<std::string> merged;
+    for (const YAML::Node& body : base) {
+      visit(body);
+      const YAML::Node name = nameOf(body);
+      const auto change = name ? changes.find(name.Scalar()) : changes.end();
+      if (change == changes.end()) {
+        out.push_back(body);
+      } else {
+        out.push_back(map(body, change->second, false));
+        merged.insert(change->first);
+      }
+    }
+    for (const YAML::Node& body : over) {
+      const YAML::Node name = nameOf(body);
+      if (!name || !merged.count(name.Scalar())) out.push_back(body);
+    }
+    return out;
   }
-}
+
+  // a body's name, when it has one to merge by
+  static YAML::Node nameOf(const YAML::Node& body) {
+    if (!body.IsMap()) return YAML::Node();
+    const YAML::Node name = body["name"];
+    return name && name.IsScalar() ? name : YAML::Node();
+  }
+
+  std::string keyName(const YAML::Node& key) {
+    visit(key);
+    if (!key.IsScalar()) r_.fail(key, "a key in variant '" + variant_ + "' must be a name, got " + describe(key));
+    return key.Scalar();
+  }
+
+  void visit(const YAML::Node& at) {
+    if (budget_-- == 0)
+      r_.fail(at, "variant '" + variant_ + "' repeats its values through aliases (*name) beyond the file's own size; "
+                  "write the changes out instead of nesting aliases");
+  }
+
+  // a new node in the memory of the nodes made before it. yaml-cpp's node memory is a set that a
+  // node joining another's absorbs: a map made apart would copy the whole file's set on its
+  // first insert; kept in one pool, the file's set is copied once.
+  YAML::Node fresh(YAML::NodeType::value type) {
+    pool_.push_back(YAML::Node(type));
+    return pool_[pool_.size() - 1];
+  }
+
+  const Reader& r_;
+  const std::string variant_;
+  size_t budget_;
+  YAML::Node pool_{YAML::NodeType::Sequence};
+};
 
 // the variants' names, and the chosen one merged over the base scene
-void mergeVariant(const Reader& r, SceneSource& s) {
+void mergeVariant(const Reader& r, SceneSource& s, size_t fileBytes) {
   const YAML::Node variants = s.root["variants"];
   if (variants) {
     if (!variants.IsMap()) r.fail(variants, "'variants' must be a map from names to changes, got " + describe(variants));
     for (const auto& kv : variants) {
       if (!kv.second.IsMap() && !kv.second.IsNull())
         r.fail(kv.second, "variant '" + kv.first.Scalar() + "' must be a map of changes, got " + describe(kv.second));
+      if (const std::string fault = pathNameFault(kv.first.Scalar()); !fault.empty())
+        r.fail(kv.first, "variant name '" + kv.first.Scalar() + "' names output files but " + fault +
+                             "; use letters, digits, '-' or '_'");
       s.variantNames.push_back(kv.first.Scalar());
       if (kv.second.IsMap() && kv.second["dimensions"])
         r.fail(kv.second["dimensions"], "a variant cannot change 'dimensions': a scene is 2D or 3D throughout");
@@ -71,7 +147,7 @@ void mergeVariant(const Reader& r, SceneSource& s) {
   const YAML::Node changes = variants[s.variant];
   if (changes.IsMap()) {
     if (changes["variants"]) r.fail(changes["variants"], "a variant cannot define variants");
-    mergeMaps(s.root, changes);
+    s.root = VariantMerge(r, s.variant, fileBytes).map(s.root, changes, true);
   }
 }
 
@@ -95,7 +171,7 @@ SceneSource sceneSourceText(const std::string& text, const std::string& file, co
   readGuarded(file, [&] {
     const Reader r(file);
     if (!s.root.IsMap()) r.fail(s.root, "a scene is a map with at least 'bodies:'; got " + describe(s.root));
-    mergeVariant(r, s);
+    mergeVariant(r, s, text.size());
     if (const YAML::Node d = std::as_const(s.root)["dimensions"]) {
       const double n = r.number(d, "dimensions");
       if (n != 2.0 && n != 3.0) r.fail(d, "'dimensions' is 2 (the default: a plane) or 3 (space), got " + d.Scalar());
@@ -110,10 +186,17 @@ SceneSource readSceneSource(const std::string& path, const std::string& variant)
     throw SceneError(path, 0, 0, "is a directory, not a scene file; give the path of a .yaml file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SceneError(path, 0, 0, "cannot open the scene file (does it exist and is it readable?)");
-  std::ostringstream text;
-  text << in.rdbuf();
+  // read in pieces up to the limit, not to the end: /dev/zero and pipes have no end
+  std::string text;
+  char piece[65536];
+  while (in.read(piece, sizeof piece) || in.gcount() > 0) {
+    text.append(piece, static_cast<size_t>(in.gcount()));
+    if (text.size() > kMaxSceneBytes)
+      throw SceneError(path, 0, 0, "is larger than the limit of " + std::to_string(kMaxSceneBytes >> 20) +
+                                       " MiB for a scene file; is it a scene? (100,000 bodies written one a line take 6 MB)");
+  }
   if (in.bad()) throw SceneError(path, 0, 0, "cannot read the scene file");
-  return sceneSourceText(text.str(), path, variant);
+  return sceneSourceText(text, path, variant);
 }
 
 }  // namespace sim::yaml

@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <unordered_set>
 
+#include "sim/scene/step_limit.h"
+#include "sim/yaml/path_name.h"
 #include "sim/yaml/yaml_reader.h"
 
 namespace sim::yaml {
@@ -30,6 +33,9 @@ class SceneReader : public Reader {
     if (source.dimensions != 2)
       fail(root["dimensions"], "this reads 2D scenes, and this one is 3D (dimensions: 3); read it with sim::yaml3d::readModel");
     s.name = root["name"] ? text(root["name"], "name") : source.stem;
+    if (const std::string fault = pathNameFault(s.name); !fault.empty())
+      fail(root["name"] ? root["name"] : root, "the scene's name '" + s.name + "' names its output files but " + fault +
+                                                   "; give 'name:' letters, digits, '-' or '_'");
     optional(root, "description", s.description, &Reader::text);
     optional(root, "duration", s.duration, &Reader::positive);
     if (const YAML::Node w = root["world"]) {
@@ -39,7 +45,8 @@ class SceneReader : public Reader {
       optional(w, "friction", s.friction, &Reader::nonNegative);
     }
     if (const YAML::Node sim = root["sim"]) {
-      checkKeys(sim, {"integrator", "dt", "collisions", "iterations", "position_iterations", "substeps"}, "sim");
+      checkKeys(sim, {"integrator", "dt", "collisions", "iterations", "position_iterations", "substeps", "max_steps"}, "sim");
+      optional(sim, "max_steps", s.maxSteps, &Reader::positive);
       if (sim["collisions"])
         s.collisions = named(sim["collisions"], "collisions", collisionMethodFromName, kCollisionMethodNames.list());
       if (sim["iterations"]) s.velocityIterations = wholeNumber(sim["iterations"], "iterations", 1, 1000);
@@ -49,9 +56,14 @@ class SceneReader : public Reader {
         s.integrator = named(sim["integrator"], "integrator", integratorFromName, kIntegratorNames.list());
       optional(sim, "dt", s.dt, &Reader::positive);
     }
+    const YAML::Node stepsAt = root["sim"] && root["sim"]["dt"] ? root["sim"]["dt"] : root["duration"] ? root["duration"] : root;
+    s.stepsLoc = {stepsAt.Mark().line + 1, stepsAt.Mark().column + 1};
+    if (const std::string over = stepsOverLimit(s, s.duration); !over.empty())
+      fail(stepsAt, over + "; raise dt, shorten duration, or, if the scene needs that many, raise the limit with "
+                           "'sim: {max_steps: N}'");
     const YAML::Node bodies = required(root, "bodies", "a scene");
     if (!bodies.IsSequence() || bodies.size() == 0) fail(bodies, "'bodies' must be a list of at least one body");
-    for (const YAML::Node& b : bodies) s.bodies.push_back(readBody(b, s));
+    for (const YAML::Node& b : bodies) s.bodies.push_back(readBody(b));
     if (const YAML::Node forces = root["forces"]) {
       if (!forces.IsSequence()) fail(forces, "'forces' must be a list, got " + describe(forces));
       for (const YAML::Node& f : forces) readForce(f, s);
@@ -103,7 +115,7 @@ class SceneReader : public Reader {
     }
   }
 
-  BodyDef readBody(const YAML::Node& n, const SceneDef& s) {
+  BodyDef readBody(const YAML::Node& n) {
     checkKeys(n, with({"name", "shape", "density", "mass", "inertia", "position", "angle", "velocity", "angular_velocity",
                        "static", "restitution", "friction"},
                       others_.body),
@@ -112,7 +124,8 @@ class SceneReader : public Reader {
     b.loc = {n.Mark().line + 1, n.Mark().column + 1};
     b.name = text(required(n, "name", "every body"), "name");
     if (b.name.empty()) fail(n, "a body's name cannot be empty");
-    if (s.bodyIndex(b.name) >= 0) fail(n["name"], "duplicate body name '" + b.name + "'; names must be unique");
+    // by hash: a scan of the names before would make loading quadratic in the bodies
+    if (!bodyNames_.insert(b.name).second) fail(n["name"], "duplicate body name '" + b.name + "'; names must be unique");
     b.shape = readShape(required(n, "shape", "body '" + b.name + "'"));
     optional(n, "density", b.density, &Reader::positive);
     optional(n, "mass", b.mass, &Reader::positive);
@@ -234,6 +247,7 @@ class SceneReader : public Reader {
   }
 
   const OtherKeys& others_;
+  std::unordered_set<std::string> bodyNames_;
 };
 
 }  // namespace

@@ -114,3 +114,21 @@ bodies:
   MESSAGE(render::analysis::describeFailure(def, isolated));
   CHECK(isolated.largestStable < 6.0);
 }
+
+TEST_CASE("a search stops at the scene's max_steps, over all its runs, and says so") {
+  // explicit Euler gains energy on a spring at every dt; each halving doubles a run's steps
+  std::string yaml = kSpringMass;
+  yaml += "sim: {max_steps: 20000}\n";
+  render::analysis::Study def = study(yaml);
+  def.model.integrator = sim::core::Integrator::ExplicitEuler;
+  const render::analysis::StabilityResult r = render::analysis::findBoundary(def);
+  const std::string said = render::analysis::describeFailure(def, r);
+  MESSAGE(said);
+  CHECK(r.budgetSpent);
+  CHECK(r.failsEverywhere);
+  // runs of 2000 (dt 0.01), 4000 and 8000 steps fit; the next, 16000, would pass 20000
+  CHECK(r.steps == 14000.0);
+  CHECK(r.firstFailing == doctest::Approx(0.0025));
+  CHECK(said.find("stopped early, after 14000 steps") != std::string::npos);
+  CHECK(said.find("max_steps") != std::string::npos);
+}

@@ -9,8 +9,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <memory>
 
+#include "render/video/container_check.h"
 #include "render/video/video.h"
 
 namespace fs = std::filesystem;
@@ -124,4 +126,93 @@ TEST_CASE("format names and ffmpeg's arguments") {
   CHECK(has("-pix_fmt", "yuv420p"));
   CHECK(has("-movflags", "+faststart"));
   CHECK(args.back() == "x.mp4");
+}
+
+namespace {
+
+// a stand-in for ffmpeg that reads the frames, writes `contents` to its output (its last argument),
+// prints `said` and exits 0, as ffmpeg 5.1 does when the disk fills while it writes the trailer
+fs::path fakeFfmpeg(const fs::path& dir, const std::string& contents, const std::string& said) {
+  const fs::path fake = dir / "fake-ffmpeg";
+  std::ofstream(fake) << "#!/bin/sh\nfor a; do out=$a; done\ncat >/dev/null\nprintf '" << contents
+                      << "' > \"$out\"\nprintf '" << said << "' >&2\nexit 0\n";
+  fs::permissions(fake, fs::perms::owner_all);
+  return fake;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// the message of finishing 3 frames through `program` over a good video at dir/v.mp4 (or "")
+std::string finishOverGoodVideo(const fs::path& dir, const std::string& program) {
+  try {
+    VideoWriter video((dir / "v.mp4").string(), VideoFormat::Mp4, 64, 48, 10.0, program);
+    for (int k = 0; k < 3; ++k) video.write(frame(k));
+    video.finish();
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("ffmpeg's error at exit 0 (a full disk at the trailer) keeps the previous video") {
+  const fs::path dir = scratchDir();
+  {
+    VideoWriter good((dir / "v.mp4").string(), VideoFormat::Mp4, 64, 48, 10.0);
+    for (int k = 0; k < 3; ++k) good.write(frame(k));
+    good.finish();
+  }
+  const std::string before = slurp(dir / "v.mp4");
+  const std::string message = finishOverGoodVideo(
+      dir, fakeFfmpeg(dir, "truncated", "Error writing trailer of v.mp4: No space left on device\\n").string());
+  CHECK(message.find("the video is incomplete") != std::string::npos);
+  CHECK(message.find("No space left on device") != std::string::npos);
+  CHECK(slurp(dir / "v.mp4") == before);
+  fs::remove(dir / "fake-ffmpeg");
+  CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator{}) == 1);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("a silent ffmpeg that leaves a file without its index or frames does not replace the video") {
+  const fs::path dir = scratchDir();
+  std::ofstream(dir / "v.mp4") << "good";
+  // an ftyp box alone (no moov), an mdat box that claims more than the file has, and a whole MP4
+  // with 12 frames where 3 were written
+  for (const std::string& contents : {std::string("\\0\\0\\0\\10ftyp"), std::string("\\0\\0\\0\\10ftyp\\0\\0\\1\\0mdat")}) {
+    const std::string message = finishOverGoodVideo(dir, fakeFfmpeg(dir, contents, "").string());
+    CHECK(message.find("the video is incomplete") != std::string::npos);
+    CHECK(slurp(dir / "v.mp4") == "good");
+  }
+  {
+    VideoWriter twelve((dir / "twelve.mp4").string(), VideoFormat::Mp4, 64, 48, 10.0);
+    for (int k = 0; k < 12; ++k) twelve.write(frame(k));
+    twelve.finish();
+  }
+  const fs::path copier = dir / "copier";
+  std::ofstream(copier) << "#!/bin/sh\nfor a; do out=$a; done\ncat >/dev/null\ncp '" << (dir / "twelve.mp4").string()
+                        << "' \"$out\"\n";
+  fs::permissions(copier, fs::perms::owner_all);
+  CHECK(finishOverGoodVideo(dir, copier.string()).find("holds 12 frames, not the 3 written") != std::string::npos);
+  CHECK(slurp(dir / "v.mp4") == "good");
+  fs::remove_all(dir);
+}
+
+TEST_CASE("a truncated webm or gif is found") {
+  const fs::path dir = scratchDir();
+  for (const auto& [format, name] : {std::pair{VideoFormat::Webm, "v.webm"}, std::pair{VideoFormat::Gif, "v.gif"}}) {
+    {
+      VideoWriter video((dir / name).string(), format, 64, 48, 10.0);
+      for (int k = 0; k < 5; ++k) video.write(frame(k));
+      video.finish();
+    }
+    const std::string whole = slurp(dir / name);
+    CHECK(render::video::videoDefect((dir / name).string(), format, 5) == "");
+    std::ofstream(dir / name, std::ios::binary) << whole.substr(0, whole.size() - 40);
+    CHECK(render::video::videoDefect((dir / name).string(), format, 5) != "");
+  }
+  fs::remove_all(dir);
 }

@@ -760,3 +760,28 @@ TEST_CASE("booleans take the YAML 1.1 spellings in any case") {
   const sim::scene::SceneDef s = sim::yaml::loadSceneText("bodies: [{name: a, shape: {circle: 1}, static: True}]\n", "inline.yaml");
   CHECK(s.bodies[0].isStatic);
 }
+
+TEST_CASE("scene and variant names must be one plain path component, at their key") {
+  expectSceneError("name: ../escaped\nbodies: [{name: a, shape: {box: [1, 1]}}]\n", 1, 7,
+                   {"the scene's name '../escaped'", "starts with '.'"});
+  expectSceneError("name: \"\"\nbodies: [{name: a, shape: {box: [1, 1]}}]\n", 1, 7, {"is empty"});
+  expectSceneError("bodies: [{name: a, shape: {box: [1, 1]}}]\nvariants:\n  a/b: {duration: 2}\n", 3, 3,
+                   {"variant name 'a/b'", "contains '/'"});
+}
+
+TEST_CASE("a run of more steps than max_steps is refused at dt, or at duration, saying what to change") {
+  expectSceneError("duration: 1.0e6\nsim: {dt: 1.0e-12}\nbodies: [{name: a, shape: {box: [1, 1]}}]\n", 2, 11,
+                   {"the run needs 1e+18 steps", "more than the limit of 1e+08", "raise dt", "max_steps"});
+  expectSceneError("duration: 1.0e6\nbodies: [{name: a, shape: {box: [1, 1]}}]\n", 1, 11, {"1e+09 steps"});
+  // the scene that needs them says so
+  const auto def = sim::yaml::loadSceneText(
+      "duration: 1.0e6\nsim: {max_steps: 1.0e9}\nbodies: [{name: a, shape: {box: [1, 1]}}]\n", kFile);
+  CHECK(def.maxSteps == 1e9);
+}
+
+TEST_CASE("a duplicate body name among many is found at its line (by hash, not by scan)") {
+  std::string text = "bodies:\n";
+  for (int k = 0; k < 2000; ++k) text += "  - {name: b" + std::to_string(k) + ", shape: {circle: 0.1}}\n";
+  text += "  - {name: b1234, shape: {circle: 0.1}}\n";
+  expectSceneError(text, 2002, 0, {"duplicate body name 'b1234'"});
+}

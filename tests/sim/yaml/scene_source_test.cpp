@@ -1,0 +1,131 @@
+// A variant merged over its scene: on new maps and lists, never changing a node of the file (so an
+// alias keeps what it was written as, and a map merged into itself is no hazard), each key given
+// once, and bounded by the file's size however aliases repeat what they name.
+#include <doctest/doctest.h>
+
+#include <string>
+
+#include "sim/yaml/scene_source.h"
+#include "sim/yaml/scene_yaml.h"
+
+namespace {
+
+const char* const kFile = "inline.yaml";
+
+// the SceneError that loading `text` with `variant` throws (its message empty when none is thrown)
+sim::yaml::SceneError loadError(const std::string& text, const std::string& variant) {
+  try {
+    (void)sim::yaml::loadSceneText(text, kFile, variant);
+  } catch (const sim::yaml::SceneError& e) {
+    return e;
+  }
+  return {kFile, 0, 0, ""};
+}
+
+const std::string kOneBody = "name: s\nbodies: [{name: a, shape: {box: [1, 1]}}]\n";
+
+// `{k0: &m<depth-1> {...}, k1: *m<depth-1>, ..., k9: *m<depth-1>}`: ten times more values per level
+// once expanded, written in about 50 bytes a level
+std::string aliasTree(int depth) {
+  std::string tree = "{k: 1}";
+  for (int level = 1; level <= depth; ++level) {
+    const std::string anchor = "m" + std::to_string(level - 1);
+    std::string next = "{k0: &";
+    next += anchor;
+    next += ' ';
+    next += tree;
+    for (int k = 1; k < 10; ++k) next += ", k" + std::to_string(k) + ": *" + anchor;
+    tree = next + '}';
+  }
+  return tree;
+}
+
+}  // namespace
+
+TEST_CASE("a key given twice in a variant is an error at its second place, not a merge of a map into itself") {
+  // the fuzzer's use-after-free: the second `a` merged the map `m` into itself, inserting the null
+  // key (never found by name) into the map being iterated
+  const sim::yaml::SceneError e = loadError(kOneBody + "world: {}\nvariants:\n  v:\n    world: {a: &m {~: 1, b: 2}, a: *m}\n", "v");
+  CHECK(e.line == 6);
+  CHECK(e.column == 33);
+  CHECK(e.message == "duplicate key 'a' in variant 'v'; give each key once");
+}
+
+TEST_CASE("duplicate keys in a variant are errors at every level, as they are in the scene") {
+  CHECK(loadError(kOneBody + "variants:\n  v: {duration: 1, duration: 2}\n", "v").message ==
+        "duplicate key 'duration' in variant 'v'; give each key once");
+  const sim::yaml::SceneError nested = loadError(kOneBody + "sim: {dt: 0.01}\nvariants:\n  v:\n    sim: {dt: 0.1, dt: 0.2}\n", "v");
+  CHECK(nested.line == 6);
+  CHECK(nested.column == 20);
+  CHECK(nested.message.find("duplicate key 'dt'") == 0);
+  const sim::yaml::SceneError body =
+      loadError(kOneBody + "variants:\n  v:\n    bodies: [{name: a, mass: 2}, {name: a, mass: 3}]\n", "v");
+  CHECK(body.line == 5);
+  CHECK(body.message == "body 'a' is changed twice in variant 'v'; give its changes once");
+}
+
+TEST_CASE("a variant that names a map of the scene through its alias merges it with itself, unchanged") {
+  const std::string text = kOneBody + "world: &w {gravity: [0, -2], friction: 0.5}\nvariants:\n  v: {world: *w}\n";
+  const sim::yaml::SceneSource s = sim::yaml::sceneSourceText(text, kFile, "v");
+  REQUIRE(s.root["world"].IsMap());
+  CHECK(s.root["world"].size() == 2);
+  CHECK(s.root["world"]["gravity"][1].as<double>() == -2.0);
+  // a key that is not a name (here the null key ~, which no lookup by name finds) is an error at it
+  const sim::yaml::SceneError e = loadError(kOneBody + "world: &w {gravity: [0, -2], ~: 1}\nvariants:\n  v: {world: *w}\n", "v");
+  CHECK(e.line == 3);
+  CHECK(e.column == 30);
+  CHECK(e.message == "a key in variant 'v' must be a name, got nothing");
+}
+
+TEST_CASE("a variant changes the body it names, not the bodies that share an alias with it") {
+  const std::string text =
+      "bodies:\n"
+      "  - {name: a, shape: &s {circle: 1}, velocity: &v [1, 0]}\n"
+      "  - {name: b, shape: *s, velocity: *v, position: [5, 0]}\n"
+      "variants:\n"
+      "  v: {bodies: [{name: a, shape: {circle: 2}, velocity: [3, 0]}]}\n";
+  const sim::scene::SceneDef s = sim::yaml::loadSceneText(text, kFile, "v");
+  REQUIRE(s.bodies.size() == 2);
+  CHECK(s.bodies[0].shape.radius == 2.0);
+  CHECK(s.bodies[0].velocity.x() == 3.0);
+  CHECK(s.bodies[1].shape.radius == 1.0);
+  CHECK(s.bodies[1].velocity.x() == 1.0);
+  // and the base scene read from the same text is the base scene
+  const sim::scene::SceneDef base = sim::yaml::loadSceneText(text, kFile);
+  CHECK(base.bodies[0].shape.radius == 1.0);
+}
+
+TEST_CASE("a variant whose aliases repeat a tree tenfold per level stops at the file's size") {
+  // 10^7 pairs once expanded, from under 400 bytes
+  const std::string text = kOneBody + "world: &w " + aliasTree(7) + "\nvariants:\n  v: {world: *w}\n";
+  const sim::yaml::SceneError e = loadError(text, "v");
+  CHECK(e.line > 0);
+  CHECK(e.message.find("variant 'v' repeats its values through aliases") == 0);
+  // a tree of aliases that the merge does not walk is left whole: the model's reader names its key
+  const sim::yaml::SceneError unknown = loadError(kOneBody + "variants:\n  v: {world: " + aliasTree(7) + "}\n", "v");
+  CHECK(unknown.message.find("unknown key 'k0' in world") == 0);
+}
+
+TEST_CASE("a variant keeps the scene's order of keys and bodies, and appends what it adds") {
+  const std::string text = kOneBody + "sim: {dt: 0.01, integrator: rk4}\nvariants:\n"
+                           "  v: {sim: {collisions: none, dt: 0.02}, bodies: [{name: c, shape: {circle: 1}}, {name: a, mass: 2}]}\n";
+  const sim::yaml::SceneSource s = sim::yaml::sceneSourceText(text, kFile, "v");
+  std::string keys;
+  for (const auto& kv : s.root["sim"]) keys += kv.first.Scalar() + " ";
+  CHECK(keys == "dt integrator collisions ");
+  CHECK(s.root["sim"]["dt"].as<double>() == 0.02);
+  REQUIRE(s.root["bodies"].size() == 2);
+  CHECK(s.root["bodies"][0]["name"].Scalar() == "a");
+  CHECK(s.root["bodies"][0]["mass"].as<double>() == 2.0);
+  CHECK(s.root["bodies"][1]["name"].Scalar() == "c");
+}
+
+TEST_CASE("a file without end or larger than the limit is refused after reading at most the limit") {
+  try {
+    (void)sim::yaml::readSceneSource("/dev/zero");
+    FAIL_CHECK("/dev/zero loaded");
+  } catch (const sim::yaml::SceneError& e) {
+    CHECK(std::string(e.what()).find("/dev/zero") == 0);
+    CHECK(e.message.find("larger than the limit of 16 MiB") != std::string::npos);
+  }
+}
