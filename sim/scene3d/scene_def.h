@@ -98,6 +98,7 @@ struct SceneDef {
   Vec3 gravity = Vec3::Zero();
   Integrator integrator = Integrator::Splitting;
   double dt = sim::core::settings::kDefaultDt;
+  double maxSteps = sim::core::settings::kDefaultMaxSteps;  // the most steps a run may take (sim: max_steps)
   bool normalize = true;  // q ← q/|q| after every step (World::normalizeQuaternions)
   std::vector<BodyDef> bodies;
   std::vector<PointForceDef> pointForces;

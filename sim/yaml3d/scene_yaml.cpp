@@ -1,8 +1,11 @@
 #include "sim/yaml3d/scene_yaml.h"
 
+#include <cmath>
+#include <sstream>
 #include <utility>
 
 #include "sim/scene3d/scene_build.h"
+#include "sim/yaml/path_name.h"
 #include "sim/yaml3d/reader3.h"
 
 namespace sim::yaml3d {
@@ -45,6 +48,9 @@ class SceneReader3 : public Reader3 {
               "the scene");
     if (source.dimensions != 3) fail(root, "this reads 3D scenes, which say 'dimensions: 3'");
     s.name = root["name"] ? text(root["name"], "name") : source.stem;
+    if (const std::string fault = sim::yaml::pathNameFault(s.name); !fault.empty())
+      fail(root["name"] ? root["name"] : root, "the scene's name '" + s.name + "' names its output files but " + fault +
+                                                   "; give 'name:' letters, digits, '-' or '_'");
     optional(root, "description", s.description, &Reader::text);
     optional(root, "duration", s.duration, &Reader::positive);
     if (const YAML::Node w = root["world"]) {
@@ -52,12 +58,23 @@ class SceneReader3 : public Reader3 {
       optional(w, "gravity", s.gravity, &Reader3::vec3);
     }
     if (const YAML::Node sim = root["sim"]) {
-      keys(sim, {"integrator", "dt", "normalize"}, kSimRefusals, "sim");
+      keys(sim, {"integrator", "dt", "normalize", "max_steps"}, kSimRefusals, "sim");
+      optional(sim, "max_steps", s.maxSteps, &Reader::positive);
       if (sim["integrator"])
         s.integrator = named(sim["integrator"], "integrator", [](const std::string& n) { return kIntegratorNames.parse(n); },
                              kIntegratorNames.list());
       optional(sim, "dt", s.dt, &Reader::positive);
       optional(sim, "normalize", s.normalize, &Reader::boolean);
+    }
+    // a bound on work, as in 2D (sim/scene/step_limit.h): a typo in dt must not run for years
+    const double steps = std::ceil(s.duration / s.dt);
+    if (steps > s.maxSteps) {
+      const YAML::Node at = root["sim"] && root["sim"]["dt"] ? root["sim"]["dt"] : root["duration"] ? root["duration"] : root;
+      std::ostringstream why;
+      why << "the run needs " << steps << " steps (" << s.duration << " s at dt = " << s.dt << " s), more than the limit of "
+          << s.maxSteps << "; raise dt, shorten duration, or, if the scene needs that many, raise the limit with "
+          << "'sim: {max_steps: N}'";
+      fail(at, why.str());
     }
     const YAML::Node bodies = required(root, "bodies", "a scene");
     if (!bodies.IsSequence() || bodies.size() == 0) fail(bodies, "'bodies' must be a list of at least one body");
