@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # layers_test.sh BUILD SOURCE PROBE...: the layering of sim/ and render/ holds.
 #   PROBE is verdict:target:layer:header; an "allow" probe must compile, a "deny" probe must fail
-#   because the header is not found (the layer's include root does not hold it).
+#   because the header is not found (the layer's include root does not hold it), in g++'s words or
+#   clang's (make sanitize builds with clang).
 #   Every .h and .cpp of a layer folder declares the folder's namespace (sim/core: sim::core).
 set -u
 build=$1 source=$2
@@ -14,7 +15,7 @@ for probe in "$@"; do
   if [ "$verdict" = allow ] && [ $status -ne 0 ]; then
     echo "FAIL: $layer cannot include $header, which it links:"; echo "$output" | grep -m3 error
     failures=$((failures + 1))
-  elif [ "$verdict" = deny ] && ! { [ $status -ne 0 ] && grep -q "$header: No such file" <<<"$output"; }; then
+  elif [ "$verdict" = deny ] && ! { [ $status -ne 0 ] && grep -Eq "$header: No such file|'$header' file not found" <<<"$output"; }; then
     echo "FAIL: $layer includes $header, a layer it does not link (status $status)"
     failures=$((failures + 1))
   else
