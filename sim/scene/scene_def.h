@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/core/force_defs.h"
 #include "sim/core/integrators.h"
 #include "sim/core/settings.h"
 #include "sim/core/shape.h"
@@ -16,12 +17,6 @@ namespace sim::scene {
 using namespace sim::core;
 using namespace sim::collision;
 using namespace sim::world;
-
-// where a definition came from in its file (1-based; 0 when unknown), for messages
-struct SourceLoc {
-  int line = 0;
-  int column = 0;
-};
 
 struct BodyDef {
   std::string name;
@@ -39,39 +34,9 @@ struct BodyDef {
   SourceLoc loc;
 };
 
-struct PointForceDef {
-  std::string body;
-  Vec2 point = Vec2::Zero();  // body coordinates as written
-  Vec2 force = Vec2::Zero();
-  bool bodyFrame = false;
-  double from = 0.0;
-  double until = std::numeric_limits<double>::infinity();
-};
-
-struct SpringDef {
-  std::string body;
-  Vec2 point = Vec2::Zero();
-  std::string body2;  // empty: the spring is anchored in the world at `anchor`
-  Vec2 point2 = Vec2::Zero();
-  Vec2 anchor = Vec2::Zero();
-  double stiffness = 0.0;
-  double restLength = 0.0;
-  double damping = 0.0;
-};
-
-struct DragDef {
-  std::string body;
-  double linear = 0.0;
-  double angular = 0.0;
-};
-
-struct EventDef {
-  double time = 0.0;
-  std::string body;
-  Vec2 impulse = Vec2::Zero();  // world coordinates
-  Vec2 point = Vec2::Zero();    // body coordinates as written, or world when pointInWorld
-  bool pointInWorld = false;
-};
+using PointForceDef = PointForceDefOf<Vec2>;
+using SpringDef = SpringDefOf<Vec2>;
+using EventDef = EventDefOf<Vec2>;
 
 // a closed-form answer that `rigidreel check` compares against; absent fields are not checked
 struct ExpectDef {

@@ -3,11 +3,11 @@
 // No contacts in 3D: there are no static bodies, planes, restitution or collision methods.
 #pragma once
 
-#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "sim/core/force_defs.h"
 #include "sim/core/settings.h"
 #include "sim/world3d/integrators.h"
 #include "sim/world3d/shape.h"
@@ -15,11 +15,7 @@
 namespace sim::scene3d {
 using namespace sim::world3d;
 
-// where a definition came from in its file (1-based; 0 when unknown), for messages
-struct SourceLoc {
-  int line = 0;
-  int column = 0;
-};
+using sim::core::SourceLoc;
 
 struct BodyDef {
   std::string name;
@@ -35,39 +31,10 @@ struct BodyDef {
   SourceLoc massLoc;  // where the mass properties are written (the body when they are not)
 };
 
-struct PointForceDef {
-  std::string body;
-  Vec3 point = Vec3::Zero();  // body coordinates
-  Vec3 force = Vec3::Zero();  // world, or body coordinates when bodyFrame
-  bool bodyFrame = false;
-  double from = 0.0;
-  double until = std::numeric_limits<double>::infinity();
-};
-
-struct SpringDef {
-  std::string body;
-  Vec3 point = Vec3::Zero();
-  std::string body2;  // empty: the spring is anchored in the world at `anchor`
-  Vec3 point2 = Vec3::Zero();
-  Vec3 anchor = Vec3::Zero();
-  double stiffness = 0.0;
-  double restLength = 0.0;
-  double damping = 0.0;
-};
-
-struct DragDef {
-  std::string body;
-  double linear = 0.0;
-  double angular = 0.0;
-};
-
-struct EventDef {
-  double time = 0.0;
-  std::string body;
-  Vec3 impulse = Vec3::Zero();  // world coordinates
-  Vec3 point = Vec3::Zero();    // body coordinates, or world when pointInWorld
-  bool pointInWorld = false;
-};
+using PointForceDef = sim::core::PointForceDefOf<Vec3>;
+using SpringDef = sim::core::SpringDefOf<Vec3>;
+using sim::core::DragDef;
+using EventDef = sim::core::EventDefOf<Vec3>;
 
 // a closed-form answer that `rigidreel check` compares against; absent fields are not checked
 struct ExpectDef {

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "sim/scene3d/scene_build.h"
+#include "sim/yaml/force_reader.h"
 #include "sim/yaml/path_name.h"
 #include "sim/yaml3d/reader3.h"
 
@@ -79,13 +80,15 @@ class SceneReader3 : public Reader3 {
     const YAML::Node bodies = required(root, "bodies", "a scene");
     if (!bodies.IsSequence() || bodies.size() == 0) fail(bodies, "'bodies' must be a list of at least one body");
     for (const YAML::Node& b : bodies) s.bodies.push_back(readBody(b, s));
+    // forces and events are read alike in 2D and 3D (sim/yaml/force_reader.h) but for the vector
+    const auto readVector = [this](const YAML::Node& v, const std::string& key) { return vec3(v, key); };
     if (const YAML::Node forces = root["forces"]) {
       if (!forces.IsSequence()) fail(forces, "'forces' must be a list, got " + describe(forces));
-      for (const YAML::Node& f : forces) readForce(f, s);
+      for (const YAML::Node& f : forces) sim::yaml::readForce(*this, f, s, readVector);
     }
     if (const YAML::Node events = root["events"]) {
       if (!events.IsSequence()) fail(events, "'events' must be a list, got " + describe(events));
-      for (const YAML::Node& e : events) s.events.push_back(readEvent(e, s));
+      for (const YAML::Node& e : events) s.events.push_back(sim::yaml::readEvent(*this, e, s, readVector));
     }
     if (const YAML::Node expect = root["expect"]) {
       if (!expect.IsSequence()) fail(expect, "'expect' must be a list, got " + describe(expect));
@@ -150,69 +153,7 @@ class SceneReader3 : public Reader3 {
     return b;
   }
 
-  void readForce(const YAML::Node& n, SceneDef& s) {
-    if (!n.IsMap()) fail(n, "expected a map for a force, got " + describe(n));
-    // without a type, a misspelled key is the likelier fault: name it
-    if (!n["type"])
-      checkKeys(n, {"type", "body", "point", "anchor", "body2", "point2", "stiffness", "rest_length", "damping", "frame",
-                    "force", "from", "until", "linear", "angular"},
-                "a force");
-    const std::string type = text(required(n, "type", "every force"), "type");
-    if (type == "spring") {
-      checkKeys(n, {"type", "body", "point", "anchor", "body2", "point2", "stiffness", "rest_length", "damping"}, "a spring");
-      SpringDef sp;
-      sp.body = bodyRef(n, "body", s, "a spring");
-      optional(n, "point", sp.point, &Reader3::vec3);
-      if (n["body2"]) {
-        if (n["anchor"]) fail(n["anchor"], "a spring has either 'anchor' (a world point) or 'body2', not both");
-        sp.body2 = bodyRef(n, "body2", s, "a spring");
-        if (sp.body2 == sp.body) fail(n["body2"], "a spring needs two different bodies");
-        optional(n, "point2", sp.point2, &Reader3::vec3);
-      } else {
-        if (n["point2"]) fail(n["point2"], "'point2' goes with 'body2'");
-        sp.anchor = vec3(required(n, "anchor", "a spring without 'body2'"), "anchor");
-      }
-      sp.stiffness = nonNegative(required(n, "stiffness", "a spring"), "stiffness");
-      optional(n, "rest_length", sp.restLength, &Reader::nonNegative);
-      optional(n, "damping", sp.damping, &Reader::nonNegative);
-      s.springs.push_back(sp);
-    } else if (type == "force") {
-      checkKeys(n, {"type", "body", "point", "frame", "force", "from", "until"}, "a force");
-      PointForceDef f;
-      f.body = bodyRef(n, "body", s, "a force");
-      optional(n, "point", f.point, &Reader3::vec3);
-      f.force = vec3(required(n, "force", "a force"), "force");
-      if (n["frame"]) f.bodyFrame = coordinateFrame(n["frame"]) == "body";
-      optional(n, "from", f.from, &Reader::nonNegative);
-      if (n["until"]) {
-        f.until = finite(n["until"], "until");
-        if (!(f.until > f.from)) fail(n["until"], "'until' must come after 'from'");
-      }
-      s.pointForces.push_back(f);
-    } else if (type == "drag") {
-      checkKeys(n, {"type", "body", "linear", "angular"}, "a drag");
-      DragDef d;
-      d.body = bodyRef(n, "body", s, "a drag");
-      optional(n, "linear", d.linear, &Reader::nonNegative);
-      optional(n, "angular", d.angular, &Reader::nonNegative);
-      s.drags.push_back(d);
-    } else {
-      fail(n["type"], "unknown force type '" + type + "'; choose one of: spring, force, drag (gravity is set in world:)");
-    }
-  }
 
-  EventDef readEvent(const YAML::Node& n, const SceneDef& s) {
-    checkKeys(n, {"time", "body", "impulse", "point", "frame"}, "an event");
-    EventDef e;
-    const YAML::Node t = required(n, "time", "an event");
-    e.time = finite(t, "time");
-    checkTime(t, e.time, s.duration, "event");
-    e.body = bodyRef(n, "body", s, "an event");
-    e.impulse = vec3(required(n, "impulse", "an event"), "impulse");
-    optional(n, "point", e.point, &Reader3::vec3);
-    if (n["frame"]) e.pointInWorld = coordinateFrame(n["frame"]) == "world";
-    return e;
-  }
 
   ExpectDef readExpect(const YAML::Node& n, const SceneDef& s) {
     if (!n.IsMap()) fail(n, "expected a map for an expect entry, got " + describe(n));
