@@ -20,6 +20,7 @@ sim::scene::SceneDef withMethod(sim::scene::SceneDef def, const SweepCase& m) {
   def.collisions = m.collisions;
   def.dt = m.dt;
   if (m.iterations > 0) def.velocityIterations = m.iterations;
+  if (m.substeps > 0) def.substeps = m.substeps;
   return def;
 }
 
@@ -71,8 +72,13 @@ SweepRow runSweepCase(const sim::scene::SceneDef& scene, const SweepCase& method
   row.finite = m.finite;
   row.energyDrift = m.energyDrift;
   row.maxPenetration = m.maxPenetration;
+  row.topDisplacement = m.topDisplacement;
+  row.maxDisplacement = m.maxDisplacement;
+  row.fastest = m.fastest;
   if (!m.finite) {
     row.error = std::numeric_limits<double>::infinity();
+  } else if (reference.name == kRestPose) {
+    row.error = m.topDisplacement;
   } else if (reference.name == "expect") {
     sim::world::World again = sim::scene::buildWorld(def);
     for (const sim::scene::CheckResult& r : sim::scene::runExpects(def, again)) row.error = std::max(row.error, r.error);
@@ -97,6 +103,7 @@ SweepRow runSweepCase(const sim::scene::SceneDef& scene, const SweepCase& method
   if (!seconds.empty()) {
     std::sort(seconds.begin(), seconds.end());
     row.secondsPerSimSecond = seconds[seconds.size() / 2] / def.duration;
+    row.secondsPerStep = seconds[seconds.size() / 2] / static_cast<double>(std::max(1L, row.steps));
   }
   return row;
 }
