@@ -31,7 +31,9 @@ struct SweepRow {
   double energyDrift = 0.0;
   double maxPenetration = 0.0;
   bool finite = true;
-  double secondsPerStep = 0.0;  // the same median wall time per step
+  // processor time of the timed runs per step, median, s: what a stack sweep charts, as it is less
+  // disturbed than wall time on a shared machine (the research notes of issue 14)
+  double secondsPerStep = 0.0;
   // the stack measures at the end (RunMetrics): the top body's and the farthest body's distance
   // from where they started, m, and the fastest body's speed, m/s
   double topDisplacement = 0.0, maxDisplacement = 0.0, fastest = 0.0;

@@ -52,7 +52,7 @@ std::vector<int> wholeNumbers(const std::string& text, const std::string& option
 // through its iterations or substeps (the work-precision chart of stack solvers)
 int stackSweep(const SweepOptions& o, const sim::scene::SceneDef& def, const std::vector<SweepRow>& rows, const std::string& base) {
   AtomicFile csv(base + ".csv");
-  csv.stream() << "integrator,collisions,dt,iterations,substeps,steps,seconds_per_step,top_displacement,max_displacement,fastest\n";
+  csv.stream() << "integrator,collisions,dt,iterations,substeps,steps,cpu_seconds_per_step,top_displacement,max_displacement,fastest\n";
   for (const SweepRow& r : rows)
     csv.stream() << sim::core::integratorName(r.method.integrator) << ',' << sim::world::collisionMethodName(r.method.collisions) << ','
                  << formatNumber(r.method.dt) << ',' << r.method.iterations << ',' << r.method.substeps << ',' << r.steps << ','
@@ -60,7 +60,7 @@ int stackSweep(const SweepOptions& o, const sim::scene::SceneDef& def, const std
                  << formatNumber(r.maxDisplacement) << ',' << formatNumber(r.fastest) << '\n';
   Chart chart;
   chart.title = def.name + ": cost against the top body's displacement from rest after " + formatNumber(def.duration) + " s";
-  chart.xLabel = "cost: wall milliseconds per step (median of " + std::to_string(o.repeat) + " runs)";
+  chart.xLabel = "cost: processor milliseconds per step (median of " + std::to_string(o.repeat) + " runs)";
   chart.yLabel = "top body's displacement from rest, m";
   chart.logX = chart.logY = true;
   std::map<std::string, ChartSeries> byMethod;

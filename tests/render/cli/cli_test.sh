@@ -304,7 +304,7 @@ expect "stability --collisions with an unknown name exits 2" 2 err "unknown name
 STACK=$SCENES/box_stack.yaml
 expect "sweep --stack measures against the rest pose" 0 out "against: the rest pose" sweep "$STACK" --stack --integrators symplectic_euler \
   --collisions sequential,soft_step --iterations 4,8 --substeps 2,4 --dt 0.05:0.05:1 --repeat 1 -o sw
-if [ "$(head -n 1 sw/box_stack-sweep.csv 2>/dev/null)" = "integrator,collisions,dt,iterations,substeps,steps,seconds_per_step,top_displacement,max_displacement,fastest" ] &&
+if [ "$(head -n 1 sw/box_stack-sweep.csv 2>/dev/null)" = "integrator,collisions,dt,iterations,substeps,steps,cpu_seconds_per_step,top_displacement,max_displacement,fastest" ] &&
    [ "$(wc -l < sw/box_stack-sweep.csv)" -eq 5 ] && [ -s sw/box_stack-sweep.png ]; then
   ok "sweep --stack writes a row per iteration and substep count, and the chart"
 else
