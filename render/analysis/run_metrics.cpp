@@ -98,6 +98,8 @@ RunMetrics measureRun(World& world, double until, const MetricsOptions& options)
   for (size_t i = 0; i < world.bodies.size(); ++i)
     if (!world.bodies[i].isStatic && (top < 0 || world.bodies[i].x.y() > world.bodies[top].x.y())) top = static_cast<int>(i);
   const Vec2 topStart = top >= 0 ? world.bodies[top].x : Vec2::Zero();
+  std::vector<Vec2> rest;
+  for (const Body& b : world.bodies) rest.push_back(b.x);
   const double topSize = top >= 0 ? 2.0 * boundingRadius(world.bodies[top].shape) / std::sqrt(2.0) : 1.0;
 
   try {
@@ -109,6 +111,13 @@ RunMetrics measureRun(World& world, double until, const MetricsOptions& options)
   m.energyEnd = energy(world).total();
   summarizeEnergies(recorder.energies, m);
   if (top >= 0 && m.finite) m.topDrift = (world.bodies[top].x - topStart).norm() / topSize;
+  if (top >= 0 && m.finite) m.topDisplacement = (world.bodies[top].x - topStart).norm();
+  for (size_t i = 0; i < world.bodies.size() && m.finite; ++i) {
+    const Body& b = world.bodies[i];
+    if (b.isStatic) continue;
+    m.maxDisplacement = std::max(m.maxDisplacement, (b.x - rest[i]).norm());
+    m.fastest = std::max(m.fastest, b.v.norm());
+  }
   return m;
 }
 
@@ -117,6 +126,8 @@ bool holds(RunMetrics& m, const MetricsOptions& o) {
   else if (o.energy && (!std::isfinite(m.energyTrend) || m.energyTrend > 0.10)) m.failure = "energy grows";
   else if (m.tunneled) m.failure = "tunneling";
   else if (o.stack && m.topDrift > 0.05) m.failure = "stack drifts";
+  else if (o.within > 0.0 && m.maxDisplacement > o.within) m.failure = "a body leaves its rest pose";
+  else if (o.within > 0.0 && m.fastest > kRestSpeed) m.failure = "not at rest";
   else if (o.penetration && m.maxPenetration > 2.0 * settings::kLinearSlop) m.failure = "penetration";
   else m.failure = "";
   return *m.failure == '\0';

@@ -25,6 +25,11 @@ struct RunMetrics {
   bool tunneled = false;        // a body ended up through another, with no contact on the way
   int tunnelA = -1, tunnelB = -1;
   double topDrift = 0.0;        // the highest dynamic body's displacement over its size
+  // at the end of a finite run, against where the dynamic bodies started (their rest pose in a
+  // stack): the highest one's displacement and the largest of any, m, and the fastest speed, m/s
+  double topDisplacement = 0.0;
+  double maxDisplacement = 0.0;
+  double fastest = 0.0;
   long steps = 0;
   // 3D runs (run_metrics3.h): the largest |L(t) − L(0)| / |L(0)| about the origin, and | |q| − 1 |
   double angularMomentumDrift = 0.0;
@@ -36,7 +41,13 @@ struct MetricsOptions {
   bool penetration = true;  // find contacts after every step (costly for big scenes)
   bool energy = true;       // the energy criterion applies (no source of energy in the scene)
   bool stack = false;       // the stack-drift criterion applies
+  // when positive, a stack holds only if every dynamic body ends within this distance of where it
+  // started, m, and slower than kRestSpeed (the "holding": within 5 cm and below 1 cm/s)
+  double within = 0.0;
 };
+
+// a body slower than this at the end is at rest, m/s (the `within` criterion)
+inline constexpr double kRestSpeed = 0.01;
 
 // the run's energy at the start, E(0) = kinetic + potential, and the scale drifts are relative to
 void startEnergy(double kinetic, double potential, RunMetrics& metrics);
@@ -48,7 +59,8 @@ void summarizeEnergies(const std::vector<double>& energies, RunMetrics& metrics)
 RunMetrics measureRun(World& world, double until, const MetricsOptions& options);
 
 // the stability criteria: finite; energy trend ≤ 10 %; no tunneling; top of a stack drifting less
-// than 5 % of its size; penetration under 2 × slop. Fills metrics.failure with the first that fails.
+// than 5 % of its size; every body within `within` of its start and at rest (when asked);
+// penetration under 2 × slop. Fills metrics.failure with the first that fails.
 bool holds(RunMetrics& metrics, const MetricsOptions& options);
 
 }  // namespace render::analysis

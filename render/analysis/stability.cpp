@@ -27,6 +27,8 @@ double startValue(const Study& study) {
     }
     case Parameter::MassRatio: return 1.0;
     case Parameter::StackHeight: return 1.0;
+    case Parameter::Iterations: return 1.0;
+    case Parameter::Substeps: return 1.0;
   }
   return 1.0;
 }
@@ -36,8 +38,11 @@ MetricsOptions criteria(const Study& study) {
   MetricsOptions o;
   // energy may only grow where nothing feeds it
   o.energy = def.events.empty() && def.pointForces.empty();
-  o.penetration = def.bodies.size() > 1;
   o.stack = study.stability.stack;
+  o.within = study.stability.within;
+  // a stack held within a distance of its rest pose is judged by that distance: how deep its
+  // contacts sink is part of it (soft_step's contacts give by design)
+  o.penetration = def.bodies.size() > 1 && o.within <= 0.0;
   return o;
 }
 
@@ -87,6 +92,8 @@ Study withParameter(const Study& study, double value, double phase) {
       def.expects.clear();
       break;
     }
+    case Parameter::Iterations: def.velocityIterations = static_cast<int>(std::lround(value)); break;
+    case Parameter::Substeps: def.substeps = static_cast<int>(std::lround(value)); break;
   }
   return changed;
 }
@@ -101,19 +108,21 @@ bool holdsAt(const Study& study, double value, RunMetrics& metrics) {
 
 StabilityResult findBoundary(const Study& def) {
   const StabilityDef& s = def.stability;
-  const bool integer = s.parameter == Parameter::StackHeight;
+  const bool integer = s.parameter == Parameter::StackHeight || s.fewest();
   const double phases = s.parameter == Parameter::Speed ? 8.0 : 1.0;
   // every run counts against the scene's max_steps: a scene that fails at every dt would otherwise
   // halve dt 40 times, each run twice as long as the one before
   double spent = 0.0;
-  StabilityResult r = searchBoundary(startValue(def), s.to > 0.0 ? s.to : (integer ? 1000.0 : 1e12), integer,
-                                     [&](double value, RunMetrics& m) {
-                                       const sim::scene::SceneDef at = withParameter(def, value).model;
-                                       const double steps = phases * sim::scene::stepCount(at, stabilityDuration(at));
-                                       if (spent + steps > def.model.maxSteps) throw BudgetSpent{};
-                                       spent += steps;
-                                       return holdsAt(def, value, m);
-                                     });
+  const auto run = [&](double value, RunMetrics& m) {
+    const sim::scene::SceneDef at = withParameter(def, value).model;
+    const double steps = phases * sim::scene::stepCount(at, stabilityDuration(at));
+    if (spent + steps > def.model.maxSteps) throw BudgetSpent{};
+    spent += steps;
+    return holdsAt(def, value, m);
+  };
+  const double limit = s.to > 0.0 ? s.to : (integer ? 1000.0 : 1e12);
+  StabilityResult r = s.fewest() ? searchFewest(startValue(def), limit, run)
+                                 : searchBoundary(startValue(def), limit, integer, run);
   r.steps = spent;
   return r;
 }
@@ -169,6 +178,41 @@ StabilityResult searchBoundary(double start, double limit, bool integer, const s
   return r;
 }
 
+StabilityResult searchFewest(double start, double limit, const std::function<bool(double, RunMetrics&)>& holds) {
+  StabilityResult r;
+  r.fewest = true;
+  RunMetrics m;
+  double good = 0.0, bad = 0.0;
+  try {
+    // a value that holds: double until one does (or the limit fails too)
+    for (double n = start;; n = std::min(2.0 * n, limit)) {
+      if (holds(n, m)) {
+        good = n;
+        break;
+      }
+      bad = n, r.failing = m;
+      if (n >= limit) {
+        r.failsEverywhere = true;
+        r.firstFailing = bad;
+        return r;
+      }
+    }
+    if (bad == 0.0) r.holdsToLimit = true;
+    // bisect down to the neighbour that fails
+    while (bad > 0.0 && good - bad > 1.0) {
+      const double mid = std::floor(0.5 * (good + bad));
+      if (holds(mid, m)) good = mid;
+      else bad = mid, r.failing = m;
+    }
+  } catch (const BudgetSpent&) {
+    r.budgetSpent = true;
+    r.failsEverywhere = good == 0.0 && bad > 0.0;
+  }
+  r.largestStable = good;
+  r.firstFailing = bad;
+  return r;
+}
+
 std::string describeFailure(const Study& study, const StabilityResult& r) {
   const sim::scene::SceneDef& def = study.model;
   return describeBoundary(std::string(sim::core::integratorName(def.integrator)) + " + " +
@@ -184,9 +228,9 @@ std::string describeBoundary(const std::string& method, std::string_view p, cons
     budget << "; the search stopped early, after " << r.steps << " steps, as the next run would pass the scene's "
            << "max_steps (" << maxSteps << "); raise it with 'sim: {max_steps: N}' to search further";
   if (r.holdsToLimit || (r.budgetSpent && r.firstFailing == 0.0)) {
-    if (r.largestStable > 0.0) o << "holds up to " << p << " = " << r.largestStable;
+    if (r.largestStable > 0.0) o << (r.fewest ? "holds from " : "holds up to ") << p << " = " << r.largestStable;
     else o << "no run fits in the budget";
-    o << (r.budgetSpent ? budget.str() : " (the search's limit)");
+    o << (r.budgetSpent ? budget.str() : r.fewest ? " (the fewest tried)" : " (the search's limit)");
     return o.str();
   }
   const RunMetrics& m = r.failing;
@@ -199,6 +243,10 @@ std::string describeBoundary(const std::string& method, std::string_view p, cons
     o << "tunneling (a body passes through another)";
   else if (failure == "stack drifts")
     o << "the top drifts " << std::lround(100.0 * m.topDrift) << " % of its size";
+  else if (failure == "a body leaves its rest pose")
+    o << "a body ends " << m.maxDisplacement << " m from its rest pose";
+  else if (failure == "not at rest")
+    o << "a body still moves at " << m.fastest << " m/s";
   else if (failure == "penetration")
     o << "penetration " << m.maxPenetration << " m (over 2 × slop)";
   else if (failure == "angular momentum drifts")
@@ -209,7 +257,7 @@ std::string describeBoundary(const std::string& method, std::string_view p, cons
     o << failure;
   o << " at " << p << " = " << r.firstFailing;
   if (r.failsEverywhere) o << " (fails at every value tried)";
-  else o << "; holds at " << r.largestStable;
+  else o << (r.fewest ? "; holds from " : "; holds at ") << r.largestStable;
   o << budget.str();
   return o.str();
 }

@@ -13,6 +13,10 @@
 namespace render::analysis {
 
 struct StabilityResult {
+  // searched for the fewest iterations or substeps that hold (searchFewest): then largestStable is
+  // the fewest that held, firstFailing the most that failed, holdsToLimit that the first value tried
+  // held already, failsEverywhere that the limit failed too
+  bool fewest = false;
   double largestStable = 0.0;  // the largest value that held (0 when none did)
   double firstFailing = 0.0;   // the smallest value found to fail (0 when none did)
   RunMetrics failing;     // the metrics of the run at firstFailing
@@ -43,6 +47,10 @@ StabilityResult findBoundary(const Study& study);
 // there and says what it knows (StabilityResult::budgetSpent)
 struct BudgetSpent {};
 StabilityResult searchBoundary(double start, double limit, bool integer, const std::function<bool(double, RunMetrics&)>& holds);
+// the fewest (whole) value from `start` up to `limit` at which `holds`, for a scene that holds with
+// more effort and fails with less: doubling until one holds, then bisecting down to a neighbour that
+// fails
+StabilityResult searchFewest(double start, double limit, const std::function<bool(double, RunMetrics&)>& holds);
 
 // "explicit_euler: energy +37 % at dt = 0.021"
 std::string describeFailure(const Study& study, const StabilityResult& result);

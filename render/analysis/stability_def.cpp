@@ -11,7 +11,7 @@ StabilityDef readStability(const sim::yaml::SceneSource& source, const sim::scen
   if (!n) return d;
   return sim::yaml::readGuarded(source.file, [&] {
     const sim::yaml::Reader r(source.file);
-    r.checkKeys(n, {"parameter", "body", "from", "to", "stack"}, "stability");
+    r.checkKeys(n, {"parameter", "body", "from", "to", "stack", "within"}, "stability");
     using Parameter = StabilityDef::Parameter;
     if (const YAML::Node p = n["parameter"]) {
       const std::string name = r.text(p, "parameter");
@@ -26,6 +26,7 @@ StabilityDef readStability(const sim::yaml::SceneSource& source, const sim::scen
     if (n["to"]) d.to = r.positive(n["to"], "to");
     if (d.to > 0.0 && d.from > 0.0 && !(d.to > d.from)) r.fail(n["to"], "'to' must be larger than 'from'");
     if (n["stack"]) d.stack = r.boolean(n["stack"], "stack");
+    if (n["within"]) d.within = r.positive(n["within"], "within");
     if (d.parameter == Parameter::StackHeight) d.stack = true;
     return d;
   });

@@ -16,14 +16,20 @@ namespace render::analysis {
 // the scene's top-level key this block is read from
 inline constexpr const char* kStabilityKey = "stability";
 
-// the parameter the search grows for the largest value at which the scene still holds
+// the parameter the search grows for the largest value at which the scene still holds; for the
+// solver's effort (sequential's iterations, soft_step's substeps) the fewest at which it holds
 struct StabilityDef {
-  enum class Parameter { Dt, Speed, MassRatio, StackHeight };
+  enum class Parameter { Dt, Speed, MassRatio, StackHeight, Iterations, Substeps };
   Parameter parameter = Parameter::Dt;
   std::string body;    // speed: whose speed; mass_ratio: whose mass and inertia are scaled
   double from = 0.0;   // where the search starts (0: from the scene's own value)
   double to = 0.0;     // the largest value tried (0: no limit but the search's own)
   bool stack = false;  // the stack criterion applies: the top box must not drift
+  // when positive: every body must end within this of its start, m, and at rest; this replaces the
+  // penetration criterion (a stack's contacts may sink as long as its bodies stay within it)
+  double within = 0.0;
+  // the search looks for the fewest iterations or substeps that hold, not the largest value
+  bool fewest() const { return parameter == Parameter::Iterations || parameter == Parameter::Substeps; }
 };
 
 // a scene as `rigidreel stability` reads it: the model and its stability: block
@@ -33,11 +39,13 @@ struct Study {
 };
 
 // the parameters as scenes name them
-inline constexpr sim::core::EnumNames<StabilityDef::Parameter, 4> kParameterNames{{{
+inline constexpr sim::core::EnumNames<StabilityDef::Parameter, 6> kParameterNames{{{
     {StabilityDef::Parameter::Dt, "dt"},
     {StabilityDef::Parameter::Speed, "speed"},
     {StabilityDef::Parameter::MassRatio, "mass_ratio"},
     {StabilityDef::Parameter::StackHeight, "stack_height"},
+    {StabilityDef::Parameter::Iterations, "iterations"},
+    {StabilityDef::Parameter::Substeps, "substeps"},
 }}};
 
 // the block of `source` (the default when absent); its body names refer to `model`'s bodies.

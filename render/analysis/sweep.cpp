@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <ctime>
 
 #include "render/analysis/run_metrics.h"
 #include "render/jobs/exit_status.h"
@@ -20,6 +21,7 @@ sim::scene::SceneDef withMethod(sim::scene::SceneDef def, const SweepCase& m) {
   def.collisions = m.collisions;
   def.dt = m.dt;
   if (m.iterations > 0) def.velocityIterations = m.iterations;
+  if (m.substeps > 0) def.substeps = m.substeps;
   return def;
 }
 
@@ -71,8 +73,13 @@ SweepRow runSweepCase(const sim::scene::SceneDef& scene, const SweepCase& method
   row.finite = m.finite;
   row.energyDrift = m.energyDrift;
   row.maxPenetration = m.maxPenetration;
+  row.topDisplacement = m.topDisplacement;
+  row.maxDisplacement = m.maxDisplacement;
+  row.fastest = m.fastest;
   if (!m.finite) {
     row.error = std::numeric_limits<double>::infinity();
+  } else if (reference.name == kRestPose) {
+    row.error = m.topDisplacement;
   } else if (reference.name == "expect") {
     sim::world::World again = sim::scene::buildWorld(def);
     for (const sim::scene::CheckResult& r : sim::scene::runExpects(def, again)) row.error = std::max(row.error, r.error);
@@ -87,16 +94,20 @@ SweepRow runSweepCase(const sim::scene::SceneDef& scene, const SweepCase& method
   }
 
   // the timed runs: nothing but the simulation
-  std::vector<double> seconds;
+  std::vector<double> seconds, processor;
   for (int k = 0; k < repeat && m.finite; ++k) {
     sim::world::World timed = sim::scene::buildWorld(def);
     const auto start = std::chrono::steady_clock::now();
+    const std::clock_t cpuStart = std::clock();
     timed.advanceTo(def.duration);
+    processor.push_back(static_cast<double>(std::clock() - cpuStart) / CLOCKS_PER_SEC);
     seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
   if (!seconds.empty()) {
     std::sort(seconds.begin(), seconds.end());
     row.secondsPerSimSecond = seconds[seconds.size() / 2] / def.duration;
+    std::sort(processor.begin(), processor.end());
+    row.secondsPerStep = processor[processor.size() / 2] / static_cast<double>(std::max(1L, row.steps));
   }
   return row;
 }

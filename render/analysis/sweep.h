@@ -14,6 +14,7 @@ struct SweepCase {
   sim::world::CollisionMethod collisions = sim::world::CollisionMethod::Auto;
   double dt = 0.0;
   int iterations = 0;  // sequential velocity iterations
+  int substeps = 0;    // soft_step substeps (0: the scene's)
 };
 
 // what the error of a run is measured against
@@ -30,11 +31,19 @@ struct SweepRow {
   double energyDrift = 0.0;
   double maxPenetration = 0.0;
   bool finite = true;
+  // processor time of the timed runs per step, median, s: what a stack sweep charts, as it is less
+  // disturbed than wall time on a shared machine (the research notes of issue 14)
+  double secondsPerStep = 0.0;
+  // the stack measures at the end (RunMetrics): the top body's and the farthest body's distance
+  // from where they started, m, and the fastest body's speed, m/s
+  double topDisplacement = 0.0, maxDisplacement = 0.0, fastest = 0.0;
 };
 
 // the scene's expect answers when it has them; otherwise a run with RK4 at a step 64 times smaller
 // than `smallestDt`, under the event method where the scene has collisions and it can run
 SweepReference sweepReference(const sim::scene::SceneDef& def, double smallestDt);
+// a stack's reference: its rest pose, the bodies where they start (error: the top body's displacement)
+inline constexpr const char* kRestPose = "rest pose";
 
 // the error of a run: the largest expect error, or the largest distance of a body from the
 // reference (its center's, plus its angle times its radius)

@@ -57,16 +57,20 @@ int stability(const StabilityOptions& o) {
   const std::string parameter(kParameterNames.name(study.stability.parameter));
 
   AtomicFile csv(base + ".csv");
-  csv.stream() << "integrator,collisions,parameter,largest_stable,first_failing,failure\n";
+  // for iterations and substeps the search finds the fewest that hold: the columns say so
+  const bool fewest = study.stability.fewest();
+  csv.stream() << (fewest ? "integrator,collisions,parameter,fewest_holding,most_failing,failure\n"
+                          : "integrator,collisions,parameter,largest_stable,first_failing,failure\n");
   Chart chart;
-  chart.title = def.name + ": the largest " + parameter + " at which each method holds";
-  chart.yLabel = std::string("largest stable ") + parameter;
+  chart.title = def.name + (fewest ? ": the fewest " : ": the largest ") + parameter + " at which each method holds";
+  chart.yLabel = (fewest ? std::string("fewest ") : std::string("largest stable ")) + parameter;
   chart.bars = true;
   chart.barValues = true;
   chart.logY = study.stability.parameter != StabilityDef::Parameter::StackHeight;
-  // a method that held up to the search's limit has no boundary found: its bar is a lower bound
-  ChartSeries bars{std::string("largest stable ") + parameter, {}};
-  ChartSeries bounds{"holds up to the search's limit (at least this)", {}, true};
+  // a method that held up to the search's limit has no boundary found: its bar is a lower bound;
+  // for the fewest iterations, a method that failed up to the limit needs more than its bar
+  ChartSeries bars{chart.yLabel, {}};
+  ChartSeries bounds{fewest ? "fails up to the search's limit (needs more)" : "holds up to the search's limit (at least this)", {}, true};
   for (sim::world::CollisionMethod c : methods)
     for (sim::core::Integrator i : integrators) {
       Study d = study;
@@ -74,12 +78,14 @@ int stability(const StabilityOptions& o) {
       d.model.collisions = c;
       const StabilityResult r = findBoundary(d);
       std::cout << describeFailure(d, r) << '\n';
+      const bool open = fewest ? r.failsEverywhere : r.holdsToLimit;
       csv.stream() << sim::core::integratorName(i) << ',' << sim::world::collisionMethodName(c) << ',' << parameter << ','
                    << formatNumber(r.largestStable) << ',' << formatNumber(r.firstFailing) << ','
                    << (r.holdsToLimit ? "none" : r.failing.failure) << '\n';
       const double x = static_cast<double>(chart.barLabels.size());
       chart.barLabels.push_back(std::string(sim::core::integratorName(i)) + "\n" + std::string(sim::world::collisionMethodName(c)));
-      (r.holdsToLimit ? bounds : bars).points.emplace_back(x, r.largestStable > 0.0 ? r.largestStable : NAN);
+      const double value = fewest && r.failsEverywhere ? r.firstFailing : r.largestStable;
+      (open ? bounds : bars).points.emplace_back(x, value > 0.0 ? value : NAN);
     }
   chart.series.push_back(bars);
   if (!bounds.points.empty()) chart.series.push_back(bounds);

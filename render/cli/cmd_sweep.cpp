@@ -22,14 +22,70 @@ using namespace render::analysis;
 namespace {
 
 struct SweepOptions : MethodLists {
-  std::string scene, variant, dt, iterations, outDir = "out";
+  std::string scene, variant, dt, iterations, substeps, outDir = "out";
   int repeat = 3;
+  bool stack = false;
 };
 
 std::string methodLabel(const SweepCase& m) {
   std::string s = std::string(sim::core::integratorName(m.integrator)) + " + " + std::string(sim::world::collisionMethodName(m.collisions));
   if (m.collisions == sim::world::CollisionMethod::Sequential) s += " (" + std::to_string(m.iterations) + " it)";
+  if (m.collisions == sim::world::CollisionMethod::SoftStep && m.substeps > 0) s += " (" + std::to_string(m.substeps) + " sub)";
   return s;
+}
+
+// "4,8,16" → {4, 8, 16}, or {fallback} when empty; throws UsageError naming the option
+std::vector<int> wholeNumbers(const std::string& text, const std::string& option, int fallback) {
+  if (text.empty()) return {fallback};
+  std::vector<int> out;
+  for (const std::string& item : splitList(text)) {
+    char* end = nullptr;
+    const long n = std::strtol(item.c_str(), &end, 10);
+    if (*end != '\0' || n < 1 || n > 1000) throw UsageError(option + ": expected whole numbers from 1 to 1000, got '" + item + "'");
+    out.push_back(static_cast<int>(n));
+  }
+  if (out.empty()) throw UsageError(option + ": give at least one whole number");
+  return out;
+}
+
+// --stack: cost per step against how far the stack moved from its rest pose, one line per method
+// through its iterations or substeps (the work-precision chart of stack solvers)
+int stackSweep(const SweepOptions& o, const sim::scene::SceneDef& def, const std::vector<SweepRow>& rows, const std::string& base) {
+  AtomicFile csv(base + ".csv");
+  csv.stream() << "integrator,collisions,dt,iterations,substeps,steps,cpu_seconds_per_step,top_displacement,max_displacement,fastest\n";
+  for (const SweepRow& r : rows)
+    csv.stream() << sim::core::integratorName(r.method.integrator) << ',' << sim::world::collisionMethodName(r.method.collisions) << ','
+                 << formatNumber(r.method.dt) << ',' << r.method.iterations << ',' << r.method.substeps << ',' << r.steps << ','
+                 << formatNumber(r.secondsPerStep) << ',' << formatNumber(r.topDisplacement) << ','
+                 << formatNumber(r.maxDisplacement) << ',' << formatNumber(r.fastest) << '\n';
+  Chart chart;
+  chart.title = def.name + ": cost against the top body's displacement from rest after " + formatNumber(def.duration) + " s";
+  chart.xLabel = "cost: processor milliseconds per step (median of " + std::to_string(o.repeat) + " runs)";
+  chart.yLabel = "top body's displacement from rest, m";
+  chart.logX = chart.logY = true;
+  std::map<std::string, ChartSeries> byMethod;
+  std::vector<std::string> order;
+  for (const SweepRow& r : rows) {
+    // one line per method (and integrator, and step): its points are its iterations or substeps
+    std::string label = std::string(sim::world::collisionMethodName(r.method.collisions));
+    if (o.integratorList().size() > 1) label += " + " + std::string(sim::core::integratorName(r.method.integrator));
+    if (!o.dt.empty() && parseRange(o.dt, "--dt").size() > 1) label += " dt " + formatNumber(r.method.dt);
+    if (!byMethod.count(label)) order.push_back(label), byMethod[label].title = label;
+    if (r.finite && r.topDisplacement > 0.0 && r.secondsPerStep > 0.0)
+      byMethod[label].points.emplace_back(1e3 * r.secondsPerStep, r.topDisplacement);
+  }
+  for (const std::string& label : order) chart.series.push_back(byMethod[label]);
+  writeChart(chart, base + ".png");
+  csv.commit();
+
+  std::cout << std::left << std::setw(40) << "method" << std::right << std::setw(12) << "dt" << std::setw(14) << "ms/step"
+            << std::setw(14) << "top m" << std::setw(14) << "farthest m" << std::setw(14) << "fastest m/s" << '\n';
+  for (const SweepRow& r : rows)
+    std::cout << std::left << std::setw(40) << methodLabel(r.method) << std::right << std::setprecision(4) << std::setw(12)
+              << r.method.dt << std::setw(14) << 1e3 * r.secondsPerStep << std::setw(14) << r.topDisplacement << std::setw(14)
+              << r.maxDisplacement << std::setw(14) << r.fastest << '\n';
+  std::cout << "displacements against: the rest pose (where the bodies start)\nwrote " << base << ".csv and " << base << ".png\n";
+  return kExitOk;
 }
 
 int sweep(const SweepOptions& o) {
@@ -45,29 +101,25 @@ int sweep(const SweepOptions& o) {
   const std::vector<double> steps =
       o.dt.empty() ? parseRange(std::to_string(def.dt * 8) + ":" + std::to_string(def.dt / 8) + ":7", "--dt")
                    : parseRange(o.dt, "--dt");
-  std::vector<int> iterations{def.velocityIterations};
-  if (!o.iterations.empty()) {
-    iterations.clear();
-    for (const std::string& item : splitList(o.iterations)) {
-      char* end = nullptr;
-      const long n = std::strtol(item.c_str(), &end, 10);
-      if (*end != '\0' || n < 1 || n > 1000) throw UsageError("--iterations: expected whole numbers from 1 to 1000, got '" + item + "'");
-      iterations.push_back(static_cast<int>(n));
-    }
-  }
+  const std::vector<int> iterations = wholeNumbers(o.iterations, "--iterations", def.velocityIterations);
+  const std::vector<int> substeps = wholeNumbers(o.substeps, "--substeps", def.substeps);
   if (o.repeat < 1 || o.repeat > 1000) throw UsageError("--repeat: expected a whole number from 1 to 1000");
   std::filesystem::create_directories(o.outDir);
 
   const double smallest = *std::min_element(steps.begin(), steps.end());
-  const SweepReference reference = sweepReference(def, smallest);
+  // a stack is measured against where it stands at the start, a motion against a finer run
+  const SweepReference reference = o.stack ? SweepReference{kRestPose, {}} : sweepReference(def, smallest);
   std::vector<SweepRow> rows;
-  for (sim::world::CollisionMethod c : methods)
+  using sim::world::CollisionMethod;
+  for (CollisionMethod c : methods)
     for (sim::core::Integrator i : integrators)
-      for (int it : c == sim::world::CollisionMethod::Sequential ? iterations : std::vector<int>{def.velocityIterations})
-        for (double h : steps) rows.push_back(runSweepCase(def, {i, c, h, it}, reference, o.repeat));
+      for (int it : c == CollisionMethod::Sequential ? iterations : std::vector<int>{def.velocityIterations})
+        for (int sub : c == CollisionMethod::SoftStep && (o.stack || !o.substeps.empty()) ? substeps : std::vector<int>{0})
+          for (double h : steps) rows.push_back(runSweepCase(def, {i, c, h, it, sub}, reference, o.repeat));
 
-  // the CSV: the columns the issue names, then what the error was measured against
   const std::string base = o.outDir + "/" + def.name + (def.variant.empty() ? "" : "-" + def.variant) + "-sweep";
+  if (o.stack) return stackSweep(o, def, rows, base);
+  // the CSV: the columns the issue names, then what the error was measured against
   AtomicFile csv(base + ".csv");
   csv.stream() << "integrator,collisions,dt,iterations,steps,seconds_per_sim_second,error,energy_drift,max_penetration,reference\n";
   for (const SweepRow& r : rows)
@@ -116,6 +168,10 @@ void addSweepCommand(CLI::App& app, int& exitCode) {
   o->addTo(*cmd);
   cmd->add_option("--dt", o->dt, "FROM:TO:COUNT, log-spaced steps (default: 8·dt to dt/8, 7 steps)");
   cmd->add_option("--iterations", o->iterations, "comma-separated velocity iterations for sequential");
+  cmd->add_option("--substeps", o->substeps, "comma-separated substeps for soft_step");
+  cmd->add_flag("--stack", o->stack,
+                "measure a stack: cost per step against the top body's displacement from its rest pose (and the "
+                "farthest and fastest body), one line per method through its iterations or substeps");
   cmd->add_option("--repeat", o->repeat, "timed runs per case; the median is kept (default 3)");
   cmd->add_option("-o", o->outDir, "output directory (default out)");
   cmd->callback([o, &exitCode] { exitCode = sweep(*o); });

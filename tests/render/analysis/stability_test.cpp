@@ -132,3 +132,66 @@ TEST_CASE("a search stops at the scene's max_steps, over all its runs, and says 
   CHECK(said.find("stopped early, after 14000 steps") != std::string::npos);
   CHECK(said.find("max_steps") != std::string::npos);
 }
+
+namespace {
+
+// a column of `height` 1 m boxes on the ground, Box2D's benchmark settings, and a stability block
+std::string boxColumn(int height, const std::string& stability) {
+  std::string yaml = "duration: 10\nworld: {gravity: [0, -10], friction: 0.6, restitution: 0}\n"
+                     "sim: {dt: 0.016666666666666667}\nstability: " + stability + "\nbodies:\n"
+                     "  - {name: ground, shape: {plane: {point: [0, 0], normal: [0, 1]}}}\n";
+  for (int i = 0; i < height; ++i)
+    yaml += "  - {name: box" + std::to_string(i) + ", shape: {box: [1, 1]}, position: [0, " + std::to_string(0.5 + i) + "]}\n";
+  return yaml;
+}
+
+}  // namespace
+
+TEST_CASE("the fewest search brackets the boundary: the value it names holds, the one below fails") {
+  // a scene that holds from 7 on: doubling finds 8, bisection comes down to 7 and 6
+  int runs = 0;
+  const render::analysis::StabilityResult r = render::analysis::searchFewest(1.0, 64.0, [&](double n, render::analysis::RunMetrics&) {
+    ++runs;
+    return n >= 7.0;
+  });
+  CHECK(r.fewest);
+  CHECK(r.largestStable == 7.0);
+  CHECK(r.firstFailing == 6.0);
+  CHECK_FALSE(r.holdsToLimit);
+  CHECK_FALSE(r.failsEverywhere);
+  CHECK(runs == 6);  // 1, 2, 4, 8, then 6 and 7
+  // never holding up to the limit, or holding from the first value, is said as such
+  CHECK(render::analysis::searchFewest(1.0, 16.0, [](double, render::analysis::RunMetrics&) { return false; }).failsEverywhere);
+  CHECK(render::analysis::searchFewest(1.0, 16.0, [](double, render::analysis::RunMetrics&) { return true; }).holdsToLimit);
+}
+
+TEST_CASE("iterations: the fewest sequential iterations that hold a 10-box column within 5 cm, at rest") {
+  render::analysis::Study def = study(boxColumn(10, "{parameter: iterations, within: 0.05, to: 64}"));
+  def.model.collisions = sim::world::CollisionMethod::Sequential;
+  const render::analysis::StabilityResult r = render::analysis::findBoundary(def);
+  MESSAGE(render::analysis::describeFailure(def, r));
+  REQUIRE_FALSE(r.failsEverywhere);
+  REQUIRE_FALSE(r.holdsToLimit);
+  // the two values that bracket the boundary: the one named holds, the one below does not
+  CHECK(r.firstFailing == r.largestStable - 1.0);
+  render::analysis::RunMetrics m;
+  CHECK(render::analysis::holdsAt(def, r.largestStable, m));
+  CHECK(m.maxDisplacement <= 0.05);
+  CHECK(m.fastest <= render::analysis::kRestSpeed);
+  CHECK_FALSE(render::analysis::holdsAt(def, r.firstFailing, m));
+  CHECK(std::string(m.failure) == "a body leaves its rest pose");
+  // a single iteration cannot pass the load of ten boxes down in a step
+  CHECK(r.largestStable > 1.0);
+}
+
+TEST_CASE("substeps: soft_step needs more than one substep for a 10-box column, and says where") {
+  render::analysis::Study def = study(boxColumn(10, "{parameter: substeps, within: 0.05, to: 16}"));
+  def.model.collisions = sim::world::CollisionMethod::SoftStep;
+  const render::analysis::StabilityResult r = render::analysis::findBoundary(def);
+  const std::string said = render::analysis::describeFailure(def, r);
+  MESSAGE(said);
+  REQUIRE_FALSE(r.failsEverywhere);
+  CHECK(r.largestStable > 1.0);
+  CHECK(r.firstFailing == r.largestStable - 1.0);
+  CHECK(said.find("; holds from " + std::to_string(static_cast<int>(r.largestStable))) != std::string::npos);
+}

@@ -84,3 +84,33 @@ TEST_CASE("--dt ranges are log-spaced and checked") {
   CHECK_THROWS(render::analysis::parseRange("0.1:0.01", "--dt"));
   CHECK_THROWS(render::analysis::parseRange("a:b:c", "--dt"));
 }
+
+TEST_CASE("a stack sweep: more iterations or substeps leave a 10-box column's top nearer its rest pose") {
+  std::string yaml = "duration: 10\nworld: {gravity: [0, -10], friction: 0.6, restitution: 0}\n"
+                     "sim: {dt: 0.016666666666666667}\nbodies:\n"
+                     "  - {name: ground, shape: {plane: {point: [0, 0], normal: [0, 1]}}}\n";
+  for (int i = 0; i < 10; ++i)
+    yaml += "  - {name: box" + std::to_string(i) + ", shape: {box: [1, 1]}, position: [0, " + std::to_string(0.5 + i) + "]}\n";
+  const sim::scene::SceneDef def = sim::yaml::loadSceneText(yaml, "inline.yaml");
+  const render::analysis::SweepReference rest{render::analysis::kRestPose, {}};
+  using sim::world::CollisionMethod;
+  const auto run = [&](CollisionMethod c, int iterations, int substeps) {
+    const render::analysis::SweepRow r = render::analysis::runSweepCase(
+        def, {sim::core::Integrator::SymplecticEuler, c, def.dt, iterations, substeps}, rest, 1);
+    MESSAGE(sim::world::collisionMethodName(c) << " " << iterations << " it, " << substeps << " substeps: top "
+                                                << r.topDisplacement << " m, farthest " << r.maxDisplacement << " m");
+    // the error of a stack sweep is its top body's displacement, the farthest body's at least that
+    CHECK(r.error == r.topDisplacement);
+    CHECK(r.maxDisplacement >= r.topDisplacement);
+    return r.topDisplacement;
+  };
+  // two sequential iterations let the column fall; eight hold it within its slop
+  const double two = run(CollisionMethod::Sequential, 2, 0), eight = run(CollisionMethod::Sequential, 8, 0);
+  CHECK(eight < two);
+  CHECK(eight < 0.05);
+  CHECK(two > 1.0);
+  // one soft substep lets it fall; four hold it
+  const double one = run(CollisionMethod::SoftStep, 8, 1), four = run(CollisionMethod::SoftStep, 8, 4);
+  CHECK(four < one);
+  CHECK(four < 0.05);
+}

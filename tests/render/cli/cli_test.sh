@@ -300,6 +300,19 @@ else
   not_ok "stability writes its CSV and chart" "$(ls st 2>&1)"
 fi
 expect "stability --collisions with an unknown name exits 2" 2 err "unknown name" stability "$MASS" --collisions bogus -o st
+# a stack: cost per step against the rest pose, over iterations and substeps
+STACK=$SCENES/box_stack.yaml
+expect "sweep --stack measures against the rest pose" 0 out "against: the rest pose" sweep "$STACK" --stack --integrators symplectic_euler \
+  --collisions sequential,soft_step --iterations 4,8 --substeps 2,4 --dt 0.05:0.05:1 --repeat 1 -o sw
+if [ "$(head -n 1 sw/box_stack-sweep.csv 2>/dev/null)" = "integrator,collisions,dt,iterations,substeps,steps,cpu_seconds_per_step,top_displacement,max_displacement,fastest" ] &&
+   [ "$(wc -l < sw/box_stack-sweep.csv)" -eq 5 ] && [ -s sw/box_stack-sweep.png ]; then
+  ok "sweep --stack writes a row per iteration and substep count, and the chart"
+else
+  not_ok "sweep --stack writes a row per iteration and substep count, and the chart" "$(ls sw 2>&1)"
+fi
+expect "sweep --substeps with a bad count exits 2" 2 err "--substeps: expected whole numbers" sweep "$STACK" --stack --substeps 2,0 -o sw
+printf 'bodies: [{name: a, shape: {circle: 1}}]\nstability: {parameter: iterations, within: -1}\n' > bad_within.yaml
+expect "a stability block with a negative 'within' exits 2 naming it" 2 err "bad_within.yaml:2:" stability bad_within.yaml -o st
 if compgen -G "sw/*.part-*" >/dev/null || compgen -G "st/*.part-*" >/dev/null; then
   not_ok "sweep and stability leave no partial files" "$(ls sw st)"
 else
