@@ -2,9 +2,31 @@
 // rigidreel's stack solvers (`--method`, repeatable) and, where Debian's libbox2d-dev was found at
 // build time, through Box2D 2.4 with the same settings, in one run, and measured the same way: the
 // top box's displacement, the bulge |x − rest x|, the fastest body at the end and the worst of both
-// over the second half, and the wall and processor time per step over all the steps (after
-// building). Timings are never asserted; ratios are taken within one run, since the machines are
-// shared and noisy.
+// over the second half of the timed steps, and the wall and processor time per step. Timings are
+// never asserted; ratios are taken within one run, since the machines are shared and noisy.
+//
+// Which steps are timed: a layout is timed in the state its name promises. A touching layout
+// stands from the start, so its first `--steps` steps are timed (after building). A dropped layout
+// first falls into place: `--settle` seconds (3 s) are simulated untimed, then the next `--steps`
+// steps are timed. Every engine is timed over exactly the same steps, and the measures are taken at
+// the end of the timed steps. The output's `timed steps` column and the CSV's first_timed_step and
+// last_timed_step say which (steps counted from 1 at the start of the simulation).
+//
+// CSV (`--csv`, one row per layout and engine, appended; `make bench` writes out/bench/stacks.csv):
+//   layout, engine, boxes                       what ran
+//   settle_steps                                untimed steps before the timed ones
+//   first_timed_step, last_timed_step           the timed steps, counted from 1
+//   velocity_iterations, position_iterations    the solver settings (Box2D's benchmark: 8 and 3)
+//   ms_per_step, cpu_ms_per_step                wall and stepping-thread processor time per timed step
+//   cpu_ratio_to_box2d                          cpu_ms_per_step over Box2D's in this run (empty for Box2D
+//                                               itself, or without it)
+//   top_displacement_m                          the top box's distance from its rest pose, at the end
+//   max_off_rest_x_m                            the largest |x - rest x| (the bulge), at the end
+//   fastest_m_per_s, fastest_rad_per_s          the fastest body's |v| and |w|, at the end
+//   moved                                       boxes > 0.1 m off their rest x or 0.5 m below rest y
+//   worst_top_second_half_m,                    the largest top displacement and body speed over the
+//   worst_fastest_second_half_m_per_s           second half of the timed steps, every 10 steps
+//   diverged                                    1 when a state stopped being finite
 //
 // rigidreel is reached only through scene definitions and World's public members (bodies,
 // advanceTo), so the program does not depend on how World is organised inside.
@@ -37,7 +59,8 @@
 namespace {
 
 struct RunOptions {
-  int steps = 600;
+  int steps = 600;                // timed steps
+  double settleSeconds = 3.0;     // dropped layouts: simulated untimed before the timed steps
   int every = 0;                  // print the measures every this many steps (0: only at the end)
   int sample = 10;                // over the second half, measure every this many steps (untimed)
   bool box2dOuterSkin = true;     // Box2D boxes as wide as ours (see the top of the file)
@@ -58,8 +81,14 @@ struct RunResult {
   double worstSpeed = 0.0;      // the fastest body over the second half
   double msPerStep = 0.0;       // wall time
   double cpuMsPerStep = 0.0;    // this thread's processor time: what a busy shared machine changes least
+  int settleSteps = 0;          // untimed steps before the timed ones
   bool diverged = false;
 };
+
+// untimed steps before the timing: a dropped layout settles first, a touching one stands already
+int settleStepsOf(const bench::StackLayout& layout, const bench::StackSettings& s, const RunOptions& o) {
+  return layout.dropped ? static_cast<int>(std::lround(o.settleSeconds / s.dt)) : 0;
+}
 
 double threadCpuSeconds() {
   timespec t{};
@@ -67,13 +96,17 @@ double threadCpuSeconds() {
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
-// run `steps` steps, timing only the stepping; the second half is sampled for its worst values
-RunResult run(StackRun& engine, const char* name, const bench::StackLayout& layout, const RunOptions& o) {
+// settle untimed, then run `steps` steps timing only the stepping; the second half of the timed
+// steps is sampled (untimed) for its worst values
+RunResult run(StackRun& engine, const char* name, const bench::StackLayout& layout, int settleSteps,
+              const RunOptions& o) {
   using Clock = std::chrono::steady_clock;
   RunResult r;
+  r.settleSteps = settleSteps;
   double seconds = 0.0, cpuSeconds = 0.0;
   const int half = o.steps / 2;
   try {
+    if (settleSteps > 0) engine.advance(settleSteps);
     for (int done = 0; done < o.steps;) {
       int next = o.steps;
       if (o.every > 0) next = std::min(next, (done / o.every + 1) * o.every);
@@ -89,8 +122,8 @@ RunResult run(StackRun& engine, const char* name, const bench::StackLayout& layo
       const bench::StackMetrics m = bench::measure(layout, end);
       if (done >= half) r.worstTop = std::max(r.worstTop, m.topDisplacement), r.worstSpeed = std::max(r.worstSpeed, m.fastestSpeed);
       if (o.every > 0 && done % o.every == 0)
-        std::printf("  %-7s step %4d: top %.4f m, max |x - rest x| %.4f m, fastest %.4f m/s, moved %d\n", name, done,
-                    m.topDisplacement, m.maxOffRestX, m.fastestSpeed, m.moved);
+        std::printf("  %-7s step %4d: top %.4f m, max |x - rest x| %.4f m, fastest %.4f m/s, moved %d\n", name,
+                    settleSteps + done, m.topDisplacement, m.maxOffRestX, m.fastestSpeed, m.moved);
     }
   } catch (const std::exception&) {
     r.diverged = true;
@@ -248,7 +281,9 @@ int main(int argc, char** argv) {
   app.add_option("--layout", layoutSpecs, "pyramid:BASE:touching, pyramid:BASE:dropped or stack:HEIGHT (repeatable)");
   app.add_option("--method", methods, "rigidreel's collision method (repeatable): sequential, soft_step, ...");
   app.add_option("--engine", engine, "both, ours or box2d")->check(CLI::IsMember({"both", "ours", "box2d"}));
-  app.add_option("--steps", options.steps, "steps of dt (600: 10 s)")->check(CLI::PositiveNumber);
+  app.add_option("--steps", options.steps, "timed steps of dt (600: 10 s)")->check(CLI::PositiveNumber);
+  app.add_option("--settle", options.settleSeconds, "dropped layouts: seconds simulated untimed before the timed steps")
+      ->check(CLI::NonNegativeNumber);
   app.add_option("--dt", settings.dt, "time step, s");
   app.add_option("--iterations", settings.velocityIterations, "velocity iterations")->check(CLI::Range(1, 1000));
   app.add_option("--position-iterations", settings.positionIterations, "position iterations")->check(CLI::Range(0, 1000));
@@ -284,18 +319,23 @@ int main(int argc, char** argv) {
     const bool fresh = !std::ifstream(csvPath).good();
     csv.open(csvPath, std::ios::app);
     if (fresh)
-      csv << "layout,engine,boxes,steps,velocity_iterations,position_iterations,ms_per_step,top_displacement_m,"
-             "max_off_rest_x_m,fastest_m_per_s,fastest_rad_per_s,moved,worst_top_second_half_m,"
-             "worst_fastest_second_half_m_per_s,diverged,cpu_ms_per_step\n";
+      csv << "layout,engine,boxes,settle_steps,first_timed_step,last_timed_step,velocity_iterations,"
+             "position_iterations,ms_per_step,cpu_ms_per_step,cpu_ratio_to_box2d,top_displacement_m,max_off_rest_x_m,"
+             "fastest_m_per_s,fastest_rad_per_s,moved,worst_top_second_half_m,worst_fastest_second_half_m_per_s,"
+             "diverged\n";
   }
-  std::printf("gravity %g, dt %.6g, %d velocity and %d position iterations, friction %g, restitution %g, %d steps, "
-              "all timed after building\n",
+  std::printf("gravity %g, dt %.6g, %d velocity and %d position iterations, friction %g, restitution %g\n",
               settings.gravity, settings.dt, settings.velocityIterations, settings.positionIterations, settings.friction,
-              settings.restitution, options.steps);
-  // at the end (10 s at 600 steps), and the worst over the second half, sampled every 10 steps
-  std::printf("%-22s %-10s %6s %9s %9s %9s %13s %11s %9s %6s %12s %12s %9s\n", "layout", "engine", "boxes", "ms/step",
-              "cpu ms", "top m", "|x-rest x| m", "fastest m/s", "|w| rad/s", "moved", "worst top m", "worst m/s",
-              "/box2d");
+              settings.restitution);
+  const int dropSettle = static_cast<int>(std::lround(options.settleSeconds / settings.dt));
+  std::printf("timed: %d steps after building; touching layouts steps 1-%d (standing from the start), dropped ones "
+              "steps %d-%d (after %d untimed steps, %g s, to settle); every engine over the same steps\n",
+              options.steps, options.steps, dropSettle + 1, dropSettle + options.steps, dropSettle,
+              options.settleSeconds);
+  // at the end of the timed steps, and the worst over their second half, sampled every 10 steps
+  std::printf("%-22s %-10s %6s %11s %9s %9s %9s %13s %11s %9s %6s %12s %12s %9s\n", "layout", "engine", "boxes",
+              "timed steps", "ms/step", "cpu ms", "top m", "|x-rest x| m", "fastest m/s", "|w| rad/s", "moved",
+              "worst top m", "worst m/s", "/box2d");
   int status = 0;
   for (const std::string& spec : layoutSpecs) {
     const std::optional<bench::StackLayout> layout = parseLayout(spec);
@@ -305,32 +345,36 @@ int main(int argc, char** argv) {
     }
     // Box2D first, so that each of ours prints its ratio to it
     std::optional<RunResult> peer;
+    const int settleSteps = settleStepsOf(*layout, settings, options);
     auto row = [&](const std::string& name, const RunResult& r) {
       const bench::StackMetrics& m = r.metrics;
-      char ratio[32] = "";
-      if (peer && &r != &*peer) std::snprintf(ratio, sizeof ratio, "%9.2f", r.cpuMsPerStep / peer->cpuMsPerStep);
-      std::printf("%-22s %-10s %6zu %9.3f %9.3f %9.4f %13.4f %11.4f %9.4f %6d %12.4f %12.4f %9s%s\n", layout->name.c_str(),
-                  name.c_str(), layout->boxes.size(), r.msPerStep, r.cpuMsPerStep, m.topDisplacement, m.maxOffRestX,
-                  m.fastestSpeed, m.fastestSpin, m.moved, r.worstTop, r.worstSpeed, ratio, r.diverged ? "  DIVERGED" : "");
+      char ratio[32] = "", timed[32];
+      if (peer && &r != &*peer) std::snprintf(ratio, sizeof ratio, "%.2f", r.cpuMsPerStep / peer->cpuMsPerStep);
+      std::snprintf(timed, sizeof timed, "%d-%d", r.settleSteps + 1, r.settleSteps + options.steps);
+      std::printf("%-22s %-10s %6zu %11s %9.3f %9.3f %9.4f %13.4f %11.4f %9.4f %6d %12.4f %12.4f %9s%s\n",
+                  layout->name.c_str(), name.c_str(), layout->boxes.size(), timed, r.msPerStep, r.cpuMsPerStep,
+                  m.topDisplacement, m.maxOffRestX, m.fastestSpeed, m.fastestSpin, m.moved, r.worstTop, r.worstSpeed,
+                  ratio, r.diverged ? "  DIVERGED" : "");
       if (csv.is_open())
-        csv << layout->name << ',' << name << ',' << layout->boxes.size() << ',' << options.steps << ','
-            << settings.velocityIterations << ',' << settings.positionIterations << ',' << r.msPerStep << ','
+        csv << layout->name << ',' << name << ',' << layout->boxes.size() << ',' << r.settleSteps << ','
+            << r.settleSteps + 1 << ',' << r.settleSteps + options.steps << ',' << settings.velocityIterations << ','
+            << settings.positionIterations << ',' << r.msPerStep << ',' << r.cpuMsPerStep << ',' << ratio << ','
             << m.topDisplacement << ',' << m.maxOffRestX << ',' << m.fastestSpeed << ',' << m.fastestSpin << ','
-            << m.moved << ',' << r.worstTop << ',' << r.worstSpeed << ',' << r.diverged << ',' << r.cpuMsPerStep << '\n';
+            << m.moved << ',' << r.worstTop << ',' << r.worstSpeed << ',' << r.diverged << '\n';
       std::fflush(stdout);
       status |= r.diverged;
     };
 #if RIGIDREEL_HAVE_BOX2D
     if (box2d) {
       Box2dRun e(*layout, settings, options);
-      peer = run(e, "box2d", *layout, options);
+      peer = run(e, "box2d", *layout, settleSteps, options);
       row("box2d", *peer);
     }
 #endif
     for (sim::world::CollisionMethod method : ourMethods) {
       const std::string name(sim::world::collisionMethodName(method));
       OurRun e(*layout, settings, method);
-      row(name, run(e, name.c_str(), *layout, options));
+      row(name, run(e, name.c_str(), *layout, settleSteps, options));
     }
   }
   std::printf("/box2d: processor time per step against Box2D 2.4's in this run\n");

@@ -1,5 +1,6 @@
 // The broad phase: which pairs of bodies can touch at all, from their bounding boxes, so that
-// bodies far apart cost nothing (sort and sweep, Ericson 7.5.2).
+// bodies far apart cost nothing (a hashed uniform grid, Ericson 7.1; sort and sweep, 7.5.2, for few
+// bodies or many large ones).
 #pragma once
 
 #include <utility>

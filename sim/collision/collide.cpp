@@ -17,14 +17,16 @@ struct WorldPolygon {
   size_t size() const { return v.size(); }
 };
 
-WorldPolygon inWorld(const Shape& s, const Pose& p) {
-  WorldPolygon w;
-  w.v.reserve(s.vertices.size());
-  w.n.reserve(s.normals.size());
+// the polygon in world coordinates, into `w`'s storage: the callers keep one per thread, so that a
+// pile's thousands of pairs a step allocate nothing
+const WorldPolygon& inWorld(const Shape& s, const Pose& p, WorldPolygon& w) {
+  w.v.clear();
+  w.n.clear();
   for (const Vec2& v : s.vertices) w.v.push_back(p.toWorld(v));
   for (const Vec2& n : s.normals) w.n.push_back(p.q.apply(n));
   return w;
 }
+thread_local WorldPolygon scratchA, scratchB;
 
 // separation(P → Q) of the notes, with the edge of P and the vertex of Q that attain it
 struct EdgeSeparation {
@@ -121,7 +123,7 @@ void clipToReference(const WorldPolygon& A, const WorldPolygon& B, const EdgeSep
 
 // polygon against polygon: SAT picks the reference edge, the incident edge is clipped to its sides
 Manifold polygons(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, double margin) {
-  const WorldPolygon A = inWorld(a, pa), B = inWorld(b, pb);
+  const WorldPolygon &A = inWorld(a, pa, scratchA), &B = inWorld(b, pb, scratchB);
   const EdgeSeparation ea = maxSeparation(A, B), eb = maxSeparation(B, A);
   Manifold m;
   // the notes' separation(P, Q) and its features, exactly as on the slide
@@ -181,7 +183,7 @@ Manifold circles(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb,
 
 // out of polygon p toward circle c (Box2D's b2CollidePolygonAndCircle: face or vertex region)
 Manifold polygonCircle(const Shape& p, const Pose& pp, const Shape& c, const Pose& pc, double margin) {
-  const WorldPolygon P = inWorld(p, pp);
+  const WorldPolygon& P = inWorld(p, pp, scratchA);
   const Vec2 center = pc.x;
   const double r = c.radius;
   int edge = 0;
@@ -243,7 +245,7 @@ Manifold flipped(Manifold m) {
 
 SatFeatures sat(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb) {
   if (a.kind != ShapeKind::Polygon || b.kind != ShapeKind::Polygon) return {};
-  const WorldPolygon A = inWorld(a, pa), B = inWorld(b, pb);
+  const WorldPolygon &A = inWorld(a, pa, scratchA), &B = inWorld(b, pb, scratchB);
   const EdgeSeparation ea = maxSeparation(A, B), eb = maxSeparation(B, A);
   const bool onA = ea.separation >= eb.separation;
   return {true, onA ? ea.separation : eb.separation, onA, onA ? ea.edge : eb.edge, onA ? ea.vertex : eb.vertex};

@@ -27,8 +27,11 @@ bool gapMayClose(const ContactPointState& s, double separation) {
 }
 
 // effective masses, anchors and the velocity each contact must reach
-void prepareContacts(World& world, double h) {
+void prepareContacts(World& world, double h, std::vector<Pose>& poses) {
   const std::vector<Body>& bodies = world.bodies;
+  // each body's pose once (one sine and cosine), for every contact it is in
+  poses.resize(bodies.size());
+  for (size_t i = 0; i < bodies.size(); ++i) poses[i] = bodies[i].pose();
   for (Contact& c : world.contacts) {
     const Body &a = bodies[c.a], &b = bodies[c.b];
     const Vec2 n = c.manifold.normal, t = tangentOf(n);
@@ -37,8 +40,8 @@ void prepareContacts(World& world, double h) {
       const ManifoldPoint& p = c.manifold.points[k];
       s.normalMass = 1.0 / inverseEffectiveMass(a, b, p.point, n);
       s.tangentMass = 1.0 / inverseEffectiveMass(a, b, p.point, t);
-      s.anchorA = a.pose().toBody(p.point);
-      s.anchorB = b.pose().toBody(p.point);
+      s.anchorA = poses[c.a].toBody(p.point);
+      s.anchorB = poses[c.b].toBody(p.point);
       const double vn = s.vnBefore = n.dot(relativeVelocity(a, b, p.point));
       // restitution from the velocity before the solve, for contacts that close within the step
       // and arrive fast enough; slower ones settle; a gap may close but not be overrun
@@ -52,35 +55,120 @@ void prepareContacts(World& world, double h) {
   }
 }
 
-void warmStart(World& world) {
-  std::vector<Body>& bodies = world.bodies;
-  for (const Contact& c : world.contacts) {
-    const Vec2 n = c.manifold.normal, t = tangentOf(n);
-    for (int k = 0; k < c.manifold.count; ++k)
-      applyImpulsePair(bodies[c.a], bodies[c.b], c.manifold.points[k].point,
-                       c.state[k].normalImpulse * n + c.state[k].tangentImpulse * t);
+// The inner loops run on flat arrays built once per step (Box2D v3's contact constraints): the
+// bodies' velocities and mass in one contiguous array, each contact's points with their lever arms
+// and, for two points, the block solver's matrix, so that the loops touch no Body, compute no
+// rotation and allocate nothing. Every quantity is the one the loops computed from the bodies
+// before, by the same operations, so the results are the same to the bit.
+
+// what the velocity loops read and change of a body
+struct VelocityBody {
+  Vec2 v = Vec2::Zero();
+  double omega = 0.0;
+  double invMass = 0.0, invInertia = 0.0;
+};
+
+// what the position loop reads and changes of a body; the rotation follows the angle on demand
+struct PositionBody {
+  Vec2 x = Vec2::Zero();
+  double angle = 0.0;
+  double invMass = 0.0, invInertia = 0.0;
+  Rot q;
+  bool rotationStale = true;
+  const Rot& rotation() {
+    if (rotationStale) q = Rot::fromAngle(angle), rotationStale = false;
+    return q;
   }
+};
+
+// one manifold point, prepared once per step
+struct SolverPoint {
+  Vec2 rA = Vec2::Zero(), rB = Vec2::Zero();  // from each center of mass to the point, at the step's start
+  double normalMass = 0.0, tangentMass = 0.0, bias = 0.0;
+  double normalImpulse = 0.0, tangentImpulse = 0.0;
+};
+
+// what the velocity loops read of a contact (kept small: the loops stream through all of them)
+struct SolverContact {
+  int a = 0, b = 0, count = 0;
+  bool block = false;  // two points, well conditioned: solved together
+  Vec2 n = Vec2::UnitY();
+  double friction = 0.0;
+  NormalBlock K;
+  SolverPoint p[2];
+};
+
+// what the position pass reads of a contact's point, beside its SolverContact
+struct PositionPoint {
+  Vec2 anchorA = Vec2::Zero(), anchorB = Vec2::Zero();  // body coordinates
+  double separation = 0.0;                              // at the step's start
+};
+
+// velocity of A's point relative to B's: (v_a + ω_a × r_a) − (v_b + ω_b × r_b)
+Vec2 relativeVelocityAt(const VelocityBody& a, const VelocityBody& b, const SolverPoint& p) {
+  return Vec2(a.v + cross(a.omega, p.rA)) - Vec2(b.v + cross(b.omega, p.rB));
+}
+
+// j to A and −j to B at the point
+void applyAt(VelocityBody& a, VelocityBody& b, const SolverPoint& p, const Vec2& j) {
+  a.v += a.invMass * j;
+  a.omega += a.invInertia * cross(p.rA, j);
+  b.v -= b.invMass * j;
+  b.omega -= b.invInertia * cross(p.rB, j);
+}
+
+// the flat constraints of the step's contacts (prepareContacts has filled their states)
+void buildConstraints(const World& world, std::vector<SolverContact>& out, std::vector<PositionPoint>& anchors) {
+  const std::vector<Body>& bodies = world.bodies;
+  out.resize(world.contacts.size());
+  anchors.resize(2 * world.contacts.size());
+  for (size_t i = 0; i < world.contacts.size(); ++i) {
+    const Contact& c = world.contacts[i];
+    const Body &a = bodies[c.a], &b = bodies[c.b];
+    SolverContact& s = out[i];
+    s.a = c.a, s.b = c.b, s.count = c.manifold.count;
+    s.n = c.manifold.normal;
+    s.friction = c.friction;
+    for (int k = 0; k < s.count; ++k) {
+      const ContactPointState& st = c.state[k];
+      const ManifoldPoint& mp = c.manifold.points[k];
+      SolverPoint& p = s.p[k];
+      p.rA = mp.point - a.x, p.rB = mp.point - b.x;
+      p.normalMass = st.normalMass, p.tangentMass = st.tangentMass, p.bias = st.bias;
+      p.normalImpulse = st.normalImpulse, p.tangentImpulse = st.tangentImpulse;
+      anchors[2 * i + k] = {st.anchorA, st.anchorB, mp.separation};
+    }
+    s.block = false;
+    if (s.count == 2) {
+      s.K = normalBlock(a, b, c.manifold.points[0].point, c.manifold.points[1].point, s.n, 1.0 / s.p[0].normalMass,
+                        1.0 / s.p[1].normalMass);
+      // an ill-conditioned pair (the two points nearly one) is left to the point-by-point sweep
+      s.block = s.K.k11 * s.K.k11 < settings::kMaxConditionNumber * s.K.det;
+    }
+  }
+}
+
+void warmStart(std::vector<VelocityBody>& bodies, const std::vector<SolverContact>& contacts) {
+  for (const SolverContact& c : contacts)
+    for (int k = 0; k < c.count; ++k)
+      applyAt(bodies[c.a], bodies[c.b], c.p[k], c.p[k].normalImpulse * c.n + c.p[k].tangentImpulse * tangentOf(c.n));
 }
 
 // both points of a two-point manifold at once: point by point, the first impulse would tip the
 // body and the second undo it, so a resting box rocks (Box2D's block solver: the 2×2 linear
 // complementarity problem solved by trying its four cases)
-bool solveNormalBlock(std::vector<Body>& bodies, Contact& c) {
-  Body &a = bodies[c.a], &b = bodies[c.b];
-  const Vec2 n = c.manifold.normal;
-  const Vec2 r1 = c.manifold.points[0].point, r2 = c.manifold.points[1].point;
-  ContactPointState &s1 = c.state[0], &s2 = c.state[1];
-  const NormalBlock K = normalBlock(a, b, r1, r2, n, 1.0 / s1.normalMass, 1.0 / s2.normalMass);
-  const double k11 = K.k11, k12 = K.k12, k22 = K.k22;
-  // an ill-conditioned pair (the two points nearly one) is left to the point-by-point sweep
-  if (!(k11 * k11 < settings::kMaxConditionNumber * K.det)) return false;
+bool solveNormalBlock(std::vector<VelocityBody>& bodies, SolverContact& c) {
+  VelocityBody &a = bodies[c.a], &b = bodies[c.b];
+  const Vec2 n = c.n;
+  SolverPoint &s1 = c.p[0], &s2 = c.p[1];
+  const double k11 = c.K.k11, k12 = c.K.k12, k22 = c.K.k22;
 
   // with x the new accumulated impulses: v_n = K x + b' must be ≥ 0 where x > 0, x ≥ 0
   const double x1Old = s1.normalImpulse, x2Old = s2.normalImpulse;
-  const double b1 = n.dot(relativeVelocity(a, b, r1)) - s1.bias - (k11 * x1Old + k12 * x2Old);
-  const double b2 = n.dot(relativeVelocity(a, b, r2)) - s2.bias - (k12 * x1Old + k22 * x2Old);
+  const double b1 = n.dot(relativeVelocityAt(a, b, s1)) - s1.bias - (k11 * x1Old + k12 * x2Old);
+  const double b2 = n.dot(relativeVelocityAt(a, b, s2)) - s2.bias - (k12 * x1Old + k22 * x2Old);
   double x1 = 0.0, x2 = 0.0;
-  if (const Vec2 both = K.solve(-b1, -b2); both.x() >= 0.0 && both.y() >= 0.0) {
+  if (const Vec2 both = c.K.solve(-b1, -b2); both.x() >= 0.0 && both.y() >= 0.0) {
     x1 = both.x(), x2 = both.y();  // both points push
   } else if (const double z1 = -b1 / k11; z1 >= 0.0 && k12 * z1 + b2 >= 0.0) {
     x1 = z1;  // only the first
@@ -89,69 +177,70 @@ bool solveNormalBlock(std::vector<Body>& bodies, Contact& c) {
   } else if (!(b1 >= 0.0 && b2 >= 0.0)) {
     return false;  // no case fits (round-off): fall back to the sweep
   }
-  applyImpulsePair(a, b, r1, (x1 - x1Old) * n);
-  applyImpulsePair(a, b, r2, (x2 - x2Old) * n);
+  applyAt(a, b, s1, (x1 - x1Old) * n);
+  applyAt(a, b, s2, (x2 - x2Old) * n);
   s1.normalImpulse = x1;
   s2.normalImpulse = x2;
   return true;
 }
 
 // one Gauss–Seidel sweep over the contacts: friction, then the normal impulses
-void solveVelocities(World& world) {
-  std::vector<Body>& bodies = world.bodies;
-  for (Contact& c : world.contacts) {
-    Body &a = bodies[c.a], &b = bodies[c.b];
-    const Vec2 n = c.manifold.normal, t = tangentOf(n);
+void solveVelocities(std::vector<VelocityBody>& bodies, std::vector<SolverContact>& contacts) {
+  for (SolverContact& c : contacts) {
+    VelocityBody &a = bodies[c.a], &b = bodies[c.b];
+    const Vec2 n = c.n, t = tangentOf(n);
     // Coulomb friction: the accumulated tangent impulse stays within ±μ times the normal one
     if (c.friction > 0.0)
-      for (int k = 0; k < c.manifold.count; ++k) {
-        ContactPointState& s = c.state[k];
-        const Vec2 r = c.manifold.points[k].point;
-        const double lambda = -s.tangentMass * t.dot(relativeVelocity(a, b, r));
+      for (int k = 0; k < c.count; ++k) {
+        SolverPoint& s = c.p[k];
+        const double lambda = -s.tangentMass * t.dot(relativeVelocityAt(a, b, s));
         const double limit = c.friction * s.normalImpulse;
         const double total = std::clamp(s.tangentImpulse + lambda, -limit, limit);
-        applyImpulsePair(a, b, r, (total - s.tangentImpulse) * t);
+        applyAt(a, b, s, (total - s.tangentImpulse) * t);
         s.tangentImpulse = total;
       }
-    if (c.manifold.count == 2 && solveNormalBlock(bodies, c)) continue;
+    if (c.block && solveNormalBlock(bodies, c)) continue;
     // the normal impulse pushes, never pulls: clamp the accumulated impulse at zero
-    for (int k = 0; k < c.manifold.count; ++k) {
-      ContactPointState& s = c.state[k];
-      const Vec2 r = c.manifold.points[k].point;
-      const double lambda = -s.normalMass * (n.dot(relativeVelocity(a, b, r)) - s.bias);
+    for (int k = 0; k < c.count; ++k) {
+      SolverPoint& s = c.p[k];
+      const double lambda = -s.normalMass * (n.dot(relativeVelocityAt(a, b, s)) - s.bias);
       const double total = std::max(s.normalImpulse + lambda, 0.0);
-      applyImpulsePair(a, b, r, (total - s.normalImpulse) * n);
+      applyAt(a, b, s, (total - s.normalImpulse) * n);
       s.normalImpulse = total;
     }
   }
 }
 
 // one pass of position correction; true when every contact is within the slop
-bool solvePositions(World& world) {
-  std::vector<Body>& bodies = world.bodies;
+bool solvePositions(std::vector<PositionBody>& bodies, const std::vector<SolverContact>& contacts,
+                    const std::vector<PositionPoint>& anchors) {
   double deepest = 0.0;
-  for (const Contact& c : world.contacts) {
-    Body &a = bodies[c.a], &b = bodies[c.b];
-    const Vec2 n = c.manifold.normal;
-    for (int k = 0; k < c.manifold.count; ++k) {
-      const ContactPointState& s = c.state[k];
-      const ManifoldPoint& p = c.manifold.points[k];
+  for (size_t i = 0; i < contacts.size(); ++i) {
+    const SolverContact& c = contacts[i];
+    PositionBody &a = bodies[c.a], &b = bodies[c.b];
+    const Vec2 n = c.n;
+    for (int k = 0; k < c.count; ++k) {
+      const PositionPoint& s = anchors[2 * i + k];
       // the separation now: the contact's material points have moved apart along n̂ by this much
-      const Vec2 pa = a.pose().toWorld(s.anchorA), pb = b.pose().toWorld(s.anchorB);
-      const double separation = p.separation + n.dot(pa - pb);
+      const Vec2 pa = a.x + a.rotation().apply(s.anchorA), pb = b.x + b.rotation().apply(s.anchorB);
+      const double separation = s.separation + n.dot(pa - pb);
       deepest = std::min(deepest, separation);
       const double correction = std::clamp(settings::kPositionCorrection * (separation + settings::kLinearSlop),
                                            -settings::kMaxLinearCorrection, 0.0);
       if (correction == 0.0) continue;
       const Vec2 r = 0.5 * (pa + pb);
-      const double kInv = inverseEffectiveMass(a, b, r, n);
+      const Vec2 ra = r - a.x, rb = r - b.x;
+      // the effective mass along n̂ at r (inverseEffectiveMass)
+      const double ran = cross(ra, n), rbn = cross(rb, n);
+      const double kInv = a.invMass + b.invMass + ran * ran * a.invInertia + rbn * rbn * b.invInertia;
       if (kInv == 0.0) continue;
       const Vec2 push = (-correction / kInv) * n;
-      const Vec2 ra = r - a.x, rb = r - b.x;
       a.x += a.invMass * push;
       a.angle += a.invInertia * cross(ra, push);
+      a.rotationStale = true;
       b.x -= b.invMass * push;
       b.angle -= b.invInertia * cross(rb, push);
+      b.rotationStale = true;
     }
   }
   // Box2D stops when the deepest point is within three times the slop
@@ -178,10 +267,10 @@ class SequentialSolver final : public Method {
 
   // the contacts where the bodies are now, carrying over last step's impulses (warm starting)
   void beginStep(World& world, const TimeStep& step) override {
-    std::vector<Contact> fresh = world.findContacts(settings::kContactMargin);
-    matchWarmStart(world.contacts, fresh);
-    world.contacts = std::move(fresh);
-    prepareContacts(world, step.h);
+    world.findContacts(settings::kContactMargin, fresh_);
+    matchWarmStart(world.contacts, fresh_);
+    std::swap(world.contacts, fresh_);
+    prepareContacts(world, step.h, poses_);
   }
 
   // move freely, remembering where the step began and where the free motion ends
@@ -194,15 +283,26 @@ class SequentialSolver final : public Method {
 
   // the contacts solved on the free velocities from where the step began, then the positions
   void resolveCollisions(World& world, const TimeStep& step) override {
-    for (size_t i = 0; i < world.bodies.size(); ++i) {
-      world.bodies[i].x = before_[i].x;
-      world.bodies[i].angle = before_[i].angle;
+    std::vector<Body>& bodies = world.bodies;
+    for (size_t i = 0; i < bodies.size(); ++i) {
+      bodies[i].x = before_[i].x;
+      bodies[i].angle = before_[i].angle;
     }
-    warmStart(world);
-    for (int k = 0; k < world.velocityIterations; ++k) solveVelocities(world);
+    buildConstraints(world, constraints_, anchors_);
+    velocities_.resize(bodies.size());
+    for (size_t i = 0; i < bodies.size(); ++i)
+      velocities_[i] = {bodies[i].v, bodies[i].omega, bodies[i].invMass, bodies[i].invInertia};
+    warmStart(velocities_, constraints_);
+    for (int k = 0; k < world.velocityIterations; ++k) solveVelocities(velocities_, constraints_);
+    for (size_t i = 0; i < bodies.size(); ++i) bodies[i].v = velocities_[i].v, bodies[i].omega = velocities_[i].omega;
+    storeImpulses(world);
     integratePositions(world, step.h);
+    positions_.resize(bodies.size());
+    for (size_t i = 0; i < bodies.size(); ++i)
+      positions_[i] = {bodies[i].x, bodies[i].angle, bodies[i].invMass, bodies[i].invInertia, Rot{}, true};
     for (int k = 0; k < world.positionIterations; ++k)
-      if (solvePositions(world)) break;
+      if (solvePositions(positions_, constraints_, anchors_)) break;
+    for (size_t i = 0; i < bodies.size(); ++i) bodies[i].x = positions_[i].x, bodies[i].angle = positions_[i].angle;
     recordImpacts(world, step.end());
   }
 
@@ -218,7 +318,23 @@ class SequentialSolver final : public Method {
     }
   }
 
+  // the accumulated impulses back into the contacts, for the next step's warm start and the impacts
+  void storeImpulses(World& world) const {
+    for (size_t i = 0; i < constraints_.size(); ++i)
+      for (int k = 0; k < constraints_[i].count; ++k) {
+        world.contacts[i].state[k].normalImpulse = constraints_[i].p[k].normalImpulse;
+        world.contacts[i].state[k].tangentImpulse = constraints_[i].p[k].tangentImpulse;
+      }
+  }
+
   States before_, free_;  // the states where the step began and where the free motion ended
+  // scratch of the solver loops, kept from step to step so that a step allocates nothing
+  std::vector<SolverContact> constraints_;
+  std::vector<PositionPoint> anchors_;  // two per contact
+  std::vector<VelocityBody> velocities_;
+  std::vector<PositionBody> positions_;
+  std::vector<Pose> poses_;
+  std::vector<Contact> fresh_;  // the contacts found, then last step's (their storage reused)
 };
 
 }  // namespace

@@ -56,6 +56,19 @@ struct SoftContact {
   SoftPoint p[2];
 };
 
+// what the substeps read and change of a body, in one contiguous array: during the substeps these
+// are the bodies' state (World::bodies is written back once, after them), so the loops stream
+// through small records instead of whole bodies; the same operations on the same numbers as on
+// the bodies themselves, so the results are the same to the bit
+struct SoftBody {
+  Vec2 v = Vec2::Zero();
+  double omega = 0.0;
+  double invMass = 0.0, invInertia = 0.0;
+  Vec2 x = Vec2::Zero();
+  double angle = 0.0;
+  bool isStatic = false;
+};
+
 Vec2 tangentOf(const Vec2& n) { return {-n.y(), n.x()}; }
 
 double effectiveMass(const Body& a, const Body& b, const Vec2& rA, const Vec2& rB, const Vec2& d) {
@@ -64,12 +77,14 @@ double effectiveMass(const Body& a, const Body& b, const Vec2& rA, const Vec2& r
   return k > 0.0 ? 1.0 / k : 0.0;
 }
 
-// velocity of A's point relative to B's, at the fixed lever arms
-Vec2 relativeVelocityAt(const Body& a, const Body& b, const SoftPoint& p) {
+// velocity of A's point relative to B's, at the fixed lever arms (of a Body or a SoftBody)
+template <class B>
+inline Vec2 relativeVelocityAt(const B& a, const B& b, const SoftPoint& p) {
   return a.v + cross(a.omega, p.rA) - b.v - cross(b.omega, p.rB);
 }
 
-void applyAt(Body& a, Body& b, const SoftPoint& p, const Vec2& j) {
+template <class B>
+inline void applyAt(B& a, B& b, const SoftPoint& p, const Vec2& j) {
   a.v += a.invMass * j;
   a.omega += a.invInertia * cross(p.rA, j);
   b.v -= b.invMass * j;
@@ -94,9 +109,9 @@ class SoftStepSolver final : public Method {
 
   // the contacts where the bodies are now, carrying over last step's impulses, prepared once
   void beginStep(World& world, const TimeStep& step) override {
-    std::vector<Contact> fresh = world.findContacts(speculativeMargin(world, step.h));
-    matchWarmStart(world.contacts, fresh);
-    world.contacts = std::move(fresh);
+    world.findContacts(speculativeMargin(world, step.h), fresh_);
+    matchWarmStart(world.contacts, fresh_);
+    std::swap(world.contacts, fresh_);
     prepare(world, step.h / world.substeps);
   }
 
@@ -104,14 +119,24 @@ class SoftStepSolver final : public Method {
   bool move(World& world, const TimeStep& step) override {
     const int n = world.substeps;
     const double h = step.h / n;
+    std::vector<Body>& bodies = world.bodies;
+    bodies_.resize(bodies.size());
+    for (size_t i = 0; i < bodies.size(); ++i) {
+      const Body& b = bodies[i];
+      bodies_[i] = {b.v, b.omega, b.invMass, b.invInertia, b.x, b.angle, b.isStatic};
+    }
     for (int k = 0; k < n; ++k) {
       integrateVelocities(world, step, h);
-      warmStart(world);
-      solve(world, h, true);
-      integratePositions(world, h);
-      for (int r = 0; r < settings::kRelaxIterations; ++r) solve(world, h, false);
+      warmStart();
+      solve(h, true);
+      integratePositions(h);
+      for (int r = 0; r < settings::kRelaxIterations; ++r) solve(h, false);
       for (SoftContact& c : constraints_)
         for (int i = 0; i < c.count; ++i) c.p[i].totalNormalImpulse += c.p[i].normalImpulse;
+    }
+    for (size_t i = 0; i < bodies.size(); ++i) {
+      Body& b = bodies[i];
+      b.v = bodies_[i].v, b.omega = bodies_[i].omega, b.x = bodies_[i].x, b.angle = bodies_[i].angle;
     }
     return false;
   }
@@ -143,7 +168,7 @@ class SoftStepSolver final : public Method {
         SoftPoint& p = s.p[k];
         const ManifoldPoint& m = c.manifold.points[k];
         p.rA = m.point - a.x, p.rB = m.point - b.x;
-        p.localA = a.pose().toBody(m.point), p.localB = b.pose().toBody(m.point);
+        p.localA = Pose{a.x, rotations_[c.a]}.toBody(m.point), p.localB = Pose{b.x, rotations_[c.b]}.toBody(m.point);
         p.separation = m.separation;
         p.normalMass = effectiveMass(a, b, p.rA, p.rB, s.n);
         p.tangentMass = effectiveMass(a, b, p.rA, p.rB, t);
@@ -156,28 +181,29 @@ class SoftStepSolver final : public Method {
   }
 
   // v += h (f/m), ω += h τ/I with the forces at the substep's start (symplectic Euler)
-  void integrateVelocities(World& world, const TimeStep& step, double h) {
-    const States y = world.states();
-    world.rates(step.midpoint(), y, rates_);
-    for (size_t i = 0; i < world.bodies.size(); ++i) {
-      Body& b = world.bodies[i];
+  void integrateVelocities(const World& world, const TimeStep& step, double h) {
+    states_.resize(bodies_.size());
+    for (size_t i = 0; i < bodies_.size(); ++i) states_[i] = {bodies_[i].x, bodies_[i].angle, bodies_[i].v, bodies_[i].omega};
+    world.rates(step.midpoint(), states_, rates_);
+    for (size_t i = 0; i < bodies_.size(); ++i) {
+      SoftBody& b = bodies_[i];
       if (b.isStatic) continue;
       b.v += h * rates_[i].vDot;
       b.omega += h * rates_[i].omegaDot;
     }
   }
 
-  void integratePositions(World& world, double h) {
-    for (Body& b : world.bodies) {
+  void integratePositions(double h) {
+    for (SoftBody& b : bodies_) {
       if (b.isStatic) continue;
       b.x += h * b.v;
       b.angle += h * b.omega;
     }
-    for (size_t i = 0; i < world.bodies.size(); ++i) rotations_[i] = world.bodies[i].q();
+    for (size_t i = 0; i < bodies_.size(); ++i) rotations_[i] = Rot::fromAngle(bodies_[i].angle);
   }
 
-  void warmStart(World& world) {
-    std::vector<Body>& bodies = world.bodies;
+  void warmStart() {
+    std::vector<SoftBody>& bodies = bodies_;
     for (const SoftContact& c : constraints_) {
       const Vec2 t = tangentOf(c.n);
       for (int k = 0; k < c.count; ++k)
@@ -187,10 +213,10 @@ class SoftStepSolver final : public Method {
 
   // one pass over the contacts: the normal impulses (soft with the push when useBias, rigid when
   // relaxing; a gap is a speculative contact either way), then Coulomb friction
-  void solve(World& world, double h, bool useBias) {
-    std::vector<Body>& bodies = world.bodies;
+  void solve(double h, bool useBias) {
+    std::vector<SoftBody>& bodies = bodies_;
     for (SoftContact& c : constraints_) {
-      Body &a = bodies[c.a], &b = bodies[c.b];
+      SoftBody &a = bodies[c.a], &b = bodies[c.b];
       for (int k = 0; k < c.count; ++k) {
         SoftPoint& p = c.p[k];
         const double s = currentSeparation(a, b, c, p);
@@ -222,7 +248,7 @@ class SoftStepSolver final : public Method {
   }
 
   // the separation now, from where the point's material points on A and B have moved
-  double currentSeparation(const Body& a, const Body& b, const SoftContact& c, const SoftPoint& p) const {
+  double currentSeparation(const SoftBody& a, const SoftBody& b, const SoftContact& c, const SoftPoint& p) const {
     const Vec2 pa = a.x + rotations_[c.a].apply(p.localA), pb = b.x + rotations_[c.b].apply(p.localB);
     return p.separation + c.n.dot(pa - pb);
   }
@@ -271,6 +297,9 @@ class SoftStepSolver final : public Method {
 
   std::vector<SoftContact> constraints_;
   std::vector<Rot> rotations_;  // every body's orientation, after each substep's positions
+  std::vector<SoftBody> bodies_;  // the bodies during the substeps
+  States states_;                 // scratch of integrateVelocities
+  std::vector<Contact> fresh_;    // the contacts found, then last step's (their storage reused)
   Rates rates_;
 };
 

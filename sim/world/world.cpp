@@ -56,27 +56,37 @@ void World::setStates(const States& y) {
 }
 
 std::vector<Contact> World::findContacts(double margin) const {
-  std::vector<Aabb> boxes;
-  std::vector<bool> fixed;
-  for (const Body& b : bodies) {
-    Aabb box = bounds(b.shape, b.pose());
+  std::vector<Contact> found;
+  findContacts(margin, found);
+  return found;
+}
+
+void World::findContacts(double margin, std::vector<Contact>& found) const {
+  // each body's pose once (one sine and cosine), for its bounds and every pair it is in
+  std::vector<Pose> poses(bodies.size());
+  std::vector<Aabb> boxes(bodies.size());
+  std::vector<bool> fixed(bodies.size());
+  for (size_t i = 0; i < bodies.size(); ++i) {
+    const Body& b = bodies[i];
+    poses[i] = b.pose();
+    Aabb box = bounds(b.shape, poses[i]);
     box.lower -= Vec2::Constant(margin);
     box.upper += Vec2::Constant(margin);
-    boxes.push_back(box);
-    fixed.push_back(b.isStatic);
+    boxes[i] = box;
+    fixed[i] = b.isStatic;
   }
-  std::vector<Contact> found;
-  for (const auto& [i, j] : overlappingPairs(boxes, fixed)) {
+  const std::vector<std::pair<int, int>> pairs = overlappingPairs(boxes, fixed);
+  found.clear();
+  for (const auto& [i, j] : pairs) {
     const Body &a = bodies[i], &b = bodies[j];
     Contact c;
     c.a = i, c.b = j;
-    c.manifold = collide(a.shape, a.pose(), b.shape, b.pose(), margin);
+    c.manifold = collide(a.shape, poses[i], b.shape, poses[j], margin);
     if (c.manifold.count == 0) continue;
     c.restitution = combinedRestitution(a.restitution, b.restitution);
     c.friction = combinedFriction(a.friction, b.friction);
     found.push_back(c);
   }
-  return found;
 }
 
 void World::start() {

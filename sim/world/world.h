@@ -103,6 +103,8 @@ class World {
 
   // manifolds of every pair closer than `margin` now, sorted by pair
   std::vector<Contact> findContacts(double margin) const;
+  // the same into `found` (cleared first), whose storage a solver keeps from step to step
+  void findContacts(double margin, std::vector<Contact>& found) const;
   // the largest extent of the bodies at the start: the scale of the event method's tolerances
   double sceneSize() const { return sceneSize_; }
 

@@ -42,38 +42,46 @@ TEST_CASE("bounds of a plane: axis-aligned half-planes are bounded on one side, 
   CHECK(slope.upper == sim::core::Vec2(inf, inf));
 }
 
-TEST_CASE("overlappingPairs equals brute-force all-pairs overlap on random boxes, planes and static bodies") {
-  std::mt19937_64 rng(1618);
+// n random boxes, planes and static bodies; on a coarse grid (`onGrid`) boxes share edges and lower
+// bounds exactly (ties in the sort, touching boxes, zero-size boxes); `large` of them up to 40 wide
+void randomBoxes(std::mt19937_64& rng, int n, bool onGrid, int large, std::vector<sim::collision::Aabb>& boxes,
+                 std::vector<bool>& fixed) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int i = 0; i < n; ++i) {
+    const double r = u(rng);
+    if (r < 0.08) {
+      // a half-plane: floor, ceiling, walls or an oblique one, always static
+      const sim::core::Vec2 normals[] = {{0, 1}, {0, -1}, {1, 0}, {-1, 0}, {0.6, 0.8}};
+      const sim::core::Vec2 normal = normals[static_cast<int>(u(rng) * 5.0)];
+      boxes.push_back(planeBox(normal, {20.0 * u(rng) - 10.0, 20.0 * u(rng) - 10.0}));
+      fixed.push_back(true);
+      continue;
+    }
+    sim::core::Vec2 lower, size;
+    if (onGrid) {
+      lower = {std::floor(10.0 * u(rng)) - 5.0, std::floor(10.0 * u(rng)) - 5.0};
+      size = {std::floor(4.0 * u(rng)), std::floor(4.0 * u(rng))};
+    } else {
+      lower = {20.0 * u(rng) - 10.0, 20.0 * u(rng) - 10.0};
+      size = {4.0 * u(rng), 4.0 * u(rng)};
+    }
+    if (i < large) size *= 10.0;
+    boxes.push_back({lower, lower + size});
+    fixed.push_back(u(rng) < 0.3);
+  }
+}
+
+// overlappingPairs against brute force over `trials` random sets of n(trial) boxes; how many
+// pairs and overlapping static pairs (which must be left out) the comparison saw
+std::pair<size_t, size_t> compareWithBruteForce(std::mt19937_64& rng, int trials, int minBoxes, int maxBoxes,
+                                                int large) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   size_t totalPairs = 0, skippedStatic = 0;
-  for (int trial = 0; trial < 400; ++trial) {
-    const int n = static_cast<int>(u(rng) * 60.0);
-    // a coarse grid in some trials, so that boxes share edges and lower bounds exactly (ties in the
-    // sort, touching boxes, zero-size boxes)
-    const bool grid = trial % 3 == 0;
+  for (int trial = 0; trial < trials; ++trial) {
+    const int n = minBoxes + static_cast<int>(u(rng) * (maxBoxes - minBoxes));
     std::vector<sim::collision::Aabb> boxes;
     std::vector<bool> fixed;
-    for (int i = 0; i < n; ++i) {
-      const double r = u(rng);
-      if (r < 0.08) {
-        // a half-plane: floor, ceiling, walls or an oblique one, always static
-        const sim::core::Vec2 normals[] = {{0, 1}, {0, -1}, {1, 0}, {-1, 0}, {0.6, 0.8}};
-        const sim::core::Vec2 normal = normals[static_cast<int>(u(rng) * 5.0)];
-        boxes.push_back(planeBox(normal, {20.0 * u(rng) - 10.0, 20.0 * u(rng) - 10.0}));
-        fixed.push_back(true);
-        continue;
-      }
-      sim::core::Vec2 lower, size;
-      if (grid) {
-        lower = {std::floor(10.0 * u(rng)) - 5.0, std::floor(10.0 * u(rng)) - 5.0};
-        size = {std::floor(4.0 * u(rng)), std::floor(4.0 * u(rng))};
-      } else {
-        lower = {20.0 * u(rng) - 10.0, 20.0 * u(rng) - 10.0};
-        size = {4.0 * u(rng), 4.0 * u(rng)};
-      }
-      boxes.push_back({lower, lower + size});
-      fixed.push_back(u(rng) < 0.3);
-    }
+    randomBoxes(rng, n, trial % 3 == 0, trial % 2 == 0 ? large : 0, boxes, fixed);
     const Pairs expected = bruteForce(boxes, fixed);
     const Pairs got = sim::collision::overlappingPairs(boxes, fixed);
     CAPTURE(trial);
@@ -87,9 +95,21 @@ TEST_CASE("overlappingPairs equals brute-force all-pairs overlap on random boxes
     for (int i = 0; i < n; ++i)
       for (int j = i + 1; j < n; ++j) skippedStatic += fixed[i] && fixed[j] && boxes[i].overlaps(boxes[j]);
   }
-  // the comparison saw many pairs, and many overlapping static pairs that must be left out
+  return {totalPairs, skippedStatic};
+}
+
+TEST_CASE("overlappingPairs equals brute-force all-pairs overlap on random boxes, planes and static bodies") {
+  std::mt19937_64 rng(1618);
+  // few boxes (the sweep)
+  const auto [totalPairs, skippedStatic] = compareWithBruteForce(rng, 400, 0, 60, 0);
   CHECK(totalPairs > 1000);
   CHECK(skippedStatic > 100);
+  // many (the grid), with a few large boxes among them, and with more large ones than the grid
+  // takes (back to the sweep)
+  const auto [gridPairs, gridStatic] = compareWithBruteForce(rng, 40, 64, 600, 5);
+  CHECK(gridPairs > 10000);
+  CHECK(gridStatic > 1000);
+  compareWithBruteForce(rng, 4, 200, 300, 100);
 }
 
 TEST_CASE("overlappingPairs: small cases by hand") {
