@@ -149,8 +149,8 @@ void GlContext::read(Image& frame) {
   if (recorded) glEndList();
   recording_ = false;
   // where the drawings at the other positions may differ from the first, in GL's window
-  // coordinates (y up): what the canvas said, widened by a pixel and a half for the shift and the
-  // rounding, or the whole frame
+  // coordinates (y up): what the canvas said, widened by two pixels for the shift and the rounding,
+  // or the whole frame
   int x0 = 0, y0 = 0, x1 = w, y1 = h;
   if (drawnWithin_) {
     const Bounds& b = *drawnWithin_;
@@ -195,6 +195,9 @@ void GlContext::read(Image& frame) {
       glReadPixels(x0, y0, bw, bh, GL_RGBA, GL_UNSIGNED_BYTE, samples_[k - 1].data());
     }
   }
+  // a skipped clear left older frames' values in the stencil: a primitive drawn at once (not
+  // recorded) clears it before taking a value
+  if (!stencil) lastStencil_ = 255;
   if (drawings > 1) {
     // rows top first: the region's top row is the frame's row h − y1
     const size_t row = static_cast<size_t>(bw) * 4;
