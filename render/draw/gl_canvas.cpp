@@ -29,6 +29,12 @@ void GlCanvas::begin(const Camera& camera) { start(camera, true); }
 void GlCanvas::beginOverlay(const Camera& camera) { start(camera, false); }
 
 void GlCanvas::start(const Camera& camera, bool clear) {
+  // a new frame is recorded, to be drawn at each sample position; an overlay adds to the frame begun
+  if (clear) gl_.beginFrame();
+  // a frame begun here is all drawn by this canvas, which can say where (finish()); an overlay's
+  // frame has drawing the canvas did not see
+  bounded_ = clear;
+  drawn_ = Bounds();
   camera_ = camera;
   px_ = camera.pixelSize();
   texts_.clear();
@@ -62,6 +68,11 @@ Image GlCanvas::finish() {
 }
 
 void GlCanvas::finish(Image& image) {
+  if (bounded_) {
+    Bounds pixels;
+    if (!drawn_.empty()) pixels.add(camera_.toPixel(drawn_.min)), pixels.add(camera_.toPixel(drawn_.max));
+    gl_.drawnWithin(pixels);
+  }
   gl_.read(image);
   // a halo of the background around each letter, a tenth of the size: legible over any line
   const int halo = std::max(1, style_.fontSize / 10);
@@ -215,6 +226,7 @@ void GlCanvas::beginPrimitive(const Color& c, double opacity, bool marks) {
 }
 
 void GlCanvas::vertex(const Vec2& world) {
+  drawn_.add(world);
   const Vec2& c = camera_.center();
   glVertex2d(world.x() - c.x(), world.y() - c.y());
 }

@@ -51,6 +51,9 @@ class GlCanvas final : public Canvas {
     Color color;
   };
   void start(const Camera& camera, bool clear);
+  // whether this canvas began the frame (not an overlay), and the world points it has drawn
+  bool bounded_ = false;
+  Bounds drawn_;
   // colors of a role: a fill (for shapes) and a stroke
   Color fillColor(const Pen& s) const;
   Color strokeColor(const Pen& s) const;

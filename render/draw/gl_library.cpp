@@ -113,3 +113,15 @@ RIGIDREEL_GL(void, glRenderbufferStorageMultisample, (GLenum t, GLsizei s, GLenu
 RIGIDREEL_GL(void, glBlitFramebuffer,
              (GLint a, GLint b, GLint c, GLint d, GLint e, GLint f, GLint g, GLint h, GLbitfield m, GLenum filter),
              (a, b, c, d, e, f, g, h, m, filter))
+// frames drawn once per sample position (gl_context.cpp): a display list replayed with the viewport
+// shifted, read back top row first
+RIGIDREEL_GL(GLuint, glGenLists, (GLsizei n), (n))
+RIGIDREEL_GL(void, glDeleteLists, (GLuint l, GLsizei n), (l, n))
+RIGIDREEL_GL(void, glNewList, (GLuint l, GLenum m), (l, m))
+RIGIDREEL_GL(void, glEndList, (), ())
+RIGIDREEL_GL(void, glCallList, (GLuint l), (l))
+RIGIDREEL_GL(void, glViewportIndexedf, (GLuint i, GLfloat x, GLfloat y, GLfloat w, GLfloat h), (i, x, y, w, h))
+RIGIDREEL_GL(void, glRenderbufferStorage, (GLenum t, GLenum f, GLsizei w, GLsizei h), (t, f, w, h))
+RIGIDREEL_GL(void, glPixelStorei, (GLenum p, GLint v), (p, v))
+RIGIDREEL_GL(void, glReadPixels, (GLint x, GLint y, GLsizei w, GLsizei h, GLenum f, GLenum t, void* p), (x, y, w, h, f, t, p))
+RIGIDREEL_GL(void, glScissor, (GLint x, GLint y, GLsizei w, GLsizei h), (x, y, w, h))

@@ -35,6 +35,8 @@ GlCanvas3::GlCanvas3(GlContext& gl, TextRenderer& text, const Style& style)
       overlay_(gl, text, style) {}
 
 void GlCanvas3::begin(const Camera3& camera) {
+  // recorded, to be drawn at each sample position (the overlay is part of the same frame)
+  gl_.beginFrame();
   camera_ = camera;
   overlaid_ = false;
   // opaque solids with a depth test, in clip coordinates: GL's matrices are the identity

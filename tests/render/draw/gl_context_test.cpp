@@ -1,0 +1,133 @@
+// The GL context: a frame drawn once per sample position and resolved in rigidreel is the frame that
+// llvmpipe's own 4× multisampling and resolving blit give, byte for byte (gl_context.cpp draws it
+// that way because llvmpipe's resolve is slow, and the pictures must not change).
+#include <doctest/doctest.h>
+
+#define GL_GLEXT_PROTOTYPES
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#include "render/draw/gl_canvas.h"
+
+using render::draw::Camera;
+using render::draw::Color;
+using render::draw::Image;
+using render::draw::Role;
+using sim::core::Vec2;
+
+namespace {
+
+constexpr int kWidth = 320, kHeight = 180;
+
+// what the frames show: a hatched ground and box, turned and translucent bodies, a wheel, a
+// contact, arrows (no text: it is drawn on the read frame, not by GL)
+void scene(render::draw::GlCanvas& c) {
+  c.halfPlane({0, -0.5}, {0.05, 1}, {Role::StaticBody, 1, 1});
+  c.polygon({{-2.5, 0.2}, {-1.5, 0.2}, {-1.5, 1.2}, {-2.5, 1.2}}, {Role::StaticBody, 1, 1});
+  c.polygon({{-0.9, -0.3}, {0.1, -0.45}, {0.25, 0.55}, {-0.75, 0.7}}, {Role::Body, 0, 1});
+  c.polygon({{0.1, 0.3}, {1.0, 0.0}, {1.3, 0.9}, {0.4, 1.2}}, {Role::Body, 2, 0.5});
+  c.circle({1.8, 1.5}, 0.4, {Role::Body, 0, 0.7});
+  c.segment({1.8, 1.5}, {2.1, 1.75}, {Role::BodyAxis, 0, 1});
+  c.point({0, 0.3}, {Role::ContactPoint, -1, 1});
+  c.arrow({0, 0.3}, {0.5, 0.35}, {Role::ContactNormal, -1, 1});
+  c.arrow({-2, 2.5}, {-1.2, 2.0}, {Role::Impulse, -1, 0.6});
+}
+
+render::draw::Style style() {
+  render::draw::Style s;
+  s.background = Color::parse("#fdfcf7");
+  s.bodies = {Color::parse("#4e79a7"), Color::parse("#8c8c8c"), Color::parse("#c8553d")};
+  s.lineWidth = 1.5;
+  return s;
+}
+
+// a few shapes in the middle of the frame: the other sample positions drawn only around them
+void smallScene(render::draw::GlCanvas& c) {
+  c.polygon({{-0.4, 0.7}, {0.3, 0.6}, {0.4, 1.3}, {-0.3, 1.4}}, {Role::Body, 0, 1});
+  c.circle({0.9, 1.1}, 0.25, {Role::Body, 2, 0.5});
+  c.arrow({0.9, 1.1}, {1.4, 0.9}, {Role::Velocity, 2, 1});
+}
+
+// the same calls drawn at once into a 4x multisampled framebuffer and resolved by a blit
+Image multisampled(render::draw::GlContext& gl, render::draw::GlCanvas& canvas, const Camera& camera, const Color& bg,
+                   void (*draw)(render::draw::GlCanvas&)) {
+  GLuint framebuffers[2], renderbuffers[3];
+  glGenFramebuffers(2, framebuffers);
+  glGenRenderbuffers(3, renderbuffers);
+  glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers[0]);
+  glRenderbufferStorageMultisample(GL_RENDERBUFFER, 4, GL_RGBA8, kWidth, kHeight);
+  glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers[1]);
+  glRenderbufferStorageMultisample(GL_RENDERBUFFER, 4, GL_DEPTH24_STENCIL8, kWidth, kHeight);
+  glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers[2]);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, kWidth, kHeight);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffers[0]);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, renderbuffers[0]);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, renderbuffers[1]);
+  REQUIRE(glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE);
+  glViewport(0, 0, kWidth, kHeight);
+  glStencilMask(0xff);
+  glClearStencil(0);
+  glClear(GL_STENCIL_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glClearColor(static_cast<float>(bg.r), static_cast<float>(bg.g), static_cast<float>(bg.b), 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  // an overlay draws at once, into whatever framebuffer is bound
+  canvas.beginOverlay(camera);
+  draw(canvas);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffers[1]);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, renderbuffers[2]);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffers[0]);
+  glDisable(GL_STENCIL_TEST);
+  glBlitFramebuffer(0, 0, kWidth, kHeight, 0, 0, kWidth, kHeight, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffers[1]);
+  Image frame;
+  frame.width = kWidth;
+  frame.height = kHeight;
+  frame.rgba.resize(static_cast<size_t>(kWidth) * kHeight * 4);
+  // (the context reads rows top first already)
+  glReadPixels(0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE, frame.rgba.data());
+  gl.makeCurrent();
+  glDeleteFramebuffers(2, framebuffers);
+  glDeleteRenderbuffers(3, renderbuffers);
+  return frame;
+}
+
+long differingBytes(const Image& a, const Image& b) {
+  long n = 0;
+  for (size_t i = 0; i < a.rgba.size(); ++i) n += a.rgba[i] != b.rgba[i];
+  return n;
+}
+
+// a context, a canvas on it and a camera on the scenes above
+struct Fixture {
+  render::draw::GlContext gl{kWidth, kHeight};
+  render::draw::TextRenderer text;
+  render::draw::Style s = style();
+  render::draw::GlCanvas canvas{gl, text, s};
+  Camera camera{{0.3, 1}, 4.0, kWidth, kHeight};
+};
+
+}  // namespace
+
+TEST_CASE_FIXTURE(Fixture, "a frame drawn at each sample position is llvmpipe's 4x multisampled frame, byte for byte") {
+  for (auto* draw : {&scene, &smallScene}) {
+    canvas.begin(camera);
+    draw(canvas);
+    const Image drawn = canvas.finish();
+    CHECK(differingBytes(drawn, multisampled(gl, canvas, camera, s.background, draw)) == 0);
+  }
+}
+
+TEST_CASE_FIXTURE(Fixture, "drawn twice, a frame comes out the same (the recorded frame replaces the one before)") {
+  canvas.begin(camera);
+  scene(canvas);
+  const Image first = canvas.finish();
+  canvas.begin(camera);
+  canvas.circle({0, 0}, 1.0, {Role::Body, 0, 1});
+  const Image other = canvas.finish();
+  canvas.begin(camera);
+  scene(canvas);
+  Image again = other;
+  canvas.finish(again);
+  CHECK(first != other);
+  CHECK(first == again);
+}
