@@ -117,6 +117,27 @@ run "${RENDER[@]}"
 check "stale .part files of a dead process are removed, a live one's kept" $?
 rm -f o/ball/.ball.part-$$.mp4
 
+# --- item 8: concurrent renders of one scene into one folder ------------------------------------
+# a whole PNG: the signature at the start and the IEND chunk (and its CRC) at the end
+whole_png() { [ "$(head -c 8 "$1" | od -An -tx1 | tr -d ' ')" = 89504e470d0a1a0a ] && [ "$(tail -c 12 "$1" | head -c 8 | tail -c 4)" = IEND ]; }
+# before the swap, 4 of 40 renders failed ("cannot remove all", "cannot rename: Directory not empty")
+failures=0 broken=0
+for ((round = 0; round < 10; round++)); do
+  pids=()
+  for ((k = 0; k < 4; k++)); do
+    "$BIN" render ball.yaml -o race --size 160x90 --fps 60 --frames --quiet >race-out-$k 2>>race-err-$k &
+    pids+=($!)
+  done
+  for pid in "${pids[@]}"; do wait "$pid" || failures=$((failures + 1)); done
+  frames=(race/ball/ball-frames/*)
+  [ "${#frames[@]}" -eq 60 ] || broken=$((broken + 1))
+  for f in "${frames[@]}"; do whole_png "$f" || { broken=$((broken + 1)); break; }; done
+done
+cat race-err-* >err
+[ "$failures" -eq 0 ] && [ "$broken" -eq 0 ] && no_parts race && [ -e race/ball/ball-frames/frame-00059.png ]
+check "4 renders at once into one folder, 10 times: every run exits 0, the frames folder whole" $? \
+  "$failures runs failed, $broken folders broken"
+
 # --- item 6: bounds on work ---------------------------------------------------------------------
 printf 'name: forever\nduration: 1.0e6\nsim: {dt: 1.0e-12}\nbodies: [{name: a, shape: {box: [1, 1]}}]\n' >forever.yaml
 for command in check simulate render; do
