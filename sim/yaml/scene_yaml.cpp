@@ -7,6 +7,7 @@
 
 #include "sim/scene/step_limit.h"
 #include "sim/yaml/path_name.h"
+#include "sim/yaml/size_limits.h"
 #include "sim/yaml/yaml_reader.h"
 
 namespace sim::yaml {
@@ -45,8 +46,11 @@ class SceneReader : public Reader {
       optional(w, "friction", s.friction, &Reader::nonNegative);
     }
     if (const YAML::Node sim = root["sim"]) {
-      checkKeys(sim, {"integrator", "dt", "collisions", "iterations", "position_iterations", "substeps", "max_steps"}, "sim");
+      checkKeys(sim, {"integrator", "dt", "collisions", "iterations", "position_iterations", "substeps", "max_steps",
+                      "max_bodies", "max_vertices"},
+                "sim");
       optional(sim, "max_steps", s.maxSteps, &Reader::positive);
+      readSizeLimits(*this, sim, limits_);
       if (sim["collisions"])
         s.collisions = named(sim["collisions"], "collisions", collisionMethodFromName, kCollisionMethodNames.list());
       if (sim["iterations"]) s.velocityIterations = wholeNumber(sim["iterations"], "iterations", 1, 1000);
@@ -63,6 +67,7 @@ class SceneReader : public Reader {
                            "'sim: {max_steps: N}'");
     const YAML::Node bodies = required(root, "bodies", "a scene");
     if (!bodies.IsSequence() || bodies.size() == 0) fail(bodies, "'bodies' must be a list of at least one body");
+    checkBodyCount(*this, bodies, limits_);
     for (const YAML::Node& b : bodies) s.bodies.push_back(readBody(b));
     if (const YAML::Node forces = root["forces"]) {
       if (!forces.IsSequence()) fail(forces, "'forces' must be a list, got " + describe(forces));
@@ -107,6 +112,7 @@ class SceneReader : public Reader {
       }
       const YAML::Node poly = n["polygon"];
       if (!poly.IsSequence()) fail(poly, "expected a list of [x, y] vertices for 'polygon', got " + describe(poly));
+      checkVertexCount(*this, poly, limits_);
       std::vector<Vec2> vertices;
       for (const YAML::Node& v : poly) vertices.push_back(vec2(v, "polygon vertex"));
       return makePolygon(std::move(vertices));
@@ -248,6 +254,7 @@ class SceneReader : public Reader {
 
   const OtherKeys& others_;
   std::unordered_set<std::string> bodyNames_;
+  SizeLimits limits_;
 };
 
 }  // namespace
