@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "render/cli/commands.h"
+#include "render/cli/run_progress.h"
 #include "render/cli/space3d.h"
 #include "render/jobs/atomic_file.h"
 #include "render/jobs/json_writer.h"
@@ -123,7 +124,8 @@ int simulate3d(const SceneOptions& o, std::optional<double> until, bool json, co
     trace->rows(world);
   }
   try {
-    world.advanceTo(end, trace.get());
+    RunProgress3 progress(o.scene, end, trace.get());
+    world.advanceTo(end, progress.observer());
   } catch (const Diverged& d) {
     std::cerr << divergedMessage(o.scene, def, d) << '\n';
     return kExitFailure;
