@@ -1,5 +1,7 @@
 #include "render/analysis/stability_def.h"
 
+#include <limits>
+
 #include "sim/yaml/scene_source.h"
 #include "sim/yaml/yaml_reader.h"
 
@@ -22,8 +24,13 @@ StabilityDef readStability(const sim::yaml::SceneSource& source, const sim::scen
     const bool needsBody = d.parameter == Parameter::Speed || d.parameter == Parameter::MassRatio;
     if (needsBody) d.body = r.bodyRef(n, "body", model, "stability with this parameter");
     else if (n["body"]) r.fail(n["body"], "'body' goes with the parameters speed and mass_ratio");
-    if (n["from"]) d.from = r.positive(n["from"], "from");
-    if (n["to"]) d.to = r.positive(n["to"], "to");
+    // a stack height counts bodies: a whole number, within an int before the search converts it
+    const auto bound = [&](const char* key) -> double {
+      if (d.parameter == Parameter::StackHeight) return r.wholeNumber(n[key], key, 1, std::numeric_limits<int>::max());
+      return r.positive(n[key], key);
+    };
+    if (n["from"]) d.from = bound("from");
+    if (n["to"]) d.to = bound("to");
     if (d.to > 0.0 && d.from > 0.0 && !(d.to > d.from)) r.fail(n["to"], "'to' must be larger than 'from'");
     if (n["stack"]) d.stack = r.boolean(n["stack"], "stack");
     if (n["within"]) d.within = r.positive(n["within"], "within");

@@ -113,13 +113,15 @@ SweepRow runSweepCase(const sim::scene::SceneDef& scene, const SweepCase& method
 }
 
 std::vector<double> parseRange(const std::string& text, const std::string& option) {
-  double from = 0.0, to = 0.0;
-  int count = 0;
+  // COUNT read as a number and checked before it becomes an int: sscanf's %d past int's range is
+  // undefined behavior
+  double from = 0.0, to = 0.0, counted = 0.0;
   char tail = 0;
-  if (std::sscanf(text.c_str(), "%lf:%lf:%d%c", &from, &to, &count, &tail) != 3 || !(from > 0.0) || !(to > 0.0) ||
-      !std::isfinite(from) || !std::isfinite(to) || count < 1 || count > 1000)
+  if (std::sscanf(text.c_str(), "%lf:%lf:%lf%c", &from, &to, &counted, &tail) != 3 || !(from > 0.0) || !(to > 0.0) ||
+      !std::isfinite(from) || !std::isfinite(to) || !(counted >= 1.0 && counted <= 1000.0) || counted != std::floor(counted))
     throw UsageError(option + ": expected FROM:TO:COUNT with positive FROM and TO and a COUNT from 1 to 1000, got '" +
                      text + "'");
+  const int count = static_cast<int>(counted);
   std::vector<double> values;
   for (int k = 0; k < count; ++k)
     values.push_back(count == 1 ? from : from * std::pow(to / from, static_cast<double>(k) / (count - 1)));

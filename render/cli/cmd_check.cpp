@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "render/cli/commands.h"
+#include "render/cli/run_progress.h"
 #include "render/cli/scene_options.h"
 #include "render/cli/space3d.h"
 #include "render/jobs/json_writer.h"
@@ -80,12 +81,15 @@ void reportSwitch(const sim::world::World& w) {
 // one scene, one variant ("" for the base); returns false when an expect fails
 bool checkCase(const std::string& file, const std::string& variant) {
   const sim::scene::SceneDef def = readSceneFile(file, variant).model();
-  std::cout << file << (variant.empty() ? "" : " [" + variant + "]") << ": " << describeModel(def) << '\n';
+  const std::string label = file + (variant.empty() ? "" : " [" + variant + "]");
+  std::cout << label << ": " << describeModel(def) << '\n';
   sim::world::World w = startWorld(def, file);
   std::cout << "  collisions: " << describeCollisionMethod(w) << '\n';
+  RunProgress2 progress(label, def.duration);
   if (def.expects.empty()) {
     // still run it: a scene that diverges is not a good scene
-    w.advanceTo(def.duration);
+    w.advanceTo(def.duration, progress.observer());
+    progress.finish();
     std::cout << "  ran to t = " << formatNumber(def.duration) << " (no expect entries)";
     if (!w.impacts.empty()) std::cout << ", " << w.impacts.size() << " impulses";
     std::cout << '\n';
@@ -93,7 +97,9 @@ bool checkCase(const std::string& file, const std::string& variant) {
     reportSwitch(w);
     return true;
   }
-  const bool ok = report(sim::scene::runExpects(def, w));
+  const std::vector<sim::core::CheckResult> results = sim::scene::runExpects(def, w, progress.observer());
+  progress.finish();
+  const bool ok = report(results);
   reportResting(def, w);
   reportSwitch(w);
   return ok;
@@ -113,16 +119,21 @@ std::string describeModel3(const sim::scene3d::SceneDef& d) {
 // one variant of a 3D scene ("" for the base); false when an expect fails
 bool checkCase3d(const std::string& file, const std::string& variant) {
   const sim::scene3d::SceneDef def = readSceneFile3(file, variant).model();
-  std::cout << file << (variant.empty() ? "" : " [" + variant + "]") << ": " << describeModel3(def) << '\n';
+  const std::string label = file + (variant.empty() ? "" : " [" + variant + "]");
+  std::cout << label << ": " << describeModel3(def) << '\n';
   std::cout << "  contacts: none (3D scenes model free rigid bodies: nothing collides, bodies pass through each other)\n";
   sim::world3d::World w = sim::scene3d::buildWorld(def);
+  RunProgress3 progress(label, def.duration);
   if (def.expects.empty()) {
     // still run it: a scene that diverges is not a good scene
-    w.advanceTo(def.duration);
+    w.advanceTo(def.duration, progress.observer());
+    progress.finish();
     std::cout << "  ran to t = " << formatNumber(def.duration) << " (no expect entries)\n";
     return true;
   }
-  return report(sim::scene3d::runExpects(def, w));
+  const std::vector<sim::core::CheckResult> results = sim::scene3d::runExpects(def, w, progress.observer());
+  progress.finish();
+  return report(results);
 }
 
 int check(const std::vector<std::string>& files) {

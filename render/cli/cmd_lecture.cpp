@@ -38,7 +38,8 @@ using Clock = std::chrono::steady_clock;
 struct LectureCommand {
   std::vector<std::string> paths;
   std::string output = "out/lecture";
-  size_t jobs = std::max(1u, std::thread::hardware_concurrency());
+  // signed: "-j -1" read into a size_t wrapped to 2⁶⁴ − 1 and passed as "unlimited"
+  long jobs = std::max(1u, std::thread::hardware_concurrency());
   std::string size;  // "WxH", or empty for the scene's
   std::optional<double> fps;
   bool quiet = false;
@@ -166,7 +167,7 @@ int lecture(const LectureCommand& o) {
   LectureRequest request{.root = o.output, .file = {}, .size = {}, .fps = o.fps};
   if (!o.size.empty()) request.size = parseSize(o.size);
   if (o.fps) checkFps(*o.fps);
-  if (o.jobs < 1) throw UsageError("-j: run at least 1 job at a time");
+  if (o.jobs < 1) throw UsageError("-j: run at least 1 job at a time, got " + std::to_string(o.jobs));
 
   // every scene checked before anything renders: a bad file stops the whole pack (exit 2)
   std::vector<PackScene> scenes;
@@ -197,7 +198,7 @@ int lecture(const LectureCommand& o) {
   if (scenes.size() == 1) {
     results.push_back(runHere(scenes.front(), o.output));
   } else {
-    parallel = std::min(o.jobs, scenes.size());
+    parallel = std::min(static_cast<size_t>(o.jobs), scenes.size());
     std::vector<std::vector<std::string>> commands;
     for (const PackScene& scene : scenes) commands.push_back(jobCommand(o, scene.file));
     results.resize(scenes.size());

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "render/cli/commands.h"
+#include "render/cli/run_progress.h"
 #include "render/cli/scene_options.h"
 #include "render/cli/space3d.h"
 #include "render/jobs/atomic_file.h"
@@ -162,7 +163,8 @@ int simulate(const SimulateOptions& o) {
     trace->rows(world);
   }
   try {
-    world.advanceTo(until, trace.get());
+    RunProgress2 progress(o.scene, until, trace.get());
+    world.advanceTo(until, progress.observer());
   } catch (const sim::world::Diverged& d) {
     std::cerr << o.scene << ": the simulation diverged at t = " << formatNumber(d.time) << ": body '"
               << def.bodies[d.body].name << "' has a non-finite state; try a smaller step (--dt "

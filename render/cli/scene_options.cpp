@@ -5,6 +5,7 @@
 
 #include "render/cli/commands.h"
 #include "render/jobs/json_writer.h"
+#include "sim/core/step_limit.h"
 #include "sim/scene/scene_build.h"
 #include "sim/scene/step_limit.h"
 #include "sim/yaml/scene_yaml.h"
@@ -55,6 +56,8 @@ SceneFile3 SceneOptions::load3() const {
   if (dt) {
     if (!(*dt > 0.0) || !std::isfinite(*dt)) throw UsageError("--dt: the time step must be a positive finite number");
     def.dt = *dt;
+    if (const std::string over = sim::core::stepsOverLimit(def.dt, def.maxSteps, def.duration); !over.empty())
+      throw UsageError("--dt: " + over + "; choose a larger step, or raise the scene's 'sim: {max_steps: N}'");
   }
   if (!collisions.empty())
     throw UsageError("--collisions: " + scene + " is a 3D scene, and 3D scenes have no contacts (bodies pass through each other)");

@@ -7,9 +7,11 @@
 #include <memory>
 
 #include "render/cli/commands.h"
+#include "render/cli/run_progress.h"
 #include "render/cli/space3d.h"
 #include "render/jobs/atomic_file.h"
 #include "render/jobs/json_writer.h"
+#include "sim/core/step_limit.h"
 #include "sim/scene3d/scene_build.h"
 #include "sim/world3d/diagnostics.h"
 
@@ -107,6 +109,8 @@ int simulate3d(const SceneOptions& o, std::optional<double> until, bool json, co
   const sim::scene3d::SceneDef def = o.load3().model();
   const double end = until.value_or(def.duration);
   if (!(end >= 0.0) || !std::isfinite(end)) throw UsageError("--until: the end time must be zero or a positive finite number");
+  if (const std::string over = sim::core::stepsOverLimit(def.dt, def.maxSteps, end); !over.empty())
+    throw UsageError("--until: " + over + "; choose an earlier end, or raise the scene's 'sim: {max_steps: N}'");
   World world = sim::scene3d::buildWorld(def);
   std::unique_ptr<AtomicFile> traceFile;
   std::unique_ptr<Trace3> trace;
@@ -120,7 +124,8 @@ int simulate3d(const SceneOptions& o, std::optional<double> until, bool json, co
     trace->rows(world);
   }
   try {
-    world.advanceTo(end, trace.get());
+    RunProgress3 progress(o.scene, end, trace.get());
+    world.advanceTo(end, progress.observer());
   } catch (const Diverged& d) {
     std::cerr << divergedMessage(o.scene, def, d) << '\n';
     return kExitFailure;

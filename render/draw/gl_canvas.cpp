@@ -240,8 +240,10 @@ void GlCanvas::fillConvex(const std::vector<Vec2>& vertices) {
 int GlCanvas::discSegments(double radius) const {
   // chords within 0.05 px of the circle: n = π / acos(1 − 0.05 / r), r in pixels
   const double r = radius / px_;
-  if (r <= 0.05) return 8;
-  return std::clamp(static_cast<int>(std::ceil(std::numbers::pi / std::acos(1.0 - 0.05 / r))), 8, 720);
+  if (!(r > 0.05)) return 8;
+  // clamped before the conversion: past 10¹⁵ px (a fixed camera a femtometre high) the quotient is
+  // infinite, and converting it is undefined behavior
+  return static_cast<int>(std::clamp(std::ceil(std::numbers::pi / std::acos(1.0 - 0.05 / r)), 8.0, 720.0));
 }
 
 void GlCanvas::fillDisc(const Vec2& center, double radius) {

@@ -1,5 +1,6 @@
 #include "render/jobs/atomic_file.h"
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -54,10 +55,60 @@ StagedDirectory::~StagedDirectory() {
   if (!committed_) fs::remove_all(staging_, ignored);
 }
 
+namespace {
+
+[[noreturn]] void cannotPublish(const std::string& final) {
+  throw std::runtime_error(final + ": could not put the new folder in place (" + std::strerror(errno) + ")");
+}
+
+}  // namespace
+
+// Two runs may publish the same folder at once (two renders of one scene into one -o). Removing the
+// old folder and then renaming the new one over it left a window in which the other run's rename
+// failed (ENOTEMPTY) or its remove_all deleted files under the other's feet; here the folder under
+// the final name is at every instant a whole one. renameat2 (Linux 3.15, glibc 2.28):
+// RENAME_NOREPLACE publishes the first folder, RENAME_EXCHANGE swaps the new folder with the old
+// one in one step, after which the old one sits under this run's own ".part-<pid>" name, which no
+// other run touches.
 void StagedDirectory::commit() {
-  fs::remove_all(final_);
-  fs::rename(staging_, final_);
-  committed_ = true;
+  // a few rounds: another run may publish or swap between two of these calls
+  for (int round = 0; round < 100; ++round) {
+    if (::renameat2(AT_FDCWD, staging_.c_str(), AT_FDCWD, final_.c_str(), RENAME_NOREPLACE) == 0) {
+      committed_ = true;
+      return;
+    }
+    if (errno == EINVAL) return commitWithoutExchange();  // a file system without renameat2's flags
+    if (errno != EEXIST) cannotPublish(final_);
+    if (::renameat2(AT_FDCWD, staging_.c_str(), AT_FDCWD, final_.c_str(), RENAME_EXCHANGE) == 0) {
+      committed_ = true;
+      std::error_code ignored;
+      fs::remove_all(staging_, ignored);  // the old folder, under our name now
+      return;
+    }
+    if (errno == EINVAL) return commitWithoutExchange();
+    // ENOENT: the final name vanished between the two calls; try again
+    if (errno != ENOENT) cannotPublish(final_);
+  }
+  cannotPublish(final_);
+}
+
+// Without an exchange: the old folder renamed aside to this run's own name first, then the new one
+// renamed into the free name, again if another run took it in between. Readers may see no folder
+// for an instant, but no run fails and none removes another's files.
+void StagedDirectory::commitWithoutExchange() {
+  const std::string aside = staging_ + "-old";
+  std::error_code ignored;
+  for (int round = 0; round < 100; ++round) {
+    fs::remove_all(aside, ignored);
+    if (std::rename(final_.c_str(), aside.c_str()) != 0 && errno != ENOENT) cannotPublish(final_);
+    if (std::rename(staging_.c_str(), final_.c_str()) == 0) {
+      committed_ = true;
+      fs::remove_all(aside, ignored);
+      return;
+    }
+    if (errno != ENOTEMPTY && errno != EEXIST) cannotPublish(final_);
+  }
+  cannotPublish(final_);
 }
 
 }  // namespace render::jobs

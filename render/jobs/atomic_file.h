@@ -26,8 +26,9 @@ class AtomicFile {
   bool committed_ = false;
 };
 
-// a directory filled under a temporary name (".<name>.part-<pid>" beside it) and renamed over the
-// old one when complete (video frames as PNG)
+// a directory filled under a temporary name (".<name>.part-<pid>" beside it) and swapped with the
+// old one when complete, atomically, so that two runs publishing the same folder at once both
+// succeed and it is always one run's whole folder (video frames as PNG)
 class StagedDirectory {
  public:
   explicit StagedDirectory(const std::string& final);
@@ -35,9 +36,11 @@ class StagedDirectory {
   StagedDirectory(const StagedDirectory&) = delete;
   StagedDirectory& operator=(const StagedDirectory&) = delete;
   std::string path() const { return staging_; }
+  // throws std::runtime_error naming the folder when it cannot be put in place
   void commit();
 
  private:
+  void commitWithoutExchange();
   std::string final_, staging_;
   bool committed_ = false;
 };

@@ -19,6 +19,17 @@ inline constexpr int kMaxFrameSide = 8192;
 inline constexpr int kMinFrameSide = 16;
 // frames per second, at most: beyond this a lecture video gains nothing
 inline constexpr double kMaxFps = 1000.0;
+// text size, pixels: whole pixels from 1 (FreeType draws nothing at 0) to a line an eighth of the
+// largest frame high
+inline constexpr double kMinFontSize = 1.0;
+inline constexpr double kMaxFontSize = 1000.0;
+// a title card, s, at most: a lecture's card is read in a few seconds, and a longer one is a typo
+// (a card of 1e300 s overflowed the frame count)
+inline constexpr double kMaxTitleCard = 60.0;
+// frames of one video, at most: 10⁷ frames are 46 hours at 60 fps, and 3 hours at the largest
+// frame rate; a video past this is a duration or slow motion typed wrong (a count past a long's
+// range is undefined behavior)
+inline constexpr double kMaxFrames = 1e7;
 
 // what the view shows: everything the run covers (auto), or a fixed window
 struct CameraDef {

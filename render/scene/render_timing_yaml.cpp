@@ -49,7 +49,7 @@ SlowMotionDef slowMotion(const YAML::Node& n, const Reader& r) {
 
 void readTiming(const YAML::Node& node, const Reader& reader, RenderDef& out) {
   reader.optional(node, "title", out.title, &Reader::text);
-  reader.optional(node, "title_card", out.titleCard, &Reader::nonNegative);
+  if (node["title_card"]) out.titleCard = reader.between(node["title_card"], "title_card", 0.0, kMaxTitleCard);
   if (const YAML::Node c = node["caption"]) {
     if (!c.IsScalar()) reader.fail(c, "expected true, false or a text for 'caption', got " + describe(c));
     // true or false; any other text (even "yes") is the caption itself

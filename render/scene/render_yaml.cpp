@@ -92,7 +92,7 @@ void readFrame(const YAML::Node& node, const Reader& reader, RenderDef& out) {
   }
   if (node["background"]) out.background = r.color(node["background"], "background");
   reader.optional(node, "line_width", out.lineWidth, &Reader::positive);
-  reader.optional(node, "font_size", out.fontSize, &Reader::positive);
+  if (node["font_size"]) out.fontSize = reader.between(node["font_size"], "font_size", kMinFontSize, kMaxFontSize);
   if (node["colors"]) r.colors(node["colors"], out.colors);
 }
 

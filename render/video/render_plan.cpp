@@ -215,6 +215,7 @@ RenderPlan planVideos(const LoadVariant& load, const VideoRequest& r) {
     for (const render::scene::Scene& s : scenes)
       if (const std::string over = sim::scene::stepsOverLimit(s.model, *r.duration); !over.empty())
         throw UsageError("--duration: " + over + "; choose a shorter video, or raise the scene's 'sim: {max_steps: N}'");
+  boundFrames(scenes, r.duration, r.fps);
   // each variant surveyed over its video's duration, which --duration sets for all
   RenderPlan plan = surveyed(std::move(scenes), r.size, r.fps, r.duration.value_or(-1.0));
   for (size_t i = 0; i < plan.variants.size(); ++i) {
@@ -241,7 +242,9 @@ RenderPlan planStills(const LoadVariant& load, const StillRequest& r) {
 RenderPlan planLecture(const LoadVariant& load, const LectureRequest& r) {
   const render::scene::Scene base = load("");
   // each variant surveyed once, over its duration: the video's and the panels' survey alike
-  RenderPlan plan = surveyed(variantsOf(base, load), r.size, r.fps, -1.0);
+  std::vector<render::scene::Scene> scenes = variantsOf(base, load);
+  boundFrames(scenes, std::nullopt, r.fps);
+  RenderPlan plan = surveyed(std::move(scenes), r.size, r.fps, -1.0);
   plan.scene = base.model.name;
   for (size_t i = 0; i < plan.variants.size(); ++i)
     plan.videos.push_back(videoOf(plan, i, r.root, plan.variants[i].scene.model.duration, VideoFormat::Mp4, false));

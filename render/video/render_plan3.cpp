@@ -6,6 +6,7 @@
 #include "render/frame3d/energy3.h"
 #include "render/jobs/exit_status.h"
 #include "render/video/output_names.h"
+#include "sim/core/step_limit.h"
 
 namespace render::video {
 using namespace render::jobs;
@@ -132,6 +133,11 @@ std::vector<std::string> RenderPlan3::paths() const {
 RenderPlan3 planVideos3(const LoadVariant3& load, const VideoRequest& r) {
   std::vector<render::scene3d::Scene> scenes =
       r.allVariants ? variantsOf(load(""), load) : std::vector<render::scene3d::Scene>{load(r.variant)};
+  if (r.duration)
+    for (const render::scene3d::Scene& s : scenes)
+      if (const std::string over = sim::core::stepsOverLimit(s.model.dt, s.model.maxSteps, *r.duration); !over.empty())
+        throw UsageError("--duration: " + over + "; choose a shorter video, or raise the scene's 'sim: {max_steps: N}'");
+  boundFrames(scenes, r.duration, r.fps);
   RenderPlan3 plan = surveyed(std::move(scenes), r.size, r.fps, r.duration.value_or(-1.0));
   for (size_t i = 0; i < plan.variants.size(); ++i)
     plan.videos.push_back(videoOf(plan, i, r.root, r.duration.value_or(plan.variants[i].scene.model.duration), r.format, r.frames));
@@ -156,7 +162,9 @@ RenderPlan3 planStills3(const LoadVariant3& load, const StillRequest& r) {
 
 RenderPlan3 planLecture3(const LoadVariant3& load, const LectureRequest& r) {
   const render::scene3d::Scene base = load("");
-  RenderPlan3 plan = surveyed(variantsOf(base, load), r.size, r.fps, -1.0);
+  std::vector<render::scene3d::Scene> scenes = variantsOf(base, load);
+  boundFrames(scenes, std::nullopt, r.fps);
+  RenderPlan3 plan = surveyed(std::move(scenes), r.size, r.fps, -1.0);
   plan.scene = base.model.name;
   for (size_t i = 0; i < plan.variants.size(); ++i)
     plan.videos.push_back(videoOf(plan, i, r.root, plan.variants[i].scene.model.duration, VideoFormat::Mp4, false));

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
+
+#include "render/jobs/exit_status.h"
 
 namespace render::video {
 using namespace render::scene;
@@ -30,7 +33,15 @@ TimeMap::TimeMap(double duration, double titleCard, std::vector<SlowWindow> wind
 
 long TimeMap::frameCount(double fps) const {
   // the tolerance keeps a length of exactly k / fps at k frames despite round-off
-  return std::max(1L, static_cast<long>(std::ceil(length_ * fps - 1e-9)));
+  const double frames = std::ceil(length_ * fps - 1e-9);
+  // bounded before the conversion: a count past a long's range is undefined behavior
+  if (!(frames <= kMaxFrames)) {
+    std::ostringstream m;
+    m << "the video would have " << frames << " frames (" << length_ << " s at " << fps << " fps), more than the limit of "
+      << kMaxFrames << "; shorten the scene's duration, title_card or slow_motion (or --duration), or lower --fps";
+    throw render::jobs::UsageError(m.str());
+  }
+  return std::max(1L, static_cast<long>(frames));
 }
 
 double TimeMap::simTime(double u) const {

@@ -4,6 +4,7 @@
 // so frames still land on exact simulation times, just closer together where the video is slowed.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "render/scene/render_def.h"
@@ -28,7 +29,8 @@ class TimeMap {
 
   // title card + the duration stretched by the windows, s
   double videoLength() const { return length_; }
-  // frames at k / fps for every k / fps < videoLength (at least one)
+  // frames at k / fps for every k / fps < videoLength (at least one); throws UsageError past
+  // kMaxFrames
   long frameCount(double fps) const;
   // video time u falls on the title card
   bool inTitleCard(double u) const { return u < titleCard_; }
@@ -42,6 +44,15 @@ class TimeMap {
   double duration_, titleCard_, length_;
   std::vector<SlowWindow> windows_;  // merged
 };
+
+// the frames of each scene's video (2D or 3D) over `duration` (else its own) at `fps` (else its
+// own), without slow motion, which needs the survey's impacts: throws UsageError past kMaxFrames
+// before the survey runs the scene for hours
+template <class Scene>
+void boundFrames(const std::vector<Scene>& scenes, std::optional<double> duration, std::optional<double> fps) {
+  for (const Scene& s : scenes)
+    TimeMap(duration.value_or(s.model.duration), s.render.titleCard).frameCount(fps.value_or(s.render.fps));
+}
 
 // the scene's map: its title card, and its slow_motion windows (around each of `impactTimes`, or
 // explicit) over a run of `duration`

@@ -50,13 +50,13 @@ std::vector<CheckResult> runExpects(const SceneDef& def) {
   return runExpects(def, world);
 }
 
-std::vector<CheckResult> runExpects(const SceneDef& def, World& world) {
+std::vector<CheckResult> runExpects(const SceneDef& def, World& world, sim::world::StepObserver* observer) {
   std::vector<const ExpectDef*> order;
   for (const ExpectDef& e : def.expects) order.push_back(&e);
   std::stable_sort(order.begin(), order.end(), [](auto* a, auto* b) { return a->time < b->time; });
   std::vector<CheckResult> out;
   for (const ExpectDef* e : order) {
-    world.advanceTo(e->time);
+    world.advanceTo(e->time, observer);
     for (CheckResult& r : evaluate(*e, def, world)) out.push_back(std::move(r));
   }
   return out;

@@ -18,8 +18,9 @@ using sim::core::CheckResult;
 // every quantity of one entry, for a world already at the entry's time
 std::vector<CheckResult> evaluate(const ExpectDef& expect, const SceneDef& def, const World& world);
 
-// runs the scene's world through every expect entry in time order
-std::vector<CheckResult> runExpects(const SceneDef& def, World& world);
+// runs the scene's world through every expect entry in time order (`observer`, if any, sees every
+// step: a progress line)
+std::vector<CheckResult> runExpects(const SceneDef& def, World& world, sim::world::StepObserver* observer = nullptr);
 // the same on a world built from the definitions
 std::vector<CheckResult> runExpects(const SceneDef& def);
 

@@ -1,19 +1,13 @@
 #include "sim/scene/step_limit.h"
 
-#include <cmath>
-#include <sstream>
+#include "sim/core/step_limit.h"
 
 namespace sim::scene {
 
-double stepCount(const SceneDef& def, double until) { return std::ceil(until / def.dt); }
+double stepCount(const SceneDef& def, double until) { return sim::core::stepCount(def.dt, until); }
 
 std::string stepsOverLimit(const SceneDef& def, double until) {
-  const double steps = stepCount(def, until);
-  if (steps <= def.maxSteps) return "";
-  std::ostringstream m;
-  m << "the run needs " << steps << " steps (" << until << " s at dt = " << def.dt << " s), more than the limit of "
-    << def.maxSteps;
-  return m.str();
+  return sim::core::stepsOverLimit(def.dt, def.maxSteps, until);
 }
 
 }  // namespace sim::scene

@@ -1,5 +1,4 @@
-// A bound on work: a run of `until` seconds at the scene's dt takes until / dt steps, and a typo
-// in dt (1e-12 for 1e-2) would otherwise run for years with no output.
+// The bound on work (sim/core/step_limit.h) at a 2D scene's dt and max_steps.
 #pragma once
 
 #include <string>

@@ -15,15 +15,23 @@ std::vector<double> values(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
 std::vector<double> values(const Quat& q) { return {q.w(), q.x(), q.y(), q.z()}; }
 
 // every body followed from the start of the run, step by step
+// (and passes every step and event on to `next`, if any)
 class Measuring : public StepObserver {
  public:
-  explicit Measuring(const World& w) {
+  Measuring(const World& w, StepObserver* next) : next_(next) {
     for (const Body& b : w.bodies) bodies.emplace_back(b, w.time);
   }
   void afterStep(const World& w) override {
     for (size_t i = 0; i < w.bodies.size(); ++i) bodies[i].add(w.bodies[i], w.time);
+    if (next_) next_->afterStep(w);
+  }
+  void afterEvent(const World& w, const ImpulseEvent& e) override {
+    if (next_) next_->afterEvent(w, e);
   }
   std::vector<FreeBodyMeasures> bodies;
+
+ private:
+  StepObserver* next_;
 };
 
 bool measuresRun(const ExpectDef& e) { return e.precessionRate || e.spacePrecessionRate || e.flipPeriod; }
@@ -82,16 +90,16 @@ std::vector<CheckResult> runExpects(const SceneDef& def) {
   return runExpects(def, world);
 }
 
-std::vector<CheckResult> runExpects(const SceneDef& def, World& world) {
+std::vector<CheckResult> runExpects(const SceneDef& def, World& world, StepObserver* observer) {
   std::vector<const ExpectDef*> order;
   for (const ExpectDef& e : def.expects) order.push_back(&e);
   std::stable_sort(order.begin(), order.end(), [](auto* a, auto* b) { return a->time < b->time; });
   // the run's measures cost a rotation and a few angles per body and step: only when asked for
   const bool measuring = std::any_of(order.begin(), order.end(), [](auto* e) { return measuresRun(*e); });
-  Measuring measures(world);
+  Measuring measures(world, observer);
   std::vector<CheckResult> out;
   for (const ExpectDef* e : order) {
-    world.advanceTo(e->time, measuring ? &measures : nullptr);
+    world.advanceTo(e->time, measuring ? &measures : observer);
     for (CheckResult& r : evaluate(*e, def, world, measures.bodies)) out.push_back(std::move(r));
   }
   return out;

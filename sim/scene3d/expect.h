@@ -18,7 +18,8 @@ std::vector<CheckResult> evaluate(const ExpectDef& expect, const SceneDef& def, 
                                   const std::vector<FreeBodyMeasures>& measures);
 
 // runs the scene's world from t = 0 through every expect entry in time order, measuring as it goes
-std::vector<CheckResult> runExpects(const SceneDef& def, World& world);
+// (`observer`, if any, sees every step: a progress line)
+std::vector<CheckResult> runExpects(const SceneDef& def, World& world, sim::world3d::StepObserver* observer = nullptr);
 // the same on a world built from the definitions
 std::vector<CheckResult> runExpects(const SceneDef& def);
 

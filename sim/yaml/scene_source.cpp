@@ -8,6 +8,8 @@
 #include <unordered_set>
 #include <utility>
 
+#include <yaml-cpp/depthguard.h>
+
 #include "sim/yaml/path_name.h"
 #include "sim/yaml/yaml_reader.h"
 
@@ -164,6 +166,11 @@ SceneSource sceneSourceText(const std::string& text, const std::string& file, co
   SceneSource s{file, stem(file), variant, {}, {}, 2};
   try {
     s.root = YAML::Load(text);
+  } catch (const YAML::DeepRecursion& e) {
+    // yaml-cpp's guard against a stack overflow says only "bad file"
+    throw SceneError(file, e.mark.is_null() ? 0 : e.mark.line + 1, e.mark.column + 1,
+                     "lists and maps nested " + std::to_string(e.depth()) +
+                         " levels deep, past the parser's limit; a scene needs a handful of levels: flatten the nesting");
   } catch (const YAML::ParserException& e) {
     throw SceneError(file, e.mark.line + 1, e.mark.column + 1, "invalid YAML: " + e.msg);
   }

@@ -8,6 +8,7 @@
 #include "sim/scene/step_limit.h"
 #include "sim/yaml/force_reader.h"
 #include "sim/yaml/path_name.h"
+#include "sim/yaml/size_limits.h"
 #include "sim/yaml/yaml_reader.h"
 
 namespace sim::yaml {
@@ -46,8 +47,11 @@ class SceneReader : public Reader {
       optional(w, "friction", s.friction, &Reader::nonNegative);
     }
     if (const YAML::Node sim = root["sim"]) {
-      checkKeys(sim, {"integrator", "dt", "collisions", "iterations", "position_iterations", "substeps", "max_steps"}, "sim");
+      checkKeys(sim, {"integrator", "dt", "collisions", "iterations", "position_iterations", "substeps", "max_steps",
+                      "max_bodies", "max_vertices"},
+                "sim");
       optional(sim, "max_steps", s.maxSteps, &Reader::positive);
+      readSizeLimits(*this, sim, limits_);
       if (sim["collisions"])
         s.collisions = named(sim["collisions"], "collisions", collisionMethodFromName, kCollisionMethodNames.list());
       if (sim["iterations"]) s.velocityIterations = wholeNumber(sim["iterations"], "iterations", 1, 1000);
@@ -64,6 +68,7 @@ class SceneReader : public Reader {
                            "'sim: {max_steps: N}'");
     const YAML::Node bodies = required(root, "bodies", "a scene");
     if (!bodies.IsSequence() || bodies.size() == 0) fail(bodies, "'bodies' must be a list of at least one body");
+    checkBodyCount(*this, bodies, limits_);
     for (const YAML::Node& b : bodies) s.bodies.push_back(readBody(b));
     // forces and events are read alike in 2D and 3D (sim/yaml/force_reader.h) but for the vector
     const auto readVector = [this](const YAML::Node& v, const std::string& key) { return vec2(v, key); };
@@ -110,6 +115,7 @@ class SceneReader : public Reader {
       }
       const YAML::Node poly = n["polygon"];
       if (!poly.IsSequence()) fail(poly, "expected a list of [x, y] vertices for 'polygon', got " + describe(poly));
+      checkVertexCount(*this, poly, limits_);
       std::vector<Vec2> vertices;
       for (const YAML::Node& v : poly) vertices.push_back(vec2(v, "polygon vertex"));
       return makePolygon(std::move(vertices));
@@ -189,6 +195,7 @@ class SceneReader : public Reader {
 
   const OtherKeys& others_;
   std::unordered_set<std::string> bodyNames_;
+  SizeLimits limits_;
 };
 
 }  // namespace

@@ -98,6 +98,18 @@ class Reader {
     return x;
   }
 
+  // a number from `least` to `most`: a value that becomes a count must have a bound before it is
+  // converted, or a 1e300 is undefined behavior past the integer's range
+  double between(const YAML::Node& n, const std::string& key, double least, double most) const {
+    const double x = number(n, key);
+    if (!(x >= least && x <= most)) {
+      std::ostringstream m;
+      m << "'" << key << "' must be from " << least << " to " << most << ", got " << n.Scalar();
+      fail(n, m.str());
+    }
+    return x;
+  }
+
   // a whole number from `least` to `most`
   int wholeNumber(const YAML::Node& n, const std::string& key, int least, int most) const {
     const double x = number(n, key);

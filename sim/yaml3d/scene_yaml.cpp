@@ -4,13 +4,16 @@
 #include <sstream>
 #include <utility>
 
+#include "sim/core/step_limit.h"
 #include "sim/scene3d/scene_build.h"
 #include "sim/yaml/force_reader.h"
 #include "sim/yaml/path_name.h"
+#include "sim/yaml/size_limits.h"
 #include "sim/yaml3d/reader3.h"
 
 namespace sim::yaml3d {
 using namespace sim::scene3d;
+using sim::core::stepsOverLimit;
 using sim::yaml::Keys;
 
 namespace {
@@ -22,7 +25,8 @@ const Refusals kWorldRefusals = {{"restitution", std::string(kNoContacts) + "res
                                  {"friction", std::string(kNoContacts) + "friction'"}};
 const Refusals kSimRefusals = {{"collisions", std::string(kNoContacts) + "collisions'"},
                                {"iterations", std::string(kNoContacts) + "iterations' of a contact solver"},
-                               {"position_iterations", std::string(kNoContacts) + "position_iterations' of a contact solver"}};
+                               {"position_iterations", std::string(kNoContacts) + "position_iterations' of a contact solver"},
+                               {"max_vertices", "3D shapes have no vertices to bound ('max_vertices' bounds a 2D polygon's)"}};
 const Refusals kBodyRefusals = {
     {"angle", "a 3D body turns by 'orientation': a unit quaternion [w, x, y, z] or {axis: [x, y, z], angle: θ}"},
     {"static", std::string(kNoContacts) + "static' bodies: a body that must not move is no part of a free-body scene"},
@@ -59,26 +63,24 @@ class SceneReader3 : public Reader3 {
       optional(w, "gravity", s.gravity, &Reader3::vec3);
     }
     if (const YAML::Node sim = root["sim"]) {
-      keys(sim, {"integrator", "dt", "normalize", "max_steps"}, kSimRefusals, "sim");
+      keys(sim, {"integrator", "dt", "normalize", "max_steps", "max_bodies"}, kSimRefusals, "sim");
       optional(sim, "max_steps", s.maxSteps, &Reader::positive);
+      readSizeLimits(*this, sim, limits_);
       if (sim["integrator"])
         s.integrator = named(sim["integrator"], "integrator", [](const std::string& n) { return kIntegratorNames.parse(n); },
                              kIntegratorNames.list());
       optional(sim, "dt", s.dt, &Reader::positive);
       optional(sim, "normalize", s.normalize, &Reader::boolean);
     }
-    // a bound on work, as in 2D (sim/scene/step_limit.h): a typo in dt must not run for years
-    const double steps = std::ceil(s.duration / s.dt);
-    if (steps > s.maxSteps) {
+    // a bound on work, as in 2D: a typo in dt must not run for years
+    if (const std::string over = stepsOverLimit(s.dt, s.maxSteps, s.duration); !over.empty()) {
       const YAML::Node at = root["sim"] && root["sim"]["dt"] ? root["sim"]["dt"] : root["duration"] ? root["duration"] : root;
-      std::ostringstream why;
-      why << "the run needs " << steps << " steps (" << s.duration << " s at dt = " << s.dt << " s), more than the limit of "
-          << s.maxSteps << "; raise dt, shorten duration, or, if the scene needs that many, raise the limit with "
-          << "'sim: {max_steps: N}'";
-      fail(at, why.str());
+      fail(at, over + "; raise dt, shorten duration, or, if the scene needs that many, raise the limit with "
+                      "'sim: {max_steps: N}'");
     }
     const YAML::Node bodies = required(root, "bodies", "a scene");
     if (!bodies.IsSequence() || bodies.size() == 0) fail(bodies, "'bodies' must be a list of at least one body");
+    checkBodyCount(*this, bodies, limits_);
     for (const YAML::Node& b : bodies) s.bodies.push_back(readBody(b, s));
     // forces and events are read alike in 2D and 3D (sim/yaml/force_reader.h) but for the vector
     const auto readVector = [this](const YAML::Node& v, const std::string& key) { return vec3(v, key); };
@@ -194,6 +196,7 @@ class SceneReader3 : public Reader3 {
   }
 
   const OtherKeys& others_;
+  sim::yaml::SizeLimits limits_;
 };
 
 }  // namespace

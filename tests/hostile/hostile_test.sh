@@ -117,6 +117,27 @@ run "${RENDER[@]}"
 check "stale .part files of a dead process are removed, a live one's kept" $?
 rm -f o/ball/.ball.part-$$.mp4
 
+# --- item 8: concurrent renders of one scene into one folder ------------------------------------
+# a whole PNG: the signature at the start and the IEND chunk (and its CRC) at the end
+whole_png() { [ "$(head -c 8 "$1" | od -An -tx1 | tr -d ' ')" = 89504e470d0a1a0a ] && [ "$(tail -c 12 "$1" | head -c 8 | tail -c 4)" = IEND ]; }
+# before the swap, 4 of 40 renders failed ("cannot remove all", "cannot rename: Directory not empty")
+failures=0 broken=0
+for ((round = 0; round < 10; round++)); do
+  pids=()
+  for ((k = 0; k < 4; k++)); do
+    "$BIN" render ball.yaml -o race --size 160x90 --fps 60 --frames --quiet >race-out-$k 2>>race-err-$k &
+    pids+=($!)
+  done
+  for pid in "${pids[@]}"; do wait "$pid" || failures=$((failures + 1)); done
+  frames=(race/ball/ball-frames/*)
+  [ "${#frames[@]}" -eq 60 ] || broken=$((broken + 1))
+  for f in "${frames[@]}"; do whole_png "$f" || { broken=$((broken + 1)); break; }; done
+done
+cat race-err-* >err
+[ "$failures" -eq 0 ] && [ "$broken" -eq 0 ] && no_parts race && [ -e race/ball/ball-frames/frame-00059.png ]
+check "4 renders at once into one folder, 10 times: every run exits 0, the frames folder whole" $? \
+  "$failures runs failed, $broken folders broken"
+
 # --- item 6: bounds on work ---------------------------------------------------------------------
 printf 'name: forever\nduration: 1.0e6\nsim: {dt: 1.0e-12}\nbodies: [{name: a, shape: {box: [1, 1]}}]\n' >forever.yaml
 for command in check simulate render; do
@@ -144,5 +165,56 @@ check "check /dev/zero: exit 2 with the file-size limit, in bounded memory" $? "
 rc=$?
 [ "$rc" -eq 2 ] && grep -q "big.yaml: is larger than the limit" err
 check "a 17 MiB scene is refused by the file-size limit" $? "exit $rc"
+
+# --- item 9: values past an integer's range, -j, deep nesting ------------------------------------
+# each of these became an integer frame count, font size or stack height unchecked: undefined
+# behavior (clang's UBSan), a one-frame video with exit 0
+printf 'name: card\nbodies: [{name: a, shape: {circle: 1}}]\nrender:\n  title_card: 1e300\n' >card.yaml
+expect "title_card: 1e300 is refused at its value" 2 "card.yaml:4:15: 'title_card' must be from 0 to 60" render card.yaml -o o --quiet
+[ ! -e o/card ]
+check "nothing is written for it" $?
+printf 'name: font\nbodies: [{name: a, shape: {circle: 1}}]\nrender: {font_size: 1e300}\n' >font.yaml
+expect "font_size: 1e300 is refused at its value" 2 "font.yaml:3:21: 'font_size' must be from 1 to 1000" snapshot font.yaml --at 0 -o o
+printf 'name: long_video\nduration: 1e9\nsim: {dt: 1, max_steps: 1e10}\nbodies: [{name: a, shape: {circle: 1}}]\n' >frames.yaml
+expect "a video of 6e10 frames is refused before it starts" 2 "the video would have 6e+10 frames" render frames.yaml -o o --quiet
+printf 'name: stack\nbodies: [{name: a, shape: {circle: 1}}]\nstability: {parameter: stack_height, to: 1e300}\n' >stack.yaml
+expect "a stack height of 1e300 is refused at its value" 2 "stack.yaml:3:42: 'to' must be a whole number from 1 to" stability stack.yaml -o o
+expect "sweep --dt with a COUNT past int's range is refused" 2 "--dt: expected FROM:TO:COUNT" sweep ball.yaml --dt 0.01:0.001:99999999999 -o o
+expect "lecture -j -1 is refused" 2 "-j: run at least 1 job at a time, got -1" lecture ball.yaml card.yaml -j -1 -o o
+expect "lecture -j 0 is refused" 2 "-j: run at least 1 job at a time, got 0" lecture ball.yaml card.yaml -j 0 -o o
+{
+  printf 'name: deep\nbodies: [{name: a, shape: {circle: 1}}]\nworld: '
+  for ((k = 0; k < 3000; k++)); do printf '['; done
+  for ((k = 0; k < 3000; k++)); do printf ']'; done
+  echo
+} >deep.yaml
+expect "nesting past the parser's limit names the file, the line and what to do" 2 \
+  "deep.yaml:3:" check deep.yaml
+grep -q "lists and maps nested [0-9]* levels deep, past the parser's limit; a scene needs a handful of levels: flatten the nesting" err
+check "  ... and says how deep and what to do" $?
+
+# --- 3D scenes: the command line's step bound ---------------------------------------------------
+printf 'name: spin\ndimensions: 3\nbodies: [{name: a, shape: {sphere: 1}, angular_velocity: [0, 0, 1]}]\n' >spin.yaml
+expect "3D: --until past the limit is refused" 2 "--until: the run needs 1e+12 steps" simulate spin.yaml --until 1e9
+expect "3D: simulate --dt past the limit is refused" 2 "--dt: the run needs 1e+12 steps" simulate spin.yaml --dt 1e-12
+expect "3D: render --duration past the limit is refused" 2 "--duration: the run needs" render spin.yaml --duration 1e9 -o o
+
+# --- bounds on the size of a scene: bodies and vertices ----------------------------------------
+# (the default, 100,000, is tests/sim/yaml/size_limits_test.cpp's: 100,001 bodies take seconds to parse)
+printf 'name: few\nsim: {max_bodies: 2}\nbodies:\n- {name: a, shape: {circle: 1}}\n- {name: b, shape: {circle: 1}, position: [3, 0]}\n- {name: c, shape: {circle: 1}, position: [6, 0]}\n' >few.yaml
+expect "bodies past max_bodies are refused at 'bodies:'" 2 "few.yaml:4:1: the scene has 3 bodies, more than the limit of 2" check few.yaml
+grep -q "sim: {max_bodies: N}" err
+check "  ... naming the override" $?
+sed -i 's/max_bodies: 2/max_bodies: 3/' few.yaml
+run check few.yaml
+check "max_bodies raises it" "$rc"
+polygon() {  # polygon N: a regular N-gon of radius 1 as a YAML flow list
+  awk -v n="$1" 'BEGIN { printf "["; for (k = 0; k < n; k++) printf "%s[%.12f, %.12f]", (k ? ", " : ""), cos(2 * 3.141592653589793 * k / n), sin(2 * 3.141592653589793 * k / n); printf "]" }'
+}
+printf 'name: round\nbodies:\n- {name: a, shape: {polygon: %s}}\n' "$(polygon 1025)" >round.yaml
+expect "a polygon of 1025 vertices is refused at its list" 2 "round.yaml:3:30: a polygon of 1025 vertices, more than the limit of 1024" check round.yaml
+printf 'name: round\nsim: {max_vertices: 2000}\nbodies:\n- {name: a, shape: {polygon: %s}}\n' "$(polygon 1025)" >round.yaml
+run check round.yaml
+check "max_vertices raises the bound" "$rc"
 
 cli_finish

@@ -69,7 +69,9 @@ TEST_CASE("a variant replaces the caption and the whole slow_motion list, or tur
 TEST_CASE("bad timing values name the line and what to write") {
   expectError("render: {title_crad: 2}\n", 3, "did you mean 'title_card'");
   expectError("render:\n  title: [A]\n", 4, "expected text for 'title'");
-  expectError("render:\n  title_card: -1\n", 4, "zero or a positive");
+  expectError("render:\n  title_card: -1\n", 4, "'title_card' must be from 0 to 60, got -1");
+  // past a long's range as a frame count: undefined behavior before it was bounded here
+  expectError("render:\n  title_card: 1e300\n", 4, "'title_card' must be from 0 to 60, got 1e300");
   expectError("render:\n  caption: {text: A}\n", 4, "true, false or a text");
   expectError("render:\n  slow_motion: true\n", 4, "{factor: f, window: w}");
   expectError("render:\n  slow_motion: 4\n", 4, "or false for 'slow_motion'");

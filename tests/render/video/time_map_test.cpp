@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "render/jobs/exit_status.h"
 #include "render/video/time_map.h"
 
 using render::video::SlowWindow;
@@ -26,6 +27,14 @@ TEST_CASE("without a card or windows the map is the identity, bit for bit, with 
     CHECK(map.factorAt(0.3) == 1.0);
   }
   CHECK(TimeMap(1.5).frameCount(10.0) == 15);
+}
+
+// a count past a long's range was converted unchecked: undefined behavior, a one-frame video
+TEST_CASE("a video of more than kMaxFrames frames is refused before its count is converted") {
+  CHECK(TimeMap(1e7 / 60.0).frameCount(60.0) == 10000000);
+  CHECK_THROWS_AS(TimeMap(1e7 / 60.0 + 1.0).frameCount(60.0), render::jobs::UsageError);
+  CHECK_THROWS_AS(TimeMap(1.0, 1e300).frameCount(60.0), render::jobs::UsageError);
+  CHECK_THROWS_AS(TimeMap(1e300).frameCount(1.0), render::jobs::UsageError);
 }
 
 TEST_CASE("a title card holds t = 0 and delays the run by its length") {

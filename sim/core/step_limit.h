@@ -1,0 +1,16 @@
+// A bound on work: a run of `until` seconds at a step dt takes until / dt steps, and a typo in dt
+// (1e-12 for 1e-2) would otherwise run for years with no output. Shared by 2D and 3D scenes.
+#pragma once
+
+#include <string>
+
+namespace sim::core {
+
+// the steps of a run from 0 to `until` at `dt` (rounded up)
+double stepCount(double dt, double until);
+
+// "the run needs 1e+18 steps (1e+06 s at dt = 1e-12 s), more than the limit of 1e+08" when a
+// run to `until` at `dt` exceeds `maxSteps`, "" when it does not
+std::string stepsOverLimit(double dt, double maxSteps, double until);
+
+}  // namespace sim::core
