@@ -8,6 +8,7 @@
 #include "render/analysis/run_metrics.h"
 #include "render/jobs/exit_status.h"
 #include "render/jobs/json_writer.h"
+#include "sim/core/step_limit.h"
 #include "sim/scene/expect.h"
 #include "sim/scene/scene_build.h"
 
@@ -126,6 +127,14 @@ std::vector<double> parseRange(const std::string& text, const std::string& optio
   for (int k = 0; k < count; ++k)
     values.push_back(count == 1 ? from : from * std::pow(to / from, static_cast<double>(k) / (count - 1)));
   return values;
+}
+
+void checkSweepSteps(double smallestDt, bool referenceRun, double maxSteps, double duration) {
+  // the reference is a 64th of the smallest step (sweepReference, sweepReference3)
+  const double finest = referenceRun ? smallestDt / 64.0 : smallestDt;
+  if (const std::string over = sim::core::stepsOverLimit(finest, maxSteps, duration); !over.empty())
+    throw UsageError(std::string("--dt: ") + (referenceRun ? "the reference run at a 64th of the smallest dt: " : "") + over +
+                     "; choose a larger smallest dt, or raise the limit with sim: {max_steps: N} in the scene");
 }
 
 }  // namespace render::analysis

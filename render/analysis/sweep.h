@@ -52,4 +52,8 @@ SweepRow runSweepCase(const sim::scene::SceneDef& def, const SweepCase& method, 
 // "FROM:TO:COUNT", log-spaced from FROM to TO; throws UsageError
 std::vector<double> parseRange(const std::string& text, const std::string& option);
 
+// a sweep's finest run (its smallest dt, or the reference run at a 64th of it) within the scene's
+// bound on steps (sim: max_steps) to `duration`; throws UsageError naming --dt when it is not
+void checkSweepSteps(double smallestDt, bool referenceRun, double maxSteps, double duration);
+
 }  // namespace render::analysis

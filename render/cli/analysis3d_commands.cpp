@@ -52,6 +52,7 @@ int sweep3d(const SceneOptions& so, const MethodLists& methods, const std::strin
   if (repeat < 1 || repeat > 1000) throw UsageError("--repeat: expected a whole number from 1 to 1000");
   std::filesystem::create_directories(outDir);
 
+  checkSweepSteps(*std::min_element(steps.begin(), steps.end()), def.expects.empty(), def.maxSteps, def.duration);
   const Sweep3Reference reference = sweepReference3(def, *std::min_element(steps.begin(), steps.end()));
   std::vector<Sweep3Row> rows;
   for (Integrator i : integrators)

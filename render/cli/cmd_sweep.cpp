@@ -107,6 +107,7 @@ int sweep(const SweepOptions& o) {
   std::filesystem::create_directories(o.outDir);
 
   const double smallest = *std::min_element(steps.begin(), steps.end());
+  checkSweepSteps(smallest, !o.stack && def.expects.empty(), def.maxSteps, def.duration);
   // a stack is measured against where it stands at the start, a motion against a finer run
   const SweepReference reference = o.stack ? SweepReference{kRestPose, {}} : sweepReference(def, smallest);
   std::vector<SweepRow> rows;

@@ -149,6 +149,9 @@ check "the message names the override, sim: {max_steps: N}" $?
 expect "--dt past the limit is refused" 2 "--dt: the run needs" simulate ball.yaml --dt 1e-12
 expect "--until past the limit is refused" 2 "--until: the run needs" simulate ball.yaml --until 1e9
 expect "render --duration past the limit is refused" 2 "--duration: the run needs" render ball.yaml --duration 1e9 -o o
+expect "sweep: a --dt past the limit is refused before any run" 2 "--dt: the run needs" sweep ball.yaml --dt 1e-12:1e-12:1 --stack -o o
+expect "sweep: its reference run at a 64th of the smallest dt counts" 2 \
+  "--dt: the reference run at a 64th of the smallest dt: the run needs" sweep ball.yaml --dt 1e-7:1e-7:1 -o o
 
 # --- item 7: loading is bounded -----------------------------------------------------------------
 (limit_memory; timeout -k 5 60 "$BIN" check /dev/zero >out 2>err)
@@ -198,6 +201,7 @@ printf 'name: spin\ndimensions: 3\nbodies: [{name: a, shape: {sphere: 1}, angula
 expect "3D: --until past the limit is refused" 2 "--until: the run needs 1e+12 steps" simulate spin.yaml --until 1e9
 expect "3D: simulate --dt past the limit is refused" 2 "--dt: the run needs 1e+12 steps" simulate spin.yaml --dt 1e-12
 expect "3D: render --duration past the limit is refused" 2 "--duration: the run needs" render spin.yaml --duration 1e9 -o o
+expect "3D: sweep's reference run counts" 2 "--dt: the reference run at a 64th of the smallest dt: the run needs" sweep spin.yaml --dt 1e-7:1e-7:1 -o o
 
 # --- bounds on the size of a scene: bodies and vertices ----------------------------------------
 # (the default, 100,000, is tests/sim/yaml/size_limits_test.cpp's: 100,001 bodies take seconds to parse)
