@@ -86,4 +86,17 @@ auto readEvent(const Reader& r, const YAML::Node& n, const Scene& s, ReadVector 
   return e;
 }
 
+// the scene's `forces:` and `events:` lists, each optional, into its definitions
+template <class Scene, class ReadVector>
+void readForcesAndEvents(const Reader& r, const YAML::Node& root, Scene& s, ReadVector vector) {
+  if (const YAML::Node forces = root["forces"]) {
+    if (!forces.IsSequence()) r.fail(forces, "'forces' must be a list, got " + describe(forces));
+    for (const YAML::Node& f : forces) readForce(r, f, s, vector);
+  }
+  if (const YAML::Node events = root["events"]) {
+    if (!events.IsSequence()) r.fail(events, "'events' must be a list, got " + describe(events));
+    for (const YAML::Node& e : events) s.events.push_back(readEvent(r, e, s, vector));
+  }
+}
+
 }  // namespace sim::yaml

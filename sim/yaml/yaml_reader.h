@@ -47,6 +47,12 @@ inline std::string describe(const YAML::Node& n) {
 
 using Keys = std::vector<std::string>;
 
+// a reader's own keys, and those other layers read from the same map (the render: block's, ...)
+inline Keys with(Keys own, const Keys& others) {
+  own.insert(own.end(), others.begin(), others.end());
+  return own;
+}
+
 // reads one file's YAML tree into definitions, failing at the first fault with its position
 class Reader {
  public:

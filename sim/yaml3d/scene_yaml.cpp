@@ -15,6 +15,7 @@ namespace sim::yaml3d {
 using namespace sim::scene3d;
 using sim::core::stepsOverLimit;
 using sim::yaml::Keys;
+using sim::yaml::with;
 
 namespace {
 
@@ -83,15 +84,8 @@ class SceneReader3 : public Reader3 {
     checkBodyCount(*this, bodies, limits_);
     for (const YAML::Node& b : bodies) s.bodies.push_back(readBody(b, s));
     // forces and events are read alike in 2D and 3D (sim/yaml/force_reader.h) but for the vector
-    const auto readVector = [this](const YAML::Node& v, const std::string& key) { return vec3(v, key); };
-    if (const YAML::Node forces = root["forces"]) {
-      if (!forces.IsSequence()) fail(forces, "'forces' must be a list, got " + describe(forces));
-      for (const YAML::Node& f : forces) sim::yaml::readForce(*this, f, s, readVector);
-    }
-    if (const YAML::Node events = root["events"]) {
-      if (!events.IsSequence()) fail(events, "'events' must be a list, got " + describe(events));
-      for (const YAML::Node& e : events) s.events.push_back(sim::yaml::readEvent(*this, e, s, readVector));
-    }
+    sim::yaml::readForcesAndEvents(*this, root, s,
+                                   [this](const YAML::Node& v, const std::string& key) { return vec3(v, key); });
     if (const YAML::Node expect = root["expect"]) {
       if (!expect.IsSequence()) fail(expect, "'expect' must be a list, got " + describe(expect));
       for (const YAML::Node& e : expect) s.expects.push_back(readExpect(e, s));
@@ -100,11 +94,6 @@ class SceneReader3 : public Reader3 {
   }
 
  private:
-  static Keys with(Keys own, const Keys& others) {
-    own.insert(own.end(), others.begin(), others.end());
-    return own;
-  }
-
   // every key of `map` one of `allowed`; a 2D key among `refused` fails with its reason
   void keys(const YAML::Node& map, const Keys& allowed, const Refusals& refused, const std::string& what) const {
     if (map.IsMap())
