@@ -95,7 +95,8 @@ inline constexpr double kMaxConditionNumber = 1000.0;
 inline constexpr int kSubsteps = 4;
 
 // contact stiffness, Hz, at most a quarter of the substep rate (Box2D v3's contactHertz: 30, and
-// min(contactHertz, 0.25 × substep rate)); contacts with a static body twice as stiff (Solver2D)
+// min(contactHertz, 0.25 × substep rate)); contacts with a static body twice as stiff (Solver2D);
+// a scene may stiffen them (sim: contact_hertz), which the cap lets through only with more substeps
 inline constexpr double kContactHertz = 30.0;
 inline constexpr double kContactHertzPerSubstepRate = 0.25;
 

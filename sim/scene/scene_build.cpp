@@ -32,6 +32,7 @@ World buildWorld(const SceneDef& def) {
   w.velocityIterations = def.velocityIterations;
   w.positionIterations = def.positionIterations;
   w.substeps = def.substeps;
+  w.contactHertz = def.contactHertz;
 
   // body points are written in the shape's coordinates; the body origin moves to the centroid
   std::vector<Vec2> centroid;

@@ -72,6 +72,7 @@ struct SceneDef {
   int velocityIterations = settings::kVelocityIterations;
   int positionIterations = settings::kPositionIterations;
   int substeps = settings::kSubsteps;  // soft_step
+  double contactHertz = settings::kContactHertz;  // soft_step's contact stiffness, Hz
   std::vector<BodyDef> bodies;
   std::vector<PointForceDef> pointForces;
   std::vector<SpringDef> springs;

@@ -1,7 +1,7 @@
 // The `soft_step` method: Box2D v3's solver as Erin Catto describes it ("Solver2D", 2024; Solver2D's
 // solve_soft_step.c, Box2D v3's contact_solver.c and solver.c; written anew here). The step is cut
 // into `substeps`; each integrates the velocities, solves every contact once as a soft constraint
-// (a spring of kContactHertz with damping ratio kContactDampingRatio, relative to the substep, whose
+// (a spring of the scene's contact_hertz, by default kContactHertz, with damping ratio kContactDampingRatio, relative to the substep, whose
 // push-out speed is bounded), integrates the positions, and solves the contacts once more without
 // the push (relax), so that the push does not stay in the bodies as energy. Restitution is applied
 // once after the substeps, from the normal velocity before them. Contacts are found once per step,
@@ -151,7 +151,7 @@ class SoftStepSolver final : public Method {
   void prepare(World& world, double h) {
     const std::vector<Body>& bodies = world.bodies;
     // Box2D v3: contactHertz = min(contactHertz, 0.25 × substep rate); static contacts twice as stiff
-    const double hertz = std::min(settings::kContactHertz, settings::kContactHertzPerSubstepRate / h);
+    const double hertz = std::min(world.contactHertz, settings::kContactHertzPerSubstepRate / h);
     const Softness soft = makeSoft(hertz, settings::kContactDampingRatio, h);
     const Softness staticSoft = makeSoft(2.0 * hertz, settings::kContactDampingRatio, h);
     constraints_.clear();

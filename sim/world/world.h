@@ -77,6 +77,7 @@ class World {
   int velocityIterations = settings::kVelocityIterations;
   int positionIterations = settings::kPositionIterations;
   int substeps = settings::kSubsteps;  // soft_step: substeps per step
+  double contactHertz = settings::kContactHertz;  // soft_step: contact stiffness, Hz (capped per substep)
 
   double time = 0.0;
   long steps = 0;

@@ -47,7 +47,7 @@ class SceneReader : public Reader {
       optional(w, "friction", s.friction, &Reader::nonNegative);
     }
     if (const YAML::Node sim = root["sim"]) {
-      checkKeys(sim, {"integrator", "dt", "collisions", "iterations", "position_iterations", "substeps", "max_steps",
+      checkKeys(sim, {"integrator", "dt", "collisions", "iterations", "position_iterations", "substeps", "contact_hertz", "max_steps",
                       "max_bodies", "max_vertices"},
                 "sim");
       optional(sim, "max_steps", s.maxSteps, &Reader::positive);
@@ -57,6 +57,7 @@ class SceneReader : public Reader {
       if (sim["iterations"]) s.velocityIterations = wholeNumber(sim["iterations"], "iterations", 1, 1000);
       if (sim["position_iterations"]) s.positionIterations = wholeNumber(sim["position_iterations"], "position_iterations", 0, 1000);
       if (sim["substeps"]) s.substeps = wholeNumber(sim["substeps"], "substeps", 1, 1000);
+      optional(sim, "contact_hertz", s.contactHertz, &Reader::positive);
       if (sim["integrator"])
         s.integrator = named(sim["integrator"], "integrator", integratorFromName, kIntegratorNames.list());
       optional(sim, "dt", s.dt, &Reader::positive);

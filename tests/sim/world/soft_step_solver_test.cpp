@@ -134,3 +134,34 @@ TEST_CASE("soft_step: momentum is kept in free-space impacts") {
   MESSAGE("soft_step, random pairs: " << impacts << " impacts");
   CHECK(impacts >= 5);
 }
+
+TEST_CASE("soft_step: a resting contact gives g/ω², ω = 2π · 2 · min(contact_hertz, substep rate / 4) against a static body") {
+  // a ball on the ground: at rest the warm-started impulse m g h per substep is what the soft
+  // constraint's push gives, a3·λ = m·a2·a3·(ω/a1)·s, so the depth s = g/ω² (Catto's soft step)
+  const double pi = std::acos(-1.0);
+  for (const auto& [hertz, substeps] : std::vector<std::pair<double, int>>{{30, 4}, {10, 4}, {1000, 4}, {1000, 8}}) {
+    CAPTURE(hertz);
+    CAPTURE(substeps);
+    const std::string yaml = "world: {gravity: [0, -10], restitution: 0}\n"
+                             "sim: {collisions: soft_step, dt: 0.016666666666666667, substeps: " +
+                             std::to_string(substeps) + ", contact_hertz: " + num(hertz) +
+                             "}\n"
+                             "bodies:\n"
+                             "  - {name: ground, shape: {plane: {point: [0, 0], normal: [0, 1]}}}\n"
+                             "  - {name: ball, shape: {circle: 0.5}, mass: 2, position: [0, 0.5]}\n";
+    sim::world::World w = build(yaml);
+    w.advanceTo(5.0);
+    const double capped = std::min(hertz, 0.25 * 60.0 * substeps);
+    const double omega = 2.0 * pi * 2.0 * capped;
+    CHECK(0.5 - w.bodies[1].x.y() == doctest::Approx(10.0 / (omega * omega)).epsilon(1e-9));
+    CHECK(std::abs(w.bodies[1].v.y()) < 1e-12);
+  }
+}
+
+TEST_CASE("soft_step: contact_hertz is read, positive only") {
+  CHECK(build(std::string(kSettings) + "  - {name: box, shape: {box: [1, 1]}, position: [0, 0.5]}\n").contactHertz == 30.0);
+  const std::string stiff = "sim: {collisions: soft_step, contact_hertz: 120}\nbodies: [{name: a, shape: {circle: 1}}]\n";
+  CHECK(build(stiff).contactHertz == 120.0);
+  CHECK_THROWS_WITH_AS(build("sim: {contact_hertz: 0}\nbodies: [{name: a, shape: {circle: 1}}]\n"),
+                       doctest::Contains("contact_hertz"), std::exception);
+}
