@@ -154,7 +154,7 @@ StabilityResult findBoundary3(const sim::scene3d::SceneDef& def, const Stability
                           // as in 2D: the scene's duration or 1000 steps, whichever is longer
                           m = measureRun3(w, std::max(at.duration, kMinimumSteps * dt));
                           return holds3(m, o);
-                        });
+                        }, Growth::Doubling);
 }
 
 }  // namespace render::analysis

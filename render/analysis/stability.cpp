@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "render/analysis/pyramid_rows.h"
 #include "sim/scene/scene_build.h"
 #include "sim/scene/step_limit.h"
 
@@ -27,6 +28,7 @@ double startValue(const Study& study) {
     }
     case Parameter::MassRatio: return 1.0;
     case Parameter::StackHeight: return 1.0;
+    case Parameter::PyramidBase: return readPyramid(def.bodies).rows->base;
     case Parameter::Iterations: return 1.0;
     case Parameter::Substeps: return 1.0;
   }
@@ -92,6 +94,12 @@ Study withParameter(const Study& study, double value, double phase) {
       def.expects.clear();
       break;
     }
+    case Parameter::PyramidBase: {
+      const PyramidReading pyramid = readPyramid(def.bodies);
+      def.bodies = pyramidOfBase(def.bodies, *pyramid.rows, static_cast<int>(std::lround(value)));
+      def.expects.clear();
+      break;
+    }
     case Parameter::Iterations: def.velocityIterations = static_cast<int>(std::lround(value)); break;
     case Parameter::Substeps: def.substeps = static_cast<int>(std::lround(value)); break;
   }
@@ -108,7 +116,7 @@ bool holdsAt(const Study& study, double value, RunMetrics& metrics) {
 
 StabilityResult findBoundary(const Study& def) {
   const StabilityDef& s = def.stability;
-  const bool integer = s.parameter == Parameter::StackHeight || s.fewest();
+  const bool integer = s.countsBodies() || s.fewest();
   const double phases = s.parameter == Parameter::Speed ? 8.0 : 1.0;
   // every run counts against the scene's max_steps: a scene that fails at every dt would otherwise
   // halve dt 40 times, each run twice as long as the one before
@@ -121,13 +129,16 @@ StabilityResult findBoundary(const Study& def) {
     return holdsAt(def, value, m);
   };
   const double limit = s.to > 0.0 ? s.to : (integer ? 1000.0 : 1e12);
+  // a pyramid's base grows by doubling (its runs cost the square of the base); a stack by one box
+  const Growth growth = s.parameter == Parameter::StackHeight ? Growth::ByOne : Growth::Doubling;
   StabilityResult r = s.fewest() ? searchFewest(startValue(def), limit, run)
-                                 : searchBoundary(startValue(def), limit, integer, run);
+                                 : searchBoundary(startValue(def), limit, integer, run, growth);
   r.steps = spent;
   return r;
 }
 
-StabilityResult searchBoundary(double start, double limit, bool integer, const std::function<bool(double, RunMetrics&)>& holds) {
+StabilityResult searchBoundary(double start, double limit, bool integer, const std::function<bool(double, RunMetrics&)>& holds,
+                               Growth growth) {
   StabilityResult r;
   RunMetrics m;
   double good = start, bad = 0.0;
@@ -148,7 +159,7 @@ StabilityResult searchBoundary(double start, double limit, bool integer, const s
     if (bad == 0.0) {
       double next = good;
       for (int k = 0;; ++k) {
-        next = std::min(integer ? good + 1.0 : 2.0 * good, limit);
+        next = std::min(growth == Growth::ByOne ? good + 1.0 : 2.0 * good, limit);
         if (!holds(next, m)) {
           bad = next, r.failing = m;
           break;

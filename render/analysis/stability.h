@@ -46,7 +46,10 @@ StabilityResult findBoundary(const Study& study);
 // thrown by a search's `holds` when the next run would pass its budget of steps: the search stops
 // there and says what it knows (StabilityResult::budgetSpent)
 struct BudgetSpent {};
-StabilityResult searchBoundary(double start, double limit, bool integer, const std::function<bool(double, RunMetrics&)>& holds);
+// how a search grows a value that holds to find one that fails
+enum class Growth { Doubling, ByOne };
+StabilityResult searchBoundary(double start, double limit, bool integer, const std::function<bool(double, RunMetrics&)>& holds,
+                               Growth growth);
 // the fewest (whole) value from `start` up to `limit` at which `holds`, for a scene that holds with
 // more effort and fails with less: doubling until one holds, then bisecting down to a neighbour that
 // fails

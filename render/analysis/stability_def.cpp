@@ -2,6 +2,7 @@
 
 #include <limits>
 
+#include "render/analysis/pyramid_rows.h"
 #include "sim/yaml/scene_source.h"
 #include "sim/yaml/yaml_reader.h"
 
@@ -24,9 +25,17 @@ StabilityDef readStability(const sim::yaml::SceneSource& source, const sim::scen
     const bool needsBody = d.parameter == Parameter::Speed || d.parameter == Parameter::MassRatio;
     if (needsBody) d.body = r.bodyRef(n, "body", model, "stability with this parameter");
     else if (n["body"]) r.fail(n["body"], "'body' goes with the parameters speed and mass_ratio");
-    // a stack height counts bodies: a whole number, within an int before the search converts it
+    // a pyramid's base is grown from the pyramid the scene lists, which must be one
+    if (d.parameter == Parameter::PyramidBase) {
+      const PyramidReading pyramid = readPyramid(model.bodies);
+      if (!pyramid.rows)
+        r.fail(n["parameter"], "pyramid_base grows the pyramid the scene lists, row by row from the bottom: " +
+                                   pyramid.problem + "; list the boxes that way, or choose stack_height");
+    }
+    // a stack height or a pyramid's base counts bodies: a whole number, within an int before the
+    // search converts it
     const auto bound = [&](const char* key) -> double {
-      if (d.parameter == Parameter::StackHeight) return r.wholeNumber(n[key], key, 1, std::numeric_limits<int>::max());
+      if (d.countsBodies()) return r.wholeNumber(n[key], key, 1, std::numeric_limits<int>::max());
       return r.positive(n[key], key);
     };
     if (n["from"]) d.from = bound("from");
@@ -34,7 +43,7 @@ StabilityDef readStability(const sim::yaml::SceneSource& source, const sim::scen
     if (d.to > 0.0 && d.from > 0.0 && !(d.to > d.from)) r.fail(n["to"], "'to' must be larger than 'from'");
     if (n["stack"]) d.stack = r.boolean(n["stack"], "stack");
     if (n["within"]) d.within = r.positive(n["within"], "within");
-    if (d.parameter == Parameter::StackHeight) d.stack = true;
+    if (d.countsBodies() && !n["stack"]) d.stack = true;
     return d;
   });
 }

@@ -19,7 +19,7 @@ inline constexpr const char* kStabilityKey = "stability";
 // the parameter the search grows for the largest value at which the scene still holds; for the
 // solver's effort (sequential's iterations, soft_step's substeps) the fewest at which it holds
 struct StabilityDef {
-  enum class Parameter { Dt, Speed, MassRatio, StackHeight, Iterations, Substeps };
+  enum class Parameter { Dt, Speed, MassRatio, StackHeight, PyramidBase, Iterations, Substeps };
   Parameter parameter = Parameter::Dt;
   std::string body;    // speed: whose speed; mass_ratio: whose mass and inertia are scaled
   double from = 0.0;   // where the search starts (0: from the scene's own value)
@@ -30,6 +30,8 @@ struct StabilityDef {
   double within = 0.0;
   // the search looks for the fewest iterations or substeps that hold, not the largest value
   bool fewest() const { return parameter == Parameter::Iterations || parameter == Parameter::Substeps; }
+  // the parameter counts bodies: whole numbers, and the stack criterion by default
+  bool countsBodies() const { return parameter == Parameter::StackHeight || parameter == Parameter::PyramidBase; }
 };
 
 // a scene as `rigidreel stability` reads it: the model and its stability: block
@@ -39,11 +41,12 @@ struct Study {
 };
 
 // the parameters as scenes name them
-inline constexpr sim::core::EnumNames<StabilityDef::Parameter, 6> kParameterNames{{{
+inline constexpr sim::core::EnumNames<StabilityDef::Parameter, 7> kParameterNames{{{
     {StabilityDef::Parameter::Dt, "dt"},
     {StabilityDef::Parameter::Speed, "speed"},
     {StabilityDef::Parameter::MassRatio, "mass_ratio"},
     {StabilityDef::Parameter::StackHeight, "stack_height"},
+    {StabilityDef::Parameter::PyramidBase, "pyramid_base"},
     {StabilityDef::Parameter::Iterations, "iterations"},
     {StabilityDef::Parameter::Substeps, "substeps"},
 }}};

@@ -1,6 +1,7 @@
 // `rigidreel stability`: for each method, the largest step (or speed, mass ratio, stack height, as
 // the scene's `stability:` block declares) at which the scene still holds, and how it fails beyond.
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 
@@ -66,7 +67,7 @@ int stability(const StabilityOptions& o) {
   chart.yLabel = (fewest ? std::string("fewest ") : std::string("largest stable ")) + parameter;
   chart.bars = true;
   chart.barValues = true;
-  chart.logY = study.stability.parameter != StabilityDef::Parameter::StackHeight;
+  chart.logY = !study.stability.countsBodies();
   // a method that held up to the search's limit has no boundary found: its bar is a lower bound;
   // for the fewest iterations, a method that failed up to the limit needs more than its bar
   ChartSeries bars{chart.yLabel, {}};
@@ -87,6 +88,15 @@ int stability(const StabilityOptions& o) {
       const double value = fewest && r.failsEverywhere ? r.firstFailing : r.largestStable;
       (open ? bounds : bars).points.emplace_back(x, value > 0.0 ? value : NAN);
     }
+  // when every method fails at every value tried there is nothing to draw on a log axis: draw the
+  // zeros on a linear one (gnuplot refuses a chart without a valid point)
+  const auto drawn = [](const ChartSeries& s) {
+    return std::any_of(s.points.begin(), s.points.end(), [](const auto& p) { return std::isfinite(p.second); });
+  };
+  if (!drawn(bars) && !drawn(bounds)) {
+    chart.logY = false;
+    for (auto& p : bars.points) p.second = 0.0;
+  }
   chart.series.push_back(bars);
   if (!bounds.points.empty()) chart.series.push_back(bounds);
   writeChart(chart, base + ".png");

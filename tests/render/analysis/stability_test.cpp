@@ -195,3 +195,50 @@ TEST_CASE("substeps: soft_step needs more than one substep for a 10-box column, 
   CHECK(r.firstFailing == r.largestStable - 1.0);
   CHECK(said.find("; holds from " + std::to_string(static_cast<int>(r.largestStable))) != std::string::npos);
 }
+
+TEST_CASE("pyramid_base grows the listed pyramid: sequential holds Box2D's pyramid to the limit, isolated does not") {
+  // base 3, touching rows, Box2D's benchmark settings; the search grows it by doubling up to 12
+  std::string yaml = R"(
+duration: 3
+world: {gravity: [0, -10], friction: 0.6, restitution: 0}
+sim: {dt: 0.016666666666666667, iterations: 8, position_iterations: 3}
+stability: {parameter: pyramid_base, to: 12}
+bodies:
+  - {name: ground, shape: {box: [80, 1]}, static: true, position: [0, -0.5]}
+)";
+  for (int row = 0; row < 3; ++row)
+    for (int k = 0; k < 3 - row; ++k)
+      yaml += "  - {name: p" + std::to_string(row) + std::to_string(k) + ", shape: {box: [1, 1]}, position: [" +
+              std::to_string(1.125 * k + 0.5625 * row) + ", " + std::to_string(0.5 + row) + "]}\n";
+  render::analysis::Study def = study(yaml);
+  CHECK(def.stability.stack);
+  def.model.collisions = sim::world::CollisionMethod::Sequential;
+  const render::analysis::StabilityResult held = render::analysis::findBoundary(def);
+  MESSAGE(render::analysis::describeFailure(def, held));
+  CHECK(held.holdsToLimit);
+  CHECK(held.largestStable == 12.0);
+  // a base-12 pyramid is 78 boxes, the largest run of the search
+  CHECK(render::analysis::withParameter(def, 12.0).model.bodies.size() == 1 + 78);
+  def.model.collisions = sim::world::CollisionMethod::Isolated;
+  const render::analysis::StabilityResult isolated = render::analysis::findBoundary(def);
+  MESSAGE(render::analysis::describeFailure(def, isolated));
+  CHECK(isolated.largestStable < 3.0);
+}
+
+TEST_CASE("pyramid_base on bodies that are not a pyramid is refused at the stability block's line") {
+  const std::string yaml = R"(bodies:
+  - {name: a, shape: {box: [1, 1]}}
+  - {name: b, shape: {box: [1, 1]}, position: [0, 1]}
+stability: {parameter: pyramid_base}
+)";
+  try {
+    study(yaml);
+    FAIL("expected a SceneError");
+  } catch (const sim::yaml::SceneError& e) {
+    const std::string what = e.what();
+    MESSAGE(what);
+    CHECK(what.find("inline.yaml:4:") != std::string::npos);
+    CHECK(what.find("pyramid_base") != std::string::npos);
+    CHECK(what.find("choose stack_height") != std::string::npos);
+  }
+}

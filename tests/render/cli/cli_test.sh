@@ -311,6 +311,15 @@ else
   not_ok "sweep --stack writes a row per iteration and substep count, and the chart" "$(ls sw 2>&1)"
 fi
 expect "sweep --substeps with a bad count exits 2" 2 err "--substeps: expected whole numbers" sweep "$STACK" --stack --substeps 2,0 -o sw
+# every method failing at every value still gets its CSV and chart (gnuplot refused an empty log axis)
+expect "stability where every method fails everywhere still writes its files" 0 out "fails at every value tried" \
+  stability "$SCENES/pyramid.yaml" --integrators symplectic_euler --collisions isolated -o st_fail
+if [ "$(tail -n 1 st_fail/pyramid-stability.csv 2>/dev/null)" = "symplectic_euler,isolated,pyramid_base,0,1,not at rest" ] &&
+   [ -s st_fail/pyramid-stability.png ]; then
+  ok "a pyramid_base search that fails everywhere writes its row and chart"
+else
+  not_ok "a pyramid_base search that fails everywhere writes its row and chart" "$(ls st_fail 2>&1)"
+fi
 printf 'bodies: [{name: a, shape: {circle: 1}}]\nstability: {parameter: iterations, within: -1}\n' > bad_within.yaml
 expect "a stability block with a negative 'within' exits 2 naming it" 2 err "bad_within.yaml:2:" stability bad_within.yaml -o st
 if compgen -G "sw/*.part-*" >/dev/null || compgen -G "st/*.part-*" >/dev/null; then
