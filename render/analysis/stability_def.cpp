@@ -4,6 +4,7 @@
 
 #include "render/analysis/pyramid_rows.h"
 #include "sim/yaml/scene_source.h"
+#include "sim/yaml/size_limits.h"
 #include "sim/yaml/yaml_reader.h"
 
 namespace render::analysis {
@@ -26,8 +27,8 @@ StabilityDef readStability(const sim::yaml::SceneSource& source, const sim::scen
     if (needsBody) d.body = r.bodyRef(n, "body", model, "stability with this parameter");
     else if (n["body"]) r.fail(n["body"], "'body' goes with the parameters speed and mass_ratio");
     // a pyramid's base is grown from the pyramid the scene lists, which must be one
+    const PyramidReading pyramid = d.parameter == Parameter::PyramidBase ? readPyramid(model.bodies) : PyramidReading{};
     if (d.parameter == Parameter::PyramidBase) {
-      const PyramidReading pyramid = readPyramid(model.bodies);
       if (!pyramid.rows)
         r.fail(n["parameter"], "pyramid_base grows the pyramid the scene lists, row by row from the bottom: " +
                                    pyramid.problem + "; list the boxes that way, or choose stack_height");
@@ -41,6 +42,26 @@ StabilityDef readStability(const sim::yaml::SceneSource& source, const sim::scen
     if (n["from"]) d.from = bound("from");
     if (n["to"]) d.to = bound("to");
     if (d.to > 0.0 && d.from > 0.0 && !(d.to > d.from)) r.fail(n["to"], "'to' must be larger than 'from'");
+    // a grown pyramid is a scene of its own: it keeps to the scene's bodies limit (a base of 446
+    // is 99,681 boxes, under the default 100,000), before any run allocates it
+    if (d.parameter == Parameter::PyramidBase) {
+      sim::yaml::SizeLimits limits;
+      if (source.root["sim"]) sim::yaml::readSizeLimits(r, source.root["sim"], limits);
+      const int base = pyramid.rows->base;
+      const double statics = static_cast<double>(model.bodies.size()) - base * (base + 1.0) / 2.0;
+      double largest = 0.0;
+      while ((largest + 1.0) * (largest + 2.0) / 2.0 + statics <= limits.maxBodies) ++largest;
+      if (d.to > largest)
+        r.fail(n["to"], "a pyramid of base " + std::to_string(static_cast<long>(d.to)) + " has more bodies than the limit of " +
+                            std::to_string(limits.maxBodies) + " (the largest base within it: " +
+                            std::to_string(static_cast<long>(largest)) + "); lower 'to' or raise the limit with 'sim: {max_bodies: N}'");
+      if (d.from > largest) r.fail(n["from"], "'from' is past the largest base within the bodies limit, " + std::to_string(static_cast<long>(largest)));
+      if (d.to == 0.0) d.to = std::min(largest, 1000.0);
+      // the search starts at the listed base unless told otherwise
+      if (d.from == 0.0 && d.to <= base)
+        r.fail(n["to"] ? n["to"] : n, "the search starts at the listed pyramid's base, " + std::to_string(base) +
+                                          "; give a larger 'to', or a 'from' below it");
+    }
     if (n["stack"]) d.stack = r.boolean(n["stack"], "stack");
     if (n["within"]) d.within = r.positive(n["within"], "within");
     if (d.countsBodies() && !n["stack"]) d.stack = true;

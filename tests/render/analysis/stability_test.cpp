@@ -242,3 +242,28 @@ stability: {parameter: pyramid_base}
     CHECK(what.find("choose stack_height") != std::string::npos);
   }
 }
+
+TEST_CASE("pyramid_base keeps to the scene's bodies limit before any run, and starts below its 'to'") {
+  std::string pyramid = "bodies:\n  - {name: ground, shape: {box: [80, 1]}, static: true, position: [0, -0.5]}\n";
+  for (int row = 0; row < 3; ++row)
+    for (int k = 0; k < 3 - row; ++k)
+      pyramid += "  - {name: p" + std::to_string(row) + std::to_string(k) + ", shape: {box: [1, 1]}, position: [" +
+                 std::to_string(1.125 * k + 0.5625 * row) + ", " + std::to_string(0.5 + row) + "]}\n";
+  const auto refused = [&](const std::string& block, const std::string& said) {
+    try {
+      study(pyramid + block);
+      FAIL("expected a SceneError for: " << block);
+    } catch (const sim::yaml::SceneError& e) {
+      MESSAGE(e.what());
+      CHECK(std::string(e.what()).find(said) != std::string::npos);
+    }
+  };
+  // the ground and a pyramid of base 5 are 16 bodies: a limit of 15 takes base 4 at most
+  refused("sim: {max_bodies: 15}\nstability: {parameter: pyramid_base, to: 5}\n", "the largest base within it: 4");
+  refused("stability: {parameter: pyramid_base, to: 447}\n", "more bodies than the limit of 100000");
+  refused("stability: {parameter: pyramid_base, to: 3}\n", "starts at the listed pyramid's base, 3");
+  // without 'to': the largest base the limit allows
+  CHECK(study(pyramid + "sim: {max_bodies: 15}\nstability: {parameter: pyramid_base}\n").stability.to == 4.0);
+  CHECK(study(pyramid + "sim: {max_bodies: 16}\nstability: {parameter: pyramid_base}\n").stability.to == 5.0);
+  CHECK(study(pyramid + "stability: {parameter: pyramid_base}\n").stability.to == 446.0);
+}
