@@ -5,7 +5,6 @@
 #include <limits>
 #include <string>
 
-#include "sim/collision/broad_phase.h"
 
 namespace sim::world {
 using namespace sim::core;
@@ -75,9 +74,9 @@ void World::findContacts(double margin, std::vector<Contact>& found) const {
     boxes[i] = box;
     fixed[i] = b.isStatic;
   }
-  const std::vector<std::pair<int, int>> pairs = overlappingPairs(boxes, fixed);
+  pairCache_.find(boxes, fixed, pairs_);
   found.clear();
-  for (const auto& [i, j] : pairs) {
+  for (const auto& [i, j] : pairs_) {
     const Body &a = bodies[i], &b = bodies[j];
     Contact c;
     c.a = i, c.b = j;
