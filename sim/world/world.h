@@ -131,7 +131,8 @@ class World {
   // the broad phase's candidate pairs, kept from one findContacts to the next (the pairs found
   // do not depend on them)
   mutable PairCache pairCache_;
-  mutable std::vector<std::pair<int, int>> pairs_;  // scratch of findContacts
+  mutable std::vector<std::pair<int, int>> pairs_;  // scratch of findContacts: the pairs,
+  mutable std::vector<PlacedShape> placed_;         // and the bodies' shapes where they are
   mutable std::vector<Vec2> force_;    // scratch of rates()
   mutable std::vector<double> torque_;
 };
