@@ -88,6 +88,7 @@ struct SolverContact {
   Vec2 n = Vec2::UnitY();
   double friction = 0.0;
   NormalBlock K;
+  double inverse11 = 0.0, inverse12 = 0.0, inverse22 = 0.0;  // K⁻¹, for the block solver
   SolverPoint p[2];
 };
 
@@ -130,6 +131,10 @@ void buildConstraint(const Contact& c, const Body& a, const Body& b, SolverConta
                       1.0 / s.p[1].normalMass);
     // an ill-conditioned pair (the two points nearly one) is left to the point-by-point sweep
     s.block = s.K.k11 * s.K.k11 < settings::kMaxConditionNumber * s.K.det;
+    // K⁻¹ once per step, so that the loops multiply where they divided (Box2D 2.4's
+    // normalMass = K.GetInverse(); results change at round-off)
+    const double inverseDet = 1.0 / s.K.det;
+    s.inverse11 = inverseDet * s.K.k22, s.inverse12 = -inverseDet * s.K.k12, s.inverse22 = inverseDet * s.K.k11;
   }
 }
 
@@ -171,11 +176,13 @@ bool solveNormalBlock(std::vector<VelocityBody>& bodies, SolverContact& c) {
   const double b1 = n.dot(relativeVelocityAt(a, b, s1)) - s1.bias - (k11 * x1Old + k12 * x2Old);
   const double b2 = n.dot(relativeVelocityAt(a, b, s2)) - s2.bias - (k12 * x1Old + k22 * x2Old);
   double x1 = 0.0, x2 = 0.0;
-  if (const Vec2 both = c.K.solve(-b1, -b2); both.x() >= 0.0 && both.y() >= 0.0) {
-    x1 = both.x(), x2 = both.y();  // both points push
-  } else if (const double z1 = -b1 / k11; z1 >= 0.0 && k12 * z1 + b2 >= 0.0) {
+  // x = −K⁻¹ b', and for one point alone x_i = −b'_i / K_ii, with the inverses prepared (Box2D 2.4)
+  const double y1 = -(c.inverse11 * b1 + c.inverse12 * b2), y2 = -(c.inverse12 * b1 + c.inverse22 * b2);
+  if (y1 >= 0.0 && y2 >= 0.0) {
+    x1 = y1, x2 = y2;  // both points push
+  } else if (const double z1 = -s1.normalMass * b1; z1 >= 0.0 && k12 * z1 + b2 >= 0.0) {
     x1 = z1;  // only the first
-  } else if (const double z2 = -b2 / k22; z2 >= 0.0 && k12 * z2 + b1 >= 0.0) {
+  } else if (const double z2 = -s2.normalMass * b2; z2 >= 0.0 && k12 * z2 + b1 >= 0.0) {
     x2 = z2;  // only the second
   } else if (!(b1 >= 0.0 && b2 >= 0.0)) {
     return false;  // no case fits (round-off): fall back to the sweep
