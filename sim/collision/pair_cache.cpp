@@ -14,6 +14,9 @@ namespace {
 // against every box; the grid costs about as much as a hundred of those)
 constexpr size_t kMaxPlacedAlone = 64;
 
+// while boxes scatter, the grid pairs them for at most this many calls before they are placed again
+constexpr int kMaxGridCalls = 32;
+
 Aabb enlarge(const Aabb& box, double by) { return {box.lower - Vec2::Constant(by), box.upper + Vec2::Constant(by)}; }
 
 bool contains(const Aabb& outer, const Aabb& inner) {
@@ -34,13 +37,33 @@ void PairCache::find(const std::vector<Aabb>& boxes, const std::vector<bool>& fi
   // a box is placed anew when it left its enlarged box, or when that is much larger than it (a
   // call with a wider margin than the next): a NaN box always
   constexpr double e = settings::kBroadPhaseExtension;
+  if (gridCalls_ > 0) {
+    --gridCalls_;
+    pairs = overlappingPairs(boxes, fixed);
+    return;
+  }
   moved_.clear();
   if (enlarged_.size() == n)
     for (size_t i = 0; i < n; ++i)
       if (!contains(enlarged_[i], boxes[i]) || !contains(enlarge(boxes[i], 2.0 * e), enlarged_[i]))
         moved_.push_back(static_cast<int>(i));
-  if (enlarged_.size() != n || moved_.size() > kMaxPlacedAlone) placeAll(boxes, fixed);
-  else if (!moved_.empty()) placeMoved(boxes, fixed);
+  if (enlarged_.size() == n && moved_.size() > kMaxPlacedAlone) {
+    // many boxes left their enlarged ones since the last call (a pile scattering): placing them all
+    // anew would cost a grid every call and gain nothing, so the grid pairs the boxes themselves
+    // for the next calls, twice as many each time this happens again (Box2D has no such case: its
+    // tree moves each box alone)
+    enlarged_.clear();
+    gridCalls_ = gridCallsNext_;
+    gridCallsNext_ = std::min(2 * gridCallsNext_, kMaxGridCalls);
+    pairs = overlappingPairs(boxes, fixed);
+    return;
+  }
+  if (enlarged_.size() != n) {
+    placeAll(boxes, fixed);
+  } else {
+    gridCallsNext_ = 1;
+    if (!moved_.empty()) placeMoved(boxes, fixed);
+  }
   // the candidates that overlap now, each pair once (at its lower index) and in order
   pairs.clear();
   for (size_t ii = 0; ii < n; ++ii) {
