@@ -12,21 +12,18 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
+// a polygon in world coordinates: a placed shape's vertices and outward edge normals
 struct WorldPolygon {
-  std::vector<Vec2> v, n;  // vertices and outward edge normals in world coordinates
-  size_t size() const { return v.size(); }
+  const Vec2* v;
+  const Vec2* n;
+  size_t count;
+  explicit WorldPolygon(const PlacedShape& s) : v(s.vertices.data()), n(s.normals.data()), count(s.vertices.size()) {}
+  size_t size() const { return count; }
 };
 
-// the polygon in world coordinates, into `w`'s storage: the callers keep one per thread, so that a
-// pile's thousands of pairs a step allocate nothing
-const WorldPolygon& inWorld(const Shape& s, const Pose& p, WorldPolygon& w) {
-  w.v.clear();
-  w.n.clear();
-  for (const Vec2& v : s.vertices) w.v.push_back(p.toWorld(v));
-  for (const Vec2& n : s.normals) w.n.push_back(p.q.apply(n));
-  return w;
-}
-thread_local WorldPolygon scratchA, scratchB;
+// shapes placed for one call of the shape-and-pose functions: the callers keep one pair per
+// thread, so that their pairs allocate nothing
+thread_local PlacedShape scratchA, scratchB;
 
 // separation(P → Q) of the notes, with the edge of P and the vertex of Q that attain it
 struct EdgeSeparation {
@@ -122,8 +119,8 @@ void clipToReference(const WorldPolygon& A, const WorldPolygon& B, const EdgeSep
 }
 
 // polygon against polygon: SAT picks the reference edge, the incident edge is clipped to its sides
-Manifold polygons(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, double margin) {
-  const WorldPolygon &A = inWorld(a, pa, scratchA), &B = inWorld(b, pb, scratchB);
+Manifold polygons(const PlacedShape& a, const PlacedShape& b, double margin) {
+  const WorldPolygon A(a), B(b);
   const EdgeSeparation ea = maxSeparation(A, B), eb = maxSeparation(B, A);
   Manifold m;
   // the notes' separation(P, Q) and its features, exactly as on the slide
@@ -173,19 +170,19 @@ Manifold single(const Vec2& normal, const Vec2& point, double separation, std::u
 }
 
 // out of circle b toward circle a
-Manifold circles(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, double margin) {
-  const Vec2 d = pa.x - pb.x;
+Manifold circles(const PlacedShape& a, const PlacedShape& b, double margin) {
+  const Vec2 d = a.pose.x - b.pose.x;
   const double distance = d.norm();
   const Vec2 n = distance > 0.0 ? Vec2(d / distance) : Vec2(Vec2::UnitY());
-  const double s = distance - a.radius - b.radius;
-  return single(n, pb.x + (b.radius + 0.5 * s) * n, s, 0, margin);
+  const double s = distance - a.shape->radius - b.shape->radius;
+  return single(n, b.pose.x + (b.shape->radius + 0.5 * s) * n, s, 0, margin);
 }
 
 // out of polygon p toward circle c (Box2D's b2CollidePolygonAndCircle: face or vertex region)
-Manifold polygonCircle(const Shape& p, const Pose& pp, const Shape& c, const Pose& pc, double margin) {
-  const WorldPolygon& P = inWorld(p, pp, scratchA);
-  const Vec2 center = pc.x;
-  const double r = c.radius;
+Manifold polygonCircle(const PlacedShape& p, const PlacedShape& c, double margin) {
+  const WorldPolygon P(p);
+  const Vec2 center = c.pose.x;
+  const double r = c.shape->radius;
   int edge = 0;
   double face = -kInf;
   for (size_t i = 0; i < P.size(); ++i) {
@@ -211,7 +208,9 @@ Manifold polygonCircle(const Shape& p, const Pose& pp, const Shape& c, const Pos
 }
 
 // out of the plane toward the other shape: the vertices (at most two) deepest below the margin
-Manifold planeShape(const Shape& plane, const Pose& pp, const Shape& o, const Pose& po, double margin) {
+Manifold planeShape(const PlacedShape& placedPlane, const PlacedShape& placed, double margin) {
+  const Shape &plane = *placedPlane.shape, &o = *placed.shape;
+  const Pose &pp = placedPlane.pose, &po = placed.pose;
   const Vec2 n = pp.q.apply(plane.planeNormal);
   if (o.kind == ShapeKind::Circle) {
     const double s = n.dot(po.x - pp.x) - o.radius;
@@ -222,10 +221,9 @@ Manifold planeShape(const Shape& plane, const Pose& pp, const Shape& o, const Po
   m.separation = kInf;
   if (o.kind != ShapeKind::Polygon) return m;
   int first = -1, second = -1;
-  std::vector<double> s(o.vertices.size());
-  std::vector<Vec2> v(o.vertices.size());
+  const std::vector<Vec2>& v = placed.vertices;
+  std::vector<double> s(v.size());
   for (size_t k = 0; k < v.size(); ++k) {
-    v[k] = po.toWorld(o.vertices[k]);
     s[k] = n.dot(v[k] - pp.x);
     if (first < 0 || s[k] < s[first]) second = first, first = static_cast<int>(k);
     else if (second < 0 || s[k] < s[second]) second = static_cast<int>(k);
@@ -243,36 +241,61 @@ Manifold flipped(Manifold m) {
 
 }  // namespace
 
+void place(const Shape& shape, const Pose& pose, PlacedShape& out) {
+  out.shape = &shape;
+  out.pose = pose;
+  out.vertices.clear();
+  out.normals.clear();
+  if (shape.kind != ShapeKind::Polygon) return;
+  for (const Vec2& v : shape.vertices) out.vertices.push_back(pose.toWorld(v));
+  for (const Vec2& n : shape.normals) out.normals.push_back(pose.q.apply(n));
+}
+
 SatFeatures sat(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb) {
   if (a.kind != ShapeKind::Polygon || b.kind != ShapeKind::Polygon) return {};
-  const WorldPolygon &A = inWorld(a, pa, scratchA), &B = inWorld(b, pb, scratchB);
+  place(a, pa, scratchA);
+  place(b, pb, scratchB);
+  const WorldPolygon A(scratchA), B(scratchB);
   const EdgeSeparation ea = maxSeparation(A, B), eb = maxSeparation(B, A);
   const bool onA = ea.separation >= eb.separation;
   return {true, onA ? ea.separation : eb.separation, onA, onA ? ea.edge : eb.edge, onA ? ea.vertex : eb.vertex};
 }
 
 Manifold collide(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, double margin) {
+  place(a, pa, scratchA);
+  place(b, pb, scratchB);
+  return collide(scratchA, scratchB, margin);
+}
+
+Manifold collide(const PlacedShape& pa, const PlacedShape& pb, double margin) {
   using K = ShapeKind;
+  const Shape &a = *pa.shape, &b = *pb.shape;
   // each pair function's normal points out of its first shape; ours points out of B
-  if (a.kind == K::Polygon && b.kind == K::Polygon) return polygons(a, pa, b, pb, margin);
-  if (a.kind == K::Circle && b.kind == K::Circle) return circles(a, pa, b, pb, margin);
-  if (b.kind == K::Plane && a.kind != K::Plane) return planeShape(b, pb, a, pa, margin);
-  if (a.kind == K::Plane && b.kind != K::Plane) return flipped(planeShape(a, pa, b, pb, margin));
-  if (b.kind == K::Polygon && a.kind == K::Circle) return polygonCircle(b, pb, a, pa, margin);
-  if (a.kind == K::Polygon && b.kind == K::Circle) return flipped(polygonCircle(a, pa, b, pb, margin));
+  if (a.kind == K::Polygon && b.kind == K::Polygon) return polygons(pa, pb, margin);
+  if (a.kind == K::Circle && b.kind == K::Circle) return circles(pa, pb, margin);
+  if (b.kind == K::Plane && a.kind != K::Plane) return planeShape(pb, pa, margin);
+  if (a.kind == K::Plane && b.kind != K::Plane) return flipped(planeShape(pa, pb, margin));
+  if (b.kind == K::Polygon && a.kind == K::Circle) return polygonCircle(pb, pa, margin);
+  if (a.kind == K::Polygon && b.kind == K::Circle) return flipped(polygonCircle(pa, pb, margin));
   Manifold none;  // two planes never touch: both are static
   none.separation = kInf;
   return none;
 }
 
 Aabb bounds(const Shape& shape, const Pose& pose) {
+  place(shape, pose, scratchA);
+  return bounds(scratchA);
+}
+
+Aabb bounds(const PlacedShape& placed) {
+  const Shape& shape = *placed.shape;
+  const Pose& pose = placed.pose;
   switch (shape.kind) {
     case ShapeKind::Circle:
       return {pose.x - Vec2::Constant(shape.radius), pose.x + Vec2::Constant(shape.radius)};
     case ShapeKind::Polygon: {
       Aabb box{Vec2::Constant(kInf), Vec2::Constant(-kInf)};
-      for (const Vec2& v : shape.vertices) {
-        const Vec2 w = pose.toWorld(v);
+      for (const Vec2& w : placed.vertices) {
         box.lower = box.lower.cwiseMin(w);
         box.upper = box.upper.cwiseMax(w);
       }

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "sim/core/math.h"
 #include "sim/core/shape.h"
@@ -47,8 +48,20 @@ struct Manifold {
 // a positive separation is a gap, so the polygons overlap when the separation is NEGATIVE.
 SatFeatures sat(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb);
 
+// a shape where its body is: a polygon's vertices and edge normals in world coordinates, computed
+// once for its bounds and every pair it is in (a box in a pile is in four)
+struct PlacedShape {
+  const Shape* shape = nullptr;
+  Pose pose;
+  std::vector<Vec2> vertices, normals;  // polygons only
+};
+// `shape` at `pose`, into `out` (its storage reused)
+void place(const Shape& shape, const Pose& pose, PlacedShape& out);
+
 // the contact manifold of two shapes; points are kept while their separation is at most `margin`
 Manifold collide(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, double margin);
+// the same of two placed shapes (the same numbers: the shapes are placed the same way)
+Manifold collide(const PlacedShape& a, const PlacedShape& b, double margin);
 
 // axis-aligned bounds of a shape in a pose (a plane is unbounded)
 struct Aabb {
@@ -58,5 +71,6 @@ struct Aabb {
   }
 };
 Aabb bounds(const Shape& shape, const Pose& pose);
+Aabb bounds(const PlacedShape& placed);
 
 }  // namespace sim::collision

@@ -55,6 +55,10 @@ namespace sim::core::settings {
 // so resting contacts do not flicker in and out from step to step
 inline constexpr double kContactMargin = 0.01;
 
+// the broad phase keeps each body's bounds enlarged by this, m, and pairs it anew only when it
+// leaves them, so a pile at rest is not paired from scratch every step (Box2D's b2_aabbExtension)
+inline constexpr double kBroadPhaseExtension = 0.1;
+
 // a polygon pair keeps A's edge as the reference unless B's separates by more than this, m, so the
 // manifold does not flip between two edges on near ties from step to step (Box2D's
 // b2CollidePolygons: 0.1 × linear slop, 0.5 mm)

@@ -26,32 +26,25 @@ bool gapMayClose(const ContactPointState& s, double separation) {
   return s.normalImpulse == 0.0 || separation > settings::kLinearSlop;
 }
 
-// effective masses, anchors and the velocity each contact must reach
-void prepareContacts(World& world, double h, std::vector<Pose>& poses) {
-  const std::vector<Body>& bodies = world.bodies;
-  // each body's pose once (one sine and cosine), for every contact it is in
-  poses.resize(bodies.size());
-  for (size_t i = 0; i < bodies.size(); ++i) poses[i] = bodies[i].pose();
-  for (Contact& c : world.contacts) {
-    const Body &a = bodies[c.a], &b = bodies[c.b];
-    const Vec2 n = c.manifold.normal, t = tangentOf(n);
-    for (int k = 0; k < c.manifold.count; ++k) {
-      ContactPointState& s = c.state[k];
-      const ManifoldPoint& p = c.manifold.points[k];
-      s.normalMass = 1.0 / inverseEffectiveMass(a, b, p.point, n);
-      s.tangentMass = 1.0 / inverseEffectiveMass(a, b, p.point, t);
-      s.anchorA = poses[c.a].toBody(p.point);
-      s.anchorB = poses[c.b].toBody(p.point);
-      const double vn = s.vnBefore = n.dot(relativeVelocity(a, b, p.point));
-      // restitution from the velocity before the solve, for contacts that close within the step
-      // and arrive fast enough; slower ones settle; a gap may close but not be overrun
-      if (vn < -settings::kRestitutionThreshold && p.separation + h * vn < 0.0)
-        s.bias = -c.restitution * vn;
-      else if (p.separation > 0.0 && gapMayClose(s, p.separation))
-        s.bias = -p.separation / h;
-      else
-        s.bias = 0.0;
-    }
+// a contact's effective masses, anchors and the velocity each of its points must reach
+void prepareStates(Contact& c, const Body& a, const Body& b, const Pose& poseA, const Pose& poseB, double h) {
+  const Vec2 n = c.manifold.normal, t = tangentOf(n);
+  for (int k = 0; k < c.manifold.count; ++k) {
+    ContactPointState& s = c.state[k];
+    const ManifoldPoint& p = c.manifold.points[k];
+    s.normalMass = 1.0 / inverseEffectiveMass(a, b, p.point, n);
+    s.tangentMass = 1.0 / inverseEffectiveMass(a, b, p.point, t);
+    s.anchorA = poseA.toBody(p.point);
+    s.anchorB = poseB.toBody(p.point);
+    const double vn = s.vnBefore = n.dot(relativeVelocity(a, b, p.point));
+    // restitution from the velocity before the solve, for contacts that close within the step
+    // and arrive fast enough; slower ones settle; a gap may close but not be overrun
+    if (vn < -settings::kRestitutionThreshold && p.separation + h * vn < 0.0)
+      s.bias = -c.restitution * vn;
+    else if (p.separation > 0.0 && gapMayClose(s, p.separation))
+      s.bias = -p.separation / h;
+    else
+      s.bias = 0.0;
   }
 }
 
@@ -95,6 +88,7 @@ struct SolverContact {
   Vec2 n = Vec2::UnitY();
   double friction = 0.0;
   NormalBlock K;
+  double inverse11 = 0.0, inverse12 = 0.0, inverse22 = 0.0;  // K⁻¹, for the block solver
   SolverPoint p[2];
 };
 
@@ -117,34 +111,48 @@ void applyAt(VelocityBody& a, VelocityBody& b, const SolverPoint& p, const Vec2&
   b.omega -= b.invInertia * cross(p.rB, j);
 }
 
-// the flat constraints of the step's contacts (prepareContacts has filled their states)
-void buildConstraints(const World& world, std::vector<SolverContact>& out, std::vector<PositionPoint>& anchors) {
+// a contact's flat constraint, from its prepared states
+void buildConstraint(const Contact& c, const Body& a, const Body& b, SolverContact& s, PositionPoint anchors[2]) {
+  s.a = c.a, s.b = c.b, s.count = c.manifold.count;
+  s.n = c.manifold.normal;
+  s.friction = c.friction;
+  for (int k = 0; k < s.count; ++k) {
+    const ContactPointState& st = c.state[k];
+    const ManifoldPoint& mp = c.manifold.points[k];
+    SolverPoint& p = s.p[k];
+    p.rA = mp.point - a.x, p.rB = mp.point - b.x;
+    p.normalMass = st.normalMass, p.tangentMass = st.tangentMass, p.bias = st.bias;
+    p.normalImpulse = st.normalImpulse, p.tangentImpulse = st.tangentImpulse;
+    anchors[k] = {st.anchorA, st.anchorB, mp.separation};
+  }
+  s.block = false;
+  if (s.count == 2) {
+    s.K = normalBlock(a, b, c.manifold.points[0].point, c.manifold.points[1].point, s.n, 1.0 / s.p[0].normalMass,
+                      1.0 / s.p[1].normalMass);
+    // an ill-conditioned pair (the two points nearly one) is left to the point-by-point sweep
+    s.block = s.K.k11 * s.K.k11 < settings::kMaxConditionNumber * s.K.det;
+    // K⁻¹ once per step, so that the loops multiply where they divided (Box2D 2.4's
+    // normalMass = K.GetInverse(); results change at round-off)
+    const double inverseDet = 1.0 / s.K.det;
+    s.inverse11 = inverseDet * s.K.k22, s.inverse12 = -inverseDet * s.K.k12, s.inverse22 = inverseDet * s.K.k11;
+  }
+}
+
+// every contact prepared and its flat constraint built, in one pass (each contact is read once);
+// at the step's start, where the constraints' positions and impulses are those the loops begin from
+void prepareContacts(World& world, double h, std::vector<Pose>& poses, std::vector<SolverContact>& out,
+                     std::vector<PositionPoint>& anchors) {
   const std::vector<Body>& bodies = world.bodies;
+  // each body's pose once (one sine and cosine), for every contact it is in
+  poses.resize(bodies.size());
+  for (size_t i = 0; i < bodies.size(); ++i) poses[i] = bodies[i].pose();
   out.resize(world.contacts.size());
   anchors.resize(2 * world.contacts.size());
   for (size_t i = 0; i < world.contacts.size(); ++i) {
-    const Contact& c = world.contacts[i];
+    Contact& c = world.contacts[i];
     const Body &a = bodies[c.a], &b = bodies[c.b];
-    SolverContact& s = out[i];
-    s.a = c.a, s.b = c.b, s.count = c.manifold.count;
-    s.n = c.manifold.normal;
-    s.friction = c.friction;
-    for (int k = 0; k < s.count; ++k) {
-      const ContactPointState& st = c.state[k];
-      const ManifoldPoint& mp = c.manifold.points[k];
-      SolverPoint& p = s.p[k];
-      p.rA = mp.point - a.x, p.rB = mp.point - b.x;
-      p.normalMass = st.normalMass, p.tangentMass = st.tangentMass, p.bias = st.bias;
-      p.normalImpulse = st.normalImpulse, p.tangentImpulse = st.tangentImpulse;
-      anchors[2 * i + k] = {st.anchorA, st.anchorB, mp.separation};
-    }
-    s.block = false;
-    if (s.count == 2) {
-      s.K = normalBlock(a, b, c.manifold.points[0].point, c.manifold.points[1].point, s.n, 1.0 / s.p[0].normalMass,
-                        1.0 / s.p[1].normalMass);
-      // an ill-conditioned pair (the two points nearly one) is left to the point-by-point sweep
-      s.block = s.K.k11 * s.K.k11 < settings::kMaxConditionNumber * s.K.det;
-    }
+    prepareStates(c, a, b, poses[c.a], poses[c.b], h);
+    buildConstraint(c, a, b, out[i], &anchors[2 * i]);
   }
 }
 
@@ -168,11 +176,13 @@ bool solveNormalBlock(std::vector<VelocityBody>& bodies, SolverContact& c) {
   const double b1 = n.dot(relativeVelocityAt(a, b, s1)) - s1.bias - (k11 * x1Old + k12 * x2Old);
   const double b2 = n.dot(relativeVelocityAt(a, b, s2)) - s2.bias - (k12 * x1Old + k22 * x2Old);
   double x1 = 0.0, x2 = 0.0;
-  if (const Vec2 both = c.K.solve(-b1, -b2); both.x() >= 0.0 && both.y() >= 0.0) {
-    x1 = both.x(), x2 = both.y();  // both points push
-  } else if (const double z1 = -b1 / k11; z1 >= 0.0 && k12 * z1 + b2 >= 0.0) {
+  // x = −K⁻¹ b', and for one point alone x_i = −b'_i / K_ii, with the inverses prepared (Box2D 2.4)
+  const double y1 = -(c.inverse11 * b1 + c.inverse12 * b2), y2 = -(c.inverse12 * b1 + c.inverse22 * b2);
+  if (y1 >= 0.0 && y2 >= 0.0) {
+    x1 = y1, x2 = y2;  // both points push
+  } else if (const double z1 = -s1.normalMass * b1; z1 >= 0.0 && k12 * z1 + b2 >= 0.0) {
     x1 = z1;  // only the first
-  } else if (const double z2 = -b2 / k22; z2 >= 0.0 && k12 * z2 + b1 >= 0.0) {
+  } else if (const double z2 = -s2.normalMass * b2; z2 >= 0.0 && k12 * z2 + b1 >= 0.0) {
     x2 = z2;  // only the second
   } else if (!(b1 >= 0.0 && b2 >= 0.0)) {
     return false;  // no case fits (round-off): fall back to the sweep
@@ -265,30 +275,26 @@ class SequentialSolver final : public Method {
  public:
   std::unique_ptr<Method> clone() const override { return std::make_unique<SequentialSolver>(*this); }
 
-  // the contacts where the bodies are now, carrying over last step's impulses (warm starting)
+  // the contacts where the bodies are now, carrying over last step's impulses (warm starting),
+  // prepared for the loops
   void beginStep(World& world, const TimeStep& step) override {
     world.findContacts(settings::kContactMargin, fresh_);
     matchWarmStart(world.contacts, fresh_);
     std::swap(world.contacts, fresh_);
-    prepareContacts(world, step.h, poses_);
+    prepareContacts(world, step.h, poses_, constraints_, anchors_);
   }
 
-  // move freely, remembering where the step began and where the free motion ends
+  // move freely, remembering where the free motion ends
   bool move(World& world, const TimeStep& step) override {
-    before_ = world.states();
     moveFreely(world, step);
     free_ = world.states();
     return false;
   }
 
-  // the contacts solved on the free velocities from where the step began, then the positions
+  // the contacts, prepared where the step began, solved on the free velocities; then the
+  // positions from the free motion's, with the velocities the contacts changed
   void resolveCollisions(World& world, const TimeStep& step) override {
     std::vector<Body>& bodies = world.bodies;
-    for (size_t i = 0; i < bodies.size(); ++i) {
-      bodies[i].x = before_[i].x;
-      bodies[i].angle = before_[i].angle;
-    }
-    buildConstraints(world, constraints_, anchors_);
     velocities_.resize(bodies.size());
     for (size_t i = 0; i < bodies.size(); ++i)
       velocities_[i] = {bodies[i].v, bodies[i].omega, bodies[i].invMass, bodies[i].invInertia};
@@ -327,7 +333,7 @@ class SequentialSolver final : public Method {
       }
   }
 
-  States before_, free_;  // the states where the step began and where the free motion ended
+  States free_;  // the states where the free motion ended
   // scratch of the solver loops, kept from step to step so that a step allocates nothing
   std::vector<SolverContact> constraints_;
   std::vector<PositionPoint> anchors_;  // two per contact

@@ -5,7 +5,6 @@
 #include <limits>
 #include <string>
 
-#include "sim/collision/broad_phase.h"
 
 namespace sim::world {
 using namespace sim::core;
@@ -62,30 +61,31 @@ std::vector<Contact> World::findContacts(double margin) const {
 }
 
 void World::findContacts(double margin, std::vector<Contact>& found) const {
-  // each body's pose once (one sine and cosine), for its bounds and every pair it is in
-  std::vector<Pose> poses(bodies.size());
+  // each body placed once (one sine and cosine, its vertices in the world), for its bounds and
+  // every pair it is in
+  placed_.resize(bodies.size());
   std::vector<Aabb> boxes(bodies.size());
   std::vector<bool> fixed(bodies.size());
   for (size_t i = 0; i < bodies.size(); ++i) {
     const Body& b = bodies[i];
-    poses[i] = b.pose();
-    Aabb box = bounds(b.shape, poses[i]);
+    place(b.shape, b.pose(), placed_[i]);
+    Aabb box = bounds(placed_[i]);
     box.lower -= Vec2::Constant(margin);
     box.upper += Vec2::Constant(margin);
     boxes[i] = box;
     fixed[i] = b.isStatic;
   }
-  const std::vector<std::pair<int, int>> pairs = overlappingPairs(boxes, fixed);
+  pairCache_.find(boxes, fixed, pairs_);
   found.clear();
-  for (const auto& [i, j] : pairs) {
+  for (const auto& [i, j] : pairs_) {
     const Body &a = bodies[i], &b = bodies[j];
-    Contact c;
+    const Manifold m = collide(placed_[i], placed_[j], margin);
+    if (m.count == 0) continue;
+    Contact& c = found.emplace_back();
     c.a = i, c.b = j;
-    c.manifold = collide(a.shape, poses[i], b.shape, poses[j], margin);
-    if (c.manifold.count == 0) continue;
+    c.manifold = m;
     c.restitution = combinedRestitution(a.restitution, b.restitution);
     c.friction = combinedFriction(a.friction, b.friction);
-    found.push_back(c);
   }
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/collision/pair_cache.h"
 #include "sim/core/body.h"
 #include "sim/core/forces.h"
 #include "sim/core/integrators.h"
@@ -128,6 +129,11 @@ class World {
   OwnedMethod method_;                 // the unit of `collisions`, made by start()
   bool mayStackUp_ = false;            // `auto` chose event: a stack forming switches to sequential
   States stepStart_;                   // the states where the step began, to redo it on a switch
+  // the broad phase's candidate pairs, kept from one findContacts to the next (the pairs found
+  // do not depend on them)
+  mutable PairCache pairCache_;
+  mutable std::vector<std::pair<int, int>> pairs_;  // scratch of findContacts: the pairs,
+  mutable std::vector<PlacedShape> placed_;         // and the bodies' shapes where they are
   mutable std::vector<Vec2> force_;    // scratch of rates()
   mutable std::vector<double> torque_;
 };
