@@ -60,6 +60,17 @@ struct PackScene {
   std::optional<RenderPlan3> plan3;
 
   std::vector<std::string> paths() const { return plan3 ? plan3->paths() : plan->paths(); }
+  // what rendering it costs, roughly: the pixels of its frames and stills (0 when it diverged)
+  double pixels() const {
+    double sum = 0.0;
+    const auto add = [&](const auto& plan) {
+      for (const auto& v : plan.videos) sum += static_cast<double>(v.frameCount) * v.width * v.height;
+      if (plan.stills) sum += static_cast<double>(plan.stills->shots.size() * plan.variants.size()) * plan.stills->width * plan.stills->height;
+    };
+    if (plan3) add(*plan3);
+    if (plan) add(*plan);
+    return sum;
+  }
 };
 
 double since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
@@ -199,13 +210,18 @@ int lecture(const LectureCommand& o) {
     results.push_back(runHere(scenes.front(), o.output));
   } else {
     parallel = std::min(static_cast<size_t>(o.jobs), scenes.size());
+    // the scenes with the most pixels to draw and encode first (job_runner.h)
+    std::vector<double> pixels;
+    for (const PackScene& scene : scenes) pixels.push_back(scene.pixels());
+    const std::vector<size_t> order = largestFirst(pixels);
     std::vector<std::vector<std::string>> commands;
-    for (const PackScene& scene : scenes) commands.push_back(jobCommand(o, scene.file));
+    for (size_t i : order) commands.push_back(jobCommand(o, scenes[i].file));
     results.resize(scenes.size());
     size_t finished = 0;
     runJobs(commands, parallel, [&](const JobResult& job) {
-      SceneResult& r = results[job.job];
-      r = {scenes[job.job].name, scenes[job.job].file, succeeded(job), wroteLines(job.output), job.seconds, {}};
+      const size_t i = order[job.job];
+      SceneResult& r = results[i];
+      r = {scenes[i].name, scenes[i].file, succeeded(job), wroteLines(job.output), job.seconds, {}};
       r.message = job.errors.empty() ? describeStatus(job.status) : job.errors;
       ++finished;
       const std::string counter = "[" + std::to_string(finished) + "/" + std::to_string(scenes.size()) + "] ";

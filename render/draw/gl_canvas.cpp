@@ -35,6 +35,13 @@ void GlCanvas::start(const Camera& camera, bool clear) {
   // frame has drawing the canvas did not see
   bounded_ = clear;
   drawn_ = Bounds();
+  under_.reset();
+  moving_ = Bounds();
+  inStatic_ = clear, staticLate_ = false, staticDrew_ = false;
+  key_.clear();
+  // the static part is drawn through this camera, over this background
+  keyed({camera.center().x(), camera.center().y(), camera.pixelSize(), static_cast<double>(camera.widthPx()),
+         static_cast<double>(camera.heightPx()), style_.background.r, style_.background.g, style_.background.b});
   camera_ = camera;
   px_ = camera.pixelSize();
   texts_.clear();
@@ -46,11 +53,9 @@ void GlCanvas::start(const Camera& camera, bool clear) {
   glEnable(GL_STENCIL_TEST);
   glStencilMask(0xff);
   stencil_ = -1;  // unknown: the first primitive sets the stencil state
-  const Color& bg = style_.background;
-  glClearColor(static_cast<float>(bg.r), static_cast<float>(bg.g), static_cast<float>(bg.b), 1.0f);
   // the color only (an overlay keeps what is drawn): each primitive's stencil value is one no pixel
   // holds (GlContext::freshStencil)
-  if (clear) glClear(GL_COLOR_BUFFER_BIT);
+  if (clear) gl_.clearFrame(style_.background, false);
   // world units, y up, centered on the camera: vertices are sent relative to the center, so that
   // single-precision GL keeps its digits for what is on screen
   glMatrixMode(GL_PROJECTION);
@@ -67,12 +72,34 @@ Image GlCanvas::finish() {
   return image;
 }
 
+void GlCanvas::enter(Role role) {
+  const bool isStatic = role == Role::StaticBody;
+  if (!bounded_ || isStatic == inStatic_) return;
+  if (isStatic) {
+    staticLate_ = true;
+    return;
+  }
+  inStatic_ = false;
+  gl_.endStaticPart(std::move(key_));
+  key_.clear();
+}
+
 void GlCanvas::finish(Image& image) {
-  if (bounded_) {
+  const auto inPixels = [&](const Bounds& world) {
     Bounds pixels;
-    if (!drawn_.empty()) pixels.add(camera_.toPixel(drawn_.min)), pixels.add(camera_.toPixel(drawn_.max));
+    if (!world.empty()) pixels.add(camera_.toPixel(world.min)), pixels.add(camera_.toPixel(world.max));
+    return pixels;
+  };
+  if (bounded_) {
+    gl_.drawnWithin(inPixels(drawn_));
+    if (inStatic_) enter(Role::Body);
+    if (!staticLate_ && staticDrew_) gl_.movingWithin(inPixels(moving_));
+  } else if (under_) {
+    Bounds pixels = inPixels(drawn_);
+    pixels.add(*under_);
     gl_.drawnWithin(pixels);
   }
+  under_.reset();
   gl_.read(image);
   // a halo of the background around each letter, a tenth of the size: legible over any line
   const int halo = std::max(1, style_.fontSize / 10);
@@ -111,6 +138,7 @@ double GlCanvas::strokeWidth(Role role) const { return info(role).width * style_
 
 void GlCanvas::polygon(const std::vector<Vec2>& vertices, const Pen& s) {
   if (vertices.empty()) return;
+  enter(s.role);
   // bars and panels are areas without an outline
   if (info(s.role).area) {
     beginPrimitive(fillColor(s), s.opacity);
@@ -132,6 +160,7 @@ void GlCanvas::polygon(const std::vector<Vec2>& vertices, const Pen& s) {
 }
 
 void GlCanvas::circle(const Vec2& center, double radius, const Pen& s) {
+  enter(s.role);
   const bool solid = s.role == Role::Body || s.role == Role::StaticBody;
   if (solid) {
     beginPrimitive(fillColor(s), s.opacity, s.role == Role::StaticBody);
@@ -149,6 +178,7 @@ void GlCanvas::circle(const Vec2& center, double radius, const Pen& s) {
 
 void GlCanvas::halfPlane(const Vec2& point, const Vec2& normal, const Pen& s) {
   if (!(normal.norm() > 0.0)) return;
+  enter(s.role);
   const Vec2 n = normal.normalized(), t = perpendicular(n);
   const Bounds view = camera_.view();
   // the boundary point nearest the view's center, and a length that reaches past every corner
@@ -163,11 +193,13 @@ void GlCanvas::halfPlane(const Vec2& point, const Vec2& normal, const Pen& s) {
 }
 
 void GlCanvas::segment(const Vec2& a, const Vec2& b, const Pen& s) {
+  enter(s.role);
   beginPrimitive(strokeColor(s), s.opacity);
   strokeSegment(a, b, strokeWidth(s.role));
 }
 
 void GlCanvas::point(const Vec2& p, const Pen& s) {
+  enter(s.role);
   const double w = style_.lineWidth;
   switch (s.role) {
     case Role::IncidentVertex:
@@ -189,6 +221,7 @@ void GlCanvas::point(const Vec2& p, const Pen& s) {
 }
 
 void GlCanvas::arrow(const Vec2& tail, const Vec2& head, const Pen& s) {
+  enter(s.role);
   beginPrimitive(strokeColor(s), s.opacity);
   strokeArrow(tail, head, strokeWidth(s.role));
 }
@@ -208,6 +241,7 @@ void GlCanvas::label(const Vec2& anchor, const Vec2& direction, const std::strin
 
 void GlCanvas::beginPrimitive(const Color& c, double opacity, bool marks) {
   const double alpha = c.a * std::clamp(opacity, 0.0, 1.0);
+  keyed({c.r, c.g, c.b, alpha, marks ? 1.0 : 0.0});
   glColor4d(c.r, c.g, c.b, alpha);
   if (alpha >= 1.0 && !marks) {
     // opaque: overlaps do not show, so no stencil, and no state change between primitives, which
@@ -227,12 +261,20 @@ void GlCanvas::beginPrimitive(const Color& c, double opacity, bool marks) {
 
 void GlCanvas::vertex(const Vec2& world) {
   drawn_.add(world);
+  if (!inStatic_) moving_.add(world);
+  else staticDrew_ = true;
   const Vec2& c = camera_.center();
+  keyed({world.x() - c.x(), world.y() - c.y()});
   glVertex2d(world.x() - c.x(), world.y() - c.y());
 }
 
+void GlCanvas::shape(unsigned mode) {
+  keyed({-1.0, static_cast<double>(mode)});
+  glBegin(mode);
+}
+
 void GlCanvas::fillConvex(const std::vector<Vec2>& vertices) {
-  glBegin(GL_TRIANGLE_FAN);
+  shape(GL_TRIANGLE_FAN);
   for (const Vec2& v : vertices) vertex(v);
   glEnd();
 }
@@ -248,7 +290,7 @@ int GlCanvas::discSegments(double radius) const {
 
 void GlCanvas::fillDisc(const Vec2& center, double radius) {
   const int n = discSegments(radius);
-  glBegin(GL_TRIANGLE_FAN);
+  shape(GL_TRIANGLE_FAN);
   vertex(center);
   for (int i = 0; i <= n; ++i) {
     const double a = 2.0 * std::numbers::pi * i / n;
@@ -261,7 +303,7 @@ void GlCanvas::ring(const Vec2& center, double radius, double width) {
   const double half = 0.5 * width * px_;
   const double inner = std::max(0.0, radius - half), outer = radius + half;
   const int n = discSegments(outer);
-  glBegin(GL_TRIANGLE_STRIP);
+  shape(GL_TRIANGLE_STRIP);
   for (int i = 0; i <= n; ++i) {
     const Vec2 u(std::cos(2.0 * std::numbers::pi * i / n), std::sin(2.0 * std::numbers::pi * i / n));
     vertex(center + outer * u);
@@ -307,6 +349,7 @@ void GlCanvas::hatch(const Bounds& area, const Color& c, double opacity) {
   // only over the pixels the primitive just drawn has marked in the stencil
   glStencilFunc(GL_EQUAL, stencil_, 0xff);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  keyed({-2.0, c.r, c.g, c.b, c.a * std::clamp(opacity * 0.8, 0.0, 1.0)});
   glColor4d(c.r, c.g, c.b, c.a * std::clamp(opacity * 0.8, 0.0, 1.0));
   // lines rising at 45°, fixed in the world so that they do not crawl when the view changes
   const Vec2 along = Vec2(1.0, 1.0).normalized(), across = perpendicular(along);

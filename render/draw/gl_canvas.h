@@ -9,6 +9,7 @@
 // Mesa can batch them.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,9 @@ class GlCanvas final : public Canvas {
   void begin(const Camera& camera);
   // draw over what the frame holds already (a 3D frame's solids), through `camera`
   void beginOverlay(const Camera& camera);
+  // an overlay's frame: what was drawn under it lies within `pixels` (output pixels, as
+  // GlContext::drawnWithin), so that the frame is bounded by that and the overlay's own drawing
+  void drawnUnder(const Bounds& pixels) { under_ = pixels; }
   // the frame, with the queued text on top
   Image finish();
   // the same into `frame`, whose storage is reused when it has the frame's size already
@@ -51,9 +55,21 @@ class GlCanvas final : public Canvas {
     Color color;
   };
   void start(const Camera& camera, bool clear);
-  // whether this canvas began the frame (not an overlay), and the world points it has drawn
+  // a call in `role` begins: the static part (static bodies, drawn first) ends at the first other
+  // role that draws with GL (GlContext::endStaticPart)
+  void enter(Role role);
+  // whether this canvas began the frame (not an overlay), and the world points it has drawn, all
+  // and those after the static part
   bool bounded_ = false;
-  Bounds drawn_;
+  Bounds drawn_, moving_;
+  std::optional<Bounds> under_;  // an overlay's: what drawnUnder() said
+  // the frame's static part: still being drawn, every value its GL calls took (its key), and whether
+  // a static body came after it ended (then the frame has no static part to keep)
+  bool inStatic_ = false, staticLate_ = false, staticDrew_ = false;
+  std::vector<double> key_;
+  void keyed(std::initializer_list<double> values) {
+    if (inStatic_) key_.insert(key_.end(), values);
+  }
   // colors of a role: a fill (for shapes) and a stroke
   Color fillColor(const Pen& s) const;
   Color strokeColor(const Pen& s) const;
@@ -64,6 +80,8 @@ class GlCanvas final : public Canvas {
   // translucent one, or one that `marks` its pixels (for hatching), under a fresh stencil value
   void beginPrimitive(const Color& c, double opacity, bool marks = false);
   void vertex(const Vec2& world);
+  // glBegin(mode), the mode in the static part's key
+  void shape(unsigned mode);
   void fillConvex(const std::vector<Vec2>& vertices);
   void fillDisc(const Vec2& center, double radius);
   void ring(const Vec2& center, double radius, double width);

@@ -79,7 +79,8 @@ GlContext::GlContext(int width, int height, Antialiasing aa) : width_(width), he
     OSMesaDestroyContext(context_);
     throw std::runtime_error("OSMesa cannot draw frames of " + std::to_string(w) + "×" + std::to_string(h));
   }
-  list_ = glGenLists(1);
+  lists_[0] = glGenLists(2);
+  lists_[1] = lists_[0] + 1;
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glPixelStorei(kPackInvert, 1);
   glViewport(0, 0, w, h);
@@ -89,7 +90,7 @@ GlContext::GlContext(int width, int height, Antialiasing aa) : width_(width), he
 GlContext::~GlContext() {
   makeCurrent();
   if (recording_) glEndList();
-  glDeleteLists(list_, 1);
+  glDeleteLists(lists_[0], 2);
   glDeleteFramebuffers(1, &framebuffer_);
   glDeleteRenderbuffers(2, renderbuffers_);
   OSMesaDestroyContext(context_);
@@ -118,16 +119,102 @@ void GlContext::beginFrame() {
   // each drawing of the frame starts from a cleared stencil (read()), so its values count from 1
   lastStencil_ = 0;
   drawnWithin_.reset();
-  glNewList(list_, GL_COMPILE);
+  movingWithin_.reset();
+  key_.clear();
+  part_ = 0;
+  staticStencil_ = false;
+  clears_ = clearsDepth_ = false;
+  glNewList(lists_[0], GL_COMPILE);
   recording_ = true;
 }
 
 void GlContext::drawnWithin(const Bounds& pixels) { drawnWithin_ = pixels; }
 
+void GlContext::clearFrame(const Color& background, bool depth) {
+  clears_ = true;
+  clearsDepth_ = depth;
+  clearColor_ = {static_cast<float>(background.r), static_cast<float>(background.g), static_cast<float>(background.b), 1.0f};
+}
+
+void GlContext::endStaticPart(std::vector<double> key) {
+  if (!recording_ || part_ != 0) return;
+  glEndList();
+  key_ = std::move(key);
+  staticStencil_ = lastStencil_ > 0;
+  part_ = 1;
+  glNewList(lists_[1], GL_COMPILE);
+}
+
+void GlContext::movingWithin(const Bounds& pixels) { movingWithin_ = pixels; }
+
 Image GlContext::read() {
   Image frame;
   read(frame);
   return frame;
+}
+
+GlContext::Region GlContext::regionOf(const Bounds& b) const {
+  const int w = width_ * aa_.supersample, h = height_ * aa_.supersample;
+  // what the canvas said, widened by two pixels for the shift and the rounding (clamped as doubles
+  // first: a half-plane's vertices lie far outside the frame)
+  const auto pixel = [&](double v, double size) { return static_cast<int>(std::clamp(v * aa_.supersample, -4.0, size + 4.0)); };
+  Region r;
+  if (b.empty()) return r;
+  r.x0 = std::clamp(pixel(std::floor(b.min.x()), w) - 2, 0, w);
+  r.x1 = std::clamp(pixel(std::ceil(b.max.x()), w) + 2, r.x0, w);
+  r.y0 = std::clamp(h - pixel(std::ceil(b.max.y()), h) - 2, 0, h);
+  r.y1 = std::clamp(h - pixel(std::floor(b.min.y()), h) + 2, r.y0, h);
+  return r;
+}
+
+void GlContext::resolveRegion(uint8_t* frame, int parts, const Region& region, bool firstWhole, bool stencil) {
+  const int w = width_ * aa_.supersample, h = height_ * aa_.supersample;
+  const int bw = region.x1 - region.x0, bh = region.y1 - region.y0;
+  const int drawings = region.empty() ? 1 : aa_.samples;
+  for (int k = 0; k < drawings; ++k) {
+    // the pixel centers (x + 0.5, y + 0.5) onto the sample positions: the drawing shifted by their
+    // difference, a multiple of 1/8 px, which GL's 1/256 px vertex grid keeps exact
+    const std::array<float, 2> at = drawings > 1 ? kSamplePositions[static_cast<size_t>(k)] : std::array{0.5f, 0.5f};
+    glViewportIndexedf(0, 0.5f - at[0], 0.5f - at[1], static_cast<float>(w), static_cast<float>(h));
+    // the frame's clears first, of the whole frame: llvmpipe clears whole tiles at memory speed,
+    // while under a scissor Mesa clears by drawing a quad through the fragment shader (a profile of
+    // a 3D render found the drawings' shader time 6 times larger with the clears scissored)
+    GLbitfield clear = stencil ? kStencilClear : 0;
+    if (clears_) {
+      glClearColor(clearColor_[0], clearColor_[1], clearColor_[2], clearColor_[3]);
+      clear |= GL_COLOR_BUFFER_BIT | (clearsDepth_ ? kStencilClear : 0);
+    }
+    if (clear & kStencilClear) {
+      glStencilMask(0xff);
+      glClearStencil(0);
+      glClearDepth(1.0);
+      glDepthMask(GL_TRUE);
+    }
+    if (clear) glClear(clear);
+    // after the first, only where the frame differs from the background (or from the static part)
+    const bool whole = k == 0 && firstWhole;
+    if (!whole) {
+      glEnable(GL_SCISSOR_TEST);
+      glScissor(region.x0, region.y0, bw, bh);
+    }
+    for (int p = 0; p < parts; ++p) glCallList(lists_[p]);
+    glDisable(GL_SCISSOR_TEST);
+    if (whole) {
+      glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, frame);
+    } else {
+      samples_[k].resize(static_cast<size_t>(bw) * bh * 4);
+      glReadPixels(region.x0, region.y0, bw, bh, GL_RGBA, GL_UNSIGNED_BYTE, samples_[k].data());
+    }
+  }
+  if (drawings == 1) return;
+  // rows top first: the region's top row is the frame's row h − y1
+  const size_t row = static_cast<size_t>(bw) * 4;
+  for (int r = 0; r < bh; ++r) {
+    uint8_t* at = frame + (static_cast<size_t>(h - region.y1 + r) * w + region.x0) * 4;
+    const uint8_t* first = firstWhole ? at : samples_[0].data() + r * row;
+    resolveSamples({first, samples_[1].data() + r * row, samples_[2].data() + r * row, samples_[3].data() + r * row}, at,
+                   row);
+  }
 }
 
 void GlContext::read(Image& frame) {
@@ -144,69 +231,51 @@ void GlContext::read(Image& frame) {
     drawn_.resize(bytes);
     first = drawn_.data();
   }
-  // drawn at once (no beginFrame): what the framebuffer holds is the frame, at the pixel centers
   const bool recorded = recording_;
-  if (recorded) glEndList();
-  recording_ = false;
-  // where the drawings at the other positions may differ from the first, in GL's window
-  // coordinates (y up): what the canvas said, widened by two pixels for the shift and the rounding,
-  // or the whole frame
-  int x0 = 0, y0 = 0, x1 = w, y1 = h;
-  if (drawnWithin_) {
-    const Bounds& b = *drawnWithin_;
-    // (clamped as doubles first: a half-plane's vertices lie far outside the frame)
-    const auto pixel = [&](double v, double size) { return static_cast<int>(std::clamp(v * aa_.supersample, -4.0, size + 4.0)); };
-    x0 = x1 = y0 = y1 = 0;
-    if (!b.empty()) {
-      x0 = std::clamp(pixel(std::floor(b.min.x()), w) - 2, 0, w);
-      x1 = std::clamp(pixel(std::ceil(b.max.x()), w) + 2, x0, w);
-      y0 = std::clamp(h - pixel(std::ceil(b.max.y()), h) - 2, 0, h);
-      y1 = std::clamp(h - pixel(std::floor(b.min.y()), h) + 2, y0, h);
-    }
+  if (recorded) {
+    glEndList();
+    // a frame without a static part said: all of it in the first list, the second empty
+    if (part_ == 0) glNewList(lists_[1], GL_COMPILE), glEndList();
   }
-  const int bw = x1 - x0, bh = y1 - y0;
-  const int drawings = !recorded ? 1 : bw > 0 && bh > 0 ? aa_.samples : 1;
+  recording_ = false;
   // a frame that marks no pixels in the stencil (opaque shapes only) needs no cleared stencil
   const bool stencil = lastStencil_ > 0;
-  for (int k = 0; k < drawings; ++k) {
-    if (recorded) {
-      // the pixel centers (x + 0.5, y + 0.5) onto the sample positions: the drawing shifted by their
-      // difference, a multiple of 1/8 px, which GL's 1/256 px vertex grid keeps exact
-      const std::array<float, 2> at = drawings > 1 ? kSamplePositions[static_cast<size_t>(k)] : std::array{0.5f, 0.5f};
-      glViewportIndexedf(0, 0.5f - at[0], 0.5f - at[1], static_cast<float>(w), static_cast<float>(h));
-      // after the first, only where the frame differs from the background
-      if (k > 0) {
-        glEnable(GL_SCISSOR_TEST);
-        glScissor(x0, y0, bw, bh);
+  if (!recorded) {
+    // drawn at once (no beginFrame): what the framebuffer holds is the frame, at the pixel centers
+    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, first);
+  } else if (part_ == 1 && movingWithin_ && drawnWithin_ && aa_.samples > 1) {
+    // The static part's frame is kept once two frames in a row have the same static part. Outside
+    // the moving part's region only the static part draws, at every sample position, so the pixels
+    // there are the kept frame's; inside it the whole frame is drawn at the four positions, as
+    // everywhere before (a pixel's value does not depend on the scissor). Byte for byte the frame
+    // the four whole drawings make.
+    if (kept_.size() != bytes || keptKey_ != key_) {
+      if (lastKey_ == key_) {
+        kept_.resize(bytes);
+        resolveRegion(kept_.data(), 1, regionOf(*drawnWithin_), true, staticStencil_);
+        keptKey_ = key_;
+      } else {
+        kept_.clear();
+        keptKey_.clear();
       }
-      if (stencil) {
-        glStencilMask(0xff);
-        glClearStencil(0);
-        glDepthMask(GL_TRUE);
-        glClear(kStencilClear);
-      }
-      glCallList(list_);
-      glDisable(GL_SCISSOR_TEST);
     }
-    if (k == 0) {
-      glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, first);
+    lastKey_ = key_;
+    if (!kept_.empty()) {
+      std::memcpy(first, kept_.data(), bytes);
+      const Region moving = regionOf(*movingWithin_);
+      if (!moving.empty()) resolveRegion(first, 2, moving, false, stencil);
     } else {
-      samples_[k - 1].resize(static_cast<size_t>(bw) * bh * 4);
-      glReadPixels(x0, y0, bw, bh, GL_RGBA, GL_UNSIGNED_BYTE, samples_[k - 1].data());
+      resolveRegion(first, 2, regionOf(*drawnWithin_), true, stencil);
     }
+  } else {
+    // where the drawings at the other positions may differ from the first: what the canvas said,
+    // or the whole frame
+    const Region all = drawnWithin_ ? regionOf(*drawnWithin_) : Region{0, 0, w, h};
+    resolveRegion(first, 2, all, true, stencil);
   }
   // a skipped clear left older frames' values in the stencil: a primitive drawn at once (not
   // recorded) clears it before taking a value
   if (!stencil) lastStencil_ = 255;
-  if (drawings > 1) {
-    // rows top first: the region's top row is the frame's row h − y1
-    const size_t row = static_cast<size_t>(bw) * 4;
-    for (int r = 0; r < bh; ++r) {
-      uint8_t* at = first + (static_cast<size_t>(h - y1 + r) * w + x0) * 4;
-      resolveSamples({at, samples_[0].data() + r * row, samples_[1].data() + r * row, samples_[2].data() + r * row}, at,
-                     row);
-    }
-  }
   if (aa_.supersample == 1) return;
   Image drawn;
   drawn.width = w;

@@ -42,11 +42,21 @@ class GlContext {
   // a frame begins: the GL calls until read() are recorded (a display list), to be drawn once per
   // sample; a canvas calls this before its first GL call of a frame
   void beginFrame();
+  // the frame starts cleared to `background` (with `depth`, its depth and stencil too): cleared by
+  // read() before each drawing, never under a scissor (see gl_context.cpp)
+  void clearFrame(const Color& background, bool depth);
   // what the frame recorded since beginFrame() draws lies within `pixels` (output pixels, x to the
   // right, y down from the top-left corner; empty: nothing but the background). Outside it every
   // sample is the background, so the drawings at the other sample positions are limited to it.
   // Unsaid, the whole frame is drawn at each position.
   void drawnWithin(const Bounds& pixels);
+  // what the frame recorded so far is its static part (drawn first, and the same from frame to frame:
+  // the ground and its hatching), `key` every value its GL calls took; what follows is recorded apart
+  void endStaticPart(std::vector<double> key);
+  // what the frame recorded after its static part draws lies within `pixels` (as drawnWithin). Said,
+  // a frame whose static part's key is the last frame's is the static part's frame, drawn and
+  // resolved once and kept, with only the region of `pixels` drawn at the four positions over it
+  void movingWithin(const Bounds& pixels);
   // draw the recorded frame at each sample position, resolve the samples and return the frame at the
   // output size, top row first
   Image read();
@@ -63,15 +73,37 @@ class GlContext {
   osmesa_context* context_ = nullptr;
   std::vector<uint8_t> buffer_;  // OSMesa's own color buffer, never drawn into (the framebuffer object is)
   unsigned framebuffer_ = 0, renderbuffers_[2] = {0, 0};
-  unsigned list_ = 0;       // the display list of the frame being drawn
+  // the display lists of the frame being drawn: its static part, then the rest
+  unsigned lists_[2] = {0, 0};
+  int part_ = 0;            // the list being recorded
   bool recording_ = false;  // between beginFrame() and read()
   std::optional<Bounds> drawnWithin_;  // what drawnWithin() said of the frame being drawn
-  // the drawings at the other sample positions, and the supersampled frame, reused from frame to frame
-  std::array<std::vector<uint8_t>, 3> samples_;
+  std::optional<Bounds> movingWithin_;  // what movingWithin() said of it
+  // the static part's key this frame, the last frame's, and the key of the kept static frame
+  std::vector<double> key_, lastKey_, keptKey_;
+  bool staticStencil_ = false;  // whether the static part marks pixels in the stencil
+  // what clearFrame() said of the frame being drawn
+  bool clears_ = false, clearsDepth_ = false;
+  std::array<float, 4> clearColor_{};
+  std::vector<uint8_t> kept_;   // the static part's frame, resolved
+  // the drawings at the sample positions (of a region), and the supersampled frame, reused from
+  // frame to frame
+  std::array<std::vector<uint8_t>, 4> samples_;
   std::vector<uint8_t> drawn_;
   int lastStencil_ = 0;  // the last value given out since the stencil was cleared
   // the stencil (and depth) cleared, every value free again
   void clearStencil();
+  // a pixel region in GL's window coordinates (y up)
+  struct Region {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    bool empty() const { return x1 <= x0 || y1 <= y0; }
+  };
+  // the region of the frame that output pixels `b` may touch at any sample position
+  Region regionOf(const Bounds& b) const;
+  // the recorded lists up to `parts` drawn at the four sample positions and resolved into `frame`
+  // (top row first) within `region`; with `firstWhole`, the first drawing is the whole frame and
+  // read into `frame` (outside the region every sample is alike), else only the region is drawn
+  void resolveRegion(uint8_t* frame, int parts, const Region& region, bool firstWhole, bool stencil);
 };
 
 }  // namespace render::draw

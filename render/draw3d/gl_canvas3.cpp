@@ -19,8 +19,6 @@ constexpr double kFillLighten = 0.35, kEdgeDarken = 0.55;
 // outline widths in line widths: creases and the silhouette, and the thinner surface curves
 constexpr double kEdgeWidth = 0.75, kCurveWidth = 0.5;
 
-void vertex(const Vec4& c) { glVertex4d(c.x(), c.y(), c.z(), c.w()); }
-
 }  // namespace
 
 Color shade(const Color& base, const Vec3& normal, const Camera3& camera, const Lighting& light) {
@@ -39,6 +37,8 @@ void GlCanvas3::begin(const Camera3& camera) {
   gl_.beginFrame();
   camera_ = camera;
   overlaid_ = false;
+  drawn_ = render::draw::Bounds();
+  unbounded_ = false;
   // opaque solids with a depth test, in clip coordinates: GL's matrices are the identity
   glDisable(GL_STENCIL_TEST);
   glDisable(GL_BLEND);
@@ -53,10 +53,7 @@ void GlCanvas3::begin(const Camera3& camera) {
   glLoadIdentity();
   glMatrixMode(GL_MODELVIEW);
   glLoadIdentity();
-  const Color& bg = style_.background;
-  glClearColor(static_cast<float>(bg.r), static_cast<float>(bg.g), static_cast<float>(bg.b), 1.0f);
-  glClearDepth(1.0);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  gl_.clearFrame(style_.background, true);
 }
 
 Canvas& GlCanvas3::overlay() {
@@ -70,8 +67,24 @@ Canvas& GlCanvas3::overlay() {
 }
 
 Image GlCanvas3::finish() {
+  Image frame;
+  finish(frame);
+  return frame;
+}
+
+void GlCanvas3::finish(Image& frame) {
   overlay();
-  return overlay_.finish();
+  // a triangle with its vertices in front of the eye projects within them (clipping only cuts it)
+  if (!unbounded_) overlay_.drawnUnder(drawn_);
+  overlay_.finish(frame);
+}
+
+void GlCanvas3::vertex(const Vec4& c) {
+  if (c.w() > 0.0)
+    drawn_.add(Vec2((c.x() / c.w() + 1.0) * 0.5 * camera_.widthPx(), (1.0 - c.y() / c.w()) * 0.5 * camera_.heightPx()));
+  else
+    unbounded_ = true;
+  glVertex4d(c.x(), c.y(), c.z(), c.w());
 }
 
 void GlCanvas3::solid(const Mesh& mesh, const Vec3& x, const Mat3& rotation, const Pen& pen) {

@@ -35,6 +35,8 @@ class GlCanvas3 final : public Canvas3 {
   void begin(const Camera3& camera);
   // the frame, the overlay's text on top
   Image finish();
+  // the same into `frame`, whose storage is reused when it has the frame's size already
+  void finish(Image& frame);
 
   void solid(const Mesh& mesh, const Vec3& x, const Mat3& rotation, const Pen& pen) override;
   Canvas& overlay() override;
@@ -43,12 +45,18 @@ class GlCanvas3 final : public Canvas3 {
   // a line from a to b (world) `widthPx` wide on the frame, at the depth of its points, clipped to
   // the near plane
   void strokeLine(const Vec3& a, const Vec3& b, double widthPx);
+  // glVertex of a point in clip coordinates, its pixel added to drawn_
+  void vertex(const Vec4& clip);
 
   GlContext& gl_;
   const Style& style_;
   Camera3 camera_;
   render::draw::GlCanvas overlay_;
   bool overlaid_ = false;  // GL is set up for the overlay
+  // the output pixels the solids' vertices fall on (y down), or unbounded when one lies behind the
+  // eye (w ≤ 0), where GL clips and its projection says nothing
+  render::draw::Bounds drawn_;
+  bool unbounded_ = false;
 };
 
 }  // namespace render::draw3d

@@ -30,11 +30,17 @@ SceneRun3::SceneRun3(const render::scene3d::Scene& def, const Camera3& camera, c
 }
 
 render::draw::Image SceneRun3::frameAt(double t) {
+  render::draw::Image frame;
+  frameAt(t, frame);
+  return frame;
+}
+
+void SceneRun3::frameAt(double t, render::draw::Image& frame) {
   if (!canvas_) throw std::logic_error("SceneRun3::frameAt needs a GL context");
   world_.advanceTo(t, &history_);
   canvas_->begin(camera_);
   painter_.paint(world_, history_, *canvas_);
-  return canvas_->finish();
+  canvas_->finish(frame);
 }
 
 render::draw::Image SceneRun3::titleCard() {

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <numeric>
 #include <cerrno>
 #include <chrono>
 #include <list>
@@ -41,6 +42,13 @@ void drain(int& fd, std::string& into) {
 }
 
 }  // namespace
+
+std::vector<size_t> largestFirst(const std::vector<double>& cost) {
+  std::vector<size_t> order(cost.size());
+  std::iota(order.begin(), order.end(), size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return cost[a] > cost[b]; });
+  return order;
+}
 
 bool succeeded(const JobResult& result) { return WIFEXITED(result.status) && WEXITSTATUS(result.status) == 0; }
 

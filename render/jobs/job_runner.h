@@ -22,6 +22,11 @@ bool succeeded(const JobResult& result);
 // "exit status 1", "killed by signal 9"
 std::string describeStatus(int status);
 
+// the order to start jobs in, given what each costs (any unit): the costliest first, ties in their
+// order (longest processing time first: the jobs that start last are short, so that a batch does
+// not end with one long job running alone while the other workers idle; Graham 1969)
+std::vector<size_t> largestFirst(const std::vector<double>& cost);
+
 // runs every command (an argument vector each, argv[0] looked up on PATH) with at most `parallel`
 // running at once, started in order; tells `done` about each job as it ends, in the order they
 // end. On Ctrl-C (see interrupt.h) it passes SIGINT on to the running jobs, waits for them and

@@ -84,3 +84,8 @@ TEST_CASE("a command that cannot start is a failed job that says so") {
   CHECK(results[0].errors.find("cannot run '/nonexistent/rigidreel-nothing'") != std::string::npos);
   CHECK(render::jobs::succeeded(results[1]));
 }
+
+TEST_CASE("jobs start costliest first, equal costs in their order") {
+  CHECK(render::jobs::largestFirst({1.0, 5.0, 3.0, 5.0, 0.0}) == std::vector<size_t>{1, 3, 2, 0, 4});
+  CHECK(render::jobs::largestFirst({}).empty());
+}
