@@ -139,7 +139,10 @@ TEST_CASE("soft_step: a resting contact gives g/ω², ω = 2π · 2 · min(conta
   // a ball on the ground: at rest the warm-started impulse m g h per substep is what the soft
   // constraint's push gives, a3·λ = m·a2·a3·(ω/a1)·s, so the depth s = g/ω² (Catto's soft step)
   const double pi = std::acos(-1.0);
-  for (const auto& [hertz, substeps] : std::vector<std::pair<double, int>>{{30, 4}, {10, 4}, {1000, 4}, {1000, 8}}) {
+  // (a plain pair, not a structured binding: clang 14 cannot capture a binding in CAPTURE's lambda)
+  for (const std::pair<double, int>& setting : std::vector<std::pair<double, int>>{{30, 4}, {10, 4}, {1000, 4}, {1000, 8}}) {
+    const double hertz = setting.first;
+    const int substeps = setting.second;
     CAPTURE(hertz);
     CAPTURE(substeps);
     const std::string yaml = "world: {gravity: [0, -10], restitution: 0}\n"
