@@ -13,6 +13,14 @@ namespace {
 // coordinates are written to a few decimals)
 constexpr double kPlaceTolerance = 1e-6;
 
+// the same box but for its name and place: shape, mass properties, material and motion
+bool likeFirst(const BodyDef& b, const BodyDef& first) {
+  const sim::core::Shape &s = b.shape, &f = first.shape;
+  return s.kind == f.kind && s.radius == f.radius && s.vertices == f.vertices && s.planeNormal == f.planeNormal &&
+         b.density == first.density && b.mass == first.mass && b.inertia == first.inertia && b.velocity == first.velocity &&
+         b.angularVelocity == first.angularVelocity && b.restitution == first.restitution && b.friction == first.friction;
+}
+
 std::string place(int row, int k) { return "row " + std::to_string(row) + ", place " + std::to_string(k); }
 
 }  // namespace
@@ -50,6 +58,11 @@ PyramidReading readPyramid(const std::vector<BodyDef>& bodies) {
     for (int k = 0; k < base - row; ++k, ++i) {
       const BodyDef& b = bodies[dynamic[i]];
       const Vec2 want = origin + row * up + k * along;
+      if (!likeFirst(b, bodies[dynamic[0]])) {
+        out.problem = "body '" + b.name + "' differs from the first box in shape, mass, material or motion; a grown " +
+                      "pyramid is made of copies of the first";
+        return out;
+      }
       if ((b.position - want).norm() > kPlaceTolerance * spacing || b.angle != 0.0) {
         out.problem = "body '" + b.name + "' is not where " + place(row + 1, k + 1) + " of the pyramid would be (" +
                       std::to_string(want.x()) + ", " + std::to_string(want.y()) + ", unrotated)";

@@ -1,6 +1,9 @@
 #include "render/analysis/stability_def.h"
 
 #include <limits>
+#include <optional>
+#include <utility>
+#include <vector>
 
 #include "render/analysis/pyramid_rows.h"
 #include "sim/yaml/scene_source.h"
@@ -8,6 +11,28 @@
 #include "sim/yaml/yaml_reader.h"
 
 namespace render::analysis {
+
+namespace {
+
+// the first dynamic body that a force, spring, drag or event names, and what names it: a search
+// that drops or rebuilds the dynamic bodies cannot keep what refers to them
+std::optional<std::pair<std::string, std::string>> namedDynamicBody(const sim::scene::SceneDef& model) {
+  std::vector<std::pair<std::string, std::string>> named;
+  for (const auto& f : model.pointForces) named.emplace_back(f.body, "a force");
+  for (const auto& s : model.springs) {
+    named.emplace_back(s.body, "a spring");
+    if (!s.body2.empty()) named.emplace_back(s.body2, "a spring");
+  }
+  for (const auto& d : model.drags) named.emplace_back(d.body, "a drag");
+  for (const auto& e : model.events) named.emplace_back(e.body, "an event");
+  for (const auto& [body, what] : named) {
+    const int i = model.bodyIndex(body);
+    if (i >= 0 && !model.bodies[i].isStatic) return std::make_pair(body, what);
+  }
+  return std::nullopt;
+}
+
+}  // namespace
 
 StabilityDef readStability(const sim::yaml::SceneSource& source, const sim::scene::SceneDef& model) {
   StabilityDef d;
@@ -33,6 +58,13 @@ StabilityDef readStability(const sim::yaml::SceneSource& source, const sim::scen
         r.fail(n["parameter"], "pyramid_base grows the pyramid the scene lists, row by row from the bottom: " +
                                    pyramid.problem + "; list the boxes that way, or choose stack_height");
     }
+    // a stack height keeps some of the dynamic bodies and a pyramid's base rebuilds them
+    if (d.countsBodies()) {
+      if (const auto named = namedDynamicBody(model))
+        r.fail(n["parameter"], std::string(kParameterNames.name(d.parameter)) + " drops or rebuilds the dynamic bodies, but " +
+                                   named->second + " names '" + named->first +
+                                   "'; remove it from this scene's study, or choose another parameter");
+    }
     // a stack height or a pyramid's base counts bodies: a whole number, within an int before the
     // search converts it
     const auto bound = [&](const char* key) -> double {
@@ -57,6 +89,7 @@ StabilityDef readStability(const sim::yaml::SceneSource& source, const sim::scen
                             std::to_string(static_cast<long>(largest)) + "); lower 'to' or raise the limit with 'sim: {max_bodies: N}'");
       if (d.from > largest) r.fail(n["from"], "'from' is past the largest base within the bodies limit, " + std::to_string(static_cast<long>(largest)));
       if (d.to == 0.0) d.to = std::min(largest, 1000.0);
+      if (d.from > 0.0 && !(d.to > d.from)) r.fail(n["from"], "'from' must be below 'to', " + std::to_string(static_cast<long>(d.to)));
       // the search starts at the listed base unless told otherwise
       if (d.from == 0.0 && d.to <= base)
         r.fail(n["to"] ? n["to"] : n, "the search starts at the listed pyramid's base, " + std::to_string(base) +

@@ -1,5 +1,7 @@
 #include "sim/scene/scene_build.h"
 
+#include <stdexcept>
+
 namespace sim::scene {
 using namespace sim::core;
 using namespace sim::collision;
@@ -51,7 +53,12 @@ World buildWorld(const SceneDef& def) {
     if (bd.isStatic) b.makeStatic();
     w.bodies.push_back(std::move(b));
   }
-  auto index = [&](const std::string& name) { return def.bodyIndex(name); };
+  // the readers check every name; a definition changed after reading (a stability search) must too
+  auto index = [&](const std::string& name) {
+    const int i = def.bodyIndex(name);
+    if (i < 0) throw std::invalid_argument("a force, spring, drag or event names body '" + name + "', which the scene does not have");
+    return i;
+  };
   auto local = [&](const std::string& name, const Vec2& p) { return Vec2(p - centroid[index(name)]); };
 
   for (const PointForceDef& f : def.pointForces)

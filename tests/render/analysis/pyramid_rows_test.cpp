@@ -76,6 +76,13 @@ TEST_CASE("bodies that are not a pyramid are refused, naming the box out of plac
   CHECK_FALSE(counted.rows);
   CHECK(counted.problem.find("pyramid of 10 boxes; the scene has 5") != std::string::npos);
 
+  // every box must be a copy of the first: the grown pyramid is made of copies of it
+  std::string heavy = droppedPyramid(4);
+  heavy.replace(heavy.find("position: [-6.4375"), 0, "mass: 5, ");
+  const render::analysis::PyramidReading unlike = render::analysis::readPyramid(bodiesOf(heavy));
+  CHECK_FALSE(unlike.rows);
+  CHECK(unlike.problem.find("'p1_0' differs from the first box") != std::string::npos);
+
   const render::analysis::PyramidReading row = render::analysis::readPyramid(bodiesOf(
       "bodies:\n  - {name: a, shape: {box: [1, 1]}}\n  - {name: b, shape: {box: [1, 1]}, position: [2, 0]}\n"
       "  - {name: c, shape: {box: [1, 1]}, position: [4, 0]}\n"));

@@ -254,7 +254,7 @@ TEST_CASE("pyramid_base keeps to the scene's bodies limit before any run, and st
       study(pyramid + block);
       FAIL("expected a SceneError for: " << block);
     } catch (const sim::yaml::SceneError& e) {
-      MESSAGE(e.what());
+      MESSAGE(std::string(e.what()));
       CHECK(std::string(e.what()).find(said) != std::string::npos);
     }
   };
@@ -262,6 +262,12 @@ TEST_CASE("pyramid_base keeps to the scene's bodies limit before any run, and st
   refused("sim: {max_bodies: 15}\nstability: {parameter: pyramid_base, to: 5}\n", "the largest base within it: 4");
   refused("stability: {parameter: pyramid_base, to: 447}\n", "more bodies than the limit of 100000");
   refused("stability: {parameter: pyramid_base, to: 3}\n", "starts at the listed pyramid's base, 3");
+  refused("stability: {parameter: pyramid_base, from: 446}\n", "'from' must be below 'to', 446");
+  // the boxes are rebuilt under other names: nothing may name them (nor a stack's dropped boxes)
+  refused("events: [{time: 1, body: p20, impulse: [1, 0]}]\nstability: {parameter: pyramid_base, to: 6}\n",
+          "pyramid_base drops or rebuilds the dynamic bodies, but an event names 'p20'");
+  refused("forces: [{type: spring, body: p00, anchor: [0, 5], stiffness: 1}]\nstability: {parameter: stack_height, to: 6}\n",
+          "stack_height drops or rebuilds the dynamic bodies, but a spring names 'p00'");
   // without 'to': the largest base the limit allows
   CHECK(study(pyramid + "sim: {max_bodies: 15}\nstability: {parameter: pyramid_base}\n").stability.to == 4.0);
   CHECK(study(pyramid + "sim: {max_bodies: 16}\nstability: {parameter: pyramid_base}\n").stability.to == 5.0);
