@@ -6,8 +6,7 @@ namespace sim::collision {
 using namespace sim::core;
 
 double inverseEffectiveMass(const Body& a, const Body& b, const Vec2& r, const Vec2& n) {
-  const double ra = cross(r - a.x, n), rb = cross(r - b.x, n);
-  return a.invMass + b.invMass + ra * ra * a.invInertia + rb * rb * b.invInertia;
+  return inverseEffectiveMassAt(a, b, r - a.x, r - b.x, n);
 }
 
 void applyImpulsePair(Body& a, Body& b, const Vec2& r, const Vec2& j) {

@@ -14,8 +14,32 @@ inline Vec2 relativeVelocity(const Body& a, const Body& b, const Vec2& r) {
   return a.pointVelocity(r) - b.pointVelocity(r);
 }
 
-// m_eff⁻¹ = m_a⁻¹ + m_b⁻¹ + (r_a × n̂)²/I_a + (r_b × n̂)²/I_b, for any direction n̂
+// m_eff⁻¹ = m_a⁻¹ + m_b⁻¹ + (r_a × n̂)²/I_a + (r_b × n̂)²/I_b, for any direction n̂, from the lever
+// arms r_a, r_b (centers of mass to the point) of any bodies with invMass and invInertia: a Body,
+// or the solvers' compact copies of one
+template <class A, class B>
+double inverseEffectiveMassAt(const A& a, const B& b, const Vec2& ra, const Vec2& rb, const Vec2& n) {
+  const double an = cross(ra, n), bn = cross(rb, n);
+  return a.invMass + b.invMass + an * an * a.invInertia + bn * bn * b.invInertia;
+}
+// the same at world point r of two Bodies
 double inverseEffectiveMass(const Body& a, const Body& b, const Vec2& r, const Vec2& n);
+
+// at a point with lever arms p.rA, p.rB, fixed within a step (the iterative solvers' points), for
+// bodies with v, omega, invMass and invInertia:
+// the velocity of A's point relative to B's, (v_a + ω_a × r_a) − (v_b + ω_b × r_b)
+template <class Bd, class P>
+Vec2 relativeVelocityAt(const Bd& a, const Bd& b, const P& p) {
+  return Vec2(a.v + cross(a.omega, p.rA)) - Vec2(b.v + cross(b.omega, p.rB));
+}
+// j to A and −j to B
+template <class Bd, class P>
+void applyAt(Bd& a, Bd& b, const P& p, const Vec2& j) {
+  a.v += a.invMass * j;
+  a.omega += a.invInertia * cross(p.rA, j);
+  b.v -= b.invMass * j;
+  b.omega -= b.invInertia * cross(p.rB, j);
+}
 
 // j to A and −j to B at world point r
 void applyImpulsePair(Body& a, Body& b, const Vec2& r, const Vec2& j);

@@ -98,19 +98,6 @@ struct PositionPoint {
   double separation = 0.0;                              // at the step's start
 };
 
-// velocity of A's point relative to B's: (v_a + ω_a × r_a) − (v_b + ω_b × r_b)
-Vec2 relativeVelocityAt(const VelocityBody& a, const VelocityBody& b, const SolverPoint& p) {
-  return Vec2(a.v + cross(a.omega, p.rA)) - Vec2(b.v + cross(b.omega, p.rB));
-}
-
-// j to A and −j to B at the point
-void applyAt(VelocityBody& a, VelocityBody& b, const SolverPoint& p, const Vec2& j) {
-  a.v += a.invMass * j;
-  a.omega += a.invInertia * cross(p.rA, j);
-  b.v -= b.invMass * j;
-  b.omega -= b.invInertia * cross(p.rB, j);
-}
-
 // a contact's flat constraint, from its prepared states
 void buildConstraint(const Contact& c, const Body& a, const Body& b, SolverContact& s, PositionPoint anchors[2]) {
   s.a = c.a, s.b = c.b, s.count = c.manifold.count;
@@ -240,9 +227,7 @@ bool solvePositions(std::vector<PositionBody>& bodies, const std::vector<SolverC
       if (correction == 0.0) continue;
       const Vec2 r = 0.5 * (pa + pb);
       const Vec2 ra = r - a.x, rb = r - b.x;
-      // the effective mass along n̂ at r (inverseEffectiveMass)
-      const double ran = cross(ra, n), rbn = cross(rb, n);
-      const double kInv = a.invMass + b.invMass + ran * ran * a.invInertia + rbn * rbn * b.invInertia;
+      const double kInv = inverseEffectiveMassAt(a, b, ra, rb, n);
       if (kInv == 0.0) continue;
       const Vec2 push = (-correction / kInv) * n;
       a.x += a.invMass * push;

@@ -71,24 +71,10 @@ struct SoftBody {
 
 Vec2 tangentOf(const Vec2& n) { return {-n.y(), n.x()}; }
 
+// 1 / m_eff⁻¹ along d, or 0 where nothing can move (two static bodies)
 double effectiveMass(const Body& a, const Body& b, const Vec2& rA, const Vec2& rB, const Vec2& d) {
-  const double ka = cross(rA, d), kb = cross(rB, d);
-  const double k = a.invMass + b.invMass + a.invInertia * ka * ka + b.invInertia * kb * kb;
+  const double k = inverseEffectiveMassAt(a, b, rA, rB, d);
   return k > 0.0 ? 1.0 / k : 0.0;
-}
-
-// velocity of A's point relative to B's, at the fixed lever arms (of a Body or a SoftBody)
-template <class B>
-inline Vec2 relativeVelocityAt(const B& a, const B& b, const SoftPoint& p) {
-  return a.v + cross(a.omega, p.rA) - b.v - cross(b.omega, p.rB);
-}
-
-template <class B>
-inline void applyAt(B& a, B& b, const SoftPoint& p, const Vec2& j) {
-  a.v += a.invMass * j;
-  a.omega += a.invInertia * cross(p.rA, j);
-  b.v -= b.invMass * j;
-  b.omega -= b.invInertia * cross(p.rB, j);
 }
 
 // Contacts are found once per step, so a point the step will close must be found at its start: the
