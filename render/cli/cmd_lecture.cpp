@@ -25,7 +25,6 @@
 #include "render/page/page.h"
 #include "render/video/output_names.h"
 #include "render/video/plan_writer.h"
-#include "render/video/plan_writer3.h"
 
 namespace render::cli {
 using namespace render::jobs;

@@ -10,7 +10,6 @@
 #include "render/jobs/interrupt.h"
 #include "render/cli/space3d.h"
 #include "render/video/plan_writer.h"
-#include "render/video/plan_writer3.h"
 
 namespace render::cli {
 using namespace render::jobs;

@@ -11,7 +11,6 @@
 #include "render/video/output_names.h"
 #include "render/cli/space3d.h"
 #include "render/video/plan_writer.h"
-#include "render/video/plan_writer3.h"
 
 namespace render::cli {
 using namespace render::video;

@@ -7,7 +7,6 @@
 #include <vector>
 
 #include "render/video/render_plan.h"
-#include "render/video/render_plan3.h"
 
 namespace render::cli {
 

@@ -9,7 +9,6 @@
 
 #include "render/scene/scene.h"
 #include "render/video/render_plan.h"
-#include "render/video/render_plan3.h"
 
 namespace render::cli {
 

@@ -7,7 +7,6 @@
 
 #include "render/cli/scene_file.h"
 #include "render/video/render_plan.h"
-#include "render/video/render_plan3.h"
 #include "sim/scene/scene_def.h"
 #include "sim/world/world.h"
 

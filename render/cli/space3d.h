@@ -8,7 +8,7 @@
 #include "render/cli/method_lists.h"
 #include "render/cli/output.h"
 #include "render/cli/scene_options.h"
-#include "render/video/render_plan3.h"
+#include "render/video/render_plan.h"
 #include "sim/world3d/world.h"
 
 namespace render::cli {
@@ -22,8 +22,8 @@ bool check3d(const std::string& file);
 // `sweep` and `stability`
 int sweep3d(const SceneOptions& scene, const MethodLists& methods, const std::string& dt, int repeat, const std::string& outDir);
 int stability3d(const SceneOptions& scene, const MethodLists& methods, const std::string& outDir);
-// (`render`, `snapshot` and `lecture` make a 3D scene's plan with render_plan3.h and write it with
-// plan_writer3.h)
+// (`render`, `snapshot` and `lecture` make a 3D scene's plan with render_plan.h and write it with
+// plan_writer.h, as for 2D)
 
 // "the simulation diverged at t = …: body '…' has a non-finite state; try …", for standard error
 std::string divergedMessage(const std::string& file, const sim::scene3d::SceneDef& def, const sim::world3d::Diverged& d);

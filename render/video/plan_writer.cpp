@@ -10,10 +10,12 @@
 #include "render/draw/png_io.h"
 #include "render/frame/panels.h"
 #include "render/frame/scene_run.h"
+#include "render/frame3d/scene_run3.h"
 #include "render/jobs/atomic_file.h"
 #include "render/jobs/exit_status.h"
 #include "render/jobs/progress.h"
 #include "render/scene/scene_style.h"
+#include "render/scene3d/scene.h"
 #include "render/video/output_names.h"
 #include "render/video/recorder.h"
 
@@ -28,13 +30,30 @@ namespace fs = std::filesystem;
 // together (16 frames of 1280×720 are 59 MB a variant)
 constexpr size_t kShotsPerRun = 16;
 
+// what drawing a variant takes in each dimension: its run, its poster, how its frames are drawn
+template <class D>
+struct Drawing;
+template <>
+struct Drawing<Planar> {
+  using Run = SceneRun;
+  static constexpr const char* kView = "";
+  // the last instant, with the scene's strobe ghosts when it asks for them
+  static Image poster(SceneRun& run, const VideoOutput& out) { return run.frameAt(out.duration, out.posterStrobe); }
+};
+template <>
+struct Drawing<Spatial> {
+  using Run = render::frame3d::SceneRun3;
+  static constexpr const char* kView = "in perspective, ";
+  static Image poster(render::frame3d::SceneRun3& run, const VideoOutput3& out) { return run.frameAt(out.duration); }
+};
+
 // `draw()`, a divergence of the simulation naming the variant and what was being drawn
-template <class Draw>
-void drawing(const PlannedVariant& v, VariantDiverged::While what, Draw&& draw) {
+template <class D, class Draw>
+void drawing(const PlannedVariantOf<D>& v, DrawStage what, Draw&& draw) {
   try {
     draw();
-  } catch (const sim::world::Diverged& d) {
-    throw VariantDiverged(d, v.scene.model, what);
+  } catch (const typename D::Diverged& d) {
+    throw VariantDivergedOf<D>(d, v.scene.model, what);
   }
 }
 
@@ -48,10 +67,12 @@ class VideoSink : public FrameSink {
 };
 
 // one video, its frames as PNG when asked for, then its poster
-void writeVideo(const PlannedVariant& v, const VideoOutput& out, bool quiet, const Wrote& wrote) {
+template <class D>
+void writeVideo(const PlannedVariantOf<D>& v, const VideoOutputOf<D>& out, bool quiet, const Wrote& wrote) {
+  using Run = typename Drawing<D>::Run;
   GlContext gl(out.width, out.height);
   TextRenderer text;
-  SceneRun run(v.scene, out.camera, v.survey, &gl, &text);
+  Run run(v.scene, out.camera, v.survey, &gl, &text);
 
   VideoWriter video(out.path, out.format, out.width, out.height, out.fps);
   VideoSink videoSink(video);
@@ -64,16 +85,15 @@ void writeVideo(const PlannedVariant& v, const VideoOutput& out, bool quiet, con
     pngFrames = std::make_unique<PngFrames>(framesDir->path(), out.frameCount);
     sinks.push_back(pngFrames.get());
   }
-  Progress progress(outputBase(v.scene.model), out.frameCount, !quiet);
+  Progress progress(outputBase(v.scene.model.name, v.scene.model.variant), out.frameCount, !quiet);
   record(run, out.timeMap, out.fps, sinks, [&](long done) { progress.update(done); });
   progress.finish();
   video.finish();
   if (framesDir) framesDir->commit();
   const double seconds = progress.elapsed();
 
-  // the poster: the last instant, with the scene's strobe ghosts when it asks for them
-  SceneRun posterRun(v.scene, out.camera, v.survey, &gl, &text);
-  writePng(posterRun.frameAt(out.duration, out.posterStrobe), out.posterPath);
+  Run posterRun(v.scene, out.camera, v.survey, &gl, &text);
+  writePng(Drawing<D>::poster(posterRun, out), out.posterPath);
   wrote(out.path);
   wrote(out.posterPath);
   if (framesDir) wrote(out.framesPath);
@@ -82,7 +102,8 @@ void writeVideo(const PlannedVariant& v, const VideoOutput& out, bool quiet, con
     char rate[96];
     std::snprintf(rate, sizeof rate, "drawn in %.2f s (%.1f frames/s)", seconds, out.frameCount / seconds);
     std::cout << out.path << ": " << out.frameCount << " frames, " << out.width << "x" << out.height << " at "
-              << timeForName(out.fps) << " fps (" << timeForName(out.frameCount / out.fps) << " s), " << rate << "\n";
+              << timeForName(out.fps) << " fps (" << timeForName(out.frameCount / out.fps) << " s), " << Drawing<D>::kView << rate
+              << "\n";
     std::cout << out.posterPath << ": poster at t = " << timeForName(out.duration) << " s\n";
     if (framesDir) std::cout << out.framesPath << ": " << out.frameCount << " PNG frames\n";
   }
@@ -102,7 +123,7 @@ void writeStills(const RenderPlan& plan, const Stills& stills, const Wrote& wrot
       std::vector<double> instants;
       for (size_t k = 0; k < count; ++k) instants.push_back(stills.shots[from + k].instants[i]);
       SceneRun run(v.scene, stills.camera, stills.surveys[i], &gl, &text);
-      drawing(v, VariantDiverged::While::Stills, [&] {
+      drawing<Planar>(v, DrawStage::Stills, [&] {
         run.framesAt(instants, stills.strobe, [&](size_t k, Image frame) { frames[k][i] = std::move(frame); });
       });
     }
@@ -117,6 +138,41 @@ void writeStills(const RenderPlan& plan, const Stills& stills, const Wrote& wrot
   }
 }
 
+// 3D stills, shot by shot: a fresh run per variant (its trails and paths start from t = 0), alone or
+// side by side
+void writeStills(const RenderPlan3& plan, const Stills3& stills, const Wrote& wrote) {
+  const render::scene3d::Scene& first = plan.variants.front().scene;
+  GlContext gl(stills.width, stills.height);
+  TextRenderer text;
+  for (const StillOutput& shot : stills.shots) {
+    std::vector<Image> frames;
+    for (size_t i = 0; i < plan.variants.size(); ++i) {
+      const PlannedVariant3& v = plan.variants[i];
+      render::frame3d::SceneRun3 run(v.scene, stills.camera, stills.surveys[i], &gl, &text);
+      drawing<Spatial>(v, DrawStage::Stills, [&] { frames.push_back(run.frameAt(shot.instants[i])); });
+    }
+    if (stills.panels)
+      writePng(composePanels(frames, shot.titles, render::scene3d::makeStyle(first, first.render.height), text), shot.path);
+    else
+      writePng(frames.front(), shot.path);
+    wrote(shot.path);
+  }
+}
+
+// every video with its poster, then the stills
+template <class D>
+void writeAll(const RenderPlanOf<D>& plan, bool quiet, const Wrote& wrote) {
+  for (const VideoOutputOf<D>& video : plan.videos) {
+    const PlannedVariantOf<D>& v = plan.variants[video.variant];
+    createOutputDirectory(video.directory);
+    drawing<D>(v, DrawStage::Video, [&] { writeVideo<D>(v, video, quiet, wrote); });
+  }
+  if (plan.stills) {
+    createOutputDirectory(plan.stills->directory);
+    writeStills(plan, *plan.stills, wrote);
+  }
+}
+
 }  // namespace
 
 void createOutputDirectory(const std::string& dir) {
@@ -128,16 +184,8 @@ void createOutputDirectory(const std::string& dir) {
   if (::access(dir.c_str(), W_OK) != 0) throw UsageError("-o: cannot write in " + dir + "; choose another directory with -o DIR");
 }
 
-void writePlan(const RenderPlan& plan, bool quiet, const Wrote& wrote) {
-  for (const VideoOutput& video : plan.videos) {
-    const PlannedVariant& v = plan.variants[video.variant];
-    createOutputDirectory(video.directory);
-    drawing(v, VariantDiverged::While::Video, [&] { writeVideo(v, video, quiet, wrote); });
-  }
-  if (plan.stills) {
-    createOutputDirectory(plan.stills->directory);
-    writeStills(plan, *plan.stills, wrote);
-  }
-}
+void writePlan(const RenderPlan& plan, bool quiet, const Wrote& wrote) { writeAll(plan, quiet, wrote); }
+
+void writePlan3(const RenderPlan3& plan, bool quiet, const Wrote& wrote) { writeAll(plan, quiet, wrote); }
 
 }  // namespace render::video

@@ -1,6 +1,7 @@
 // The render plan carried out: its directory created, each video recorded with its poster, then the
 // stills, every file complete before it is named (PNGs renamed into place, ffmpeg's output renamed
-// when it has finished well, frames in a hidden directory renamed at the end).
+// when it has finished well, frames in a hidden directory renamed at the end). A 3D plan is written by the same code, its
+// frames drawn in perspective.
 #pragma once
 
 #include <functional>
@@ -21,5 +22,7 @@ void createOutputDirectory(const std::string& dir);
 // directory that cannot be created or written), VariantDiverged, std::runtime_error (ffmpeg) and
 // Interrupted (between frames)
 void writePlan(const RenderPlan& plan, bool quiet, const Wrote& wrote);
+// the same for a 3D scene's plan, with VariantDiverged3 for a divergence
+void writePlan3(const RenderPlan3& plan, bool quiet, const Wrote& wrote);
 
 }  // namespace render::video

@@ -5,54 +5,73 @@
 
 #include "render/frame/energy_panel.h"
 #include "render/frame/panels.h"
+#include "render/frame3d/energy3.h"
 #include "render/jobs/exit_status.h"
 #include "render/video/output_names.h"
-#include "sim/scene/step_limit.h"
+#include "sim/core/step_limit.h"
 #include "sim/yaml/scene_error.h"
 
 namespace render::video {
 using namespace render::jobs;
+using namespace render::frame3d;
 
 namespace {
 
+// the width of the energy panel beside a variant's frame, px, in each dimension's own layout
+double panelBand(const Planar::Scene& def, const Planar::Survey& survey) { return EnergyPanel::bandPx(def, survey, def.render.height); }
+double panelBand(const Spatial::Scene& def, const Spatial::Survey& survey) {
+  return EnergyPanel3::bandPx(def, survey, def.render.height);
+}
+
 // the scene's variants, each read for itself, or the base scene itself when it has none
-std::vector<render::scene::Scene> variantsOf(render::scene::Scene base, const LoadVariant& load) {
+template <class D>
+std::vector<typename D::Scene> variantsOf(typename D::Scene base, const LoadVariantOf<D>& load) {
   if (base.model.variantNames.empty()) return {std::move(base)};
-  std::vector<render::scene::Scene> scenes;
+  std::vector<typename D::Scene> scenes;
   for (const std::string& name : base.model.variantNames) scenes.push_back(load(name));
   return scenes;
 }
 
 // <root>/<scene>, where the scene's outputs go
-std::string directoryOf(const std::string& root, const sim::scene::SceneDef& model) {
+template <class Model>
+std::string directoryOf(const std::string& root, const Model& model) {
   return (std::filesystem::path(root) / model.name).string();
+}
+
+// "<scene>[-<variant>]", the base of a variant's file names
+template <class Model>
+std::string baseOf(const Model& model) {
+  return outputBase(model.name, model.variant);
 }
 
 // each variant at the size (and frame rate) asked for, surveyed from 0 to `until` (its duration when
 // negative): the one run of its world before anything is drawn
-RenderPlan surveyed(std::vector<render::scene::Scene> scenes, const std::optional<FrameSize>& size,
-                    const std::optional<double>& fps, double until) {
-  RenderPlan plan;
+template <class D>
+RenderPlanOf<D> surveyed(std::vector<typename D::Scene> scenes, const std::optional<FrameSize>& size,
+                         const std::optional<double>& fps, double until) {
+  RenderPlanOf<D> plan;
   plan.scene = scenes.front().model.name;
-  for (render::scene::Scene& scene : scenes) {
+  for (typename D::Scene& scene : scenes) {
     if (size) scene.render.width = size->width, scene.render.height = size->height;
     if (fps) scene.render.fps = *fps;
     try {
-      RunSurvey survey = surveyRun(scene, until);
+      typename D::Survey survey = surveyRun(scene, until);
       plan.variants.push_back({std::move(scene), std::move(survey)});
-    } catch (const sim::world::Diverged& d) {
-      throw VariantDiverged(d, scene.model, VariantDiverged::While::Planning);
+    } catch (const typename D::Diverged& d) {
+      throw VariantDivergedOf<D>(d, scene.model, DrawStage::Planning);
     }
   }
   return plan;
 }
 
 // the video of variant `i` over `duration` s of simulation, and its poster at the end
-VideoOutput videoOf(const RenderPlan& plan, size_t i, const std::string& root, double duration, VideoFormat format, bool frames) {
-  const PlannedVariant& v = plan.variants[i];
+template <class D>
+VideoOutputOf<D> videoOf(const RenderPlanOf<D>& plan, size_t i, const std::string& root, double duration, VideoFormat format,
+                         bool frames) {
+  const PlannedVariantOf<D>& v = plan.variants[i];
   const render::scene::RenderDef& r = v.scene.render;
   const std::string directory = directoryOf(root, v.scene.model);
-  const std::string base = directory + "/" + outputBase(v.scene.model);
+  const std::string base = directory + "/" + baseOf(v.scene.model);
   // frame k at the simulation time of video time k / fps, for every k / fps < the video's length:
   // the title card, then `duration` stretched by the slow-motion windows (exactly `duration` without)
   TimeMap map = timeMapFor(r, v.survey.impactTimes, duration);
@@ -84,10 +103,11 @@ struct StillSpec {
 };
 
 // shot by shot, each variant at the same times, each inside every variant's duration
-std::vector<std::vector<double>> atTimes(const RenderPlan& plan, const std::vector<double>& times) {
+template <class D>
+std::vector<std::vector<double>> atTimes(const RenderPlanOf<D>& plan, const std::vector<double>& times) {
   std::vector<std::vector<double>> instants;  // [shot][variant]
   for (double t : times) {
-    for (const PlannedVariant& v : plan.variants)
+    for (const PlannedVariantOf<D>& v : plan.variants)
       if (t < 0.0 || t > v.scene.model.duration)
         throw UsageError("--at: " + timeForName(t) + " s is outside the scene's duration [0, " +
                          timeForName(v.scene.model.duration) + "]");
@@ -97,10 +117,11 @@ std::vector<std::vector<double>> atTimes(const RenderPlan& plan, const std::vect
 }
 
 // shot i: each variant at its i-th impact, or at its last when it has fewer
-std::vector<std::vector<double>> atImpacts(const RenderPlan& plan, const std::string& file) {
+template <class D>
+std::vector<std::vector<double>> atImpacts(const RenderPlanOf<D>& plan, const std::string& file) {
   size_t most = 0;
-  for (const PlannedVariant& v : plan.variants) {
-    const sim::scene::SceneDef& model = v.scene.model;
+  for (const PlannedVariantOf<D>& v : plan.variants) {
+    const ModelOf<D>& model = v.scene.model;
     if (v.survey.impactTimes.empty())
       throw UsageError("--impacts: " + file + (model.variant.empty() ? "" : " (variant " + model.variant + ")") +
                        " has no impacts in its " + timeForName(model.duration) +
@@ -110,7 +131,7 @@ std::vector<std::vector<double>> atImpacts(const RenderPlan& plan, const std::st
   std::vector<std::vector<double>> instants;
   for (size_t i = 0; i < most; ++i) {
     std::vector<double> shot;
-    for (const PlannedVariant& v : plan.variants) shot.push_back(v.survey.impactTimes[std::min(i, v.survey.impactTimes.size() - 1)]);
+    for (const PlannedVariantOf<D>& v : plan.variants) shot.push_back(v.survey.impactTimes[std::min(i, v.survey.impactTimes.size() - 1)]);
     instants.push_back(shot);
   }
   return instants;
@@ -118,21 +139,22 @@ std::vector<std::vector<double>> atImpacts(const RenderPlan& plan, const std::st
 
 // one camera for all panels, so that the variants compare at the same scale: over every variant's
 // run, beside the widest energy panel among them
-Camera sharedCamera(const RenderPlan& plan, const std::vector<RunSurvey>& surveys) {
-  Bounds bounds;
+template <class D>
+typename D::Camera sharedCamera(const RenderPlanOf<D>& plan, const std::vector<typename D::Survey>& surveys) {
+  std::remove_cvref_t<decltype(surveys.front().bounds)> bounds;
   size_t widest = 0;
   double widestBand = -1.0;
   for (size_t i = 0; i < plan.variants.size(); ++i) {
-    const render::scene::Scene& def = plan.variants[i].scene;
     bounds.add(surveys[i].bounds);
-    const double band = EnergyPanel::bandPx(def, surveys[i], def.render.height);
+    const double band = panelBand(plan.variants[i].scene, surveys[i]);
     if (band > widestBand) widest = i, widestBand = band;
   }
   return cameraFor(plan.variants[widest].scene, surveys[widest], bounds);
 }
 
 // "A: center", or just "A" for a variant named A; at an impact, its time too
-std::string panelTitle(size_t i, const sim::scene::SceneDef& model, bool impacts, double t) {
+template <class Model>
+std::string panelTitle(size_t i, const Model& model, bool impacts, double t) {
   std::string title = panelLetter(i);
   if (model.variant != title) title += ": " + model.variant;
   if (impacts) title += "  (t = " + timeForName(t) + " s)";
@@ -140,26 +162,27 @@ std::string panelTitle(size_t i, const sim::scene::SceneDef& model, bool impacts
 }
 
 // the stills of every variant of the plan, at the times or impacts of `spec`
-Stills stillsOf(const RenderPlan& plan, const StillSpec& spec) {
-  const render::scene::Scene& first = plan.variants.front().scene;
-  std::vector<RunSurvey> surveys;
-  for (const PlannedVariant& v : plan.variants) surveys.push_back(v.survey);
+template <class D>
+StillsOf<D> stillsOf(const RenderPlanOf<D>& plan, const StillSpec& spec) {
+  const typename D::Scene& first = plan.variants.front().scene;
+  std::vector<typename D::Survey> surveys;
+  for (const PlannedVariantOf<D>& v : plan.variants) surveys.push_back(v.survey);
   // side by side, the variants' arrows and energy bars are drawn at one scale too
   if (spec.panels) {
-    std::vector<RunSurvey*> all;
-    for (RunSurvey& survey : surveys) all.push_back(&survey);
+    std::vector<typename D::Survey*> all;
+    for (typename D::Survey& survey : surveys) all.push_back(&survey);
     shareScales(all);
   }
   const int strobe = spec.strobe.value_or(first.render.strobe);
   const std::vector<std::vector<double>> instants = spec.impacts ? atImpacts(plan, spec.file) : atTimes(plan, spec.times);
-  Stills s{.directory = directoryOf(spec.root, first.model),
-           .surveys = surveys,
-           .panels = spec.panels,
-           .strobe = strobe,
-           .width = first.render.width,
-           .height = first.render.height,
-           .camera = sharedCamera(plan, surveys),
-           .shots = {}};
+  StillsOf<D> s{.directory = directoryOf(spec.root, first.model),
+                .surveys = surveys,
+                .panels = spec.panels,
+                .strobe = strobe,
+                .width = first.render.width,
+                .height = first.render.height,
+                .camera = sharedCamera(plan, surveys),
+                .shots = {}};
   for (size_t shot = 0; shot < instants.size(); ++shot) {
     StillOutput out{.path = s.directory + "/", .instants = instants[shot], .titles = {}};
     const std::string impact = spec.impacts ? "-impact" + std::to_string(shot + 1) : "";
@@ -169,7 +192,7 @@ Stills stillsOf(const RenderPlan& plan, const StillSpec& spec) {
       for (size_t i = 0; i < plan.variants.size(); ++i)
         out.titles.push_back(panelTitle(i, plan.variants[i].scene.model, spec.impacts, instants[shot][i]));
     } else {
-      out.path += outputBase(first.model) + impact + at + strobeSuffix(strobe) + ".png";
+      out.path += baseOf(first.model) + impact + at + strobeSuffix(strobe) + ".png";
     }
     s.shots.push_back(std::move(out));
   }
@@ -179,14 +202,15 @@ Stills stillsOf(const RenderPlan& plan, const StillSpec& spec) {
 // the scene's `panels:` for a lecture: the default time moved to the shortest variant's duration, and
 // `impacts` refused at its line when a variant has none, before anything renders (times asked for are
 // checked against each variant's duration when the variant is read)
-render::scene::PanelsDef lecturePanels(const render::scene::Scene& base, const RenderPlan& plan, const std::string& file) {
+template <class D>
+render::scene::PanelsDef lecturePanels(const typename D::Scene& base, const RenderPlanOf<D>& plan, const std::string& file) {
   render::scene::PanelsDef panels = base.render.panels;
   const bool defaulted = panels.line == 0;
   double shortest = base.model.duration;
-  for (const PlannedVariant& v : plan.variants) shortest = std::min(shortest, v.scene.model.duration);
+  for (const PlannedVariantOf<D>& v : plan.variants) shortest = std::min(shortest, v.scene.model.duration);
   if (defaulted && !panels.times.empty()) panels.times = {shortest};
   if (panels.impacts)
-    for (const PlannedVariant& v : plan.variants)
+    for (const PlannedVariantOf<D>& v : plan.variants)
       if (v.survey.impactTimes.empty())
         throw sim::yaml::SceneError(file, panels.line, panels.column,
                                     "'panels: impacts' needs an impact in every variant, and variant '" + v.scene.model.variant +
@@ -194,30 +218,17 @@ render::scene::PanelsDef lecturePanels(const render::scene::Scene& base, const R
   return panels;
 }
 
-}  // namespace
-
-std::vector<std::string> RenderPlan::paths() const {
-  std::vector<std::string> all;
-  for (const VideoOutput& v : videos) {
-    all.push_back(v.path);
-    all.push_back(v.posterPath);
-    if (!v.framesPath.empty()) all.push_back(v.framesPath);
-  }
-  if (stills)
-    for (const StillOutput& shot : stills->shots) all.push_back(shot.path);
-  return all;
-}
-
-RenderPlan planVideos(const LoadVariant& load, const VideoRequest& r) {
-  std::vector<render::scene::Scene> scenes =
-      r.allVariants ? variantsOf(load(""), load) : std::vector<render::scene::Scene>{load(r.variant)};
+template <class D>
+RenderPlanOf<D> planVideosOf(const LoadVariantOf<D>& load, const VideoRequest& r) {
+  std::vector<typename D::Scene> scenes =
+      r.allVariants ? variantsOf<D>(load(""), load) : std::vector<typename D::Scene>{load(r.variant)};
   if (r.duration)
-    for (const render::scene::Scene& s : scenes)
-      if (const std::string over = sim::scene::stepsOverLimit(s.model, *r.duration); !over.empty())
+    for (const typename D::Scene& s : scenes)
+      if (const std::string over = sim::core::stepsOverLimit(s.model.dt, s.model.maxSteps, *r.duration); !over.empty())
         throw UsageError("--duration: " + over + "; choose a shorter video, or raise the scene's 'sim: {max_steps: N}'");
   boundFrames(scenes, r.duration, r.fps);
   // each variant surveyed over its video's duration, which --duration sets for all
-  RenderPlan plan = surveyed(std::move(scenes), r.size, r.fps, r.duration.value_or(-1.0));
+  RenderPlanOf<D> plan = surveyed<D>(std::move(scenes), r.size, r.fps, r.duration.value_or(-1.0));
   for (size_t i = 0; i < plan.variants.size(); ++i) {
     const double duration = r.duration.value_or(plan.variants[i].scene.model.duration);
     plan.videos.push_back(videoOf(plan, i, r.root, duration, r.format, r.frames));
@@ -225,8 +236,9 @@ RenderPlan planVideos(const LoadVariant& load, const VideoRequest& r) {
   return plan;
 }
 
-RenderPlan planStills(const LoadVariant& load, const StillRequest& r) {
-  std::vector<render::scene::Scene> scenes;
+template <class D>
+RenderPlanOf<D> planStillsOf(const LoadVariantOf<D>& load, const StillRequest& r) {
+  std::vector<typename D::Scene> scenes;
   if (r.panels) {
     const std::vector<std::string> names = load("").model.variantNames;
     if (names.empty()) throw UsageError("--panels: " + r.file + " has no variants to put side by side");
@@ -234,17 +246,18 @@ RenderPlan planStills(const LoadVariant& load, const StillRequest& r) {
   } else {
     scenes.push_back(load(r.variant));
   }
-  RenderPlan plan = surveyed(std::move(scenes), r.size, std::nullopt, -1.0);
+  RenderPlanOf<D> plan = surveyed<D>(std::move(scenes), r.size, std::nullopt, -1.0);
   plan.stills = stillsOf(plan, {r.times, r.impacts, r.panels, r.strobe, r.root, r.file});
   return plan;
 }
 
-RenderPlan planLecture(const LoadVariant& load, const LectureRequest& r) {
-  const render::scene::Scene base = load("");
+template <class D>
+RenderPlanOf<D> planLectureOf(const LoadVariantOf<D>& load, const LectureRequest& r) {
+  const typename D::Scene base = load("");
   // each variant surveyed once, over its duration: the video's and the panels' survey alike
-  std::vector<render::scene::Scene> scenes = variantsOf(base, load);
+  std::vector<typename D::Scene> scenes = variantsOf<D>(base, load);
   boundFrames(scenes, std::nullopt, r.fps);
-  RenderPlan plan = surveyed(std::move(scenes), r.size, r.fps, -1.0);
+  RenderPlanOf<D> plan = surveyed<D>(std::move(scenes), r.size, r.fps, -1.0);
   plan.scene = base.model.name;
   for (size_t i = 0; i < plan.variants.size(); ++i)
     plan.videos.push_back(videoOf(plan, i, r.root, plan.variants[i].scene.model.duration, VideoFormat::Mp4, false));
@@ -253,5 +266,36 @@ RenderPlan planLecture(const LoadVariant& load, const LectureRequest& r) {
   if (!panels.times.empty() || panels.impacts) plan.stills = stillsOf(plan, {panels.times, panels.impacts, true, std::nullopt, r.root, r.file});
   return plan;
 }
+
+}  // namespace
+
+template <class D>
+std::vector<std::string> RenderPlanOf<D>::paths() const {
+  std::vector<std::string> all;
+  for (const VideoOutputOf<D>& v : videos) {
+    all.push_back(v.path);
+    all.push_back(v.posterPath);
+    if (!v.framesPath.empty()) all.push_back(v.framesPath);
+  }
+  if (stills)
+    for (const StillOutput& shot : stills->shots) all.push_back(shot.path);
+  return all;
+}
+template struct RenderPlanOf<Planar>;
+template struct RenderPlanOf<Spatial>;
+
+RenderPlan planVideos(const LoadVariant& load, const VideoRequest& r) { return planVideosOf<Planar>(load, r); }
+RenderPlan planStills(const LoadVariant& load, const StillRequest& r) { return planStillsOf<Planar>(load, r); }
+RenderPlan planLecture(const LoadVariant& load, const LectureRequest& r) { return planLectureOf<Planar>(load, r); }
+
+RenderPlan3 planVideos3(const LoadVariant3& load, const VideoRequest& r) { return planVideosOf<Spatial>(load, r); }
+
+RenderPlan3 planStills3(const LoadVariant3& load, const StillRequest& r) {
+  if (r.impacts) throw UsageError("--impacts: " + r.file + " is a 3D scene, and nothing collides in 3D; give times with --at");
+  if (r.strobe.value_or(0) > 0) throw UsageError("--strobe: earlier poses are ghosted in 2D frames only");
+  return planStillsOf<Spatial>(load, r);
+}
+
+RenderPlan3 planLecture3(const LoadVariant3& load, const LectureRequest& r) { return planLectureOf<Spatial>(load, r); }
 
 }  // namespace render::video

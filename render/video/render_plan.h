@@ -6,19 +6,27 @@
 //
 //   scene file ─load each variant─▶ surveyRun (once per variant) ─▶ RenderPlan ─writePlan─▶ files
 //                                                                      └─paths()─▶ lecture --list
+//
+// 2D and 3D scenes are planned by the same code: the types are written once over the scene's
+// dimension (Planar, Spatial); a 3D plan makes the same outputs in perspective, without impacts or
+// strobes, since nothing collides in 3D.
 #pragma once
 
 #include <functional>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "render/draw/camera.h"
 #include "render/frame/survey.h"
+#include "render/frame3d/survey3.h"
 #include "render/scene/scene.h"
+#include "render/scene3d/scene.h"
 #include "render/video/time_map.h"
 #include "render/video/video.h"
 #include "sim/world/world.h"
+#include "sim/world3d/world.h"
 
 namespace render::video {
 using namespace render::draw;
@@ -28,19 +36,39 @@ struct FrameSize {
   int width = 0, height = 0;
 };
 
+// what a plan takes of a scene's dimension: the scene, the survey of its run, the camera that draws
+// it, and how its simulation gives up
+struct Planar {
+  using Scene = render::scene::Scene;
+  using Survey = RunSurvey;
+  using Camera = render::draw::Camera;
+  using Diverged = sim::world::Diverged;
+};
+struct Spatial {
+  using Scene = render::scene3d::Scene;
+  using Survey = render::frame3d::RunSurvey3;
+  using Camera = render::draw3d::Camera3;
+  using Diverged = sim::world3d::Diverged;
+};
+template <class D>
+using ModelOf = decltype(D::Scene::model);  // the variant's scene definition (sim::scene or sim::scene3d)
+
 // the scene file's variant ("" for the base scene) with the command line's overrides (--integrator,
 // --dt, ...); throws sim::yaml::SceneError or UsageError
-using LoadVariant = std::function<render::scene::Scene(const std::string& variant)>;
+template <class D>
+using LoadVariantOf = std::function<typename D::Scene(const std::string& variant)>;
 
 // one variant as it is drawn: the scene with the command line's size (and fps), and its survey, the
 // one run of its world that every camera, scale, time map and impact instant of it comes from
-struct PlannedVariant {
-  render::scene::Scene scene;
-  RunSurvey survey;
+template <class D>
+struct PlannedVariantOf {
+  typename D::Scene scene;
+  typename D::Survey survey;
 };
 
 // a video of one variant, with its poster (the last instant) and, with --frames, every frame as PNG
-struct VideoOutput {
+template <class D>
+struct VideoOutputOf {
   size_t variant = 0;      // in RenderPlan::variants
   std::string directory;   // <root>/<scene>, the variant's scene name (a variant may rename it)
   std::string path;        // <directory>/<base>.mp4 (.webm, .gif)
@@ -50,10 +78,10 @@ struct VideoOutput {
   int width = 0, height = 0;
   double fps = 0.0;
   double duration = 0.0;   // s of simulation: the poster's instant
-  int posterStrobe = 0;    // the poster's ghosts
+  int posterStrobe = 0;    // the poster's ghosts (2D only)
   TimeMap timeMap;         // video time to simulation time: the title card, slow motion
   long frameCount = 0;
-  Camera camera;           // fitted over the variant's survey; the poster's too
+  typename D::Camera camera;  // fitted over the variant's survey; the poster's too
 };
 
 // one still image: a variant at an instant, or the variants side by side at theirs (a poll panel)
@@ -65,34 +93,51 @@ struct StillOutput {
 
 // still images of every variant of the plan (left to right), drawn alike: one camera, one strobe and
 // (side by side) one scale for arrows and bars
-struct Stills {
-  std::string directory;           // <root>/<scene>
-  std::vector<RunSurvey> surveys;  // the variants', side by side with scales shared (shareScales)
-  bool panels = false;             // the variants side by side in each image
-  int strobe = 0;
-  int width = 0, height = 0;       // of one variant's frame
-  Camera camera;                   // over every variant's run, beside the widest energy panel
+template <class D>
+struct StillsOf {
+  std::string directory;                    // <root>/<scene>
+  std::vector<typename D::Survey> surveys;  // the variants', side by side with scales shared (shareScales)
+  bool panels = false;                      // the variants side by side in each image
+  int strobe = 0;                           // (2D only)
+  int width = 0, height = 0;                // of one variant's frame
+  typename D::Camera camera;                // over every variant's run, beside the widest energy panel
   std::vector<StillOutput> shots;
 };
 
-struct RenderPlan {
+template <class D>
+struct RenderPlanOf {
   std::string scene;  // its name (the base scene's)
-  std::vector<PlannedVariant> variants;
-  std::vector<VideoOutput> videos;
-  std::optional<Stills> stills;
+  std::vector<PlannedVariantOf<D>> variants;
+  std::vector<VideoOutputOf<D>> videos;
+  std::optional<StillsOf<D>> stills;
 
   // every path written, in the order written: each video, its poster (and frames), then each still
   std::vector<std::string> paths() const;
 };
 
 // a variant's simulation diverged: planning (its survey), drawing its video or poster, or a still
-struct VariantDiverged : sim::world::Diverged {
-  enum class While { Planning, Video, Stills };
-  VariantDiverged(const sim::world::Diverged& d, const sim::scene::SceneDef& variant, While stage)
-      : Diverged(d), model(variant), when(stage) {}
-  sim::scene::SceneDef model;  // the variant's: its bodies' names, its step
+enum class DrawStage { Planning, Video, Stills };
+template <class D>
+struct VariantDivergedOf : D::Diverged {
+  using While = DrawStage;
+  VariantDivergedOf(const typename D::Diverged& d, const ModelOf<D>& variant, While stage)
+      : D::Diverged(d), model(variant), when(stage) {}
+  ModelOf<D> model;  // the variant's: its bodies' names, its step
   While when;
 };
+
+using LoadVariant = LoadVariantOf<Planar>;
+using PlannedVariant = PlannedVariantOf<Planar>;
+using VideoOutput = VideoOutputOf<Planar>;
+using Stills = StillsOf<Planar>;
+using RenderPlan = RenderPlanOf<Planar>;
+using VariantDiverged = VariantDivergedOf<Planar>;
+using LoadVariant3 = LoadVariantOf<Spatial>;
+using PlannedVariant3 = PlannedVariantOf<Spatial>;
+using VideoOutput3 = VideoOutputOf<Spatial>;
+using Stills3 = StillsOf<Spatial>;
+using RenderPlan3 = RenderPlanOf<Spatial>;
+using VariantDiverged3 = VariantDivergedOf<Spatial>;
 
 // what `render` asks for, its values checked
 struct VideoRequest {
@@ -137,5 +182,11 @@ RenderPlan planStills(const LoadVariant& load, const StillRequest& request);
 // scene's `panels:` key; each variant surveyed once for both. Throws as `load`,
 // sim::yaml::SceneError (`panels: impacts` where a variant has none), VariantDiverged
 RenderPlan planLecture(const LoadVariant& load, const LectureRequest& request);
+
+// the same for a 3D scene; `--impacts` and `--strobe` are UsageErrors (nothing collides in 3D, and
+// earlier poses are ghosted in 2D frames only). Throw as `load`, VariantDiverged3
+RenderPlan3 planVideos3(const LoadVariant3& load, const VideoRequest& request);
+RenderPlan3 planStills3(const LoadVariant3& load, const StillRequest& request);
+RenderPlan3 planLecture3(const LoadVariant3& load, const LectureRequest& request);
 
 }  // namespace render::video

@@ -9,7 +9,9 @@
 #include "render/jobs/exit_status.h"
 #include "render/video/output_names.h"
 #include "render/video/render_plan.h"
+#include "render/scene3d/scene.h"
 #include "sim/yaml/scene_error.h"
+#include "sim/yaml/scene_source.h"
 #include "support/drawn_scene.h"
 
 using render::video::FrameSize;
@@ -42,6 +44,26 @@ const std::string kLesson = drawn_scene::bounce("2",
 
 render::video::LoadVariant lesson(const std::string& yaml = kLesson) {
   return [yaml](const std::string& variant) { return drawn_scene::load(yaml, variant, "lesson.yaml"); };
+}
+
+// a 3D box spun about two of its axes, at 4 and 2 rad/s, 1 s and 0.5 s long, with poll panels at 0.25 s
+const char* const kSpin = R"(name: spin
+dimensions: 3
+duration: 1
+sim: {integrator: splitting, dt: 0.01}
+bodies:
+  - {name: box, shape: {box: [0.1, 0.4, 0.8]}, angular_velocity: [0, 0, 4]}
+render: {size: [160, 90], panels: [0.25]}
+variants:
+  fast: {}
+  slow: {duration: 0.5, bodies: [{name: box, angular_velocity: [0, 2, 0]}]}
+)";
+
+render::video::LoadVariant3 spin(std::map<std::string, int>* reads = nullptr) {
+  return [reads](const std::string& variant) {
+    if (reads) ++(*reads)[variant];
+    return render::scene3d::readScene(sim::yaml::sceneSourceText(kSpin, "spin.yaml", variant));
+  };
 }
 
 std::string usageError(const std::function<void()>& plan) {
@@ -235,4 +257,33 @@ TEST_CASE("lecture panels: the default at the shortest variant's duration; impac
     CHECK(e.message ==
           "'panels: impacts' needs an impact in every variant, and variant 'brief' has none; give panel times instead, e.g. [0, 0.3]");
   }
+}
+
+TEST_CASE("3D scenes are planned as 2D ones: the same names, one survey per variant, panels at the shortest duration") {
+  std::map<std::string, int> reads;
+  const render::video::RenderPlan3 plan = render::video::planLecture3(spin(&reads), {.root = "pack", .file = "spin.yaml", .fps = 10});
+  CHECK(reads == std::map<std::string, int>{{"", 1}, {"fast", 1}, {"slow", 1}});
+  CHECK(plan.paths() == std::vector<std::string>{"pack/spin/spin-fast.mp4", "pack/spin/spin-fast.png", "pack/spin/spin-slow.mp4",
+                                                 "pack/spin/spin-slow.png", "pack/spin/spin-panels-t0.25.png"});
+  // each video over its own variant's duration at 10 fps, no title card: 10 and 5 frames
+  CHECK(plan.videos[0].frameCount == 10);
+  CHECK(plan.videos[1].frameCount == 5);
+  CHECK(plan.videos[1].duration == 0.5);
+  CHECK(plan.videos[0].posterStrobe == 0);
+  // the panels: both variants at 0.25 s, titled by letter and name, with their scales shared
+  REQUIRE(plan.stills);
+  CHECK(plan.stills->shots.front().instants == std::vector<double>{0.25, 0.25});
+  CHECK(plan.stills->shots.front().titles == std::vector<std::string>{"A: fast", "B: slow"});
+  CHECK(plan.variants[1].survey.maxOmega == doctest::Approx(2.0));
+  CHECK(plan.stills->surveys[1].maxOmega == doctest::Approx(4.0));
+
+  // a snapshot of one variant at two times, and what 3D refuses
+  const render::video::RenderPlan3 shots = render::video::planStills3(spin(), {.root = "o", .file = "spin.yaml", .variant = "slow", .times = {0, 0.5}});
+  CHECK(shots.paths() == std::vector<std::string>{"o/spin/spin-slow-t0.png", "o/spin/spin-slow-t0.5.png"});
+  CHECK(usageError([] { render::video::planStills3(spin(), {.file = "spin.yaml", .variant = "slow", .times = {0.75}}); }) ==
+        "--at: 0.75 s is outside the scene's duration [0, 0.5]");
+  CHECK(usageError([] { render::video::planStills3(spin(), {.file = "spin.yaml", .impacts = true}); }) ==
+        "--impacts: spin.yaml is a 3D scene, and nothing collides in 3D; give times with --at");
+  CHECK(usageError([] { render::video::planStills3(spin(), {.file = "spin.yaml", .times = {0}, .strobe = 2}); }) ==
+        "--strobe: earlier poses are ghosted in 2D frames only");
 }
