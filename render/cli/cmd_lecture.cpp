@@ -104,9 +104,11 @@ std::vector<std::string> jobCommand(const LectureCommand& o, const std::string& 
 // throws sim::yaml::SceneError
 PackScene planScene(LectureRequest request, const std::string& file) {
   request.file = file;
+  PackScene scene;
+  scene.file = file;
   if (isSceneFile3d(file)) {
     const LoadVariant3 load = lectureLoader3(file);
-    PackScene scene{file, "", {}, std::nullopt, nullptr, load(""), std::nullopt};
+    scene.base3 = load("");
     scene.name = scene.base3->model.name;
     try {
       scene.plan3 = planLecture3(load, request);
@@ -116,13 +118,15 @@ PackScene planScene(LectureRequest request, const std::string& file) {
     return scene;
   }
   const LoadVariant load = lectureLoader(file);
-  render::scene::Scene base = load("");
+  scene.base = load("");
   try {
-    RenderPlan plan = planLecture(load, request);
-    return {file, plan.scene, std::move(base), std::move(plan), nullptr, std::nullopt, std::nullopt};
+    scene.plan = planLecture(load, request);
+    scene.name = scene.plan->scene;
   } catch (const VariantDiverged& d) {
-    return {file, d.model.name, std::move(base), std::nullopt, std::current_exception(), std::nullopt, std::nullopt};
+    scene.name = d.model.name;
+    scene.diverged = std::current_exception();
   }
+  return scene;
 }
 
 // one scene in this process, as `render --all-variants` and `snapshot --panels` would write it,
