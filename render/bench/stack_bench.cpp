@@ -27,6 +27,8 @@
 //   worst_top_second_half_m,                    the largest top displacement and body speed over the
 //   worst_fastest_second_half_m_per_s           second half of the timed steps, every 10 steps
 //   diverged                                    1 when a state stopped being finite
+//   substeps, contact_hertz                     soft_step's rows: its settings (--substeps,
+//                                               --contact-hertz); empty on the others
 //
 // rigidreel is reached only through scene definitions and World's public members (bodies,
 // advanceTo), so the program does not depend on how World is organised inside.
@@ -54,6 +56,7 @@
 #include <vector>
 
 #include "stack_layouts.h"
+#include "sim/core/settings.h"
 #include "sim/scene/scene_build.h"
 
 namespace {
@@ -65,6 +68,10 @@ struct RunOptions {
   int sample = 10;                // over the second half, measure every this many steps (untimed)
   bool box2dOuterSkin = true;     // Box2D boxes as wide as ours (see the top of the file)
   bool box2dContinuous = false;   // Box2D's time of impact against static bodies (rigidreel has none)
+  // rigidreel's soft_step: substeps per step and contact stiffness, as a scene's sim: {substeps,
+  // contact_hertz} (the stiffness capped at a quarter of the substep rate)
+  int substeps = sim::core::settings::kSubsteps;
+  double contactHertz = sim::core::settings::kContactHertz;
 };
 
 // one engine holding one layout: step it, read the boxes back (in layout order)
@@ -138,7 +145,7 @@ RunResult run(StackRun& engine, const char* name, const bench::StackLayout& layo
 
 // --- rigidreel, through a scene definition and World's public members ---
 
-sim::scene::SceneDef sceneOf(const bench::StackLayout& layout, const bench::StackSettings& s,
+sim::scene::SceneDef sceneOf(const bench::StackLayout& layout, const bench::StackSettings& s, const RunOptions& o,
                              sim::world::CollisionMethod method) {
   sim::scene::SceneDef def;
   def.name = layout.name;
@@ -150,6 +157,8 @@ sim::scene::SceneDef sceneOf(const bench::StackLayout& layout, const bench::Stac
   def.collisions = method;
   def.velocityIterations = s.velocityIterations;
   def.positionIterations = s.positionIterations;
+  def.substeps = o.substeps;
+  def.contactHertz = o.contactHertz;
   sim::scene::BodyDef ground;
   ground.name = "ground";
   ground.shape = sim::core::makeBox(2.0 * layout.groundHalfWidth, 1.0);
@@ -169,8 +178,8 @@ sim::scene::SceneDef sceneOf(const bench::StackLayout& layout, const bench::Stac
 
 class OurRun : public StackRun {
  public:
-  OurRun(const bench::StackLayout& layout, const bench::StackSettings& s, sim::world::CollisionMethod method)
-      : world_(sim::scene::buildWorld(sceneOf(layout, s, method))), dt_(s.dt) {
+  OurRun(const bench::StackLayout& layout, const bench::StackSettings& s, const RunOptions& o, sim::world::CollisionMethod method)
+      : world_(sim::scene::buildWorld(sceneOf(layout, s, o, method))), dt_(s.dt) {
     world_.start();
   }
   void advance(int steps) override {
@@ -288,6 +297,10 @@ int main(int argc, char** argv) {
   app.add_option("--iterations", settings.velocityIterations, "velocity iterations")->check(CLI::Range(1, 1000));
   app.add_option("--position-iterations", settings.positionIterations, "position iterations")->check(CLI::Range(0, 1000));
   app.add_option("--friction", settings.friction, "Coulomb friction of every box and the ground");
+  app.add_option("--substeps", options.substeps, "rigidreel's soft_step: substeps per step")->check(CLI::Range(1, 1000));
+  app.add_option("--contact-hertz", options.contactHertz,
+                 "rigidreel's soft_step: contact stiffness, Hz (capped at a quarter of the substep rate)")
+      ->check(CLI::PositiveNumber);
   app.add_option("--every", options.every, "print the measures every N steps");
   app.add_option("--box2d-skin", skin, "outer: Box2D's rounded boxes as wide as ours; core: SetAsBox(0.5, 0.5)")
       ->check(CLI::IsMember({"outer", "core"}));
@@ -322,11 +335,13 @@ int main(int argc, char** argv) {
       csv << "layout,engine,boxes,settle_steps,first_timed_step,last_timed_step,velocity_iterations,"
              "position_iterations,ms_per_step,cpu_ms_per_step,cpu_ratio_to_box2d,top_displacement_m,max_off_rest_x_m,"
              "fastest_m_per_s,fastest_rad_per_s,moved,worst_top_second_half_m,worst_fastest_second_half_m_per_s,"
-             "diverged\n";
+             "diverged,substeps,contact_hertz\n";
   }
   std::printf("gravity %g, dt %.6g, %d velocity and %d position iterations, friction %g, restitution %g\n",
               settings.gravity, settings.dt, settings.velocityIterations, settings.positionIterations, settings.friction,
               settings.restitution);
+  std::printf("soft_step: %d substeps, contacts at %g Hz (at most a quarter of the substep rate)\n", options.substeps,
+              options.contactHertz);
   const int dropSettle = static_cast<int>(std::lround(options.settleSeconds / settings.dt));
   std::printf("timed: %d steps after building; touching layouts steps 1-%d (standing from the start), dropped ones "
               "steps %d-%d (after %d untimed steps, %g s, to settle); every engine over the same steps\n",
@@ -360,7 +375,10 @@ int main(int argc, char** argv) {
             << r.settleSteps + 1 << ',' << r.settleSteps + options.steps << ',' << settings.velocityIterations << ','
             << settings.positionIterations << ',' << r.msPerStep << ',' << r.cpuMsPerStep << ',' << ratio << ','
             << m.topDisplacement << ',' << m.maxOffRestX << ',' << m.fastestSpeed << ',' << m.fastestSpin << ','
-            << m.moved << ',' << r.worstTop << ',' << r.worstSpeed << ',' << r.diverged << '\n';
+            << m.moved << ',' << r.worstTop << ',' << r.worstSpeed << ',' << r.diverged << ',';
+      // the soft_step settings on soft_step's rows only
+      if (name == "soft_step") csv << options.substeps << ',' << options.contactHertz;
+      csv << '\n';
       std::fflush(stdout);
       status |= r.diverged;
     };
@@ -373,7 +391,7 @@ int main(int argc, char** argv) {
 #endif
     for (sim::world::CollisionMethod method : ourMethods) {
       const std::string name(sim::world::collisionMethodName(method));
-      OurRun e(*layout, settings, method);
+      OurRun e(*layout, settings, options, method);
       row(name, run(e, name.c_str(), *layout, settleSteps, options));
     }
   }
