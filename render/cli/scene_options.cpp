@@ -17,6 +17,9 @@ void SceneOptions::addTo(CLI::App& command) {
   command.add_option("--integrator", integrator, "explicit_euler, symplectic_euler, midpoint or rk4 (and splitting in 3D)");
   command.add_option("--dt", dt, "fixed time step in seconds");
   command.add_option("--collisions", collisions, "auto, none, event, isolated, sequential or soft_step");
+  command.add_option("--substeps", substeps, "soft_step: substeps per step, 1 to 1000 (the scene's sim: substeps)");
+  command.add_option("--contact-hertz", contactHertz,
+                     "soft_step: contact stiffness in Hz, at most a quarter of the substep rate (the scene's sim: contact_hertz)");
 }
 
 SceneFile SceneOptions::load() const {
@@ -40,6 +43,16 @@ SceneFile SceneOptions::load() const {
       throw UsageError("--collisions: unknown collision method '" + collisions + "'; choose one of: " + sim::world::kCollisionMethodNames.list());
     def.collisions = *method;
   }
+  // (as in the scene's sim: block, they change soft_step only)
+  if (substeps) {
+    if (*substeps < 1 || *substeps > 1000) throw UsageError("--substeps: give a whole number from 1 to 1000");
+    def.substeps = *substeps;
+  }
+  if (contactHertz) {
+    if (!(*contactHertz > 0.0) || !std::isfinite(*contactHertz))
+      throw UsageError("--contact-hertz: the contact stiffness must be a positive finite number of Hz");
+    def.contactHertz = *contactHertz;
+  }
   return file;
 }
 
@@ -61,6 +74,9 @@ SceneFile3 SceneOptions::load3() const {
   }
   if (!collisions.empty())
     throw UsageError("--collisions: " + scene + " is a 3D scene, and 3D scenes have no contacts (bodies pass through each other)");
+  if (substeps || contactHertz)
+    throw UsageError(std::string(substeps ? "--substeps" : "--contact-hertz") + ": " + scene +
+                     " is a 3D scene, and 3D scenes have no contacts to solve");
   return file;
 }
 

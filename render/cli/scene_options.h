@@ -18,13 +18,15 @@ struct SceneOptions {
   std::string integrator;
   std::optional<double> dt;
   std::string collisions;
+  std::optional<int> substeps;         // soft_step's sim: substeps
+  std::optional<double> contactHertz;  // soft_step's sim: contact_hertz, Hz
 
-  // --variant, --integrator, --dt, --collisions
+  // --variant, --integrator, --dt, --collisions, --substeps, --contact-hertz
   void addTo(CLI::App& command);
   // the scene with the overrides applied; throws sim::yaml::SceneError or UsageError
   SceneFile load() const;
   // the same for a 3D scene (dimensions: 3), whose integrators include the splitting and which has
-  // no collision method to choose
+  // no collision method to choose (nor soft_step's settings)
   SceneFile3 load3() const;
   // any variant of the scene ("" the base scene) with the overrides applied, as a render plan reads them
   render::video::LoadVariant variantLoader() const;

@@ -176,6 +176,23 @@ expect "--dt 0 exits 2" 2 err "--dt" simulate "$POLL" --dt 0
 expect "--dt -1 exits 2" 2 err "--dt" simulate "$POLL" --dt -1
 expect "--dt nan exits 2" 2 err "--dt" simulate "$POLL" --dt nan
 expect "--until -1 exits 2" 2 err "--until" simulate "$POLL" --until -1
+expect "--substeps 0 exits 2" 2 err "--substeps: give a whole number from 1 to 1000" simulate "$POLL" --substeps 0
+expect "--contact-hertz -3 exits 2" 2 err "--contact-hertz: the contact stiffness must be a positive" simulate "$POLL" --contact-hertz -3
+expect "--contact-hertz inf exits 2" 2 err "--contact-hertz" simulate "$POLL" --contact-hertz inf
+
+# --substeps and --contact-hertz set what the scene's sim: block sets: the arch's soft_step_stiff
+# variant (sim: {substeps: 12, contact_hertz: 100}) and the base scene with both on the command line
+# end in the same state, bit for bit, and not in the base scene's
+ARCH=$SCENES/arch.yaml
+state() { "$BIN" simulate "$ARCH" --json "$@" | sed 's/"variant":[^,]*,//'; }
+stiff_yaml=$(state --variant soft_step_stiff)
+stiff_cli=$(state --substeps 12 --contact-hertz 100)
+base=$(state)
+if [ -n "$stiff_cli" ] && [ "$stiff_cli" = "$stiff_yaml" ] && [ "$stiff_cli" != "$base" ]; then
+  ok "--substeps 12 --contact-hertz 100 runs the arch as its variant with sim: {substeps: 12, contact_hertz: 100}"
+else
+  not_ok "--substeps 12 --contact-hertz 100 runs the arch as its variant with sim: {substeps: 12, contact_hertz: 100}"
+fi
 expect "no subcommand exits 2" 2 err "subcommand" 
 expect "an unknown subcommand exits 2" 2 err "" render-everything "$POLL"
 expect "simulate without a scene exits 2" 2 err "scene" simulate
@@ -354,6 +371,7 @@ bodies:
 EOF
 expect "a quaternion far from unit length is bad input at FILE:LINE:COL" 2 err "far_quaternion.yaml:5:18" check far_quaternion.yaml
 expect "--collisions on a 3D scene exits 2: nothing collides in 3D" 2 err "no contacts" simulate "$TOP" --collisions event
+expect "--contact-hertz on a 3D scene exits 2: it has no contacts to solve" 2 err "no contacts to solve" simulate "$TOP" --contact-hertz 60
 expect "snapshot --impacts of a 3D scene exits 2" 2 err "nothing collides in 3D" snapshot "$TOP" --impacts -o snap3
 expect "snapshot of a 3D scene writes its PNG" 0 out "13_symmetric_top-oblate-t0.5.png" snapshot "$TOP" --variant oblate --at 0.5 --size 160x90 -o snap3
 
