@@ -4,6 +4,8 @@
 // the two-body effective mass into the body–obstacle one, m_eff = (m⁻¹ + (r′ × n̂)²/I)⁻¹.
 #pragma once
 
+#include <algorithm>
+
 #include "sim/core/body.h"
 
 namespace sim::collision {
@@ -39,6 +41,18 @@ void applyAt(Bd& a, Bd& b, const P& p, const Vec2& j) {
   a.omega += a.invInertia * cross(p.rA, j);
   b.v -= b.invMass * j;
   b.omega -= b.invInertia * cross(p.rB, j);
+}
+
+// Coulomb friction at the point, one Gauss–Seidel update along tangent t (Catto 2006): the
+// accumulated tangent impulse p.tangentImpulse takes the increment that stops the sliding, clamped
+// to ±μ times the point's accumulated normal impulse
+template <class Bd, class P>
+void solveFrictionAt(Bd& a, Bd& b, P& p, const Vec2& t, double friction) {
+  const double lambda = -p.tangentMass * t.dot(relativeVelocityAt(a, b, p));
+  const double limit = friction * p.normalImpulse;
+  const double total = std::clamp(p.tangentImpulse + lambda, -limit, limit);
+  applyAt(a, b, p, (total - p.tangentImpulse) * t);
+  p.tangentImpulse = total;
 }
 
 // j to A and −j to B at world point r

@@ -188,14 +188,7 @@ void solveVelocities(std::vector<VelocityBody>& bodies, std::vector<SolverContac
     const Vec2 n = c.n, t = tangentOf(n);
     // Coulomb friction: the accumulated tangent impulse stays within ±μ times the normal one
     if (c.friction > 0.0)
-      for (int k = 0; k < c.count; ++k) {
-        SolverPoint& s = c.p[k];
-        const double lambda = -s.tangentMass * t.dot(relativeVelocityAt(a, b, s));
-        const double limit = c.friction * s.normalImpulse;
-        const double total = std::clamp(s.tangentImpulse + lambda, -limit, limit);
-        applyAt(a, b, s, (total - s.tangentImpulse) * t);
-        s.tangentImpulse = total;
-      }
+      for (int k = 0; k < c.count; ++k) solveFrictionAt(a, b, c.p[k], t, c.friction);
     if (c.block && solveNormalBlock(bodies, c)) continue;
     // the normal impulse pushes, never pulls: clamp the accumulated impulse at zero
     for (int k = 0; k < c.count; ++k) {

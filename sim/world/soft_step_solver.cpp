@@ -222,14 +222,7 @@ class SoftStepSolver final : public Method {
       }
       if (c.friction <= 0.0) continue;
       const Vec2 t = tangentOf(c.n);
-      for (int k = 0; k < c.count; ++k) {
-        SoftPoint& p = c.p[k];
-        const double lambda = -p.tangentMass * t.dot(relativeVelocityAt(a, b, p));
-        const double limit = c.friction * p.normalImpulse;
-        const double total = std::clamp(p.tangentImpulse + lambda, -limit, limit);
-        applyAt(a, b, p, (total - p.tangentImpulse) * t);
-        p.tangentImpulse = total;
-      }
+      for (int k = 0; k < c.count; ++k) solveFrictionAt(a, b, c.p[k], t, c.friction);
     }
   }
 
