@@ -47,6 +47,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <fstream>
 #include <iostream>
@@ -300,7 +301,10 @@ int main(int argc, char** argv) {
   app.add_option("--substeps", options.substeps, "rigidreel's soft_step: substeps per step")->check(CLI::Range(1, 1000));
   app.add_option("--contact-hertz", options.contactHertz,
                  "rigidreel's soft_step: contact stiffness, Hz (capped at a quarter of the substep rate)")
-      ->check(CLI::PositiveNumber);
+      ->check([](const std::string& text) {
+        const double hz = std::strtod(text.c_str(), nullptr);
+        return hz > 0.0 && std::isfinite(hz) ? std::string() : "the contact stiffness must be a positive finite number of Hz";
+      });
   app.add_option("--every", options.every, "print the measures every N steps");
   app.add_option("--box2d-skin", skin, "outer: Box2D's rounded boxes as wide as ours; core: SetAsBox(0.5, 0.5)")
       ->check(CLI::IsMember({"outer", "core"}));
@@ -377,7 +381,10 @@ int main(int argc, char** argv) {
             << m.topDisplacement << ',' << m.maxOffRestX << ',' << m.fastestSpeed << ',' << m.fastestSpin << ','
             << m.moved << ',' << r.worstTop << ',' << r.worstSpeed << ',' << r.diverged << ',';
       // the soft_step settings on soft_step's rows only
-      if (name == "soft_step") csv << options.substeps << ',' << options.contactHertz;
+      if (name == "soft_step")
+        csv << options.substeps << ',' << options.contactHertz;
+      else
+        csv << ',';
       csv << '\n';
       std::fflush(stdout);
       status |= r.diverged;

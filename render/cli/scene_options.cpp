@@ -19,7 +19,7 @@ void SceneOptions::addTo(CLI::App& command) {
   command.add_option("--collisions", collisions, "auto, none, event, isolated, sequential or soft_step");
   command.add_option("--substeps", substeps, "soft_step: substeps per step, 1 to 1000 (the scene's sim: substeps)");
   command.add_option("--contact-hertz", contactHertz,
-                     "soft_step: contact stiffness in Hz, at most a quarter of the substep rate (the scene's sim: contact_hertz)");
+                     "soft_step: contact stiffness in Hz, capped at a quarter of the substep rate (the scene's sim: contact_hertz)");
 }
 
 SceneFile SceneOptions::load() const {

@@ -177,6 +177,7 @@ expect "--dt -1 exits 2" 2 err "--dt" simulate "$POLL" --dt -1
 expect "--dt nan exits 2" 2 err "--dt" simulate "$POLL" --dt nan
 expect "--until -1 exits 2" 2 err "--until" simulate "$POLL" --until -1
 expect "--substeps 0 exits 2" 2 err "--substeps: give a whole number from 1 to 1000" simulate "$POLL" --substeps 0
+expect "--substeps 1001 exits 2" 2 err "--substeps: give a whole number from 1 to 1000" simulate "$POLL" --substeps 1001
 expect "--contact-hertz -3 exits 2" 2 err "--contact-hertz: the contact stiffness must be a positive" simulate "$POLL" --contact-hertz -3
 expect "--contact-hertz inf exits 2" 2 err "--contact-hertz" simulate "$POLL" --contact-hertz inf
 

@@ -269,7 +269,6 @@ TEST_CASE("3D scenes are planned as 2D ones: the same names, one survey per vari
   CHECK(plan.videos[0].frameCount == 10);
   CHECK(plan.videos[1].frameCount == 5);
   CHECK(plan.videos[1].duration == 0.5);
-  CHECK(plan.videos[0].posterStrobe == 0);
   // the panels: both variants at 0.25 s, titled by letter and name, with their scales shared
   REQUIRE(plan.stills);
   CHECK(plan.stills->shots.front().instants == std::vector<double>{0.25, 0.25});
