@@ -51,7 +51,7 @@ TEST_CASE("the reference edge, the incident vertex and the separation; every oth
   CHECK(lines[1] == "point IncidentVertex#1 (-0.5,0.6)");
   // its separation, a label on the point 0.05 inside the base below the edge's middle (the frame's
   // label placer may move it off another)
-  CHECK(lines[2] == "label Label#0 (0,0.45) beyond (0,0) \"separation 0.1 m\"");
+  CHECK(lines[2] == "label Label#0 (0,0.45) beyond (0,0) \"separation 0.100 m\"");
 
   // every axis: the 7 other edges of both polygons, each labeled inside its own polygon
   DrawList every;
