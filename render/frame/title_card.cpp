@@ -13,7 +13,7 @@ using namespace render::scene;
 
 namespace {
 
-// the title and the text, as multiples of the frame's font size; the text shrinks to kLeastScale
+// the title and the text, as multiples of the frame's font size; both shrink to kLeastScale of that
 constexpr double kTitleScale = 2.2, kTextScale = 1.2, kLeastScale = 0.75;
 // lines at most this fraction of the frame's width, the block at most this fraction of its height
 constexpr double kTitleWidth = 0.9, kTextWidth = 0.75, kBlockHeight = 0.9;
@@ -31,12 +31,16 @@ std::string words(const std::string& text) {
 
 CardLayout layoutCard(int width, int height, const std::string& title, const std::string& text, double fontSize,
                       const SizedWidth& widthAt) {
-  const int titleSize = static_cast<int>(std::lround(kTitleScale * fontSize));
-  const auto titleLines = wrapLines(title, static_cast<int>(kTitleWidth * width), kTitleLines, widthAt(titleSize));
-  const double titleLine = 1.2 * titleSize;
   const std::string whole = words(text);
-  const int least = std::max(1, static_cast<int>(std::lround(kLeastScale * fontSize)));
+  // down to 3/4 of the text size, or of the frame's own proportion (height / 36) where the text size
+  // is held up by its floor of 11 px: a 160 × 90 preview sets its card as a 1080p one, only smaller
+  const double proportional = std::min(fontSize, height / 36.0);
+  const int least = std::max(1, static_cast<int>(std::lround(kLeastScale * proportional)));
   for (int size = static_cast<int>(std::lround(kTextScale * fontSize)); size >= least; --size) {
+    // the title shrinks with the text, keeping their proportion
+    const int titleSize = std::max(1, static_cast<int>(std::lround(size * kTitleScale / kTextScale)));
+    const auto titleLines = wrapLines(title, static_cast<int>(kTitleWidth * width), kTitleLines, widthAt(titleSize));
+    const double titleLine = 1.2 * titleSize;
     // every word, on as many lines as it takes: the layout fits when none was cut and the block is on the card
     const int maxWidth = static_cast<int>(kTextWidth * width);
     const auto lines = wrapLines(whole, maxWidth, 1 << 20, widthAt(size));

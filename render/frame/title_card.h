@@ -32,8 +32,9 @@ struct CardLayout {
 using SizedWidth = std::function<TextWidth(int sizePx)>;
 
 // the card `width` × `height` pixels for a frame whose text is `fontSize` px: the title at 2.2 times
-// it (at most 2 lines, "…" beyond), the text at 1.2 times it, shrunk one pixel at a time down to
-// 0.75 times it until every word is on the card
+// it (at most 2 lines, "…" beyond), the text at 1.2 times it, both shrunk together one pixel of the
+// text at a time, the text down to 0.75 times the font size (or height / 36 when smaller), until every
+// word is on the card
 CardLayout layoutCard(int width, int height, const std::string& title, const std::string& text, double fontSize,
                       const SizedWidth& widthAt);
 // the card drawn from its layout

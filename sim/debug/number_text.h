@@ -1,5 +1,5 @@
-// Numbers as a lecture slide writes them, the one format of every value a frame shows (the
-// simulator's separations, the renderer's overlays): three significant digits in plain notation from
+// Numbers as a slide writes them, the one format of every value shown (the simulator's
+// separations, the renderer's overlays): three significant digits in plain notation from
 // 0.001 to 10,000 ("0.00584", "−2.00", "1230"), a power of ten outside it ("5.84 × 10⁻¹³"), a true
 // minus sign (U+2212), and 0 written "0".
 #pragma once

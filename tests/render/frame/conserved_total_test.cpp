@@ -4,6 +4,7 @@
 
 #include <set>
 
+#include "render/draw/draw_list.h"
 #include "render/frame/conserved_total.h"
 #include "render/frame/energy_panel.h"
 #include "render/frame/quantity_text.h"

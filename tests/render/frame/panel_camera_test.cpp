@@ -37,7 +37,8 @@ TEST_CASE("a panel camera holds every arrow each panel draws, where the bodies' 
   const auto arrowsAt = [&](const render::draw::Camera& camera) {
     render::frame::SceneRun run(s, camera, survey);
     render::draw::Bounds arrows;
-    for (const auto& c : run.drawListAt(0.0).calls())
+    const render::draw::DrawList list = run.drawListAt(0.0);
+    for (const auto& c : list.calls())
       if (c.kind == render::draw::DrawList::Kind::Arrow)
         for (const auto& p : c.points) arrows.add(p);
     return arrows;
@@ -45,5 +46,6 @@ TEST_CASE("a panel camera holds every arrow each panel draws, where the bodies' 
   REQUIRE_FALSE(arrowsAt(plain).empty());
   CHECK_FALSE(inside(plain.view(), arrowsAt(plain)));
   const render::draw::Camera fitted = render::frame::panelCamera({s}, {survey}, 0);
-  CHECK(inside(fitted.view(), arrowsAt(fitted)));
+  const render::draw::Bounds got = arrowsAt(fitted), view = fitted.view();
+  CHECK(inside(view, got));
 }
