@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "render/frame/between_steps.h"
 #include "render/frame/title_card.h"
 #include "render/scene/scene_style.h"
 #include "sim/debug/describe.h"
@@ -57,26 +58,10 @@ SceneRun::SceneRun(const render::scene::Scene& def, const Camera& camera, const 
 }
 
 const SceneRun::State& SceneRun::reach(double t) {
-  sim::world::World& world = run_.world;
-  const double snap = sim::core::settings::kTimeSnap * world.dt;
-  if (t < world.time - snap) throw std::logic_error("SceneRun: a picture earlier than the run's time");
   observers_.history = &run_.history;
-  // the run's own steps up to t, none split there
-  world.advanceWithin(t, std::max(t, end_), &observers_);
-  shown_ = &run_;
-  if (std::abs(world.time - t) <= snap) return run_;
-  // between two steps: a copy of the run, its history too (an impact inside the part step shows)
-  if (!between_) between_ = std::make_unique<State>(run_);
-  else *between_ = run_;
-  try {
-    between_->world.advanceTo(t, &between_->history);
-  } catch (const std::runtime_error&) {
-    // a part step the run never takes may fail where the run does not (impacts piling up in a
-    // step cut short): the run's own state is shown; its own failures come in its own steps
-    return run_;
-  }
-  shown_ = between_.get();
-  return *between_;
+  const State& state = reachBetween(run_, between_, t, end_, &observers_);
+  shown_ = &state;
+  return state;
 }
 
 void SceneRun::finish() {

@@ -76,9 +76,7 @@ class SceneRun {
   };
   // the world built and its history started
   static State startState(const sim::scene::SceneDef& model, History::Options options);
-  // the state at time t: the run advanced by its own steps that end by t, then, when t falls
-  // between two of them, a copy of it advanced to t (the run itself when that copy fails: the run
-  // meets its own failures in its own steps)
+  // the state at time t: the run by its own steps, or a copy of it advanced to t (between_steps.h)
   const State& reach(double t);
   // ghost i of `strobe`: the moving bodies of a state, fading
   static DrawList ghostOf(const State& state, int i, int strobe);

@@ -1,9 +1,8 @@
 #include "render/frame3d/scene_run3.h"
 
-#include <algorithm>
-#include <cmath>
 #include <stdexcept>
 
+#include "render/frame/between_steps.h"
 #include "render/frame/title_card.h"
 #include "sim/scene3d/scene_build.h"
 
@@ -46,19 +45,10 @@ void SceneRun3::Observers::afterEvent(const sim::world3d::World& w, const sim::w
 }
 
 const SceneRun3::State& SceneRun3::reach(double t) {
-  sim::world3d::World& world = run_.world;
-  const double snap = sim::core::settings::kTimeSnap * world.dt;
-  if (t < world.time - snap) throw std::logic_error("SceneRun3: a picture earlier than the run's time");
   observers_.history = &run_.history;
-  // the run's own steps up to t, none split there
-  world.advanceWithin(t, std::max(t, end_), &observers_);
-  shown_ = &run_;
-  if (std::abs(world.time - t) <= snap) return run_;
-  if (!between_) between_ = std::make_unique<State>(run_);
-  else *between_ = run_;
-  between_->world.advanceTo(t, &between_->history);
-  shown_ = between_.get();
-  return *between_;
+  const State& state = render::frame::reachBetween(run_, between_, t, end_, &observers_);
+  shown_ = &state;
+  return state;
 }
 
 void SceneRun3::finish() {

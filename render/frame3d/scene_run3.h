@@ -54,8 +54,7 @@ class SceneRun3 final : public render::frame::FrameSource {
     void afterStep(const sim::world3d::World& w) override;
     void afterEvent(const sim::world3d::World& w, const sim::world3d::ImpulseEvent& e) override;
   };
-  // the state at time t: the run advanced by its own steps that end by t, then, when t falls
-  // between two of them, a copy advanced to t
+  // the state at time t: the run by its own steps, or a copy of it advanced to t (between_steps.h)
   const State& reach(double t);
 
   const render::scene3d::Scene& def_;
