@@ -1,5 +1,8 @@
 #include "render/frame/panel_camera.h"
 
+#include <iostream>
+#include <sstream>
+
 #include "render/frame/scene_run.h"
 
 namespace render::frame {
@@ -28,6 +31,20 @@ bool fixedToFrame(Role r) {
       return false;
   }
 }
+
+// standard error held back while the camera is fitted: the frames drawn to fit it are never shown,
+// so a label they drop is no news (the frames drawn later say so themselves); planning is one thread
+class QuietErrors {
+ public:
+  QuietErrors() : saved_(std::cerr.rdbuf(held_.rdbuf())) {}
+  ~QuietErrors() { std::cerr.rdbuf(saved_); }
+  QuietErrors(const QuietErrors&) = delete;
+  QuietErrors& operator=(const QuietErrors&) = delete;
+
+ private:
+  std::ostringstream held_;
+  std::streambuf* saved_;
+};
 
 bool inside(const Bounds& outer, const Bounds& inner) {
   return inner.empty() || (outer.min.x() <= inner.min.x() && outer.min.y() <= inner.min.y() && inner.max.x() <= outer.max.x() &&
@@ -68,6 +85,7 @@ Camera panelCamera(const std::vector<render::scene::Scene>& scenes, const std::v
   for (const RunSurvey& s : surveys) bounds.add(s.bounds);
   Camera camera = cameraFor(scenes[widest], surveys[widest], bounds);
   if (scenes[widest].render.camera.automatic == false) return camera;  // a fixed window is the scene's to choose
+  const QuietErrors quiet;
   for (int round = 0; round < kFitRounds; ++round) {
     Bounds drawn;
     for (size_t v = 0; v < scenes.size(); ++v) {
