@@ -1,5 +1,6 @@
 // `rigidreel check`: load and validate scenes, say what model each uses, and compare every
 // variant's `expect` entries with the simulation.
+#include <filesystem>
 #include <iostream>
 #include <sstream>
 
@@ -7,6 +8,8 @@
 #include "render/cli/run_progress.h"
 #include "render/cli/scene_options.h"
 #include "render/cli/space3d.h"
+#include "render/cli/verbosity.h"
+#include "render/cli/lecture_files.h"
 #include "render/jobs/json_writer.h"
 #include "sim/scene/expect.h"
 #include "sim/scene/scene_build.h"
@@ -55,12 +58,14 @@ std::string formatValues(const std::vector<double>& v) {
   return s + ")";
 }
 
-// each comparison with its error; false when one failed
-bool report(const std::vector<sim::core::CheckResult>& results) {
+// each comparison with its error; false when one failed. With --quiet, the failed ones alone, each
+// after the file and variant (`quietLabel`), since nothing else names them
+bool report(const std::vector<sim::core::CheckResult>& results, const std::string& quietLabel = "") {
   bool ok = true;
   for (const sim::core::CheckResult& r : results) {
     ok = ok && r.passed();
-    std::cout << (r.passed() ? "  ok    " : "  FAIL  ") << "t = " << formatNumber(r.time) << "  " << r.quantity
+    if (!quietLabel.empty() && r.passed()) continue;
+    std::cout << quietLabel << (r.passed() ? "  ok    " : "  FAIL  ") << "t = " << formatNumber(r.time) << "  " << r.quantity
               << " = " << formatValues(r.actual) << ", expected " << formatValues(r.expected) << ", error "
               << formatNumber(r.error) << " (tolerance " << formatNumber(r.tolerance) << ")\n";
   }
@@ -68,40 +73,48 @@ bool report(const std::vector<sim::core::CheckResult>& results) {
 }
 
 // say where the event method found impacts piling up and made the contact resting
-void reportResting(const sim::scene::SceneDef& def, const sim::world::World& w) {
-  for (const sim::world::RestingRecord& r : w.resting) std::cout << "  resting: " << describeResting(def, r) << '\n';
+void reportResting(const sim::scene::SceneDef& def, const sim::world::World& w, std::ostream& out) {
+  for (const sim::world::RestingRecord& r : w.resting) out << "  resting: " << describeResting(def, r) << '\n';
 }
 
 // say when `auto` went from the event method to the stack solver during the run
-void reportSwitch(const sim::world::World& w) {
+void reportSwitch(const sim::world::World& w, std::ostream& out) {
   if (w.methodSwitchTime)
-    std::cout << "  switched: " << describeCollisionMethod(w) << '\n';
+    out << "  switched: " << describeCollisionMethod(w) << '\n';
 }
 
 // one scene, one variant ("" for the base); returns false when an expect fails
-bool checkCase(const std::string& file, const std::string& variant) {
+bool checkCase(const std::string& file, const std::string& variant, const Verbosity& say) {
   const sim::scene::SceneDef def = readSceneFile(file, variant).model();
   const std::string label = file + (variant.empty() ? "" : " [" + variant + "]");
-  std::cout << label << ": " << describeModel(def) << '\n';
+  // --quiet: only what failed, so the lines about the model and the run go nowhere
+  std::ostream& out = say.quiet ? nowhere() : std::cout;
+  out << label << ": " << describeModel(def) << '\n';
   sim::world::World w = startWorld(def, file);
-  std::cout << "  collisions: " << describeCollisionMethod(w) << '\n';
-  RunProgress2 progress(label, def.duration);
+  out << "  collisions: " << describeCollisionMethod(w) << '\n';
+  RunProgress2 progress(label, def.duration, nullptr, !say.quiet);
+  const auto impulses = [&] {
+    if (say.verbose)
+      for (const sim::world::ImpactRecord& r : w.impacts) out << "  impulse " << describeImpact(def, r) << '\n';
+  };
   if (def.expects.empty()) {
     // still run it: a scene that diverges is not a good scene
     w.advanceTo(def.duration, progress.observer());
     progress.finish();
-    std::cout << "  ran to t = " << formatNumber(def.duration) << " (no expect entries)";
-    if (!w.impacts.empty()) std::cout << ", " << w.impacts.size() << " impulses";
-    std::cout << '\n';
-    reportResting(def, w);
-    reportSwitch(w);
+    out << "  ran to t = " << formatNumber(def.duration) << " (no expect entries)";
+    if (!w.impacts.empty()) out << ", " << w.impacts.size() << " impulses";
+    out << '\n';
+    impulses();
+    reportResting(def, w, out);
+    reportSwitch(w, out);
     return true;
   }
   const std::vector<sim::core::CheckResult> results = sim::scene::runExpects(def, w, progress.observer());
   progress.finish();
-  const bool ok = report(results);
-  reportResting(def, w);
-  reportSwitch(w);
+  const bool ok = report(results, say.quiet ? label + ":" : "");
+  impulses();
+  reportResting(def, w, out);
+  reportSwitch(w, out);
   return ok;
 }
 
@@ -117,38 +130,53 @@ std::string describeModel3(const sim::scene3d::SceneDef& d) {
 }
 
 // one variant of a 3D scene ("" for the base); false when an expect fails
-bool checkCase3d(const std::string& file, const std::string& variant) {
+bool checkCase3d(const std::string& file, const std::string& variant, const Verbosity& say) {
   const sim::scene3d::SceneDef def = readSceneFile3(file, variant).model();
   const std::string label = file + (variant.empty() ? "" : " [" + variant + "]");
-  std::cout << label << ": " << describeModel3(def) << '\n';
-  std::cout << "  contacts: none (3D scenes model free rigid bodies: nothing collides, bodies pass through each other)\n";
+  std::ostream& out = say.quiet ? nowhere() : std::cout;
+  out << label << ": " << describeModel3(def) << '\n';
+  out << "  contacts: none (3D scenes model free rigid bodies: nothing collides, bodies pass through each other)\n";
   sim::world3d::World w = sim::scene3d::buildWorld(def);
-  RunProgress3 progress(label, def.duration);
+  RunProgress3 progress(label, def.duration, nullptr, !say.quiet);
   if (def.expects.empty()) {
     // still run it: a scene that diverges is not a good scene
     w.advanceTo(def.duration, progress.observer());
     progress.finish();
-    std::cout << "  ran to t = " << formatNumber(def.duration) << " (no expect entries)\n";
+    out << "  ran to t = " << formatNumber(def.duration) << " (no expect entries)\n";
     return true;
   }
   const std::vector<sim::core::CheckResult> results = sim::scene3d::runExpects(def, w, progress.observer());
   progress.finish();
-  return report(results);
+  return report(results, say.quiet ? label + ":" : "");
 }
 
-int check(const std::vector<std::string>& files) {
+// the files as given, a directory as every *.yaml in it, sorted (as `lecture` reads it)
+std::vector<std::string> sceneFiles(const std::vector<std::string>& arguments) {
+  std::vector<std::string> files;
+  for (const std::string& a : arguments) {
+    std::error_code error;
+    if (!std::filesystem::is_directory(a, error)) {
+      files.push_back(a);
+      continue;
+    }
+    for (const std::string& f : lectureSceneFiles({a})) files.push_back(f);
+  }
+  return files;
+}
+
+int check(const std::vector<std::string>& arguments, const Verbosity& say) {
   int code = kExitOk;
-  for (const std::string& file : files) {
+  for (const std::string& file : sceneFiles(arguments)) {
     try {
       if (isSceneFile3d(file)) {
-        if (!check3d(file) && code == kExitOk) code = kExitFailure;
+        if (!check3d(file, say) && code == kExitOk) code = kExitFailure;
         continue;
       }
       const sim::scene::SceneDef base = readSceneFile(file).model();
       std::vector<std::string> cases = base.variantNames;
       if (cases.empty()) cases.push_back("");
       for (const std::string& v : cases)
-        if (!checkCase(file, v) && code == kExitOk) code = kExitFailure;
+        if (!checkCase(file, v, say) && code == kExitOk) code = kExitFailure;
     } catch (const sim::yaml::SceneError& e) {
       std::cerr << e.what() << '\n';
       code = kExitBadInput;
@@ -170,19 +198,27 @@ int check(const std::vector<std::string>& files) {
 
 }  // namespace
 
-bool check3d(const std::string& file) {
+bool check3d(const std::string& file, const Verbosity& say) {
   std::vector<std::string> cases = readSceneFile3(file).model().variantNames;
   if (cases.empty()) cases.push_back("");
   bool ok = true;
-  for (const std::string& v : cases) ok = checkCase3d(file, v) && ok;
+  for (const std::string& v : cases) ok = checkCase3d(file, v, say) && ok;
   return ok;
 }
 
 void addCheckCommand(CLI::App& app, int& exitCode) {
   auto files = std::make_shared<std::vector<std::string>>();
+  auto say = std::make_shared<Verbosity>();
+  auto output = std::make_shared<std::string>();
   CLI::App* cmd = app.add_subcommand("check", "validate scenes and verify their expect entries");
-  cmd->add_option("scenes", *files, "scene files (YAML)")->required();
-  cmd->callback([files, &exitCode] { exitCode = check(*files); });
+  cmd->add_option("scenes", *files, "scene files (YAML) and directories of them (every *.yaml, sorted)")->required();
+  cmd->add_option("-o,--output", *output, "write the report to this file instead of standard output (errors stay on standard error)");
+  say->addTo(*cmd, "only what failed: the failed expect entries and the errors", "also every impulse the collision response applied");
+  cmd->callback([files, say, output, &exitCode] {
+    OutputFile report(*output);
+    exitCode = check(*files, *say);
+    report.commit();
+  });
 }
 
 }  // namespace render::cli

@@ -9,6 +9,7 @@
 #include "render/cli/run_progress.h"
 #include "render/cli/scene_options.h"
 #include "render/cli/space3d.h"
+#include "render/cli/verbosity.h"
 #include "render/jobs/atomic_file.h"
 #include "render/jobs/json_writer.h"
 #include "sim/scene/scene_build.h"
@@ -20,10 +21,11 @@ using namespace render::jobs;
 
 namespace {
 
-struct SimulateOptions : SceneOptions {
+struct SimulateOptions : SceneOptions, Verbosity {
   std::optional<double> until;
   bool json = false;
   std::string trace;
+  std::string output;  // -o: the state into this file instead of standard output
 };
 
 // one CSV row per body per step, and again after each event
@@ -118,7 +120,7 @@ void printJson(const sim::scene::SceneDef& def, const sim::world::World& w) {
   std::cout << '\n';
 }
 
-void printText(const sim::scene::SceneDef& def, const sim::world::World& w) {
+void printText(const sim::scene::SceneDef& def, const sim::world::World& w, bool everyImpulse) {
   std::cout << def.name << (def.variant.empty() ? "" : " [" + def.variant + "]") << ": t = " << formatNumber(w.time)
             << ", " << sim::core::integratorName(w.integrator) << ", dt = " << formatNumber(w.dt) << ", " << w.steps
             << " steps\n";
@@ -140,10 +142,18 @@ void printText(const sim::scene::SceneDef& def, const sim::world::World& w) {
   std::cout << "collisions: " << describeCollisionMethod(w) << "; " << w.impacts.size() << " impulses applied";
   for (const sim::world::RestingRecord& r : w.resting) std::cout << "; " << describeResting(def, r);
   std::cout << '\n';
+  if (everyImpulse)
+    for (const sim::world::ImpactRecord& r : w.impacts) std::cout << "  impulse " << describeImpact(def, r) << '\n';
 }
 
 int simulate(const SimulateOptions& o) {
-  if (isSceneFile3d(o.scene)) return simulate3d(o, o.until, o.json, o.trace);
+  const SilencedOutput silenced(o.quiet);
+  OutputFile output(o.output);
+  if (isSceneFile3d(o.scene)) {
+    const int code = simulate3d(o, o.until, o.json, o.trace);
+    if (code == kExitOk) output.commit();
+    return code;
+  }
   const sim::scene::SceneDef def = o.load().model();
   const double until = o.until.value_or(def.duration);
   if (!(until >= 0.0) || !std::isfinite(until)) throw UsageError("--until: the end time must be zero or a positive finite number");
@@ -163,7 +173,7 @@ int simulate(const SimulateOptions& o) {
     trace->rows(world);
   }
   try {
-    RunProgress2 progress(o.scene, until, trace.get());
+    RunProgress2 progress(o.scene, until, trace.get(), !o.quiet);
     world.advanceTo(until, progress.observer());
   } catch (const sim::world::Diverged& d) {
     std::cerr << o.scene << ": the simulation diverged at t = " << formatNumber(d.time) << ": body '"
@@ -175,7 +185,8 @@ int simulate(const SimulateOptions& o) {
     return kExitFailure;
   }
   if (traceFile) traceFile->commit();
-  o.json ? printJson(def, world) : printText(def, world);
+  o.json ? printJson(def, world) : printText(def, world, o.verbose);
+  output.commit();
   return kExitOk;
 }
 
@@ -185,10 +196,13 @@ void addSimulateCommand(CLI::App& app, int& exitCode) {
   auto options = std::make_shared<SimulateOptions>();
   CLI::App* cmd = app.add_subcommand("simulate", "run a scene and print the state at the end time");
   cmd->add_option("scene", options->scene, "the scene file (YAML)")->required();
-  options->addTo(*cmd);
+  options->SceneOptions::addTo(*cmd);
   cmd->add_option("--until", options->until, "end time in seconds (default: the scene's duration)");
   cmd->add_flag("--json", options->json, "print one JSON object");
   cmd->add_option("--trace", options->trace, "write every step to this CSV file");
+  cmd->add_option("-o,--output", options->output, "write the state (text or --json) to this file instead of standard output");
+  options->Verbosity::addTo(*cmd, "print nothing (the exit status, and --trace's file); errors still on standard error",
+                            "also every impulse the collision response applied, one a line (the text form; --json has them all)");
   cmd->callback([options, &exitCode] { exitCode = simulate(*options); });
 }
 
