@@ -17,7 +17,7 @@ FUZZ_BUILD     ?= build-fuzz
 # seconds each fuzzer runs in `make fuzz`
 FUZZ_SECONDS   ?= 60
 
-.PHONY: all deps build demo lecture test bench clean sanitize fuzz clang-deps
+.PHONY: all deps configure build build-tests demo lecture test bench clean sanitize fuzz clang-deps
 
 all: build
 
@@ -36,8 +36,15 @@ deps:
 clang-deps:
 	@$(MAKE) --no-print-directory deps PACKAGES="$(PACKAGES) $(CLANG_PACKAGES)"
 
-build: deps
+configure: deps
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
+
+# the program alone, $(BUILD)/rigidreel: all that demo, lecture and bench run (no test executables)
+build: configure
+	@cmake --build $(BUILD) -j $(JOBS) --target rigidreel
+
+# the program and every test executable: what the suite runs (`cmake --build` builds them all too)
+build-tests: configure
 	@cmake --build $(BUILD) -j $(JOBS)
 
 # the poll's state as JSON, its videos (out/poll_bar_impulse/) and the three-collisions poll slide
@@ -50,7 +57,7 @@ demo: build
 lecture: build
 	./$(BUILD)/rigidreel lecture scenes/lecture -o out/lecture
 
-test: build
+test: build-tests
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
 
 # timings (never asserted in tests): stacks against Box2D 2.4 in the same run (both pyramids, both
@@ -72,7 +79,7 @@ clean:
 # regenerate tests/golden/*.png on purpose, after a deliberate change to how frames, charts or the
 # lecture page look (see tests/golden/README.md); review the new images before committing them
 .PHONY: golden
-golden: build
+golden: build-tests
 	RIGIDREEL_UPDATE_GOLDEN=1 ./$(BUILD)/tests/golden_test
 	RIGIDREEL_UPDATE_GOLDEN=1 ./$(BUILD)/tests/lecture_golden_test
 	RIGIDREEL_UPDATE_GOLDEN=1 ./$(BUILD)/tests/chart_test

@@ -44,7 +44,8 @@ std::string analysisBase(const std::string& outDir, const sim::scene3d::SceneDef
 
 }  // namespace
 
-int sweep3d(const SceneOptions& so, const MethodLists& methods, const std::string& dt, int repeat, const std::string& outDir) {
+int sweep3d(const SceneOptions& so, const MethodLists& methods, const std::string& dt, int repeat, const std::string& outDir,
+            bool verbose) {
   const sim::scene3d::SceneDef def = so.load3().model();
   const std::vector<Integrator> integrators = integrators3(methods);
   const std::vector<double> steps =
@@ -91,10 +92,11 @@ int sweep3d(const SceneOptions& so, const MethodLists& methods, const std::strin
               << r.error << std::setw(14) << r.metrics.energyDrift << std::setw(14) << r.metrics.angularMomentumDrift
               << std::setw(14) << r.metrics.quaternionDrift << '\n';
   std::cout << "error against: " << reference.name << "\nwrote " << base << ".csv and " << base << ".png\n";
+  if (verbose) printFile(base + ".csv");
   return kExitOk;
 }
 
-int stability3d(const SceneOptions& so, const MethodLists& methods, const std::string& outDir) {
+int stability3d(const SceneOptions& so, const MethodLists& methods, const std::string& outDir, bool verbose) {
   const SceneFile3 file = so.load3();
   const sim::scene3d::SceneDef& def = file.model();
   const std::vector<Integrator> integrators = integrators3(methods);
@@ -122,6 +124,7 @@ int stability3d(const SceneOptions& so, const MethodLists& methods, const std::s
   writeChart(chart, base + ".png");
   csv.commit();
   std::cout << "wrote " << base << ".csv and " << base << ".png\n";
+  if (verbose) printFile(base + ".csv");
   return kExitOk;
 }
 

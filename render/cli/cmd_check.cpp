@@ -1,5 +1,6 @@
 // `rigidreel check`: load and validate scenes, say what model each uses, and compare every
 // variant's `expect` entries with the simulation.
+#include <filesystem>
 #include <functional>
 #include <iostream>
 #include <sstream>
@@ -9,6 +10,7 @@
 #include "render/cli/run_progress.h"
 #include "render/cli/scene_options.h"
 #include "render/cli/space3d.h"
+#include "render/cli/verbosity.h"
 #include "render/jobs/json_writer.h"
 #include "render/video/render_plan.h"
 #include "sim/scene/expect.h"
@@ -58,12 +60,14 @@ std::string formatValues(const std::vector<double>& v) {
   return s + ")";
 }
 
-// each comparison with its error; false when one failed
-bool report(const std::vector<sim::core::CheckResult>& results) {
+// each comparison with its error; false when one failed. With --quiet, the failed ones alone, each
+// after the file and variant (`quietLabel`), since nothing else names them
+bool report(const std::vector<sim::core::CheckResult>& results, const std::string& quietLabel = "") {
   bool ok = true;
   for (const sim::core::CheckResult& r : results) {
     ok = ok && r.passed();
-    std::cout << (r.passed() ? "  ok    " : "  FAIL  ") << "t = " << formatNumber(r.time) << "  " << r.quantity
+    if (!quietLabel.empty() && r.passed()) continue;
+    std::cout << quietLabel << (r.passed() ? "  ok    " : "  FAIL  ") << "t = " << formatNumber(r.time) << "  " << r.quantity
               << " = " << formatValues(r.actual) << ", expected " << formatValues(r.expected) << ", error "
               << formatNumber(r.error) << " (tolerance " << formatNumber(r.tolerance) << ")\n";
   }
@@ -72,18 +76,18 @@ bool report(const std::vector<sim::core::CheckResult>& results) {
 
 // say where the event method found impacts piling up and made the contact resting: once per pair
 // (its first and last time, how many), or every record with `verbose`
-void reportResting(const sim::scene::SceneDef& def, const sim::world::World& w, bool verbose) {
+void reportResting(const sim::scene::SceneDef& def, const sim::world::World& w, bool verbose, std::ostream& out) {
   if (verbose) {
-    for (const sim::world::RestingRecord& r : w.resting) std::cout << "  resting: " << describeResting(def, r) << '\n';
+    for (const sim::world::RestingRecord& r : w.resting) out << "  resting: " << describeResting(def, r) << '\n';
     return;
   }
-  for (const RestingSpan& s : mergeResting(w.resting)) std::cout << "  resting: " << describeResting(def, s) << '\n';
+  for (const RestingSpan& s : mergeResting(w.resting)) out << "  resting: " << describeResting(def, s) << '\n';
 }
 
 // say when `auto` went from the event method to the stack solver during the run
-void reportSwitch(const sim::world::World& w) {
+void reportSwitch(const sim::world::World& w, std::ostream& out) {
   if (w.methodSwitchTime)
-    std::cout << "  switched: " << describeCollisionMethod(w) << '\n';
+    out << "  switched: " << describeCollisionMethod(w) << '\n';
 }
 
 // why a run stopped before its duration, as `simulate` says it
@@ -95,13 +99,15 @@ std::string runFailure(const sim::scene::SceneDef& def, const sim::world::Diverg
 
 // one scene, one variant ("" for the base), run to its duration as `simulate` runs it; returns
 // false when an expect fails or the run stops before its end
-bool checkCase(const std::string& file, const std::string& variant, bool verbose) {
+bool checkCase(const std::string& file, const std::string& variant, const Verbosity& say) {
   const sim::scene::SceneDef def = readSceneFile(file, variant).model();
   const std::string label = file + (variant.empty() ? "" : " [" + variant + "]");
-  std::cout << label << ": " << describeModel(def) << '\n';
+  // --quiet: only what failed, so the lines about the model and the run go nowhere
+  std::ostream& out = say.quiet ? nowhere() : std::cout;
+  out << label << ": " << describeModel(def) << '\n';
   sim::world::World w = startWorld(def, file);
-  std::cout << "  collisions: " << describeCollisionMethod(w) << '\n';
-  RunProgress2 progress(label, def.duration);
+  out << "  collisions: " << describeCollisionMethod(w) << '\n';
+  RunProgress2 progress(label, def.duration, nullptr, !say.quiet);
   std::vector<sim::core::CheckResult> results;
   std::string failure;
   try {
@@ -114,17 +120,19 @@ bool checkCase(const std::string& file, const std::string& variant, bool verbose
     failure = e.what();
   }
   progress.finish();
-  const bool ok = report(results);
+  const bool ok = report(results, say.quiet ? label + ":" : "");
   if (failure.empty()) {
-    std::cout << "  ran to t = " << formatNumber(def.duration) << (def.expects.empty() ? " (no expect entries)" : "");
-    if (!w.impacts.empty()) std::cout << ", " << w.impacts.size() << " impulses";
-    std::cout << '\n';
+    out << "  ran to t = " << formatNumber(def.duration) << (def.expects.empty() ? " (no expect entries)" : "");
+    if (!w.impacts.empty()) out << ", " << w.impacts.size() << " impulses";
+    out << '\n';
   } else {
-    std::cout << "  FAIL  " << failure << '\n';
+    out << "  FAIL  " << failure << '\n';
     std::cerr << label << ": " << failure << '\n';
   }
-  reportResting(def, w, verbose);
-  reportSwitch(w);
+  if (say.verbose)
+    for (const sim::world::ImpactRecord& r : w.impacts) out << "  impulse " << describeImpact(def, r) << '\n';
+  reportResting(def, w, say.verbose, out);
+  reportSwitch(w, out);
   return ok && failure.empty();
 }
 
@@ -141,13 +149,14 @@ std::string describeModel3(const sim::scene3d::SceneDef& d) {
 
 // one variant of a 3D scene ("" for the base), run to its duration; false when an expect fails or
 // the run diverges before its end
-bool checkCase3d(const std::string& file, const std::string& variant) {
+bool checkCase3d(const std::string& file, const std::string& variant, const Verbosity& say) {
   const sim::scene3d::SceneDef def = readSceneFile3(file, variant).model();
   const std::string label = file + (variant.empty() ? "" : " [" + variant + "]");
-  std::cout << label << ": " << describeModel3(def) << '\n';
-  std::cout << "  contacts: none (3D scenes model free rigid bodies: nothing collides, bodies pass through each other)\n";
+  std::ostream& out = say.quiet ? nowhere() : std::cout;
+  out << label << ": " << describeModel3(def) << '\n';
+  out << "  contacts: none (3D scenes model free rigid bodies: nothing collides, bodies pass through each other)\n";
   sim::world3d::World w = sim::scene3d::buildWorld(def);
-  RunProgress3 progress(label, def.duration);
+  RunProgress3 progress(label, def.duration, nullptr, !say.quiet);
   std::vector<sim::core::CheckResult> results;
   std::string failure;
   try {
@@ -157,11 +166,11 @@ bool checkCase3d(const std::string& file, const std::string& variant) {
     failure = divergedMessage(file, def, d);
   }
   progress.finish();
-  const bool ok = report(results);
+  const bool ok = report(results, say.quiet ? label + ":" : "");
   if (failure.empty()) {
-    std::cout << "  ran to t = " << formatNumber(def.duration) << (def.expects.empty() ? " (no expect entries)" : "") << '\n';
+    out << "  ran to t = " << formatNumber(def.duration) << (def.expects.empty() ? " (no expect entries)" : "") << '\n';
   } else {
-    std::cout << "  FAIL  " << failure << '\n';
+    out << "  FAIL  " << failure << '\n';
     std::cerr << failure << '\n';
   }
   return ok && failure.empty();
@@ -195,18 +204,32 @@ bool planRender(const std::string& file) {
       file, [&] { return render::video::planLecture(lectureLoader(file), request); });
 }
 
-int check(const std::vector<std::string>& files, bool verbose, bool render) {
+// the files as given, a directory as every *.yaml in it (as `lecture` reads it: its order.txt's order, else sorted)
+std::vector<std::string> sceneFiles(const std::vector<std::string>& arguments) {
+  std::vector<std::string> files;
+  for (const std::string& a : arguments) {
+    std::error_code error;
+    if (!std::filesystem::is_directory(a, error)) {
+      files.push_back(a);
+      continue;
+    }
+    for (const std::string& f : lectureSceneFiles({a})) files.push_back(f);
+  }
+  return files;
+}
+
+int check(const std::vector<std::string>& arguments, const Verbosity& say, bool render) {
   int code = kExitOk;
-  for (const std::string& file : files) {
+  for (const std::string& file : sceneFiles(arguments)) {
     try {
       bool ok = true;
       if (isSceneFile3d(file)) {
-        ok = check3d(file);
+        ok = check3d(file, say);
       } else {
         const sim::scene::SceneDef base = readSceneFile(file).model();
         std::vector<std::string> cases = base.variantNames;
         if (cases.empty()) cases.push_back("");
-        for (const std::string& v : cases) ok = checkCase(file, v, verbose) && ok;
+        for (const std::string& v : cases) ok = checkCase(file, v, say) && ok;
       }
       if (render) ok = planRender(file) && ok;
       if (!ok && code == kExitOk) code = kExitFailure;
@@ -234,23 +257,30 @@ int check(const std::vector<std::string>& files, bool verbose, bool render) {
 
 }  // namespace
 
-bool check3d(const std::string& file) {
+bool check3d(const std::string& file, const Verbosity& say) {
   std::vector<std::string> cases = readSceneFile3(file).model().variantNames;
   if (cases.empty()) cases.push_back("");
   bool ok = true;
-  for (const std::string& v : cases) ok = checkCase3d(file, v) && ok;
+  for (const std::string& v : cases) ok = checkCase3d(file, v, say) && ok;
   return ok;
 }
 
 void addCheckCommand(CLI::App& app, int& exitCode) {
   auto files = std::make_shared<std::vector<std::string>>();
-  auto verbose = std::make_shared<bool>(false);
+  auto say = std::make_shared<Verbosity>();
+  auto output = std::make_shared<std::string>();
   auto render = std::make_shared<bool>(false);
   CLI::App* cmd = app.add_subcommand("check", "validate scenes, run every variant to its duration and verify its expect entries");
-  cmd->add_option("scenes", *files, "scene files (YAML)")->required();
-  cmd->add_flag("-v,--verbose", *verbose, "every resting and staying-in-contact record, not one line per pair");
+  cmd->add_option("scenes", *files, "scene files (YAML) and directories of them (every *.yaml, sorted)")->required();
+  cmd->add_option("-o,--output", *output, "write the report to this file instead of standard output (errors stay on standard error)");
+  say->addTo(*cmd, "only what failed: the failed expect entries and the errors",
+             "also every impulse the collision response applied, and every resting and staying-in-contact record, not one line per pair");
   cmd->add_flag("--render", *render, "also plan every output the scene asks for (videos, posters, panels), drawing nothing");
-  cmd->callback([files, verbose, render, &exitCode] { exitCode = check(*files, *verbose, *render); });
+  cmd->callback([files, say, output, render, &exitCode] {
+    OutputFile report(*output);
+    exitCode = check(*files, *say, *render);
+    report.commit();
+  });
 }
 
 }  // namespace render::cli

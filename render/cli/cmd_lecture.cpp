@@ -20,6 +20,7 @@
 #include "render/cli/lecture_summary.h"
 #include "render/cli/output.h"
 #include "render/cli/space3d.h"
+#include "render/cli/verbosity.h"
 #include "render/jobs/interrupt.h"
 #include "render/jobs/job_runner.h"
 #include "render/page/page.h"
@@ -34,16 +35,16 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-struct LectureCommand {
+struct LectureCommand : Verbosity {
   std::vector<std::string> paths;
   std::string output = "out/lecture";
   // signed: "-j -1" read into a size_t wrapped to 2⁶⁴ − 1 and passed as "unlimited"
   long jobs = std::max(1u, std::thread::hardware_concurrency());
   std::string size;  // "WxH", or empty for the scene's
   std::optional<double> fps;
-  bool quiet = false;
   bool list = false;
-  std::string page;  // --page DIR: only rebuild DIR's page
+  std::string page;   // --page DIR: only rebuild DIR's page
+  std::string title;  // --title: the page's, kept in DIR/title.txt
 };
 
 // a scene of the pack, checked before anything renders: its plan, or the divergence of a simulation
@@ -97,6 +98,7 @@ std::vector<std::string> jobCommand(const LectureCommand& o, const std::string& 
     argv.insert(argv.end(), {"--fps", fps});
   }
   if (o.quiet) argv.push_back("--quiet");
+  if (!o.title.empty()) argv.insert(argv.end(), {"--title", o.title});
   return argv;
 }
 
@@ -173,6 +175,7 @@ int lecture(const LectureCommand& o) {
   const auto start = Clock::now();
   if (!o.page.empty()) {
     if (!o.paths.empty()) throw UsageError("--page rebuilds the page of a pack already rendered; leave out the scenes");
+    if (!o.title.empty()) render::page::writePackTitle(o.page, o.title);
     const size_t scenes = render::page::writePage(o.page);
     std::cout << "wrote " << lecturePagePath(o.page) << " (" << scenes << (scenes == 1 ? " scene" : " scenes") << ")\n";
     return kExitOk;
@@ -206,6 +209,7 @@ int lecture(const LectureCommand& o) {
   std::error_code error;
   std::filesystem::create_directories(o.output, error);
   if (error) throw UsageError("-o: cannot create " + o.output + " (" + error.message() + "); choose another with -o DIR");
+  if (!o.title.empty()) render::page::writePackTitle(o.output, o.title);
 
   std::vector<SceneResult> results;
   size_t parallel = 1;
@@ -230,6 +234,8 @@ int lecture(const LectureCommand& o) {
       const std::string counter = "[" + std::to_string(finished) + "/" + std::to_string(scenes.size()) + "] ";
       if (r.ok && !o.quiet)
         std::cout << counter << r.scene << ": " << r.outputs.size() << " outputs in " << secondsText(job.seconds) << " s" << std::endl;
+      if (r.ok && o.verbose)
+        for (const std::string& path : r.outputs) std::cout << "  wrote " << path << '\n';
       if (!r.ok)
         std::cerr << counter << r.scene << " FAILED (" << describeStatus(job.status) << "):\n" << indented(job.errors) << std::flush;
     });
@@ -254,8 +260,9 @@ void addLectureCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("-j,--jobs", o->jobs, "scenes rendered at a time (default: the number of cores)");
   cmd->add_option("--size", o->size, "frame size WIDTHxHEIGHT in pixels, even (default: each scene's), and the poll panel sheets' (default 1920x1080)");
   cmd->add_option("--fps", o->fps, "frames per second (default: each scene's)");
-  cmd->add_flag("--quiet", o->quiet, "no line per scene as it ends (the summary and failures stay)");
+  o->addTo(*cmd, "no line per scene as it ends (the summary and failures stay)", "also every file each scene wrote, under its line");
   cmd->add_flag("--list", o->list, "print the paths the pack would write, one a line, and render nothing");
+  cmd->add_option("--title", o->title, "the page's title (default: \"Lecture pack\"; kept in DIR/title.txt for the jobs and --page)");
   cmd->add_option("--page", o->page, "only rebuild DIR/index.html from the scenes DIR holds (after jobs run one by one)");
   cmd->callback([o, &exitCode] { exitCode = runInterruptible([&] { return lecture(*o); }); });
 }

@@ -9,6 +9,7 @@
 #include "render/cli/scene_options.h"
 #include "render/jobs/interrupt.h"
 #include "render/cli/space3d.h"
+#include "render/cli/verbosity.h"
 #include "render/video/plan_writer.h"
 
 namespace render::cli {
@@ -17,7 +18,7 @@ using namespace render::video;
 
 namespace {
 
-struct RenderCommand : SceneOptions {
+struct RenderCommand : SceneOptions, Verbosity {
   std::string output = "out";
   bool allVariants = false;
   std::string size;
@@ -25,7 +26,6 @@ struct RenderCommand : SceneOptions {
   std::optional<double> duration;
   std::string format = "mp4";
   bool frames = false;
-  bool quiet = false;
   std::string trace;
 };
 
@@ -44,9 +44,13 @@ VideoRequest request(const RenderCommand& o) {
 
 int render(const RenderCommand& o) {
   const VideoRequest r = request(o);
+  // -v: each file's path as it is written
+  const auto wrote = [&o](const std::string& path) {
+    if (o.verbose) std::cout << "wrote " << path << '\n';
+  };
   if (isSceneFile3d(o.scene)) try {
       const RenderPlan3 plan = planVideos3(o.variantLoader3(), r);
-      traced<TraceWriter3>(o.trace, plan, [&](TraceWriter3* trace) { writePlan3(plan, o.quiet, [](const std::string&) {}, trace); });
+      traced<TraceWriter3>(o.trace, plan, [&](TraceWriter3* trace) { writePlan3(plan, o.quiet, wrote, trace); });
       return kExitOk;
     } catch (const VariantDiverged3& d) {
       std::cerr << divergedMessage(o.scene, d.model, d) << '\n';
@@ -54,7 +58,7 @@ int render(const RenderCommand& o) {
     }
   try {
     const RenderPlan plan = planVideos(o.variantLoader(), r);
-    traced<TraceWriter>(o.trace, plan, [&](TraceWriter* trace) { writePlan(plan, o.quiet, [](const std::string&) {}, trace); });
+    traced<TraceWriter>(o.trace, plan, [&](TraceWriter* trace) { writePlan(plan, o.quiet, wrote, trace); });
   } catch (const VariantDiverged& d) {
     std::cerr << videoDiverged(o.scene, d);
     return kExitFailure;
@@ -68,7 +72,7 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
   auto o = std::make_shared<RenderCommand>();
   CLI::App* cmd = app.add_subcommand("render", "render a scene into a video under out/<scene>/, with a poster PNG");
   cmd->add_option("scene", o->scene, "the scene file (YAML)")->required();
-  o->addTo(*cmd);
+  o->SceneOptions::addTo(*cmd);
   cmd->add_option("-o,--output", o->output, "the output directory (default: out)");
   cmd->add_flag("--all-variants", o->allVariants, "one video per variant (the base scene when it has none)")->excludes("--variant");
   cmd->add_option("--size", o->size, "frame size WIDTHxHEIGHT in pixels, even (default: the scene's, 1280x720)");
@@ -76,7 +80,7 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--duration", o->duration, "length of the video in seconds (default: the scene's duration)");
   cmd->add_option("--format", o->format, "mp4 (H.264, default), webm (VP9) or gif");
   cmd->add_flag("--frames", o->frames, "also write every frame as PNG into <scene>-frames/");
-  cmd->add_flag("--quiet", o->quiet, "no progress bar and no summary");
+  o->Verbosity::addTo(*cmd, "no progress bar and no summary", "also the path of each file as it is written");
   cmd->add_option("--trace", o->trace, "also write every step of the video's run to this CSV file (as simulate --trace)");
   cmd->callback([o, &exitCode] { exitCode = runInterruptible([&] { return render(*o); }); });
 }

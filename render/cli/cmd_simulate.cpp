@@ -10,6 +10,7 @@
 #include "render/cli/run_progress.h"
 #include "render/cli/scene_options.h"
 #include "render/cli/space3d.h"
+#include "render/cli/verbosity.h"
 #include "render/jobs/atomic_file.h"
 #include "render/jobs/json_writer.h"
 #include "render/video/trace_writer.h"
@@ -22,11 +23,11 @@ using namespace render::jobs;
 
 namespace {
 
-struct SimulateOptions : SceneOptions {
+struct SimulateOptions : SceneOptions, Verbosity {
   std::optional<double> until;
   bool json = false;
-  bool verbose = false;
   std::string trace;
+  std::string output;  // -o: the state into this file instead of standard output
 };
 
 void printJson(const sim::scene::SceneDef& def, const sim::world::World& w, bool verbose) {
@@ -136,10 +137,18 @@ void printText(const sim::scene::SceneDef& def, const sim::world::World& w, bool
   else
     for (const RestingSpan& s : mergeResting(w.resting)) std::cout << "; " << describeResting(def, s);
   std::cout << '\n';
+  if (verbose)
+    for (const sim::world::ImpactRecord& r : w.impacts) std::cout << "  impulse " << describeImpact(def, r) << '\n';
 }
 
 int simulate(const SimulateOptions& o) {
-  if (isSceneFile3d(o.scene)) return simulate3d(o, o.until, o.json, o.trace);
+  const SilencedOutput silenced(o.quiet);
+  OutputFile output(o.output);
+  if (isSceneFile3d(o.scene)) {
+    const int code = simulate3d(o, o.until, o.json, o.trace);
+    if (code == kExitOk) output.commit();
+    return code;
+  }
   const sim::scene::SceneDef def = o.load().model();
   const double until = o.until.value_or(def.duration);
   if (!(until >= 0.0) || !std::isfinite(until)) throw UsageError("--until: the end time must be zero or a positive finite number");
@@ -155,7 +164,7 @@ int simulate(const SimulateOptions& o) {
     trace->rows(world);
   }
   try {
-    RunProgress2 progress(o.scene, until, trace.get());
+    RunProgress2 progress(o.scene, until, trace.get(), !o.quiet);
     world.advanceTo(until, progress.observer());
   } catch (const sim::world::Diverged& d) {
     std::cerr << o.scene << ": the simulation diverged at t = " << formatNumber(d.time) << ": body '"
@@ -168,6 +177,7 @@ int simulate(const SimulateOptions& o) {
   }
   if (traceFile) traceFile->commit();
   o.json ? printJson(def, world, o.verbose) : printText(def, world, o.verbose);
+  output.commit();
   return kExitOk;
 }
 
@@ -177,11 +187,14 @@ void addSimulateCommand(CLI::App& app, int& exitCode) {
   auto options = std::make_shared<SimulateOptions>();
   CLI::App* cmd = app.add_subcommand("simulate", "run a scene and print the state at the end time");
   cmd->add_option("scene", options->scene, "the scene file (YAML)")->required();
-  options->addTo(*cmd);
+  options->SceneOptions::addTo(*cmd);
   cmd->add_option("--until", options->until, "end time in seconds (default: the scene's duration)");
   cmd->add_flag("--json", options->json, "print one JSON object");
-  cmd->add_flag("-v,--verbose", options->verbose, "every resting and staying-in-contact record, not one per pair");
   cmd->add_option("--trace", options->trace, "write every step to this CSV file");
+  cmd->add_option("-o,--output", options->output, "write the state (text or --json) to this file instead of standard output");
+  options->Verbosity::addTo(*cmd, "print nothing (the exit status, and --trace's file); errors still on standard error",
+                            "also every impulse the collision response applied, one a line (the text form; --json has them "
+                            "all), and every resting and staying-in-contact record, not one per pair");
   cmd->callback([options, &exitCode] { exitCode = simulate(*options); });
 }
 

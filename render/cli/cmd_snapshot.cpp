@@ -10,6 +10,7 @@
 #include "render/cli/scene_options.h"
 #include "render/video/output_names.h"
 #include "render/cli/space3d.h"
+#include "render/cli/verbosity.h"
 #include "render/video/plan_writer.h"
 
 namespace render::cli {
@@ -17,7 +18,7 @@ using namespace render::video;
 
 namespace {
 
-struct SnapshotCommand : SceneOptions {
+struct SnapshotCommand : SceneOptions, Verbosity {
   std::string at;  // "T1,T2,..."
   bool impacts = false;
   bool panels = false;
@@ -63,10 +64,13 @@ StillRequest request(const SnapshotCommand& o) {
 }
 
 int snapshot(const SnapshotCommand& o) {
-  const auto print = [](const std::string& path) { std::cout << path << '\n'; };
+  // each path as it is written (not with -q); -v adds the progress bar and the summary
+  const auto print = [&o](const std::string& path) {
+    if (!o.quiet) std::cout << path << '\n';
+  };
   if (isSceneFile3d(o.scene)) try {
       const RenderPlan3 plan = planStills3(o.variantLoader3(), request(o));
-      traced<TraceWriter3>(o.trace, plan, [&](TraceWriter3* trace) { writePlan3(plan, true, print, trace); });
+      traced<TraceWriter3>(o.trace, plan, [&](TraceWriter3* trace) { writePlan3(plan, !o.verbose, print, trace); });
       return kExitOk;
     } catch (const VariantDiverged3& d) {
       std::cerr << divergedMessage(o.scene, d.model, d) << '\n';
@@ -74,7 +78,7 @@ int snapshot(const SnapshotCommand& o) {
     }
   try {
     const RenderPlan plan = planStills(o.variantLoader(), request(o));
-    traced<TraceWriter>(o.trace, plan, [&](TraceWriter* trace) { writePlan(plan, true, print, trace); });
+    traced<TraceWriter>(o.trace, plan, [&](TraceWriter* trace) { writePlan(plan, !o.verbose, print, trace); });
   } catch (const sim::world::Diverged& d) {
     std::cerr << o.scene << ": the simulation diverged at t = " << timeForName(d.time)
               << "; try a smaller step (--dt) or another integrator (--integrator rk4)\n";
@@ -89,13 +93,14 @@ void addSnapshotCommand(CLI::App& app, int& exitCode) {
   auto o = std::make_shared<SnapshotCommand>();
   CLI::App* cmd = app.add_subcommand("snapshot", "still frames of a scene as PNG under out/<scene>/");
   cmd->add_option("scene", o->scene, "the scene file (YAML)")->required();
-  o->addTo(*cmd);
+  o->SceneOptions::addTo(*cmd);
   cmd->add_option("--at", o->at, "times in seconds, separated by commas: one PNG each");
   cmd->add_flag("--impacts", o->impacts, "one PNG at each impact the collision response resolves");
   cmd->add_flag("--panels", o->panels, "every variant side by side in one labeled image");
   cmd->add_option("--strobe", o->strobe, "draw this many earlier poses, fading, behind the present one");
   cmd->add_option("-o,--output", o->output, "the output directory (default: out)");
   cmd->add_option("--size", o->size, "frame size WIDTHxHEIGHT in pixels, even (default: the scene's, 1280x720); with --panels, the whole sheet's (default 1920x1080)");
+  o->Verbosity::addTo(*cmd, "print nothing (not each file's path)", "also a progress bar and a summary, as render shows them");
   cmd->add_option("--trace", o->trace, "also write every step of the pictures' run to this CSV file (as simulate --trace)");
   cmd->callback([o, &exitCode] { exitCode = snapshot(*o); });
 }

@@ -11,6 +11,7 @@
 #include "render/cli/method_lists.h"
 #include "render/cli/scene_options.h"
 #include "render/cli/space3d.h"
+#include "render/cli/verbosity.h"
 #include "render/jobs/atomic_file.h"
 #include "render/jobs/json_writer.h"
 
@@ -20,7 +21,7 @@ using namespace render::analysis;
 
 namespace {
 
-struct StabilityOptions : MethodLists {
+struct StabilityOptions : MethodLists, Verbosity {
   std::string scene, variant, outDir = "out";
 };
 
@@ -46,7 +47,8 @@ int stability(const StabilityOptions& o) {
   SceneOptions so;
   so.scene = o.scene;
   so.variant = o.variant;
-  if (isSceneFile3d(o.scene)) return stability3d(so, o, o.outDir);
+  const SilencedOutput silenced(o.quiet);
+  if (isSceneFile3d(o.scene)) return stability3d(so, o, o.outDir, o.verbose);
   const render::analysis::Study study = so.load().study();
   const sim::scene::SceneDef& def = study.model;
   startWorld(def, o.scene);
@@ -102,6 +104,7 @@ int stability(const StabilityOptions& o) {
   writeChart(chart, base + ".png");
   csv.commit();
   std::cout << "wrote " << base << ".csv and " << base << ".png\n";
+  if (o.verbose) printFile(base + ".csv");
   return kExitOk;
 }
 
@@ -112,8 +115,10 @@ void addStabilityCommand(CLI::App& app, int& exitCode) {
   CLI::App* cmd = app.add_subcommand("stability", "find where each method stops holding a scene");
   cmd->add_option("scene", o->scene, "the scene file (YAML)")->required();
   cmd->add_option("--variant", o->variant, "the named variant of the scene");
-  o->addTo(*cmd);
-  cmd->add_option("-o", o->outDir, "output directory (default out)");
+  o->MethodLists::addTo(*cmd);
+  cmd->add_option("-o,--output", o->outDir, "output directory (default out)");
+  o->Verbosity::addTo(*cmd, "print nothing (the CSV and the chart are still written); errors still on standard error",
+                      "also the CSV's rows, every column in full, after the lines");
   cmd->callback([o, &exitCode] { exitCode = stability(*o); });
 }
 

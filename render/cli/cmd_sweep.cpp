@@ -12,6 +12,7 @@
 #include "render/cli/method_lists.h"
 #include "render/cli/scene_options.h"
 #include "render/cli/space3d.h"
+#include "render/cli/verbosity.h"
 #include "render/jobs/atomic_file.h"
 #include "render/jobs/json_writer.h"
 
@@ -21,7 +22,7 @@ using namespace render::analysis;
 
 namespace {
 
-struct SweepOptions : MethodLists {
+struct SweepOptions : MethodLists, Verbosity {
   std::string scene, variant, dt, iterations, substeps, outDir = "out";
   int repeat = 3;
   bool stack = false;
@@ -85,6 +86,7 @@ int stackSweep(const SweepOptions& o, const sim::scene::SceneDef& def, const std
               << r.method.dt << std::setw(14) << 1e3 * r.secondsPerStep << std::setw(14) << r.topDisplacement << std::setw(14)
               << r.maxDisplacement << std::setw(14) << r.fastest << '\n';
   std::cout << "displacements against: the rest pose (where the bodies start)\nwrote " << base << ".csv and " << base << ".png\n";
+  if (o.verbose) printFile(base + ".csv");
   return kExitOk;
 }
 
@@ -92,7 +94,8 @@ int sweep(const SweepOptions& o) {
   SceneOptions so;
   so.scene = o.scene;
   so.variant = o.variant;
-  if (isSceneFile3d(o.scene)) return sweep3d(so, o, o.dt, o.repeat, o.outDir);
+  const SilencedOutput silenced(o.quiet);
+  if (isSceneFile3d(o.scene)) return sweep3d(so, o, o.dt, o.repeat, o.outDir, o.verbose);
   const sim::scene::SceneDef def = so.load().model();
   startWorld(def, o.scene);  // bad start states are reported before the long run
 
@@ -156,6 +159,7 @@ int sweep(const SweepOptions& o) {
               << r.method.dt << std::setw(10) << r.steps << std::setw(14) << r.secondsPerSimSecond << std::setw(14)
               << r.error << std::setw(14) << r.energyDrift << std::setw(14) << r.maxPenetration << '\n';
   std::cout << "error against: " << reference.name << "\nwrote " << base << ".csv and " << base << ".png\n";
+  if (o.verbose) printFile(base + ".csv");
   return kExitOk;
 }
 
@@ -166,7 +170,7 @@ void addSweepCommand(CLI::App& app, int& exitCode) {
   CLI::App* cmd = app.add_subcommand("sweep", "run a scene under many methods and steps: cost against error");
   cmd->add_option("scene", o->scene, "the scene file (YAML)")->required();
   cmd->add_option("--variant", o->variant, "the named variant of the scene");
-  o->addTo(*cmd);
+  o->MethodLists::addTo(*cmd);
   cmd->add_option("--dt", o->dt, "FROM:TO:COUNT, log-spaced steps (default: 8·dt to dt/8, 7 steps)");
   cmd->add_option("--iterations", o->iterations, "comma-separated velocity iterations for sequential");
   cmd->add_option("--substeps", o->substeps, "comma-separated substeps for soft_step");
@@ -174,7 +178,9 @@ void addSweepCommand(CLI::App& app, int& exitCode) {
                 "measure a stack: cost per step against the top body's displacement from its rest pose (and the "
                 "farthest and fastest body), one line per method through its iterations or substeps");
   cmd->add_option("--repeat", o->repeat, "timed runs per case; the median is kept (default 3)");
-  cmd->add_option("-o", o->outDir, "output directory (default out)");
+  cmd->add_option("-o,--output", o->outDir, "output directory (default out)");
+  o->Verbosity::addTo(*cmd, "print nothing (the CSV and the chart are still written); errors still on standard error",
+                      "also the CSV's rows, every column in full, after the table");
   cmd->callback([o, &exitCode] { exitCode = sweep(*o); });
 }
 

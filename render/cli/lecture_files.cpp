@@ -5,6 +5,7 @@
 
 #include "render/cli/commands.h"
 #include "render/cli/scene_options.h"
+#include "render/cli/scene_order.h"
 #include "sim/scene3d/scene_build.h"
 
 namespace render::cli {
@@ -19,8 +20,7 @@ std::vector<std::string> lectureSceneFiles(const std::vector<std::string>& argum
       for (const fs::directory_entry& e : fs::directory_iterator(a, error))
         if (e.path().extension() == ".yaml" && !e.is_directory()) found.push_back(e.path().string());
       if (found.empty()) throw UsageError(a + ": no scene files (*.yaml) in this directory; give a directory of scenes");
-      std::sort(found.begin(), found.end());
-      files.insert(files.end(), found.begin(), found.end());
+      for (const std::string& f : orderedSceneFiles(a, found)) files.push_back(f);
     } else if (fs::exists(a, error)) {
       files.push_back(a);
     } else {

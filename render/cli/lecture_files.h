@@ -10,8 +10,9 @@
 
 namespace render::cli {
 
-// the files: a file as given, a directory as every `*.yaml` in it, sorted; throws UsageError for
-// a path that does not exist and for a directory without scenes
+// the files: a file as given, a directory as every `*.yaml` in it, in its order.txt's order or else
+// sorted (scene_order.h); throws UsageError for a path that does not exist and for a directory
+// without scenes, sim::yaml::SceneError for a bad order.txt
 std::vector<std::string> lectureSceneFiles(const std::vector<std::string>& arguments);
 
 // the file's variants ("" the base scene), each that will be a video (a variant, or the base scene

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "render/cli/scene_order.h"
 #include "render/cli/output.h"
 #include "render/frame/caption.h"
 #include "render/page/page.h"
@@ -38,6 +39,7 @@ render::page::SceneRecord recordOf(const Plan& plan, const render::scene::Render
   r.question = look.poll.question;
   r.answer = look.poll.answer;
   r.seconds = seconds;
+  r.order = orderInFolder(file);
   // the files as the plan names them, relative to the record's folder (a variant may rename its own)
   const auto name = [&](const std::string& p) { return fs::path(p).lexically_relative(fs::path(path).parent_path()).string(); };
   for (const auto& v : plan.videos) r.videos.push_back({variants[v.variant], name(v.path), name(v.posterPath), v.fps});
@@ -57,7 +59,8 @@ render::page::SceneRecord recordOf(const Plan& plan, const render::scene::Render
 // the closed forms of a variant, as `rigidreel check` measures them
 template <class Results>
 void addChecks(const std::string& variant, const Results& results, render::page::SceneRecord& r) {
-  for (const auto& c : results) r.checks.push_back({variant, c.time, c.quantity, c.expected, c.actual, c.error, c.tolerance});
+  for (const auto& c : results)
+    r.checks.push_back({variant, c.time, c.quantity, c.expected, c.actual, c.error, c.tolerance, c.earlierRun});
 }
 
 }  // namespace

@@ -18,9 +18,10 @@ namespace render::cli {
 template <class World, class Observer, class Event>
 class RunProgress : public Observer {
  public:
-  RunProgress(std::string what, double until, Observer* next = nullptr)
+  // (`shown` false: never drawn, as for --quiet)
+  RunProgress(std::string what, double until, Observer* next = nullptr, bool shown = true)
       : what_(std::move(what)), until_(until), next_(next),
-        line_(true, std::chrono::seconds(1), std::chrono::milliseconds(250)) {}
+        line_(shown, std::chrono::seconds(1), std::chrono::milliseconds(250)) {}
 
   // the observer to pass to advanceTo: this one on a terminal, else `next` alone (the run as without)
   Observer* observer() { return line_.enabled() ? this : next_; }

@@ -159,4 +159,12 @@ std::string describeResting(const sim::scene::SceneDef& def, const RestingSpan& 
   return pair + " came to rest at t = " + t + until + " (" + times + "impacts piled up; the contact now rests)";
 }
 
+std::string describeImpact(const sim::scene::SceneDef& def, const sim::world::ImpactRecord& r) {
+  using render::jobs::formatNumber;
+  const auto pair = [](const sim::core::Vec2& v) { return "(" + formatNumber(v.x()) + ", " + formatNumber(v.y()) + ")"; };
+  return "t = " + formatNumber(r.t) + ": '" + def.bodies[r.a].name + "' and '" + def.bodies[r.b].name + "' at " + pair(r.point) +
+         ", normal " + pair(r.normal) + ", j = " + formatNumber(r.impulse) + ", tangent j = " + formatNumber(r.tangentImpulse) +
+         ", v_n " + formatNumber(r.vnBefore) + " -> " + formatNumber(r.vnAfter);
+}
+
 }  // namespace render::cli

@@ -46,6 +46,10 @@ std::string describeCollisionMethod(const sim::world::World& world);
 // 'floor' stay in contact from t = 0.5 (...)"
 std::string describeResting(const sim::scene::SceneDef& def, const sim::world::RestingRecord& record);
 
+// one impulse the collision response applied, for -v: "t = 0.5: 'ball' and 'floor' at (0, -1),
+// normal (0, 1), j = 2, tangent j = 0, v_n -2 -> 1.4"
+std::string describeImpact(const sim::scene::SceneDef& def, const sim::world::ImpactRecord& record);
+
 // the records of one pair and kind (resting or still moving) merged: a pentagon rocking on a slab
 // makes a record at every pile-up, a hundred near-identical lines
 struct RestingSpan {

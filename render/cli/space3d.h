@@ -8,6 +8,7 @@
 #include "render/cli/method_lists.h"
 #include "render/cli/output.h"
 #include "render/cli/scene_options.h"
+#include "render/cli/verbosity.h"
 #include "render/video/render_plan.h"
 #include "sim/world3d/world.h"
 
@@ -18,10 +19,12 @@ namespace render::cli {
 int simulate3d(const SceneOptions& options, std::optional<double> until, bool json, const std::string& trace);
 // `check` of one file: every variant's model described and its expect entries compared; false when
 // one fails. Throws sim::yaml::SceneError, sim::world3d::Diverged
-bool check3d(const std::string& file);
+bool check3d(const std::string& file, const Verbosity& say);
 // `sweep` and `stability`
-int sweep3d(const SceneOptions& scene, const MethodLists& methods, const std::string& dt, int repeat, const std::string& outDir);
-int stability3d(const SceneOptions& scene, const MethodLists& methods, const std::string& outDir);
+// (`verbose`: the CSV printed after the table)
+int sweep3d(const SceneOptions& scene, const MethodLists& methods, const std::string& dt, int repeat, const std::string& outDir,
+            bool verbose);
+int stability3d(const SceneOptions& scene, const MethodLists& methods, const std::string& outDir, bool verbose);
 // (`render`, `snapshot` and `lecture` make a 3D scene's plan with render_plan.h and write it with
 // plan_writer.h, as for 2D)
 

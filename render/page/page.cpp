@@ -9,6 +9,8 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "render/jobs/atomic_file.h"
@@ -34,6 +36,18 @@ std::string shownValues(const std::vector<double>& v) {
   std::string s = "(";
   for (size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + shown(v[i], 6);
   return s + ")";
+}
+
+// the scene file's own number, "10a" of 10a_energy_gain.yaml: its leading digits and the letters
+// after them, up to a '_' or '-'; "" when it has none
+std::string fileNumber(const std::string& file) {
+  const std::string stem = fs::path(file).stem().string();
+  size_t digits = 0;
+  while (digits < stem.size() && std::isdigit(static_cast<unsigned char>(stem[digits]))) ++digits;
+  size_t end = digits;
+  while (end < stem.size() && std::islower(static_cast<unsigned char>(stem[end]))) ++end;
+  if (digits == 0 || (end < stem.size() && stem[end] != '_' && stem[end] != '-')) return "";
+  return stem.substr(0, end);
 }
 
 // an id for a scene's section: letters, digits, '-' and '_' (HTML ids have no spaces)
@@ -65,39 +79,82 @@ const char* const kStyle = R"(
 * { box-sizing: border-box; }
 body { margin: 0; font: 16px/1.5 "DejaVu Sans", system-ui, sans-serif; color: var(--ink); background: #fff; }
 header, main, footer { max-width: 1200px; margin: 0 auto; padding: 0 24px; }
+/* long names and paths wrap rather than widen the page */
+h1, h2, code, .description, figcaption { overflow-wrap: anywhere; }
 header { padding-top: 24px; border-bottom: 1px solid var(--line); }
 h1 { font-size: 28px; margin: 0 0 4px; }
 h2 { font-size: 22px; margin: 0 0 8px; }
 h3 { font-size: 16px; margin: 16px 0 8px; }
 a { color: var(--accent); }
 .muted { color: var(--muted); font-size: 14px; }
-nav ol { columns: 2; column-gap: 32px; padding-left: 24px; margin: 8px 0 16px; }
+/* the contents, numbered by the scene files' own numbers (10a, 10b, ...) */
+nav ul { columns: 2; column-gap: 32px; list-style: none; padding-left: 0; margin: 8px 0 16px; }
+.number { display: inline-block; min-width: 3.2em; color: var(--muted); font-variant-numeric: tabular-nums; }
 section { padding: 24px 0; border-bottom: 1px solid var(--line); }
 .description { max-width: 80ch; white-space: pre-line; }
-/* a lone video or panel takes the width; two or three share it */
-.media { display: grid; grid-template-columns: repeat(auto-fit, minmax(360px, 1fr)); gap: 16px; }
-figure { margin: 0; padding: 8px; background: var(--panel); border-radius: 6px; }
+/* a lone video or panel takes the width; two or three share it; on a narrow screen, one a row at
+   the screen's width */
+.media { display: grid; grid-template-columns: repeat(auto-fit, minmax(min(360px, 100%), 1fr)); gap: 16px; }
+figure { margin: 0; padding: 8px; background: var(--panel); border-radius: 6px; min-width: 0; container-type: inline-size; }
 video, img { display: block; width: 100%; height: auto; background: #fff; border: 1px solid var(--line); }
+/* the browser draws a video's controls over the bottom of its box, where the frame's caption is:
+   the box is the picture and a strip below it (--controls) for the controls, the picture at its top
+   (Chromium's controls are 72 px high, a row of buttons over the timeline; its shade over the
+   picture is dropped) */
+video { --controls: 80px; height: calc(100cqw * var(--ratio, 0.5625) + var(--controls)); object-fit: contain;
+        object-position: top; background: #222; }
+video::-webkit-media-controls-panel { background: none; }
 figcaption { font-size: 14px; margin-top: 6px; }
 .question { color: #8a4b08; font-weight: bold; }
 .answer { color: #1e6b34; font-weight: bold; }
 .poll-question { max-width: 80ch; font-size: 18px; }
 details.poll-answer { margin-top: 16px; max-width: 80ch; }
 details.poll-answer summary { cursor: pointer; font-weight: bold; color: #1e6b34; }
+/* a wide table scrolls inside its own box, never the page */
+.table { max-width: 100%; overflow-x: auto; }
 table { border-collapse: collapse; font-size: 14px; margin-top: 4px; }
 th, td { border-bottom: 1px solid var(--line); padding: 4px 10px; text-align: left; vertical-align: top; }
 td.number { text-align: right; font-variant-numeric: tabular-nums; white-space: nowrap; }
 .ok { color: #1e6b34; }
 .failed { color: #b3261e; font-weight: bold; }
 footer { padding-top: 16px; padding-bottom: 32px; }
+@media (max-width: 600px) {
+  header, main, footer { padding-left: 12px; padding-right: 12px; }
+  nav ul { columns: 1; }
+  h1 { font-size: 24px; }
+}
 )";
+
+// a table in a box of its own, which scrolls sideways on a narrow screen
+const char* const kTableOpen = "<div class=\"table\">\n<table>\n";
+const char* const kTableClose = "</table>\n</div>\n";
+
+// the checks of one kind: closed forms, or values an earlier run gave
+void writeChecks(std::ostream& h, const std::vector<CheckRecord>& checks, bool earlierRun) {
+  std::vector<const CheckRecord*> these;
+  for (const CheckRecord& c : checks)
+    if (c.earlierRun == earlierRun) these.push_back(&c);
+  if (these.empty()) return;
+  h << "<h3>" << (earlierRun ? "Checked against an earlier run" : "Closed forms, checked") << "</h3>\n" << kTableOpen
+    << "<thead><tr><th>variant</th><th>t (s)</th><th>quantity</th><th>" << (earlierRun ? "earlier run" : "closed form")
+    << "</th><th>simulated</th><th>error</th><th>tolerance</th><th></th></tr></thead>\n<tbody>\n";
+  for (const CheckRecord* c : these)
+    h << "<tr><td>" << escapeHtml(c->variant.empty() ? "—" : c->variant) << "</td><td class=\"number\">" << shown(c->time, 6)
+      << "</td><td>" << escapeHtml(c->quantity) << "</td><td class=\"number\">" << shownValues(c->expected)
+      << "</td><td class=\"number\">" << shownValues(c->actual) << "</td><td class=\"number\">" << shown(c->error, 2)
+      << "</td><td class=\"number\">" << shown(c->tolerance, 2) << "</td><td class=\"" << (c->passed() ? "ok\">ok" : "failed\">FAILED")
+      << "</td></tr>\n";
+  h << "</tbody>\n" << kTableClose;
+}
 
 // a file of the scene's folder, relative to the page
 std::string href(const SceneRecord& r, const std::string& file) { return urlOf(r.scene + "/" + file); }
 
 void writeSection(std::ostream& h, const PageScene& s) {
   const SceneRecord& r = s.record;
-  h << "<section id=\"" << sectionId(r.scene) << "\">\n<h2>" << escapeHtml(r.title) << "</h2>\n";
+  const std::string number = fileNumber(r.file);
+  h << "<section id=\"" << sectionId(r.scene) << "\">\n<h2>" << (number.empty() ? "" : "<span class=\"muted\">" + escapeHtml(number) + "</span> ")
+    << escapeHtml(r.title) << "</h2>\n";
   h << "<p class=\"muted\"><code>" << escapeHtml(r.file) << "</code></p>\n";
   if (!r.description.empty()) h << "<p class=\"description\">" << escapeHtml(r.description) << "</p>\n";
   if (!r.question.empty()) h << "<p class=\"poll-question\"><strong>Question.</strong> " << escapeHtml(r.question) << "</p>\n";
@@ -107,7 +164,8 @@ void writeSection(std::ostream& h, const PageScene& s) {
     const VideoRecord& v = r.videos[i];
     const MediaInfo& m = s.videos[i];
     h << "<figure>\n<video controls preload=\"metadata\" width=\"" << m.width << "\" height=\"" << m.height
-      << "\" poster=\"" << href(r, v.poster) << "\" data-duration=\"" << shown(m.duration, 9) << "\">"
+      << "\" poster=\"" << href(r, v.poster) << "\" data-duration=\"" << shown(m.duration, 9) << "\" style=\"--ratio: "
+      << shown(static_cast<double>(m.height) / std::max(1, m.width), 6) << "\">"
       << "<source src=\"" << href(r, v.video) << "\" type=\"video/mp4\">"
       << "<a href=\"" << href(r, v.video) << "\">" << escapeHtml(v.video) << "</a></video>\n";
     h << "<figcaption>" << (v.variant.empty() ? "" : "<strong>" + escapeHtml(v.variant) + "</strong> · ") << m.width << "×"
@@ -136,17 +194,8 @@ void writeSection(std::ostream& h, const PageScene& s) {
     h << "<details class=\"poll-answer\"><summary>Answer</summary>\n<p class=\"description\">" << escapeHtml(r.answer)
       << "</p>\n</details>\n";
 
-  if (!r.checks.empty()) {
-    h << "<h3>Closed forms, checked</h3>\n<table>\n<thead><tr><th>variant</th><th>t (s)</th><th>quantity</th>"
-         "<th>closed form</th><th>simulated</th><th>error</th><th>tolerance</th><th></th></tr></thead>\n<tbody>\n";
-    for (const CheckRecord& c : r.checks)
-      h << "<tr><td>" << escapeHtml(c.variant.empty() ? "—" : c.variant) << "</td><td class=\"number\">" << shown(c.time, 6)
-        << "</td><td>" << escapeHtml(c.quantity) << "</td><td class=\"number\">" << shownValues(c.expected)
-        << "</td><td class=\"number\">" << shownValues(c.actual) << "</td><td class=\"number\">" << shown(c.error, 2)
-        << "</td><td class=\"number\">" << shown(c.tolerance, 2) << "</td><td class=\"" << (c.passed() ? "ok\">ok" : "failed\">FAILED")
-        << "</td></tr>\n";
-    h << "</tbody>\n</table>\n";
-  }
+  writeChecks(h, r.checks, false);
+  writeChecks(h, r.checks, true);
   h << "</section>\n";
 }
 
@@ -213,25 +262,31 @@ std::vector<PageScene> readPack(const std::string& dir) {
     for (const PanelRecord& p : r.panels) s.panels.push_back(media(p.image, false));
     scenes.push_back(std::move(s));
   }
+  // in their folders' order.txt where they have one (first), else by name
+  std::stable_sort(scenes.begin(), scenes.end(), [](const PageScene& a, const PageScene& b) {
+    const auto place = [](const PageScene& s) { return s.record.order > 0 ? s.record.order : std::numeric_limits<int>::max(); };
+    return place(a) < place(b);
+  });
   return scenes;
 }
 
-std::string pageHtml(const std::vector<PageScene>& scenes) {
+std::string pageHtml(const std::vector<PageScene>& scenes, const std::string& title) {
   size_t videos = 0, panels = 0;
   for (const PageScene& s : scenes) videos += s.record.videos.size(), panels += s.record.panels.size();
   std::ostringstream h;
   h << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
        "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
-       "<title>Lecture pack: "
-    << scenes.size() << " scenes</title>\n<style>" << kStyle << "</style>\n</head>\n<body>\n";
-  h << "<header>\n<h1>Lecture pack</h1>\n<p class=\"muted\">" << scenes.size() << " scenes, " << videos << " videos, " << panels
+       "<title>"
+    << escapeHtml(title) << ": " << scenes.size() << " scenes</title>\n<style>" << kStyle << "</style>\n</head>\n<body>\n";
+  h << "<header>\n<h1>" << escapeHtml(title) << "</h1>\n<p class=\"muted\">" << scenes.size() << " scenes, " << videos << " videos, " << panels
     << " poll panels, rendered by <code>rigidreel lecture</code>. Every file is in this folder: copy it to any web server "
-       "as it is.</p>\n<nav>\n<h2>Contents</h2>\n<ol>\n";
+       "as it is.</p>\n<nav>\n<h2>Contents</h2>\n<ul>\n";
   for (const PageScene& s : scenes)
-    h << "<li><a href=\"#" << sectionId(s.record.scene) << "\">" << escapeHtml(s.record.title) << "</a></li>\n";
-  h << "</ol>\n</nav>\n</header>\n<main>\n";
+    h << "<li><span class=\"number\">" << escapeHtml(fileNumber(s.record.file)) << "</span><a href=\"#" << sectionId(s.record.scene)
+      << "\">" << escapeHtml(s.record.title) << "</a></li>\n";
+  h << "</ul>\n</nav>\n</header>\n<main>\n";
   for (const PageScene& s : scenes) writeSection(h, s);
-  h << "</main>\n<footer>\n<h2>How it was made</h2>\n<table>\n<thead><tr><th>scene</th><th>videos</th><th>frame size</th>"
+  h << "</main>\n<footer>\n<h2>How it was made</h2>\n" << kTableOpen << "<thead><tr><th>scene</th><th>videos</th><th>frame size</th>"
        "<th>fps</th><th>job (s)</th></tr></thead>\n<tbody>\n";
   double total = 0.0;
   for (const PageScene& s : scenes) {
@@ -247,9 +302,24 @@ std::string pageHtml(const std::vector<PageScene>& scenes) {
       << r.videos.size() << "</td><td>" << sizes << "</td><td>" << rates << "</td><td class=\"number seconds\">" << shown(r.seconds, 3)
       << "</td></tr>\n";
   }
-  h << "</tbody>\n</table>\n<p class=\"muted seconds\">" << shown(total, 4)
+  h << "</tbody>\n" << kTableClose << "<p class=\"muted seconds\">" << shown(total, 4)
     << " s of job time in all; jobs that ran at once overlap in wall time.</p>\n</footer>\n</body>\n</html>\n";
   return h.str();
+}
+
+std::string packTitle(const std::string& dir) {
+  std::ifstream in(fs::path(dir) / kTitleName);
+  std::string title;
+  std::getline(in, title);
+  return title.empty() ? kDefaultTitle : title;
+}
+
+void writePackTitle(const std::string& dir, const std::string& title) {
+  if (title.empty() || title.find_first_of("\n\r") != std::string::npos)
+    throw UsageError("--title: give the page's title as one line of text, e.g. --title \"Rigid body motion\"");
+  AtomicFile file((fs::path(dir) / kTitleName).string());
+  file.stream() << title << '\n';
+  file.commit();
 }
 
 size_t writePage(const std::string& dir) {
@@ -259,7 +329,7 @@ size_t writePage(const std::string& dir) {
   if (scenes.empty())
     throw UsageError(dir + ": no scenes here (no <scene>/" + kRecordName + "); render some with `rigidreel lecture SCENE... -o " + dir + "`");
   AtomicFile page((fs::path(dir) / kPageName).string());
-  page.stream() << pageHtml(scenes);
+  page.stream() << pageHtml(scenes, packTitle(dir));
   page.commit();
   return scenes.size();
 }

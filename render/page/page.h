@@ -19,6 +19,10 @@
 namespace render::page {
 
 inline constexpr const char* kPageName = "index.html";
+// the page's title, a line in DIR/title.txt (`lecture --title TEXT` writes it), so that every job
+// and `--page` rebuild the page under the same title
+inline constexpr const char* kTitleName = "title.txt";
+inline constexpr const char* kDefaultTitle = "Lecture pack";
 
 // a scene's record with what its files hold
 struct PageScene {
@@ -26,12 +30,18 @@ struct PageScene {
   std::vector<MediaInfo> videos, posters, panels;  // in the record's order
 };
 
-// the scenes of the pack in `dir`, by folder name; throws render::jobs::UsageError for a missing
+// the scenes of the pack in `dir`, in their folders' order.txt (scene_record.h's order) first, the
+// others by folder name; throws render::jobs::UsageError for a missing
 // folder, a malformed record (PATH:LINE:COL) or a file a record names that is missing or unreadable
 std::vector<PageScene> readPack(const std::string& dir);
 
-// the page
-std::string pageHtml(const std::vector<PageScene>& scenes);
+// the page, under `title`
+std::string pageHtml(const std::vector<PageScene>& scenes, const std::string& title = kDefaultTitle);
+
+// the pack's title: DIR/title.txt's line, or kDefaultTitle
+std::string packTitle(const std::string& dir);
+// writes DIR/title.txt atomically; throws UsageError for an empty title or one of several lines
+void writePackTitle(const std::string& dir, const std::string& title);
 
 // reads the pack in `dir` and writes DIR/index.html atomically, under an exclusive lock on `dir`;
 // returns the number of scenes on it. Throws as readPack does, and UsageError for a folder that

@@ -83,6 +83,7 @@ void writeSceneRecord(const SceneRecord& r, const std::string& path) {
   j.beginObject().field("scene", r.scene).field("file", r.file).field("title", r.title).field("description", r.description);
   j.field("question", r.question).field("answer", r.answer);
   j.field("seconds", r.seconds);
+  if (r.order > 0) j.field("order", static_cast<double>(r.order));
   j.key("videos").beginArray();
   for (const VideoRecord& v : r.videos)
     j.beginObject().field("variant", v.variant).field("video", v.video).field("poster", v.poster).field("fps", v.fps).endObject();
@@ -98,7 +99,9 @@ void writeSceneRecord(const SceneRecord& r, const std::string& path) {
     numbers(j, c.expected);
     j.key("actual");
     numbers(j, c.actual);
-    j.field("error", c.error).field("tolerance", c.tolerance).endObject();
+    j.field("error", c.error).field("tolerance", c.tolerance);
+    if (c.earlierRun) j.field("earlier_run", true);
+    j.endObject();
   }
   j.endArray();
   j.endObject();
@@ -126,13 +129,16 @@ SceneRecord readSceneRecord(const std::string& path) {
   r.question = root["question"] ? in.text(root, "question") : "";
   r.answer = root["answer"] ? in.text(root, "answer") : "";
   r.seconds = in.number(root, "seconds");
+  // (absent from a record of a scene without order.txt, and from records written before it)
+  if (root["order"]) r.order = static_cast<int>(in.number(root, "order"));
   for (const YAML::Node& v : in.field(root, "videos", YAML::NodeType::Sequence))
     r.videos.push_back({in.text(v, "variant"), in.fileName(v, "video"), in.fileName(v, "poster"), in.number(v, "fps")});
   for (const YAML::Node& p : in.field(root, "panels", YAML::NodeType::Sequence))
     r.panels.push_back({in.fileName(p, "image"), in.text(p, "when"), in.flag(p, "question"), p["answer"] && in.flag(p, "answer")});
   for (const YAML::Node& c : in.field(root, "checks", YAML::NodeType::Sequence))
     r.checks.push_back({in.text(c, "variant"), in.number(c, "time"), in.text(c, "quantity"), in.numbers(c, "expected"),
-                        in.numbers(c, "actual"), in.number(c, "error"), in.number(c, "tolerance")});
+                        in.numbers(c, "actual"), in.number(c, "error"), in.number(c, "tolerance"),
+                        c["earlier_run"] && in.flag(c, "earlier_run")});
   return r;
 }
 

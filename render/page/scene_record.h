@@ -34,6 +34,7 @@ struct CheckRecord {
   std::string quantity;
   std::vector<double> expected, actual;
   double error = 0.0, tolerance = 0.0;
+  bool earlierRun = false;  // the expected value is an earlier run's, not a closed form (the entry's source:)
   bool passed() const { return error <= tolerance; }
 };
 
@@ -43,6 +44,7 @@ struct SceneRecord {
   std::string title, description;
   std::string question, answer;  // the poll's (`question:`, `answer:`); the page folds the answer away
   double seconds = 0.0;     // the job's wall time
+  int order = 0;            // its place in the folder's order.txt (1, 2, ...), 0 when it has none
   std::vector<VideoRecord> videos;
   std::vector<PanelRecord> panels;
   std::vector<CheckRecord> checks;

@@ -14,7 +14,9 @@ using namespace sim::world;
 namespace {
 
 CheckResult compare(const ExpectDef& e, std::string quantity, std::vector<double> expected, std::vector<double> actual) {
-  return compareValues(e.time, e.tolerance, std::move(quantity), std::move(expected), std::move(actual));
+  CheckResult r = compareValues(e.time, e.tolerance, std::move(quantity), std::move(expected), std::move(actual));
+  r.earlierRun = e.earlierRun;
+  return r;
 }
 
 std::vector<double> pair(const Vec2& v) { return {v.x(), v.y()}; }

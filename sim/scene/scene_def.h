@@ -52,6 +52,7 @@ struct ExpectDef {
   std::optional<Vec2> momentum;            // world
   std::optional<double> angularMomentum;   // world, about the origin
   double tolerance = settings::kDefaultExpectTolerance;
+  bool earlierRun = false;  // source: earlier_run, a value an earlier run gave (else a closed form)
   SourceLoc loc;
 };
 

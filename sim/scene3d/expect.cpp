@@ -43,6 +43,7 @@ std::vector<CheckResult> evaluate(const ExpectDef& e, const SceneDef& def, const
   std::vector<CheckResult> out;
   auto compare = [&](std::string quantity, std::vector<double> expected, std::vector<double> actual) {
     out.push_back(sim::core::compareValues(e.time, e.tolerance, std::move(quantity), std::move(expected), std::move(actual)));
+    out.back().earlierRun = e.earlierRun;
   };
   const int i = e.body.empty() ? -1 : def.bodyIndex(e.body);
   const std::string prefix = i < 0 ? "" : e.body + ".";

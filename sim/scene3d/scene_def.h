@@ -53,6 +53,7 @@ struct ExpectDef {
   // axis in the body and the symmetry axis about L in space, and the period of ω's middle-axis part
   std::optional<double> coneAngle, precessionRate, spacePrecessionRate, flipPeriod;
   double tolerance = sim::core::settings::kDefaultExpectTolerance;
+  bool earlierRun = false;  // source: earlier_run, a value an earlier run gave (else a closed form)
   SourceLoc loc;
 };
 

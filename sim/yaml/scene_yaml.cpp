@@ -159,7 +159,7 @@ class SceneReader : public Reader {
 
   ExpectDef readExpect(const YAML::Node& n, const SceneDef& s) {
     checkKeys(n, {"time", "body", "position", "angle", "velocity", "angular_velocity", "kinetic_energy",
-                  "potential_energy", "total_energy", "momentum", "angular_momentum", "tolerance"},
+                  "potential_energy", "total_energy", "momentum", "angular_momentum", "tolerance", "source"},
               "an expect entry");
     ExpectDef e;
     e.loc = {n.Mark().line + 1, n.Mark().column + 1};
@@ -179,6 +179,7 @@ class SceneReader : public Reader {
     optional(n, "momentum", e.momentum, &Reader::vec2);
     optional(n, "angular_momentum", e.angularMomentum, &Reader::finite);
     optional(n, "tolerance", e.tolerance, &Reader::positive);
+    e.earlierRun = expectSource(n);
     return e;
   }
 

@@ -19,20 +19,35 @@
 namespace sim::yaml {
 using sim::core::Vec2;
 
-// edit distance, to name the valid key nearest to a misspelled one
+// edit distance with a swap of two neighbours counted as one edit (the optimal string alignment
+// form of Damerau's, 1964): the typos a hint should catch are a letter wrong, missing, extra or
+// two swapped
 inline size_t editDistance(const std::string& a, const std::string& b) {
-  std::vector<size_t> row(b.size() + 1);
-  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (size_t i = 1; i <= a.size(); ++i) {
-    size_t diagonal = row[0];
-    row[0] = i;
+  std::vector<std::vector<size_t>> d(a.size() + 1, std::vector<size_t>(b.size() + 1));
+  for (size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+  for (size_t i = 1; i <= a.size(); ++i)
     for (size_t j = 1; j <= b.size(); ++j) {
-      const size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
-      diagonal = up;
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] != b[j - 1])});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
     }
+  return d[a.size()][b.size()];
+}
+
+// "; did you mean 'density'?" when one of `valid` is close to `given` (at most a third of its
+// letters edited), else "; choose one of: a, b, c": a far guess misleads more than a list
+inline std::string nearestOrList(const std::string& given, const std::vector<std::string>& valid) {
+  const std::string* nearest = nullptr;
+  for (const std::string& k : valid)
+    if (!nearest || editDistance(given, k) < editDistance(given, *nearest)) nearest = &k;
+  std::string hint;
+  if (nearest && 3 * editDistance(given, *nearest) <= given.size()) {
+    hint.append("; did you mean '").append(*nearest).append("'?");
+    return hint;
   }
-  return row[b.size()];
+  hint.append("; choose one of: ");
+  for (size_t i = 0; i < valid.size(); ++i) hint.append(i ? ", " : "").append(valid[i]);
+  return hint;
 }
 
 inline std::string describe(const YAML::Node& n) {
@@ -75,10 +90,7 @@ class Reader {
         fail(kv.first, "duplicate key '" + key + "' in " + what + "; give each key once");
       seen.push_back(key);
       if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
-      const std::string* nearest = &allowed.front();
-      for (const std::string& k : allowed)
-        if (editDistance(key, k) < editDistance(key, *nearest)) nearest = &k;
-      fail(kv.first, "unknown key '" + key + "' in " + what + "; did you mean '" + *nearest + "'?");
+      fail(kv.first, "unknown key '" + key + "' in " + what + nearestOrList(key, allowed));
     }
   }
 
@@ -201,6 +213,17 @@ class Reader {
       fail(n, what + " time " + n.Scalar() + " is outside the scene's duration [0, " + d.str() +
                   "]; move it or lengthen 'duration'");
     }
+  }
+
+  // an expect entry's `source`: false for closed_form (the default), true for earlier_run (a value an
+  // earlier run gave, kept to catch a change: the page heads it so, not as a closed form)
+  bool expectSource(const YAML::Node& entry) const {
+    const YAML::Node n = entry["source"];
+    if (!n) return false;
+    const std::string s = text(n, "source");
+    if (s != "closed_form" && s != "earlier_run")
+      fail(n, "unknown source '" + s + "'; choose one of: closed_form (the default), earlier_run");
+    return s == "earlier_run";
   }
 
   // one of `names`, listing them when it is not

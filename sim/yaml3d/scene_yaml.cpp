@@ -150,7 +150,7 @@ class SceneReader3 : public Reader3 {
     if (!n.IsMap()) fail(n, "expected a map for an expect entry, got " + describe(n));
     keys(n, {"time", "body", "position", "orientation", "velocity", "angular_velocity", "quaternion_norm", "kinetic_energy",
              "potential_energy", "total_energy", "momentum", "angular_momentum", "cone_angle", "precession_rate",
-             "space_precession_rate", "flip_period", "tolerance"},
+             "space_precession_rate", "flip_period", "tolerance", "source"},
          kExpectRefusals, "an expect entry");
     ExpectDef e;
     e.loc = {n.Mark().line + 1, n.Mark().column + 1};
@@ -181,6 +181,7 @@ class SceneReader3 : public Reader3 {
     optional(n, "space_precession_rate", e.spacePrecessionRate, &Reader::finite);
     optional(n, "flip_period", e.flipPeriod, &Reader::positive);
     optional(n, "tolerance", e.tolerance, &Reader::positive);
+    e.earlierRun = expectSource(n);
     return e;
   }
 

@@ -162,4 +162,35 @@ sed -i 's/panels: \[0.8\]/panels: impacts/' short/s.yaml
 expect "panels at impacts where a variant has none: exit 2" 2 "'panels: impacts' needs an impact in every variant" \
   lecture short/s.yaml "${SMALL[@]}" -o so
 
+# ---- the page's title and the folder's order ------------------------------------------------
+mkdir ordered
+cp "$SRC/scenes/poll_bar_impulse.yaml" ordered/a_poll.yaml
+cp "$SRC/scenes/two_bodies.yaml" ordered/b_two.yaml
+cp "$SRC/scenes/three_collisions_poll.yaml" ordered/c_three.yaml
+printf '# the course order\nc_three.yaml\n\nb_two  # .yaml may be left out\n' >ordered/order.txt
+run lecture ordered "${SMALL[@]}" -o ord --list
+[ "$rc" -eq 0 ] && [ "$(grep '/page.json$' out | tr '\n' ' ')" = "ord/three_collisions_poll/page.json ord/two_bodies/page.json ord/poll_bar_impulse/page.json " ]
+check "a folder's order.txt orders its scenes, those it leaves out after, by name" $? "$(cat out)"
+run check ordered -q
+[ "$rc" -eq 0 ]
+check "check of a folder with an order.txt" $?
+run lecture ordered/b_two.yaml ordered/c_three.yaml "${SMALL[@]}" -o ord -j 2 --title "Rigid body motion, week 3"
+grep -q '<h1>Rigid body motion, week 3</h1>' ord/index.html && grep -q '<title>Rigid body motion, week 3: 2 scenes</title>' ord/index.html &&
+  [ "$(cat ord/title.txt)" = "Rigid body motion, week 3" ]
+check "lecture --title titles the page and keeps the title in DIR/title.txt" $?
+[ "$(grep -o '<section id="scene-[a-z_]*"' ord/index.html | tr '\n' ' ')" = '<section id="scene-three_collisions_poll" <section id="scene-two_bodies" ' ]
+check "the page follows order.txt, not the names" $?
+run lecture ordered/a_poll.yaml "${SMALL[@]}" -o ord
+grep -q '<h1>Rigid body motion, week 3</h1>' ord/index.html && [ "$(grep -c '<section id="scene-' ord/index.html)" -eq 3 ] &&
+  [ "$(grep -o '<section id="scene-[a-z_]*"' ord/index.html | tail -1)" = '<section id="scene-poll_bar_impulse"' ]
+check "a later job without --title keeps the pack's title; an unlisted scene comes last" $?
+run lecture --page ord --title "Week 4"
+[ "$rc" -eq 0 ] && grep -q '<h1>Week 4</h1>' ord/index.html
+check "--page DIR --title retitles the page" $?
+expect "a title of two lines is bad input" 2 "--title: give the page's title as one line" lecture --page ord --title "$(printf 'a\nb')"
+printf 'c_three.yaml\nnone.yaml\n' >ordered/order.txt
+expect "order.txt naming no scene file: exit 2 at its line" 2 "ordered/order.txt:2:1: no scene file 'none.yaml'" lecture ordered --list
+printf 'c_three.yaml\nc_three\n' >ordered/order.txt
+expect "order.txt naming a scene twice: exit 2 at its line" 2 "ordered/order.txt:2:1: 'c_three' is listed twice" check ordered
+
 cli_finish

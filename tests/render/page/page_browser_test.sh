@@ -6,7 +6,8 @@
 # the page states both; every image and poster decodes at its stated size; every link reaches a file
 # of the folder (or an id of the page); no script or loading error. A screenshot of the page at
 # 1280 px wide (its first 1180 px: the header, the contents and the first scene's videos and panels)
-# is compared with tests/golden/page/index.png.
+# is compared with tests/golden/page/index.png. Then the layout at 390 and 1280 px (layout.js): no
+# horizontal scroll, tables scrolling in their own box, every video's controls below its picture.
 #
 # The mp4 is H.264: Debian's chromium plays it (its ffmpeg has the decoder), which this test shows by
 # decoding every video's last frame, not by asking canPlayType.
@@ -103,5 +104,46 @@ sys.exit(1 if bad or files == 0 or not probe["videos"] or not probe["images"] el
 PY
 
 "$SCREENSHOT_CHECK" "$WORK/screenshot.png" || fail "the screenshot differs from tests/golden/page/index.png"
+
+# the layout on a phone (390 px) and a laptop (1280 px): nothing wider than the window (videos and
+# panels scale to it, tables scroll in their own box), and each video's picture above the strip
+# where the browser draws the controls, so the frame's caption is never under them (paused or not)
+cp "$HERE/layout.js" "$WORK/pack/"
+sed 's|<head>|<head>\n<script src="layout.js"></script>|' "$PACK/index.html" >"$WORK/pack/layout.html"
+for width in 390 1280; do
+  python3 "$HERE/browser.py" "file://$WORK/pack/layout.html" "file://$WORK/pack/index.html" "$WORK/layout-$width.json" \
+    "$WORK/screenshot-$width.png" "$width" ".seconds" || { fail "the browser could not open the page at $width px"; continue; }
+  python3 - "$WORK/layout-$width.json" "$width" <<'PY' || failed=1
+import json, sys
+layout, width = json.load(open(sys.argv[1])), int(sys.argv[2])
+# Chromium's media controls: a panel 72 px high at the bottom of the video's box (a row of buttons
+# 48 px high over a 24 px timeline, as its screenshots show), over the picture unless the box leaves
+# room for it below
+CONTROLS = 72
+bad = []
+if layout["width"] != width or layout["scrollWidth"] > width:
+    bad.append("the page is %d px wide in a %d px window (wider: %s)" % (layout["scrollWidth"], layout["width"],
+               ", ".join(sorted(set(layout["outside"]))[:12])))
+for t in layout["tables"]:
+    if t["overflowX"] != "auto" or t["right"] > width + 0.5:
+        bad.append("a table's box is not its own scroller inside the window: %s" % t)
+for v in layout["videos"]:
+    name = v["src"].rsplit("/", 1)[-1]
+    scale = min(v["width"] / v["videoWidth"], v["height"] / v["videoHeight"])
+    picture = v["videoHeight"] * scale
+    if v["objectFit"] != "contain" or not v["objectPosition"].endswith(" 0%"):
+        bad.append("%s: the picture is not kept whole at the box's top (%s, %s)" % (name, v["objectFit"], v["objectPosition"]))
+    if abs(v["videoWidth"] * scale - v["width"]) > 1:
+        bad.append("%s: the picture is %.0f px wide in a %.0f px box" % (name, v["videoWidth"] * scale, v["width"]))
+    if v["height"] - picture < CONTROLS:
+        bad.append("%s: the controls (the box's last %d px) cover the picture's last %.0f px, where the caption is" % (
+            name, CONTROLS, CONTROLS - (v["height"] - picture)))
+print("at %d px: the page %d px wide, %d videos with their controls below the picture, %d tables" % (
+    width, layout["scrollWidth"], len(layout["videos"]), len(layout["tables"])))
+for b in bad:
+    print("FAIL: " + b)
+sys.exit(1 if bad or not layout["videos"] else 0)
+PY
+done
 [ "$failed" -eq 0 ] && echo "ok: every video plays, every image decodes, every link resolves; the page looks as it did"
 exit "$failed"

@@ -175,10 +175,13 @@ TEST_CASE("the page: a section per scene with its videos, posters, panels as que
   CHECK(scenes[0].videos[0].duration == doctest::Approx(1.5));
   const std::string html = pageHtml(scenes);
   CHECK(html.starts_with("<!DOCTYPE html>\n<html lang=\"en\">"));
-  CHECK(html.find("<li><a href=\"#scene-05_impulses\">Impulses</a></li>") != std::string::npos);
+  // the contents numbered by the file's own number
+  CHECK(html.find("<li><span class=\"number\">05</span><a href=\"#scene-05_impulses\">Impulses</a></li>") != std::string::npos);
+  CHECK(html.find("<h2><span class=\"muted\">05</span> Impulses</h2>") != std::string::npos);
+  CHECK(html.find("<title>Lecture pack: 1 scenes</title>") != std::string::npos);
   CHECK(html.find("<section id=\"scene-05_impulses\">") != std::string::npos);
   CHECK(html.find("<video controls preload=\"metadata\" width=\"160\" height=\"90\" poster=\"05_impulses/05_impulses-center.png\" "
-                  "data-duration=\"1.5\"><source src=\"05_impulses/05_impulses-center.mp4\" type=\"video/mp4\">") != std::string::npos);
+                  "data-duration=\"1.5\" style=\"--ratio: 0.5625\"><source src=\"05_impulses/05_impulses-center.mp4\" type=\"video/mp4\">") != std::string::npos);
   CHECK(html.find("<span class=\"question\">question</span> · t = 0 s") != std::string::npos);
   CHECK(html.find("<span class=\"answer\">answer</span> · t = 2.5 s") != std::string::npos);
   CHECK(html.find("width=\"320\" height=\"90\"") != std::string::npos);
@@ -187,6 +190,16 @@ TEST_CASE("the page: a section per scene with its videos, posters, panels as que
   CHECK(html.find("<b>not") == std::string::npos);
   CHECK(html.find("<td class=\"ok\">ok</td>") != std::string::npos);
   CHECK(html.find("<td class=\"failed\">FAILED</td>") != std::string::npos);
+  // both checks are closed forms: one heading, and every table in a box of its own that scrolls
+  CHECK(html.find("<h3>Closed forms, checked</h3>\n<div class=\"table\">\n<table>") != std::string::npos);
+  CHECK(html.find("earlier run") == std::string::npos);
+  CHECK(html.find("<table>") != std::string::npos);
+  size_t tables = 0, boxed = 0;
+  for (size_t at = html.find("<table>"); at != std::string::npos; at = html.find("<table>", at + 1)) ++tables;
+  for (size_t at = html.find("<div class=\"table\">\n<table>"); at != std::string::npos; at = html.find("<div class=\"table\">\n<table>", at + 1))
+    ++boxed;
+  CHECK(tables == 2);
+  CHECK(boxed == tables);
   CHECK(html.find("<script") == std::string::npos);
   CHECK(html.find("http") == std::string::npos);  // nothing from the network
 }
@@ -213,6 +226,65 @@ TEST_CASE("the page: the question above the videos, the answer only inside a clo
   CHECK(html.find("<details open") == std::string::npos);
   CHECK(html.find("<figcaption>t = 1 s · ") != std::string::npos);
   CHECK(html.find("answer</span> · t = 1 s") == std::string::npos);
+}
+
+TEST_CASE("closed forms and values an earlier run gave are headed apart") {
+  TempDir dir("sources");
+  SceneRecord r = impulses();
+  r.checks[1].earlierRun = true;
+  writeScene(dir.path, r);
+  const std::vector<PageScene> scenes = readPack(dir.path.string());
+  CHECK(scenes[0].record.checks[1].earlierRun);
+  CHECK_FALSE(scenes[0].record.checks[0].earlierRun);
+  const std::string html = pageHtml(scenes);
+  const size_t closed = html.find("<h3>Closed forms, checked</h3>"), earlier = html.find("<h3>Checked against an earlier run</h3>");
+  REQUIRE(closed != std::string::npos);
+  REQUIRE(earlier != std::string::npos);
+  // each table has its own row and its own column heading
+  CHECK(html.find("<th>closed form</th>", closed) < earlier);
+  CHECK(html.find("bar.angular_velocity", closed) < earlier);
+  CHECK(html.find("<th>earlier run</th>", earlier) != std::string::npos);
+  CHECK(html.find("bar.velocity", earlier) != std::string::npos);
+  CHECK(html.find("bar.velocity", closed) > earlier);
+}
+
+TEST_CASE("the contents number scenes by their files' own numbers; the title is the pack's") {
+  SceneRecord a = impulses(), b = impulses(), c = impulses();
+  a.file = "scenes/lecture/10a_energy_gain.yaml", a.scene = "10a_energy_gain";
+  b.file = "scenes/lecture/11_state_in_3d.yaml", b.scene = "11_state_in_3d";
+  c.file = "scenes/extra/notes.yaml", c.scene = "notes";
+  // (no files: the contents and headings are what is looked at)
+  for (SceneRecord* r : {&a, &b, &c}) r->videos.clear(), r->panels.clear();
+  const std::string html = pageHtml({{a, {}, {}, {}}, {b, {}, {}, {}}, {c, {}, {}, {}}}, "Rigid <body> motion");
+  CHECK(html.find("<span class=\"number\">10a</span><a href=\"#scene-10a_energy_gain\">") != std::string::npos);
+  CHECK(html.find("<span class=\"number\">11</span><a href=\"#scene-11_state_in_3d\">") != std::string::npos);
+  // a file without a number has none (never a count of its own)
+  CHECK(html.find("<span class=\"number\"></span><a href=\"#scene-notes\">") != std::string::npos);
+  CHECK(html.find("<title>Rigid &lt;body&gt; motion: 3 scenes</title>") != std::string::npos);
+  CHECK(html.find("<h1>Rigid &lt;body&gt; motion</h1>") != std::string::npos);
+  CHECK(html.find("Lecture pack") == std::string::npos);
+}
+
+TEST_CASE("the pack's title lives in DIR/title.txt; scenes follow their order.txt places, then their names") {
+  TempDir dir("order");
+  CHECK(packTitle(dir.path.string()) == "Lecture pack");
+  writePackTitle(dir.path.string(), "Rigid body motion");
+  CHECK(packTitle(dir.path.string()) == "Rigid body motion");
+  CHECK(errorOf([&] { writePackTitle(dir.path.string(), "two\nlines"); }).find("--title") != std::string::npos);
+  CHECK(errorOf([&] { writePackTitle(dir.path.string(), ""); }).find("--title") != std::string::npos);
+  CHECK(packTitle(dir.path.string()) == "Rigid body motion");
+  SceneRecord a = impulses(), b = impulses(), c = impulses();
+  a.scene = "a_first", b.scene = "b_second", c.scene = "c_third";
+  a.order = 0, b.order = 2, c.order = 1;
+  for (SceneRecord* r : {&a, &b, &c}) writeScene(dir.path, *r);
+  const std::vector<PageScene> scenes = readPack(dir.path.string());
+  REQUIRE(scenes.size() == 3);
+  CHECK(scenes[0].record.scene == "c_third");
+  CHECK(scenes[1].record.scene == "b_second");
+  CHECK(scenes[2].record.scene == "a_first");  // no place in order.txt: after those that have one
+  CHECK(scenes[0].record.order == 1);
+  writePage(dir.path.string());
+  CHECK(slurp(dir.path / kPageName).find("<h1>Rigid body motion</h1>") != std::string::npos);
 }
 
 TEST_CASE("links are relative and percent-encoded; text is escaped") {

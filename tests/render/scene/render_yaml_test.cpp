@@ -134,6 +134,8 @@ TEST_CASE("variants can change the render block") {
 
 TEST_CASE("bad render values name the line and what to write") {
   expectError("render: {sise: [2, 2]}\n", 3, "did you mean 'size'");
+  // far from every key of the block: the keys listed, no guess ('annotations' is not 'contacts')
+  expectError("render: {annotations: true}\n", 3, "choose one of: size, fps,");
   expectError("render:\n  size: [321, 180]\n", 4, "even sides");
   expectError("render:\n  size: [320, 9000]\n", 4, "from 16 to 8192");
   expectError("render:\n  size: [320.5, 180]\n", 4, "whole number");
