@@ -9,6 +9,7 @@
 #include "render/cli/run_progress.h"
 #include "render/cli/scene_options.h"
 #include "render/cli/space3d.h"
+#include "render/golden/trace_csv.h"
 #include "render/jobs/atomic_file.h"
 #include "render/jobs/json_writer.h"
 #include "sim/scene/scene_build.h"
@@ -19,34 +20,12 @@ namespace render::cli {
 using namespace render::jobs;
 
 namespace {
+using render::golden::TraceWriter;
 
 struct SimulateOptions : SceneOptions {
   std::optional<double> until;
   bool json = false;
   std::string trace;
-};
-
-// one CSV row per body per step, and again after each event
-class TraceWriter : public sim::world::StepObserver {
- public:
-  TraceWriter(std::ostream& out, const sim::scene::SceneDef& def) : out_(out), def_(def) {
-    out_ << "t,body,x,y,angle,vx,vy,omega,kinetic_energy\n";
-  }
-  void afterStep(const sim::world::World& w) override { rows(w); }
-  void afterEvent(const sim::world::World& w, const sim::world::ImpulseEvent&) override { rows(w); }
-  void rows(const sim::world::World& w) {
-    for (size_t i = 0; i < w.bodies.size(); ++i) {
-      const sim::core::Body& b = w.bodies[i];
-      out_ << formatNumber(w.time) << ',' << def_.bodies[i].name << ',' << formatNumber(b.x.x()) << ','
-           << formatNumber(b.x.y()) << ',' << formatNumber(b.angle) << ',' << formatNumber(b.v.x()) << ','
-           << formatNumber(b.v.y()) << ',' << formatNumber(b.omega) << ','
-           << formatNumber(sim::world::kineticEnergy(b).total()) << '\n';
-    }
-  }
-
- private:
-  std::ostream& out_;
-  const sim::scene::SceneDef& def_;
 };
 
 void printJson(const sim::scene::SceneDef& def, const sim::world::World& w) {

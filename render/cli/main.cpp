@@ -15,6 +15,9 @@ int main(int argc, char** argv) {
   render::cli::addRenderCommand(app, exitCode);
   render::cli::addSnapshotCommand(app, exitCode);
   render::cli::addLectureCommand(app, exitCode);
+  render::cli::addGoldenCommand(app, exitCode);
+  render::cli::addCompareCommand(app, exitCode);
+  render::cli::addExpectCommand(app, exitCode);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

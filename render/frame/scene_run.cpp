@@ -117,6 +117,19 @@ void SceneRun::drawListsAt(const std::vector<double>& instants, int strobe,
   });
 }
 
+void SceneRun::shotsAt(const std::vector<double>& instants, const std::vector<bool>& pictured,
+                       const std::function<void(size_t, const Shot&)>& shot) {
+  branchAt(instants, 0, [&](size_t i, State& state) {
+    advance(state, instants[i], 0);
+    Shot s{state.world, {}, {}};
+    if (pictured[i]) {
+      painter_.paint(state.world, state.history, {}, s.drawList);
+      if (canvas_) s.frame = paint(state, {});
+    }
+    shot(i, s);
+  });
+}
+
 namespace {
 
 // Watches a run that advances to its last instant in one call and keeps, for each instant ahead, a

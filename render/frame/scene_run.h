@@ -43,6 +43,17 @@ class SceneRun {
   void framesAt(const std::vector<double>& instants, int strobe, const std::function<void(size_t, Image)>& shot);
   // the same as draw lists, without GL
   void drawListsAt(const std::vector<double>& instants, int strobe, const std::function<void(size_t, DrawList)>& shot);
+  // what a golden record takes of an instant: the world there (its state hash and trace rows), and
+  // when pictured its draw list and, with a GL context, its frame
+  struct Shot {
+    const sim::world::World& world;
+    DrawList drawList;
+    Image frame;
+  };
+  // the shots at each of `instants` from a fresh run, as framesAt reaches them (each the state a fresh
+  // run reaches at its instant), those with `pictured[i]` drawn; afterwards this run is spent
+  void shotsAt(const std::vector<double>& instants, const std::vector<bool>& pictured,
+               const std::function<void(size_t, const Shot&)>& shot);
   // the title card alone (title_card.h), the frame's size; needs the text renderer
   Image titleCard();
   // video frames say when they are slowed (empty: never), see FramePainter
