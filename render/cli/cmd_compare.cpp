@@ -25,10 +25,12 @@ struct CompareCommand : SceneOptions {
   std::string plot;
 };
 
+// errors and times to 6 significant digits (the time of a step is a sum of dt: 1.0010000000000001)
 std::string over(const ErrorTrack& e, double tolerance) {
-  std::string s = formatNumber(e.largest);
-  if (e.largest > 0.0) s += " at t = " + formatNumber(e.largestAt);
-  if (e.firstOver >= 0.0) s += ", over " + formatNumber(tolerance) + " from t = " + formatNumber(e.firstOver);
+  using render::video::timeForName;
+  std::string s = timeForName(e.largest);
+  if (e.largest > 0.0) s += " at t = " + timeForName(e.largestAt);
+  if (e.firstOver >= 0.0) s += ", over " + formatNumber(tolerance) + " from t = " + timeForName(e.firstOver);
   return s;
 }
 
@@ -82,10 +84,10 @@ int compare(const CompareCommand& o) {
     }
     any = true;
     failed = failed || b.exceeded();
-    std::cout << (b.exceeded() ? "  FAIL  " : "  ok    ") << b.name << " (t = " << formatNumber(b.from) << " to "
-              << formatNumber(b.to) << "): position " << over(b.position, tolerance.position) << "; angle "
+    std::cout << (b.exceeded() ? "  FAIL  " : "  ok    ") << b.name << " (t = " << render::video::timeForName(b.from) << " to "
+              << render::video::timeForName(b.to) << "): position " << over(b.position, tolerance.position) << "; angle "
               << over(b.angle, tolerance.angle) << "; velocity " << over(b.velocity, tolerance.velocity)
-              << "; kinetic energy at t = " << formatNumber(b.to) << ": ours " << formatNumber(b.oursEnergy) << " J, theirs "
+              << "; kinetic energy at t = " << render::video::timeForName(b.to) << ": ours " << formatNumber(b.oursEnergy) << " J, theirs "
               << formatNumber(b.theirsEnergy) << " J\n";
   }
   if (!any) throw UsageError(o.trace + ": no rows for any body of the scene");
