@@ -6,6 +6,7 @@
 
 #include "render/cli/commands.h"
 #include "render/cli/output.h"
+#include "render/cli/overlay_option.h"
 #include "render/cli/scene_options.h"
 #include "render/jobs/interrupt.h"
 #include "render/cli/space3d.h"
@@ -21,6 +22,7 @@ struct RenderCommand : SceneOptions {
   std::string output = "out";
   bool allVariants = false;
   std::string size;
+  std::string overlay;  // another simulator's trace, drawn over ours
   std::optional<double> fps;
   std::optional<double> duration;
   std::string format = "mp4";
@@ -43,6 +45,7 @@ VideoRequest request(const RenderCommand& o) {
 
 int render(const RenderCommand& o) {
   const VideoRequest r = request(o);
+  if (!o.overlay.empty() && isSceneFile3d(o.scene)) throw UsageError("--overlay: a trace is drawn over 2D scenes only");
   if (isSceneFile3d(o.scene)) try {
       writePlan3(planVideos3(o.variantLoader3(), r), o.quiet, [](const std::string&) {});
       return kExitOk;
@@ -51,7 +54,7 @@ int render(const RenderCommand& o) {
       return kExitFailure;
     }
   try {
-    writePlan(planVideos(o.variantLoader(), r), o.quiet, [](const std::string&) {});
+    writePlan(planVideos(withOverlay(o.variantLoader(), o.overlay), r), o.quiet, [](const std::string&) {});
   } catch (const VariantDiverged& d) {
     std::cerr << videoDiverged(o.scene, d);
     return kExitFailure;
@@ -69,6 +72,7 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("-o,--output", o->output, "the output directory (default: out)");
   cmd->add_flag("--all-variants", o->allVariants, "one video per variant (the base scene when it has none)")->excludes("--variant");
   cmd->add_option("--size", o->size, "frame size WIDTHxHEIGHT in pixels, even (default: the scene's, 1280x720)");
+  cmd->add_option("--overlay", o->overlay, "another simulator's trace (CSV, as --trace writes): its bodies dashed over ours");
   cmd->add_option("--fps", o->fps, "frames per second (default: the scene's, 60)");
   cmd->add_option("--duration", o->duration, "length of the video in seconds (default: the scene's duration)");
   cmd->add_option("--format", o->format, "mp4 (H.264, default), webm (VP9) or gif");

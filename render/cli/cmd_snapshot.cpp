@@ -7,6 +7,7 @@
 
 #include "render/cli/commands.h"
 #include "render/cli/output.h"
+#include "render/cli/overlay_option.h"
 #include "render/cli/scene_options.h"
 #include "render/video/output_names.h"
 #include "render/cli/space3d.h"
@@ -24,6 +25,7 @@ struct SnapshotCommand : SceneOptions {
   std::optional<int> strobe;
   std::string output = "out";
   std::string size;
+  std::string overlay;  // another simulator's trace, drawn over ours
 };
 
 // "0.5,1,2.25" → {0.5, 1, 2.25}; throws UsageError
@@ -63,6 +65,7 @@ StillRequest request(const SnapshotCommand& o) {
 
 int snapshot(const SnapshotCommand& o) {
   const auto print = [](const std::string& path) { std::cout << path << '\n'; };
+  if (!o.overlay.empty() && isSceneFile3d(o.scene)) throw UsageError("--overlay: a trace is drawn over 2D scenes only");
   if (isSceneFile3d(o.scene)) try {
       writePlan3(planStills3(o.variantLoader3(), request(o)), true, print);
       return kExitOk;
@@ -71,7 +74,7 @@ int snapshot(const SnapshotCommand& o) {
       return kExitFailure;
     }
   try {
-    writePlan(planStills(o.variantLoader(), request(o)), true, print);
+    writePlan(planStills(withOverlay(o.variantLoader(), o.overlay), request(o)), true, print);
   } catch (const sim::world::Diverged& d) {
     std::cerr << o.scene << ": the simulation diverged at t = " << timeForName(d.time)
               << "; try a smaller step (--dt) or another integrator (--integrator rk4)\n";
@@ -93,6 +96,7 @@ void addSnapshotCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--strobe", o->strobe, "draw this many earlier poses, fading, behind the present one");
   cmd->add_option("-o,--output", o->output, "the output directory (default: out)");
   cmd->add_option("--size", o->size, "frame size WIDTHxHEIGHT in pixels, even (default: the scene's, 1280x720)");
+  cmd->add_option("--overlay", o->overlay, "another simulator's trace (CSV, as --trace writes): its bodies dashed over ours");
   cmd->callback([o, &exitCode] { exitCode = snapshot(*o); });
 }
 

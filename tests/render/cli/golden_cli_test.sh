@@ -165,6 +165,14 @@ expect "a row for a body the scene lacks is refused at its line" 2 "ghost.csv:3:
   compare throw.yaml --trace ghost.csv
 expect "a bad --tolerance is exit 2" 2 "--tolerance: expected position=X" compare throw.yaml --trace student.csv --tolerance speed=1
 
+# --- --overlay: their trace drawn over ours (the frame test checks what it draws); bad input refused
+run snapshot throw.yaml --at 1 --overlay student.csv -o shots --size 320x180
+[ "$rc" -eq 0 ] && [ -s shots/throw/throw-t1.png ] && run snapshot throw.yaml --at 1 -o plain --size 320x180 &&
+  ! cmp -s shots/throw/throw-t1.png plain/throw/throw-t1.png
+check "snapshot --overlay draws a frame unlike the one without" $?
+expect "an --overlay trace with a body the scene lacks is refused at its line" 2 "ghost.csv:3:3: the scene has no body named 'lid'" \
+  render throw.yaml --overlay ghost.csv -o vids --size 320x180 --fps 10 --quiet
+
 # --- expect: entries pasted into the scene make check pass (and one altered value fails it)
 run expect pair.yaml --at 0.5,1,1.5 --tolerance 1e-12
 [ "$rc" -eq 0 ] && [ "$(grep -c '^  - {time: ' out)" -eq 6 ]
