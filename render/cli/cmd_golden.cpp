@@ -1,6 +1,7 @@
 // `rigidreel golden record | check`: golden records of anyone's scenes (render/golden), one folder
 // per scene variant, and the scenes checked against them level by level, with an HTML report and
 // JUnit XML for CI.
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -43,11 +44,19 @@ struct Case {
 };
 
 // every variant of every file (the base scene when it has none), each read and its world started
-// (bad input is exit 2 before anything runs)
+// (bad input is exit 2 before anything runs); a 3D scene of a directory is skipped, said on stderr
 std::vector<Case> casesOf(const std::vector<std::string>& arguments) {
   std::vector<Case> cases;
+  std::vector<std::string> named;  // the files named themselves, not found in a directory
+  for (const std::string& a : arguments)
+    if (!fs::is_directory(a)) named.push_back(a);
   for (const std::string& file : lectureSceneFiles(arguments)) {
-    if (isSceneFile3d(file)) throw UsageError(file + ": a 3D scene; golden records are of 2D scenes for now");
+    if (isSceneFile3d(file)) {
+      if (std::find(named.begin(), named.end(), file) != named.end())
+        throw UsageError(file + ": a 3D scene; golden records are of 2D scenes for now");
+      std::cerr << file << ": skipped: a 3D scene, and golden records are of 2D scenes for now\n";
+      continue;
+    }
     const SceneFile base = readSceneFile(file);
     std::vector<std::string> variants = base.model().variantNames;
     if (variants.empty()) variants.push_back("");
@@ -67,9 +76,12 @@ GoldenRun record(const Case& c, const std::string& dir) {
   return run;
 }
 
+// "1 frame", "2 frames"
+std::string count(size_t n, const std::string& what) { return std::to_string(n) + " " + what + (n == 1 ? "" : "s"); }
+
 std::string describeRecord(const GoldenRun& run, const std::string& dir) {
-  return (fs::path(dir) / run.name).string() + ": " + std::to_string(run.checkpoints.size()) + " checkpoints, " +
-         std::to_string(run.frames.size()) + " frames (" + run.renderer + ")";
+  return (fs::path(dir) / run.name).string() + ": " + count(run.checkpoints.size(), "checkpoint") + ", " +
+         count(run.frames.size(), "frame") + " (" + run.renderer + ")";
 }
 
 int recordAll(const RecordCommand& o) {
@@ -129,8 +141,9 @@ int checkAll(const CheckCommand& o) {
     for (const LevelResult& l : results[i].levels)
       if (l.failed()) levels += std::string(levels.empty() ? "" : ", ") + levelName(l.level);
     const GoldenRun run = record(cases[i], o.golden);
-    std::cout << "updated " << describeRecord(run, o.golden) << "; replaced the record of " << records[i].times.checkpoints.size()
-              << " checkpoints and " << records[i].frameNames.size() << " frames that differed in: " << levels << '\n';
+    std::cout << "updated " << describeRecord(run, o.golden) << "; replaced the record of "
+              << count(records[i].times.checkpoints.size(), "checkpoint") << " and " << count(records[i].frameNames.size(), "frame")
+              << " that differed in: " << levels << '\n';
   }
   if (failed && o.update) return kExitOk;
   return failed ? kExitFailure : kExitOk;

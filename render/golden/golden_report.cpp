@@ -24,14 +24,16 @@ void writeReport(const std::vector<CaseResult>& results, const std::string& dir)
   html << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
           "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>rigidreel golden check</title>\n"
           "<style>\nbody{font-family:sans-serif;margin:1em auto;max-width:80em;padding:0 1em}\n"
-          "table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:.3em .6em;text-align:left;vertical-align:top}\n"
+          "table{border-collapse:collapse;width:100%;table-layout:fixed}"
+          "td,th{border:1px solid #ccc;padding:.3em .6em;text-align:left;vertical-align:top;overflow-wrap:anywhere}\n"
+          "col.scene{width:28%}col.level{width:14%}\n"
           ".ok{color:#2a7d2a}.failed{color:#c0392b;font-weight:bold}.skipped{color:#a66f00}\n"
           ".frames{display:flex;flex-wrap:wrap;gap:.5em}.frames figure{margin:0;flex:1 1 18em;min-width:0}\n"
           ".frames img{width:100%;height:auto;border:1px solid #ccc}figcaption{font-size:.9em}\n"
           "</style>\n</head>\n<body>\n<h1>rigidreel golden check</h1>\n<p>"
        << results.size() << " scene variants, " << failed << " failed. A failure at one level and not the others says where to look: "
        << "<em>state</em> the physics, <em>draw_list</em> what is shown, <em>pixels</em> only the rasterizer.</p>\n";
-  html << "<table>\n<tr><th>scene</th><th>level</th><th>result</th></tr>\n";
+  html << "<table>\n<col class=\"scene\"><col class=\"level\"><col>\n<tr><th>scene</th><th>level</th><th>result</th></tr>\n";
   for (const CaseResult& c : results)
     for (const LevelResult& l : c.levels) {
       const char* cls = l.status == LevelResult::Status::Failed ? "failed" : l.status == LevelResult::Status::Skipped ? "skipped" : "ok";
