@@ -25,6 +25,7 @@ struct SnapshotCommand : SceneOptions {
   std::optional<int> strobe;
   std::string output = "out";
   std::string size;
+  std::string trace;
   std::string overlay;  // another simulator's trace, drawn over ours
 };
 
@@ -67,14 +68,16 @@ int snapshot(const SnapshotCommand& o) {
   const auto print = [](const std::string& path) { std::cout << path << '\n'; };
   if (!o.overlay.empty() && isSceneFile3d(o.scene)) throw UsageError("--overlay: a trace is drawn over 2D scenes only");
   if (isSceneFile3d(o.scene)) try {
-      writePlan3(planStills3(o.variantLoader3(), request(o)), true, print);
+      const RenderPlan3 plan = planStills3(o.variantLoader3(), request(o));
+      traced<TraceWriter3>(o.trace, plan, [&](TraceWriter3* trace) { writePlan3(plan, true, print, trace); });
       return kExitOk;
     } catch (const VariantDiverged3& d) {
       std::cerr << divergedMessage(o.scene, d.model, d) << '\n';
       return kExitFailure;
     }
   try {
-    writePlan(planStills(withOverlay(o.variantLoader(), o.overlay), request(o)), true, print);
+    const RenderPlan plan = planStills(withOverlay(o.variantLoader(), o.overlay), request(o));
+    traced<TraceWriter>(o.trace, plan, [&](TraceWriter* trace) { writePlan(plan, true, print, trace); });
   } catch (const sim::world::Diverged& d) {
     std::cerr << o.scene << ": the simulation diverged at t = " << timeForName(d.time)
               << "; try a smaller step (--dt) or another integrator (--integrator rk4)\n";
@@ -96,6 +99,7 @@ void addSnapshotCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--strobe", o->strobe, "draw this many earlier poses, fading, behind the present one");
   cmd->add_option("-o,--output", o->output, "the output directory (default: out)");
   cmd->add_option("--size", o->size, "frame size WIDTHxHEIGHT in pixels, even (default: the scene's, 1280x720)");
+  cmd->add_option("--trace", o->trace, "also write every step of the pictures' run to this CSV file (as simulate --trace)");
   cmd->add_option("--overlay", o->overlay, "another simulator's trace (CSV, as --trace writes): its bodies dashed over ours");
   cmd->callback([o, &exitCode] { exitCode = snapshot(*o); });
 }

@@ -1,31 +1,17 @@
 #include "render/golden/trace_csv.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <map>
 #include <sstream>
 
 #include "render/jobs/json_writer.h"
-#include "sim/world/diagnostics.h"
 #include "sim/yaml/scene_error.h"
 
 namespace render::golden {
 using render::jobs::formatNumber;
-
-TraceWriter::TraceWriter(std::ostream& out, const sim::scene::SceneDef& def) : out_(out), def_(def) {
-  out_ << kTraceHeader << '\n';
-}
-
-void TraceWriter::rows(const sim::world::World& w) {
-  for (size_t i = 0; i < w.bodies.size(); ++i) {
-    const sim::core::Body& b = w.bodies[i];
-    out_ << formatNumber(w.time) << ',' << def_.bodies[i].name << ',' << formatNumber(b.x.x()) << ','
-         << formatNumber(b.x.y()) << ',' << formatNumber(b.angle) << ',' << formatNumber(b.v.x()) << ','
-         << formatNumber(b.v.y()) << ',' << formatNumber(b.omega) << ','
-         << formatNumber(sim::world::kineticEnergy(b).total()) << '\n';
-  }
-}
 
 namespace {
 

@@ -1,10 +1,9 @@
 // The trace CSV (`simulate --trace`, a golden record's trace.csv, `compare --trace`'s input): a
-// header `t,body,x,y,angle,vx,vy,omega,kinetic_energy`, then one row per body per instant. Written
-// here from a World and read back (another simulator's trajectory: any time grid, interpolated).
+// header `t,body,x,y,angle,vx,vy,omega,kinetic_energy`, then one row per body per instant, as
+// render/video/trace_writer.h writes it, read back (another simulator's trajectory: any time grid,
+// interpolated).
 #pragma once
 
-#include <array>
-#include <ostream>
 #include <string>
 #include <vector>
 
@@ -14,20 +13,6 @@
 namespace render::golden {
 
 inline constexpr const char* kTraceHeader = "t,body,x,y,angle,vx,vy,omega,kinetic_energy";
-
-// writes the header when made, then the rows of the world after every step and event it is told of
-class TraceWriter : public sim::world::StepObserver {
- public:
-  TraceWriter(std::ostream& out, const sim::scene::SceneDef& def);
-  void afterStep(const sim::world::World& w) override { rows(w); }
-  void afterEvent(const sim::world::World& w, const sim::world::ImpulseEvent&) override { rows(w); }
-  // one row per body at the world's time
-  void rows(const sim::world::World& w);
-
- private:
-  std::ostream& out_;
-  const sim::scene::SceneDef& def_;
-};
 
 // one body's state at one time, as a row gives it
 struct TraceSample {

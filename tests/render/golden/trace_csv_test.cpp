@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "render/golden/trace_csv.h"
+#include "render/video/trace_writer.h"
 #include "sim/scene/scene_build.h"
 #include "sim/yaml/scene_yaml.h"
 #include "support/scene_error_check.h"
@@ -23,10 +24,10 @@ Trace read(const std::string& text) { return traceText(text, "theirs.csv", kScen
 
 }  // namespace
 
-TEST_CASE("what TraceWriter writes reads back, row for row") {
+TEST_CASE("what simulate --trace writes reads back, row for row") {
   sim::world::World world = sim::scene::buildWorld(kScene);
   std::ostringstream out;
-  TraceWriter writer(out, kScene);
+  render::video::TraceWriter writer(out, kScene);
   writer.rows(world);
   world.advanceTo(0.1, &writer);
   const Trace t = read(out.str());
