@@ -1,6 +1,7 @@
 #include "render/golden/golden_report.h"
 
 #include <filesystem>
+#include <vector>
 #include <fstream>
 
 #include "render/draw/png_io.h"
@@ -34,8 +35,15 @@ void writeReport(const std::vector<CaseResult>& results, const std::string& dir)
        << results.size() << " scene variants, " << failed << " failed. A failure at one level and not the others says where to look: "
        << "<em>state</em> the physics, <em>draw_list</em> what is shown, <em>pixels</em> only the rasterizer.</p>\n";
   html << "<table>\n<col class=\"scene\"><col class=\"level\"><col>\n<tr><th>scene</th><th>level</th><th>result</th></tr>\n";
+  // the failed scene variants first: in a course's pack they are the few to read
+  std::vector<const CaseResult*> order;
   for (const CaseResult& c : results)
-    for (const LevelResult& l : c.levels) {
+    if (c.failed()) order.push_back(&c);
+  for (const CaseResult& c : results)
+    if (!c.failed()) order.push_back(&c);
+  for (const CaseResult* pc : order)
+    for (const LevelResult& l : pc->levels) {
+      const CaseResult& c = *pc;
       const char* cls = l.status == LevelResult::Status::Failed ? "failed" : l.status == LevelResult::Status::Skipped ? "skipped" : "ok";
       html << "<tr><td><a href=\"#" << escapeXml(c.name) << "\">" << escapeXml(c.name) << "</a></td><td>" << levelName(l.level)
            << "</td><td class=\"" << cls << "\">" << escapeXml(l.message) << "</td></tr>\n";
