@@ -18,6 +18,7 @@ constexpr double kSample = 1.5;
 
 // the closed outline from `points`, dashed, continuing the pattern around the corners
 void dashedLoop(const std::vector<Vec2>& points, bool closed, double dash, double gap, const Pen& pen, Canvas& draw) {
+  if (!(dash > 0.0 && gap > 0.0)) return;
   double phase = 0.0;  // along the pattern: [0, dash) drawn, [dash, dash + gap) not
   const size_t n = points.size();
   for (size_t i = 0; i + (closed ? 0 : 1) < n; ++i) {
@@ -40,7 +41,8 @@ void dashedLoop(const std::vector<Vec2>& points, bool closed, double dash, doubl
 void drawTraceOverlay(const render::scene::Scene& def, const render::scene::TraceOverlayDef& overlay,
                       const sim::world::World& world, const Camera& camera, Canvas& draw) {
   const double px = camera.pixelSize();
-  const double dash = kDash * def.render.lineWidth * px, gap = kGap * def.render.lineWidth * px;
+  const double lineWidth = lineWidthFor(def.render, camera.heightPx());
+  const double dash = kDash * lineWidth * px, gap = kGap * lineWidth * px;
   const Pen pen{Role::Overlay, -1, 1.0};
   for (size_t i = 0; i < world.bodies.size(); ++i) {
     render::scene::TraceOverlayDef::Pose p;
