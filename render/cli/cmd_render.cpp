@@ -6,6 +6,7 @@
 
 #include "render/cli/commands.h"
 #include "render/cli/output.h"
+#include "render/cli/overlay_option.h"
 #include "render/cli/scene_options.h"
 #include "render/jobs/interrupt.h"
 #include "render/cli/space3d.h"
@@ -22,6 +23,7 @@ struct RenderCommand : SceneOptions, Verbosity {
   std::string output = "out";
   bool allVariants = false;
   std::string size;
+  std::string overlay;  // another simulator's trace, drawn over ours
   std::optional<double> fps;
   std::optional<double> duration;
   std::string format = "mp4";
@@ -48,6 +50,7 @@ int render(const RenderCommand& o) {
   const auto wrote = [&o](const std::string& path) {
     if (o.verbose) std::cout << "wrote " << path << '\n';
   };
+  if (!o.overlay.empty() && isSceneFile3d(o.scene)) throw UsageError("--overlay: a trace is drawn over 2D scenes only");
   if (isSceneFile3d(o.scene)) try {
       const RenderPlan3 plan = planVideos3(o.variantLoader3(), r);
       traced<TraceWriter3>(o.trace, plan, [&](TraceWriter3* trace) { writePlan3(plan, o.quiet, wrote, trace); });
@@ -57,7 +60,7 @@ int render(const RenderCommand& o) {
       return kExitFailure;
     }
   try {
-    const RenderPlan plan = planVideos(o.variantLoader(), r);
+    const RenderPlan plan = planVideos(withOverlay(o.variantLoader(), o.overlay), r);
     traced<TraceWriter>(o.trace, plan, [&](TraceWriter* trace) { writePlan(plan, o.quiet, wrote, trace); });
   } catch (const VariantDiverged& d) {
     std::cerr << videoDiverged(o.scene, d);
@@ -76,6 +79,7 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("-o,--output", o->output, "the output directory (default: out)");
   cmd->add_flag("--all-variants", o->allVariants, "one video per variant (the base scene when it has none)")->excludes("--variant");
   cmd->add_option("--size", o->size, "frame size WIDTHxHEIGHT in pixels, even (default: the scene's, 1280x720)");
+  cmd->add_option("--overlay", o->overlay, "another simulator's trace (CSV, as --trace writes): its bodies dashed over ours");
   cmd->add_option("--fps", o->fps, "frames per second (default: the scene's, 60)");
   cmd->add_option("--duration", o->duration, "length of the video in seconds (default: the scene's duration)");
   cmd->add_option("--format", o->format, "mp4 (H.264, default), webm (VP9) or gif");

@@ -7,6 +7,7 @@
 
 #include "render/cli/commands.h"
 #include "render/cli/output.h"
+#include "render/cli/overlay_option.h"
 #include "render/cli/scene_options.h"
 #include "render/video/output_names.h"
 #include "render/cli/space3d.h"
@@ -26,6 +27,7 @@ struct SnapshotCommand : SceneOptions, Verbosity {
   std::string output = "out";
   std::string size;
   std::string trace;
+  std::string overlay;  // another simulator's trace, drawn over ours
 };
 
 // "0.5,1,2.25" → {0.5, 1, 2.25}; throws UsageError
@@ -68,6 +70,7 @@ int snapshot(const SnapshotCommand& o) {
   const auto print = [&o](const std::string& path) {
     if (!o.quiet) std::cout << path << '\n';
   };
+  if (!o.overlay.empty() && isSceneFile3d(o.scene)) throw UsageError("--overlay: a trace is drawn over 2D scenes only");
   if (isSceneFile3d(o.scene)) try {
       const RenderPlan3 plan = planStills3(o.variantLoader3(), request(o));
       traced<TraceWriter3>(o.trace, plan, [&](TraceWriter3* trace) { writePlan3(plan, !o.verbose, print, trace); });
@@ -77,7 +80,7 @@ int snapshot(const SnapshotCommand& o) {
       return kExitFailure;
     }
   try {
-    const RenderPlan plan = planStills(o.variantLoader(), request(o));
+    const RenderPlan plan = planStills(withOverlay(o.variantLoader(), o.overlay), request(o));
     traced<TraceWriter>(o.trace, plan, [&](TraceWriter* trace) { writePlan(plan, !o.verbose, print, trace); });
   } catch (const sim::world::Diverged& d) {
     std::cerr << o.scene << ": the simulation diverged at t = " << timeForName(d.time)
@@ -102,6 +105,7 @@ void addSnapshotCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--size", o->size, "frame size WIDTHxHEIGHT in pixels, even (default: the scene's, 1280x720); with --panels, the whole sheet's (default 1920x1080)");
   o->Verbosity::addTo(*cmd, "print nothing (not each file's path)", "also a progress bar and a summary, as render shows them");
   cmd->add_option("--trace", o->trace, "also write every step of the pictures' run to this CSV file (as simulate --trace)");
+  cmd->add_option("--overlay", o->overlay, "another simulator's trace (CSV, as --trace writes): its bodies dashed over ours");
   cmd->callback([o, &exitCode] { exitCode = snapshot(*o); });
 }
 

@@ -15,5 +15,8 @@ void addStabilityCommand(CLI::App& app, int& exitCode);
 void addRenderCommand(CLI::App& app, int& exitCode);
 void addSnapshotCommand(CLI::App& app, int& exitCode);
 void addLectureCommand(CLI::App& app, int& exitCode);
+void addGoldenCommand(CLI::App& app, int& exitCode);
+void addCompareCommand(CLI::App& app, int& exitCode);
+void addExpectCommand(CLI::App& app, int& exitCode);
 
 }  // namespace render::cli

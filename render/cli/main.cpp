@@ -38,6 +38,9 @@ int main(int argc, char** argv) {
   render::cli::addRenderCommand(app, exitCode);
   render::cli::addSnapshotCommand(app, exitCode);
   render::cli::addLectureCommand(app, exitCode);
+  render::cli::addGoldenCommand(app, exitCode);
+  render::cli::addCompareCommand(app, exitCode);
+  render::cli::addExpectCommand(app, exitCode);
   // no subcommand, or one that does not exist: say which there are (CLI11 says only that one is required)
   const std::string first = argc > 1 ? argv[1] : "";
   const std::vector<const CLI::App*> subs = subcommandsOf(app);

@@ -8,8 +8,9 @@ namespace {
 
 SceneFile read(const sim::yaml::SceneSource& source) {
   SceneFile f;
-  f.scene = render::scene::readScene(source, {{render::analysis::kStabilityKey}, {}});
+  f.scene = render::scene::readScene(source, {{render::analysis::kStabilityKey, render::golden::kGoldenKey}, {}});
   f.stability = render::analysis::readStability(source, f.scene.model);
+  f.golden = render::golden::readGolden(source, f.scene.model.duration);
   return f;
 }
 
@@ -28,8 +29,10 @@ bool isSceneFile3d(const std::string& path) { return sim::yaml::readSceneSource(
 SceneFile3 readSceneFile3(const std::string& path, const std::string& variant) {
   const sim::yaml::SceneSource source = sim::yaml::readSceneSource(path, variant);
   SceneFile3 f;
-  f.scene = render::scene3d::readScene(source, {{render::analysis::kStabilityKey}, {}});
+  f.scene = render::scene3d::readScene(source, {{render::analysis::kStabilityKey, render::golden::kGoldenKey}, {}});
   f.stability = render::analysis::readStability3(source);
+  // (3D scenes have no golden records yet; their golden: block is still checked)
+  (void)render::golden::readGolden(source, f.scene.model.duration);
   return f;
 }
 

@@ -1,11 +1,12 @@
 // A scene file as the command line reads it: one parse, and each layer's reader for its own keys
 // (the model by sim/yaml, the render: block and the bodies' looks by render/scene, stability: by
-// the analysis), so every key of the file is checked whatever the command needs of it.
+// the analysis, golden: by render/golden), so every key of the file is checked whatever the command needs of it.
 #pragma once
 
 #include <string>
 
 #include "render/analysis/stability_def.h"
+#include "render/golden/golden_def.h"
 #include "render/scene/scene.h"
 #include "render/scene3d/scene.h"
 
@@ -14,6 +15,7 @@ namespace render::cli {
 struct SceneFile {
   render::scene::Scene scene;                // the model and how to draw it
   render::analysis::StabilityDef stability;  // what `rigidreel stability` searches
+  render::golden::GoldenDef golden;          // what `rigidreel golden` records and how closely it checks
 
   const sim::scene::SceneDef& model() const { return scene.model; }
   sim::scene::SceneDef& model() { return scene.model; }

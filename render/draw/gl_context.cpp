@@ -96,6 +96,18 @@ GlContext::~GlContext() {
   OSMesaDestroyContext(context_);
 }
 
+std::string GlContext::renderer() {
+  makeCurrent();
+  const GLubyte* s = glGetString(GL_RENDERER);
+  return s ? reinterpret_cast<const char*>(s) : "unknown";
+}
+
+std::string GlContext::version() {
+  makeCurrent();
+  const GLubyte* s = glGetString(GL_VERSION);
+  return s ? reinterpret_cast<const char*>(s) : "unknown";
+}
+
 void GlContext::makeCurrent() {
   if (!OSMesaMakeCurrent(context_, buffer_.data(), GL_UNSIGNED_BYTE, 1, 1))
     throw std::runtime_error("OSMesa could not make its OpenGL context current");

@@ -7,6 +7,7 @@
 #include <array>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "render/draw/camera.h"
@@ -37,6 +38,10 @@ class GlContext {
   int height() const { return height_; }
   // pixels drawn per output pixel in each direction: GL's viewport is width × scale() wide
   int scale() const { return aa_.supersample; }
+  // the renderer and its version as GL reports them, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)" and
+  // "4.5 (Compatibility Profile) Mesa 22.3.6" (a golden record names them: pixels may differ on another)
+  std::string renderer();
+  std::string version();
   // make this context current (after another one was)
   void makeCurrent();
   // a frame begins: the GL calls until read() are recorded (a display list), to be drawn once per

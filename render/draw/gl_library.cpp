@@ -73,6 +73,8 @@ RIGIDREEL_GL(GLboolean, OSMesaMakeCurrent, (OSMesaContext c, void* b, GLenum t, 
 RIGIDREEL_GL(void, OSMesaPixelStore, (GLint p, GLint v), (p, v))
 RIGIDREEL_GL(OSMESAproc, OSMesaGetProcAddress, (const char* n), (n))
 
+// what the context reports of itself (a golden record's manifest names its renderer)
+RIGIDREEL_GL(const GLubyte*, glGetString, (GLenum n), (n))
 RIGIDREEL_GL(void, glBegin, (GLenum m), (m))
 RIGIDREEL_GL(void, glEnd, (), ())
 RIGIDREEL_GL(void, glVertex2d, (GLdouble x, GLdouble y), (x, y))

@@ -45,8 +45,10 @@ enum class Role {
   AxisY,            // y
   AxisZ,            // z
   AngularMomentum,  // L = I ω from the center of mass: an arrow
+  // another simulator's trajectory over ours (--overlay)
+  Overlay,          // its bodies' outlines, dashed
 };
-inline constexpr size_t kRoleCount = static_cast<size_t>(Role::AngularMomentum) + 1;
+inline constexpr size_t kRoleCount = static_cast<size_t>(Role::Overlay) + 1;
 
 struct RoleInfo {
   Role role;
@@ -92,6 +94,8 @@ inline constexpr std::array<RoleInfo, kRoleCount> kRoles{{
     {Role::AxisY, "AxisY", "axis_y", "#2ca02c", 1.0, false},
     {Role::AxisZ, "AxisZ", "axis_z", "#1f77b4", 1.0, false},
     {Role::AngularMomentum, "AngularMomentum", "angular_momentum", "#6a3d9a", 1.5, false},
+    // a magenta that no default role or palette colour is near
+    {Role::Overlay, "Overlay", "overlay", "#e7298a", 1.25, false},
 }};
 
 constexpr const RoleInfo& info(Role role) { return kRoles[static_cast<size_t>(role)]; }

@@ -4,6 +4,7 @@
 
 #include "render/draw/style.h"
 #include "render/frame/impulse_beside.h"
+#include "render/frame/trace_overlay.h"
 #include "render/scene/scene_style.h"
 #include "sim/collision/collide.h"
 #include "sim/debug/describe.h"
@@ -95,6 +96,8 @@ void FramePainter::paint(const sim::world::World& world, const History& history,
       if (!b.isStatic && arrow.norm() > px) draw.arrow(b.x, b.x + arrow, {Role::Velocity, static_cast<int>(i), 1.0});
     }
   arrows_.draw(world, history, draw);
+  // another run's bodies over ours, past the placer: the labels go where they would without them
+  if (r.overlay) drawTraceOverlay(def_, *r.overlay, world, camera_, target);
   if (r.labels)
     for (size_t i = 0; i < world.bodies.size(); ++i) {
       const sim::core::Body& b = world.bodies[i];

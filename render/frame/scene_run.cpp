@@ -167,4 +167,16 @@ void SceneRun::drawListsAt(const std::vector<double>& instants, int strobe,
   });
 }
 
+void SceneRun::shotsAt(const std::vector<double>& instants, const std::vector<bool>& pictured,
+                       const std::function<void(size_t, const Shot&)>& shot) {
+  picturesAt(instants, 0, [&](size_t i, const State& state, const std::vector<DrawList>&) {
+    Shot s{state.world, {}, {}};
+    if (pictured[i]) {
+      painter_.paint(state.world, state.history, {}, s.drawList);
+      if (canvas_) paint(state, {}, s.frame);
+    }
+    shot(i, s);
+  });
+}
+
 }  // namespace render::frame

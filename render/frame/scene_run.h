@@ -51,6 +51,17 @@ class SceneRun {
   void framesAt(const std::vector<double>& instants, int strobe, const std::function<void(size_t, Image)>& shot);
   // the same as draw lists, without GL
   void drawListsAt(const std::vector<double>& instants, int strobe, const std::function<void(size_t, DrawList)>& shot);
+  // what a golden record takes of an instant: the world there (its state hash and trace rows), and
+  // when pictured its draw list and, with a GL context, its frame
+  struct Shot {
+    const sim::world::World& world;
+    DrawList drawList;
+    Image frame;
+  };
+  // the shots at each of `instants` (in any order, none earlier than the last picture) from the one
+  // run, as framesAt reaches them, those with `pictured[i]` drawn. Throws as frameAt.
+  void shotsAt(const std::vector<double>& instants, const std::vector<bool>& pictured,
+               const std::function<void(size_t, const Shot&)>& shot);
   // the title card alone (title_card.h), the frame's size; needs the text renderer
   Image titleCard();
   // the closing card with the poll's answer (`answer_card`), the frame's size; needs the text renderer

@@ -3,6 +3,8 @@
 // "#rrggbb" strings.
 #pragma once
 
+#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -114,6 +116,17 @@ struct PanelsDef {
   int line = 0, column = 0;   // where `panels:` is written (1-based); 0 when it is the default
 };
 
+// another simulator's trajectory drawn over the run (`render`/`snapshot --overlay`): its name in the
+// legend, and each body's pose at a time (false where it has none), read from its trace
+struct TraceOverlayDef {
+  struct Pose {
+    sim::core::Vec2 x = sim::core::Vec2::Zero();
+    double angle = 0.0;
+  };
+  std::string name;
+  std::function<bool(size_t body, double t, Pose& pose)> poseAt;
+};
+
 // a poll's question apart from its answer (scenes/README.md): the title card shows the question, and
 // the answer is shown only where the scene asks (a closing card, panels labelled from `reveal` on)
 struct PollDef {
@@ -158,6 +171,7 @@ struct RenderDef {
   std::vector<SlowMotionDef> slowMotion;
   OverlaysDef overlays;                // the lecture overlays
   PanelsDef panels;                    // `rigidreel lecture`'s poll panels
+  std::shared_ptr<const TraceOverlayDef> overlay;  // set from the command line, never by the file
   PollDef poll;                        // question, answer, answer card, reveal
 };
 

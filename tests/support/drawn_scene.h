@@ -11,11 +11,11 @@ namespace drawn_scene {
 
 inline render::scene::Scene load(const std::string& yaml, const std::string& variant = "",
                                  const std::string& file = "inline.yaml") {
-  return render::scene::readScene(sim::yaml::sceneSourceText(yaml, file, variant), {{"stability"}, {}});
+  return render::scene::readScene(sim::yaml::sceneSourceText(yaml, file, variant), {{"stability", "golden"}, {}});
 }
 
 inline render::scene::Scene loadFile(const std::string& path, const std::string& variant = "") {
-  return render::scene::readScene(sim::yaml::readSceneSource(path, variant), {{"stability"}, {}});
+  return render::scene::readScene(sim::yaml::readSceneSource(path, variant), {{"stability", "golden"}, {}});
 }
 
 // a scene named "lesson" of `duration` s in which a ball (radius 0.25 at the origin, 1 m/s to the

@@ -36,7 +36,7 @@ std::vector<fs::path> lectureScenes() {
 // a 3D scene's frame, as the 2D ones: its first variant at half its duration
 render::draw::Image frame3d(const std::string& file, render::draw::GlContext& gl, render::draw::TextRenderer& text) {
   const auto load = [&](const std::string& variant) {
-    return render::scene3d::readScene(sim::yaml::readSceneSource(file, variant), {{"stability"}, {}});
+    return render::scene3d::readScene(sim::yaml::readSceneSource(file, variant), {{"stability", "golden"}, {}});
   };
   const render::scene3d::Scene base = load("");
   render::scene3d::Scene def = load(base.model.variantNames.empty() ? "" : base.model.variantNames.front());

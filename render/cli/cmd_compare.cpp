@@ -1,0 +1,111 @@
+// `rigidreel compare`: another simulator's trajectory (a trace CSV on any time grid) against the
+// scene's run, per body the largest error of position, angle and velocity and when each first
+// exceeds its tolerance; with --plot an error-against-time chart.
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "render/analysis/chart.h"
+#include "render/cli/commands.h"
+#include "render/cli/scene_options.h"
+#include "render/golden/trace_compare.h"
+#include "render/jobs/json_writer.h"
+#include "render/video/output_names.h"
+
+namespace render::cli {
+using namespace render::golden;
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CompareCommand : SceneOptions {
+  std::string trace;
+  std::string tolerance;
+  std::string plot;
+};
+
+// errors and times to 6 significant digits (the time of a step is a sum of dt: 1.0010000000000001)
+std::string over(const ErrorTrack& e, double tolerance) {
+  using render::video::timeForName;
+  std::string s = timeForName(e.largest);
+  if (e.largest > 0.0) s += " at t = " + timeForName(e.largestAt);
+  if (e.firstOver >= 0.0) s += ", over " + formatNumber(tolerance) + " from t = " + timeForName(e.firstOver);
+  return s;
+}
+
+// errors against time, one line per body and quantity, on a log scale (zero errors drawn at 1e-16)
+void plot(const std::vector<BodyComparison>& bodies, const std::string& dir, const std::string& base, const std::string& theirs) {
+  render::analysis::Chart chart;
+  chart.title = base + ": error against " + fs::path(theirs).filename().string();
+  chart.xLabel = "t (s)";
+  chart.yLabel = "error (m, rad, m/s)";
+  chart.logY = true;
+  const auto floorOf = [](std::vector<std::pair<double, double>> points) {
+    for (auto& p : points) p.second = std::max(p.second, 1e-16);
+    return points;
+  };
+  for (const BodyComparison& b : bodies) {
+    if (!b.compared) continue;
+    chart.series.push_back({b.name + " position", floorOf(b.positionErrors), false});
+    chart.series.push_back({b.name + " angle", floorOf(b.angleErrors), false});
+    chart.series.push_back({b.name + " velocity", floorOf(b.velocityErrors), false});
+  }
+  std::error_code error;
+  fs::create_directories(dir, error);
+  if (error) throw UsageError("--plot: cannot create " + dir + " (" + error.message() + ")");
+  const std::string path = (fs::path(dir) / (base + "-compare.png")).string();
+  render::analysis::writeChart(chart, path);
+  std::cout << "chart: " << path << '\n';
+}
+
+int compare(const CompareCommand& o) {
+  if (isSceneFile3d(o.scene)) throw UsageError(o.scene + ": a 3D scene; compare takes 2D scenes for now");
+  CompareTolerance tolerance;
+  try {
+    if (!o.tolerance.empty()) tolerance = parseCompareTolerance(o.tolerance);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--tolerance: ") + e.what());
+  }
+  const sim::scene::SceneDef def = o.load().model();
+  const Trace theirs = readTrace(o.trace, def);
+  sim::world::World world = startWorld(def, o.scene);
+  const std::vector<BodyComparison> bodies = compareTrace(def, world, theirs, tolerance);
+  const std::string base = render::video::outputBase(def);
+  std::cout << base << " against " << o.trace << " (" << theirs.rows << " rows), tolerances: position "
+            << formatNumber(tolerance.position) << " m, angle " << formatNumber(tolerance.angle) << " rad, velocity "
+            << formatNumber(tolerance.velocity) << '\n';
+  bool failed = false, any = false;
+  for (size_t i = 0; i < bodies.size(); ++i) {
+    const BodyComparison& b = bodies[i];
+    if (!b.compared) {
+      if (!def.bodies[i].isStatic) std::cout << "  " << b.name << ": no rows in the trace, not compared\n";
+      continue;
+    }
+    any = true;
+    failed = failed || b.exceeded();
+    std::cout << (b.exceeded() ? "  FAIL  " : "  ok    ") << b.name << " (t = " << render::video::timeForName(b.from) << " to "
+              << render::video::timeForName(b.to) << "): position " << over(b.position, tolerance.position) << "; angle "
+              << over(b.angle, tolerance.angle) << "; velocity " << over(b.velocity, tolerance.velocity)
+              << "; kinetic energy at t = " << render::video::timeForName(b.to) << ": ours " << formatNumber(b.oursEnergy) << " J, theirs "
+              << formatNumber(b.theirsEnergy) << " J\n";
+  }
+  if (!any) throw UsageError(o.trace + ": no rows for any body of the scene");
+  if (!o.plot.empty()) plot(bodies, o.plot, base, o.trace);
+  return failed ? kExitFailure : kExitOk;
+}
+
+}  // namespace
+
+void addCompareCommand(CLI::App& app, int& exitCode) {
+  auto o = std::make_shared<CompareCommand>();
+  CLI::App* cmd = app.add_subcommand("compare", "compare another simulator's trace (CSV) with the scene's run");
+  cmd->add_option("scene", o->scene, "the scene file (YAML)")->required();
+  o->addTo(*cmd);
+  cmd->add_option("--trace", o->trace, "their trajectory, in the --trace CSV format (scenes/README.md)")->required();
+  cmd->add_option("--tolerance", o->tolerance, "position=1e-3,angle=1e-3,velocity=1e-2 (the defaults)");
+  cmd->add_option("--plot", o->plot, "write an error-against-time chart into this directory");
+  cmd->callback([o, &exitCode] { exitCode = compare(*o); });
+}
+
+}  // namespace render::cli

@@ -1,0 +1,80 @@
+#include "render/frame/trace_overlay.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "render/scene/scene_style.h"
+
+namespace render::frame {
+
+namespace {
+
+// a dash and the gap after it, in line widths: clearly dashed at any frame size
+constexpr double kDash = 4.0, kGap = 3.0;
+// a circle's outline as a polygon of this many sides (within a tenth of a pixel below 150 px radius)
+constexpr int kCircleSides = 64;
+// the legend's sample line, in line heights
+constexpr double kSample = 1.5;
+
+// the closed outline from `points`, dashed, continuing the pattern around the corners
+void dashedLoop(const std::vector<Vec2>& points, bool closed, double dash, double gap, const Pen& pen, Canvas& draw) {
+  if (!(dash > 0.0 && gap > 0.0)) return;
+  double phase = 0.0;  // along the pattern: [0, dash) drawn, [dash, dash + gap) not
+  const size_t n = points.size();
+  for (size_t i = 0; i + (closed ? 0 : 1) < n; ++i) {
+    const Vec2 a = points[i], b = points[(i + 1) % n];
+    const double length = (b - a).norm();
+    double at = 0.0;
+    while (at < length) {
+      const bool on = phase < dash;
+      const double step = std::min(length - at, on ? dash - phase : dash + gap - phase);
+      if (on && step > 0.0) draw.segment(a + (b - a) * (at / length), a + (b - a) * ((at + step) / length), pen);
+      at += step;
+      phase += step;
+      if (phase >= dash + gap) phase = 0.0;
+    }
+  }
+}
+
+}  // namespace
+
+void drawTraceOverlay(const render::scene::Scene& def, const render::scene::TraceOverlayDef& overlay,
+                      const sim::world::World& world, const Camera& camera, Canvas& draw) {
+  const double px = camera.pixelSize();
+  const double lineWidth = lineWidthFor(def.render, camera.heightPx());
+  const double dash = kDash * lineWidth * px, gap = kGap * lineWidth * px;
+  const Pen pen{Role::Overlay, -1, 1.0};
+  for (size_t i = 0; i < world.bodies.size(); ++i) {
+    render::scene::TraceOverlayDef::Pose p;
+    const sim::core::Shape& shape = world.bodies[i].shape;
+    if (shape.kind == sim::core::ShapeKind::Plane || !overlay.poseAt(i, world.time, p)) continue;
+    const sim::core::Pose pose{p.x, sim::core::Rot::fromAngle(p.angle)};
+    std::vector<Vec2> outline;
+    if (shape.kind == sim::core::ShapeKind::Polygon) {
+      for (const Vec2& v : shape.vertices) outline.push_back(pose.toWorld(v));
+    } else {
+      for (int k = 0; k < kCircleSides; ++k) {
+        const double a = 2.0 * std::numbers::pi * k / kCircleSides;
+        outline.push_back(pose.toWorld(shape.radius * Vec2(std::cos(a), std::sin(a))));
+      }
+      // its radius along the body's x axis, as our circles show their turn
+      dashedLoop({pose.x, pose.toWorld({shape.radius, 0.0})}, false, dash, gap, pen, draw);
+    }
+    dashedLoop(outline, true, dash, gap, pen, draw);
+  }
+  // the legend, under the clock and the slow-motion note: a solid sample for ours, a dashed one for theirs
+  const int size = fontSizeFor(def.render, camera.heightPx());
+  const CaptionLayout layout = captionLayout(size);
+  const double sample = kSample * layout.line;
+  const std::string ours = "rigidreel", theirs = overlay.name;
+  for (int row = 0; row < 2; ++row) {
+    const double top = layout.inset + (2 + row) * layout.line;
+    const double middle = top + 0.5 * layout.line;
+    const Vec2 a = camera.toWorld({layout.inset, middle}), b = camera.toWorld({layout.inset + sample, middle});
+    if (row == 0) draw.segment(a, b, {Role::Caption, -1, 1.0});
+    else dashedLoop({a, b}, false, dash, gap, pen, draw);
+    draw.text(camera.toWorld({layout.inset + sample + 0.5 * layout.line, top}), row == 0 ? ours : theirs, {Role::Caption, -1, 1.0});
+  }
+}
+
+}  // namespace render::frame

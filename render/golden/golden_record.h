@@ -1,0 +1,48 @@
+// A golden record on disk, one folder per scene variant, DIR/<scene>[-<variant>]/:
+//
+//   manifest.json   rigidreel's version, the scene file and its sha256, the renderer and its version
+//                   as GL reports them, the frame size, the tolerances, the checkpoints and frames
+//   states.csv      t,state_hash at each checkpoint (sim::world::stateHash, 16 hex digits)
+//   trace.csv       the trace columns (trace_csv.h) at each checkpoint
+//   frame-t<T>.json the draw list of each golden frame (draw_list_json.h)
+//   frame-t<T>.png  each golden frame
+//
+// written into a staged folder and swapped into place whole (render/jobs/atomic_file.h).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "render/golden/golden_def.h"
+#include "render/golden/golden_run.h"
+
+namespace render::golden {
+
+// rigidreel's version as the build names it
+std::string rigidreelVersion();
+
+// what a manifest says beside the run
+struct RecordInfo {
+  std::string sceneFile;    // as given
+  std::string sceneSha256;
+  GoldenDef golden;         // size and tolerances
+};
+
+// `run` written as DIR/<run.name>/, replacing what was there in one step; throws std::runtime_error
+void writeRecord(const GoldenRun& run, const RecordInfo& info, const std::string& dir);
+
+// a record read back (its PNGs are read when compared)
+struct GoldenRecord {
+  std::string folder;
+  std::string version, sceneFile, sceneSha256, renderer, rendererVersion;
+  GoldenDef golden;
+  GoldenTimes times;
+  std::vector<unsigned long long> hashes;  // by checkpoint
+  std::vector<std::vector<TraceSample>> trace;  // by the scene's body index, one sample per checkpoint
+  std::vector<std::string> frameNames;     // by frame
+};
+
+// the record in `folder` for the scene `def`; throws sim::yaml::SceneError naming the file at fault
+GoldenRecord readRecord(const std::string& folder, const sim::scene::SceneDef& def);
+
+}  // namespace render::golden

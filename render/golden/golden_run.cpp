@@ -1,0 +1,92 @@
+#include "render/golden/golden_run.h"
+
+#include <algorithm>
+#include <memory>
+#include <optional>
+
+#include "render/draw/text.h"
+#include "render/frame/scene_run.h"
+#include "render/frame/survey.h"
+#include "render/scene/scene_style.h"
+#include "render/video/output_names.h"
+#include "sim/world/diagnostics.h"
+
+namespace render::golden {
+
+namespace {
+
+void sortUnique(std::vector<double>& v) {
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+}
+
+// the scene drawn at the golden size
+render::scene::Scene atGoldenSize(render::scene::Scene scene, const GoldenDef& golden) {
+  scene.render.width = golden.width;
+  scene.render.height = golden.height;
+  return scene;
+}
+
+TraceSample sampleOf(const sim::world::World& w, size_t i) {
+  const sim::core::Body& b = w.bodies[i];
+  return {w.time, b.x.x(), b.x.y(), b.angle, b.v.x(), b.v.y(), b.omega, sim::world::kineticEnergy(b).total(), 0};
+}
+
+}  // namespace
+
+std::string frameName(double t) { return "frame-t" + render::video::timeForName(t); }
+
+GoldenTimes goldenTimes(const render::scene::Scene& scene, const GoldenDef& golden) {
+  GoldenTimes times;
+  times.frames = golden.at.empty() ? std::vector<double>{scene.model.duration} : golden.at;
+  if (golden.impacts) {
+    const render::frame::RunSurvey survey = render::frame::surveyRun(scene);
+    const size_t n = std::min(kMaxImpactFrames, survey.impactTimes.size());
+    times.frames.insert(times.frames.end(), survey.impactTimes.begin(), survey.impactTimes.begin() + n);
+  }
+  sortUnique(times.frames);
+  times.checkpoints = times.frames;
+  for (const sim::scene::ExpectDef& e : scene.model.expects) times.checkpoints.push_back(e.time);
+  times.checkpoints.push_back(scene.model.duration);
+  sortUnique(times.checkpoints);
+  return times;
+}
+
+GoldenRun runGolden(const render::scene::Scene& original, const GoldenDef& golden, const GoldenTimes& times, bool pixels) {
+  const render::scene::Scene scene = atGoldenSize(original, golden);
+  GoldenRun run;
+  run.name = render::video::outputBase(scene.model);
+  for (const auto& b : scene.model.bodies) run.bodies.push_back(b.name);
+  const render::frame::RunSurvey survey = render::frame::surveyRun(scene);
+  const render::draw::Camera camera = render::frame::cameraFor(scene, survey);
+  const render::draw::Style style = render::scene::makeStyle(scene, golden.height);
+
+  std::unique_ptr<render::draw::GlContext> gl;
+  // text is measured alike with and without pixels: labels are placed by their widths
+  render::draw::TextRenderer text;
+  if (pixels) {
+    gl = std::make_unique<render::draw::GlContext>(golden.width, golden.height);
+    run.renderer = gl->renderer();
+    run.rendererVersion = gl->version();
+  }
+  // every instant once: a frame's time is also a checkpoint
+  const std::vector<double>& instants = times.checkpoints;
+  std::vector<bool> pictured(instants.size());
+  for (size_t i = 0; i < instants.size(); ++i)
+    pictured[i] = std::binary_search(times.frames.begin(), times.frames.end(), instants[i]);
+  run.checkpoints.resize(instants.size());
+  std::vector<std::optional<GoldenFrame>> frames(instants.size());
+  render::frame::SceneRun sceneRun(scene, camera, survey, gl.get(), &text);
+  sceneRun.shotsAt(instants, pictured, [&](size_t i, const render::frame::SceneRun::Shot& shot) {
+    Checkpoint& c = run.checkpoints[i];
+    c.t = instants[i];
+    c.hash = sim::world::stateHash(shot.world);
+    for (size_t b = 0; b < shot.world.bodies.size(); ++b) c.bodies.push_back(sampleOf(shot.world, b));
+    if (pictured[i]) frames[i] = GoldenFrame{instants[i], frameName(instants[i]), drawnFrame(shot.drawList, style, camera), shot.frame};
+  });
+  for (std::optional<GoldenFrame>& f : frames)
+    if (f) run.frames.push_back(std::move(*f));
+  return run;
+}
+
+}  // namespace render::golden
