@@ -7,8 +7,8 @@ namespace sim::world {
 
 void colorContacts(const std::vector<ColoredPair>& pairs, int bodyCount, ContactColors& out) {
   std::vector<uint64_t> used(static_cast<size_t>(bodyCount), 0);
-  for (std::vector<int>& c : out.colors) c.clear();
-  out.colors.resize(ContactColors::kMaxColors);
+  for (std::vector<int>& c : out.sets) c.clear();
+  out.sets.resize(ContactColors::kMaxColors);
   out.overflow.clear();
   for (std::size_t i = 0; i < pairs.size(); ++i) {
     const ColoredPair& p = pairs[i];
@@ -17,16 +17,16 @@ void colorContacts(const std::vector<ColoredPair>& pairs, int bodyCount, Contact
       out.overflow.push_back(static_cast<int>(i));
       continue;
     }
-    // the lowest free colour (Box2D v3 gives contacts with a static body the highest instead, solved
+    // the lowest free set (Box2D v3 gives contacts with a static body the highest instead, solved
     // after the pile above them: that let the touching 5,050-box pyramid jitter at 0.58 m/s)
-    const int color = __builtin_ctzll(~taken);
-    const uint64_t bit = uint64_t{1} << color;
+    const int set = __builtin_ctzll(~taken);
+    const uint64_t bit = uint64_t{1} << set;
     if (!p.aStatic) used[p.a] |= bit;
     if (!p.bStatic) used[p.b] |= bit;
-    out.colors[color].push_back(static_cast<int>(i));
+    out.sets[set].push_back(static_cast<int>(i));
   }
-  // the colours no contact took are dropped, the others keep their order
-  std::erase_if(out.colors, [](const std::vector<int>& c) { return c.empty(); });
+  // the sets no contact took are dropped, the others keep their order
+  std::erase_if(out.sets, [](const std::vector<int>& c) { return c.empty(); });
 }
 
 }  // namespace sim::world

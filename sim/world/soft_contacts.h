@@ -1,6 +1,6 @@
 // soft_step's contact constraints laid out for the machine (Box2D v3's contact_solver.c, its wide
 // constraints; Catto, "SIMD Matters", 2024; written anew here): the bodies' solver state in one
-// flat array of 64-byte records, the contacts of a colour (contact_colors.h) packed four to a
+// flat array of 64-byte records, the contacts of a set (contact_colors.h) packed four to a
 // block, each number of a block stored as four doubles side by side, so that one block is solved
 // in the four lanes of an AVX2 register. The scalar path solves the same blocks lane by lane in
 // the same order with the same operations: since the contacts of a block touch disjoint bodies,
@@ -36,7 +36,7 @@ struct PointLanes {
   Lanes totalNormalImpulse;             // over the step's substeps
 };
 
-// four contacts of one colour (or of the overflow, solved lane by lane)
+// four contacts of one set (or of the overflow, solved lane by lane)
 struct ContactBlock {
   int a[kLanes] = {0, 0, 0, 0}, b[kLanes] = {0, 0, 0, 0};  // BodyState indices
   Lanes nx, ny;                          // normal from B to A

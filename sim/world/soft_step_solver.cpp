@@ -11,7 +11,7 @@
 // by symplectic Euler, whatever the scene's integrator.
 //
 // Laid out for the machine as v3 is: the bodies' solver state in one flat array (soft_contacts.h),
-// the contacts prepared once per step into blocks of four, sorted into colours (contact_colors.h)
+// the contacts prepared once per step into blocks of four, sorted into sets (contact_colors.h)
 // so that each block is solved in SIMD lanes; the colouring is kept while the touching pairs stay
 // the same.
 #include <algorithm>
@@ -109,8 +109,8 @@ class SoftStepSolver final : public Method {
   }
 
  private:
-  // the colours of the contacts, unless the touching pairs are those of last step, and each
-  // contact's slot: the overflow's blocks first, then each colour's, a colour's last block padded
+  // the sets of the contacts, unless the touching pairs are those of last step, and each
+  // contact's slot: the overflow's blocks first, then each set's, a set's last block padded
   // with lanes that touch only the static record
   void arrange(const World& world) {
     const std::vector<Contact>& contacts = world.contacts;
@@ -133,7 +133,7 @@ class SoftStepSolver final : public Method {
       ranges_.push_back({first, block});
     };
     place(colors_.overflow);
-    for (const std::vector<int>& color : colors_.colors) place(color);
+    for (const std::vector<int>& set : colors_.sets) place(set);
     blockCount_ = block;
   }
 
@@ -247,7 +247,7 @@ class SoftStepSolver final : public Method {
     }
   }
 
-  // each pass: the overflow one contact after the other, then each colour's blocks
+  // each pass: the overflow one contact after the other, then each set's blocks
   void warmStart() {
     soft::BodyState* bodies = states_.data();
     for (size_t r = 0; r < ranges_.size(); ++r) {
@@ -336,11 +336,11 @@ class SoftStepSolver final : public Method {
     }
   }
 
-  bool wide_ = false;                // the colours' blocks four lanes at a time
+  bool wide_ = false;                // the sets' blocks four lanes at a time
   std::vector<ColoredPair> pairs_;   // the pairs the colouring was made for
   ContactColors colors_;
   std::vector<Slot> slots_;          // each contact's block and lane
-  std::vector<std::pair<int, int>> ranges_;  // blocks of the overflow, then of each colour
+  std::vector<std::pair<int, int>> ranges_;  // blocks of the overflow, then of each set
   int blockCount_ = 0;
   std::vector<soft::ContactBlock> blocks_;
   std::vector<double> vnBefore_;     // each point's normal velocity before the step (restitution)

@@ -23,7 +23,7 @@ TEST_CASE("contact colours: random pairs among 50 bodies, some static: no moving
   ContactColors colors;
   colorContacts(pairs, 50, colors);
   std::vector<int> seen(pairs.size(), 0);
-  for (const std::vector<int>& color : colors.colors) {
+  for (const std::vector<int>& color : colors.sets) {
     REQUIRE_FALSE(color.empty());
     std::set<int> moving;
     for (int i : color) {
@@ -47,10 +47,10 @@ TEST_CASE("contact colours: a body in more than 64 contacts sends the rest to th
   for (int i = 1; i <= 70; ++i) pairs.push_back({71, i, true, false});  // body 71 static
   ContactColors colors;
   colorContacts(pairs, 72, colors);
-  CHECK(colors.colors.size() == 64);
+  CHECK(colors.sets.size() == 64);
   CHECK(colors.overflow == std::vector<int>{64, 65, 66, 67, 68, 69});
   // contact 0-i took colour i-1; the static contacts of body i then take colour 0 where it is free
   // of body i (every i but 1) and colour 1 for body 1
-  CHECK(colors.colors[0].size() == 70);
-  CHECK(colors.colors[1].size() == 2);
+  CHECK(colors.sets[0].size() == 70);
+  CHECK(colors.sets[1].size() == 2);
 }
