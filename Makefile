@@ -65,12 +65,15 @@ test: build-tests
 # against ffmpeg alone at 720p and 1080p, the lecture pack's wall time;
 # BENCH_BASELINE=path/to/another/rigidreel times that build too, in the same run
 BENCH_BASELINE ?=
+# BOX2D3=DIR: Box2D v3's column in the stack table, from DIR/b3_pyramid (built by
+# ../shared/peers/box2d-v3/build.sh DIR); without it the table has Box2D 2.4 and ours
+BOX2D3 ?=
 bench: build
 	@$(MAKE) --no-print-directory deps PACKAGES="$(BENCH_PACKAGES)"
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
 	@cmake --build $(BUILD) -j $(JOBS) --target rigidreel_bench rigidreel_stack_bench
 	@mkdir -p out/bench && rm -f out/bench/stacks.csv
-	./$(BUILD)/rigidreel_stack_bench --method sequential --method soft_step --csv out/bench/stacks.csv
+	./$(BUILD)/rigidreel_stack_bench --method sequential --method soft_step --csv out/bench/stacks.csv $(if $(BOX2D3),--box2d3 $(BOX2D3))
 	./$(BUILD)/rigidreel_bench ./$(BUILD)/rigidreel scenes/three_collisions_poll.yaml $(BENCH_BASELINE)
 
 clean:

@@ -264,6 +264,28 @@ class Box2dRun : public StackRun {
 };
 #endif
 
+// --- Box2D v3 (`--box2d3 DIR`): its own headless program, b3_pyramid, built from
+// ../shared/peers/box2d-v3/build.sh DIR: Box2D's large_pyramid scene (touching rows, friction 0.6,
+// one thread, sleeping off) at the same substeps. It reports its processor time per step, the top
+// box's displacement and the fastest body; the other measures are not known (nan) ---
+
+std::optional<RunResult> runBox2d3(const std::string& dir, int base, const RunOptions& o) {
+  const std::string command = "'" + dir + "/b3_pyramid' " + std::to_string(base) + " " + std::to_string(o.steps) + " " +
+                              std::to_string(o.substeps);
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return std::nullopt;
+  double ms = 0.0, top = 0.0, fastest = 0.0;
+  const int read = std::fscanf(pipe, "ms_per_step %lf top_moved %lf fastest %lf", &ms, &top, &fastest);
+  if (pclose(pipe) != 0 || read != 3) return std::nullopt;
+  const double nan = std::nan("");
+  RunResult r;
+  r.metrics = {top, nan, fastest, nan, -1};
+  r.worstTop = r.worstSpeed = nan;
+  r.msPerStep = nan;
+  r.cpuMsPerStep = ms;
+  return r;
+}
+
 // "pyramid:100:touching", "pyramid:20:dropped", "stack:10"
 std::optional<bench::StackLayout> parseLayout(const std::string& spec) {
   std::vector<std::string> part;
@@ -285,7 +307,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> layoutSpecs{"pyramid:20:touching", "pyramid:20:dropped", "pyramid:100:touching",
                                        "pyramid:100:dropped"};
   std::vector<std::string> methods{"sequential"};
-  std::string engine = "both", skin = "outer", csvPath;
+  std::string engine = "both", skin = "outer", csvPath, box2d3Dir;
   bench::StackSettings settings;
   RunOptions options;
   app.add_option("--layout", layoutSpecs, "pyramid:BASE:touching, pyramid:BASE:dropped or stack:HEIGHT (repeatable)");
@@ -309,6 +331,9 @@ int main(int argc, char** argv) {
   app.add_option("--box2d-skin", skin, "outer: Box2D's rounded boxes as wide as ours; core: SetAsBox(0.5, 0.5)")
       ->check(CLI::IsMember({"outer", "core"}));
   app.add_flag("--box2d-continuous", options.box2dContinuous, "Box2D's continuous collision on (off: as rigidreel)");
+  app.add_option("--box2d3", box2d3Dir,
+                 "a folder holding Box2D v3's b3_pyramid (../shared/peers/box2d-v3/build.sh DIR): its column on the "
+                 "touching pyramids");
   app.add_option("--csv", csvPath, "append one row per layout and engine to this file");
   CLI11_PARSE(app, argc, argv);
   options.box2dOuterSkin = skin == "outer";
@@ -339,7 +364,7 @@ int main(int argc, char** argv) {
       csv << "layout,engine,boxes,settle_steps,first_timed_step,last_timed_step,velocity_iterations,"
              "position_iterations,ms_per_step,cpu_ms_per_step,cpu_ratio_to_box2d,top_displacement_m,max_off_rest_x_m,"
              "fastest_m_per_s,fastest_rad_per_s,moved,worst_top_second_half_m,worst_fastest_second_half_m_per_s,"
-             "diverged,substeps,contact_hertz\n";
+             "diverged,substeps,contact_hertz,cpu_ratio_to_box2d_v3\n";
   }
   std::printf("gravity %g, dt %.6g, %d velocity and %d position iterations, friction %g, restitution %g\n",
               settings.gravity, settings.dt, settings.velocityIterations, settings.positionIterations, settings.friction,
@@ -352,9 +377,9 @@ int main(int argc, char** argv) {
               options.steps, options.steps, dropSettle + 1, dropSettle + options.steps, dropSettle,
               options.settleSeconds);
   // at the end of the timed steps, and the worst over their second half, sampled every 10 steps
-  std::printf("%-22s %-10s %6s %11s %9s %9s %9s %13s %11s %9s %6s %12s %12s %9s\n", "layout", "engine", "boxes",
+  std::printf("%-22s %-10s %6s %11s %9s %9s %9s %13s %11s %9s %6s %12s %12s %9s %7s\n", "layout", "engine", "boxes",
               "timed steps", "ms/step", "cpu ms", "top m", "|x-rest x| m", "fastest m/s", "|w| rad/s", "moved",
-              "worst top m", "worst m/s", "/box2d");
+              "worst top m", "worst m/s", "/box2d", "/v3");
   int status = 0;
   for (const std::string& spec : layoutSpecs) {
     const std::optional<bench::StackLayout> layout = parseLayout(spec);
@@ -363,17 +388,18 @@ int main(int argc, char** argv) {
       return 2;
     }
     // Box2D first, so that each of ours prints its ratio to it
-    std::optional<RunResult> peer;
+    std::optional<RunResult> peer, peer3;
     const int settleSteps = settleStepsOf(*layout, settings, options);
     auto row = [&](const std::string& name, const RunResult& r) {
       const bench::StackMetrics& m = r.metrics;
-      char ratio[32] = "", timed[32];
+      char ratio[32] = "", ratio3[32] = "", timed[32];
       if (peer && &r != &*peer) std::snprintf(ratio, sizeof ratio, "%.2f", r.cpuMsPerStep / peer->cpuMsPerStep);
+      if (peer3 && &r != &*peer3) std::snprintf(ratio3, sizeof ratio3, "%.2f", r.cpuMsPerStep / peer3->cpuMsPerStep);
       std::snprintf(timed, sizeof timed, "%d-%d", r.settleSteps + 1, r.settleSteps + options.steps);
-      std::printf("%-22s %-10s %6zu %11s %9.3f %9.3f %9.4f %13.4f %11.4f %9.4f %6d %12.4f %12.4f %9s%s\n",
+      std::printf("%-22s %-10s %6zu %11s %9.3f %9.3f %9.4f %13.4f %11.4f %9.4f %6d %12.4f %12.4f %9s %7s%s\n",
                   layout->name.c_str(), name.c_str(), layout->boxes.size(), timed, r.msPerStep, r.cpuMsPerStep,
                   m.topDisplacement, m.maxOffRestX, m.fastestSpeed, m.fastestSpin, m.moved, r.worstTop, r.worstSpeed,
-                  ratio, r.diverged ? "  DIVERGED" : "");
+                  ratio, ratio3, r.diverged ? "  DIVERGED" : "");
       if (csv.is_open())
         csv << layout->name << ',' << name << ',' << layout->boxes.size() << ',' << r.settleSteps << ','
             << r.settleSteps + 1 << ',' << r.settleSteps + options.steps << ',' << settings.velocityIterations << ','
@@ -385,7 +411,7 @@ int main(int argc, char** argv) {
         csv << options.substeps << ',' << options.contactHertz;
       else
         csv << ',';
-      csv << '\n';
+      csv << ',' << ratio3 << '\n';
       std::fflush(stdout);
       status |= r.diverged;
     };
@@ -396,12 +422,20 @@ int main(int argc, char** argv) {
       row("box2d", *peer);
     }
 #endif
+    // Box2D v3 on the touching pyramids, the scene its program builds
+    if (!box2d3Dir.empty() && spec.rfind("pyramid:", 0) == 0 && !layout->dropped) {
+      peer3 = runBox2d3(box2d3Dir, std::stoi(spec.substr(8)), options);
+      if (peer3)
+        row("box2d-v3", *peer3);
+      else
+        std::fprintf(stderr, "--box2d3: %s/b3_pyramid did not run\n", box2d3Dir.c_str());
+    }
     for (sim::world::CollisionMethod method : ourMethods) {
       const std::string name(sim::world::collisionMethodName(method));
       OurRun e(*layout, settings, options, method);
       row(name, run(e, name.c_str(), *layout, settleSteps, options));
     }
   }
-  std::printf("/box2d: processor time per step against Box2D 2.4's in this run\n");
+  std::printf("/box2d: processor time per step against Box2D 2.4's in this run; /v3: against Box2D v3's (--box2d3)\n");
   return status;
 }

@@ -1,0 +1,83 @@
+// soft_step's contact passes four lanes at once, in GCC's vector extensions: compiled with -mavx2
+// where the compiler targets x86-64 (sim/CMakeLists.txt), one AVX2 instruction per operation on
+// four doubles; elsewhere the same code in the target's own vectors. The result is the scalar
+// path's to the bit (same operations, same order, no fused multiply-add).
+#include "sim/world/soft_contacts_kernel.h"
+
+#if defined(__AVX2__)
+#include <immintrin.h>
+#endif
+
+namespace sim::world::soft {
+namespace {
+
+typedef double V4 __attribute__((vector_size(32)));
+typedef long long M4 __attribute__((vector_size(32)));
+
+struct WideLanes {
+  using V = V4;
+  static V load(const Lanes& x, int) { return *reinterpret_cast<const V4*>(x.l); }
+  static void store(Lanes& x, int, V v) { *reinterpret_cast<V4*>(x.l) = v; }
+  static V splat(double v) { return V4{v, v, v, v}; }
+  static M4 greater(V a, V b) { return a > b; }
+  // a where m, else b, bit by bit (as the scalar path's m ? a : b)
+  static V select(M4 m, V a, V b) { return reinterpret_cast<V4>((reinterpret_cast<M4>(a) & m) | (reinterpret_cast<M4>(b) & ~m)); }
+  static V max(V a, V b) { return select(a < b, b, a); }
+  static V min(V a, V b) { return select(b < a, b, a); }
+#if defined(__AVX2__)
+  // four records' first (or second) halves, read as rows and turned into columns
+  static void transpose(__m256d& r0, __m256d& r1, __m256d& r2, __m256d& r3) {
+    const __m256d t0 = _mm256_unpacklo_pd(r0, r1), t1 = _mm256_unpackhi_pd(r0, r1);
+    const __m256d t2 = _mm256_unpacklo_pd(r2, r3), t3 = _mm256_unpackhi_pd(r2, r3);
+    r0 = _mm256_permute2f128_pd(t0, t2, 0x20);
+    r1 = _mm256_permute2f128_pd(t1, t3, 0x20);
+    r2 = _mm256_permute2f128_pd(t0, t2, 0x31);
+    r3 = _mm256_permute2f128_pd(t1, t3, 0x31);
+  }
+  static BodyLanes<V> gather(const BodyState* bodies, const int* index, int) {
+    const double* b0 = &bodies[index[0]].vx;
+    const double* b1 = &bodies[index[1]].vx;
+    const double* b2 = &bodies[index[2]].vx;
+    const double* b3 = &bodies[index[3]].vx;
+    __m256d v0 = _mm256_load_pd(b0), v1 = _mm256_load_pd(b1), v2 = _mm256_load_pd(b2), v3 = _mm256_load_pd(b3);
+    __m256d p0 = _mm256_load_pd(b0 + 4), p1 = _mm256_load_pd(b1 + 4), p2 = _mm256_load_pd(b2 + 4),
+            p3 = _mm256_load_pd(b3 + 4);
+    transpose(v0, v1, v2, v3);
+    transpose(p0, p1, p2, p3);
+    return {V4(v0), V4(v1), V4(v2), V4(p0), V4(p1), V4(p2), V4(p3)};
+  }
+  static void scatter(BodyState* bodies, const int* index, int, const BodyLanes<V>& b) {
+    __m256d r0 = __m256d(b.vx), r1 = __m256d(b.vy), r2 = __m256d(b.w), r3 = _mm256_setzero_pd();
+    transpose(r0, r1, r2, r3);
+    _mm256_store_pd(&bodies[index[0]].vx, r0);
+    _mm256_store_pd(&bodies[index[1]].vx, r1);
+    _mm256_store_pd(&bodies[index[2]].vx, r2);
+    _mm256_store_pd(&bodies[index[3]].vx, r3);
+  }
+#else
+  static BodyLanes<V> gather(const BodyState* bodies, const int* index, int) {
+    const BodyState &b0 = bodies[index[0]], &b1 = bodies[index[1]], &b2 = bodies[index[2]], &b3 = bodies[index[3]];
+    return {V4{b0.vx, b1.vx, b2.vx, b3.vx},     V4{b0.vy, b1.vy, b2.vy, b3.vy},     V4{b0.w, b1.w, b2.w, b3.w},
+            V4{b0.dpx, b1.dpx, b2.dpx, b3.dpx}, V4{b0.dpy, b1.dpy, b2.dpy, b3.dpy}, V4{b0.qc, b1.qc, b2.qc, b3.qc},
+            V4{b0.qs, b1.qs, b2.qs, b3.qs}};
+  }
+  static void scatter(BodyState* bodies, const int* index, int, const BodyLanes<V>& v) {
+    for (int k = 0; k < kLanes; ++k) {
+      BodyState& b = bodies[index[k]];
+      b.vx = v.vx[k], b.vy = v.vy[k], b.w = v.w[k];
+    }
+  }
+#endif
+};
+
+}  // namespace
+
+void warmStartWide(ContactBlock* blocks, int begin, int end, BodyState* bodies) {
+  for (int i = begin; i < end; ++i) warmStartBlock<WideLanes>(blocks[i], bodies, 0);
+}
+
+void solveWide(ContactBlock* blocks, int begin, int end, BodyState* bodies, const PassSettings& s) {
+  for (int i = begin; i < end; ++i) solveBlock<WideLanes>(blocks[i], bodies, s, 0);
+}
+
+}  // namespace sim::world::soft
