@@ -32,16 +32,17 @@ bodies:
   - {name: far, shape: {box: [1, 1]}, position: [1e16, 0], static: true}
 YAML
 ends "a static box at x = 1e16" far_box.yaml
-# the same box seen by a fixed camera 2 m high: its hatching is cut to the view before it is made
+# a box 1e16 m out seen from near: its stripes, half a metre apart, are 1.4e16 stripes from the
+# origin, past 2^53, where counting them one by one (k += 1) stalls
 cat >far_view.yaml <<'YAML'
 name: far_view
 duration: 0.2
-render: {camera: {center: [1e16, 0], height: 2}}
+render: {line_width: 0.1, camera: {center: [1e16, 0], height: 50}}
 bodies:
-  - {name: ball, shape: {circle: 0.2}}
-  - {name: far, shape: {box: [1e17, 1]}, position: [1e16, 0], static: true}
+  - {name: ball, shape: {circle: 0.2}, position: [1e16, 12]}
+  - {name: far, shape: {box: [80, 20]}, position: [1e16, 0], static: true}
 YAML
-ends "a static box 1e17 m long seen from 2 m" far_view.yaml
+ends "a static box at x = 1e16 seen from 50 m" far_view.yaml
 
 cat >thin_lines.yaml <<'YAML'
 name: thin_lines
