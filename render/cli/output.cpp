@@ -36,4 +36,12 @@ std::string videoDiverged(const std::string& file, const render::video::VariantD
          ") or another integrator (--integrator rk4)\n";
 }
 
+std::unique_ptr<render::jobs::AtomicFile> openTrace(const std::string& path) {
+  try {
+    return std::make_unique<render::jobs::AtomicFile>(path);
+  } catch (const std::runtime_error& e) {
+    throw UsageError(std::string("--trace: ") + e.what());
+  }
+}
+
 }  // namespace render::cli

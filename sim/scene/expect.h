@@ -18,8 +18,9 @@ using sim::core::CheckResult;
 // every quantity of one entry, for a world already at the entry's time
 std::vector<CheckResult> evaluate(const ExpectDef& expect, const SceneDef& def, const World& world);
 
-// runs the scene's world through every expect entry in time order (`observer`, if any, sees every
-// step: a progress line)
+// runs the scene's world through every expect entry in time order on its own step grid (an entry
+// between two steps is evaluated on a copy advanced to its time; `observer`, if any, sees every
+// step of the run: a progress line). The world is left at its last step by the last entry.
 std::vector<CheckResult> runExpects(const SceneDef& def, World& world, sim::world::StepObserver* observer = nullptr);
 // the same on a world built from the definitions
 std::vector<CheckResult> runExpects(const SceneDef& def);
