@@ -53,6 +53,9 @@ class GlCanvas final : public Canvas {
   // the GL draw calls of the frame so far (begin() starts the count): one per batch of opaque
   // primitives and one per translucent primitive, however many bodies the opaque ones draw
   int drawCalls() const { return drawCalls_; }
+  // the batch drawn now, in one glDrawArrays of its triangles, and emptied (finish() does it; an
+  // overlay read without finish() needs it)
+  void flush();
 
  private:
   struct QueuedText {
@@ -91,8 +94,6 @@ class GlCanvas final : public Canvas {
   // primitive's fans and strips go into the batch instead, as the triangles GL would make of them
   void shape(unsigned mode);
   void endShape();
-  // the batch drawn, in one glDrawArrays of its triangles, and emptied
-  void flush();
   // the unit circle's n + 1 points (the last is the first), shared by every disc of n segments
   const std::vector<Vec2>& unitCircle(int n);
   void fillConvex(const std::vector<Vec2>& vertices);
