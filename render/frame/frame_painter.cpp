@@ -6,6 +6,7 @@
 #include "render/draw/text.h"
 
 #include "render/draw/style.h"
+#include "render/frame/impulse_beside.h"
 #include "render/scene/scene_style.h"
 #include "sim/collision/collide.h"
 #include "sim/debug/describe.h"
@@ -84,16 +85,18 @@ void FramePainter::paint(const sim::world::World& world, const History& history,
   sim::debug::describeBodies(world, movingPhysics);
   PhysicsDraw physics(draw);
   // coils 2.5 line widths to each side: visible, and narrower than most bodies
-  if (r.springs) sim::debug::describeSprings(world, 2.5 * def_.render.lineWidth * px, physics);
+  if (r.springs) sim::debug::describeSprings(world, 2.5 * lineWidthFor(def_.render, camera_.heightPx()) * px, physics);
+  // impulses beside the normals they share a line with, so that both show
+  ImpulseBeside beside(draw, impulseOffsetPx(lineWidthFor(r, camera_.heightPx())) * px);
   // contacts: dots and normals while few are on screen, else (contacts: auto) dots alone, which
   // still show where bodies touch without a thicket of arrows over them
   DrawList held;
   history.drawAfterimages(world.time, held);
   if (r.contactsAuto && contactsOnScreen(held) >= kManyContacts) {
-    RoleFilter dots(draw, [](Role role) { return role != Role::ContactNormal && role != Role::Impulse; });
+    RoleFilter dots(beside, [](Role role) { return role != Role::ContactNormal && role != Role::Impulse; });
     held.replay(dots);
   } else {
-    held.replay(draw);
+    held.replay(beside);
   }
   const double textSize = fontSizeFor(r, camera_.heightPx()) * px;
   // the overlay of every polygon pair closer than a tenth of the view (so, as they approach), its
