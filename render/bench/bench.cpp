@@ -23,12 +23,15 @@
 #include <string>
 
 #include "render/draw/gl_canvas.h"
+#include "render/frame/frame_painter.h"
+#include "render/frame/history.h"
 #include "render/frame/scene_run.h"
 #include "render/jobs/json_writer.h"
 #include "render/jobs/process.h"
 #include "render/scene/scene_style.h"
 #include "render/video/render_plan.h"
 #include "render/video/video.h"
+#include "sim/scene/scene_build.h"
 #include "sim/yaml/scene_source.h"
 
 namespace {
@@ -76,7 +79,22 @@ double medianTime(const std::vector<std::string>& argv, int runs) {
 // alone) and handed over (written into a pipe to a reader that discards it)
 struct FrameParts {
   double drawing = 0.0, readback = 0.0, handover = 0.0;
+  double simulation = 0.0;  // of the drawing's time, the world stepped to the frames' instants
 };
+
+// the world alone stepped to each frame's instant, with the history the frames record: the
+// simulation's share of a frame, s in all
+double simulationSeconds(const render::video::PlannedVariant& v, const render::video::VideoOutput& out) {
+  const render::frame::FramePainter painter(v.scene, out.camera, v.survey);
+  sim::world::World world = sim::scene::buildWorld(v.scene.model);
+  render::frame::History history(world, painter.historyOptions());
+  const auto start = Clock::now();
+  for (long k = 0; k < out.frameCount; ++k) {
+    const double u = static_cast<double>(k) / out.fps;
+    if (!out.timeMap.inTitleCard(u)) world.advanceTo(out.timeMap.simTime(u), &history);
+  }
+  return secondsSince(start);
+}
 
 // the parts, drawing the frames of `out` as the recorder does, and keeping them in `raw` (RGBA)
 FrameParts measureParts(const render::video::PlannedVariant& v, const render::video::VideoOutput& out,
@@ -113,8 +131,10 @@ FrameParts measureParts(const render::video::PlannedVariant& v, const render::vi
     canvas.finish(frame);
     parts.readback += secondsSince(start);
   }
-  // the frame-drawing time included a read-back each
+  // the frame-drawing time included a read-back each, and the simulation
   parts.drawing -= parts.readback;
+  parts.simulation = simulationSeconds(v, out);
+  parts.drawing -= parts.simulation;
   // handing over: the frames into a pipe as wide as the video writer's, to `cat` into /dev/null
   render::jobs::Child cat = render::jobs::spawnChild({"cat"}, render::jobs::Stream::Pipe, render::jobs::Stream::Null,
                                                      render::jobs::Stream::Null);
@@ -130,7 +150,7 @@ FrameParts measureParts(const render::video::PlannedVariant& v, const render::vi
   render::jobs::waitChild(cat.pid);
   parts.handover = secondsSince(start);
   const double ms = 1000.0 / static_cast<double>(out.frameCount);
-  return {parts.drawing * ms, parts.readback * ms, parts.handover * ms};
+  return {parts.drawing * ms, parts.readback * ms, parts.handover * ms, parts.simulation * ms};
 }
 
 // a stand-in for ffmpeg on PATH: reads the frames and discards them, leaves an empty output
@@ -189,27 +209,28 @@ int main(int argc, char** argv) {
     std::printf("%-9s check %s: %6.1f ms (median of 21)\n", name.c_str(), checked.c_str(), 1000.0 * s);
   }
 
-  // the video pipeline at 720p and 1080p, 2 s at 60 fps of `scene`
-  const double fps = 60.0, duration = 2.0;
+  // the video pipeline: `path` at w × h, `seconds` s at 60 fps; its parts per frame, rigidreel's side
+  // alone, ffmpeg alone on the same frames, and the whole render (with its peak memory)
+  const double fps = 60.0;
   const std::string standIn = writeStandIn("out/bench/stand-in");
-  const std::string stem = fs::path(scene).stem().string();
-  for (const auto& [w, h] : {std::pair{1280, 720}, std::pair{1920, 1080}}) {
+  auto pipeline = [&](const std::string& path, int w, int h, const std::string& seconds) {
+    const std::string stem = fs::path(path).stem().string();
     const std::string size = std::to_string(w) + "x" + std::to_string(h);
     render::video::VideoRequest request;
     request.root = "out/bench/render";
     request.size = render::video::FrameSize{w, h};
     request.fps = fps;
-    request.duration = duration;
+    request.duration = std::stod(seconds);
     const render::video::RenderPlan plan = render::video::planVideos(
-        [&](const std::string& variant) { return render::scene::readScene(sim::yaml::readSceneSource(scene, variant)); },
+        [&](const std::string& variant) { return render::scene::readScene(sim::yaml::readSceneSource(path, variant)); },
         request);
     const render::video::VideoOutput& out = plan.videos.front();
     const long frames = out.frameCount;
     const std::string raw = "out/bench/frames-" + size + ".rgba";
     const FrameParts parts = measureParts(plan.variants[out.variant], out, raw);
 
-    const std::vector<std::string> render{"", "render", scene, "-o", "out/bench/render", "--size", size, "--fps", "60",
-                                          "--duration", "2", "--quiet"};
+    const std::vector<std::string> render{"", "render", path, "-o", "out/bench/render", "--size", size, "--fps", "60",
+                                          "--duration", seconds, "--quiet"};
     auto renderWith = [&](const std::string& program) {
       std::vector<std::string> a = render;
       a[0] = program;
@@ -222,31 +243,65 @@ int main(int argc, char** argv) {
     for (const std::string& a : render::video::ffmpegArguments(render::video::VideoFormat::Mp4, w, h, fps, "out/bench/ffmpeg-only.mp4"))
       encode.push_back(a == "pipe:0" ? raw : a);
     const Timed ffmpeg = timeProgram(encode);
-    std::vector<std::pair<std::string, Timed>> wholes;
-    for (const auto& [name, program] : programs) wholes.push_back({name, timeProgram(renderWith(program))});
+    // the whole render, its peak resident memory measured by GNU time (kB)
+    struct Whole {
+      std::string name;
+      Timed timed;
+      double peakMb;
+    };
+    std::vector<Whole> wholes;
+    for (const auto& [name, program] : programs) {
+      std::vector<std::string> timed{"/usr/bin/time", "-f", "%M", "-o", "out/bench/peak.txt"};
+      for (const std::string& a : renderWith(program)) timed.push_back(a);
+      const Timed t = timeProgram(timed);
+      wholes.push_back({name, t, std::atof(fileText("out/bench/peak.txt").c_str()) / 1024.0});
+    }
     // the same frames make the same video: the frames measured here are the ones rendered
     const std::string mp4 = "out/bench/render/" + stem + "/" + stem + ".mp4";
     const bool same = fileText(mp4) == fileText("out/bench/ffmpeg-only.mp4");
     fs::remove(raw);
 
-    row("drawing", "rigidreel", size, frames, parts.drawing * frames / 1000.0);
-    row("readback", "rigidreel", size, frames, parts.readback * frames / 1000.0);
-    row("handover", "rigidreel", size, frames, parts.handover * frames / 1000.0);
-    row("render into a discarding reader", "rigidreel", size, frames, side.seconds, side.cpu);
-    row("encoding (ffmpeg alone)", "ffmpeg", size, frames, ffmpeg.seconds, ffmpeg.cpu);
+    const std::string what = stem + " ";
+    row(what + "simulation", "rigidreel", size, frames, parts.simulation * frames / 1000.0);
+    row(what + "drawing", "rigidreel", size, frames, parts.drawing * frames / 1000.0);
+    row(what + "readback", "rigidreel", size, frames, parts.readback * frames / 1000.0);
+    row(what + "handover", "rigidreel", size, frames, parts.handover * frames / 1000.0);
+    row(what + "render into a discarding reader", "rigidreel", size, frames, side.seconds, side.cpu);
+    row(what + "encoding (ffmpeg alone)", "ffmpeg", size, frames, ffmpeg.seconds, ffmpeg.cpu);
     const double perFrame = 1000.0 / frames;
-    std::printf("\n%s, %ld frames of %s, ms per frame:\n", size.c_str(), frames, stem.c_str());
-    std::printf("  drawing %6.2f | read-back %5.2f | handing over %5.2f | encoding (ffmpeg alone) %6.2f\n", parts.drawing,
-                parts.readback, parts.handover, ffmpeg.seconds * perFrame);
+    std::printf("\n%s, %ld frames of %s (%zu bodies), ms per frame:\n", size.c_str(), frames, stem.c_str(),
+                plan.variants[out.variant].scene.model.bodies.size());
+    std::printf("  simulation %6.2f | drawing %6.2f | read-back %5.2f | handing over %5.2f | encoding (ffmpeg alone) %6.2f\n",
+                parts.simulation, parts.drawing, parts.readback, parts.handover, ffmpeg.seconds * perFrame);
     std::printf("  rigidreel's side into a discarding reader: %6.2f (CPU %.2f)\n", side.seconds * perFrame, side.cpu * perFrame);
-    for (const auto& [name, whole] : wholes) {
-      row("whole render", name, size, frames, whole.seconds, whole.cpu);
-      std::printf("  %-9s whole render %6.2f, %.2f x ffmpeg alone (CPU time: %.2f x)\n", name.c_str(),
-                  whole.seconds * perFrame, whole.seconds / ffmpeg.seconds, whole.cpu / ffmpeg.cpu);
-      csv << "ratio whole render to ffmpeg alone," << name << ',' << size << ",,"
-          << render::jobs::formatNumber(whole.seconds / ffmpeg.seconds) << ",\n";
+    for (const Whole& whole : wholes) {
+      row(what + "whole render", whole.name, size, frames, whole.timed.seconds, whole.timed.cpu);
+      std::printf("  %-9s whole render %6.2f (%5.1f frames/s, peak %6.1f MB), %.2f x ffmpeg alone (CPU time: %.2f x)\n",
+                  whole.name.c_str(), whole.timed.seconds * perFrame, frames / whole.timed.seconds, whole.peakMb,
+                  whole.timed.seconds / ffmpeg.seconds, whole.timed.cpu / ffmpeg.cpu);
+      csv << "ratio whole render to ffmpeg alone " << stem << ',' << whole.name << ',' << size << ",,"
+          << render::jobs::formatNumber(whole.timed.seconds / ffmpeg.seconds) << ",\n";
+      csv << "peak resident MB " << stem << ',' << whole.name << ',' << size << ",,"
+          << render::jobs::formatNumber(whole.peakMb) << ",\n";
     }
     std::printf("  rigidreel's video is ffmpeg alone's, byte for byte: %s\n", same ? "yes" : "NO");
+  };
+  // the two-body poll at 720p and 1080p, 2 s
+  for (const auto& [w, h] : {std::pair{1280, 720}, std::pair{1920, 1080}}) pipeline(scene, w, h, "2");
+  // Box2D's pyramid (stack_layouts.h), resting, soft_step, 0.5 s at 720p: base 20 (210 boxes) and
+  // base 100 (5,050 boxes), how the cost grows with the bodies (issue 23's targets: 1.3 and 1.5 x)
+  for (int base : {20, 100}) {
+    const std::string path = "out/bench/pyramid" + std::to_string(base) + ".yaml";
+    std::ofstream yaml(path);
+    yaml << "name: pyramid" << base << "\nduration: 0.5\nworld: {gravity: [0, -10], friction: 0.6}\n"
+         << "sim: {collisions: soft_step, dt: 0.016666666666666667}\nbodies:\n"
+         << "  - {name: ground, shape: {box: [" << std::max(80, 2 * base + 40) << ", 1]}, position: [0, -0.5], static: true}\n";
+    for (int r = 0; r < base; ++r)
+      for (int j = 0; j < base - r; ++j)
+        yaml << "  - {name: b" << r << '_' << j << ", shape: {box: [1, 1]}, position: [" << -7.0 + 0.5625 * r + 1.125 * j << ", "
+             << 0.5 + r << "]}\n";
+    yaml.close();
+    pipeline(path, 1280, 720, "0.5");
   }
 
   // the lecture pack (scenes/lecture, as `make lecture` makes it)

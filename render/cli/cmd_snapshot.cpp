@@ -12,6 +12,7 @@
 #include "render/video/output_names.h"
 #include "render/cli/space3d.h"
 #include "render/cli/verbosity.h"
+#include "render/jobs/interrupt.h"
 #include "render/video/plan_writer.h"
 
 namespace render::cli {
@@ -106,7 +107,8 @@ void addSnapshotCommand(CLI::App& app, int& exitCode) {
   o->Verbosity::addTo(*cmd, "print nothing (not each file's path)", "also a progress bar and a summary, as render shows them");
   cmd->add_option("--trace", o->trace, "also write every step of the pictures' run to this CSV file (as simulate --trace)");
   cmd->add_option("--overlay", o->overlay, "another simulator's trace (CSV, as --trace writes): its bodies dashed over ours");
-  cmd->callback([o, &exitCode] { exitCode = snapshot(*o); });
+  // Ctrl-C and SIGTERM end a snapshot as they end a render: exit 130, no half-written PNG
+  cmd->callback([o, &exitCode] { exitCode = render::jobs::runInterruptible([&] { return snapshot(*o); }); });
 }
 
 }  // namespace render::cli

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "render/jobs/interrupt.h"
+
 namespace render::draw {
 
 namespace {
@@ -52,7 +54,10 @@ void GlCanvas::start(const Camera& camera, bool clear) {
   glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   glEnable(GL_STENCIL_TEST);
   glStencilMask(0xff);
-  stencil_ = -1;  // unknown: the first primitive sets the stencil state
+  stencil_ = glStencil_ = -1;  // unknown: the first primitive sets the stencil state
+  batch_.clear();
+  batching_ = false;
+  drawCalls_ = 0;
   // the color only (an overlay keeps what is drawn): each primitive's stencil value is one no pixel
   // holds (GlContext::freshStencil)
   if (clear) gl_.clearFrame(style_.background, false);
@@ -80,6 +85,7 @@ void GlCanvas::enter(Role role) {
     return;
   }
   inStatic_ = false;
+  flush();
   gl_.endStaticPart(std::move(key_));
   key_.clear();
 }
@@ -90,6 +96,7 @@ void GlCanvas::finish(Image& image) {
     if (!world.empty()) pixels.add(camera_.toPixel(world.min)), pixels.add(camera_.toPixel(world.max));
     return pixels;
   };
+  flush();
   if (bounded_) {
     gl_.drawnWithin(inPixels(drawn_));
     if (inStatic_) enter(Role::Body);
@@ -240,21 +247,25 @@ void GlCanvas::label(const Vec2& anchor, const Vec2& direction, const std::strin
 }
 
 void GlCanvas::beginPrimitive(const Color& c, double opacity, bool marks) {
+  // a frame of many bodies takes long: Ctrl-C ends it here, not after it (a flag read, no more)
+  render::jobs::checkInterrupted();
   const double alpha = c.a * std::clamp(opacity, 0.0, 1.0);
   keyed({c.r, c.g, c.b, alpha, marks ? 1.0 : 0.0});
-  glColor4d(c.r, c.g, c.b, alpha);
   if (alpha >= 1.0 && !marks) {
-    // opaque: overlaps do not show, so no stencil, and no state change between primitives, which
-    // lets Mesa draw many of them in one batch (a stencil change per primitive made contact-heavy
-    // frames several times slower)
-    if (stencil_ != 0) {
-      glStencilFunc(GL_ALWAYS, 0, 0xff);
-      glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-    }
+    // opaque: overlaps do not show, so no stencil, and no state between primitives: its triangles
+    // join the batch, drawn with the others in one call (a stencil change per primitive made
+    // contact-heavy frames several times slower, and a call per primitive made frames of many
+    // bodies cost in proportion to the calls)
+    batching_ = true;
+    color_ = {static_cast<float>(c.r), static_cast<float>(c.g), static_cast<float>(c.b), static_cast<float>(alpha)};
     stencil_ = 0;
     return;
   }
-  stencil_ = gl_.freshStencil();
+  // translucent or marking: drawn apart, under its own stencil value, after the batch before it
+  flush();
+  batching_ = false;
+  glColor4d(c.r, c.g, c.b, alpha);
+  stencil_ = glStencil_ = gl_.freshStencil();
   glStencilFunc(GL_NOTEQUAL, stencil_, 0xff);
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
 }
@@ -265,18 +276,85 @@ void GlCanvas::vertex(const Vec2& world) {
   else staticDrew_ = true;
   const Vec2& c = camera_.center();
   keyed({world.x() - c.x(), world.y() - c.y()});
-  glVertex2d(world.x() - c.x(), world.y() - c.y());
+  if (!batching_) {
+    glVertex2d(world.x() - c.x(), world.y() - c.y());
+    return;
+  }
+  // GL would take the double as a float: the same float here, so that batched pixels are the same
+  const BatchVertex v{static_cast<float>(world.x() - c.x()), static_cast<float>(world.y() - c.y()), color_[0],
+                      color_[1], color_[2], color_[3]};
+  if (shapeMode_ == GL_TRIANGLES) {
+    batch_.push_back(v);
+    return;
+  }
+  // the fan's and the strip's triangles as GL makes them (a strip's odd ones with their first two
+  // vertices swapped), one after another in the batch
+  if (shapeCount_ >= 2) {
+    if (shapeMode_ == GL_TRIANGLE_FAN) {
+      batch_.push_back(shapeFirst_), batch_.push_back(shapePrevious_);
+    } else if (shapeCount_ % 2 == 0) {
+      batch_.push_back(shapeFirst_), batch_.push_back(shapePrevious_);
+    } else {
+      batch_.push_back(shapePrevious_), batch_.push_back(shapeFirst_);
+    }
+    batch_.push_back(v);
+  }
+  // a fan keeps its first vertex and its last; a strip, its last two
+  if (shapeCount_ == 0) shapeFirst_ = v;
+  else if (shapeMode_ == GL_TRIANGLE_STRIP && shapeCount_ >= 2) shapeFirst_ = shapePrevious_;
+  if (shapeCount_ >= 1) shapePrevious_ = v;
+  ++shapeCount_;
 }
 
 void GlCanvas::shape(unsigned mode) {
   keyed({-1.0, static_cast<double>(mode)});
-  glBegin(mode);
+  if (!batching_) {
+    ++drawCalls_;
+    glBegin(mode);
+    return;
+  }
+  shapeMode_ = mode;
+  shapeCount_ = 0;
+}
+
+void GlCanvas::endShape() {
+  if (!batching_) glEnd();
+}
+
+void GlCanvas::flush() {
+  if (batch_.empty()) return;
+  // opaque: no stencil test, nothing marked
+  if (glStencil_ != 0) {
+    glStencilFunc(GL_ALWAYS, 0, 0xff);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    glStencil_ = 0;
+  }
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glEnableClientState(GL_COLOR_ARRAY);
+  glVertexPointer(2, GL_FLOAT, sizeof(BatchVertex), &batch_[0].x);
+  glColorPointer(4, GL_FLOAT, sizeof(BatchVertex), &batch_[0].r);
+  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(batch_.size()));
+  glDisableClientState(GL_COLOR_ARRAY);
+  glDisableClientState(GL_VERTEX_ARRAY);
+  ++drawCalls_;
+  batch_.clear();
 }
 
 void GlCanvas::fillConvex(const std::vector<Vec2>& vertices) {
   shape(GL_TRIANGLE_FAN);
   for (const Vec2& v : vertices) vertex(v);
-  glEnd();
+  endShape();
+}
+
+const std::vector<Vec2>& GlCanvas::unitCircle(int n) {
+  // the unit circle's n + 1 points, computed once per segment count and shared by every disc
+  std::vector<Vec2>& points = unitCircles_[n];
+  if (points.empty())
+    for (int i = 0; i <= n; ++i) {
+      const double a = 2.0 * std::numbers::pi * i / n;
+      points.emplace_back(std::cos(a), std::sin(a));
+    }
+  return points;
 }
 
 int GlCanvas::discSegments(double radius) const {
@@ -289,27 +367,23 @@ int GlCanvas::discSegments(double radius) const {
 }
 
 void GlCanvas::fillDisc(const Vec2& center, double radius) {
-  const int n = discSegments(radius);
+  const std::vector<Vec2>& circle = unitCircle(discSegments(radius));
   shape(GL_TRIANGLE_FAN);
   vertex(center);
-  for (int i = 0; i <= n; ++i) {
-    const double a = 2.0 * std::numbers::pi * i / n;
-    vertex(center + radius * Vec2(std::cos(a), std::sin(a)));
-  }
-  glEnd();
+  for (const Vec2& u : circle) vertex(center + radius * u);
+  endShape();
 }
 
 void GlCanvas::ring(const Vec2& center, double radius, double width) {
   const double half = 0.5 * width * px_;
   const double inner = std::max(0.0, radius - half), outer = radius + half;
-  const int n = discSegments(outer);
+  const std::vector<Vec2>& circle = unitCircle(discSegments(outer));
   shape(GL_TRIANGLE_STRIP);
-  for (int i = 0; i <= n; ++i) {
-    const Vec2 u(std::cos(2.0 * std::numbers::pi * i / n), std::sin(2.0 * std::numbers::pi * i / n));
+  for (const Vec2& u : circle) {
     vertex(center + outer * u);
     vertex(center + inner * u);
   }
-  glEnd();
+  endShape();
 }
 
 void GlCanvas::strokeSegment(const Vec2& a, const Vec2& b, double width) {
@@ -325,7 +399,18 @@ void GlCanvas::strokeSegment(const Vec2& a, const Vec2& b, double width) {
 }
 
 void GlCanvas::strokeClosed(const std::vector<Vec2>& vertices, double width) {
-  for (size_t i = 0; i < vertices.size(); ++i) strokeSegment(vertices[i], vertices[(i + 1) % vertices.size()], width);
+  // each edge, and one round join at each vertex: the same pixels as every edge with both its caps
+  // (the one color covers them once), with half the discs
+  const double half = 0.5 * width * px_;
+  for (size_t i = 0; i < vertices.size(); ++i) {
+    const Vec2 &a = vertices[i], &b = vertices[(i + 1) % vertices.size()];
+    const Vec2 d = b - a;
+    if (d.norm() > 1e-9 * px_) {
+      const Vec2 side = perpendicular(d.normalized()) * half;
+      fillConvex({a - side, b - side, b + side, a + side});
+    }
+    fillDisc(a, half);
+  }
 }
 
 void GlCanvas::strokeArrow(const Vec2& tail, const Vec2& head, double width) {
@@ -344,8 +429,15 @@ void GlCanvas::strokeArrow(const Vec2& tail, const Vec2& head, double width) {
   fillConvex({head, base + side * headHalfWidth, base - side * headHalfWidth});
 }
 
-void GlCanvas::hatch(const Bounds& area, const Color& c, double opacity) {
-  if (area.empty()) return;
+void GlCanvas::hatch(const Bounds& box, const Color& c, double opacity) {
+  // only what the frame shows is hatched: the shape's box cut to the view, grown by a stripe's
+  // half width so that no stripe ends inside the frame
+  const Bounds view = camera_.view();
+  const double half = 0.3 * style_.lineWidth * px_;
+  Bounds area;
+  area.add(box.min.cwiseMax(view.min - Vec2(half, half)));
+  area.add(box.max.cwiseMin(view.max + Vec2(half, half)));
+  if (box.empty() || area.empty()) return;
   // only over the pixels the primitive just drawn has marked in the stencil
   glStencilFunc(GL_EQUAL, stencil_, 0xff);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
@@ -353,18 +445,33 @@ void GlCanvas::hatch(const Bounds& area, const Color& c, double opacity) {
   glColor4d(c.r, c.g, c.b, c.a * std::clamp(opacity * 0.8, 0.0, 1.0));
   // lines rising at 45°, fixed in the world so that they do not crawl when the view changes
   const Vec2 along = Vec2(1.0, 1.0).normalized(), across = perpendicular(along);
-  const double spacing = 5.0 * style_.lineWidth * px_;
   double lo = INFINITY, hi = -INFINITY, from = INFINITY, to = -INFINITY;
   for (const Vec2& corner : {area.min, area.max, Vec2(area.min.x(), area.max.y()), Vec2(area.max.x(), area.min.y())}) {
     lo = std::min(lo, corner.dot(across)), hi = std::max(hi, corner.dot(across));
     from = std::min(from, corner.dot(along)), to = std::max(to, corner.dot(along));
   }
-  const double half = 0.3 * style_.lineWidth * px_;
-  for (double k = std::floor(lo / spacing); k * spacing <= hi; k += 1.0) {
-    const Vec2 o = across * (k * spacing);
+  // stripes at least a pixel apart, and no more of them than the frame is wide and high (a line
+  // width of 1e-6 would otherwise ask for billions)
+  const double maxStripes = static_cast<double>(camera_.widthPx() + camera_.heightPx());
+  double spacing = std::max(5.0 * style_.lineWidth, 1.0) * px_;
+  spacing = std::max(spacing, (hi - lo) / maxStripes);
+  if (!(spacing > 0.0) || !std::isfinite(hi - lo)) return;
+  // counted in whole stripes from the first: k·spacing stays exact and the count is bounded, even
+  // where k itself is past 2⁵³ and k + 1 == k
+  const double first = std::floor(lo / spacing);
+  const long count = static_cast<long>(std::min(std::floor((hi - lo) / spacing) + 2.0, maxStripes + 2.0));
+  // every stripe in one call: each quad as the two triangles its fan would make
+  shape(GL_TRIANGLES);
+  for (long i = 0; i < count; ++i) {
+    const double offset = (first + static_cast<double>(i)) * spacing;
+    if (offset > hi) break;
+    const Vec2 o = across * offset;
     const Vec2 a = o + along * from, b = o + along * to;
-    fillConvex({a - across * half, b - across * half, b + across * half, a + across * half});
+    const Vec2 triangles[6] = {a - across * half, b - across * half, b + across * half,
+                               a - across * half, b + across * half, a + across * half};
+    for (const Vec2& v : triangles) vertex(v);
   }
+  endShape();
   glStencilFunc(GL_NOTEQUAL, stencil_, 0xff);
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
 }

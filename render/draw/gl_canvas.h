@@ -5,10 +5,13 @@
 //
 // Each translucent call is one "primitive" under a fresh stencil value: a pixel is written at most
 // once per primitive, so the overlapping parts of an outline (edge quads and round joins) blend once,
-// and a static body's hatching stays inside its shape. Opaque calls leave the stencil alone, so that
-// Mesa can batch them.
+// and a static body's hatching stays inside its shape. Opaque calls leave the stencil alone and are
+// batched: their triangles gather in one vertex array, drawn in one call when a translucent one
+// comes or the frame ends, so that a frame of many bodies costs a few calls, not a few per body.
 #pragma once
 
+#include <array>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -47,6 +50,13 @@ class GlCanvas final : public Canvas {
   // where it prefers, measured: a frame's labels reach here placed, as text
   void label(const Vec2& anchor, const Vec2& direction, const std::string& text, const Pen& style) override;
 
+  // the GL draw calls of the frame so far (begin() starts the count): one per batch of opaque
+  // primitives and one per translucent primitive, however many bodies the opaque ones draw
+  int drawCalls() const { return drawCalls_; }
+  // the batch drawn now, in one glDrawArrays of its triangles, and emptied (finish() does it; an
+  // overlay read without finish() needs it)
+  void flush();
+
  private:
   struct QueuedText {
     Vec2 pixel;
@@ -80,16 +90,20 @@ class GlCanvas final : public Canvas {
   // translucent one, or one that `marks` its pixels (for hatching), under a fresh stencil value
   void beginPrimitive(const Color& c, double opacity, bool marks = false);
   void vertex(const Vec2& world);
-  // glBegin(mode), the mode in the static part's key
+  // glBegin(mode), the mode in the static part's key; endShape() is its glEnd. An opaque
+  // primitive's fans and strips go into the batch instead, as the triangles GL would make of them
   void shape(unsigned mode);
+  void endShape();
+  // the unit circle's n + 1 points (the last is the first), shared by every disc of n segments
+  const std::vector<Vec2>& unitCircle(int n);
   void fillConvex(const std::vector<Vec2>& vertices);
   void fillDisc(const Vec2& center, double radius);
   void ring(const Vec2& center, double radius, double width);
   void strokeSegment(const Vec2& a, const Vec2& b, double width);
   void strokeClosed(const std::vector<Vec2>& vertices, double width);
   void strokeArrow(const Vec2& tail, const Vec2& head, double width);
-  // diagonal lines over the pixels of the primitive just drawn
-  void hatch(const Bounds& area, const Color& c, double opacity);
+  // diagonal lines over the pixels of the primitive just drawn, within `box` (its bounds) and the view
+  void hatch(const Bounds& box, const Color& c, double opacity);
   int discSegments(double radius) const;
 
   GlContext& gl_;
@@ -98,6 +112,19 @@ class GlCanvas final : public Canvas {
   Camera camera_{Vec2::Zero(), 1.0, 1, 1};
   double px_ = 1.0;  // world length of one output pixel
   int stencil_ = -1;  // the stencil value of the primitive being drawn, 0 for none
+  int glStencil_ = -1;  // the stencil value GL's stencil test is set to (-1: unknown)
+  // the batch: opaque triangles, each vertex with its color, as GL takes them
+  struct BatchVertex {
+    float x, y, r, g, b, a;
+  };
+  std::vector<BatchVertex> batch_;
+  bool batching_ = false;             // the primitive being drawn goes into the batch
+  std::array<float, 4> color_{};      // its color
+  unsigned shapeMode_ = 0;            // its fan or strip, and its vertices so far
+  int shapeCount_ = 0;
+  BatchVertex shapeFirst_{}, shapePrevious_{};
+  int drawCalls_ = 0;
+  std::map<int, std::vector<Vec2>> unitCircles_;
   std::vector<QueuedText> texts_;
 };
 

@@ -79,6 +79,12 @@ RIGIDREEL_GL(void, glBegin, (GLenum m), (m))
 RIGIDREEL_GL(void, glEnd, (), ())
 RIGIDREEL_GL(void, glVertex2d, (GLdouble x, GLdouble y), (x, y))
 RIGIDREEL_GL(void, glColor4d, (GLdouble r, GLdouble g, GLdouble b, GLdouble a), (r, g, b, a))
+// a frame's opaque primitives in one batch (gl_canvas.cpp): client vertex and color arrays
+RIGIDREEL_GL(void, glEnableClientState, (GLenum a), (a))
+RIGIDREEL_GL(void, glDisableClientState, (GLenum a), (a))
+RIGIDREEL_GL(void, glVertexPointer, (GLint n, GLenum t, GLsizei s, const GLvoid* p), (n, t, s, p))
+RIGIDREEL_GL(void, glColorPointer, (GLint n, GLenum t, GLsizei s, const GLvoid* p), (n, t, s, p))
+RIGIDREEL_GL(void, glDrawArrays, (GLenum m, GLint first, GLsizei count), (m, first, count))
 // the 3D canvas (render/draw3d): solids with a depth buffer, outlines offset in depth
 RIGIDREEL_GL(void, glVertex4d, (GLdouble x, GLdouble y, GLdouble z, GLdouble w), (x, y, z, w))
 RIGIDREEL_GL(void, glColor3d, (GLdouble r, GLdouble g, GLdouble b), (r, g, b))

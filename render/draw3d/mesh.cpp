@@ -1,5 +1,6 @@
 #include "render/draw3d/mesh.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -123,6 +124,25 @@ Mesh meshOf(const sim::world3d::Shape& shape) {
     case sim::world3d::ShapeKind::Ellipsoid: return ellipsoidMesh(shape.semiAxes);
   }
   return {};
+}
+
+Mesh meshOf(const sim::world3d::Shape& shape, int segments) {
+  if (shape.kind == sim::world3d::ShapeKind::Box) return boxMesh(shape.sides);
+  const Vec3 semiAxes = shape.kind == sim::world3d::ShapeKind::Sphere ? Vec3::Constant(shape.radius) : shape.semiAxes;
+  Mesh m = ellipsoidMesh(semiAxes, std::max(2, segments / 2), segments);
+  if (segments < kOutlinedSegments) m.curves.clear();
+  if (segments <= kLeastSegments) m.edges.clear();
+  return m;
+}
+
+int segmentsFor(double radiusPx) {
+  constexpr int kLevels[] = {kLeastSegments, 8, 12, 16, 24, 32, 48};
+  const double r = radiusPx;
+  if (!(r > 0.05)) return kLeastSegments;
+  const double n = std::numbers::pi / std::acos(1.0 - 0.05 / r);
+  for (int level : kLevels)
+    if (n <= level) return level;
+  return 48;
 }
 
 bool facing(const Mesh& m, int t, const Vec3& point) {

@@ -29,6 +29,15 @@ Mesh boxMesh(const Vec3& sides);
 // are under a pixel for an ellipsoid 300 px across
 Mesh ellipsoidMesh(const Vec3& semiAxes, int rings = 24, int segments = 48);
 Mesh meshOf(const sim::world3d::Shape& shape);
+// the same with `segments` longitudes for an ellipsoid (latitudes half as many), a level of detail
+// for its size on screen: below kOutlinedSegments its surface curves are left out, and at
+// kLeastSegments its silhouette too (a body a pixel or two across shows as its shaded fill)
+inline constexpr int kLeastSegments = 6, kOutlinedSegments = 12;
+Mesh meshOf(const sim::world3d::Shape& shape, int segments);
+// the longitudes an ellipsoid `radiusPx` pixels across the frame needs: its facets within 0.05 px
+// of the surface (n = π / acos(1 − 0.05 / r), as 2D discs), from kLeastSegments to 48 in a few
+// levels, so that bodies of about one size share one mesh
+int segmentsFor(double radiusPx);
 
 // whether triangle t of the mesh faces a point (body coordinates)
 bool facing(const Mesh& mesh, int triangle, const Vec3& point);

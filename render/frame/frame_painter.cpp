@@ -1,6 +1,9 @@
 #include "render/frame/frame_painter.h"
 
 #include <cstdio>
+#include <iostream>
+
+#include "render/draw/text.h"
 
 #include "render/draw/style.h"
 #include "render/frame/impulse_beside.h"
@@ -19,6 +22,10 @@ namespace {
 
 // a contact normal's arrow, as a fraction of the view's height: 58 px at 720p
 constexpr double kNormalFraction = 0.08;
+// labels: auto writes every body's label in a scene of at most this many bodies
+constexpr size_t kFewBodies = 20;
+// contacts: auto draws normals and impulses while fewer contact points than this are on screen
+constexpr size_t kManyContacts = 200;
 
 }  // namespace
 
@@ -82,7 +89,16 @@ void FramePainter::paint(const sim::world::World& world, const History& history,
   if (r.springs) sim::debug::describeSprings(world, 2.5 * lineWidthFor(def_.render, camera_.heightPx()) * px, physics);
   // impulses beside the normals they share a line with, so that both show
   ImpulseBeside beside(draw, impulseOffsetPx(lineWidthFor(r, camera_.heightPx())) * px);
-  history.drawAfterimages(world.time, beside);
+  // contacts: dots and normals while few are on screen, else (contacts: auto) dots alone, which
+  // still show where bodies touch without a thicket of arrows over them
+  DrawList held;
+  history.drawAfterimages(world.time, held);
+  if (r.contactsAuto && contactsOnScreen(held) >= kManyContacts) {
+    RoleFilter dots(beside, [](Role role) { return role != Role::ContactNormal && role != Role::Impulse; });
+    held.replay(dots);
+  } else {
+    held.replay(beside);
+  }
   const double textSize = fontSizeFor(r, camera_.heightPx()) * px;
   // the overlay of every polygon pair closer than a tenth of the view (so, as they approach), its
   // label a line of text out from the edge
@@ -98,14 +114,7 @@ void FramePainter::paint(const sim::world::World& world, const History& history,
   arrows_.draw(world, history, draw);
   // another run's bodies over ours, past the placer: the labels go where they would without them
   if (r.overlay) drawTraceOverlay(def_, *r.overlay, world, camera_, target);
-  if (r.labels)
-    for (size_t i = 0; i < world.bodies.size(); ++i) {
-      const sim::core::Body& b = world.bodies[i];
-      const std::string& label = def_.render.bodies[i].label;
-      // a half-plane has no middle to write on
-      const bool bounded = b.shape.kind == sim::core::ShapeKind::Polygon || b.shape.kind == sim::core::ShapeKind::Circle;
-      if (!label.empty() && bounded) draw.label(b.x, Vec2::Zero(), label, {Role::Label, static_cast<int>(i), 1.0});
-    }
+  if (r.labels) paintLabels(world, draw);
   if (r.time) {
     // the top-left corner, in from the edges by about half a line of text
     const double inset = 0.5 * textSize / px;
@@ -116,6 +125,74 @@ void FramePainter::paint(const sim::world::World& world, const History& history,
   draw.finish();
   dropped_.report(draw.dropped(), world.time);
   if (placed) *placed = draw.placed();
+}
+
+size_t FramePainter::contactsOnScreen(const DrawList& calls) const {
+  const Bounds view = camera_.view();
+  size_t n = 0;
+  for (const DrawList::Call& c : calls.calls())
+    if (c.kind == DrawList::Kind::Point && c.style.role == Role::ContactPoint) {
+      const Vec2& p = c.points[0];
+      n += p.x() >= view.min.x() && p.x() <= view.max.x() && p.y() >= view.min.y() && p.y() <= view.max.y();
+    }
+  return n;
+}
+
+bool FramePainter::labelFits(const sim::core::Body& b, const std::string& label) const {
+  // the label's box, centered on the body, in world units, at the frame's font size
+  const int size = fontSizeFor(def_.render, camera_.heightPx());
+  const double px = camera_.pixelSize();
+  const double halfWidth = 0.5 * (textWidth_ ? textWidth_(label) : estimatedWidth(size)(label)) * px;
+  const double halfHeight = 0.5 * lineHeightPx(size) * px;
+  const sim::core::Pose pose = b.pose();
+  for (const Vec2& corner : {Vec2(-halfWidth, -halfHeight), Vec2(halfWidth, -halfHeight), Vec2(halfWidth, halfHeight),
+                             Vec2(-halfWidth, halfHeight)}) {
+    const Vec2 at = b.x + corner;
+    if (b.shape.kind == sim::core::ShapeKind::Circle) {
+      if ((at - b.x).norm() > b.shape.radius) return false;
+      continue;
+    }
+    // inside a convex polygon: on the inner side of every edge, whichever way its vertices wind
+    const std::vector<Vec2>& v = b.shape.vertices;
+    const Vec2 local = pose.toBody(at);
+    double winding = 0.0;
+    for (size_t k = 0; k < v.size(); ++k) winding += v[k].x() * v[(k + 1) % v.size()].y() - v[(k + 1) % v.size()].x() * v[k].y();
+    for (size_t k = 0; k < v.size(); ++k) {
+      const Vec2 e = v[(k + 1) % v.size()] - v[k];
+      if (winding * (e.x() * (local.y() - v[k].y()) - e.y() * (local.x() - v[k].x())) < 0.0) return false;
+    }
+  }
+  return true;
+}
+
+void FramePainter::paintLabels(const sim::world::World& world, LabelPlacer& draw) const {
+  const render::scene::RenderDef& r = def_.render;
+  // labels: auto writes every label of a small scene; in a larger one only those that fit inside
+  // their body, and a label the scene did not name itself never moves far from its body (no leader)
+  const bool few = world.bodies.size() <= kFewBodies;
+  size_t unfit = 0;
+  for (size_t i = 0; i < world.bodies.size(); ++i) {
+    const sim::core::Body& b = world.bodies[i];
+    const render::scene::BodyLook& look = r.bodies[i];
+    // a half-plane has no middle to write on
+    const bool bounded = b.shape.kind == sim::core::ShapeKind::Polygon || b.shape.kind == sim::core::ShapeKind::Circle;
+    if (look.label.empty() || !bounded) continue;
+    const Pen pen{Role::Label, static_cast<int>(i), 1.0};
+    if (!r.labelsAuto) {
+      draw.label(b.x, Vec2::Zero(), look.label, pen);
+    } else if (few || labelFits(b, look.label)) {
+      if (look.named) draw.label(b.x, Vec2::Zero(), look.label, pen);
+      else draw.labelNearby(b.x, Vec2::Zero(), look.label, pen);
+    } else {
+      ++unfit;
+    }
+  }
+  if (unfit > 0 && !unfitTold_) {
+    unfitTold_ = true;
+    std::cerr << "rigidreel: warning: " << unfit << " of " << world.bodies.size()
+              << " body labels do not fit inside their bodies at this frame size and are not drawn "
+                 "(labels: true draws them all)\n";
+  }
 }
 
 void FramePainter::paintTimingText(double t, Canvas& draw) const {

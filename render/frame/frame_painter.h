@@ -51,6 +51,12 @@ class FramePainter {
   double impulseScale_, velocityScale_;  // m of arrow per N·s, per m/s
   // video timing and text: the slow-motion note and the caption, drawn last
   void paintTimingText(double t, Canvas& draw) const;
+  // the bodies' labels, as `labels:` says (auto: those that fit, or all of a small scene)
+  void paintLabels(const sim::world::World& world, LabelPlacer& draw) const;
+  bool labelFits(const sim::core::Body& body, const std::string& label) const;
+  // the contact points of `calls` inside the view
+  size_t contactsOnScreen(const DrawList& calls) const;
+  mutable bool unfitTold_ = false;        // labels that do not fit: said once per run
   std::vector<std::string> captionLines_;
   TextWidth textWidth_;                   // of the frame's texts, px (empty: estimated)
   mutable DroppedLabels dropped_;         // said once each per run

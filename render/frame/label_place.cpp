@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "render/draw/text.h"
+#include "render/jobs/interrupt.h"
 
 namespace render::frame {
 using namespace render::draw;
@@ -103,7 +104,52 @@ Vec2 rotated(const Vec2& v, double angle) {
   return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
 }
 
+// what covers more cells than this is listed apart (a half-plane, a long line), tested always
+constexpr long kManyCells = 64;
+
 }  // namespace
+
+LabelPlacer::Grid::Grid(double widthPx, double heightPx, double cellPx)
+    : cell_(cellPx),
+      columns_(std::max(1, static_cast<int>(std::ceil(std::min(widthPx, 1e5) / cellPx)))),
+      rows_(std::max(1, static_cast<int>(std::ceil(std::min(heightPx, 1e5) / cellPx)))),
+      cells_(static_cast<size_t>(columns_) * static_cast<size_t>(rows_)) {}
+
+bool LabelPlacer::Grid::cellsOf(const PixelBox& b, int& x0, int& y0, int& x1, int& y1) const {
+  // clamped to the edge cells as doubles first (a box off the frame lands on its edge; NaN nowhere)
+  if (!(b.left <= b.right && b.top <= b.bottom)) return false;
+  const auto at = [&](double v, int n) { return static_cast<int>(std::clamp(std::floor(v / cell_), 0.0, n - 1.0)); };
+  x0 = at(b.left, columns_), x1 = at(b.right, columns_), y0 = at(b.top, rows_), y1 = at(b.bottom, rows_);
+  return true;
+}
+
+void LabelPlacer::Grid::add(const PixelBox& box, size_t index) {
+  int x0, y0, x1, y1;
+  if (!cellsOf(box, x0, y0, x1, y1) || static_cast<long>(x1 - x0 + 1) * (y1 - y0 + 1) > kManyCells) {
+    everywhere_.push_back(index);
+    return;
+  }
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x) cells_[static_cast<size_t>(y) * columns_ + x].push_back(index);
+}
+
+const std::vector<size_t>& LabelPlacer::Grid::near(const PixelBox& box) const {
+  found_ = everywhere_;
+  int x0, y0, x1, y1;
+  if (cellsOf(box, x0, y0, x1, y1)) {
+    ++query_;
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x)
+        for (size_t i : cells_[static_cast<size_t>(y) * columns_ + x]) {
+          if (i >= stamp_.size()) stamp_.resize(2 * i + 16, 0);
+          if (stamp_[i] == query_) continue;
+          stamp_[i] = query_;
+          found_.push_back(i);
+        }
+  }
+  std::sort(found_.begin(), found_.end());
+  return found_;
+}
 
 LabelPlacer::LabelPlacer(Canvas& target, const Camera& camera, int fontPx, TextWidth width)
     : target_(target),
@@ -113,12 +159,21 @@ LabelPlacer::LabelPlacer(Canvas& target, const Camera& camera, int fontPx, TextW
         return static_cast<int>(std::ceil(approximateWidth(s, fontPx)));
       })),
       line_(lineHeightPx(fontPx)),
-      pad_(std::max(1.0, std::round(fontPx / 10.0))) {}
+      pad_(std::max(1.0, std::round(fontPx / 10.0))),
+      // cells two lines of text square: a label's box and its clearance cover a few
+      obstacleGrid_(camera.widthPx(), camera.heightPx(), std::max(16.0, 2.0 * line_)),
+      placedGrid_(obstacleGrid_),
+      anchorGrid_(obstacleGrid_) {}
 
 void LabelPlacer::addObstacle(Obstacle o) {
   // anything but a segment ends a polyline
   if (o.group < 0) lastSegment_.reset();
-  if (o.weight > 0.0) obstacles_.push_back(std::move(o));
+  if (!(o.weight > 0.0)) return;
+  // what lies wholly off the frame is under no label's box (every box lies in the frame)
+  const PixelBox frame{0, 0, static_cast<double>(camera_.widthPx()), static_cast<double>(camera_.heightPx())};
+  if (o.bounds.left <= o.bounds.right && !o.bounds.overlaps(frame)) return;
+  obstacleGrid_.add(o.bounds, obstacles_.size());
+  obstacles_.push_back(std::move(o));
 }
 
 void LabelPlacer::polygon(const std::vector<Vec2>& vertices, const Pen& pen) {
@@ -185,8 +240,15 @@ void LabelPlacer::text(const Vec2& at, const std::string& text, const Pen& pen) 
 void LabelPlacer::label(const Vec2& anchor, const Vec2& direction, const std::string& text, const Pen& pen) {
   // in pixels y points down
   const Vec2 d(direction.x(), -direction.y());
-  pending_.push_back({camera_.toPixel(anchor), d.norm() > 0.0 ? Vec2(d.normalized()) : Vec2::Zero(), text, pen, false,
+  const Vec2 at = camera_.toPixel(anchor);
+  anchorGrid_.add({at.x(), at.y(), at.x(), at.y()}, pending_.size());
+  pending_.push_back({at, d.norm() > 0.0 ? Vec2(d.normalized()) : Vec2::Zero(), text, pen, false,
                       static_cast<double>(width_(text))});
+}
+
+void LabelPlacer::labelNearby(const Vec2& anchor, const Vec2& direction, const std::string& text, const Pen& pen) {
+  label(anchor, direction, text, pen);
+  pending_.back().nearby = true;
 }
 
 PixelBox LabelPlacer::boxAt(const Vec2& center, const Pending& p) const {
@@ -200,15 +262,16 @@ double LabelPlacer::cost(const PixelBox& box, const Pending& p, size_t self) con
   // possible: inside the frame, clear of the texts placed and of the other labels' anchors
   if (box.left < 0.0 || box.top < 0.0 || box.right > camera_.widthPx() || box.bottom > camera_.heightPx()) return kNever;
   const PixelBox clear = box.grown(pad_);
-  for (const PlacedText& t : placed_)
-    if (clear.overlaps(t.box)) return kNever;
+  for (size_t k : placedGrid_.near(clear))
+    if (clear.overlaps(placed_[k].box)) return kNever;
   // a label beyond its anchor never covers it either (one on its anchor does, by design)
-  for (size_t i = 0; i < pending_.size(); ++i)
+  for (size_t i : anchorGrid_.near(clear))
     if (!pending_[i].fixed && (i != self || !p.direction.isZero()) && clear.contains(pending_[i].anchor)) return kNever;
-  // what it covers, each polyline once
+  // what it covers, each polyline once (in the order drawn, as the pieces of a polyline come)
   double covered = 0.0;
   int lastGroup = -1;
-  for (const Obstacle& o : obstacles_) {
+  for (size_t k : obstacleGrid_.near(box)) {
+    const Obstacle& o = obstacles_[k];
     if (o.group >= 0 && o.group == lastGroup) continue;
     if (!o.bounds.overlaps(box)) continue;
     // a label may lie on its own body. One written on what it names (a body's name, a separation)
@@ -261,6 +324,7 @@ void LabelPlacer::place(const Pending& p, size_t self) {
         dropped_.push_back(out);
         return;
       }
+    placedGrid_.add(out.box, placed_.size());
     placed_.push_back(out);
     return;
   }
@@ -290,8 +354,12 @@ void LabelPlacer::place(const Pending& p, size_t self) {
   // the cheapest: a candidate that moved further than the best cost so far cannot beat it
   double best = kNever;
   Vec2 at = preferred;
+  // a label kept near its anchor moves less than a leader line's distance
+  const double reach = p.nearby ? kLeaderFrom * line_ : kMaxMove * line_ + 2.0 * halfWidth;
   for (const Candidate& c : candidates) {
-    if (c.moved >= best || c.moved > kMaxMove * line_ + 2.0 * halfWidth) break;
+    // a frame of many bodies takes long: Ctrl-C ends it here (a flag read, no more)
+    render::jobs::checkInterrupted();
+    if (c.moved >= best || c.moved > reach) break;
     const double total = c.moved + cost(boxAt(c.center, p), p, self);
     if (total < best) best = total, at = c.center;
   }
@@ -301,6 +369,7 @@ void LabelPlacer::place(const Pending& p, size_t self) {
   }
   out.box = boxAt(at, p);
   out.leader = (at - preferred).norm() > kLeaderFrom * line_ && !out.box.contains(p.anchor);
+  placedGrid_.add(out.box, placed_.size());
   placed_.push_back(out);
 }
 

@@ -67,6 +67,9 @@ class LabelPlacer final : public Canvas {
   void arrow(const Vec2& tail, const Vec2& head, const Pen& pen) override;
   void text(const Vec2& at, const std::string& text, const Pen& pen) override;
   void label(const Vec2& anchor, const Vec2& direction, const std::string& text, const Pen& pen) override;
+  // a label that stays near its anchor, so that it never needs a leader line: at its preferred spot
+  // or moved less than a line, else dropped (a body's name in a frame of many bodies)
+  void labelNearby(const Vec2& anchor, const Vec2& direction, const std::string& text, const Pen& pen);
 
   // places every text and label and draws them into the target (leader lines, then texts as
   // Canvas::text at their places); call once, after the last shape
@@ -94,6 +97,28 @@ class LabelPlacer final : public Canvas {
     Pen pen;
     bool fixed;      // Canvas::text: stays where it was asked for (top-left for a caption)
     double width;    // px
+    bool nearby = false;  // labelNearby: moved less than a line or not at all
+  };
+  // the frame cut into square cells, each listing what lies over it (obstacles, placed texts, label
+  // anchors by index), so that a candidate box is tested against what is near it, not against all:
+  // placing stays linear in the labels and shapes. What covers too many cells is listed apart, and
+  // tested always
+  class Grid {
+   public:
+    Grid(double widthPx, double heightPx, double cellPx);
+    void add(const PixelBox& box, size_t index);
+    // every index over `box`, ascending, each once
+    const std::vector<size_t>& near(const PixelBox& box) const;
+
+   private:
+    bool cellsOf(const PixelBox& box, int& x0, int& y0, int& x1, int& y1) const;
+    double cell_;
+    int columns_, rows_;
+    std::vector<std::vector<size_t>> cells_;
+    std::vector<size_t> everywhere_;
+    mutable std::vector<size_t> found_;
+    mutable std::vector<unsigned> stamp_;  // by index: the query that found it last
+    mutable unsigned query_ = 0;
   };
   PixelBox boxAt(const Vec2& center, const Pending& p) const;
   double cost(const PixelBox& box, const Pending& p, size_t self) const;  // infinity: not possible
@@ -110,6 +135,7 @@ class LabelPlacer final : public Canvas {
   int groups_ = 0;
   std::vector<Pending> pending_;
   std::vector<PlacedText> placed_, dropped_;
+  Grid obstacleGrid_, placedGrid_, anchorGrid_;
 };
 
 // the dropped labels of a run, said once each on standard error (or to `sink`): a label whose

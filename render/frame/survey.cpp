@@ -8,6 +8,8 @@
 #include "render/frame/energy_panel.h"
 #include "render/frame/point_forces.h"
 #include "render/jobs/interrupt.h"
+#include "render/jobs/json_writer.h"
+#include "sim/yaml/scene_error.h"
 #include "render/scene/scene_style.h"
 #include "sim/scene/scene_build.h"
 #include "sim/world/diagnostics.h"
@@ -25,9 +27,14 @@ class Surveyor : public sim::world::StepObserver {
   void afterStep(const sim::world::World& world) override {
     // the survey runs the whole scene before the first frame: Ctrl-C must stop it too
     render::jobs::checkInterrupted();
-    for (const sim::core::Body& b : world.bodies) {
-      out_.bounds.add(bodyBounds(b));
+    for (size_t i = 0; i < world.bodies.size(); ++i) {
+      const sim::core::Body& b = world.bodies[i];
+      const Bounds box = bodyBounds(b);
+      out_.bounds.add(box);
       out_.maxSpeed = std::max(out_.maxSpeed, b.v.norm());
+      // which body stretches the automatic camera most: the one to name when the view is too large
+      const double reach = std::max(box.min.cwiseAbs().maxCoeff(), box.max.cwiseAbs().maxCoeff());
+      if (!(reach <= out_.farthest)) out_.farthest = reach, out_.farthestBody = static_cast<int>(i);
     }
     surveyOverlays(def_, world, out_);
   }
@@ -121,6 +128,24 @@ Camera cameraFor(const render::scene::Scene& def, const RunSurvey& survey, const
   const double px = fitted.pixelSize();
   const Vec2 shift(0.5 * (r.width - left) * px, -0.5 * (r.height - above) * px);
   return Camera(fitted.center() + shift, px * r.height, r.width, r.height);
+}
+
+void checkView(const render::scene::Scene& def, const RunSurvey& survey, const Camera& camera) {
+  const Bounds view = camera.view();
+  const double extent = std::max({view.size().maxCoeff(), view.min.cwiseAbs().maxCoeff(), view.max.cwiseAbs().maxCoeff()});
+  if (extent <= kMaxViewExtent && camera.pixelSize() > 0.0) return;
+  const bool fixed = !def.render.camera.automatic;
+  const int body = survey.farthestBody;
+  sim::core::SourceLoc at = def.render.camera.loc;
+  std::string what = "the fixed camera's view";
+  if (!fixed && body >= 0 && body < static_cast<int>(def.model.bodies.size())) {
+    at = def.model.bodies[body].loc;
+    what = "body '" + def.model.bodies[body].name + "' reaches " + render::jobs::formatNumber(survey.farthest) +
+           " m from the origin during the run, so the automatic camera's view";
+  }
+  throw sim::yaml::SceneError(def.file, at.line, at.column,
+                              what + " spans more than 1e150 m and its pixels are not finite numbers; keep the bodies "
+                              "within that (check gravity, speeds and positions) or give a fixed camera");
 }
 
 void shareScales(const std::vector<RunSurvey*>& surveys) {

@@ -15,6 +15,8 @@ using namespace render::scene;
 
 struct RunSurvey {
   Bounds bounds;                    // every body's shape at every step, m
+  int farthestBody = -1;            // the body that reached furthest from the origin (or not finite)
+  double farthest = 0.0;            // how far, m: the largest coordinate of its box
   double maxSpeed = 0.0;            // of any center of mass, m/s
   double maxImpulse = 0.0;          // of the largest event or impact, N·s
   std::vector<double> impactTimes;  // ascending, each once
@@ -48,6 +50,10 @@ double arrowScale(double given, double largest, const Camera& camera);
 // margin, above the caption's band when it has a caption and left of the energy panel's when it has one
 Camera cameraFor(const render::scene::Scene& def, const RunSurvey& survey);
 Camera cameraFor(const render::scene::Scene& def, const RunSurvey& survey, const Bounds& bounds);
+
+// a bad scene (sim::yaml::SceneError at the `camera` key, or at the body that stretched the automatic
+// camera so) when `camera`'s view is not finite or past render::scene::kMaxViewExtent
+void checkView(const render::scene::Scene& def, const RunSurvey& survey, const Camera& camera);
 
 // the times at which the world's collision response applied impulses so far, ascending, each once
 std::vector<double> impactTimes(const sim::world::World& world);

@@ -66,7 +66,14 @@ FramePainter3::FramePainter3(const render::scene3d::Scene& def, const Camera3& c
       velocityScale_(arrowScale(def.space.velocityScale, survey.maxSpeed, camera)),
       em_(render::scene::fontSizeFor(def.render, camera.heightPx())),
       panel_(def, overlay_, survey) {
-  for (const sim::scene3d::BodyDef& b : def.model.bodies) meshes_.push_back(meshOf(b.shape));
+  for (const sim::scene3d::BodyDef& b : def.model.bodies) {
+    const Mesh m = meshOf(b.shape, kLeastSegments);
+    shapeKeys_.push_back(m.name);
+    double radius = 0.0;
+    for (const Vec3& p : m.positions) radius = std::max(radius, p.norm());
+    if (b.shape.kind != sim::world3d::ShapeKind::Box) radius = b.shape.kind == sim::world3d::ShapeKind::Sphere ? b.shape.radius : b.shape.semiAxes.maxCoeff();
+    radii_.push_back(radius);
+  }
   // the caption is the same in every frame: wrapped once, to the frame less an inset on each side
   const std::string caption = render::frame::captionOf(def.render, def.model.description);
   const render::frame::CaptionLayout layout = render::frame::captionLayout(static_cast<int>(em_));
@@ -225,11 +232,22 @@ void FramePainter3::paintWorldAxes(Canvas& draw) const {
   }
 }
 
+const Mesh& FramePainter3::meshFor(size_t i, const Body& b) const {
+  // its radius on the frame at its depth (the largest level when it is at or behind the eye)
+  const Vec3 c = camera_.toCamera(b.x);
+  const double depth = c.z() - radii_[i];
+  const int segments = depth > camera_.nearDepth() ? segmentsFor(radii_[i] * camera_.pixelsPerMeter(depth)) : 48;
+  const std::pair<std::string, int> key(shapeKeys_[i], def_.model.bodies[i].shape.kind == sim::world3d::ShapeKind::Box ? 0 : segments);
+  auto found = meshes_.find(key);
+  if (found == meshes_.end()) found = meshes_.emplace(key, meshOf(def_.model.bodies[i].shape, segments)).first;
+  return found->second;
+}
+
 void FramePainter3::paint(const World& world, const History3& history, Canvas3& canvas) const {
   const render::scene::RenderDef& r = def_.render;
   for (size_t i = 0; i < world.bodies.size(); ++i) {
     const Body& b = world.bodies[i];
-    canvas.solid(meshes_[i], b.x, b.rotation(), {Role::Body, static_cast<int>(i), 1.0});
+    canvas.solid(meshFor(i, b), b.x, b.rotation(), {Role::Body, static_cast<int>(i), 1.0});
   }
   Canvas& draw = canvas.overlay();
   if (r.trails)

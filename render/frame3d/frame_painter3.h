@@ -6,6 +6,7 @@
 #pragma once
 
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -47,7 +48,12 @@ class FramePainter3 {
   const render::scene3d::Scene& def_;
   Camera3 camera_;
   render::draw::Camera overlay_;  // pixels, y up
-  std::vector<Mesh> meshes_;      // by body
+  // body i's mesh: one per shape and level of detail (mesh.h: segmentsFor its size on screen),
+  // shared by every body of that shape and size, so that memory does not grow with the bodies
+  const Mesh& meshFor(size_t body, const sim::world3d::Body& b) const;
+  std::vector<std::string> shapeKeys_;  // by body: its shape, as text
+  std::vector<double> radii_;           // by body: the radius of a ball around its shape, m
+  mutable std::map<std::pair<std::string, int>, Mesh> meshes_;
   double omegaScale_, momentumScale_, velocityScale_;  // m of arrow per rad/s, kg·m²/s, m/s
   double em_;                     // text size, px
   EnergyPanel3 panel_;

@@ -10,6 +10,7 @@
 
 #include "render/draw/roles.h"
 #include "sim/core/enum_names.h"
+#include "sim/core/force_defs.h"
 #include "sim/core/math.h"
 
 namespace render::scene {
@@ -33,12 +34,17 @@ inline constexpr double kMaxTitleCard = 60.0;
 // range is undefined behavior)
 inline constexpr double kMaxFrames = 1e7;
 
+// the largest view, m, a side and away from the origin: squared lengths of what it shows stay finite
+// in double (a view past it is a bad scene: hatching, pixels and GL's clipping all need them)
+inline constexpr double kMaxViewExtent = 1e150;
+
 // what the view shows: everything the run covers (auto), or a fixed window
 struct CameraDef {
   bool automatic = true;
   double margin = 0.08;          // auto: free space on each side, as a fraction of the fitted size
   Vec2 center = Vec2::Zero();    // fixed: world point at the middle of the frame, m
   double height = 0.0;           // fixed: world height the frame shows, m
+  sim::core::SourceLoc loc;      // where `camera:` is written; 0 when it is the default
 };
 
 // colors of what is not a body's own (the roles' keys, render/draw/roles.h); bodies without
@@ -63,6 +69,7 @@ struct ColorsDef {
 struct BodyLook {
   std::string color;
   std::string label;
+  bool named = false;  // the label is the scene's own `label:`, not the body's name
 };
 
 // a teaching vector drawn every frame: one entry of `arrows:`
@@ -152,6 +159,9 @@ struct RenderDef {
   ColorsDef colors;
   CameraDef camera;
   bool contacts = true;                // contact points, normals and impact impulses
+  // `contacts: auto` (the default): a frame with many contacts on screen shows their dots alone,
+  // without normals (render/frame/frame_painter.cpp); `contacts: true` always draws both
+  bool contactsAuto = true;
   double contactHold = 0.5;            // s a contact stays on screen after an impact, fading
   bool impulses = true;                // arrows where events apply their impulses (held as contacts)
   double impulseScale = 0.0;           // m per N·s; 0: the largest event impulse is 1/6 of the view
@@ -162,6 +172,9 @@ struct RenderDef {
   int strobe = 0;                      // snapshots and the poster: this many ghosted earlier poses
   bool springs = true;                 // springs as zigzags, world anchors as dots
   bool labels = true;                  // body labels
+  // `labels: auto` (the default): only labels that fit inside their body, or all of a scene of at
+  // most 20 bodies, and leader lines only for the scene's own `label:`s; `labels: true`: all, always
+  bool labelsAuto = true;
   bool time = true;                    // the time in a corner
   // video timing and text (section B of the lecture pack): the opening card, the caption, slow motion
   std::string title;                   // the title card's; empty: the scene's name with '_' as spaces

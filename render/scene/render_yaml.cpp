@@ -40,6 +40,7 @@ class RenderReader {
   }
 
   void camera(const YAML::Node& n, CameraDef& out) const {
+    out.loc = {n.Mark().line + 1, n.Mark().column + 1};
     if (n.IsScalar()) {
       if (n.Scalar() != "auto") r_.fail(n, "'camera' is 'auto' or {center: [x, y], height: h}, got '" + n.Scalar() + "'");
       out.automatic = true;
@@ -52,6 +53,9 @@ class RenderReader {
       out.automatic = false;
       out.center = r_.vec2(n["center"], "center");
       out.height = r_.positive(n["height"], "height");
+      if (!(out.height <= kMaxViewExtent) || !(out.center.cwiseAbs().maxCoeff() <= kMaxViewExtent))
+        r_.fail(n, "a fixed camera's center and height are at most 1e150 m (the frame's pixels would not be "
+                   "finite numbers); give a view of what the scene holds");
     }
     if (n["margin"]) {
       out.margin = r_.nonNegative(n["margin"], "margin");
@@ -100,6 +104,25 @@ std::string readColor(const YAML::Node& n, const Reader& reader, const std::stri
 
 namespace {
 
+// a switch that is `auto`, true or false: `auto` leaves `on` (and sets `automatic`), the others set it
+void readAuto(const YAML::Node& node, const Reader& reader, const std::string& key, bool& on, bool& automatic) {
+  if (!node[key]) return;
+  const YAML::Node n = node[key];
+  automatic = n.IsScalar() && n.Scalar() == "auto";
+  if (automatic) {
+    on = true;
+    return;
+  }
+  std::string word = n.IsScalar() ? n.Scalar() : "";
+  for (char& c : word) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (const char* spelling : {"true", "yes", "on", "false", "no", "off"})
+    if (word == spelling) {
+      on = reader.boolean(n, key);
+      return;
+    }
+  reader.fail(n, "expected auto, true or false for '" + key + "', got " + describe(n));
+}
+
 // the block's own keys, but for the overlays and panels read after it
 void readBlock(const YAML::Node& node, const Reader& reader, RenderDef& out) {
   reader.checkKeys(node, {"size", "fps", "background", "line_width", "font_size", "colors", "camera", "contacts",
@@ -114,7 +137,7 @@ void readBlock(const YAML::Node& node, const Reader& reader, RenderDef& out) {
   const RenderReader r(reader);
   readFrame(node, reader, out);
   if (node["camera"]) r.camera(node["camera"], out.camera);
-  reader.optional(node, "contacts", out.contacts, &Reader::boolean);
+  readAuto(node, reader, "contacts", out.contacts, out.contactsAuto);
   reader.optional(node, "contact_hold", out.contactHold, &Reader::nonNegative);
   reader.optional(node, "impulses", out.impulses, &Reader::boolean);
   reader.optional(node, "impulse_scale", out.impulseScale, &Reader::positive);
@@ -124,7 +147,7 @@ void readBlock(const YAML::Node& node, const Reader& reader, RenderDef& out) {
   reader.optional(node, "sat", out.sat, &Reader::boolean);
   if (node["strobe"]) out.strobe = reader.wholeNumber(node["strobe"], "strobe", 0, 100);
   reader.optional(node, "springs", out.springs, &Reader::boolean);
-  reader.optional(node, "labels", out.labels, &Reader::boolean);
+  readAuto(node, reader, "labels", out.labels, out.labelsAuto);
   reader.optional(node, "time", out.time, &Reader::boolean);
   readTiming(node, reader, out);
 }
@@ -189,6 +212,7 @@ std::vector<BodyLook> readLooks(const YAML::Node& bodies, const Reader& reader) 
     BodyLook look;
     if (n["color"]) look.color = readColor(n["color"], reader, "color");
     look.label = n["label"] ? reader.text(n["label"], "label") : n["name"].Scalar();
+    look.named = static_cast<bool>(n["label"]);
     looks.push_back(std::move(look));
   }
   return looks;

@@ -13,6 +13,7 @@ Scene readScene(const sim::yaml::SceneSource& source, const sim::yaml::OtherKeys
   Scene s;
   s.model = sim::yaml::readModel(source, keys);
   s.render = readRender(source, s.model);
+  s.file = source.file;
   return s;
 }
 

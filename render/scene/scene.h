@@ -11,6 +11,7 @@ namespace render::scene {
 struct Scene {
   sim::scene::SceneDef model;
   RenderDef render;
+  std::string file;  // the file it was read from, for messages
 };
 
 // the model and the look of the scene in `source`; `others` are keys of the file that other readers

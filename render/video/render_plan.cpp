@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <type_traits>
 
 #include "render/frame/energy_panel.h"
 #include "render/frame/caption.h"
@@ -59,6 +60,8 @@ RenderPlanOf<D> surveyed(std::vector<typename D::Scene> scenes, const std::optio
     if (fps) scene.render.fps = *fps;
     try {
       typename D::Survey survey = surveyRun(scene, until);
+      // a view past what double arithmetic can draw is a bad scene, said before any frame
+      if constexpr (std::is_same_v<D, Planar>) render::frame::checkView(scene, survey, cameraFor(scene, survey));
       plan.variants.push_back({std::move(scene), std::move(survey)});
     } catch (const typename D::Diverged& d) {
       throw VariantDivergedOf<D>(d, scene.model, DrawStage::Planning);

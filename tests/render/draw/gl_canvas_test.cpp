@@ -145,3 +145,38 @@ TEST_CASE("supersampled and multisampled contexts both give frames of the output
     CHECK(near(i, 32, 16, style.bodies[0].mixed({1, 1, 1, 1}, 0.35)));
   }
 }
+
+TEST_CASE_FIXTURE(Fixture, "opaque shapes are drawn in one batched call, however many; a static one adds its own few") {
+  const auto calls = [&](int bodies) {
+    canvas.begin(camera);
+    canvas.polygon({{-4, -4}, {4, -4}, {4, -3}, {-4, -3}}, {Role::StaticBody, 1, 1.0});
+    for (int i = 0; i < bodies; ++i) {
+      const double x = -4.0 + 8.0 * (i % 40) / 40.0, y = -2.0 + 6.0 * (i / 40) / 40.0;
+      canvas.polygon({{x, y}, {x + 0.1, y}, {x + 0.1, y + 0.1}, {x, y + 0.1}}, {Role::Body, 0, 1.0});
+      canvas.circle({x, y + 0.05}, 0.05, {Role::Body, 0, 1.0});
+      canvas.point({x, y}, {Role::ContactPoint, -1, 1.0});
+      canvas.arrow({x, y}, {x, y + 0.3}, {Role::ContactNormal, -1, 1.0});
+    }
+    (void)canvas.finish();
+    return canvas.drawCalls();
+  };
+  const int ten = calls(10), thousand = calls(1000);
+  CHECK(ten == thousand);
+  // the static box's fill (marking its pixels) and its hatching, the batch of its outline (the
+  // frame's static part, kept apart), then one batch of every opaque call after it
+  CHECK(thousand == 4);
+}
+
+TEST_CASE_FIXTURE(Fixture, "hatching is bounded by the frame: stripes a pixel apart at least, cut to the view") {
+  // 1e16 m from the origin, stripes half a metre apart are 1.4e16 stripes from it: past 2⁵³, where
+  // k + 1 == k and counting them one by one never ends; and a line width of 0.1 px asks for stripes
+  // half a pixel apart, which the frame cannot show
+  style.lineWidth = 0.1;
+  const Camera far{Vec2(1e16, 0.0), 50.0, 100, 100};
+  canvas.begin(far);
+  canvas.polygon({{1e16 - 40, -10}, {1e16 + 40, -10}, {1e16 + 40, 10}, {1e16 - 40, 10}}, {Role::StaticBody, 1, 1.0});
+  const Image i = canvas.finish();
+  // drawn, filled where the box is and nowhere else
+  CHECK(near(i, 50, 50, style.body(1).mixed({1, 1, 1, 1}, 0.6), 40));
+  CHECK(near(i, 50, 10, style.background, 0));
+}

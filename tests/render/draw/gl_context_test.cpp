@@ -75,6 +75,8 @@ Image multisampled(render::draw::GlContext& gl, render::draw::GlCanvas& canvas, 
   // an overlay draws at once, into whatever framebuffer is bound
   canvas.beginOverlay(camera);
   draw(canvas);
+  // the opaque shapes wait in the canvas's batch until drawn
+  canvas.flush();
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffers[1]);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, renderbuffers[2]);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffers[0]);

@@ -3,9 +3,13 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <map>
 
+#include "render/draw/gl_canvas.h"
 #include "render/frame/energy_panel.h"
 #include "render/frame/scene_run.h"
+#include "render/scene/scene_style.h"
+#include "sim/scene/scene_build.h"
 #include "sim/yaml/scene_yaml.h"
 #include "support/drawn_scene.h"
 
@@ -205,4 +209,117 @@ TEST_CASE("with an energy panel the automatic camera fits the bodies left of its
   render::scene::Scene plain = def;
   plain.render.overlays.energy = false;
   CHECK(render::frame::cameraFor(plain, survey).toPixel({0, 0}).x() == doctest::Approx(320.0));
+}
+
+namespace {
+
+// Box2D's pyramid (render/bench/stack_layouts.h): rows of 1 m boxes 1.125 m apart on a ground box,
+// `base` boxes in the bottom row, base·(base + 1)/2 in all, resting on each other, soft_step
+std::string pyramid(int base, const std::string& render = "") {
+  std::string yaml =
+      "name: pyramid\nduration: 0.5\nworld: {gravity: [0, -10], friction: 0.6}\n"
+      "sim: {collisions: soft_step, dt: 0.016666666666666667, max_bodies: 100000}\n" +
+      render + "bodies:\n  - {name: ground, shape: {box: [80, 1]}, position: [0, -0.5], static: true}\n";
+  for (int r = 0; r < base; ++r)
+    for (int j = 0; j < base - r; ++j)
+      yaml += "  - {name: b" + std::to_string(r) + "_" + std::to_string(j) + ", shape: {box: [1, 1]}, position: [" +
+              std::to_string(-7.0 + 0.5625 * r + 1.125 * j) + ", " + std::to_string(0.5 + r) + "]}\n";
+  return yaml;
+}
+
+struct PyramidFrame {
+  render::draw::DrawList calls;
+  std::vector<render::frame::PlacedText> placed;
+};
+
+PyramidFrame pyramidFrame(const std::string& yaml, double t) {
+  const render::scene::Scene def = drawn_scene::load(yaml);
+  const render::frame::RunSurvey survey = render::frame::surveyRun(def);
+  render::frame::SceneRun run(def, render::frame::cameraFor(def, survey), survey);
+  PyramidFrame f;
+  f.calls = run.drawListAt(t, 0, &f.placed);
+  return f;
+}
+
+}  // namespace
+
+TEST_CASE("the 210-box pyramid at the defaults: at most one label per body, no leader line, contacts as dots") {
+  const PyramidFrame f = pyramidFrame(pyramid(20), 0.5);
+  std::map<int, int> labels;
+  for (const render::frame::PlacedText& t : f.placed) {
+    CHECK_FALSE(t.leader);
+    if (t.pen.role == render::draw::Role::Label) ++labels[t.pen.body];
+  }
+  for (const auto& [body, count] : labels) CHECK(count <= 1);
+  size_t points = 0, normals = 0;
+  for (const render::draw::DrawList::Call& c : f.calls.calls()) {
+    // a leader line is a segment in the label's role
+    CHECK_FALSE((c.kind == render::draw::DrawList::Kind::Segment && c.style.role == render::draw::Role::Label));
+    points += c.kind == render::draw::DrawList::Kind::Point && c.style.role == render::draw::Role::ContactPoint;
+    normals += c.style.role == render::draw::Role::ContactNormal;
+  }
+  // hundreds of contact points on screen: their dots, without normals
+  CHECK(points >= 200);
+  CHECK(normals == 0);
+}
+
+TEST_CASE("labels: true and contacts: true keep every label and every normal, however many bodies") {
+  const PyramidFrame f = pyramidFrame(pyramid(20, "render: {labels: true, contacts: true}\n"), 0.5);
+  size_t labels = 0, normals = 0, points = 0;
+  for (const render::frame::PlacedText& t : f.placed) labels += t.pen.role == render::draw::Role::Label;
+  for (const render::draw::DrawList::Call& c : f.calls.calls()) {
+    normals += c.style.role == render::draw::Role::ContactNormal;
+    points += c.kind == render::draw::DrawList::Kind::Point && c.style.role == render::draw::Role::ContactPoint;
+  }
+  CHECK(normals == points);
+  CHECK(points >= 200);
+  // every label was tried: placed or dropped, none left out for not fitting
+  CHECK(labels > 0);
+}
+
+TEST_CASE("labels: auto in a larger scene writes a label only where it fits inside its body") {
+  // 25 bodies: big boxes with short names, and small ones that cannot hold theirs
+  std::string yaml = "name: fit\nduration: 0.1\nworld: {gravity: [0, 0]}\nsim: {collisions: none}\n"
+                     "render: {size: [640, 360], camera: {center: [0, 0], height: 30}}\nbodies:\n";
+  for (int i = 0; i < 5; ++i) yaml += "  - {name: B" + std::to_string(i) + ", shape: {box: [4, 4]}, position: [" + std::to_string(-20 + 9 * i) + ", 8]}\n";
+  for (int i = 0; i < 20; ++i)
+    yaml += "  - {name: small_box_" + std::to_string(i) + ", shape: {box: [0.5, 0.5]}, position: [" +
+            std::to_string(-20 + 2 * i) + ", -5]}\n";
+  const PyramidFrame f = pyramidFrame(yaml, 0.0);
+  std::vector<std::string> labels;
+  for (const render::frame::PlacedText& t : f.placed)
+    if (t.pen.role == render::draw::Role::Label) labels.push_back(t.text);
+  CHECK(labels == std::vector<std::string>{"B0", "B1", "B2", "B3", "B4"});
+  // a scene of at most 20 bodies keeps all its labels
+  std::string few = "name: few\nduration: 0.1\nworld: {gravity: [0, 0]}\nsim: {collisions: none}\n"
+                    "render: {size: [640, 360], camera: {center: [0, 0], height: 30}}\nbodies:\n";
+  for (int i = 0; i < 3; ++i)
+    few += "  - {name: small_box_" + std::to_string(i) + ", shape: {box: [0.5, 0.5]}, position: [" + std::to_string(-10 + 8 * i) + ", 0]}\n";
+  size_t shown = 0;
+  for (const render::frame::PlacedText& t : pyramidFrame(few, 0.0).placed) shown += t.pen.role == render::draw::Role::Label;
+  CHECK(shown == 3);
+}
+
+TEST_CASE("a frame's GL draw calls do not grow with the bodies: the same at 55 and at 210 boxes") {
+  const auto calls = [](int base) {
+    const render::scene::Scene def = drawn_scene::load(pyramid(base, "render: {size: [320, 180]}\n"));
+    const render::frame::RunSurvey survey = render::frame::surveyRun(def);
+    const render::draw::Camera camera = render::frame::cameraFor(def, survey);
+    render::draw::GlContext gl(320, 180);
+    render::draw::TextRenderer text;
+    const render::draw::Style style = render::scene::makeStyle(def, 180);
+    render::draw::GlCanvas canvas(gl, text, style);
+    FramePainter painter(def, camera, survey);
+    sim::world::World world = sim::scene::buildWorld(def.model);
+    render::frame::History history(world, painter.historyOptions());
+    world.advanceTo(0.5, &history);
+    canvas.begin(camera);
+    painter.paint(world, history, {}, canvas);
+    canvas.finish();
+    return canvas.drawCalls();
+  };
+  const int few = calls(10), many = calls(20);
+  CHECK(few == many);
+  // the ground (its fill, its hatching, its outline) and one batch of everything opaque
+  CHECK(many <= 6);
 }

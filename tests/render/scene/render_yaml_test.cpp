@@ -15,6 +15,15 @@ using render_block::expectError;
 using render_block::kBody;
 using render_block::renderOf;
 
+TEST_CASE("labels and contacts: auto (the default), or true and false as written") {
+  const render::scene::RenderDef a = renderOf("render: {labels: auto, contacts: auto}\n");
+  CHECK((a.labels && a.labelsAuto && a.contacts && a.contactsAuto));
+  const render::scene::RenderDef on = renderOf("render: {labels: true, contacts: yes}\n");
+  CHECK((on.labels && !on.labelsAuto && on.contacts && !on.contactsAuto));
+  const render::scene::RenderDef off = renderOf("render: {labels: false, contacts: off}\n");
+  CHECK((!off.labels && !off.labelsAuto && !off.contacts && !off.contactsAuto));
+}
+
 TEST_CASE("without a render block the documented defaults hold") {
   const render::scene::RenderDef r = renderOf("");
   CHECK(r.width == 1280);
@@ -28,8 +37,10 @@ TEST_CASE("without a render block the documented defaults hold") {
   CHECK(render::scene::lineWidthFor(renderOf("render: {line_width: 1.5}"), 1080) == 1.5);
   CHECK(r.camera.automatic);
   CHECK(r.contacts);
+  CHECK(r.contactsAuto);
   CHECK(r.contactHold == 0.5);
   CHECK(r.labels);
+  CHECK(r.labelsAuto);
   CHECK(r.time);
   CHECK_FALSE(r.velocities);
   CHECK_FALSE(r.trails);
@@ -151,6 +162,11 @@ TEST_CASE("bad render values name the line and what to write") {
   expectError("render:\n  camera: {margin: 0.7}\n", 4, "below 0.5");
   expectError("render:\n  strobe: -1\n", 4, "whole number from 0 to 100");
   expectError("render:\n  trails: maybe\n", 4, "true or false");
+  expectError("render:\n  labels: some\n", 4, "expected auto, true or false for 'labels'");
+  expectError("render:\n  contacts: [1]\n", 4, "expected auto, true or false for 'contacts'");
+  // a view whose pixels would not be finite numbers
+  expectError("render:\n  camera: {center: [0, 0], height: 1e308}\n", 4, "at most 1e150 m");
+  expectError("render:\n  camera: {center: [1e200, 0], height: 1}\n", 4, "at most 1e150 m");
   expectError("render:\n  contact_hold: -0.1\n", 4, "zero or a positive");
 }
 
