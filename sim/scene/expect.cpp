@@ -21,9 +21,10 @@ std::vector<double> pair(const Vec2& v) { return {v.x(), v.y()}; }
 
 }  // namespace
 
-std::vector<CheckResult> evaluate(const ExpectDef& e, const SceneDef& def, const World& world) {
+std::vector<CheckResult> evaluate(const ExpectDef& e, const SceneDef& def, const World& world,
+                                  const std::unordered_map<std::string, int>* indices) {
   std::vector<CheckResult> out;
-  const int i = e.body.empty() ? -1 : def.bodyIndex(e.body);
+  const int i = e.body.empty() ? -1 : !indices ? def.bodyIndex(e.body) : indices->count(e.body) ? indices->at(e.body) : -1;
   const std::string prefix = i < 0 ? "" : e.body + ".";
   if (i >= 0) {
     const Body& b = world.bodies[i];
@@ -55,9 +56,10 @@ std::vector<CheckResult> runExpects(const SceneDef& def, World& world, sim::worl
   for (const ExpectDef& e : def.expects) order.push_back(&e);
   std::stable_sort(order.begin(), order.end(), [](auto* a, auto* b) { return a->time < b->time; });
   std::vector<CheckResult> out;
+  const std::unordered_map<std::string, int> indices = def.bodyIndices();
   for (const ExpectDef* e : order) {
     world.advanceTo(e->time, observer);
-    for (CheckResult& r : evaluate(*e, def, world)) out.push_back(std::move(r));
+    for (CheckResult& r : evaluate(*e, def, world, &indices)) out.push_back(std::move(r));
   }
   return out;
 }
