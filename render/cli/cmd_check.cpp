@@ -7,6 +7,7 @@
 #include "render/cli/run_progress.h"
 #include "render/cli/scene_options.h"
 #include "render/cli/space3d.h"
+#include "render/jobs/interrupt.h"
 #include "render/jobs/json_writer.h"
 #include "sim/scene/expect.h"
 #include "sim/scene/scene_build.h"
@@ -78,14 +79,8 @@ void reportSwitch(const sim::world::World& w) {
     std::cout << "  switched: " << describeCollisionMethod(w) << '\n';
 }
 
-// one scene, one variant ("" for the base); returns false when an expect fails
-bool checkCase(const std::string& file, const std::string& variant) {
-  const sim::scene::SceneDef def = readSceneFile(file, variant).model();
-  const std::string label = file + (variant.empty() ? "" : " [" + variant + "]");
-  std::cout << label << ": " << describeModel(def) << '\n';
-  sim::world::World w = startWorld(def, file);
-  std::cout << "  collisions: " << describeCollisionMethod(w) << '\n';
-  RunProgress2 progress(label, def.duration);
+// the run and its expect entries; false when one fails
+bool runCase(const sim::scene::SceneDef& def, sim::world::World& w, RunProgress2& progress) {
   if (def.expects.empty()) {
     // still run it: a scene that diverges is not a good scene
     w.advanceTo(def.duration, progress.observer());
@@ -105,6 +100,23 @@ bool checkCase(const std::string& file, const std::string& variant) {
   return ok;
 }
 
+// one scene, one variant ("" for the base); returns false when an expect fails
+bool checkCase(const std::string& file, const std::string& variant) {
+  const sim::scene::SceneDef def = readSceneFile(file, variant).model();
+  const std::string label = file + (variant.empty() ? "" : " [" + variant + "]");
+  std::cout << label << ": " << describeModel(def) << '\n';
+  sim::world::World w = startWorld(def, file);
+  std::cout << "  collisions: " << describeCollisionMethod(w) << '\n';
+  RunProgress2 progress(label, def.duration);
+  try {
+    return runCase(def, w, progress);
+  } catch (const sim::world::Diverged& d) {
+    // named by the body's name, not its index
+    throw std::runtime_error("the simulation diverged at t = " + formatNumber(d.time) + " (body '" + def.bodies[d.body].name +
+                             "'); use a smaller dt or another integrator");
+  }
+}
+
 // what a 3D scene models: free bodies, their forces and events, the integrator and whether q is
 // normalized after each step
 std::string describeModel3(const sim::scene3d::SceneDef& d) {
@@ -116,14 +128,8 @@ std::string describeModel3(const sim::scene3d::SceneDef& d) {
   return o.str();
 }
 
-// one variant of a 3D scene ("" for the base); false when an expect fails
-bool checkCase3d(const std::string& file, const std::string& variant) {
-  const sim::scene3d::SceneDef def = readSceneFile3(file, variant).model();
-  const std::string label = file + (variant.empty() ? "" : " [" + variant + "]");
-  std::cout << label << ": " << describeModel3(def) << '\n';
-  std::cout << "  contacts: none (3D scenes model free rigid bodies: nothing collides, bodies pass through each other)\n";
-  sim::world3d::World w = sim::scene3d::buildWorld(def);
-  RunProgress3 progress(label, def.duration);
+// the run and its expect entries; false when one fails
+bool runCase3d(const sim::scene3d::SceneDef& def, sim::world3d::World& w, RunProgress3& progress) {
   if (def.expects.empty()) {
     // still run it: a scene that diverges is not a good scene
     w.advanceTo(def.duration, progress.observer());
@@ -134,6 +140,23 @@ bool checkCase3d(const std::string& file, const std::string& variant) {
   const std::vector<sim::core::CheckResult> results = sim::scene3d::runExpects(def, w, progress.observer());
   progress.finish();
   return report(results);
+}
+
+// one variant of a 3D scene ("" for the base); false when an expect fails
+bool checkCase3d(const std::string& file, const std::string& variant) {
+  const sim::scene3d::SceneDef def = readSceneFile3(file, variant).model();
+  const std::string label = file + (variant.empty() ? "" : " [" + variant + "]");
+  std::cout << label << ": " << describeModel3(def) << '\n';
+  std::cout << "  contacts: none (3D scenes model free rigid bodies: nothing collides, bodies pass through each other)\n";
+  sim::world3d::World w = sim::scene3d::buildWorld(def);
+  RunProgress3 progress(label, def.duration);
+  try {
+    return runCase3d(def, w, progress);
+  } catch (const sim::world3d::Diverged& d) {
+    // named by the body's name, not its index
+    throw std::runtime_error("the simulation diverged at t = " + formatNumber(d.time) + " (body '" + def.bodies[d.body].name +
+                             "'); use a smaller dt or another integrator");
+  }
 }
 
 int check(const std::vector<std::string>& files) {
@@ -160,6 +183,8 @@ int check(const std::vector<std::string>& files) {
       std::cerr << file << ": the simulation diverged at t = " << formatNumber(d.time) << " (body #" << d.body
                 << "); use a smaller dt or another integrator\n";
       if (code == kExitOk) code = kExitFailure;
+    } catch (const Interrupted&) {
+      throw;
     } catch (const std::runtime_error& e) {
       std::cerr << file << ": " << e.what() << '\n';
       if (code == kExitOk) code = kExitFailure;
@@ -182,7 +207,7 @@ void addCheckCommand(CLI::App& app, int& exitCode) {
   auto files = std::make_shared<std::vector<std::string>>();
   CLI::App* cmd = app.add_subcommand("check", "validate scenes and verify their expect entries");
   cmd->add_option("scenes", *files, "scene files (YAML)")->required();
-  cmd->callback([files, &exitCode] { exitCode = check(*files); });
+  cmd->callback([files, &exitCode] { exitCode = runInterruptible("check", [&] { return check(*files); }); });
 }
 
 }  // namespace render::cli

@@ -7,8 +7,8 @@
 #include "render/cli/commands.h"
 #include "render/cli/output.h"
 #include "render/cli/scene_options.h"
-#include "render/jobs/interrupt.h"
 #include "render/cli/space3d.h"
+#include "render/jobs/interrupt.h"
 #include "render/video/plan_writer.h"
 
 namespace render::cli {
@@ -74,7 +74,7 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--format", o->format, "mp4 (H.264, default), webm (VP9) or gif");
   cmd->add_flag("--frames", o->frames, "also write every frame as PNG into <scene>-frames/");
   cmd->add_flag("--quiet", o->quiet, "no progress bar and no summary");
-  cmd->callback([o, &exitCode] { exitCode = runInterruptible([&] { return render(*o); }); });
+  cmd->callback([o, &exitCode] { exitCode = runInterruptible("render " + o->scene, [&] { return render(*o); }); });
 }
 
 }  // namespace render::cli

@@ -6,10 +6,13 @@
 #include <memory>
 
 #include "render/cli/commands.h"
+#include "render/cli/output.h"
 #include "render/cli/run_progress.h"
 #include "render/cli/scene_options.h"
 #include "render/cli/space3d.h"
 #include "render/jobs/atomic_file.h"
+#include "render/jobs/csv_field.h"
+#include "render/jobs/interrupt.h"
 #include "render/jobs/json_writer.h"
 #include "sim/scene/scene_build.h"
 #include "sim/scene/step_limit.h"
@@ -37,7 +40,7 @@ class TraceWriter : public sim::world::StepObserver {
   void rows(const sim::world::World& w) {
     for (size_t i = 0; i < w.bodies.size(); ++i) {
       const sim::core::Body& b = w.bodies[i];
-      out_ << formatNumber(w.time) << ',' << def_.bodies[i].name << ',' << formatNumber(b.x.x()) << ','
+      out_ << formatNumber(w.time) << ',' << csvField(def_.bodies[i].name) << ',' << formatNumber(b.x.x()) << ','
            << formatNumber(b.x.y()) << ',' << formatNumber(b.angle) << ',' << formatNumber(b.v.x()) << ','
            << formatNumber(b.v.y()) << ',' << formatNumber(b.omega) << ','
            << formatNumber(sim::world::kineticEnergy(b).total()) << '\n';
@@ -154,6 +157,7 @@ int simulate(const SimulateOptions& o) {
   std::unique_ptr<AtomicFile> traceFile;
   std::unique_ptr<TraceWriter> trace;
   if (!o.trace.empty()) {
+    refuseInputAsOutput(o.trace, o.scene, "--trace");
     try {
       traceFile = std::make_unique<AtomicFile>(o.trace);
     } catch (const std::runtime_error& e) {
@@ -170,8 +174,19 @@ int simulate(const SimulateOptions& o) {
               << def.bodies[d.body].name << "' has a non-finite state; try a smaller step (--dt "
               << formatNumber(def.dt / 4) << ") or another integrator (--integrator rk4)\n";
     return kExitFailure;
+  } catch (const Interrupted&) {
+    throw;
   } catch (const std::runtime_error& e) {
     std::cerr << o.scene << ": " << e.what() << '\n';
+    return kExitFailure;
+  }
+  // a state that stayed finite can still make energies past a double's range (gravity 1e308)
+  const sim::world::Energy e = sim::world::energy(world);
+  const sim::core::Vec2 p = sim::world::linearMomentum(world);
+  if (!std::isfinite(e.total()) || !p.allFinite() || !std::isfinite(sim::world::angularMomentum(world))) {
+    std::cerr << o.scene << ": the simulation diverged: at t = " << formatNumber(world.time)
+              << " its energy or momentum is not a finite number (a mass, speed or gravity past a double's range); "
+                 "choose smaller values\n";
     return kExitFailure;
   }
   if (traceFile) traceFile->commit();
@@ -189,7 +204,7 @@ void addSimulateCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--until", options->until, "end time in seconds (default: the scene's duration)");
   cmd->add_flag("--json", options->json, "print one JSON object");
   cmd->add_option("--trace", options->trace, "write every step to this CSV file");
-  cmd->callback([options, &exitCode] { exitCode = simulate(*options); });
+  cmd->callback([options, &exitCode] { exitCode = runInterruptible("simulate " + options->scene, [&] { return simulate(*options); }); });
 }
 
 }  // namespace render::cli

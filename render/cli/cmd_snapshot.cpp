@@ -8,8 +8,9 @@
 #include "render/cli/commands.h"
 #include "render/cli/output.h"
 #include "render/cli/scene_options.h"
-#include "render/video/output_names.h"
 #include "render/cli/space3d.h"
+#include "render/jobs/interrupt.h"
+#include "render/video/output_names.h"
 #include "render/video/plan_writer.h"
 
 namespace render::cli {
@@ -93,7 +94,7 @@ void addSnapshotCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--strobe", o->strobe, "draw this many earlier poses, fading, behind the present one");
   cmd->add_option("-o,--output", o->output, "the output directory (default: out)");
   cmd->add_option("--size", o->size, "frame size WIDTHxHEIGHT in pixels, even (default: the scene's, 1280x720)");
-  cmd->callback([o, &exitCode] { exitCode = snapshot(*o); });
+  cmd->callback([o, &exitCode] { exitCode = runInterruptible("snapshot " + o->scene, [&] { return snapshot(*o); }); });
 }
 
 }  // namespace render::cli

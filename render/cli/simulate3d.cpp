@@ -1,15 +1,18 @@
 // `rigidreel simulate` of a 3D scene: the state at the end time as text or one JSON object (every
 // body's position, orientation [w, x, y, z], velocity, angular velocity and angular momentum, world
 // frame; the energies and momenta of the whole scene), and every step as a CSV trace.
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 #include <iostream>
 #include <memory>
 
 #include "render/cli/commands.h"
+#include "render/cli/output.h"
 #include "render/cli/run_progress.h"
 #include "render/cli/space3d.h"
 #include "render/jobs/atomic_file.h"
+#include "render/jobs/csv_field.h"
 #include "render/jobs/json_writer.h"
 #include "sim/core/step_limit.h"
 #include "sim/scene3d/scene_build.h"
@@ -32,7 +35,7 @@ class Trace3 : public StepObserver {
   void rows(const World& w) {
     for (size_t i = 0; i < w.bodies.size(); ++i) {
       const Body& b = w.bodies[i];
-      out_ << formatNumber(w.time) << ',' << def_.bodies[i].name;
+      out_ << formatNumber(w.time) << ',' << csvField(def_.bodies[i].name);
       for (double x : {b.x.x(), b.x.y(), b.x.z(), b.q.w(), b.q.x(), b.q.y(), b.q.z(), b.v.x(), b.v.y(), b.v.z(),
                        b.omega.x(), b.omega.y(), b.omega.z(), kineticEnergy(b).total()})
         out_ << ',' << formatNumber(x);
@@ -115,6 +118,7 @@ int simulate3d(const SceneOptions& o, std::optional<double> until, bool json, co
   std::unique_ptr<AtomicFile> traceFile;
   std::unique_ptr<Trace3> trace;
   if (!tracePath.empty()) {
+    refuseInputAsOutput(tracePath, o.scene, "--trace");
     try {
       traceFile = std::make_unique<AtomicFile>(tracePath);
     } catch (const std::runtime_error& e) {
@@ -128,6 +132,13 @@ int simulate3d(const SceneOptions& o, std::optional<double> until, bool json, co
     world.advanceTo(end, progress.observer());
   } catch (const Diverged& d) {
     std::cerr << divergedMessage(o.scene, def, d) << '\n';
+    return kExitFailure;
+  }
+  // a state that stayed finite can still make energies past a double's range
+  if (!std::isfinite(energy(world).total()) || !linearMomentum(world).allFinite() || !angularMomentum(world).allFinite()) {
+    std::cerr << o.scene << ": the simulation diverged: at t = " << formatNumber(world.time)
+              << " its energy or momentum is not a finite number (a mass, speed or gravity past a double's range); "
+                 "choose smaller values\n";
     return kExitFailure;
   }
   if (traceFile) traceFile->commit();

@@ -23,6 +23,10 @@ class History : public sim::world::StepObserver {
 
   struct Options {
     bool trails = false;
+    // m: a trail keeps a point only this far from the one it kept before (and always the latest),
+    // as drawTrails draws them: the same trail, in memory that grows with the path drawn, not with
+    // the steps (10 bodies over 10⁷ steps kept every point: 3.7 GB); 0 keeps every step's
+    double trailSpacing = 0.0;
     double hold = 0.5;                 // s an afterimage stays, fading
     bool eventImpulses = true;         // an arrow where each event applies its impulse
     bool impacts = true;               // each impact the collision response logs: point, normal, impulses
@@ -62,6 +66,7 @@ class History : public sim::world::StepObserver {
 
   Options options_;
   std::vector<std::vector<Vec2>> trails_;  // by body; empty for static bodies or without trails
+  std::vector<bool> tentative_;            // by body: the trail's last point is the latest, not one kept
   std::vector<std::vector<Vec2>> points_;  // by Options::points
   std::vector<Moment> moments_;
   long touching_ = -1;     // index in moments_ of the contacts still touching, -1 when none
