@@ -158,12 +158,12 @@ int simulate(const SimulateOptions& o) {
   std::unique_ptr<TraceWriter> trace;
   if (!o.trace.empty()) {
     refuseInputAsOutput(o.trace, o.scene, "--trace");
-    try {
-      traceFile = std::make_unique<AtomicFile>(o.trace);
-    } catch (const std::runtime_error& e) {
-      throw UsageError(std::string("--trace: ") + e.what());
-    }
-    trace = std::make_unique<TraceWriter>(traceFile->stream(), def);
+    if (!namesStandardOutput(o.trace)) try {
+        traceFile = std::make_unique<AtomicFile>(o.trace);
+      } catch (const std::runtime_error& e) {
+        throw UsageError(std::string("--trace: ") + e.what());
+      }
+    trace = std::make_unique<TraceWriter>(traceFile ? traceFile->stream() : std::cout, def);
     trace->rows(world);
   }
   try {

@@ -40,6 +40,10 @@ render::jobs::AtomicFile openOutput(const std::string& path, const std::string& 
   }
 }
 
+bool namesStandardOutput(const std::string& path) {
+  return path == "/dev/stdout" || path == "/dev/fd/1" || path == "/proc/self/fd/1";
+}
+
 void refuseInputAsOutput(const std::string& output, const std::string& input, const std::string& option) {
   std::error_code error;
   if (std::filesystem::equivalent(output, input, error))

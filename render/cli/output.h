@@ -18,6 +18,10 @@ void checkFps(double fps, const std::string& option = "--fps");
 // fails at once: throws UsageError naming the option
 render::jobs::AtomicFile openOutput(const std::string& path, const std::string& option = "-o");
 
+// /dev/stdout (or /dev/fd/1, /proc/self/fd/1): written to standard output itself, in order with
+// what else is printed there (opened again, a regular file behind it would be written from its start)
+bool namesStandardOutput(const std::string& path);
+
 // an output file that is the run's input (the scene named as --trace) would be destroyed by the
 // run: throws UsageError naming the option
 void refuseInputAsOutput(const std::string& output, const std::string& input, const std::string& option);

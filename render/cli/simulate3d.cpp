@@ -119,12 +119,12 @@ int simulate3d(const SceneOptions& o, std::optional<double> until, bool json, co
   std::unique_ptr<Trace3> trace;
   if (!tracePath.empty()) {
     refuseInputAsOutput(tracePath, o.scene, "--trace");
-    try {
-      traceFile = std::make_unique<AtomicFile>(tracePath);
-    } catch (const std::runtime_error& e) {
-      throw UsageError(std::string("--trace: ") + e.what());
-    }
-    trace = std::make_unique<Trace3>(traceFile->stream(), def);
+    if (!namesStandardOutput(tracePath)) try {
+        traceFile = std::make_unique<AtomicFile>(tracePath);
+      } catch (const std::runtime_error& e) {
+        throw UsageError(std::string("--trace: ") + e.what());
+      }
+    trace = std::make_unique<Trace3>(traceFile ? traceFile->stream() : std::cout, def);
     trace->rows(world);
   }
   try {

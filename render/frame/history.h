@@ -23,10 +23,6 @@ class History : public sim::world::StepObserver {
 
   struct Options {
     bool trails = false;
-    // m: a trail keeps a point only this far from the one it kept before (and always the latest),
-    // as drawTrails draws them: the same trail, in memory that grows with the path drawn, not with
-    // the steps (10 bodies over 10⁷ steps kept every point: 3.7 GB); 0 keeps every step's
-    double trailSpacing = 0.0;
     double hold = 0.5;                 // s an afterimage stays, fading
     bool eventImpulses = true;         // an arrow where each event applies its impulse
     bool impacts = true;               // each impact the collision response logs: point, normal, impulses
@@ -35,6 +31,10 @@ class History : public sim::world::StepObserver {
     ContactDescriber contacts;         // the contacts touching now (empty: none)
     std::vector<std::pair<int, Vec2>> points = {};  // body points (body coordinates) whose paths to keep
     std::optional<ImpactLabels> labels = std::nullopt;  // impact_values: text on impact and event afterimages
+    // m: a trail keeps a point only this far from the one it kept before (and always the latest),
+    // as drawTrails draws them: the same trail, in memory that grows with the path drawn, not with
+    // the steps (10 bodies over 10⁷ steps kept every point: 3.7 GB); 0 keeps every step's
+    double trailSpacing = 0.0;
   };
 
   // starts with the world's present state (its contacts and positions at the start)

@@ -15,15 +15,24 @@ namespace render::jobs {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+// /dev/stdout is a link to /proc/self/fd/1, which links to whatever standard output is, a regular
+// file too: what is named there is a stream to write to, not a file to replace
+bool streamName(const std::string& path) { return path.starts_with("/dev/") || path.starts_with("/proc/"); }
+
+}  // namespace
+
 std::string finalTarget(const std::string& path) {
   std::error_code error;
-  if (!fs::is_symlink(fs::symlink_status(path, error))) return path;
+  if (streamName(path) || !fs::is_symlink(fs::symlink_status(path, error))) return path;
   // a dangling link's target does not exist: weakly_canonical resolves what does
   const fs::path target = fs::weakly_canonical(path, error);
   return error ? path : target.string();
 }
 
 bool writtenThrough(const std::string& path) {
+  if (streamName(path)) return true;
   std::error_code error;
   const fs::file_status status = fs::status(path, error);
   return fs::exists(status) && !fs::is_regular_file(status);
