@@ -1,14 +1,17 @@
 // `rigidreel check`: load and validate scenes, say what model each uses, and compare every
 // variant's `expect` entries with the simulation.
+#include <functional>
 #include <iostream>
 #include <sstream>
 
 #include "render/cli/commands.h"
+#include "render/cli/lecture_files.h"
 #include "render/cli/run_progress.h"
 #include "render/cli/scene_options.h"
 #include "render/cli/space3d.h"
 #include "render/jobs/interrupt.h"
 #include "render/jobs/json_writer.h"
+#include "render/video/render_plan.h"
 #include "sim/scene/expect.h"
 #include "sim/scene/scene_build.h"
 #include "sim/scene3d/expect.h"
@@ -68,9 +71,14 @@ bool report(const std::vector<sim::core::CheckResult>& results) {
   return ok;
 }
 
-// say where the event method found impacts piling up and made the contact resting
-void reportResting(const sim::scene::SceneDef& def, const sim::world::World& w) {
-  for (const sim::world::RestingRecord& r : w.resting) std::cout << "  resting: " << describeResting(def, r) << '\n';
+// say where the event method found impacts piling up and made the contact resting: once per pair
+// (its first and last time, how many), or every record with `verbose`
+void reportResting(const sim::scene::SceneDef& def, const sim::world::World& w, bool verbose) {
+  if (verbose) {
+    for (const sim::world::RestingRecord& r : w.resting) std::cout << "  resting: " << describeResting(def, r) << '\n';
+    return;
+  }
+  for (const RestingSpan& s : mergeResting(w.resting)) std::cout << "  resting: " << describeResting(def, s) << '\n';
 }
 
 // say when `auto` went from the event method to the stack solver during the run
@@ -79,42 +87,46 @@ void reportSwitch(const sim::world::World& w) {
     std::cout << "  switched: " << describeCollisionMethod(w) << '\n';
 }
 
-// the run and its expect entries; false when one fails
-bool runCase(const sim::scene::SceneDef& def, sim::world::World& w, RunProgress2& progress) {
-  if (def.expects.empty()) {
-    // still run it: a scene that diverges is not a good scene
-    w.advanceTo(def.duration, progress.observer());
-    progress.finish();
-    std::cout << "  ran to t = " << formatNumber(def.duration) << " (no expect entries)";
-    if (!w.impacts.empty()) std::cout << ", " << w.impacts.size() << " impulses";
-    std::cout << '\n';
-    reportResting(def, w);
-    reportSwitch(w);
-    return true;
-  }
-  const std::vector<sim::core::CheckResult> results = sim::scene::runExpects(def, w, progress.observer());
-  progress.finish();
-  const bool ok = report(results);
-  reportResting(def, w);
-  reportSwitch(w);
-  return ok;
+// why a run stopped before its duration, as `simulate` says it
+std::string runFailure(const sim::scene::SceneDef& def, const sim::world::Diverged& d) {
+  return "the simulation diverged at t = " + formatNumber(d.time) + ": body '" + def.bodies[d.body].name +
+         "' has a non-finite state; try a smaller step (--dt " + formatNumber(def.dt / 4) +
+         ") or another integrator (--integrator rk4)";
 }
 
-// one scene, one variant ("" for the base); returns false when an expect fails
-bool checkCase(const std::string& file, const std::string& variant) {
+// one scene, one variant ("" for the base), run to its duration as `simulate` runs it; returns
+// false when an expect fails or the run stops before its end
+bool checkCase(const std::string& file, const std::string& variant, bool verbose) {
   const sim::scene::SceneDef def = readSceneFile(file, variant).model();
   const std::string label = file + (variant.empty() ? "" : " [" + variant + "]");
   std::cout << label << ": " << describeModel(def) << '\n';
   sim::world::World w = startWorld(def, file);
   std::cout << "  collisions: " << describeCollisionMethod(w) << '\n';
   RunProgress2 progress(label, def.duration);
+  std::vector<sim::core::CheckResult> results;
+  std::string failure;
   try {
-    return runCase(def, w, progress);
+    results = sim::scene::runExpects(def, w, progress.observer());
+    // on past the last entry to the duration: a scene that passes check must simulate and render
+    w.advanceTo(def.duration, progress.observer());
   } catch (const sim::world::Diverged& d) {
-    // named by the body's name, not its index
-    throw std::runtime_error("the simulation diverged at t = " + formatNumber(d.time) + " (body '" + def.bodies[d.body].name +
-                             "'); use a smaller dt or another integrator");
+    failure = runFailure(def, d);
+  } catch (const sim::world::ImpactsPileUp& e) {
+    failure = e.what();
   }
+  progress.finish();
+  const bool ok = report(results);
+  if (failure.empty()) {
+    std::cout << "  ran to t = " << formatNumber(def.duration) << (def.expects.empty() ? " (no expect entries)" : "");
+    if (!w.impacts.empty()) std::cout << ", " << w.impacts.size() << " impulses";
+    std::cout << '\n';
+  } else {
+    std::cout << "  FAIL  " << failure << '\n';
+    std::cerr << label << ": " << failure << '\n';
+  }
+  reportResting(def, w, verbose);
+  reportSwitch(w);
+  return ok && failure.empty();
 }
 
 // what a 3D scene models: free bodies, their forces and events, the integrator and whether q is
@@ -128,21 +140,8 @@ std::string describeModel3(const sim::scene3d::SceneDef& d) {
   return o.str();
 }
 
-// the run and its expect entries; false when one fails
-bool runCase3d(const sim::scene3d::SceneDef& def, sim::world3d::World& w, RunProgress3& progress) {
-  if (def.expects.empty()) {
-    // still run it: a scene that diverges is not a good scene
-    w.advanceTo(def.duration, progress.observer());
-    progress.finish();
-    std::cout << "  ran to t = " << formatNumber(def.duration) << " (no expect entries)\n";
-    return true;
-  }
-  const std::vector<sim::core::CheckResult> results = sim::scene3d::runExpects(def, w, progress.observer());
-  progress.finish();
-  return report(results);
-}
-
-// one variant of a 3D scene ("" for the base); false when an expect fails
+// one variant of a 3D scene ("" for the base), run to its duration; false when an expect fails or
+// the run diverges before its end
 bool checkCase3d(const std::string& file, const std::string& variant) {
   const sim::scene3d::SceneDef def = readSceneFile3(file, variant).model();
   const std::string label = file + (variant.empty() ? "" : " [" + variant + "]");
@@ -150,28 +149,71 @@ bool checkCase3d(const std::string& file, const std::string& variant) {
   std::cout << "  contacts: none (3D scenes model free rigid bodies: nothing collides, bodies pass through each other)\n";
   sim::world3d::World w = sim::scene3d::buildWorld(def);
   RunProgress3 progress(label, def.duration);
+  std::vector<sim::core::CheckResult> results;
+  std::string failure;
   try {
-    return runCase3d(def, w, progress);
+    results = sim::scene3d::runExpects(def, w, progress.observer());
+    w.advanceTo(def.duration, progress.observer());
   } catch (const sim::world3d::Diverged& d) {
-    // named by the body's name, not its index
-    throw std::runtime_error("the simulation diverged at t = " + formatNumber(d.time) + " (body '" + def.bodies[d.body].name +
-                             "'); use a smaller dt or another integrator");
+    failure = divergedMessage(file, def, d);
+  }
+  progress.finish();
+  const bool ok = report(results);
+  if (failure.empty()) {
+    std::cout << "  ran to t = " << formatNumber(def.duration) << (def.expects.empty() ? " (no expect entries)" : "") << '\n';
+  } else {
+    std::cout << "  FAIL  " << failure << '\n';
+    std::cerr << failure << '\n';
+  }
+  return ok && failure.empty();
+}
+
+// `--render`: every output the lecture pack makes of the scene planned as `lecture` plans it (each
+// variant surveyed, its video's frames counted and named, its poster, the poll panels), nothing
+// drawn; false when a variant diverges on the way. Throws sim::yaml::SceneError, UsageError
+template <class Plan, class Diverged>
+bool planned(const std::string& file, const std::function<Plan()>& plan) {
+  try {
+    const Plan p = plan();
+    long frames = 0;
+    for (const auto& v : p.videos) frames += v.frameCount;
+    std::cout << "  render: " << plural(p.videos.size(), "video") << " (" << frames << " frames), "
+              << plural(p.stills ? p.stills->shots.size() : 0, "panel sheet") << " planned\n";
+    return true;
+  } catch (const Diverged& d) {
+    std::cout << "  FAIL  render: the simulation diverged at t = " << formatNumber(d.time) << " while planning\n";
+    std::cerr << file << ": the simulation diverged at t = " << formatNumber(d.time) << " while planning its outputs\n";
+    return false;
   }
 }
 
-int check(const std::vector<std::string>& files) {
+bool planRender(const std::string& file) {
+  const render::video::LectureRequest request{.root = "out/lecture", .file = file, .size = {}, .fps = {}};
+  if (isSceneFile3d(file))
+    return planned<render::video::RenderPlan3, render::video::VariantDiverged3>(
+        file, [&] { return render::video::planLecture3(lectureLoader3(file), request); });
+  return planned<render::video::RenderPlan, render::video::VariantDiverged>(
+      file, [&] { return render::video::planLecture(lectureLoader(file), request); });
+}
+
+int check(const std::vector<std::string>& files, bool verbose, bool render) {
   int code = kExitOk;
   for (const std::string& file : files) {
     try {
+      bool ok = true;
       if (isSceneFile3d(file)) {
-        if (!check3d(file) && code == kExitOk) code = kExitFailure;
-        continue;
+        ok = check3d(file);
+      } else {
+        const sim::scene::SceneDef base = readSceneFile(file).model();
+        std::vector<std::string> cases = base.variantNames;
+        if (cases.empty()) cases.push_back("");
+        for (const std::string& v : cases) ok = checkCase(file, v, verbose) && ok;
       }
-      const sim::scene::SceneDef base = readSceneFile(file).model();
-      std::vector<std::string> cases = base.variantNames;
-      if (cases.empty()) cases.push_back("");
-      for (const std::string& v : cases)
-        if (!checkCase(file, v) && code == kExitOk) code = kExitFailure;
+      if (render) ok = planRender(file) && ok;
+      if (!ok && code == kExitOk) code = kExitFailure;
+    } catch (const UsageError& e) {
+      std::cerr << file << ": " << e.what() << '\n';
+      code = kExitBadInput;
     } catch (const sim::yaml::SceneError& e) {
       std::cerr << e.what() << '\n';
       code = kExitBadInput;
@@ -205,9 +247,13 @@ bool check3d(const std::string& file) {
 
 void addCheckCommand(CLI::App& app, int& exitCode) {
   auto files = std::make_shared<std::vector<std::string>>();
-  CLI::App* cmd = app.add_subcommand("check", "validate scenes and verify their expect entries");
+  auto verbose = std::make_shared<bool>(false);
+  auto render = std::make_shared<bool>(false);
+  CLI::App* cmd = app.add_subcommand("check", "validate scenes, run every variant to its duration and verify its expect entries");
   cmd->add_option("scenes", *files, "scene files (YAML)")->required();
-  cmd->callback([files, &exitCode] { exitCode = runInterruptible("check", [&] { return check(*files); }); });
+  cmd->add_flag("-v,--verbose", *verbose, "every resting and staying-in-contact record, not one line per pair");
+  cmd->add_flag("--render", *render, "also plan every output the scene asks for (videos, posters, panels), drawing nothing");
+  cmd->callback([files, verbose, render, &exitCode] { exitCode = runInterruptible("check", [&] { return check(*files, *verbose, *render); }); });
 }
 
 }  // namespace render::cli

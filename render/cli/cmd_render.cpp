@@ -26,6 +26,7 @@ struct RenderCommand : SceneOptions {
   std::string format = "mp4";
   bool frames = false;
   bool quiet = false;
+  std::string trace;
 };
 
 // the plan's request, each value checked (UsageError)
@@ -44,14 +45,16 @@ VideoRequest request(const RenderCommand& o) {
 int render(const RenderCommand& o) {
   const VideoRequest r = request(o);
   if (isSceneFile3d(o.scene)) try {
-      writePlan3(planVideos3(o.variantLoader3(), r), o.quiet, [](const std::string&) {});
+      const RenderPlan3 plan = planVideos3(o.variantLoader3(), r);
+      traced<TraceWriter3>(o.trace, plan, [&](TraceWriter3* trace) { writePlan3(plan, o.quiet, [](const std::string&) {}, trace); });
       return kExitOk;
     } catch (const VariantDiverged3& d) {
       std::cerr << divergedMessage(o.scene, d.model, d) << '\n';
       return kExitFailure;
     }
   try {
-    writePlan(planVideos(o.variantLoader(), r), o.quiet, [](const std::string&) {});
+    const RenderPlan plan = planVideos(o.variantLoader(), r);
+    traced<TraceWriter>(o.trace, plan, [&](TraceWriter* trace) { writePlan(plan, o.quiet, [](const std::string&) {}, trace); });
   } catch (const VariantDiverged& d) {
     std::cerr << videoDiverged(o.scene, d);
     return kExitFailure;
@@ -74,6 +77,7 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--format", o->format, "mp4 (H.264, default), webm (VP9) or gif");
   cmd->add_flag("--frames", o->frames, "also write every frame as PNG into <scene>-frames/");
   cmd->add_flag("--quiet", o->quiet, "no progress bar and no summary");
+  cmd->add_option("--trace", o->trace, "also write every step of the video's run to this CSV file (as simulate --trace)");
   cmd->callback([o, &exitCode] { exitCode = runInterruptible("render " + o->scene, [&] { return render(*o); }); });
 }
 

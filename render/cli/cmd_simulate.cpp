@@ -11,9 +11,9 @@
 #include "render/cli/scene_options.h"
 #include "render/cli/space3d.h"
 #include "render/jobs/atomic_file.h"
-#include "render/jobs/csv_field.h"
 #include "render/jobs/interrupt.h"
 #include "render/jobs/json_writer.h"
+#include "render/video/trace_writer.h"
 #include "sim/scene/scene_build.h"
 #include "sim/scene/step_limit.h"
 #include "sim/world/diagnostics.h"
@@ -26,33 +26,11 @@ namespace {
 struct SimulateOptions : SceneOptions {
   std::optional<double> until;
   bool json = false;
+  bool verbose = false;
   std::string trace;
 };
 
-// one CSV row per body per step, and again after each event
-class TraceWriter : public sim::world::StepObserver {
- public:
-  TraceWriter(std::ostream& out, const sim::scene::SceneDef& def) : out_(out), def_(def) {
-    out_ << "t,body,x,y,angle,vx,vy,omega,kinetic_energy\n";
-  }
-  void afterStep(const sim::world::World& w) override { rows(w); }
-  void afterEvent(const sim::world::World& w, const sim::world::ImpulseEvent&) override { rows(w); }
-  void rows(const sim::world::World& w) {
-    for (size_t i = 0; i < w.bodies.size(); ++i) {
-      const sim::core::Body& b = w.bodies[i];
-      out_ << formatNumber(w.time) << ',' << csvField(def_.bodies[i].name) << ',' << formatNumber(b.x.x()) << ','
-           << formatNumber(b.x.y()) << ',' << formatNumber(b.angle) << ',' << formatNumber(b.v.x()) << ','
-           << formatNumber(b.v.y()) << ',' << formatNumber(b.omega) << ','
-           << formatNumber(sim::world::kineticEnergy(b).total()) << '\n';
-    }
-  }
-
- private:
-  std::ostream& out_;
-  const sim::scene::SceneDef& def_;
-};
-
-void printJson(const sim::scene::SceneDef& def, const sim::world::World& w) {
+void printJson(const sim::scene::SceneDef& def, const sim::world::World& w, bool verbose) {
   JsonWriter j(std::cout);
   j.beginObject();
   j.field("scene", def.name);
@@ -112,16 +90,29 @@ void printJson(const sim::scene::SceneDef& def, const sim::world::World& w) {
     j.endArray().endObject();
   }
   j.endArray();
-  // contacts the event method turned into resting contact (impacts piling up in finite time)
+  // contacts the event method turned into resting contact (impacts piling up in finite time): one
+  // entry per pair and kind, from its first record (t) to its last, or every record with --verbose
   j.key("resting").beginArray();
-  for (const sim::world::RestingRecord& r : w.resting)
-    j.beginObject().field("t", r.t).field("a", name(r.a)).field("b", name(r.b)).field("moving", r.moving).endObject();
+  std::vector<RestingSpan> spans;
+  if (verbose)
+    for (const sim::world::RestingRecord& r : w.resting) spans.push_back({r, r.t, 1});
+  else
+    spans = mergeResting(w.resting);
+  for (const RestingSpan& s : spans)
+    j.beginObject()
+        .field("t", s.first.t)
+        .field("a", name(s.first.a))
+        .field("b", name(s.first.b))
+        .field("moving", s.first.moving)
+        .field("last", s.last)
+        .field("count", s.count)
+        .endObject();
   j.endArray();
   j.endObject();
   std::cout << '\n';
 }
 
-void printText(const sim::scene::SceneDef& def, const sim::world::World& w) {
+void printText(const sim::scene::SceneDef& def, const sim::world::World& w, bool verbose) {
   std::cout << def.name << (def.variant.empty() ? "" : " [" + def.variant + "]") << ": t = " << formatNumber(w.time)
             << ", " << sim::core::integratorName(w.integrator) << ", dt = " << formatNumber(w.dt) << ", " << w.steps
             << " steps\n";
@@ -141,7 +132,10 @@ void printText(const sim::scene::SceneDef& def, const sim::world::World& w) {
             << e.total() << "\nmomentum: (" << p.x() << ", " << p.y() << "), angular momentum about the origin: "
             << sim::world::angularMomentum(w) << '\n';
   std::cout << "collisions: " << describeCollisionMethod(w) << "; " << w.impacts.size() << " impulses applied";
-  for (const sim::world::RestingRecord& r : w.resting) std::cout << "; " << describeResting(def, r);
+  if (verbose)
+    for (const sim::world::RestingRecord& r : w.resting) std::cout << "; " << describeResting(def, r);
+  else
+    for (const RestingSpan& s : mergeResting(w.resting)) std::cout << "; " << describeResting(def, s);
   std::cout << '\n';
 }
 
@@ -155,15 +149,11 @@ int simulate(const SimulateOptions& o) {
   sim::world::World world = startWorld(def, o.scene);
 
   std::unique_ptr<AtomicFile> traceFile;
-  std::unique_ptr<TraceWriter> trace;
+  std::unique_ptr<render::video::TraceWriter> trace;
   if (!o.trace.empty()) {
     refuseInputAsOutput(o.trace, o.scene, "--trace");
-    if (!namesStandardOutput(o.trace)) try {
-        traceFile = std::make_unique<AtomicFile>(o.trace);
-      } catch (const std::runtime_error& e) {
-        throw UsageError(std::string("--trace: ") + e.what());
-      }
-    trace = std::make_unique<TraceWriter>(traceFile ? traceFile->stream() : std::cout, def);
+    traceFile = openTrace(o.trace);
+    trace = std::make_unique<render::video::TraceWriter>(traceStream(traceFile), def);
     trace->rows(world);
   }
   try {
@@ -190,7 +180,7 @@ int simulate(const SimulateOptions& o) {
     return kExitFailure;
   }
   if (traceFile) traceFile->commit();
-  o.json ? printJson(def, world) : printText(def, world);
+  o.json ? printJson(def, world, o.verbose) : printText(def, world, o.verbose);
   return kExitOk;
 }
 
@@ -203,6 +193,7 @@ void addSimulateCommand(CLI::App& app, int& exitCode) {
   options->addTo(*cmd);
   cmd->add_option("--until", options->until, "end time in seconds (default: the scene's duration)");
   cmd->add_flag("--json", options->json, "print one JSON object");
+  cmd->add_flag("-v,--verbose", options->verbose, "every resting and staying-in-contact record, not one per pair");
   cmd->add_option("--trace", options->trace, "write every step to this CSV file");
   cmd->callback([options, &exitCode] { exitCode = runInterruptible("simulate " + options->scene, [&] { return simulate(*options); }); });
 }

@@ -25,6 +25,7 @@ struct SnapshotCommand : SceneOptions {
   std::optional<int> strobe;
   std::string output = "out";
   std::string size;
+  std::string trace;
 };
 
 // "0.5,1,2.25" → {0.5, 1, 2.25}; throws UsageError
@@ -65,14 +66,16 @@ StillRequest request(const SnapshotCommand& o) {
 int snapshot(const SnapshotCommand& o) {
   const auto print = [](const std::string& path) { std::cout << path << '\n'; };
   if (isSceneFile3d(o.scene)) try {
-      writePlan3(planStills3(o.variantLoader3(), request(o)), true, print);
+      const RenderPlan3 plan = planStills3(o.variantLoader3(), request(o));
+      traced<TraceWriter3>(o.trace, plan, [&](TraceWriter3* trace) { writePlan3(plan, true, print, trace); });
       return kExitOk;
     } catch (const VariantDiverged3& d) {
       std::cerr << divergedMessage(o.scene, d.model, d) << '\n';
       return kExitFailure;
     }
   try {
-    writePlan(planStills(o.variantLoader(), request(o)), true, print);
+    const RenderPlan plan = planStills(o.variantLoader(), request(o));
+    traced<TraceWriter>(o.trace, plan, [&](TraceWriter* trace) { writePlan(plan, true, print, trace); });
   } catch (const sim::world::Diverged& d) {
     std::cerr << o.scene << ": the simulation diverged at t = " << timeForName(d.time)
               << "; try a smaller step (--dt) or another integrator (--integrator rk4)\n";
@@ -94,6 +97,7 @@ void addSnapshotCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--strobe", o->strobe, "draw this many earlier poses, fading, behind the present one");
   cmd->add_option("-o,--output", o->output, "the output directory (default: out)");
   cmd->add_option("--size", o->size, "frame size WIDTHxHEIGHT in pixels, even (default: the scene's, 1280x720)");
+  cmd->add_option("--trace", o->trace, "also write every step of the pictures' run to this CSV file (as simulate --trace)");
   cmd->callback([o, &exitCode] { exitCode = runInterruptible("snapshot " + o->scene, [&] { return snapshot(*o); }); });
 }
 

@@ -1,6 +1,7 @@
 #include "render/cli/output.h"
 
 #include <filesystem>
+#include <iostream>
 #include <regex>
 
 #include "render/cli/commands.h"
@@ -54,6 +55,20 @@ std::string videoDiverged(const std::string& file, const render::video::VariantD
   return file + ": the simulation diverged at t = " + timeForName(d.time) + ": body '" + d.model.bodies[d.body].name +
          "' has a non-finite state; try a smaller step (--dt " + timeForName(d.model.dt / 4) +
          ") or another integrator (--integrator rk4)\n";
+}
+
+std::unique_ptr<render::jobs::AtomicFile> openTrace(const std::string& path) {
+  if (namesStandardOutput(path)) return nullptr;
+  try {
+    return std::make_unique<render::jobs::AtomicFile>(path);
+  } catch (const std::runtime_error& e) {
+    throw UsageError(std::string("--trace: ") + e.what());
+  }
+}
+
+std::ostream& traceStream(const std::unique_ptr<render::jobs::AtomicFile>& file) {
+  if (file) return file->stream();
+  return std::cout;
 }
 
 }  // namespace render::cli

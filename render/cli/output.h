@@ -2,10 +2,13 @@
 // a UsageError, exit 2), and what they say when a simulation diverges.
 #pragma once
 
+#include <memory>
 #include <string>
 
 #include "render/jobs/atomic_file.h"
+#include "render/jobs/exit_status.h"
 #include "render/video/render_plan.h"
+#include "render/video/trace_writer.h"
 
 namespace render::cli {
 
@@ -29,5 +32,24 @@ void refuseInputAsOutput(const std::string& output, const std::string& input, co
 // "<file>: the simulation diverged at t = …: body '…' has a non-finite state; try a smaller step
 // (--dt …) or another integrator (--integrator rk4)", a line, as `render` says it
 std::string videoDiverged(const std::string& file, const render::video::VariantDiverged& d);
+
+// `--trace FILE` of simulate, render and snapshot: the file staged, named only once it is whole, or
+// none for standard output (namesStandardOutput), written as it goes; throws UsageError when it
+// cannot be created
+std::unique_ptr<render::jobs::AtomicFile> openTrace(const std::string& path);
+// where a trace opened by openTrace goes: its file, or standard output
+std::ostream& traceStream(const std::unique_ptr<render::jobs::AtomicFile>& file);
+
+// `write(trace)` with the trace of `plan`'s one variant written to `path` (none when empty), the
+// file named only when the writing succeeded
+template <class Trace, class Plan, class Write>
+void traced(const std::string& path, const Plan& plan, Write&& write) {
+  if (path.empty()) return write(static_cast<Trace*>(nullptr));
+  if (plan.variants.size() != 1) throw render::jobs::UsageError("--trace: a trace is one variant's run; choose one with --variant");
+  const std::unique_ptr<render::jobs::AtomicFile> file = openTrace(path);
+  Trace trace(traceStream(file), plan.variants.front().scene.model);
+  write(&trace);
+  if (file) file->commit();
+}
 
 }  // namespace render::cli

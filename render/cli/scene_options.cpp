@@ -1,5 +1,6 @@
 #include "render/cli/scene_options.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -132,10 +133,34 @@ std::string describeCollisionMethod(const sim::world::World& world) {
 }
 
 std::string describeResting(const sim::scene::SceneDef& def, const sim::world::RestingRecord& r) {
+  return describeResting(def, RestingSpan{r, r.t, 1});
+}
+
+std::vector<RestingSpan> mergeResting(const std::vector<sim::world::RestingRecord>& records) {
+  std::vector<RestingSpan> spans;
+  for (const sim::world::RestingRecord& r : records) {
+    auto same = std::find_if(spans.begin(), spans.end(), [&](const RestingSpan& s) {
+      return s.first.a == r.a && s.first.b == r.b && s.first.moving == r.moving;
+    });
+    if (same == spans.end()) {
+      spans.push_back({r, r.t, 1});
+      continue;
+    }
+    same->last = r.t;
+    ++same->count;
+  }
+  return spans;
+}
+
+std::string describeResting(const sim::scene::SceneDef& def, const RestingSpan& s) {
+  const sim::world::RestingRecord& r = s.first;
   const std::string pair = "'" + def.bodies[r.a].name + "' and '" + def.bodies[r.b].name + "'";
   const std::string t = render::jobs::formatNumber(r.t);
-  if (r.moving) return pair + " stay in contact from t = " + t + " (impacts piled up; they keep moving while touching)";
-  return pair + " came to rest at t = " + t + " (impacts piled up; the contact now rests)";
+  const std::string until = s.count > 1 ? " to " + render::jobs::formatNumber(s.last) : "";
+  const std::string times = s.count > 1 ? std::to_string(s.count) + " times; " : "";
+  if (r.moving)
+    return pair + " stay in contact from t = " + t + until + " (" + times + "impacts piled up; they keep moving while touching)";
+  return pair + " came to rest at t = " + t + until + " (" + times + "impacts piled up; the contact now rests)";
 }
 
 }  // namespace render::cli

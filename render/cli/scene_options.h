@@ -46,4 +46,16 @@ std::string describeCollisionMethod(const sim::world::World& world);
 // 'floor' stay in contact from t = 0.5 (...)"
 std::string describeResting(const sim::scene::SceneDef& def, const sim::world::RestingRecord& record);
 
+// the records of one pair and kind (resting or still moving) merged: a pentagon rocking on a slab
+// makes a record at every pile-up, a hundred near-identical lines
+struct RestingSpan {
+  sim::world::RestingRecord first;
+  double last = 0.0;  // s, the time of the last record
+  long count = 0;
+};
+// one span per pair and kind, in the order of their first records
+std::vector<RestingSpan> mergeResting(const std::vector<sim::world::RestingRecord>& records);
+// "'bar' and 'floor' stay in contact from t = 0.5 to 2.9 (139 times; ...)", or as one record
+std::string describeResting(const sim::scene::SceneDef& def, const RestingSpan& span);
+
 }  // namespace render::cli

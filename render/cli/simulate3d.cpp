@@ -12,8 +12,8 @@
 #include "render/cli/run_progress.h"
 #include "render/cli/space3d.h"
 #include "render/jobs/atomic_file.h"
-#include "render/jobs/csv_field.h"
 #include "render/jobs/json_writer.h"
+#include "render/video/trace_writer.h"
 #include "sim/core/step_limit.h"
 #include "sim/scene3d/scene_build.h"
 #include "sim/world3d/diagnostics.h"
@@ -23,30 +23,6 @@ using namespace render::jobs;
 using namespace sim::world3d;
 
 namespace {
-
-// one CSV row per body per step, and again after each event
-class Trace3 : public StepObserver {
- public:
-  Trace3(std::ostream& out, const sim::scene3d::SceneDef& def) : out_(out), def_(def) {
-    out_ << "t,body,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,kinetic_energy\n";
-  }
-  void afterStep(const World& w) override { rows(w); }
-  void afterEvent(const World& w, const ImpulseEvent&) override { rows(w); }
-  void rows(const World& w) {
-    for (size_t i = 0; i < w.bodies.size(); ++i) {
-      const Body& b = w.bodies[i];
-      out_ << formatNumber(w.time) << ',' << csvField(def_.bodies[i].name);
-      for (double x : {b.x.x(), b.x.y(), b.x.z(), b.q.w(), b.q.x(), b.q.y(), b.q.z(), b.v.x(), b.v.y(), b.v.z(),
-                       b.omega.x(), b.omega.y(), b.omega.z(), kineticEnergy(b).total()})
-        out_ << ',' << formatNumber(x);
-      out_ << '\n';
-    }
-  }
-
- private:
-  std::ostream& out_;
-  const sim::scene3d::SceneDef& def_;
-};
 
 JsonWriter& vector3(JsonWriter& j, const Vec3& v) { return j.beginArray().value(v.x()).value(v.y()).value(v.z()).endArray(); }
 
@@ -116,15 +92,11 @@ int simulate3d(const SceneOptions& o, std::optional<double> until, bool json, co
     throw UsageError("--until: " + over + "; choose an earlier end, or raise the scene's 'sim: {max_steps: N}'");
   World world = sim::scene3d::buildWorld(def);
   std::unique_ptr<AtomicFile> traceFile;
-  std::unique_ptr<Trace3> trace;
+  std::unique_ptr<render::video::TraceWriter3> trace;
   if (!tracePath.empty()) {
     refuseInputAsOutput(tracePath, o.scene, "--trace");
-    if (!namesStandardOutput(tracePath)) try {
-        traceFile = std::make_unique<AtomicFile>(tracePath);
-      } catch (const std::runtime_error& e) {
-        throw UsageError(std::string("--trace: ") + e.what());
-      }
-    trace = std::make_unique<Trace3>(traceFile ? traceFile->stream() : std::cout, def);
+    traceFile = openTrace(tracePath);
+    trace = std::make_unique<render::video::TraceWriter3>(traceStream(traceFile), def);
     trace->rows(world);
   }
   try {

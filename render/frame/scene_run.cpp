@@ -1,10 +1,10 @@
 #include "render/frame/scene_run.h"
 
 #include <algorithm>
-#include <numeric>
-#include <optional>
+#include <cmath>
 #include <stdexcept>
 
+#include "render/frame/between_steps.h"
 #include "render/frame/title_card.h"
 #include "render/scene/scene_style.h"
 #include "sim/debug/describe.h"
@@ -35,50 +35,92 @@ SceneRun::State SceneRun::startState(const sim::scene::SceneDef& model, History:
   return {std::move(world), std::move(history)};
 }
 
+void SceneRun::Observers::afterStep(const sim::world::World& w) {
+  history->afterStep(w);
+  if (follower) follower->afterStep(w);
+}
+
+void SceneRun::Observers::afterEvent(const sim::world::World& w, const sim::world::ImpulseEvent& e) {
+  history->afterEvent(w, e);
+  if (follower) follower->afterEvent(w, e);
+}
+
 SceneRun::SceneRun(const render::scene::Scene& def, const Camera& camera, const RunSurvey& survey, GlContext* gl,
                    TextRenderer* text)
     : def_(def),
       camera_(camera),
       style_(makeStyle(def, camera.heightPx())),
       painter_(def, camera, survey, textWidth(text, style_.fontSize)),
-      state_(startState(def.model, painter_.historyOptions())),
+      run_(startState(def.model, painter_.historyOptions())),
+      end_(def.model.duration),
       text_(text) {
   if (gl && text) canvas_ = std::make_unique<GlCanvas>(*gl, *text, style_);
 }
 
-std::vector<DrawList> SceneRun::advance(State& state, double t, int strobe) {
-  std::vector<DrawList> ghosts;
-  if (strobe > 0 && state.world.time > 0.0) throw std::logic_error("a strobe image needs a fresh run");
-  for (int i = 0; i < strobe; ++i) {
-    state.world.advanceTo(t * i / strobe, &state.history);
-    DrawList ghost;
-    const double opacity = kOldestGhost + (kNewestGhost - kOldestGhost) * i / std::max(1, strobe - 1);
-    PhysicsDraw physics(ghost);
-    sim::debug::describeBodies(state.world, physics, opacity);
-    // ghosts of moving bodies only: a static body's ghost would only darken it
-    ghosts.emplace_back();
-    RoleFilter moving(ghosts.back(), [](Role r) { return r != Role::StaticBody; });
-    ghost.replay(moving);
+const SceneRun::State& SceneRun::reach(double t) {
+  observers_.history = &run_.history;
+  const State& state = reachBetween(run_, between_, t, end_, &observers_);
+  shown_ = &state;
+  return state;
+}
+
+void SceneRun::finish() {
+  observers_.history = &run_.history;
+  run_.world.advanceTo(end_, &observers_);
+  shown_ = &run_;
+}
+
+DrawList SceneRun::ghostOf(const State& state, int i, int strobe) {
+  DrawList ghost;
+  const double opacity = kOldestGhost + (kNewestGhost - kOldestGhost) * i / std::max(1, strobe - 1);
+  PhysicsDraw physics(ghost);
+  sim::debug::describeBodies(state.world, physics, opacity);
+  // ghosts of moving bodies only: a static body's ghost would only darken it
+  DrawList moving;
+  RoleFilter filter(moving, [](Role r) { return r != Role::StaticBody; });
+  ghost.replay(filter);
+  return moving;
+}
+
+void SceneRun::picturesAt(const std::vector<double>& instants, int strobe,
+                          const std::function<void(size_t, const State&, const std::vector<DrawList>&)>& picture) {
+  if (strobe > 0 && run_.world.time > 0.0) throw std::logic_error("a strobe image needs a fresh run");
+  // every time the pictures need, earliest first: instant k's ghosts at t·i/strobe, then instant k
+  struct Need {
+    double time;
+    size_t instant;
+    int ghost;  // -1: the picture itself
+  };
+  std::vector<Need> needs;
+  for (size_t k = 0; k < instants.size(); ++k) {
+    for (int i = 0; i < strobe; ++i) needs.push_back({instants[k] * i / strobe, k, i});
+    needs.push_back({instants[k], k, -1});
   }
-  state.world.advanceTo(t, &state.history);
-  return ghosts;
+  std::stable_sort(needs.begin(), needs.end(), [](const Need& a, const Need& b) {
+    return a.time < b.time || (a.time == b.time && a.ghost >= 0 && b.ghost < 0);
+  });
+  std::vector<std::vector<DrawList>> ghosts(instants.size(), std::vector<DrawList>(strobe));
+  for (const Need& n : needs) {
+    const State& state = reach(n.time);
+    if (n.ghost >= 0) {
+      ghosts[n.instant][n.ghost] = ghostOf(state, n.ghost, strobe);
+      continue;
+    }
+    picture(n.instant, state, ghosts[n.instant]);
+    ghosts[n.instant].clear();
+  }
 }
 
 Image SceneRun::frameAt(double t, int strobe) {
   if (!canvas_) throw std::logic_error("SceneRun::frameAt needs a GL context");
-  const std::vector<DrawList> ghosts = advance(state_, t, strobe);
-  return paint(state_, ghosts);
+  Image frame;
+  picturesAt({t}, strobe, [&](size_t, const State& state, const std::vector<DrawList>& ghosts) { paint(state, ghosts, frame); });
+  return frame;
 }
 
 void SceneRun::frameAt(double t, Image& frame) {
   if (!canvas_) throw std::logic_error("SceneRun::frameAt needs a GL context");
-  paint(state_, advance(state_, t, 0), frame);
-}
-
-Image SceneRun::paint(const State& state, const std::vector<DrawList>& ghosts) {
-  Image frame;
-  paint(state, ghosts, frame);
-  return frame;
+  paint(reach(t), {}, frame);
 }
 
 void SceneRun::paint(const State& state, const std::vector<DrawList>& ghosts, Image& frame) {
@@ -93,87 +135,29 @@ Image SceneRun::titleCard() {
 }
 
 DrawList SceneRun::drawListAt(double t, int strobe, std::vector<PlacedText>* placed) {
-  const std::vector<DrawList> ghosts = advance(state_, t, strobe);
   DrawList list;
-  painter_.paint(state_.world, state_.history, ghosts, list, placed);
+  picturesAt({t}, strobe, [&](size_t, const State& state, const std::vector<DrawList>& ghosts) {
+    painter_.paint(state.world, state.history, ghosts, list, placed);
+  });
   return list;
 }
 
 void SceneRun::framesAt(const std::vector<double>& instants, int strobe, const std::function<void(size_t, Image)>& shot) {
   if (!canvas_) throw std::logic_error("SceneRun::framesAt needs a GL context");
-  branchAt(instants, strobe, [&](size_t i, State& state) {
-    const std::vector<DrawList> ghosts = advance(state, instants[i], strobe);
-    shot(i, paint(state, ghosts));
+  picturesAt(instants, strobe, [&](size_t i, const State& state, const std::vector<DrawList>& ghosts) {
+    Image frame;
+    paint(state, ghosts, frame);
+    shot(i, std::move(frame));
   });
 }
 
 void SceneRun::drawListsAt(const std::vector<double>& instants, int strobe,
                            const std::function<void(size_t, DrawList)>& shot) {
-  branchAt(instants, strobe, [&](size_t i, State& state) {
-    const std::vector<DrawList> ghosts = advance(state, instants[i], strobe);
+  picturesAt(instants, strobe, [&](size_t i, const State& state, const std::vector<DrawList>& ghosts) {
     DrawList list;
     painter_.paint(state.world, state.history, ghosts, list);
     shot(i, std::move(list));
   });
-}
-
-namespace {
-
-// Watches a run that advances to its last instant in one call and keeps, for each instant ahead, a
-// copy of the run at its latest step that a fresh run advanced to the instant also takes: every
-// step that ends more than the world's time snap before it (advanceTo's own test). Steps are at
-// most dt long, so only the steps within 1.5 dt of an instant are copied (and the first state).
-template <typename State>
-class Brancher : public sim::world::StepObserver {
- public:
-  using Reached = std::function<void(size_t, State&)>;
-  Brancher(State& run, const std::vector<double>& instants, Reached reached)
-      : run_(run), instants_(instants), reached_(std::move(reached)), kept_(instants.size()) {
-    order_.resize(instants.size());
-    std::iota(order_.begin(), order_.end(), size_t{0});
-    std::stable_sort(order_.begin(), order_.end(), [&](size_t a, size_t b) { return instants[a] < instants[b]; });
-    for (size_t i : order_) kept_[i] = run_;
-  }
-  void afterStep(const sim::world::World& world) override {
-    run_.history.afterStep(world);
-    const double snap = sim::core::settings::kTimeSnap * world.dt;
-    // the instants this step reaches: their copies are final
-    while (next_ < order_.size() && world.time >= instants_[order_[next_]] - snap) finish(order_[next_++]);
-    for (size_t k = next_; k < order_.size() && world.time >= instants_[order_[k]] - 1.5 * world.dt; ++k)
-      kept_[order_[k]] = run_;
-  }
-  void afterEvent(const sim::world::World& world, const sim::world::ImpulseEvent& event) override {
-    run_.history.afterEvent(world, event);
-  }
-  // after the run: every instant not yet reached
-  void finishAll() {
-    while (next_ < order_.size()) finish(order_[next_++]);
-  }
-
- private:
-  void finish(size_t i) {
-    State state = std::move(*kept_[i]);
-    kept_[i].reset();
-    reached_(i, state);
-  }
-
-  State& run_;
-  const std::vector<double>& instants_;
-  Reached reached_;
-  std::vector<std::optional<State>> kept_;  // by instant
-  std::vector<size_t> order_;               // the instants' indices, earliest first
-  size_t next_ = 0;                         // in order_: the first instant not yet reached
-};
-
-}  // namespace
-
-void SceneRun::branchAt(const std::vector<double>& instants, int strobe, const Branch& reached) {
-  if (instants.empty()) return;
-  if (state_.world.time > 0.0) throw std::logic_error("SceneRun::framesAt needs a fresh run");
-  Brancher<State> brancher(state_, instants, reached);
-  // ghosts split the steps from t/strobe on: each picture is a run of its own from the first state
-  if (strobe == 0) state_.world.advanceTo(*std::max_element(instants.begin(), instants.end()), &brancher);
-  brancher.finishAll();
 }
 
 }  // namespace render::frame

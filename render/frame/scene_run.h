@@ -1,6 +1,8 @@
-// One run of a scene through the renderer: its world stepped forward to each time asked for (split
-// exactly there, whatever the physics step), its history gathered on the way, and the frame at that
-// time painted with GL.
+// One run of a scene through the renderer: its world stepped on the scene's own step grid (split
+// only where the scene splits it: events, force switches, its end), its history gathered on the
+// way, and the frame at each time asked for painted with GL. A time between two of the run's steps
+// is drawn from a copy of the run advanced to it, never by splitting the run's own step, so that
+// the frame times (fps, slow motion, title cards, snapshot times) never change the physics.
 #pragma once
 
 #include <functional>
@@ -23,9 +25,18 @@ class SceneRun {
   SceneRun(const render::scene::Scene& def, const Camera& camera, const RunSurvey& survey, GlContext* gl = nullptr,
            TextRenderer* text = nullptr);
 
-  // the frame at exactly time t, which must not be earlier than the last one; with `strobe` > 0,
-  // that many earlier poses at t·i/strobe (i = 0 … strobe − 1) drawn fading behind the present one,
-  // which needs a fresh run (nothing drawn yet). Throws sim::world::Diverged.
+  // where the run ends, its last step cut there: the scene's duration unless set (before the first
+  // frame) to a video's --duration
+  void endAt(double end) { end_ = end; }
+  // `observer` (e.g. a trace) is told of every step and event of the run itself, never of the
+  // copies drawn between steps; set it before the first frame
+  void follow(sim::world::StepObserver* observer) { observers_.follower = observer; }
+  // the run taken on to its end (what a trace needs after the last picture). Throws as frameAt.
+  void finish();
+
+  // the frame at time t, which must not be earlier than the last one; with `strobe` > 0, that many
+  // earlier poses at t·i/strobe (i = 0 … strobe − 1) drawn fading behind the present one, which
+  // needs a fresh run (nothing drawn yet). Throws sim::world::Diverged, ImpactsPileUp.
   Image frameAt(double t, int strobe = 0);
   // the same without ghosts into `frame`, whose storage is reused when it has the frame's size (a
   // video's frames, drawn into a few buffers over and over)
@@ -33,13 +44,10 @@ class SceneRun {
   // the draw calls of the frame at time t, without GL (the draw-list level of the tests); `placed`
   // (when given) is told where each text went (its box in pixels, the anchor it names)
   DrawList drawListAt(double t, int strobe = 0, std::vector<PlacedText>* placed = nullptr);
-  // the frames at each of `instants` (s, in any order) from a fresh run, each exactly what a fresh
-  // run's frameAt(t, strobe) paints, told to `shot` with the instant's index, earliest first.
-  // Without ghosts the world runs once: a fresh run advanced to t takes the same steps as a longer
-  // one up to its last step before t, then a shorter step to t (advanceTo splits the step there), so
-  // a copy of this run kept at that step and advanced to t is that fresh run. Ghosts split the steps
-  // at t·i/strobe, so with them each picture starts from a copy of the first state. Afterwards this
-  // run is spent. Throws sim::world::Diverged.
+  // the frames at each of `instants` (s, in any order, none earlier than the last frame), each
+  // exactly what a fresh run's frameAt(t, strobe) paints, told to `shot` with the instant's index,
+  // earliest first: the run goes once through all of them and their ghosts (with ghosts it must be
+  // fresh). Throws as frameAt.
   void framesAt(const std::vector<double>& instants, int strobe, const std::function<void(size_t, Image)>& shot);
   // the same as draw lists, without GL
   void drawListsAt(const std::vector<double>& instants, int strobe, const std::function<void(size_t, DrawList)>& shot);
@@ -48,30 +56,45 @@ class SceneRun {
   // video frames say when they are slowed (empty: never), see FramePainter
   void showSlowMotion(FramePainter::SlowFactor factorAt) { painter_.showSlowMotion(std::move(factorAt)); }
 
-  const sim::world::World& world() const { return state_.world; }
+  // the world the last picture was drawn from: the run's own, or its copy between two steps
+  const sim::world::World& world() const { return shown_ ? shown_->world : run_.world; }
+  // the run's own world, at its last step
+  const sim::world::World& runWorld() const { return run_.world; }
 
  private:
-  // the world and what its history holds, at one moment of a run (copied to branch the run)
+  // the world and what its history holds, at one moment of a run (copied to draw between steps)
   struct State {
     sim::world::World world;
     History history;
   };
-  using Branch = std::function<void(size_t, State&)>;
+  // what the run's own steps are told: its history, and the follower
+  struct Observers : sim::world::StepObserver {
+    History* history = nullptr;
+    sim::world::StepObserver* follower = nullptr;
+    void afterStep(const sim::world::World& w) override;
+    void afterEvent(const sim::world::World& w, const sim::world::ImpulseEvent& e) override;
+  };
   // the world built and its history started
   static State startState(const sim::scene::SceneDef& model, History::Options options);
-  // `state` advanced to t, and the strobe ghosts on the way
-  static std::vector<DrawList> advance(State& state, double t, int strobe);
-  // the state from which each instant is reached as a fresh run reaches it (see framesAt)
-  void branchAt(const std::vector<double>& instants, int strobe, const Branch& reached);
+  // the state at time t: the run by its own steps, or a copy of it advanced to t (between_steps.h)
+  const State& reach(double t);
+  // ghost i of `strobe`: the moving bodies of a state, fading
+  static DrawList ghostOf(const State& state, int i, int strobe);
+  // the pictures at `instants`, each with its ghosts, from the one run, earliest first
+  void picturesAt(const std::vector<double>& instants, int strobe,
+                  const std::function<void(size_t, const State&, const std::vector<DrawList>&)>& picture);
   // the frame of `state` through GL
-  Image paint(const State& state, const std::vector<DrawList>& ghosts);
   void paint(const State& state, const std::vector<DrawList>& ghosts, Image& frame);
 
   const render::scene::Scene& def_;
   Camera camera_;
   Style style_;
   FramePainter painter_;
-  State state_;
+  State run_;
+  Observers observers_;
+  double end_;
+  std::unique_ptr<State> between_;  // the copy drawn between steps (kept for its storage)
+  const State* shown_ = nullptr;    // the state of the last picture
   std::unique_ptr<GlCanvas> canvas_;
   TextRenderer* text_;
 };

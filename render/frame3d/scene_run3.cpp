@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "render/frame/between_steps.h"
 #include "render/frame/title_card.h"
 #include "sim/scene3d/scene_build.h"
 
@@ -23,10 +24,37 @@ SceneRun3::SceneRun3(const render::scene3d::Scene& def, const Camera3& camera, c
       camera_(camera),
       style_(render::scene3d::makeStyle(def, camera.heightPx())),
       painter_(def, camera, survey, textWidth(text, style_.fontSize)),
-      world_(sim::scene3d::buildWorld(def.model)),
-      history_(world_, painter_.historyOptions()),
+      run_([&] {
+        sim::world3d::World world = sim::scene3d::buildWorld(def.model);
+        History3 history(world, painter_.historyOptions());
+        return State{std::move(world), std::move(history)};
+      }()),
+      end_(def.model.duration),
       text_(text) {
   if (gl && text) canvas_ = std::make_unique<GlCanvas3>(*gl, *text, style_);
+}
+
+void SceneRun3::Observers::afterStep(const sim::world3d::World& w) {
+  history->afterStep(w);
+  if (follower) follower->afterStep(w);
+}
+
+void SceneRun3::Observers::afterEvent(const sim::world3d::World& w, const sim::world3d::ImpulseEvent& e) {
+  history->afterEvent(w, e);
+  if (follower) follower->afterEvent(w, e);
+}
+
+const SceneRun3::State& SceneRun3::reach(double t) {
+  observers_.history = &run_.history;
+  const State& state = render::frame::reachBetween(run_, between_, t, end_, &observers_);
+  shown_ = &state;
+  return state;
+}
+
+void SceneRun3::finish() {
+  observers_.history = &run_.history;
+  run_.world.advanceTo(end_, &observers_);
+  shown_ = &run_;
 }
 
 render::draw::Image SceneRun3::frameAt(double t) {
@@ -37,9 +65,9 @@ render::draw::Image SceneRun3::frameAt(double t) {
 
 void SceneRun3::frameAt(double t, render::draw::Image& frame) {
   if (!canvas_) throw std::logic_error("SceneRun3::frameAt needs a GL context");
-  world_.advanceTo(t, &history_);
+  const State& state = reach(t);
   canvas_->begin(camera_);
-  painter_.paint(world_, history_, *canvas_);
+  painter_.paint(state.world, state.history, *canvas_);
   canvas_->finish(frame);
 }
 
@@ -50,9 +78,9 @@ render::draw::Image SceneRun3::titleCard() {
 }
 
 DrawList3 SceneRun3::drawListAt(double t) {
-  world_.advanceTo(t, &history_);
+  const State& state = reach(t);
   DrawList3 list;
-  painter_.paint(world_, history_, list);
+  painter_.paint(state.world, state.history, list);
   return list;
 }
 

@@ -1,6 +1,7 @@
-// One run of a 3D scene through the renderer, as SceneRun is for 2D: its world stepped forward to
-// each time asked for (split exactly there), its history gathered on the way, the frame at that
-// time painted in perspective with GL, or recorded as a draw list.
+// One run of a 3D scene through the renderer, as SceneRun is for 2D: its world stepped on the
+// scene's own step grid (never split at a frame's time: a time between two steps is drawn from a
+// copy advanced to it), its history gathered on the way, the frame at that time painted in
+// perspective with GL, or recorded as a draw list.
 #pragma once
 
 #include <memory>
@@ -18,7 +19,15 @@ class SceneRun3 final : public render::frame::FrameSource {
   SceneRun3(const render::scene3d::Scene& def, const Camera3& camera, const RunSurvey3& survey,
             render::draw::GlContext* gl = nullptr, render::draw::TextRenderer* text = nullptr);
 
-  // the frame at exactly time t, not earlier than the last one. Throws sim::world3d::Diverged.
+  // where the run ends, its last step cut there: the scene's duration unless set before the first frame
+  void endAt(double end) { end_ = end; }
+  // `observer` (e.g. a trace) is told of every step and event of the run itself, never of the
+  // copies drawn between steps; set it before the first frame
+  void follow(sim::world3d::StepObserver* observer) { observers_.follower = observer; }
+  // the run taken on to its end (what a trace needs after the last picture). Throws as frameAt.
+  void finish();
+
+  // the frame at time t, not earlier than the last one. Throws sim::world3d::Diverged.
   render::draw::Image frameAt(double t) override;
   // the same into `frame`, its storage reused when it has the frame's size (a video's few buffers)
   void frameAt(double t, render::draw::Image& frame) override;
@@ -27,15 +36,36 @@ class SceneRun3 final : public render::frame::FrameSource {
   // the calls of the frame at time t, without GL (the draw-list level of the tests)
   DrawList3 drawListAt(double t);
 
-  const sim::world3d::World& world() const { return world_; }
+  // the world the last picture was drawn from: the run's own, or its copy between two steps
+  const sim::world3d::World& world() const { return shown_ ? shown_->world : run_.world; }
+  // the run's own world, at its last step
+  const sim::world3d::World& runWorld() const { return run_.world; }
 
  private:
+  // the world and its history at one moment of the run (copied to draw between steps)
+  struct State {
+    sim::world3d::World world;
+    History3 history;
+  };
+  // what the run's own steps are told: its history, and the follower
+  struct Observers : sim::world3d::StepObserver {
+    History3* history = nullptr;
+    sim::world3d::StepObserver* follower = nullptr;
+    void afterStep(const sim::world3d::World& w) override;
+    void afterEvent(const sim::world3d::World& w, const sim::world3d::ImpulseEvent& e) override;
+  };
+  // the state at time t: the run by its own steps, or a copy of it advanced to t (between_steps.h)
+  const State& reach(double t);
+
   const render::scene3d::Scene& def_;
   Camera3 camera_;
   render::draw::Style style_;
   FramePainter3 painter_;
-  sim::world3d::World world_;
-  History3 history_;
+  State run_;
+  Observers observers_;
+  double end_;
+  std::unique_ptr<State> between_;  // the copy drawn between steps (kept for its storage)
+  const State* shown_ = nullptr;    // the state of the last picture
   std::unique_ptr<GlCanvas3> canvas_;
   render::draw::TextRenderer* text_;
 };

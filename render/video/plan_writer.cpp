@@ -36,6 +36,7 @@ struct Drawing;
 template <>
 struct Drawing<Planar> {
   using Run = SceneRun;
+  using Trace = TraceWriter;
   static constexpr const char* kView = "";
   // the last instant, with the scene's strobe ghosts when it asks for them
   static Image poster(SceneRun& run, const VideoOutput& out) { return run.frameAt(out.duration, out.posterStrobe); }
@@ -43,6 +44,7 @@ struct Drawing<Planar> {
 template <>
 struct Drawing<Spatial> {
   using Run = render::frame3d::SceneRun3;
+  using Trace = TraceWriter3;
   static constexpr const char* kView = "in perspective, ";
   static Image poster(render::frame3d::SceneRun3& run, const VideoOutput3& out) { return run.frameAt(out.duration); }
 };
@@ -66,13 +68,24 @@ class VideoSink : public FrameSink {
   VideoWriter& video_;
 };
 
-// one video, its frames as PNG when asked for, then its poster
+// `trace` (when given) follows `run` from its start
+template <class Run, class Trace>
+void follow(Run& run, Trace* trace) {
+  if (!trace) return;
+  trace->rows(run.runWorld());
+  run.follow(trace);
+}
+
+// one video, its frames as PNG when asked for, then its poster; `trace` follows the video's run
 template <class D>
-void writeVideo(const PlannedVariantOf<D>& v, const VideoOutputOf<D>& out, bool quiet, const Wrote& wrote) {
+void writeVideo(const PlannedVariantOf<D>& v, const VideoOutputOf<D>& out, bool quiet, const Wrote& wrote,
+                typename Drawing<D>::Trace* trace) {
   using Run = typename Drawing<D>::Run;
   GlContext gl(out.width, out.height);
   TextRenderer text;
   Run run(v.scene, out.camera, v.survey, &gl, &text);
+  run.endAt(out.duration);
+  follow(run, trace);
 
   VideoWriter video(out.path, out.format, out.width, out.height, out.fps);
   VideoSink videoSink(video);
@@ -92,8 +105,15 @@ void writeVideo(const PlannedVariantOf<D>& v, const VideoOutputOf<D>& out, bool 
   if (framesDir) framesDir->commit();
   const double seconds = progress.elapsed();
 
-  Run posterRun(v.scene, out.camera, v.survey, &gl, &text);
-  writePng(Drawing<D>::poster(posterRun, out), out.posterPath);
+  // the poster at the end of the video's own run; its strobe ghosts need a run from the start
+  if (out.posterStrobe > 0) {
+    Run posterRun(v.scene, out.camera, v.survey, &gl, &text);
+    posterRun.endAt(out.duration);
+    writePng(Drawing<D>::poster(posterRun, out), out.posterPath);
+    if (trace) run.finish();
+  } else {
+    writePng(run.frameAt(out.duration), out.posterPath);
+  }
   wrote(out.path);
   wrote(out.posterPath);
   if (framesDir) wrote(out.framesPath);
@@ -111,7 +131,8 @@ void writeVideo(const PlannedVariantOf<D>& v, const VideoOutputOf<D>& out, bool 
 
 // the stills, a batch of shots at a time: each variant runs once per batch, through its instants
 // (SceneRun::framesAt), then each shot is written, alone or with the other variants beside it
-void writeStills(const RenderPlan& plan, const Stills& stills, const Wrote& wrote) {
+// (`trace` follows the first run, taken on to its end)
+void writeStills(const RenderPlan& plan, const Stills& stills, const Wrote& wrote, TraceWriter* trace) {
   const render::scene::Scene& first = plan.variants.front().scene;
   GlContext gl(stills.width, stills.height);
   TextRenderer text;
@@ -123,8 +144,11 @@ void writeStills(const RenderPlan& plan, const Stills& stills, const Wrote& wrot
       std::vector<double> instants;
       for (size_t k = 0; k < count; ++k) instants.push_back(stills.shots[from + k].instants[i]);
       SceneRun run(v.scene, stills.camera, stills.surveys[i], &gl, &text);
+      TraceWriter* const traced = from == 0 && i == 0 ? trace : nullptr;
+      follow(run, traced);
       drawing<Planar>(v, DrawStage::Stills, [&] {
         run.framesAt(instants, stills.strobe, [&](size_t k, Image frame) { frames[k][i] = std::move(frame); });
+        if (traced) run.finish();
       });
     }
     for (size_t k = 0; k < count; ++k) {
@@ -140,7 +164,8 @@ void writeStills(const RenderPlan& plan, const Stills& stills, const Wrote& wrot
 
 // 3D stills, shot by shot: a fresh run per variant (its trails and paths start from t = 0), alone or
 // side by side
-void writeStills(const RenderPlan3& plan, const Stills3& stills, const Wrote& wrote) {
+// (`trace` follows the first run, taken on to its end)
+void writeStills(const RenderPlan3& plan, const Stills3& stills, const Wrote& wrote, TraceWriter3* trace) {
   const render::scene3d::Scene& first = plan.variants.front().scene;
   GlContext gl(stills.width, stills.height);
   TextRenderer text;
@@ -149,7 +174,12 @@ void writeStills(const RenderPlan3& plan, const Stills3& stills, const Wrote& wr
     for (size_t i = 0; i < plan.variants.size(); ++i) {
       const PlannedVariant3& v = plan.variants[i];
       render::frame3d::SceneRun3 run(v.scene, stills.camera, stills.surveys[i], &gl, &text);
-      drawing<Spatial>(v, DrawStage::Stills, [&] { frames.push_back(run.frameAt(shot.instants[i])); });
+      TraceWriter3* const traced = &shot == &stills.shots.front() && i == 0 ? trace : nullptr;
+      follow(run, traced);
+      drawing<Spatial>(v, DrawStage::Stills, [&] {
+        frames.push_back(run.frameAt(shot.instants[i]));
+        if (traced) run.finish();
+      });
     }
     if (stills.panels)
       writePng(composePanels(frames, shot.titles, render::scene3d::makeStyle(first, first.render.height), text), shot.path);
@@ -161,15 +191,17 @@ void writeStills(const RenderPlan3& plan, const Stills3& stills, const Wrote& wr
 
 // every video with its poster, then the stills
 template <class D>
-void writeAll(const RenderPlanOf<D>& plan, bool quiet, const Wrote& wrote) {
+void writeAll(const RenderPlanOf<D>& plan, bool quiet, const Wrote& wrote, typename Drawing<D>::Trace* trace) {
+  if (trace && plan.variants.size() != 1) throw UsageError("--trace: a trace is one variant's run; choose one with --variant");
   for (const VideoOutputOf<D>& video : plan.videos) {
     const PlannedVariantOf<D>& v = plan.variants[video.variant];
     createOutputDirectory(video.directory);
-    drawing<D>(v, DrawStage::Video, [&] { writeVideo<D>(v, video, quiet, wrote); });
+    drawing<D>(v, DrawStage::Video, [&] { writeVideo<D>(v, video, quiet, wrote, trace); });
+    trace = nullptr;
   }
   if (plan.stills) {
     createOutputDirectory(plan.stills->directory);
-    writeStills(plan, *plan.stills, wrote);
+    writeStills(plan, *plan.stills, wrote, trace);
   }
 }
 
@@ -184,8 +216,10 @@ void createOutputDirectory(const std::string& dir) {
   if (::access(dir.c_str(), W_OK) != 0) throw UsageError("-o: cannot write in " + dir + "; choose another directory with -o DIR");
 }
 
-void writePlan(const RenderPlan& plan, bool quiet, const Wrote& wrote) { writeAll(plan, quiet, wrote); }
+void writePlan(const RenderPlan& plan, bool quiet, const Wrote& wrote, TraceWriter* trace) { writeAll(plan, quiet, wrote, trace); }
 
-void writePlan3(const RenderPlan3& plan, bool quiet, const Wrote& wrote) { writeAll(plan, quiet, wrote); }
+void writePlan3(const RenderPlan3& plan, bool quiet, const Wrote& wrote, TraceWriter3* trace) {
+  writeAll(plan, quiet, wrote, trace);
+}
 
 }  // namespace render::video

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "render/video/render_plan.h"
+#include "render/video/trace_writer.h"
 
 namespace render::video {
 
@@ -20,9 +21,11 @@ void createOutputDirectory(const std::string& dir);
 // writes every output of `plan`, in the order of plan.paths(), telling `wrote` each; without
 // `quiet`, a progress bar per video and a summary of each on standard output. Throws UsageError (a
 // directory that cannot be created or written), VariantDiverged, std::runtime_error (ffmpeg) and
-// Interrupted (between frames)
-void writePlan(const RenderPlan& plan, bool quiet, const Wrote& wrote);
+// Interrupted (between frames). `trace` (when given) is told every step of the run the plan's one
+// variant is drawn from (its video's, else its first still's), taken on to the variant's end: what
+// `simulate --trace` writes of the same run
+void writePlan(const RenderPlan& plan, bool quiet, const Wrote& wrote, TraceWriter* trace = nullptr);
 // the same for a 3D scene's plan, with VariantDiverged3 for a divergence
-void writePlan3(const RenderPlan3& plan, bool quiet, const Wrote& wrote);
+void writePlan3(const RenderPlan3& plan, bool quiet, const Wrote& wrote, TraceWriter3* trace = nullptr);
 
 }  // namespace render::video

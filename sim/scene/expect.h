@@ -20,8 +20,9 @@ using sim::core::CheckResult;
 std::vector<CheckResult> evaluate(const ExpectDef& expect, const SceneDef& def, const World& world,
                                   const std::unordered_map<std::string, int>* indices = nullptr);
 
-// runs the scene's world through every expect entry in time order (`observer`, if any, sees every
-// step: a progress line)
+// runs the scene's world through every expect entry in time order on its own step grid (an entry
+// between two steps is evaluated on a copy advanced to its time; `observer`, if any, sees every
+// step of the run: a progress line). The world is left at its last step by the last entry.
 std::vector<CheckResult> runExpects(const SceneDef& def, World& world, sim::world::StepObserver* observer = nullptr);
 // the same on a world built from the definitions
 std::vector<CheckResult> runExpects(const SceneDef& def);

@@ -157,21 +157,33 @@ double World::nextStop(double tEnd) const {
 void World::advanceTo(double tEnd, StepObserver* observer) {
   start();
   applyDueEvents(observer);
+  while (time < tEnd - settings::kTimeSnap * dt) stepTo(nextStop(tEnd), tEnd, observer);
+  time = std::max(time, tEnd);
+}
+
+void World::advanceWithin(double t, double tEnd, StepObserver* observer) {
+  start();
+  applyDueEvents(observer);
   while (time < tEnd - settings::kTimeSnap * dt) {
     const double stop = nextStop(tEnd);
-    const double grid = (gridIndex_ + 1) * dt;
-    step(stop - time);
-    // land on the grid point itself when the stop is (within round-off) the grid point
-    if (std::abs(stop - grid) <= settings::kTimeSnap * dt) {
-      ++gridIndex_;
-      time = std::abs(stop - tEnd) <= settings::kTimeSnap * dt ? tEnd : grid;
-    } else {
-      time = stop;
-    }
-    if (observer) observer->afterStep(*this);
-    applyDueEvents(observer);
+    if (stop > t + settings::kTimeSnap * dt) break;
+    stepTo(stop, tEnd, observer);
   }
-  time = std::max(time, tEnd);
+}
+
+// one step from now to `stop` on the way to tEnd, the events due there applied
+void World::stepTo(double stop, double tEnd, StepObserver* observer) {
+  const double grid = (gridIndex_ + 1) * dt;
+  step(stop - time);
+  // land on the grid point itself when the stop is (within round-off) the grid point
+  if (std::abs(stop - grid) <= settings::kTimeSnap * dt) {
+    ++gridIndex_;
+    time = std::abs(stop - tEnd) <= settings::kTimeSnap * dt ? tEnd : grid;
+  } else {
+    time = stop;
+  }
+  if (observer) observer->afterStep(*this);
+  applyDueEvents(observer);
 }
 
 // one step of size h, in the notes' order (Box2D-Lite's World::Step); what each stage does is the

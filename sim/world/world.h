@@ -90,6 +90,10 @@ class World {
   void start();
   // advance to exactly tEnd (events at tEnd included); throws Diverged
   void advanceTo(double tEnd, StepObserver* observer = nullptr);
+  // advance by the steps that advanceTo(tEnd) takes (grid points, events, force switches, tEnd) as
+  // long as they end by t, never splitting one at t: a picture at t between two of them is drawn
+  // from a copy of the world advanced to t (render/frame/scene_run.h); throws Diverged
+  void advanceWithin(double t, double tEnd, StepObserver* observer = nullptr);
 
   // the notes' impulse at a world point r: v += j/m, ω += I⁻¹ (r − x) × j
   void applyImpulse(int body, const Vec2& r, const Vec2& j);
@@ -114,6 +118,7 @@ class World {
   void measureScene();
   void chooseMethod();
   double nextStop(double tEnd) const;
+  void stepTo(double stop, double tEnd, StepObserver* observer);
   void step(double h);
   void stepWith(Method& method, const TimeStep& step);
   void switchToStackSolver(double at);

@@ -26,16 +26,28 @@ void World::start() {
 void World::advanceTo(double tEnd, StepObserver* observer) {
   start();
   applyDueEvents(observer);
+  while (time < tEnd && !grid_.same(time, tEnd)) stepTo(grid_.nextStop(time, tEnd), tEnd, observer);
+  time = std::max(time, tEnd);
+}
+
+void World::advanceWithin(double t, double tEnd, StepObserver* observer) {
+  start();
+  applyDueEvents(observer);
   while (time < tEnd && !grid_.same(time, tEnd)) {
     const double stop = grid_.nextStop(time, tEnd);
-    step(stop - time);
-    time = grid_.arrive(stop, tEnd);
-    // stop at the first non-finite state rather than carry NaN forward
-    checkFinite();
-    if (observer) observer->afterStep(*this);
-    applyDueEvents(observer);
+    if (stop > t && !grid_.same(stop, t)) break;
+    stepTo(stop, tEnd, observer);
   }
-  time = std::max(time, tEnd);
+}
+
+// one step from now to `stop` on the way to tEnd, the events due there applied
+void World::stepTo(double stop, double tEnd, StepObserver* observer) {
+  step(stop - time);
+  time = grid_.arrive(stop, tEnd);
+  // stop at the first non-finite state rather than carry NaN forward
+  checkFinite();
+  if (observer) observer->afterStep(*this);
+  applyDueEvents(observer);
 }
 
 // one step of size h: the integrator on every body's state, then (by default) back onto unit

@@ -55,9 +55,13 @@ class World {
   // advance to exactly tEnd (events at tEnd included); throws Diverged, and std::invalid_argument
   // for dt ≤ 0. The events, the force switches and dt are read when the first call starts the run.
   void advanceTo(double tEnd, StepObserver* observer = nullptr);
+  // advance by the steps that advanceTo(tEnd) takes as long as they end by t, never splitting one
+  // at t: a picture at t between two of them is drawn from a copy advanced to t (scene_run3.h)
+  void advanceWithin(double t, double tEnd, StepObserver* observer = nullptr);
 
  private:
   void start();
+  void stepTo(double stop, double tEnd, StepObserver* observer);
   void step(double h);
   void applyDueEvents(StepObserver* observer);
   void checkFinite() const;

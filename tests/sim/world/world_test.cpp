@@ -88,6 +88,20 @@ events: [{time: 0.33, body: b, impulse: [0, 1]}]
   CHECK(w.bodies[0].v.y() == doctest::Approx(1 / m).epsilon(1e-14));
 }
 
+TEST_CASE("advanceWithin takes the run's own steps up to a time between them, never splitting one") {
+  sim::world::World once = poll("end", sim::core::Integrator::Rk4), within = poll("end", sim::core::Integrator::Rk4);
+  Recorder a, b;
+  once.advanceTo(1.2345, &a);
+  // pictures at 1/60 s (the event at 0.5 s is a step end of the run's own), the run's end 1.2345 s
+  for (int k = 0; k < 75; ++k) within.advanceWithin(k / 60.0, 1.2345, &b);
+  CHECK(within.time == doctest::Approx(1.233).epsilon(1e-12));
+  within.advanceWithin(1.2345, 1.2345, &b);
+  CHECK(within.time == 1.2345);
+  CHECK(b.stepTimes == a.stepTimes);
+  CHECK(b.eventTimes == a.eventTimes);
+  CHECK(sim::world::stateHash(once) == sim::world::stateHash(within));
+}
+
 TEST_CASE("an impulse at a body point changes v by j/m and ω by I⁻¹ (r′ × j)") {
   sim::world::World w;
   sim::core::Body b;

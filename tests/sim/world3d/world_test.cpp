@@ -72,6 +72,23 @@ TEST_CASE("advancing in pieces that end on grid points gives the bit-identical r
   }
 }
 
+TEST_CASE("advanceWithin takes the run's own steps up to a time between them, never splitting one") {
+  for (Integrator m : kAll) {
+    CAPTURE(kIntegratorNames.name(m));
+    World once = fixtures3d::springChain(m, 0.01), within = fixtures3d::springChain(m, 0.01);
+    within.events = once.events = {{0.333, 0, Vec3::Zero(), false, Vec3(0, 1, 0)}};
+    Recorder a, b;
+    once.advanceTo(0.755, &a);
+    // pictures at 1/60 s, the end of the run 0.755 s
+    for (int k = 0; k < 46; ++k) within.advanceWithin(k / 60.0, 0.755, &b);
+    CHECK(within.time == doctest::Approx(0.75).epsilon(1e-12));
+    within.advanceTo(0.755, &b);
+    CHECK(b.stepTimes == a.stepTimes);
+    CHECK(b.eventTimes == a.eventTimes);
+    CHECK(sameState(once, within));
+  }
+}
+
 TEST_CASE("a state that stops being finite is an error naming the time and the body") {
   // a stiff spring on the second body under explicit Euler: h ω = 10, |state| grows tenfold a step
   World w = fixtures3d::springChain(Integrator::ExplicitEuler, 0.01);
