@@ -1,4 +1,4 @@
-// Text read from a scene (names, labels, titles) goes into JSON, CSV, HTML and frames, all UTF-8:
+// Text read from a scene (names, labels, titles) goes into JSON, CSV and other outputs, all UTF-8:
 // bytes that are not UTF-8 (a file saved as Latin-1) are refused where they are read.
 #pragma once
 
