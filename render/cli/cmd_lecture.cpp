@@ -254,7 +254,7 @@ void addLectureCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("scenes", o->paths, "scene files (YAML) and directories of them (every *.yaml)");
   cmd->add_option("-o,--output", o->output, "the output directory (default: out/lecture)");
   cmd->add_option("-j,--jobs", o->jobs, "scenes rendered at a time (default: the number of cores)");
-  cmd->add_option("--size", o->size, "frame size WIDTHxHEIGHT in pixels, even (default: each scene's)");
+  cmd->add_option("--size", o->size, "frame size WIDTHxHEIGHT in pixels, even (default: each scene's), and the poll panel sheets' (default 1920x1080)");
   cmd->add_option("--fps", o->fps, "frames per second (default: each scene's)");
   cmd->add_flag("--quiet", o->quiet, "no line per scene as it ends (the summary and failures stay)");
   cmd->add_flag("--list", o->list, "print the paths the pack would write, one a line, and render nothing");

@@ -96,7 +96,7 @@ void addSnapshotCommand(CLI::App& app, int& exitCode) {
   cmd->add_flag("--panels", o->panels, "every variant side by side in one labeled image");
   cmd->add_option("--strobe", o->strobe, "draw this many earlier poses, fading, behind the present one");
   cmd->add_option("-o,--output", o->output, "the output directory (default: out)");
-  cmd->add_option("--size", o->size, "frame size WIDTHxHEIGHT in pixels, even (default: the scene's, 1280x720)");
+  cmd->add_option("--size", o->size, "frame size WIDTHxHEIGHT in pixels, even (default: the scene's, 1280x720); with --panels, the whole sheet's (default 1920x1080)");
   cmd->add_option("--trace", o->trace, "also write every step of the pictures' run to this CSV file (as simulate --trace)");
   cmd->callback([o, &exitCode] { exitCode = runInterruptible("snapshot " + o->scene, [&] { return snapshot(*o); }); });
 }

@@ -22,9 +22,10 @@ std::string lecturePagePath(const std::string& root) { return (fs::path(root) / 
 
 namespace {
 
-// the record's part every scene has: its title, description and time, its videos and its poll
-// panels (a panel at t = 0 shows the poll's question, nothing has happened yet; any later one, its
-// answer); `variants` names each planned variant
+// the record's part every scene has: its title, description, question, answer and time, its videos
+// and its poll panels (a panel at t = 0 shows the poll's question, nothing has happened yet; one at
+// or after the scene's `reveal` time, its answer; any other, neither); `variants` names each planned
+// variant
 template <class Plan>
 render::page::SceneRecord recordOf(const Plan& plan, const render::scene::RenderDef& look, const std::string& title,
                                    const std::string& description, const std::vector<std::string>& variants,
@@ -34,6 +35,8 @@ render::page::SceneRecord recordOf(const Plan& plan, const render::scene::Render
   r.file = file;
   r.title = title;
   r.description = description;
+  r.question = look.poll.question;
+  r.answer = look.poll.answer;
   r.seconds = seconds;
   // the files as the plan names them, relative to the record's folder (a variant may rename its own)
   const auto name = [&](const std::string& p) { return fs::path(p).lexically_relative(fs::path(path).parent_path()).string(); };
@@ -41,10 +44,12 @@ render::page::SceneRecord recordOf(const Plan& plan, const render::scene::Render
   if (plan.stills)
     for (size_t i = 0; i < plan.stills->shots.size(); ++i) {
       const render::video::StillOutput& shot = plan.stills->shots[i];
+      const double t = shot.instants.at(0);
+      const bool answer = look.poll.revealed(t);
       if (look.panels.impacts)
-        r.panels.push_back({name(shot.path), "impact " + std::to_string(i + 1), false});
+        r.panels.push_back({name(shot.path), "impact " + std::to_string(i + 1), false, answer});
       else
-        r.panels.push_back({name(shot.path), "t = " + render::video::timeForName(shot.instants.at(0)) + " s", shot.instants.at(0) == 0.0});
+        r.panels.push_back({name(shot.path), "t = " + render::video::timeForName(t) + " s", t == 0.0 && !answer, answer});
     }
   return r;
 }

@@ -61,26 +61,69 @@ TextBox TextRenderer::measure(const std::string& text, int sizePx) {
   TextBox box;
   box.ascent = static_cast<int>((m.ascender + 63) >> 6);
   box.descent = static_cast<int>((-m.descender + 63) >> 6);
-  const long pen = layOut(text, sizePx, [](const Glyph&, long) {});
+  const long pen = layOut(text, sizePx, [](const Glyph&, long, int) {});
   box.width = static_cast<int>((pen + 63) >> 6);
   return box;
+}
+
+namespace {
+
+// a script's size and its baseline's shift, as fractions of the text's size (TeX's proportions, about)
+constexpr double kScriptSize = 0.7, kSubscriptDrop = 0.22, kSuperscriptRise = 0.38;
+
+bool isLetter(char32_t c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= 0x391 && c <= 0x3C9); }
+bool isAlnum(char32_t c) { return isLetter(c) || (c >= '0' && c <= '9'); }
+
+}  // namespace
+
+std::vector<ScriptRun> scriptRuns(const std::u32string& codes) {
+  std::vector<ScriptRun> out;
+  for (size_t i = 0; i < codes.size(); ++i) {
+    const char32_t c = codes[i];
+    const int script = c == U'_' ? -1 : c == U'^' ? 1 : 0;
+    if (script != 0 && i > 0 && isLetter(codes[i - 1]) && i + 1 < codes.size()) {
+      if (codes[i + 1] == U'{') {
+        const size_t close = codes.find(U'}', i + 2);
+        if (close != std::u32string::npos && close > i + 2) {
+          for (size_t k = i + 2; k < close; ++k) out.push_back({codes[k], script});
+          i = close;
+          continue;
+        }
+      } else if (isAlnum(codes[i + 1])) {
+        const char32_t after = i + 2 < codes.size() ? codes[i + 2] : U' ';
+        if (!isAlnum(after) && after != U'.' && after != U'_' && after != U'^') {
+          out.push_back({codes[i + 1], script});
+          ++i;
+          continue;
+        }
+      }
+    }
+    out.push_back({c, 0});
+  }
+  return out;
 }
 
 template <class Visit>
 long TextRenderer::layOut(const std::string& text, int sizePx, Visit visit) {
   long pen = 0;
   unsigned previous = 0;
-  for (char32_t c : decodeUtf8(text)) {
-    const Glyph& g = glyph(c, sizePx);
-    setSize(sizePx);
-    if (previous && FT_HAS_KERNING(ft_->face)) {
+  int previousSize = 0;
+  const int scriptSize = std::max(1, static_cast<int>(std::lround(kScriptSize * sizePx)));
+  const int drop = static_cast<int>(std::lround(kSubscriptDrop * sizePx)), rise = static_cast<int>(std::lround(kSuperscriptRise * sizePx));
+  for (const ScriptRun& run : scriptRuns(decodeUtf8(text))) {
+    const int size = run.script == 0 ? sizePx : scriptSize;
+    const Glyph& g = glyph(run.code, size);
+    setSize(size);
+    // kerning within one size only: a script's glyphs sit apart from the letter they follow
+    if (previous && previousSize == size && FT_HAS_KERNING(ft_->face)) {
       FT_Vector k;
       FT_Get_Kerning(ft_->face, previous, g.index, FT_KERNING_DEFAULT, &k);
       pen += k.x;
     }
-    visit(g, pen);
+    visit(g, pen, run.script < 0 ? drop : run.script > 0 ? -rise : 0);
     pen += g.advance;
     previous = g.index;
+    previousSize = size;
   }
   return pen;
 }
@@ -96,10 +139,11 @@ const TextRenderer::Mask& TextRenderer::mask(const std::string& text, int sizePx
   m.box = measure(text, sizePx);
   m.pad = haloPx + 1;
   m.width = m.box.width + 2 * m.pad + sizePx;
-  m.height = m.box.ascent + m.box.descent + 2 * m.pad;
+  // room below the text box for a subscript's descent (lowered past the font's)
+  m.height = m.box.ascent + m.box.descent + 2 * m.pad + static_cast<int>(std::ceil(kSubscriptDrop * sizePx));
   m.coverage.assign(static_cast<size_t>(m.width) * m.height, 0);
-  layOut(text, sizePx, [&m](const Glyph& g, long pen) {
-    const int gx = m.pad + static_cast<int>(pen >> 6) + g.left, gy = m.pad + m.box.ascent - g.top;
+  layOut(text, sizePx, [&m](const Glyph& g, long pen, int dy) {
+    const int gx = m.pad + static_cast<int>(pen >> 6) + g.left, gy = m.pad + m.box.ascent - g.top + dy;
     for (int r = 0; r < g.rows; ++r)
       for (int col = 0; col < g.width; ++col) {
         const int mx = gx + col, my = gy + r;

@@ -1,5 +1,7 @@
 // Text through FreeType: glyphs rasterized (8-bit anti-aliased coverage) with DejaVu Sans and
 // blended straight into a frame, with a halo so that labels stay legible over bodies and lines.
+// The notes' symbols are set as a slide sets them, no TeX needed: "v_n" is v with a lowered,
+// smaller n, "x^2" a raised 2, "m_{eff}" a subscript of several letters (scriptRuns).
 #pragma once
 
 #include <cstdint>
@@ -58,8 +60,9 @@ class TextRenderer {
   using MaskKey = std::tuple<std::string, int, int>;  // text, size, halo
 
   const Glyph& glyph(char32_t code, int sizePx);
-  // each glyph of `text` in order with the pen's position before it (26.6 fixed point, kerned);
-  // returns the pen after the last glyph: the advance of the whole line
+  // each glyph of `text` in order with the pen's position before it (26.6 fixed point, kerned) and
+  // its baseline's shift down in pixels (a subscript's, a superscript's up), sub- and superscripts
+  // at their smaller size; returns the pen after the last glyph: the advance of the whole line
   template <class Visit>
   long layOut(const std::string& text, int sizePx, Visit visit);
   const Mask& mask(const std::string& text, int sizePx, int haloPx);
@@ -74,6 +77,16 @@ class TextRenderer {
 
 // the code points of UTF-8 text (malformed bytes become U+FFFD)
 std::u32string decodeUtf8(const std::string& text);
+
+// a code point of a text as it is set: on the baseline, lowered (a subscript) or raised
+struct ScriptRun {
+  char32_t code;
+  int script = 0;  // 0 on the baseline, −1 a subscript, +1 a superscript
+};
+// the code points of `text` with the markers of scripts taken out: '_' or '^' after a letter,
+// before one letter or digit that ends a word ("v_n⁻", "x_b", "x^2"; not "mu_0.3" or "run_30",
+// which stay as written), or before a braced group ("m_{eff}")
+std::vector<ScriptRun> scriptRuns(const std::u32string& codes);
 // about the width of `text` at `size` (any unit per em), without FreeType: for layouts made before any
 // text is drawn; at least the true width for digits, letters and signs (DejaVu's digits are 0.64 em)
 double approximateWidth(const std::string& text, double size);

@@ -25,9 +25,6 @@ constexpr double kBarTop = 0.5 * kLineHeight - 0.45, kBarBottom = 0.5 * kLineHei
 // the panel is laid out once, from the widest text the run can write, in em
 double textWidth(const std::string& text) { return approximateWidth(text, 1.0); }
 
-std::string momentumText(const sim::world::World& world) { return vectorText("p", sim::world::linearMomentum(world), "kg·m/s"); }
-
-std::string angularText(const sim::world::World& world) { return quantityText("L", sim::world::angularMomentum(world), "kg·m²/s"); }
 
 }  // namespace
 
@@ -128,16 +125,34 @@ double EnergyPanel::bandPx(const render::scene::Scene& def, const RunSurvey& sur
 }
 
 EnergyPanel::EnergyPanel(const render::scene::Scene& def, const Camera& camera, const RunSurvey& survey)
+    : EnergyPanel(def, camera, survey, initialTotals(def)) {}
+
+EnergyPanel::Totals EnergyPanel::initialTotals(const render::scene::Scene& def) {
+  const sim::world::World world = sim::scene::buildWorld(def.model);
+  return {sim::world::energy(world).total(), sim::world::linearMomentum(world), sim::world::angularMomentum(world)};
+}
+
+EnergyPanel::EnergyPanel(const render::scene::Scene& def, const Camera& camera, const RunSurvey& survey, const Totals& first)
     : def_(def),
       energy_(def.render.overlays.energy),
       momentum_(def.render.overlays.momentum),
       panel_(widestBarTexts(def, survey), widestLines(def, survey), survey.minEnergy, survey.maxEnergy, camera,
-             fontSizeFor(def.render, camera.heightPx())) {}
+             fontSizeFor(def.render, camera.heightPx())),
+      energyTotal_(first.energy, std::max(std::abs(survey.minEnergy), std::abs(survey.maxEnergy))),
+      momentumX_(first.momentum.x(), survey.maxLinearMomentum),
+      momentumY_(first.momentum.y(), survey.maxLinearMomentum),
+      angularTotal_(first.angular, survey.maxAngularMomentum) {}
 
 void EnergyPanel::draw(const sim::world::World& world, Canvas& draw) const {
   std::vector<std::string> lines;
-  if (momentum_) lines = {momentumText(world), angularText(world)};
-  panel_.draw(energy_ ? energyBars(def_, world) : std::vector<EnergyBar>{}, lines, draw);
+  if (momentum_) {
+    const Vec2 p = sim::world::linearMomentum(world);
+    lines = {vectorText("p", Vec2(momentumX_.shown(p.x()), momentumY_.shown(p.y())), "kg·m/s"),
+             quantityText("L", angularTotal_.shown(sim::world::angularMomentum(world)), "kg·m²/s")};
+  }
+  std::vector<EnergyBar> bars = energy_ ? energyBars(def_, world) : std::vector<EnergyBar>{};
+  if (!bars.empty()) bars.back().value = energyTotal_.shown(bars.back().value);
+  panel_.draw(bars, lines, draw);
 }
 
 }  // namespace render::frame

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "render/draw/camera.h"
+#include "render/frame/conserved_total.h"
 #include "render/frame/survey.h"
 #include "render/draw/canvas.h"
 #include "render/scene/scene.h"
@@ -72,9 +73,20 @@ class EnergyPanel {
   static std::vector<std::string> widestBarTexts(const render::scene::Scene& def, const RunSurvey& survey);
   static std::vector<std::string> widestLines(const render::scene::Scene& def, const RunSurvey& survey);
 
+  // the totals of the scene's first state
+  struct Totals {
+    double energy = 0.0;
+    Vec2 momentum = Vec2::Zero();
+    double angular = 0.0;
+  };
+  static Totals initialTotals(const render::scene::Scene& def);
+  EnergyPanel(const render::scene::Scene& def, const Camera& camera, const RunSurvey& survey, const Totals& first);
+
   const render::scene::Scene& def_;
   bool energy_, momentum_;
   BarPanel panel_;
+  // E, p (x, y) and L shown with their first digits wherever the run conserves them
+  ConservedTotal energyTotal_, momentumX_, momentumY_, angularTotal_;
 };
 
 }  // namespace render::frame

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "render/draw/style.h"
+#include "render/frame/impulse_beside.h"
 #include "render/scene/scene_style.h"
 #include "sim/collision/collide.h"
 #include "sim/debug/describe.h"
@@ -80,8 +81,10 @@ void FramePainter::paint(const sim::world::World& world, const History& history,
   sim::debug::describeBodies(world, movingPhysics);
   PhysicsDraw physics(draw);
   // coils 2.5 line widths to each side: visible, and narrower than most bodies
-  if (r.springs) sim::debug::describeSprings(world, 2.5 * def_.render.lineWidth * px, physics);
-  history.drawAfterimages(world.time, draw);
+  if (r.springs) sim::debug::describeSprings(world, 2.5 * lineWidthFor(def_.render, camera_.heightPx()) * px, physics);
+  // impulses beside the normals they share a line with, so that both show
+  ImpulseBeside beside(draw, impulseOffsetPx(lineWidthFor(r, camera_.heightPx())) * px);
+  history.drawAfterimages(world.time, beside);
   const double textSize = fontSizeFor(r, camera_.heightPx()) * px;
   // the overlay of every polygon pair closer than a tenth of the view (so, as they approach), its
   // label a line of text out from the edge

@@ -17,6 +17,8 @@ class FrameSource {
   virtual void frameAt(double t, render::draw::Image& frame) { frame = frameAt(t); }
   // the title card over the frame at t = 0 (title_card.h)
   virtual render::draw::Image titleCard() = 0;
+  // the closing card with the poll's answer (`answer_card`)
+  virtual render::draw::Image answerCard() = 0;
   // video frames say when they are slowed: how many times slower simulation time t is shown (empty: never)
   virtual void showSlowMotion(std::function<double(double t)> factorAt) = 0;
 };

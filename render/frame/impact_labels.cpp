@@ -4,6 +4,7 @@
 
 #include "render/frame/label_place.h"
 #include "render/frame/quantity_text.h"
+#include "sim/core/settings.h"
 
 namespace render::frame {
 using namespace render::draw;
@@ -34,7 +35,9 @@ void ImpactLabels::event(const sim::world::ImpulseEvent& e, const Vec2& tail, co
 }
 
 std::string ImpactLabels::velocitiesText(double vnBefore, double vnAfter) {
-  return quantityText("v_n⁻", vnBefore, "m/s") + " → " + quantityText("v_n⁺", vnAfter, "m/s");
+  // a normal speed under the resting speed is a resting contact's, round-off of a plastic impact
+  const auto shown = [](double vn) { return std::abs(vn) < sim::core::settings::kRestingSpeed ? 0.0 : vn; };
+  return quantityText("v_n⁻", shown(vnBefore), "m/s") + " → " + quantityText("v_n⁺", shown(vnAfter), "m/s");
 }
 
 }  // namespace render::frame

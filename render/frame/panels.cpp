@@ -3,8 +3,28 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/frame/caption.h"
+#include "render/jobs/exit_status.h"
+#include "render/scene/render_def.h"
+
 namespace render::frame {
 using namespace render::draw;
+
+namespace {
+
+// the least share of a sheet's height a text takes: read from the back of a lecture hall
+constexpr double kTextShare = 1.0 / 40.0;
+constexpr int kCaptionLines = 2;
+
+int evenDown(double v) { return std::max(0, static_cast<int>(std::floor(v / 2.0)) * 2); }
+
+// one pixel of `color` at (x, y) of `out`
+void fill(Image& out, int x, int y, const Color& color) {
+  uint8_t* p = out.pixel(x, y);
+  p[0] = Color::byte(color.r), p[1] = Color::byte(color.g), p[2] = Color::byte(color.b), p[3] = 255;
+}
+
+}  // namespace
 
 std::string panelLetter(size_t i) {
   std::string s;
@@ -12,30 +32,66 @@ std::string panelLetter(size_t i) {
   return s;
 }
 
-Image composePanels(const std::vector<Image>& frames, const std::vector<std::string>& titles, const Style& style,
-                    TextRenderer& text) {
-  if (frames.empty()) return {};
-  const int w = frames.front().width, h = frames.front().height;
-  // a title strip of twice the text size; a gap of about a 160th of a frame with a rule in it
-  const int titleSize = std::max(12, static_cast<int>(std::lround(style.fontSize * 1.2)));
-  const int strip = 2 * titleSize;
-  const int gap = std::max(4, w / 160);
-  const int n = static_cast<int>(frames.size());
-  Image out(n * w + (n - 1) * gap, strip + h, style.background);
+int PanelGrid::frameX(size_t i) const { return static_cast<int>(i % columns) * (frameWidth + gap); }
+int PanelGrid::frameY(size_t i) const { return static_cast<int>(i / columns) * (titleStrip + frameHeight + gap) + titleStrip; }
+
+PanelGrid panelGrid(size_t count, int width, int height, bool caption) {
+  PanelGrid g;
+  g.sheetWidth = width, g.sheetHeight = height;
+  const int n = static_cast<int>(std::max<size_t>(1, count));
+  g.columns = n <= 2 ? n : n <= 4 ? 2 : static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n))));
+  g.rows = (n + g.columns - 1) / g.columns;
+  g.textSize = std::max(1, static_cast<int>(std::ceil(kTextShare * height)));
+  g.titleStrip = static_cast<int>(std::ceil(1.6 * g.textSize));
+  g.gap = std::max(2, width / 240) / 2 * 2;
+  g.captionBand = caption ? static_cast<int>(std::ceil((kCaptionLines * 1.25 + 0.5) * g.textSize)) : 0;
+  g.frameWidth = evenDown((width - (g.columns - 1) * g.gap) / static_cast<double>(g.columns));
+  g.frameHeight = evenDown((height - g.captionBand - (g.rows - 1) * g.gap) / static_cast<double>(g.rows) - g.titleStrip);
+  if (g.frameWidth < render::scene::kMinFrameSide || g.frameHeight < render::scene::kMinFrameSide)
+    throw render::jobs::UsageError("--panels: " + std::to_string(count) + " panels do not fit on a " + std::to_string(width) + "x" +
+                                   std::to_string(height) + " sheet (" + std::to_string(g.columns) + " x " + std::to_string(g.rows) +
+                                   ", each frame " + std::to_string(g.frameWidth) + "x" + std::to_string(g.frameHeight) +
+                                   " px, under " + std::to_string(render::scene::kMinFrameSide) +
+                                   "); give a larger --size (at most 8192 a side)");
+  return g;
+}
+
+Image composePanels(const std::vector<Image>& frames, const PanelGrid& g, const std::vector<std::string>& titles,
+                    const std::string& caption, const Style& style, TextRenderer& text) {
+  Image out(g.sheetWidth, g.sheetHeight, style.background.withAlpha(1.0));
   const Color rule = style.background.mixed(style.role(Role::Label), 0.25);
-  for (int i = 0; i < n; ++i) {
-    const int x = i * (w + gap);
-    paste(frames[i], out, x, strip);
-    if (i < static_cast<int>(titles.size()))
-      text.draw(out, titles[i], x + 0.5 * w, 0.5 * (strip - titleSize) - 0.1 * titleSize, Anchor::TopCenter, titleSize,
-                style.role(Role::Label), style.background, 0);
-    if (i + 1 < n) {
-      const int rx = x + w + gap / 2 - 1;
-      for (int y = 0; y < out.height; ++y)
-        for (int dx = 0; dx < 2; ++dx) {
-          uint8_t* p = out.pixel(rx + dx, y);
-          p[0] = Color::byte(rule.r), p[1] = Color::byte(rule.g), p[2] = Color::byte(rule.b), p[3] = 255;
-        }
+  const Color& ink = style.role(Role::Label);
+  const auto widthAt = [&text](int size) { return [&text, size](const std::string& s) { return text.measure(s, size).width; }; };
+  for (size_t i = 0; i < frames.size(); ++i) {
+    const int x = g.frameX(i), y = g.frameY(i);
+    paste(frames[i], out, x, y);
+    if (i < titles.size()) {
+      // a title too long for its panel ends in "…" rather than run into the next
+      const auto line = wrapLines(titles[i], g.frameWidth - g.textSize, 1, widthAt(g.textSize));
+      if (!line.empty())
+        text.draw(out, line.front(), x + 0.5 * g.frameWidth, y - g.titleStrip + 0.5 * (g.titleStrip - g.textSize) - 0.1 * g.textSize,
+                  Anchor::TopCenter, g.textSize, ink, style.background, 0);
+    }
+  }
+  // rules between the columns and between the rows, in the gaps
+  const int gridBottom = g.sheetHeight - g.captionBand;
+  for (int c = 1; c < g.columns; ++c) {
+    const int rx = c * (g.frameWidth + g.gap) - g.gap / 2 - 1;
+    for (int y = 0; y < gridBottom; ++y)
+      for (int dx = 0; dx < 2; ++dx) fill(out, rx + dx, y, rule);
+  }
+  for (int r = 1; r < g.rows; ++r) {
+    const int ry = r * (g.titleStrip + g.frameHeight + g.gap) - g.gap / 2 - 1;
+    for (int x = 0; x < g.sheetWidth; ++x)
+      for (int dy = 0; dy < 2; ++dy) fill(out, x, ry + dy, rule);
+  }
+  // the caption once, under the grid, centered
+  if (!caption.empty() && g.captionBand > 0) {
+    const auto lines = wrapLines(caption, g.sheetWidth - 2 * g.textSize, kCaptionLines, widthAt(g.textSize));
+    double y = gridBottom + 0.25 * g.textSize;
+    for (const std::string& l : lines) {
+      text.draw(out, l, 0.5 * g.sheetWidth, y, Anchor::TopCenter, g.textSize, ink, style.background, 0);
+      y += 1.25 * g.textSize;
     }
   }
   return out;

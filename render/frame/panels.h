@@ -1,4 +1,13 @@
-// The poll slide: the same instant of every variant side by side (A | B | C), each under a title.
+// The poll slide: the same instant of every variant on one sheet made for a slide (1920 × 1080 by
+// default), in a grid: 2 variants side by side, 3-4 as 2 × 2, more in rows of ⌈√n⌉; each panel
+// under its title, one caption shared under the grid, every text at least a 40th of the sheet high.
+//
+//   ┌──────── title A ───────┬──────── title B ───────┐
+//   │        frame A         │        frame B         │
+//   ├──────── title C ───────┼────────────────────────┤
+//   │        frame C         │                        │
+//   └────────────────────────┴────────────────────────┘
+//     the caption, once
 #pragma once
 
 #include <string>
@@ -11,10 +20,32 @@
 namespace render::frame {
 using namespace render::draw;
 
-// the frames left to right, each under its title, on the style's background with a thin rule
-// between them; every frame must have the same size
-Image composePanels(const std::vector<Image>& frames, const std::vector<std::string>& titles, const Style& style,
-                    TextRenderer& text);
+// the default sheet, px: a 1080p slide
+inline constexpr int kSheetWidth = 1920, kSheetHeight = 1080;
+
+// where each panel goes on a sheet, px
+struct PanelGrid {
+  int sheetWidth = 0, sheetHeight = 0;
+  int columns = 0, rows = 0;
+  int frameWidth = 0, frameHeight = 0;  // of each panel's frame (even)
+  int textSize = 0;                     // every text of the sheet, px: at least sheetHeight / 40
+  int titleStrip = 0;                   // the band above each frame holding its title
+  int gap = 0;                          // between panels, with a rule in it
+  int captionBand = 0;                  // under the grid (0 without a caption)
+  // the top-left corner of panel i's frame
+  int frameX(size_t i) const;
+  int frameY(size_t i) const;
+};
+
+// the grid of `count` panels on a `width` × `height` sheet, a caption band under it when `caption`.
+// Throws render::jobs::UsageError when a panel's frame would be under 16 px a side
+PanelGrid panelGrid(size_t count, int width, int height, bool caption);
+
+// the frames in the grid, each under its title, the caption under them all (wrapped to the sheet,
+// at most two lines), on the style's background with thin rules between the panels; every frame
+// must be the grid's frame size
+Image composePanels(const std::vector<Image>& frames, const PanelGrid& grid, const std::vector<std::string>& titles,
+                    const std::string& caption, const Style& style, TextRenderer& text);
 
 // "A", "B", …, "Z", "AA", … : the letter of the i-th panel (from 0)
 std::string panelLetter(size_t i);

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "sim/debug/number_text.h"
+
 namespace render::frame {
 
 std::string signedNumber(double x, int decimals) {
@@ -13,16 +15,18 @@ std::string signedNumber(double x, int decimals) {
   return (x < 0.0 && !zero ? "\u2212" : "") + std::string(buf);
 }
 
+std::string numberText(double x) { return sim::debug::numberText(x); }
+
 std::string quantityText(const std::string& name, double x, const std::string& unit) {
-  return name + " = " + signedNumber(x) + " " + unit;
+  return name + " = " + numberText(x) + " " + unit;
 }
 
 std::string vectorText(const std::string& name, const sim::core::Vec2& v, const std::string& unit) {
-  return name + " = (" + signedNumber(v.x()) + ", " + signedNumber(v.y()) + ") " + unit;
+  return name + " = (" + numberText(v.x()) + ", " + numberText(v.y()) + ") " + unit;
 }
 
 std::string vectorText(const std::string& name, const Eigen::Vector3d& v, const std::string& unit) {
-  return name + " = (" + signedNumber(v.x()) + ", " + signedNumber(v.y()) + ", " + signedNumber(v.z()) + ") " + unit;
+  return name + " = (" + numberText(v.x()) + ", " + numberText(v.y()) + ", " + numberText(v.z()) + ") " + unit;
 }
 
 }  // namespace render::frame

@@ -1,5 +1,6 @@
-// Values as the lecture overlays write them: two decimals, a true minus sign (U+2212), the unit
-// after a space, e.g. "ω = −0.50 rad/s".
+// Values as the lecture overlays write them: three significant digits in plain notation (from 0.001
+// to 10,000), a true minus sign (U+2212), the unit after a space, e.g. "ω = −0.500 rad/s"
+// (sim::debug::numberText, the one format of every value a frame shows).
 #pragma once
 
 #include <string>
@@ -10,6 +11,8 @@ namespace render::frame {
 
 // x to `decimals` decimals, negative with "−"; −0.00 written 0.00
 std::string signedNumber(double x, int decimals = 2);
+// x to three significant digits (sim::debug::numberText)
+std::string numberText(double x);
 // "name = x unit"
 std::string quantityText(const std::string& name, double x, const std::string& unit);
 // "name = (x, y) unit"

@@ -131,7 +131,14 @@ void SceneRun::paint(const State& state, const std::vector<DrawList>& ghosts, Im
 
 Image SceneRun::titleCard() {
   if (!text_) throw std::logic_error("SceneRun::titleCard needs a text renderer");
-  return composeTitleCard(camera_.widthPx(), camera_.heightPx(), titleOf(def_), def_.model.description, style_, *text_);
+  return composeSceneCard(def_.render, def_.model.name, def_.model.description, false, camera_.widthPx(), camera_.heightPx(), style_,
+                          *text_);
+}
+
+Image SceneRun::answerCard() {
+  if (!text_) throw std::logic_error("SceneRun::answerCard needs a text renderer");
+  return composeSceneCard(def_.render, def_.model.name, def_.model.description, true, camera_.widthPx(), camera_.heightPx(), style_,
+                          *text_);
 }
 
 DrawList SceneRun::drawListAt(double t, int strobe, std::vector<PlacedText>* placed) {

@@ -53,6 +53,8 @@ class SceneRun {
   void drawListsAt(const std::vector<double>& instants, int strobe, const std::function<void(size_t, DrawList)>& shot);
   // the title card alone (title_card.h), the frame's size; needs the text renderer
   Image titleCard();
+  // the closing card with the poll's answer (`answer_card`), the frame's size; needs the text renderer
+  Image answerCard();
   // video frames say when they are slowed (empty: never), see FramePainter
   void showSlowMotion(FramePainter::SlowFactor factorAt) { painter_.showSlowMotion(std::move(factorAt)); }
 

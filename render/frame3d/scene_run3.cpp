@@ -73,8 +73,14 @@ void SceneRun3::frameAt(double t, render::draw::Image& frame) {
 
 render::draw::Image SceneRun3::titleCard() {
   if (!text_) throw std::logic_error("SceneRun3::titleCard needs a text renderer");
-  return render::frame::composeTitleCard(camera_.widthPx(), camera_.heightPx(), render::frame::titleOf(def_.render, def_.model.name),
-                                         def_.model.description, style_, *text_);
+  return render::frame::composeSceneCard(def_.render, def_.model.name, def_.model.description, false, camera_.widthPx(),
+                                         camera_.heightPx(), style_, *text_);
+}
+
+render::draw::Image SceneRun3::answerCard() {
+  if (!text_) throw std::logic_error("SceneRun3::answerCard needs a text renderer");
+  return render::frame::composeSceneCard(def_.render, def_.model.name, def_.model.description, true, camera_.widthPx(),
+                                         camera_.heightPx(), style_, *text_);
 }
 
 DrawList3 SceneRun3::drawListAt(double t) {

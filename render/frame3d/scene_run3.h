@@ -32,6 +32,7 @@ class SceneRun3 final : public render::frame::FrameSource {
   // the same into `frame`, its storage reused when it has the frame's size (a video's few buffers)
   void frameAt(double t, render::draw::Image& frame) override;
   render::draw::Image titleCard() override;
+  render::draw::Image answerCard() override;
   void showSlowMotion(std::function<double(double)> factorAt) override { painter_.showSlowMotion(std::move(factorAt)); }
   // the calls of the frame at time t, without GL (the draw-list level of the tests)
   DrawList3 drawListAt(double t);

@@ -82,6 +82,9 @@ video, img { display: block; width: 100%; height: auto; background: #fff; border
 figcaption { font-size: 14px; margin-top: 6px; }
 .question { color: #8a4b08; font-weight: bold; }
 .answer { color: #1e6b34; font-weight: bold; }
+.poll-question { max-width: 80ch; font-size: 18px; }
+details.poll-answer { margin-top: 16px; max-width: 80ch; }
+details.poll-answer summary { cursor: pointer; font-weight: bold; color: #1e6b34; }
 table { border-collapse: collapse; font-size: 14px; margin-top: 4px; }
 th, td { border-bottom: 1px solid var(--line); padding: 4px 10px; text-align: left; vertical-align: top; }
 td.number { text-align: right; font-variant-numeric: tabular-nums; white-space: nowrap; }
@@ -98,6 +101,7 @@ void writeSection(std::ostream& h, const PageScene& s) {
   h << "<section id=\"" << sectionId(r.scene) << "\">\n<h2>" << escapeHtml(r.title) << "</h2>\n";
   h << "<p class=\"muted\"><code>" << escapeHtml(r.file) << "</code></p>\n";
   if (!r.description.empty()) h << "<p class=\"description\">" << escapeHtml(r.description) << "</p>\n";
+  if (!r.question.empty()) h << "<p class=\"poll-question\"><strong>Question.</strong> " << escapeHtml(r.question) << "</p>\n";
 
   h << "<h3>" << (r.videos.size() == 1 ? "Video" : "Videos") << "</h3>\n<div class=\"media\">\n";
   for (size_t i = 0; i < r.videos.size(); ++i) {
@@ -118,14 +122,20 @@ void writeSection(std::ostream& h, const PageScene& s) {
     for (size_t i = 0; i < r.panels.size(); ++i) {
       const PanelRecord& p = r.panels[i];
       const MediaInfo& m = s.panels[i];
-      const char* role = p.question ? "question" : "answer";
+      // labelled "answer" only from the scene's `reveal` time on
+      const std::string role = p.question ? "question" : p.answer ? "answer" : "";
       h << "<figure>\n<a href=\"" << href(r, p.image) << "\"><img src=\"" << href(r, p.image) << "\" width=\"" << m.width
-        << "\" height=\"" << m.height << "\" alt=\"" << escapeHtml(r.title) << ", every variant side by side, " << role << " ("
-        << escapeHtml(p.when) << ")\"></a>\n<figcaption><span class=\"" << role << "\">" << role << "</span> · "
-        << escapeHtml(p.when) << " · <a href=\"" << href(r, p.image) << "\">" << escapeHtml(p.image) << "</a></figcaption>\n</figure>\n";
+        << "\" height=\"" << m.height << "\" alt=\"" << escapeHtml(r.title) << ", every variant side by side"
+        << (role.empty() ? "" : ", " + role) << " (" << escapeHtml(p.when) << ")\"></a>\n<figcaption>"
+        << (role.empty() ? "" : "<span class=\"" + role + "\">" + role + "</span> · ") << escapeHtml(p.when) << " · <a href=\"" << href(r, p.image) << "\">" << escapeHtml(p.image) << "</a></figcaption>\n</figure>\n";
     }
     h << "</div>\n";
   }
+
+  // the answer folded away until clicked (closed by default), so the page can be shown in class
+  if (!r.answer.empty())
+    h << "<details class=\"poll-answer\"><summary>Answer</summary>\n<p class=\"description\">" << escapeHtml(r.answer)
+      << "</p>\n</details>\n";
 
   if (!r.checks.empty()) {
     h << "<h3>Closed forms, checked</h3>\n<table>\n<thead><tr><th>variant</th><th>t (s)</th><th>quantity</th>"

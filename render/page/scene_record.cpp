@@ -82,6 +82,7 @@ void writeSceneRecord(const SceneRecord& r, const std::string& path) {
   AtomicFile file(path);
   JsonWriter j(file.stream());
   j.beginObject().field("scene", r.scene).field("file", r.file).field("title", r.title).field("description", r.description);
+  j.field("question", r.question).field("answer", r.answer);
   j.field("seconds", r.seconds);
   j.key("videos").beginArray();
   for (const VideoRecord& v : r.videos)
@@ -89,7 +90,7 @@ void writeSceneRecord(const SceneRecord& r, const std::string& path) {
   j.endArray();
   j.key("panels").beginArray();
   for (const PanelRecord& p : r.panels)
-    j.beginObject().field("image", p.image).field("when", p.when).field("question", p.question).endObject();
+    j.beginObject().field("image", p.image).field("when", p.when).field("question", p.question).field("answer", p.answer).endObject();
   j.endArray();
   j.key("checks").beginArray();
   for (const CheckRecord& c : r.checks) {
@@ -124,11 +125,14 @@ SceneRecord readSceneRecord(const std::string& path) {
   r.file = in.text(root, "file");
   r.title = in.text(root, "title");
   r.description = in.text(root, "description");
+  // a record written before polls had a question and an answer has neither
+  r.question = root["question"] ? in.text(root, "question") : "";
+  r.answer = root["answer"] ? in.text(root, "answer") : "";
   r.seconds = in.number(root, "seconds");
   for (const YAML::Node& v : in.field(root, "videos", YAML::NodeType::Sequence))
     r.videos.push_back({in.text(v, "variant"), in.fileName(v, "video"), in.fileName(v, "poster"), in.number(v, "fps")});
   for (const YAML::Node& p : in.field(root, "panels", YAML::NodeType::Sequence))
-    r.panels.push_back({in.fileName(p, "image"), in.text(p, "when"), in.flag(p, "question")});
+    r.panels.push_back({in.fileName(p, "image"), in.text(p, "when"), in.flag(p, "question"), p["answer"] && in.flag(p, "answer")});
   for (const YAML::Node& c : in.field(root, "checks", YAML::NodeType::Sequence))
     r.checks.push_back({in.text(c, "variant"), in.number(c, "time"), in.text(c, "quantity"), in.numbers(c, "expected"),
                         in.numbers(c, "actual"), in.number(c, "error"), in.number(c, "tolerance")});

@@ -23,7 +23,8 @@ struct VideoRecord {
 struct PanelRecord {
   std::string image;  // file name in the scene's folder
   std::string when;   // "t = 2.5 s", "impact 1"
-  bool question = false;  // the poll's question (the scene before anything happens) or its answer
+  bool question = false;  // the poll's question: the scene before anything happens (t = 0)
+  bool answer = false;    // the poll's answer: at or after the scene's `reveal` time (never by default)
 };
 
 // an `expect` entry's quantity with the value the run measured (as `rigidreel check` prints it)
@@ -40,6 +41,7 @@ struct SceneRecord {
   std::string scene;        // its name: the folder
   std::string file;         // the scene file it came from
   std::string title, description;
+  std::string question, answer;  // the poll's (`question:`, `answer:`); the page folds the answer away
   double seconds = 0.0;     // the job's wall time
   std::vector<VideoRecord> videos;
   std::vector<PanelRecord> panels;

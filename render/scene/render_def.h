@@ -114,13 +114,27 @@ struct PanelsDef {
   int line = 0, column = 0;   // where `panels:` is written (1-based); 0 when it is the default
 };
 
+// a poll's question apart from its answer (scenes/README.md): the title card shows the question, and
+// the answer is shown only where the scene asks (a closing card, panels labelled from `reveal` on)
+struct PollDef {
+  std::string question;      // top-level (or a variant's) `question:`; empty: the card shows the description
+  std::string answer;        // `answer:`; never drawn but on the answer card, never on the page but folded
+  double answerCard = 0.0;   // s of a closing card with the answer (`render: {answer_card}`); 0: none
+  double reveal = -1.0;      // s from which a panel is labelled "answer" (`render: {reveal}`); < 0: never
+  // where the card's text is written (the question, else the description), for a card that cannot fit
+  std::string file;
+  int line = 0, column = 0;
+  int answerLine = 0, answerColumn = 0;  // where `answer:` is written
+  bool revealed(double t) const { return reveal >= 0.0 && t >= reveal; }
+};
+
 struct RenderDef {
   std::vector<BodyLook> bodies;        // by body index of the model
   int width = 1280;                    // pixels
   int height = 720;
   double fps = 60.0;                   // frames per second of a video
   std::string background = "#ffffff";
-  double lineWidth = 2.0;              // pixels, of outlines, arrows and segments
+  double lineWidth = 0.0;              // pixels, of outlines, arrows and segments; 0: lineWidthFor's default
   double fontSize = 0.0;               // pixels; 0: the frame height / 36, at least 11
   ColorsDef colors;
   CameraDef camera;
@@ -144,6 +158,7 @@ struct RenderDef {
   std::vector<SlowMotionDef> slowMotion;
   OverlaysDef overlays;                // the lecture overlays
   PanelsDef panels;                    // `rigidreel lecture`'s poll panels
+  PollDef poll;                        // question, answer, answer card, reveal
 };
 
 }  // namespace render::scene

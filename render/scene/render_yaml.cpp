@@ -108,7 +108,7 @@ void readBlock(const YAML::Node& node, const Reader& reader, RenderDef& out) {
                           "contact_hold", "impulses", "impulse_scale", "velocities", "velocity_scale", "trails", "sat",
                           "strobe", "springs", "labels", "time", "panels",
                           // video timing and text
-                          "title", "title_card", "caption", "slow_motion",
+                          "title", "title_card", "caption", "slow_motion", "answer_card", "reveal",
 
                           // the lecture overlays, read by readOverlays
                           "arrows", "force_scale", "momentum_scale", "impact_values", "energy", "momentum", "sat_axes"},
@@ -209,6 +209,7 @@ RenderDef readRender(const sim::yaml::SceneSource& source, const sim::scene::Sce
       readOverlays(block, reader, model, out.overlays);
     }
     readPanels(block ? block["panels"] : block, reader, model.duration, model.variantNames.size(), out.panels);
+    readPoll(source.root, block, reader, source.file, model.duration, out.poll);
     return out;
   });
 }

@@ -12,6 +12,8 @@ namespace render::scene {
 // the keys of a scene file this reader reads: `render` at the top level, these in each body
 inline constexpr const char* kRenderKey = "render";
 inline const sim::yaml::Keys kBodyKeys = {"color", "label"};
+// the poll's texts at the top level (and in a variant), read here too (poll_yaml.cpp)
+inline const sim::yaml::Keys kPollKeys = {"question", "answer"};
 
 // the look of the scene in `source`, whose model (read before) is `model`
 RenderDef readRender(const sim::yaml::SceneSource& source, const sim::scene::SceneDef& model);
@@ -30,6 +32,11 @@ std::vector<BodyLook> readLooks(const YAML::Node& bodies, const sim::yaml::Reade
 // without variants fails, since there is nothing to put side by side
 void readTiming(const YAML::Node& node, const sim::yaml::Reader& reader, RenderDef& out);
 void readOverlays(const YAML::Node& node, const sim::yaml::Reader& reader, const sim::scene::SceneDef& scene, OverlaysDef& out);
+// the poll (poll_yaml.cpp): `question:` and `answer:` of the scene's `root`, `answer_card` and
+// `reveal` (within [0, duration]) of its render: `block` (may be null); `file` is named when the
+// title card cannot fit its text
+void readPoll(const YAML::Node& root, const YAML::Node& block, const sim::yaml::Reader& reader, const std::string& file,
+              double duration, PollDef& out);
 void readPanels(const YAML::Node& node, const sim::yaml::Reader& reader, double duration, size_t variants, PanelsDef& out);
 
 }  // namespace render::scene

@@ -30,9 +30,15 @@ draw::Style makeStyle(const RenderDef& r, const std::vector<bool>& staticBodies,
     else if (staticBodies[i]) s.bodies.push_back(s.role(Role::StaticBody));
     else s.bodies.push_back(Color::parse(r.colors.palette[next++ % r.colors.palette.size()]));
   }
-  s.lineWidth = r.lineWidth;
+  s.lineWidth = lineWidthFor(r, frameHeight);
   s.fontSize = fontSizeFor(r, frameHeight);
   return s;
+}
+
+double lineWidthFor(const RenderDef& r, int frameHeight) {
+  if (r.lineWidth > 0) return r.lineWidth;
+  // 3 px at 1080p, read on a projector; 2 px at 720p, scaled with the frame
+  return frameHeight / 360.0;
 }
 
 int fontSizeFor(const RenderDef& r, int frameHeight) {

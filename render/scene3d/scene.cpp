@@ -74,7 +74,7 @@ void readBlock(const YAML::Node& node, const Reader3& r, const sim::scene3d::Sce
                           "strobe", "force_scale", "momentum_scale", "impact_values"})
     if (node[key]) r.fail(node[key], std::string("'") + key + kOnly2d);
   r.checkKeys(node, {"size", "fps", "background", "line_width", "font_size", "colors", "camera", "trails", "springs",
-                     "labels", "time", "panels", "title", "title_card", "caption", "slow_motion", "arrows", "energy",
+                     "labels", "time", "panels", "title", "title_card", "caption", "slow_motion", "answer_card", "reveal", "arrows", "energy",
                      "momentum", "omega_scale", "angular_momentum_scale", "velocity_scale", "world_axes"},
               "render");
   render::scene::RenderDef& shared = out.render;
@@ -104,6 +104,7 @@ Scene readScene(const sim::yaml::SceneSource& source, const sim::yaml::OtherKeys
   // the model reads its keys and leaves ours alone
   sim::yaml::OtherKeys keys = others;
   keys.scene.emplace_back(render::scene::kRenderKey);
+  keys.scene.insert(keys.scene.end(), render::scene::kPollKeys.begin(), render::scene::kPollKeys.end());
   keys.body.insert(keys.body.end(), render::scene::kBodyKeys.begin(), render::scene::kBodyKeys.end());
   Scene s;
   s.model = sim::yaml3d::readModel(source, keys);
@@ -116,6 +117,7 @@ Scene readScene(const sim::yaml::SceneSource& source, const sim::yaml::OtherKeys
     if (block) readBlock(block, r, s.model, s);
     render::scene::readPanels(block ? block["panels"] : block, r, s.model.duration, s.model.variantNames.size(),
                               s.render.panels);
+    render::scene::readPoll(source.root, block, r, source.file, s.model.duration, s.render.poll);
     if (s.render.panels.impacts) {
       std::ostringstream times;
       times << "[0, " << s.model.duration << "]";

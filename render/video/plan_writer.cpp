@@ -133,7 +133,7 @@ void writeVideo(const PlannedVariantOf<D>& v, const VideoOutputOf<D>& out, bool 
 // (SceneRun::framesAt), then each shot is written, alone or with the other variants beside it
 // (`trace` follows the first run, taken on to its end)
 void writeStills(const RenderPlan& plan, const Stills& stills, const Wrote& wrote, TraceWriter* trace) {
-  const render::scene::Scene& first = plan.variants.front().scene;
+  const render::scene::Scene& first = stills.scenes.front();
   GlContext gl(stills.width, stills.height);
   TextRenderer text;
   for (size_t from = 0; from < stills.shots.size(); from += kShotsPerRun) {
@@ -143,7 +143,7 @@ void writeStills(const RenderPlan& plan, const Stills& stills, const Wrote& wrot
       const PlannedVariant& v = plan.variants[i];
       std::vector<double> instants;
       for (size_t k = 0; k < count; ++k) instants.push_back(stills.shots[from + k].instants[i]);
-      SceneRun run(v.scene, stills.camera, stills.surveys[i], &gl, &text);
+      SceneRun run(stills.scenes[i], stills.camera, stills.surveys[i], &gl, &text);
       TraceWriter* const traced = from == 0 && i == 0 ? trace : nullptr;
       follow(run, traced);
       drawing<Planar>(v, DrawStage::Stills, [&] {
@@ -154,7 +154,8 @@ void writeStills(const RenderPlan& plan, const Stills& stills, const Wrote& wrot
     for (size_t k = 0; k < count; ++k) {
       const StillOutput& shot = stills.shots[from + k];
       if (stills.panels)
-        writePng(composePanels(frames[k], shot.titles, makeStyle(first, first.render.height), text), shot.path);
+        writePng(composePanels(frames[k], stills.grid, shot.titles, stills.caption, makeStyle(first, first.render.height), text),
+                 shot.path);
       else
         writePng(frames[k].front(), shot.path);
       wrote(shot.path);
@@ -166,14 +167,14 @@ void writeStills(const RenderPlan& plan, const Stills& stills, const Wrote& wrot
 // side by side
 // (`trace` follows the first run, taken on to its end)
 void writeStills(const RenderPlan3& plan, const Stills3& stills, const Wrote& wrote, TraceWriter3* trace) {
-  const render::scene3d::Scene& first = plan.variants.front().scene;
+  const render::scene3d::Scene& first = stills.scenes.front();
   GlContext gl(stills.width, stills.height);
   TextRenderer text;
   for (const StillOutput& shot : stills.shots) {
     std::vector<Image> frames;
     for (size_t i = 0; i < plan.variants.size(); ++i) {
       const PlannedVariant3& v = plan.variants[i];
-      render::frame3d::SceneRun3 run(v.scene, stills.camera, stills.surveys[i], &gl, &text);
+      render::frame3d::SceneRun3 run(stills.scenes[i], stills.camera, stills.surveys[i], &gl, &text);
       TraceWriter3* const traced = &shot == &stills.shots.front() && i == 0 ? trace : nullptr;
       follow(run, traced);
       drawing<Spatial>(v, DrawStage::Stills, [&] {
@@ -182,7 +183,8 @@ void writeStills(const RenderPlan3& plan, const Stills3& stills, const Wrote& wr
       });
     }
     if (stills.panels)
-      writePng(composePanels(frames, shot.titles, render::scene3d::makeStyle(first, first.render.height), text), shot.path);
+      writePng(composePanels(frames, stills.grid, shot.titles, stills.caption, render::scene3d::makeStyle(first, first.render.height), text),
+               shot.path);
     else
       writePng(frames.front(), shot.path);
     wrote(shot.path);

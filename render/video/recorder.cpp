@@ -117,6 +117,7 @@ class SceneRunFrames final : public FrameSource {
   Image frameAt(double t) override { return run_.frameAt(t); }
   void frameAt(double t, Image& frame) override { run_.frameAt(t, frame); }
   Image titleCard() override { return run_.titleCard(); }
+  Image answerCard() override { return run_.answerCard(); }
   void showSlowMotion(std::function<double(double)> factorAt) override { run_.showSlowMotion(std::move(factorAt)); }
 
  private:
@@ -135,7 +136,7 @@ void record(FrameSource& run, const TimeMap& map, double fps, const std::vector<
             const std::function<void(long)>& progress) {
   const long count = map.frameCount(fps);
   run.showSlowMotion([&map](double t) { return map.factorAt(t); });
-  Image card;
+  Image card, answer;
   FrameQueue queue;
   std::thread writer([&] { queue.drain(sinks); });
   std::exception_ptr failure;
@@ -146,11 +147,13 @@ void record(FrameSource& run, const TimeMap& map, double fps, const std::vector<
       // a snapshot asked for at that time
       const double u = static_cast<double>(k) / fps;
       if (map.inTitleCard(u) && card.rgba.empty()) card = run.titleCard();
+      const bool answered = !map.inTitleCard(u) && map.inAnswerCard(u);
+      if (answered && answer.rgba.empty()) answer = run.answerCard();
       Image frame = queue.take();
-      // the title card's frames are the card itself, never copied (3.7 MB a 720p frame)
+      // a card's frames are the card itself, never copied (3.7 MB a 720p frame)
       const bool titled = map.inTitleCard(u);
-      if (!titled) run.frameAt(map.simTime(u), frame);
-      if (!queue.push(k, std::move(frame), titled ? &card : nullptr)) break;
+      if (!titled && !answered) run.frameAt(map.simTime(u), frame);
+      if (!queue.push(k, std::move(frame), titled ? &card : answered ? &answer : nullptr)) break;
       if (progress) progress(k + 1);
     }
   } catch (...) {

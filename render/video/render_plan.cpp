@@ -4,7 +4,10 @@
 #include <filesystem>
 
 #include "render/frame/energy_panel.h"
+#include "render/frame/caption.h"
+#include "render/frame/panel_camera.h"
 #include "render/frame/panels.h"
+#include "render/frame/title_card.h"
 #include "render/frame3d/energy3.h"
 #include "render/jobs/exit_status.h"
 #include "render/video/output_names.h"
@@ -64,6 +67,17 @@ RenderPlanOf<D> surveyed(std::vector<typename D::Scene> scenes, const std::optio
   return plan;
 }
 
+// a card that cannot show its whole text (its font shrunk to the least) is refused before anything
+// renders, at the text's line
+template <class Scene>
+void checkCards(const Scene& scene) {
+  const render::scene::RenderDef& r = scene.render;
+  if (!(r.titleCard > 0.0) && !(r.poll.answerCard > 0.0)) return;
+  TextRenderer text;
+  if (r.titleCard > 0.0) sceneCard(r, scene.model.name, scene.model.description, false, r.width, r.height, text);
+  if (r.poll.answerCard > 0.0) sceneCard(r, scene.model.name, scene.model.description, true, r.width, r.height, text);
+}
+
 // the video of variant `i` over `duration` s of simulation, and its poster at the end
 template <class D>
 VideoOutputOf<D> videoOf(const RenderPlanOf<D>& plan, size_t i, const std::string& root, double duration, VideoFormat format,
@@ -72,6 +86,7 @@ VideoOutputOf<D> videoOf(const RenderPlanOf<D>& plan, size_t i, const std::strin
   const render::scene::RenderDef& r = v.scene.render;
   const std::string directory = directoryOf(root, v.scene.model);
   const std::string base = directory + "/" + baseOf(v.scene.model);
+  checkCards(v.scene);
   // frame k at the simulation time of video time k / fps, for every k / fps < the video's length:
   // the title card, then `duration` stretched by the slow-motion windows (exactly `duration` without)
   TimeMap map = timeMapFor(r, v.survey.impactTimes, duration);
@@ -100,6 +115,8 @@ struct StillSpec {
   std::optional<int> strobe;
   std::string root;
   std::string file;  // named in messages
+  std::optional<FrameSize> sheet;  // of a panel sheet: 1920 × 1080 unless asked
+  std::string baseTitle;           // the base scene's render: {title}: a variant's own differs from it
 };
 
 // shot by shot, each variant at the same times, each inside every variant's duration
@@ -137,28 +154,60 @@ std::vector<std::vector<double>> atImpacts(const RenderPlanOf<D>& plan, const st
   return instants;
 }
 
-// one camera for all panels, so that the variants compare at the same scale: over every variant's
-// run, beside the widest energy panel among them
+// the variant beside the widest energy panel: the shared camera leaves its band free
 template <class D>
-typename D::Camera sharedCamera(const RenderPlanOf<D>& plan, const std::vector<typename D::Survey>& surveys) {
-  std::remove_cvref_t<decltype(surveys.front().bounds)> bounds;
+size_t widestPanel(const std::vector<typename D::Scene>& scenes, const std::vector<typename D::Survey>& surveys) {
   size_t widest = 0;
   double widestBand = -1.0;
-  for (size_t i = 0; i < plan.variants.size(); ++i) {
-    bounds.add(surveys[i].bounds);
-    const double band = panelBand(plan.variants[i].scene, surveys[i]);
-    if (band > widestBand) widest = i, widestBand = band;
-  }
-  return cameraFor(plan.variants[widest].scene, surveys[widest], bounds);
+  for (size_t i = 0; i < scenes.size(); ++i)
+    if (const double band = panelBand(scenes[i], surveys[i]); band > widestBand) widest = i, widestBand = band;
+  return widest;
 }
 
-// "A: center", or just "A" for a variant named A; at an impact, its time too
-template <class Model>
-std::string panelTitle(size_t i, const Model& model, bool impacts, double t) {
+// one camera for all panels, so that the variants compare at the same scale: over every variant's
+// run, beside the widest energy panel among them; a 2D panel sheet's also holds every arrow, dot and
+// body each panel draws over the run (panel_camera.h)
+Planar::Camera sharedCamera(const std::vector<Planar::Scene>& scenes, const std::vector<Planar::Survey>& surveys, bool panels) {
+  const size_t widest = widestPanel<Planar>(scenes, surveys);
+  if (panels) return panelCamera(scenes, surveys, widest);
+  Bounds bounds;
+  for (const Planar::Survey& s : surveys) bounds.add(s.bounds);
+  return cameraFor(scenes[widest], surveys[widest], bounds);
+}
+Spatial::Camera sharedCamera(const std::vector<Spatial::Scene>& scenes, const std::vector<Spatial::Survey>& surveys, bool) {
+  const size_t widest = widestPanel<Spatial>(scenes, surveys);
+  std::remove_cvref_t<decltype(surveys.front().bounds)> bounds;
+  for (const Spatial::Survey& s : surveys) bounds.add(s.bounds);
+  return cameraFor(scenes[widest], surveys[widest], bounds);
+}
+
+// the caption a scene's frames show, in each dimension
+std::string captionFor(const Planar::Scene& s) { return captionOf(s); }
+std::string captionFor(const Spatial::Scene& s) { return captionOf(s.render, s.model.description); }
+
+// "A: center", or just "A" for a variant named A; "A: Its title" for a variant that gives its own
+// `render: {title}`; at an impact, its time too
+template <class Scene>
+std::string panelTitle(size_t i, const Scene& variant, const std::string& baseTitle, bool impacts, double t) {
   std::string title = panelLetter(i);
-  if (model.variant != title) title += ": " + model.variant;
+  const std::string& own = variant.render.title;
+  if (!own.empty() && own != baseTitle) title += ": " + own;
+  else if (variant.model.variant != title) title += ": " + variant.model.variant;
   if (impacts) title += "  (t = " + timeForName(t) + " s)";
   return title;
+}
+
+// a variant as a panel of a sheet draws it: its frame the grid's, its text the sheet's (at least a
+// 40th of the sheet high), its caption left to the sheet, once under the grid
+template <class Scene>
+Scene asPanel(Scene scene, const PanelGrid& grid) {
+  scene.render.width = grid.frameWidth, scene.render.height = grid.frameHeight;
+  scene.render.fontSize = std::max(scene.render.fontSize, static_cast<double>(grid.textSize));
+  // lines as thick as on a frame the sheet's height (3 px at 1080p), not the panel's
+  if (!(scene.render.lineWidth > 0.0)) scene.render.lineWidth = grid.sheetHeight / 360.0;
+  scene.render.caption.clear();
+  scene.render.captionFromDescription = false;
+  return scene;
 }
 
 // the stills of every variant of the plan, at the times or impacts of `spec`
@@ -166,22 +215,32 @@ template <class D>
 StillsOf<D> stillsOf(const RenderPlanOf<D>& plan, const StillSpec& spec) {
   const typename D::Scene& first = plan.variants.front().scene;
   std::vector<typename D::Survey> surveys;
-  for (const PlannedVariantOf<D>& v : plan.variants) surveys.push_back(v.survey);
-  // side by side, the variants' arrows and energy bars are drawn at one scale too
+  std::vector<typename D::Scene> scenes;
+  for (const PlannedVariantOf<D>& v : plan.variants) surveys.push_back(v.survey), scenes.push_back(v.scene);
+  // on a sheet, the variants' arrows and energy bars are drawn at one scale too
+  PanelGrid grid;
+  std::string caption;
   if (spec.panels) {
     std::vector<typename D::Survey*> all;
     for (typename D::Survey& survey : surveys) all.push_back(&survey);
     shareScales(all);
+    caption = captionFor(first);
+    grid = panelGrid(scenes.size(), spec.sheet ? spec.sheet->width : kSheetWidth, spec.sheet ? spec.sheet->height : kSheetHeight,
+                     !caption.empty());
+    for (typename D::Scene& scene : scenes) scene = asPanel(std::move(scene), grid);
   }
   const int strobe = spec.strobe.value_or(first.render.strobe);
   const std::vector<std::vector<double>> instants = spec.impacts ? atImpacts(plan, spec.file) : atTimes(plan, spec.times);
   StillsOf<D> s{.directory = directoryOf(spec.root, first.model),
+                .scenes = scenes,
                 .surveys = surveys,
                 .panels = spec.panels,
+                .grid = grid,
+                .caption = caption,
                 .strobe = strobe,
-                .width = first.render.width,
-                .height = first.render.height,
-                .camera = sharedCamera(plan, surveys),
+                .width = scenes.front().render.width,
+                .height = scenes.front().render.height,
+                .camera = sharedCamera(scenes, surveys, spec.panels),
                 .shots = {}};
   std::vector<double> firsts;
   for (const std::vector<double>& shot : instants) firsts.push_back(shot[0]);
@@ -193,7 +252,7 @@ StillsOf<D> stillsOf(const RenderPlanOf<D>& plan, const StillSpec& spec) {
     if (spec.panels) {
       out.path += panelsFileName(first.model.name, spec.impacts ? impact : at, strobe);
       for (size_t i = 0; i < plan.variants.size(); ++i)
-        out.titles.push_back(panelTitle(i, plan.variants[i].scene.model, spec.impacts, instants[shot][i]));
+        out.titles.push_back(panelTitle(i, plan.variants[i].scene, spec.baseTitle, spec.impacts, instants[shot][i]));
     } else {
       out.path += baseOf(first.model) + impact + at + strobeSuffix(strobe) + ".png";
     }
@@ -247,15 +306,19 @@ RenderPlanOf<D> planVideosOf(const LoadVariantOf<D>& load, const VideoRequest& r
 template <class D>
 RenderPlanOf<D> planStillsOf(const LoadVariantOf<D>& load, const StillRequest& r) {
   std::vector<typename D::Scene> scenes;
+  std::string baseTitle;
   if (r.panels) {
-    const std::vector<std::string> names = load("").model.variantNames;
+    const typename D::Scene base = load("");
+    const std::vector<std::string> names = base.model.variantNames;
     if (names.empty()) throw UsageError("--panels: " + r.file + " has no variants to put side by side");
+    baseTitle = base.render.title;
     for (const std::string& name : names) scenes.push_back(load(name));
   } else {
     scenes.push_back(load(r.variant));
   }
-  RenderPlanOf<D> plan = surveyed<D>(std::move(scenes), r.size, std::nullopt, -1.0);
-  plan.stills = stillsOf(plan, {r.times, r.impacts, r.panels, r.strobe, r.root, r.file});
+  // --size is a single frame's, or with --panels the whole sheet's
+  RenderPlanOf<D> plan = surveyed<D>(std::move(scenes), r.panels ? std::nullopt : r.size, std::nullopt, -1.0);
+  plan.stills = stillsOf(plan, {r.times, r.impacts, r.panels, r.strobe, r.root, r.file, r.panels ? r.size : std::nullopt, baseTitle});
   return plan;
 }
 
@@ -271,7 +334,8 @@ RenderPlanOf<D> planLectureOf(const LoadVariantOf<D>& load, const LectureRequest
     plan.videos.push_back(videoOf(plan, i, r.root, plan.variants[i].scene.model.duration, VideoFormat::Mp4, false));
   // then the poll panels, as `snapshot --panels` draws them
   const render::scene::PanelsDef panels = lecturePanels(base, plan, r.file);
-  if (!panels.times.empty() || panels.impacts) plan.stills = stillsOf(plan, {panels.times, panels.impacts, true, std::nullopt, r.root, r.file});
+  if (!panels.times.empty() || panels.impacts)
+    plan.stills = stillsOf(plan, {panels.times, panels.impacts, true, std::nullopt, r.root, r.file, r.size, base.render.title});
   return plan;
 }
 

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "render/draw/camera.h"
+#include "render/frame/panels.h"
 #include "render/frame/survey.h"
 #include "render/frame3d/survey3.h"
 #include "render/scene/scene.h"
@@ -88,19 +89,22 @@ struct VideoOutputOf {
 struct StillOutput {
   std::string path;
   std::vector<double> instants;     // s, one per variant of the stills
-  std::vector<std::string> titles;  // the panels' titles, "A: center", … (empty for one variant)
+  std::vector<std::string> titles;  // the panels' titles, "A: center", "B: Off center", … (empty for one variant)
 };
 
-// still images of every variant of the plan (left to right), drawn alike: one camera, one strobe and
-// (side by side) one scale for arrows and bars
+// still images of every variant of the plan, drawn alike: one camera, one strobe and (on a panel
+// sheet) one scale for arrows and bars
 template <class D>
 struct StillsOf {
   std::string directory;                    // <root>/<scene>
+  std::vector<typename D::Scene> scenes;    // each variant as its stills draw it (a panel: its frame's size, its text, no caption)
   std::vector<typename D::Survey> surveys;  // the variants', side by side with scales shared (shareScales)
-  bool panels = false;                      // the variants side by side in each image
+  bool panels = false;                      // the variants on one sheet in each image (panels.h)
+  PanelGrid grid;                           // that sheet's layout (panels only)
+  std::string caption;                      // under the sheet's grid, once (panels only)
   int strobe = 0;                           // (2D only)
   int width = 0, height = 0;                // of one variant's frame
-  typename D::Camera camera;                // over every variant's run, beside the widest energy panel
+  typename D::Camera camera;                // over every variant's run and (2D panels) all each panel draws
   std::vector<StillOutput> shots;
 };
 
@@ -160,7 +164,7 @@ struct StillRequest {
   bool impacts = false;
   bool panels = false;
   std::optional<int> strobe = {};  // ghosts, instead of the scene's
-  std::optional<FrameSize> size = {};
+  std::optional<FrameSize> size = {};  // of the frame; with `panels`, of the whole sheet (default 1920 × 1080)
 };
 
 // what `lecture` asks for a scene: every variant's video and poster, then its `panels:`

@@ -26,9 +26,9 @@ std::vector<SlowWindow> mergeWindows(std::vector<SlowWindow> windows, double dur
   return merged;
 }
 
-TimeMap::TimeMap(double duration, double titleCard, std::vector<SlowWindow> windows)
-    : duration_(duration), titleCard_(titleCard), windows_(mergeWindows(std::move(windows), duration)) {
-  length_ = titleCard_ + duration_;
+TimeMap::TimeMap(double duration, double titleCard, std::vector<SlowWindow> windows, double answerCard)
+    : duration_(duration), titleCard_(titleCard), answerCard_(answerCard), windows_(mergeWindows(std::move(windows), duration)) {
+  length_ = titleCard_ + duration_ + answerCard_;
   for (const SlowWindow& w : windows_) length_ += (w.factor - 1.0) * (w.to - w.from);
 }
 
@@ -82,7 +82,7 @@ TimeMap timeMapFor(const render::scene::RenderDef& render, const std::vector<dou
     else
       windows.push_back({s.from, s.to, s.factor});
   }
-  return TimeMap(duration, render.titleCard, std::move(windows));
+  return TimeMap(duration, render.titleCard, std::move(windows), render.poll.answerCard);
 }
 
 }  // namespace render::video

@@ -5,6 +5,8 @@
 #include <limits>
 
 #include "sim/collision/collide.h"
+#include "sim/core/settings.h"
+#include "sim/debug/number_text.h"
 
 namespace sim::debug {
 using namespace sim::collision;
@@ -13,11 +15,17 @@ namespace {
 
 // a separation written beside edge e of `polygon`, `labelOffset` inside it: the other polygon comes
 // from outside, and would cover it
-void labelEdge(const Body& polygon, int body, int e, const char* text, double labelOffset, DebugDraw& draw) {
+void labelEdge(const Body& polygon, int body, int e, const std::string& text, double labelOffset, DebugDraw& draw) {
   const std::vector<Vec2>& v = polygon.shape.vertices;
   const Vec2 p = polygon.pose().toWorld(v[e]), q = polygon.pose().toWorld(v[(e + 1) % v.size()]);
   const Vec2 outward = polygon.q().apply(polygon.shape.normals[e]);
   draw.text(0.5 * (p + q) - labelOffset * outward, text, {DrawRole::Label, body, 1.0});
+}
+
+// a separation in m as a slide writes it: 0 within the event method's touching tolerance of the
+// scene (a gap of round-off, 5.84e-13, is touching), else three significant digits
+std::string separationText(const World& world, double separation) {
+  return numberText(separation, 3, sim::core::settings::kTouchingTolerance * world.sceneSize()) + " m";
 }
 
 // every edge of polygons `a` and `b` labeled with its separation, except edge `skipEdge` of `a`
@@ -27,9 +35,7 @@ void describeCandidateAxes(const World& world, int a, int b, int skipEdge, doubl
     const Body &polygon = world.bodies[i], &other = world.bodies[i == a ? b : a];
     for (int e = 0; e < static_cast<int>(polygon.shape.vertices.size()); ++e) {
       if (i == a && e == skipEdge) continue;
-      char text[32];
-      std::snprintf(text, sizeof text, "%.3g m", edgeSeparation(polygon, e, other));
-      labelEdge(polygon, i, e, text, labelOffset, draw);
+      labelEdge(polygon, i, e, separationText(world, edgeSeparation(polygon, e, other)), labelOffset, draw);
     }
   }
 }
@@ -61,9 +67,7 @@ void describeSeparatingAxes(const World& world, double maxGap, double labelOffse
       const int e = f.referenceEdge;
       draw.segment(ref.pose().toWorld(v[e]), ref.pose().toWorld(v[(e + 1) % v.size()]), {DrawRole::ReferenceEdge, refIndex, 1.0});
       draw.point(other.pose().toWorld(other.shape.vertices[f.incidentVertex]), {DrawRole::IncidentVertex, otherIndex, 1.0});
-      char text[64];
-      std::snprintf(text, sizeof text, "separation %.3g m", f.separation);
-      labelEdge(ref, refIndex, e, text, labelOffset, draw);
+      labelEdge(ref, refIndex, e, "separation " + separationText(world, f.separation), labelOffset, draw);
       if (everyAxis) describeCandidateAxes(world, refIndex, otherIndex, e, labelOffset, draw);
     }
 }

@@ -16,7 +16,7 @@ SMALL=(--size 160x90 --fps 10)
 mkdir pack
 cp "$SRC/scenes/poll_bar_impulse.yaml" pack/a_poll.yaml
 cp "$SRC/scenes/three_collisions_poll.yaml" pack/b_three.yaml
-printf 'render: {panels: impacts}\n' >>pack/b_three.yaml
+printf 'render: {panels: impacts, reveal: 0}\n' >>pack/b_three.yaml
 cp "$SRC/scenes/two_bodies.yaml" pack/c_two.yaml
 
 run lecture pack "${SMALL[@]}" -o o --list

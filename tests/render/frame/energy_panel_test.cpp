@@ -46,8 +46,8 @@ TEST_CASE("the panel: ½mv² and ½Iω² of each moving body, the total, then p 
   std::vector<std::string> texts;
   for (const auto& c : list.calls())
     if (c.kind == DrawList::Kind::Text) texts.push_back(c.text);
-  CHECK(texts == std::vector<std::string>{"ball ½mv² = 9.00 J", "ball ½Iω² = 2.00 J", "E = 11.00 J",
-                                           "p = (6.00, 0.00) kg·m/s", "L = −4.00 kg·m²/s"});
+  CHECK(texts == std::vector<std::string>{"ball ½mv² = 9.00 J", "ball ½Iω² = 2.00 J", "E = 11.0 J",
+                                           "p = (6.00, 0) kg·m/s", "L = −4.00 kg·m²/s"});
   // the panel first, its right edge half a line (5.5 px) in from the frame's
   const auto& panel = list.calls()[0];
   CHECK(panel.style.role == Role::Panel);
@@ -73,7 +73,7 @@ TEST_CASE("with gravity the potential energy has a bar; the run's negative value
   CHECK(survey.minEnergy == doctest::Approx(-80.0).epsilon(0.01));
   CHECK(survey.maxEnergy == doctest::Approx(109.0).epsilon(0.01));
   const double span = survey.maxEnergy - survey.minEnergy;
-  CHECK(list.toText().find("\"U = 20.00 J\"") != std::string::npos);
+  CHECK(list.toText().find("\"U = 20.0 J\"") != std::string::npos);
   const DrawList::Call *kinetic = nullptr, *potential = nullptr;
   for (const auto& c : list.calls()) {
     if (c.style.role == Role::KineticBar) kinetic = &c;
@@ -92,6 +92,6 @@ TEST_CASE("momentum alone: a panel of two lines of text") {
   alone.replace(alone.find("energy: true"), 12, "energy: false");
   const DrawList list = panelAt(alone);
   REQUIRE(list.calls().size() == 3);
-  CHECK(list.calls()[1].text == "p = (6.00, 0.00) kg·m/s");
+  CHECK(list.calls()[1].text == "p = (6.00, 0) kg·m/s");
   CHECK(list.calls()[2].text == "L = −4.00 kg·m²/s");
 }

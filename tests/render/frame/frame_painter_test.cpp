@@ -37,13 +37,14 @@ render::draw::DrawList frameAt(const std::string& yaml, double t, int strobe = 0
 
 TEST_CASE("the poll at t = 0.75: static floor first, trail, bar, held impulse, velocity, labels, time") {
   // the bar turns at ω = −0.5 from t = 0.5 and moves at 1/3 m/s; the view is 6.25 m high, so the
-  // automatic arrows are 6.25 / 6 = 1.04 m long for the largest impulse (1 N·s) and speed (1/3 m/s)
+  // automatic arrows are 6.25 / 6 = 1.04 m long for the largest impulse (1 N·s) and speed (1/3 m/s);
+  // the impulse is drawn two line widths (2 px of 0.00868 m) to its left, beside any normal on its line
   CHECK(frameAt(kPoll, 0.75).toText() ==
         "polygon StaticBody#1 (-3,-3.25) (3,-3.25) (3,-2.75) (-3,-2.75)\n"
         "segment Trail#0 (0,0) (0.0523333,0)\n"
         "segment Trail#0 (0.0523333,0) (0.0833333,0)\n"
         "polygon Body#0 (-0.265236,-1.97193) (-0.0667964,-1.99686) (0.431903,1.97193) (0.233463,1.99686)\n"
-        "arrow Impulse#0@0.5 (-1.04216,2) -> (0,2)\n"
+        "arrow Impulse#0@0.5 (-1.04216,2.03474) -> (0,2.03474)\n"
         "arrow Velocity#0 (0.0833333,0) -> (1.1255,0)\n"
         "text Caption (-5.36714,2.31167) \"t = 0.750 s\"\n"
         "text Label#0 (0.0833333,0) \"bar\"\n"

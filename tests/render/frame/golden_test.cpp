@@ -13,6 +13,7 @@
 #include "render/draw/gl_canvas.h"
 #include "render/draw/png_io.h"
 #include "render/frame/panels.h"
+#include "render/video/render_plan.h"
 #include "render/frame/scene_run.h"
 #include "render/scene/scene_style.h"
 #include "render/video/time_map.h"
@@ -165,24 +166,24 @@ TEST_CASE("golden: trails and velocity arrows") { checkGolden("trails_velocities
 
 TEST_CASE("golden: a strobe image") { checkGolden("strobe", frame(kProjectile, 1.2, "", 8)); }
 
-TEST_CASE("golden: the poll panel, A | B at the same instant") {
-  std::vector<render::scene::Scene> defs;
-  render::draw::Bounds bounds;
-  std::vector<render::frame::RunSurvey> surveys;
-  for (const char* v : {"center", "end"}) {
-    defs.push_back(drawn_scene::load(kPoll, v));
-    surveys.push_back(render::frame::surveyRun(defs.back()));
-    bounds.add(surveys.back().bounds);
-  }
-  render::draw::GlContext gl(320, 180);
+TEST_CASE("golden: the poll panel sheet, A, B and C at the same instant, as `snapshot --panels` plans it") {
+  // a 320 × 180 sheet: three panels as 2 × 2, their titles and the caption once under them
+  const auto load = [](const std::string& v) { return drawn_scene::load(kPoll, v); };
+  const render::video::RenderPlan plan =
+      render::video::planStills(load, {.file = "poll.yaml", .times = {1.5}, .panels = true, .size = render::video::FrameSize{320, 180}});
+  const render::video::Stills& stills = *plan.stills;
+  render::draw::GlContext gl(stills.width, stills.height);
   render::draw::TextRenderer text;
   std::vector<Image> frames;
-  for (size_t i = 0; i < defs.size(); ++i) {
-    render::frame::SceneRun run(defs[i], render::frame::cameraFor(defs[i], surveys[i], bounds), surveys[i], &gl, &text);
+  for (size_t i = 0; i < stills.scenes.size(); ++i) {
+    render::frame::SceneRun run(stills.scenes[i], stills.camera, stills.surveys[i], &gl, &text);
     frames.push_back(run.frameAt(1.5));
   }
-  const render::draw::Style style = render::scene::makeStyle(defs[0], 180);
-  checkGolden("poll_panel", render::frame::composePanels(frames, {"A: center", "B: end"}, style, text));
+  const render::draw::Style style = render::scene::makeStyle(stills.scenes[0], stills.height);
+  const Image sheet = render::frame::composePanels(frames, stills.grid, stills.shots[0].titles, stills.caption, style, text);
+  CHECK(sheet.width == 320);
+  CHECK(sheet.height == 180);
+  checkGolden("poll_panel", sheet);
 }
 
 TEST_CASE("golden: the separating-axis overlay, drawn from a hand-written draw list") {

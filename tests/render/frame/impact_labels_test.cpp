@@ -42,7 +42,12 @@ bool has(const std::vector<std::string>& texts, const std::string& s) {
 }  // namespace
 
 TEST_CASE("the velocities text: v_n⁻ and v_n⁺ with true minus signs") {
-  CHECK(render::frame::ImpactLabels::velocitiesText(-1.0, 0.5) == "v_n⁻ = −1.00 m/s → v_n⁺ = 0.50 m/s");
+  CHECK(render::frame::ImpactLabels::velocitiesText(-1.0, 0.5) == "v_n⁻ = −1.00 m/s → v_n⁺ = 0.500 m/s");
+}
+
+TEST_CASE("a plastic impact's round-off after speed reads 0, a slow real one keeps its digits") {
+  CHECK(render::frame::ImpactLabels::velocitiesText(-2.0, 2.22e-16) == "v_n⁻ = −2.00 m/s → v_n⁺ = 0 m/s");
+  CHECK(render::frame::ImpactLabels::velocitiesText(-2.0, 2e-5) == "v_n⁻ = −2.00 m/s → v_n⁺ = 2.00 × 10⁻⁵ m/s");
 }
 
 TEST_CASE("after the impact the afterimage says n̂, j and v_n⁻ → v_n⁺ = −c_r v_n⁻") {

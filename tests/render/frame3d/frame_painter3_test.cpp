@@ -84,7 +84,7 @@ TEST_CASE("a 3D frame's draw list: the solid, L fixed while ω wanders, the stat
   });
   CHECK(pathSegments > 10);
   // x and q as text; |q| = 1 under the splitting
-  CHECK(hasText(start, "x = (0.00, 0.00, 0.00) m"));
+  CHECK(hasText(start, "x = (0, 0, 0) m"));
   CHECK(hasText(start, "q = [0.989, 0.149, 0.000, 0.000]"));
   CHECK(hasText(later, "|q| = 1.000000"));
   CHECK(hasText(later, "t = 1.300 s"));

@@ -61,9 +61,11 @@ SceneRecord impulses() {
   r.file = "scenes/lecture/05_impulses.yaml";
   r.title = "Impulses";
   r.description = "A bar struck at its end: \"j\" = (1, 0) N·s; <b>not</b> bold & kept as text.\nSecond line.";
+  r.question = "Which moves faster, <A> or B?";
+  r.answer = "Both at 1/3 m/s; only B turns.";
   r.seconds = 1.25;
   r.videos = {{"center", "05_impulses-center.mp4", "05_impulses-center.png", 10}, {"end", "05_impulses-end.mp4", "05_impulses-end.png", 10}};
-  r.panels = {{"05_impulses-panels-t0.png", "t = 0 s", true}, {"05_impulses-panels-t2.5.png", "t = 2.5 s", false}};
+  r.panels = {{"05_impulses-panels-t0.png", "t = 0 s", true}, {"05_impulses-panels-t2.5.png", "t = 2.5 s", false, true}};
   r.checks = {{"end", 2.5, "bar.angular_velocity", {-0.5}, {-0.5000000000000001}, 1.1e-16, 1e-9},
               {"end", 2.5, "bar.velocity", {1.0 / 3, 0}, {1.0 / 3, NAN}, 0.2, 1e-9}};
   return r;
@@ -120,6 +122,9 @@ TEST_CASE("a scene's record reads back as it was written, text and numbers exact
   REQUIRE(back.panels.size() == 2);
   CHECK(back.panels[0].question);
   CHECK_FALSE(back.panels[1].question);
+  CHECK(back.panels[1].answer);
+  CHECK(back.question == r.question);
+  CHECK(back.answer == r.answer);
   REQUIRE(back.checks.size() == 2);
   CHECK(back.checks[0].actual[0] == -0.5000000000000001);
   CHECK(back.checks[1].expected[0] == 1.0 / 3);
@@ -184,6 +189,30 @@ TEST_CASE("the page: a section per scene with its videos, posters, panels as que
   CHECK(html.find("<td class=\"failed\">FAILED</td>") != std::string::npos);
   CHECK(html.find("<script") == std::string::npos);
   CHECK(html.find("http") == std::string::npos);  // nothing from the network
+}
+
+TEST_CASE("the page: the question above the videos, the answer only inside a closed <details> after them") {
+  TempDir dir("poll");
+  SceneRecord r = impulses();
+  // a mid-run panel before `reveal`: neither question nor answer
+  r.panels.push_back({"05_impulses-panels-t1.png", "t = 1 s", false, false});
+  writeScene(dir.path, r);
+  const std::string html = pageHtml(readPack(dir.path.string()));
+  const size_t question = html.find("<p class=\"poll-question\"><strong>Question.</strong> Which moves faster, &lt;A&gt; or B?</p>");
+  const size_t video = html.find("<video");
+  const size_t details = html.find("<details class=\"poll-answer\"><summary>Answer</summary>");
+  REQUIRE(question != std::string::npos);
+  REQUIRE(details != std::string::npos);
+  CHECK(question < video);
+  CHECK(video < details);
+  // once, inside the details, which is closed (no `open`)
+  const size_t answer = html.find("Both at 1/3 m/s; only B turns.");
+  CHECK(answer > details);
+  CHECK(answer < html.find("</details>", details));
+  CHECK(html.find("Both at 1/3", answer + 1) == std::string::npos);
+  CHECK(html.find("<details open") == std::string::npos);
+  CHECK(html.find("<figcaption>t = 1 s · ") != std::string::npos);
+  CHECK(html.find("answer</span> · t = 1 s") == std::string::npos);
 }
 
 TEST_CASE("links are relative and percent-encoded; text is escaped") {

@@ -2,6 +2,8 @@
 // FILE:LINE:COL with a message that says what to write instead.
 #include <doctest/doctest.h>
 
+#include "render/scene/scene_style.h"
+
 #include <string>
 #include <vector>
 
@@ -19,7 +21,11 @@ TEST_CASE("without a render block the documented defaults hold") {
   CHECK(r.height == 720);
   CHECK(r.fps == 60.0);
   CHECK(r.background == "#ffffff");
-  CHECK(r.lineWidth == 2.0);
+  // lines scale with the frame: 3 px at 1080p, 2 px at 720p
+  CHECK(r.lineWidth == 0.0);
+  CHECK(render::scene::lineWidthFor(r, 1080) == 3.0);
+  CHECK(render::scene::lineWidthFor(r, 720) == 2.0);
+  CHECK(render::scene::lineWidthFor(renderOf("render: {line_width: 1.5}"), 1080) == 1.5);
   CHECK(r.camera.automatic);
   CHECK(r.contacts);
   CHECK(r.contactHold == 0.5);
@@ -68,7 +74,7 @@ TEST_CASE("every key is read") {
   CHECK(r.colors[Role::ContactPoint] == "#aabbcc");
   CHECK(r.colors[Role::Label] == "#ffffff");
   CHECK(r.colors[Role::Caption] == "#ffffff");  // both text roles take the key `text`
-  CHECK(r.colors[Role::ContactNormal] == "#d62728");  // untouched keys keep their defaults
+  CHECK(r.colors[Role::ContactNormal] == "#d55e00");  // untouched keys keep their defaults
   CHECK_FALSE(r.camera.automatic);
   CHECK(r.camera.center == sim::core::Vec2(1, 2));
   CHECK(r.camera.height == 5.0);

@@ -96,3 +96,26 @@ TEST_CASE("a title card opens the video, painted once and held; slow motion stre
   // the last frame, video time 1.3 s: 0.2 s of card, 0.2 s of run, 0.4 s slowed to 0.4, 0.5 s more
   CHECK(run.world().time == doctest::Approx(0.9).epsilon(1e-12));
 }
+
+TEST_CASE("an answer card closes the video: the run's frames, then the card held, painted once") {
+  // 1 s of run, then 0.5 s of answer: 15 frames at 10 fps, the last 5 the card
+  const render::scene::Scene def = drawn_scene::load(
+      "duration: 1\n"
+      "answer: It rolls on.\n"
+      "bodies:\n"
+      "  - {name: ball, shape: {circle: 0.5}, velocity: [1, 0]}\n"
+      "render: {size: [320, 180], camera: {center: [0.5, 0], height: 2}, answer_card: 0.5}\n");
+  const render::frame::RunSurvey survey = render::frame::surveyRun(def);
+  const render::video::TimeMap map = render::video::timeMapFor(def.render, survey.impactTimes, def.model.duration);
+  render::draw::GlContext gl(320, 180);
+  render::draw::TextRenderer text;
+  render::frame::SceneRun run(def, render::frame::cameraFor(def, survey), survey, &gl, &text);
+  Collect sink;
+  render::video::record(run, map, 10.0, {&sink});
+  REQUIRE(sink.indices.size() == 15);
+  CHECK(sink.images[8] != sink.images[9]);
+  CHECK(sink.images[9] != sink.images[10]);
+  for (int k = 11; k < 15; ++k) CHECK(sink.images[k] == sink.images[10]);
+  CHECK(sink.images[10] == run.answerCard());
+  CHECK(run.world().time == doctest::Approx(0.9).epsilon(1e-12));
+}

@@ -6,7 +6,10 @@
 
 #include <map>
 
+#include "render/frame/caption.h"
+#include "render/frame/scene_run.h"
 #include "render/jobs/exit_status.h"
+#include "render/scene/scene_style.h"
 #include "render/video/output_names.h"
 #include "render/video/render_plan.h"
 #include "render/scene3d/scene.h"
@@ -232,7 +235,65 @@ TEST_CASE("lecture: every variant's video and poster, then the panels, each vari
     CHECK(plan.stills->surveys[i].bounds.max == plan.variants[i].survey.bounds.max);
   }
   CHECK(plan.videos.front().fps == 10.0);
-  CHECK(plan.stills->width == 160);
+  // --size sets the panel sheet too: three panels as 2 × 2 on 160 × 90
+  CHECK(plan.stills->grid.sheetWidth == 160);
+  CHECK(plan.stills->grid.sheetHeight == 90);
+  CHECK(plan.stills->width == plan.stills->grid.frameWidth);
+  CHECK(plan.stills->width < 80);
+}
+
+TEST_CASE("a three-variant panel sheet is 1920 × 1080 by default, 2 × 2, and every arrow lies inside its panel") {
+  // the lecture's poll: velocity arrows, impact normals and impulses, a caption
+  const std::string lecture = std::string(RIGIDREEL_SOURCE_DIR) + "/scenes/lecture/08_three_collisions_poll.yaml";
+  const RenderPlan plan = render::video::planStills(Loader{lecture, {}}(), {.file = lecture, .times = {0, 0.8, 2}, .panels = true});
+  const render::video::Stills& stills = *plan.stills;
+  CHECK(stills.grid.sheetWidth == 1920);
+  CHECK(stills.grid.sheetHeight == 1080);
+  CHECK(stills.grid.columns == 2);
+  CHECK(stills.grid.rows == 2);
+  // text a 40th of the sheet at least, in the panels' frames and their titles
+  CHECK(stills.grid.textSize >= 27);
+  REQUIRE(stills.scenes.size() == 3);
+  for (const render::scene::Scene& s : stills.scenes) {
+    CHECK(s.render.width == stills.grid.frameWidth);
+    CHECK(s.render.height == stills.grid.frameHeight);
+    CHECK(render::scene::fontSizeFor(s.render, s.render.height) >= 27);
+    CHECK(render::scene::lineWidthFor(s.render, s.render.height) == 3.0);
+    // the caption once under the grid, not in each panel
+    CHECK(render::frame::captionOf(s).empty());
+  }
+  CHECK(stills.caption == "Which block moves fastest, and which spins fastest?");
+  // every arrow each panel draws at each shot inside the panel's frame: velocities, normals, impulses
+  const render::draw::Bounds view = stills.camera.view();
+  size_t arrows = 0;
+  for (size_t v = 0; v < stills.scenes.size(); ++v) {
+    std::vector<double> instants;
+    for (const render::video::StillOutput& shot : stills.shots) instants.push_back(shot.instants[v]);
+    render::frame::SceneRun run(stills.scenes[v], stills.camera, stills.surveys[v]);
+    run.drawListsAt(instants, 0, [&](size_t shot, render::draw::DrawList list) {
+      for (const render::draw::DrawList::Call& c : list.calls()) {
+        if (c.kind != render::draw::DrawList::Kind::Arrow) continue;
+        ++arrows;
+        for (const sim::core::Vec2& p : c.points) {
+          CAPTURE(v);
+          CAPTURE(shot);
+          CHECK(p.x() >= view.min.x());
+          CHECK(p.x() <= view.max.x());
+          CHECK(p.y() >= view.min.y());
+          CHECK(p.y() <= view.max.y());
+        }
+      }
+    });
+  }
+  CHECK(arrows >= 6);  // the velocity arrows at least, in each panel at each time after the start
+}
+
+TEST_CASE("panel titles: a variant's own render: {title}, else its key; never the answer") {
+  const std::string yaml = drawn_scene::bounce("1", "answer: It bounces back.\nrender: {title: Lesson}\n"
+                                                     "variants:\n  slow: {render: {title: Slowly}}\n  fast: {}\n");
+  const auto load = [&](const std::string& v) { return drawn_scene::load(yaml, v, "lesson.yaml"); };
+  const RenderPlan plan = render::video::planStills(load, {.file = "lesson.yaml", .times = {0.5}, .panels = true});
+  CHECK(plan.stills->shots[0].titles == std::vector<std::string>{"A: Slowly", "B: fast"});
 }
 
 TEST_CASE("lecture panels: the default at the shortest variant's duration; impacts where every variant has one") {

@@ -49,6 +49,20 @@ TEST_CASE("a title card holds t = 0 and delays the run by its length") {
   CHECK(map.simTime(0.75) == doctest::Approx(0.25).epsilon(1e-15));
 }
 
+TEST_CASE("an answer card closes the video after the run, holding its last instant") {
+  const TimeMap map(1.0, 0.5, {}, 2.0);
+  CHECK(map.videoLength() == 3.5);
+  CHECK(map.frameCount(10.0) == 35);
+  CHECK_FALSE(map.inAnswerCard(0.0));
+  CHECK_FALSE(map.inAnswerCard(1.49));
+  CHECK(map.inAnswerCard(1.5));
+  CHECK(map.inAnswerCard(3.4));
+  CHECK(map.simTime(1.49) == doctest::Approx(0.99).epsilon(1e-12));
+  CHECK(map.simTime(2.0) == 1.0);
+  // none by default
+  CHECK_FALSE(TimeMap(1.0, 0.5).inAnswerCard(1.49));
+}
+
 TEST_CASE("a window runs factor times slower, and the run resumes its pace after it") {
   // [0.4, 0.6) at 4×: 0.2 s of simulation take 0.8 s of video
   const TimeMap map(1.0, 0.0, {{0.4, 0.6, 4.0}});

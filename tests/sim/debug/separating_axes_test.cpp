@@ -51,7 +51,7 @@ TEST_CASE("the reference edge, the incident vertex and the separation; every oth
   CHECK(lines[1] == "point IncidentVertex#1 (-0.5,0.6)");
   // its separation, a label on the point 0.05 inside the base below the edge's middle (the frame's
   // label placer may move it off another)
-  CHECK(lines[2] == "label Label#0 (0,0.45) beyond (0,0) \"separation 0.1 m\"");
+  CHECK(lines[2] == "label Label#0 (0,0.45) beyond (0,0) \"separation 0.100 m\"");
 
   // every axis: the 7 other edges of both polygons, each labeled inside its own polygon
   DrawList every;
@@ -60,9 +60,9 @@ TEST_CASE("the reference edge, the incident vertex and the separation; every oth
   std::vector<std::string> candidates = texts(every);
   REQUIRE(candidates.size() == 8);
   candidates.erase(candidates.begin());
-  CHECK(candidates == std::vector<std::string>{"-2.1 m", "-1.5 m", "-1.5 m", "0.1 m", "-1.5 m", "-2.1 m", "-1.5 m"});
+  CHECK(candidates == std::vector<std::string>{"−2.10 m", "−1.50 m", "−1.50 m", "0.100 m", "−1.50 m", "−2.10 m", "−1.50 m"});
   // the base's bottom edge: its middle (0, −0.5), moved 0.05 inside
-  CHECK(every.lines()[3] == "label Label#0 (0,-0.45) beyond (0,0) \"-2.1 m\"");
+  CHECK(every.lines()[3] == "label Label#0 (0,-0.45) beyond (0,0) \"−2.10 m\"");
   // pairs farther apart than the gap asked for are not drawn
   DrawList far;
   render::draw::PhysicsDraw farPhysics(far);

@@ -1,0 +1,49 @@
+// The poll sheet's grid (panels.cpp): 2 variants side by side, 3-4 as 2 × 2, more in rows of ⌈√n⌉,
+// the whole sheet the size asked for, text at least a 40th of its height, and a sheet too small
+// for its panels refused with what to do.
+#include <doctest/doctest.h>
+
+#include "render/frame/panels.h"
+#include "render/jobs/exit_status.h"
+
+using render::frame::panelGrid;
+
+TEST_CASE("the grid: side by side, 2 × 2, then rows; every panel inside the sheet, text a 40th of it") {
+  struct Want {
+    size_t n;
+    int columns, rows;
+  };
+  for (const Want& w : {Want{1, 1, 1}, Want{2, 2, 1}, Want{3, 2, 2}, Want{4, 2, 2}, Want{5, 3, 2}, Want{9, 3, 3}, Want{10, 4, 3}}) {
+    INFO(w.n, " panels");
+    const render::frame::PanelGrid g = panelGrid(w.n, 1920, 1080, true);
+    CHECK(g.columns == w.columns);
+    CHECK(g.rows == w.rows);
+    CHECK(g.textSize >= 1080 / 40);
+    CHECK(g.frameWidth % 2 == 0);
+    CHECK(g.frameHeight % 2 == 0);
+    for (size_t i = 0; i < w.n; ++i) {
+      CHECK(g.frameX(i) >= 0);
+      CHECK(g.frameY(i) >= g.titleStrip);
+      CHECK(g.frameX(i) + g.frameWidth <= 1920);
+      // above the caption's band
+      CHECK(g.frameY(i) + g.frameHeight <= 1080 - g.captionBand);
+    }
+  }
+  // two side by side share the width; with no caption the frames take its band
+  const render::frame::PanelGrid two = panelGrid(2, 1920, 1080, false);
+  CHECK(two.captionBand == 0);
+  CHECK(2 * two.frameWidth + two.gap <= 1920);
+  CHECK(2 * two.frameWidth + two.gap > 1900);
+  CHECK(two.frameY(0) + two.frameHeight > 1070);
+}
+
+TEST_CASE("a sheet too small for its panels is refused, saying how to fix it") {
+  try {
+    (void)panelGrid(400, 320, 180, true);
+    FAIL("400 panels fit on 320x180");
+  } catch (const render::jobs::UsageError& e) {
+    const std::string m = e.what();
+    CHECK(m.find("400 panels do not fit on a 320x180 sheet") != std::string::npos);
+    CHECK(m.find("give a larger --size") != std::string::npos);
+  }
+}
