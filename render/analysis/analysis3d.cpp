@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "render/analysis/interrupt_check.h"
 #include "sim/scene3d/expect.h"
 #include "sim/scene3d/scene_build.h"
 #include "sim/world3d/diagnostics.h"
@@ -20,6 +21,7 @@ class Recorder3 : public w3::StepObserver {
  public:
   Recorder3(RunMetrics& m, const w3::Vec3& l0) : m_(m), l0_(l0) {}
   void afterStep(const w3::World& w) override {
+    render::jobs::checkInterrupted();
     ++m_.steps;
     energies.push_back(energy(w).total());
     // relative to |L(0)|, or absolute when the bodies start without angular momentum
@@ -88,7 +90,8 @@ Sweep3Reference sweepReference3(const sim::scene3d::SceneDef& def, double smalle
   if (!def.expects.empty()) return {"expect", {}};
   const double dt = smallestDt / 64.0;
   w3::World w = sim::scene3d::buildWorld(withMethod(def, w3::Integrator::Rk4, dt));
-  w.advanceTo(def.duration);
+  InterruptCheck3 stop;
+  w.advanceTo(def.duration, &stop);
   char name[64];
   std::snprintf(name, sizeof name, "rk4 at dt %g", dt);
   Sweep3Reference out{name, {}};
@@ -108,7 +111,9 @@ Sweep3Row runSweepCase3(const sim::scene3d::SceneDef& scene, w3::Integrator inte
   if (!row.metrics.finite) {
     row.error = std::numeric_limits<double>::infinity();
   } else if (reference.name == "expect") {
-    for (const sim::core::CheckResult& r : sim::scene3d::runExpects(def)) row.error = std::max(row.error, r.error);
+    w3::World again = sim::scene3d::buildWorld(def);
+    InterruptCheck3 stop;
+    for (const sim::core::CheckResult& r : sim::scene3d::runExpects(def, again, &stop)) row.error = std::max(row.error, r.error);
   } else {
     for (size_t i = 0; i < w.bodies.size(); ++i) {
       const w3::Body& b = w.bodies[i];
@@ -118,10 +123,11 @@ Sweep3Row runSweepCase3(const sim::scene3d::SceneDef& scene, w3::Integrator inte
   }
   // the timed runs: nothing but the simulation
   std::vector<double> seconds;
+  InterruptCheck3 stop;
   for (int k = 0; k < repeat && row.metrics.finite; ++k) {
     w3::World timed = sim::scene3d::buildWorld(def);
     const auto start = std::chrono::steady_clock::now();
-    timed.advanceTo(def.duration);
+    timed.advanceTo(def.duration, &stop);
     seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
   if (!seconds.empty()) {

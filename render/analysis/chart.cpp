@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
@@ -35,6 +36,18 @@ std::string valueLabel(double y, bool lowerBound) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.3g", y);
   return (lowerBound ? "≥ " : "") + std::string(buf);
+}
+
+// a PNG that ends: the signature first, the IEND chunk (length 0, type, CRC) last
+bool wholePng(const std::string& path) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in || in.tellg() < 20) return false;
+  char tail[12], head[8];
+  in.seekg(-12, std::ios::end);
+  in.read(tail, 12);
+  in.seekg(0);
+  in.read(head, 8);
+  return in && std::string(head, 8) == "\x89PNG\r\n\x1a\n" && std::string(tail, 8) == std::string("\0\0\0\0IEND", 8);
 }
 
 }  // namespace
@@ -69,6 +82,7 @@ std::string gnuplotScript(const Chart& chart, const std::string& pngPath) {
   } else {
     g << "set key outside right top\n";
   }
+  if (!chart.note.empty()) g << "set label 1 " << quoted(chart.note) << " at graph 0.5, 0.5 center\n";
   if (chart.logX) g << "set logscale x\n";
   if (chart.logY) g << "set logscale y\n";
   // inline data blocks: no temporary data files
@@ -94,16 +108,21 @@ std::string gnuplotScript(const Chart& chart, const std::string& pngPath) {
   // room above the tallest bar for its label
   if (values) g << "set offsets 0, 0, graph 0.08, 0\n";
   g << "plot ";
+  bool plotted = false;
   for (size_t i = 0; i < chart.series.size(); ++i) {
     const ChartSeries& s = chart.series[i];
+    // gnuplot refuses to plot a block without points
+    if (s.points.empty()) continue;
     const std::string style = !chart.bars ? " using 1:2 with linespoints lw 2 pt 7"
                               : s.lowerBounds ? " using 1:2 with boxes fill pattern 4 border"
                                               : " using 1:2 with boxes";
-    g << (i ? ", " : "") << "$S" << i << style << " title " << quoted(s.title);
+    g << (plotted ? ", " : "") << "$S" << i << style << " title " << quoted(s.title);
+    plotted = true;
   }
   if (values)
-    for (size_t i = 0; i < chart.series.size(); ++i) g << ", $V" << i << " using 1:2:3 with labels offset 0,0.8 notitle";
-  if (chart.series.empty()) g << "NaN notitle";
+    for (size_t i = 0; i < chart.series.size(); ++i)
+      if (!chart.series[i].points.empty()) g << ", $V" << i << " using 1:2:3 with labels offset 0,0.8 notitle";
+  if (!plotted) g << "[1:10] [1:10] NaN notitle";
   g << "\n";
   return g.str();
 }
@@ -114,6 +133,10 @@ void writeChart(const Chart& chart, const std::string& pngPath) {
   if (r.status != 0) {
     std::remove(temporary.c_str());
     throw std::runtime_error("gnuplot failed drawing " + pngPath + " (status " + std::to_string(r.status) + "): " + r.errorTail);
+  }
+  if (!wholePng(temporary)) {
+    std::remove(temporary.c_str());
+    throw std::runtime_error(pngPath + ": gnuplot's PNG is cut short (is the disk full?); the previous chart is kept");
   }
   if (std::rename(temporary.c_str(), pngPath.c_str()) != 0) {
     std::remove(temporary.c_str());

@@ -24,13 +24,17 @@ struct Chart {
   std::vector<std::string> barLabels;  // a tick label per bar; '\n' breaks a line
   bool barValues = false;              // each bar labeled with its value, 3 significant digits
   std::vector<ChartSeries> series;
+  // said in the middle of the plot: why it has nothing to draw ("every error is exactly 0"); series
+  // without points are left out of the plot, and a chart with none left draws its axes and the note
+  std::string note;
   int width = 1280, height = 800;      // pixels
 };
 
 // the gnuplot script that draws `chart` into `pngPath`
 std::string gnuplotScript(const Chart& chart, const std::string& pngPath);
 
-// draws the chart; throws std::runtime_error with gnuplot's message when it fails
+// draws the chart; throws std::runtime_error with gnuplot's message when it fails, or when the PNG
+// gnuplot wrote does not read back whole (to its IEND chunk: gnuplot exits 0 on a full disk)
 void writeChart(const Chart& chart, const std::string& pngPath);
 
 }  // namespace render::analysis

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/jobs/interrupt.h"
 #include "sim/world/diagnostics.h"
 
 namespace render::analysis {
@@ -46,6 +47,8 @@ class Recorder : public StepObserver {
  public:
   Recorder(RunMetrics& m, const MetricsOptions& o) : m_(m), o_(o) {}
   void afterStep(const World& w) override {
+    // Ctrl-C between two steps of a sweep's or a stability search's run
+    render::jobs::checkInterrupted();
     ++m_.steps;
     if (o_.energy) energies.push_back(energy(w).total());
     if (o_.penetration && w.bodies.size() > 1)

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "render/analysis/pyramid_rows.h"
+#include "render/jobs/interrupt.h"
 #include "sim/scene/scene_build.h"
 #include "sim/scene/step_limit.h"
 
@@ -53,6 +54,8 @@ bool holdsOnce(const Study& study, RunMetrics& metrics) {
   const MetricsOptions o = criteria(study);
   try {
     metrics = measureRun(w, stabilityDuration(study.model), o);
+  } catch (const render::jobs::Interrupted&) {
+    throw;
   } catch (const std::exception& e) {
     // the method cannot run the scene at all (impacts pile up, bodies start overlapping)
     metrics = {};

@@ -66,9 +66,10 @@ StabilityDef readStability(const sim::yaml::SceneSource& source, const sim::scen
                                    "'; remove it from this scene's study, or choose another parameter");
     }
     // a stack height or a pyramid's base counts bodies: a whole number, within an int before the
-    // search converts it
+    // search converts it; iterations and substeps are whole numbers within what `sim:` takes
     const auto bound = [&](const char* key) -> double {
       if (d.countsBodies()) return r.wholeNumber(n[key], key, 1, std::numeric_limits<int>::max());
+      if (d.fewest()) return r.wholeNumber(n[key], key, 1, 1000);
       return r.positive(n[key], key);
     };
     if (n["from"]) d.from = bound("from");

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <ctime>
 
+#include "render/analysis/interrupt_check.h"
 #include "render/analysis/run_metrics.h"
 #include "render/jobs/exit_status.h"
 #include "render/jobs/json_writer.h"
@@ -44,16 +45,20 @@ SweepReference sweepReference(const sim::scene::SceneDef& def, double smallestDt
     ref.collisions = sim::world::CollisionMethod::Event;
     try {
       sim::world::World w = sim::scene::buildWorld(withMethod(def, ref));
-      w.advanceTo(def.duration);
+      InterruptCheck stop;
+      w.advanceTo(def.duration, &stop);
       SweepReference out{"event, " + name, {}};
       for (const sim::core::Body& b : w.bodies) out.states.push_back(b.state());
       return out;
+    } catch (const render::jobs::Interrupted&) {
+      throw;
     } catch (const std::exception&) {
       ref.collisions = def.collisions;  // event cannot run it (overlap, pile-up): the scene's method
     }
   }
   sim::world::World w = sim::scene::buildWorld(withMethod(def, ref));
-  w.advanceTo(def.duration);
+  InterruptCheck stop;
+  w.advanceTo(def.duration, &stop);
   SweepReference out{name, {}};
   for (const sim::core::Body& b : w.bodies) out.states.push_back(b.state());
   return out;
@@ -83,7 +88,8 @@ SweepRow runSweepCase(const sim::scene::SceneDef& scene, const SweepCase& method
     row.error = m.topDisplacement;
   } else if (reference.name == "expect") {
     sim::world::World again = sim::scene::buildWorld(def);
-    for (const sim::scene::CheckResult& r : sim::scene::runExpects(def, again)) row.error = std::max(row.error, r.error);
+    InterruptCheck stop;
+    for (const sim::scene::CheckResult& r : sim::scene::runExpects(def, again, &stop)) row.error = std::max(row.error, r.error);
   } else {
     for (size_t i = 0; i < w.bodies.size(); ++i) {
       const sim::core::Body& b = w.bodies[i];
@@ -96,11 +102,12 @@ SweepRow runSweepCase(const sim::scene::SceneDef& scene, const SweepCase& method
 
   // the timed runs: nothing but the simulation
   std::vector<double> seconds, processor;
+  InterruptCheck stop;
   for (int k = 0; k < repeat && m.finite; ++k) {
     sim::world::World timed = sim::scene::buildWorld(def);
     const auto start = std::chrono::steady_clock::now();
     const std::clock_t cpuStart = std::clock();
-    timed.advanceTo(def.duration);
+    timed.advanceTo(def.duration, &stop);
     processor.push_back(static_cast<double>(std::clock() - cpuStart) / CLOCKS_PER_SEC);
     seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
@@ -122,12 +129,17 @@ std::vector<double> parseRange(const std::string& text, const std::string& optio
       !std::isfinite(from) || !std::isfinite(to) || !(counted >= 1.0 && counted <= 1000.0) || counted != std::floor(counted))
     throw UsageError(option + ": expected FROM:TO:COUNT with positive FROM and TO and a COUNT from 1 to 1000, got '" +
                      text + "'");
-  const int count = static_cast<int>(counted);
+  return logRange(from, to, static_cast<int>(counted));
+}
+
+std::vector<double> logRange(double from, double to, int count) {
   std::vector<double> values;
   for (int k = 0; k < count; ++k)
     values.push_back(count == 1 ? from : from * std::pow(to / from, static_cast<double>(k) / (count - 1)));
   return values;
 }
+
+std::vector<double> defaultSweepSteps(double dt) { return logRange(dt * 8, dt / 8, 7); }
 
 void checkSweepSteps(double smallestDt, bool referenceRun, double maxSteps, double duration) {
   // the reference is a 64th of the smallest step (sweepReference, sweepReference3)

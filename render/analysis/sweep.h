@@ -51,6 +51,14 @@ SweepRow runSweepCase(const sim::scene::SceneDef& def, const SweepCase& method, 
 
 // "FROM:TO:COUNT", log-spaced from FROM to TO; throws UsageError
 std::vector<double> parseRange(const std::string& text, const std::string& option);
+// COUNT steps log-spaced from FROM to TO
+std::vector<double> logRange(double from, double to, int count);
+// the steps a sweep tries without --dt: 8 times the scene's dt down to an 8th of it, 7 of them,
+// computed from the dt itself (as text with six decimals a dt of 1e-6 became 0)
+std::vector<double> defaultSweepSteps(double dt);
+// the chart's note when no run has an error above 0 (a force-free body: every method is exact),
+// which a log axis cannot show
+inline constexpr const char* kAllErrorsZero = "every run's error is exactly 0: nothing to draw on a log scale (see the CSV)";
 
 // a sweep's finest run (its smallest dt, or the reference run at a 64th of it) within the scene's
 // bound on steps (sim: max_steps) to `duration`; throws UsageError naming --dt when it is not

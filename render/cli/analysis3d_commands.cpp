@@ -1,6 +1,7 @@
 // `rigidreel sweep` and `rigidreel stability` of a 3D scene: the integrators (the splitting among
 // them) against cost and error, with the energy and |L| drift and | |q| − 1 | the 2D CSVs do not
 // have; and the largest step at which each holds the scene.
+#include <algorithm>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -9,8 +10,10 @@
 #include "render/analysis/chart.h"
 #include "render/analysis/sweep.h"
 #include "render/cli/commands.h"
+#include "render/cli/output.h"
 #include "render/cli/space3d.h"
 #include "render/jobs/atomic_file.h"
+#include "render/jobs/csv_field.h"
 #include "render/jobs/json_writer.h"
 
 namespace render::cli {
@@ -49,19 +52,20 @@ int sweep3d(const SceneOptions& so, const MethodLists& methods, const std::strin
   const sim::scene3d::SceneDef def = so.load3().model();
   const std::vector<Integrator> integrators = integrators3(methods);
   const std::vector<double> steps =
-      dt.empty() ? parseRange(std::to_string(def.dt * 8) + ":" + std::to_string(def.dt / 8) + ":7", "--dt") : parseRange(dt, "--dt");
+      dt.empty() ? defaultSweepSteps(def.dt) : parseRange(dt, "--dt");
   if (repeat < 1 || repeat > 1000) throw UsageError("--repeat: expected a whole number from 1 to 1000");
   std::filesystem::create_directories(outDir);
-
   checkSweepSteps(*std::min_element(steps.begin(), steps.end()), def.expects.empty(), def.maxSteps, def.duration);
+  // the CSV's temporary opened before the runs: a folder that cannot be written fails now
+  const std::string base = analysisBase(outDir, def, "sweep");
+  AtomicFile csv = openOutput(base + ".csv");
+
   const Sweep3Reference reference = sweepReference3(def, *std::min_element(steps.begin(), steps.end()));
   std::vector<Sweep3Row> rows;
   for (Integrator i : integrators)
     for (double h : steps) rows.push_back(runSweepCase3(def, i, h, reference, repeat));
 
   // the 2D sweep's columns (no collisions, iterations or penetration in 3D), then |L| and |q| drift
-  const std::string base = analysisBase(outDir, def, "sweep");
-  AtomicFile csv(base + ".csv");
   csv.stream() << "integrator,collisions,dt,iterations,steps,seconds_per_sim_second,error,energy_drift,max_penetration,"
                   "angular_momentum_drift,quaternion_drift,reference\n";
   Chart chart;
@@ -75,11 +79,12 @@ int sweep3d(const SceneOptions& so, const MethodLists& methods, const std::strin
     csv.stream() << kIntegratorNames.name(r.integrator) << ",none," << formatNumber(r.dt) << ",0," << r.steps << ','
                  << formatNumber(r.secondsPerSimSecond) << ',' << formatNumber(r.error) << ',' << formatNumber(m.energyDrift)
                  << ",0," << formatNumber(m.angularMomentumDrift) << ',' << formatNumber(m.quaternionDrift) << ','
-                 << reference.name << '\n';
+                 << csvField(reference.name) << '\n';
     const size_t series = std::find(integrators.begin(), integrators.end(), r.integrator) - integrators.begin();
     if (m.finite && r.error > 0.0 && r.secondsPerSimSecond > 0.0)
       chart.series[series].points.emplace_back(r.secondsPerSimSecond, r.error);
   }
+  if (std::all_of(rows.begin(), rows.end(), [](const Sweep3Row& r) { return r.error == 0.0; })) chart.note = kAllErrorsZero;
   writeChart(chart, base + ".png");
   csv.commit();
 
@@ -102,7 +107,7 @@ int stability3d(const SceneOptions& so, const MethodLists& methods, const std::s
   const std::vector<Integrator> integrators = integrators3(methods);
   std::filesystem::create_directories(outDir);
   const std::string base = analysisBase(outDir, def, "stability");
-  AtomicFile csv(base + ".csv");
+  AtomicFile csv = openOutput(base + ".csv");
   csv.stream() << "integrator,collisions,parameter,largest_stable,first_failing,failure\n";
   Chart chart;
   chart.title = def.name + ": the largest dt at which each method holds";
@@ -116,7 +121,7 @@ int stability3d(const SceneOptions& so, const MethodLists& methods, const std::s
     const std::string name(kIntegratorNames.name(i));
     std::cout << describeBoundary(name, "dt", r) << '\n';
     csv.stream() << name << ",none,dt," << formatNumber(r.largestStable) << ',' << formatNumber(r.firstFailing) << ','
-                 << (r.holdsToLimit ? "none" : r.failing.failure) << '\n';
+                 << csvField(r.holdsToLimit ? "none" : r.failing.failure) << '\n';
     chart.barLabels.push_back(name);
     bars.points.emplace_back(static_cast<double>(bars.points.size()), r.largestStable > 0.0 ? r.largestStable : NAN);
   }

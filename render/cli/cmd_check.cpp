@@ -11,6 +11,7 @@
 #include "render/cli/scene_options.h"
 #include "render/cli/space3d.h"
 #include "render/cli/verbosity.h"
+#include "render/jobs/interrupt.h"
 #include "render/jobs/json_writer.h"
 #include "render/video/render_plan.h"
 #include "sim/scene/expect.h"
@@ -247,6 +248,8 @@ int check(const std::vector<std::string>& arguments, const Verbosity& say, bool 
       std::cerr << file << ": the simulation diverged at t = " << formatNumber(d.time) << " (body #" << d.body
                 << "); use a smaller dt or another integrator\n";
       if (code == kExitOk) code = kExitFailure;
+    } catch (const Interrupted&) {
+      throw;
     } catch (const std::runtime_error& e) {
       std::cerr << file << ": " << e.what() << '\n';
       if (code == kExitOk) code = kExitFailure;
@@ -278,8 +281,9 @@ void addCheckCommand(CLI::App& app, int& exitCode) {
   cmd->add_flag("--render", *render, "also plan every output the scene asks for (videos, posters, panels), drawing nothing");
   cmd->callback([files, say, output, render, &exitCode] {
     OutputFile report(*output);
-    exitCode = check(*files, *say, *render);
-    report.commit();
+    exitCode = runInterruptible("check", [&] { return check(*files, *say, *render); });
+    // an interrupted check publishes no report
+    if (exitCode != render::jobs::kExitInterrupted) report.commit();
   });
 }
 

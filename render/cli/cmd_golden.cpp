@@ -159,7 +159,7 @@ void addGoldenCommand(CLI::App& app, int& exitCode) {
   CLI::App* rec = golden->add_subcommand("record", "record each scene variant's states, trace, draw lists and frames into DIR/<scene>[-<variant>]/");
   rec->add_option("scenes", r->scenes, "scene files (YAML) or directories of them")->required();
   rec->add_option("-o,--output", r->output, "the golden directory (default: golden)");
-  rec->callback([r, &exitCode] { exitCode = runInterruptible([&] { return recordAll(*r); }); });
+  rec->callback([r, &exitCode] { exitCode = runInterruptible("golden record", [&] { return recordAll(*r); }); });
 
   auto c = std::make_shared<CheckCommand>();
   CLI::App* chk = golden->add_subcommand("check", "run each scene variant again and compare it with its golden record");
@@ -169,7 +169,7 @@ void addGoldenCommand(CLI::App& app, int& exitCode) {
   chk->add_option("--junit", c->junit, "write a JUnit XML file: one testcase per scene and level");
   chk->add_flag("--update", c->update, "record anew each scene variant that differs, saying what it replaced");
   chk->add_flag("--strict", c->strict, "compare pixels even when the record's renderer is another one");
-  chk->callback([c, &exitCode] { exitCode = runInterruptible([&] { return checkAll(*c); }); });
+  chk->callback([c, &exitCode] { exitCode = runInterruptible("golden check", [&] { return checkAll(*c); }); });
 }
 
 }  // namespace render::cli

@@ -88,9 +88,10 @@ std::string selfPath() {
   return self;
 }
 
-// the job's command line: the same options, -j 1, on one scene
+// the job's command line: the same options, -j 1, on one scene; the values joined to their options
+// and the scene after "--", so that a path that starts with '-' is not read as an option
 std::vector<std::string> jobCommand(const LectureCommand& o, const std::string& file) {
-  std::vector<std::string> argv = {selfPath(), "lecture", file, "-o", o.output, "-j", "1"};
+  std::vector<std::string> argv = {selfPath(), "lecture", "--output=" + o.output, "-j", "1"};
   if (!o.size.empty()) argv.insert(argv.end(), {"--size", o.size});
   if (o.fps) {
     char fps[32];
@@ -99,6 +100,7 @@ std::vector<std::string> jobCommand(const LectureCommand& o, const std::string& 
   }
   if (o.quiet) argv.push_back("--quiet");
   if (!o.title.empty()) argv.insert(argv.end(), {"--title", o.title});
+  argv.insert(argv.end(), {"--", file});
   return argv;
 }
 
@@ -264,7 +266,7 @@ void addLectureCommand(CLI::App& app, int& exitCode) {
   cmd->add_flag("--list", o->list, "print the paths the pack would write, one a line, and render nothing");
   cmd->add_option("--title", o->title, "the page's title (default: \"Lecture pack\"; kept in DIR/title.txt for the jobs and --page)");
   cmd->add_option("--page", o->page, "only rebuild DIR/index.html from the scenes DIR holds (after jobs run one by one)");
-  cmd->callback([o, &exitCode] { exitCode = runInterruptible([&] { return lecture(*o); }); });
+  cmd->callback([o, &exitCode] { exitCode = runInterruptible("lecture", [&] { return lecture(*o); }); });
 }
 
 }  // namespace render::cli

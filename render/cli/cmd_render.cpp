@@ -8,9 +8,9 @@
 #include "render/cli/output.h"
 #include "render/cli/overlay_option.h"
 #include "render/cli/scene_options.h"
-#include "render/jobs/interrupt.h"
 #include "render/cli/space3d.h"
 #include "render/cli/verbosity.h"
+#include "render/jobs/interrupt.h"
 #include "render/video/plan_writer.h"
 
 namespace render::cli {
@@ -86,7 +86,7 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
   cmd->add_flag("--frames", o->frames, "also write every frame as PNG into <scene>-frames/");
   o->Verbosity::addTo(*cmd, "no progress bar and no summary", "also the path of each file as it is written");
   cmd->add_option("--trace", o->trace, "also write every step of the video's run to this CSV file (as simulate --trace)");
-  cmd->callback([o, &exitCode] { exitCode = runInterruptible([&] { return render(*o); }); });
+  cmd->callback([o, &exitCode] { exitCode = runInterruptible("render " + o->scene, [&] { return render(*o); }); });
 }
 
 }  // namespace render::cli

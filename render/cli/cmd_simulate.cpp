@@ -12,6 +12,7 @@
 #include "render/cli/space3d.h"
 #include "render/cli/verbosity.h"
 #include "render/jobs/atomic_file.h"
+#include "render/jobs/interrupt.h"
 #include "render/jobs/json_writer.h"
 #include "render/video/trace_writer.h"
 #include "sim/scene/scene_build.h"
@@ -159,8 +160,9 @@ int simulate(const SimulateOptions& o) {
   std::unique_ptr<AtomicFile> traceFile;
   std::unique_ptr<render::video::TraceWriter> trace;
   if (!o.trace.empty()) {
+    refuseInputAsOutput(o.trace, o.scene, "--trace");
     traceFile = openTrace(o.trace);
-    trace = std::make_unique<render::video::TraceWriter>(traceFile->stream(), def);
+    trace = std::make_unique<render::video::TraceWriter>(traceStream(traceFile), def);
     trace->rows(world);
   }
   try {
@@ -171,8 +173,19 @@ int simulate(const SimulateOptions& o) {
               << def.bodies[d.body].name << "' has a non-finite state; try a smaller step (--dt "
               << formatNumber(def.dt / 4) << ") or another integrator (--integrator rk4)\n";
     return kExitFailure;
+  } catch (const Interrupted&) {
+    throw;
   } catch (const std::runtime_error& e) {
     std::cerr << o.scene << ": " << e.what() << '\n';
+    return kExitFailure;
+  }
+  // a state that stayed finite can still make energies past a double's range (gravity 1e308)
+  const sim::world::Energy e = sim::world::energy(world);
+  const sim::core::Vec2 p = sim::world::linearMomentum(world);
+  if (!std::isfinite(e.total()) || !p.allFinite() || !std::isfinite(sim::world::angularMomentum(world))) {
+    std::cerr << o.scene << ": the simulation diverged: at t = " << formatNumber(world.time)
+              << " its energy or momentum is not a finite number (a mass, speed or gravity past a double's range); "
+                 "choose smaller values\n";
     return kExitFailure;
   }
   if (traceFile) traceFile->commit();
@@ -195,7 +208,7 @@ void addSimulateCommand(CLI::App& app, int& exitCode) {
   options->Verbosity::addTo(*cmd, "print nothing (the exit status, and --trace's file); errors still on standard error",
                             "also every impulse the collision response applied, one a line (the text form; --json has them "
                             "all), and every resting and staying-in-contact record, not one per pair");
-  cmd->callback([options, &exitCode] { exitCode = simulate(*options); });
+  cmd->callback([options, &exitCode] { exitCode = runInterruptible("simulate " + options->scene, [&] { return simulate(*options); }); });
 }
 
 }  // namespace render::cli

@@ -9,10 +9,10 @@
 #include "render/cli/output.h"
 #include "render/cli/overlay_option.h"
 #include "render/cli/scene_options.h"
-#include "render/video/output_names.h"
 #include "render/cli/space3d.h"
 #include "render/cli/verbosity.h"
 #include "render/jobs/interrupt.h"
+#include "render/video/output_names.h"
 #include "render/video/plan_writer.h"
 
 namespace render::cli {
@@ -108,7 +108,7 @@ void addSnapshotCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--trace", o->trace, "also write every step of the pictures' run to this CSV file (as simulate --trace)");
   cmd->add_option("--overlay", o->overlay, "another simulator's trace (CSV, as --trace writes): its bodies dashed over ours");
   // Ctrl-C and SIGTERM end a snapshot as they end a render: exit 130, no half-written PNG
-  cmd->callback([o, &exitCode] { exitCode = render::jobs::runInterruptible([&] { return snapshot(*o); }); });
+  cmd->callback([o, &exitCode] { exitCode = runInterruptible("snapshot " + o->scene, [&] { return snapshot(*o); }); });
 }
 
 }  // namespace render::cli

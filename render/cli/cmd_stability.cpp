@@ -9,10 +9,13 @@
 #include "render/analysis/stability.h"
 #include "render/cli/commands.h"
 #include "render/cli/method_lists.h"
+#include "render/cli/output.h"
 #include "render/cli/scene_options.h"
 #include "render/cli/space3d.h"
 #include "render/cli/verbosity.h"
 #include "render/jobs/atomic_file.h"
+#include "render/jobs/csv_field.h"
+#include "render/jobs/interrupt.h"
 #include "render/jobs/json_writer.h"
 
 namespace render::cli {
@@ -59,7 +62,7 @@ int stability(const StabilityOptions& o) {
   const std::string base = o.outDir + "/" + def.name + (def.variant.empty() ? "" : "-" + def.variant) + "-stability";
   const std::string parameter(kParameterNames.name(study.stability.parameter));
 
-  AtomicFile csv(base + ".csv");
+  AtomicFile csv = openOutput(base + ".csv");
   // for iterations and substeps the search finds the fewest that hold: the columns say so
   const bool fewest = study.stability.fewest();
   csv.stream() << (fewest ? "integrator,collisions,parameter,fewest_holding,most_failing,failure\n"
@@ -84,7 +87,7 @@ int stability(const StabilityOptions& o) {
       const bool open = fewest ? r.failsEverywhere : r.holdsToLimit;
       csv.stream() << sim::core::integratorName(i) << ',' << sim::world::collisionMethodName(c) << ',' << parameter << ','
                    << formatNumber(r.largestStable) << ',' << formatNumber(r.firstFailing) << ','
-                   << (r.holdsToLimit ? "none" : r.failing.failure) << '\n';
+                   << csvField(r.holdsToLimit ? "none" : r.failing.failure) << '\n';
       const double x = static_cast<double>(chart.barLabels.size());
       chart.barLabels.push_back(std::string(sim::core::integratorName(i)) + "\n" + std::string(sim::world::collisionMethodName(c)));
       const double value = fewest && r.failsEverywhere ? r.firstFailing : r.largestStable;
@@ -119,7 +122,7 @@ void addStabilityCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("-o,--output", o->outDir, "output directory (default out)");
   o->Verbosity::addTo(*cmd, "print nothing (the CSV and the chart are still written); errors still on standard error",
                       "also the CSV's rows, every column in full, after the lines");
-  cmd->callback([o, &exitCode] { exitCode = stability(*o); });
+  cmd->callback([o, &exitCode] { exitCode = runInterruptible("stability " + o->scene, [&] { return stability(*o); }); });
 }
 
 }  // namespace render::cli

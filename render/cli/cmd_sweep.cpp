@@ -1,5 +1,6 @@
 // `rigidreel sweep`: every combination of integrators, collision methods, steps and iterations
 // on one scene, as a CSV, a log-log work-precision chart (cost against error) and a table.
+#include <algorithm>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -10,10 +11,13 @@
 #include "render/analysis/sweep.h"
 #include "render/cli/commands.h"
 #include "render/cli/method_lists.h"
+#include "render/cli/output.h"
 #include "render/cli/scene_options.h"
 #include "render/cli/space3d.h"
 #include "render/cli/verbosity.h"
 #include "render/jobs/atomic_file.h"
+#include "render/jobs/csv_field.h"
+#include "render/jobs/interrupt.h"
 #include "render/jobs/json_writer.h"
 
 namespace render::cli {
@@ -51,8 +55,8 @@ std::vector<int> wholeNumbers(const std::string& text, const std::string& option
 
 // --stack: cost per step against how far the stack moved from its rest pose, one line per method
 // through its iterations or substeps (the work-precision chart of stack solvers)
-int stackSweep(const SweepOptions& o, const sim::scene::SceneDef& def, const std::vector<SweepRow>& rows, const std::string& base) {
-  AtomicFile csv(base + ".csv");
+int stackSweep(const SweepOptions& o, const sim::scene::SceneDef& def, const std::vector<SweepRow>& rows, const std::string& base,
+               AtomicFile& csv) {
   csv.stream() << "integrator,collisions,dt,iterations,substeps,steps,cpu_seconds_per_step,top_displacement,max_displacement,fastest\n";
   for (const SweepRow& r : rows)
     csv.stream() << sim::core::integratorName(r.method.integrator) << ',' << sim::world::collisionMethodName(r.method.collisions) << ','
@@ -102,8 +106,7 @@ int sweep(const SweepOptions& o) {
   const auto integrators = o.integratorList();
   const auto methods = o.collisionList({def.collisions});
   const std::vector<double> steps =
-      o.dt.empty() ? parseRange(std::to_string(def.dt * 8) + ":" + std::to_string(def.dt / 8) + ":7", "--dt")
-                   : parseRange(o.dt, "--dt");
+      o.dt.empty() ? defaultSweepSteps(def.dt) : parseRange(o.dt, "--dt");
   const std::vector<int> iterations = wholeNumbers(o.iterations, "--iterations", def.velocityIterations);
   const std::vector<int> substeps = wholeNumbers(o.substeps, "--substeps", def.substeps);
   if (o.repeat < 1 || o.repeat > 1000) throw UsageError("--repeat: expected a whole number from 1 to 1000");
@@ -111,6 +114,9 @@ int sweep(const SweepOptions& o) {
 
   const double smallest = *std::min_element(steps.begin(), steps.end());
   checkSweepSteps(smallest, !o.stack && def.expects.empty(), def.maxSteps, def.duration);
+  // the CSV's temporary opened before the runs: a folder that cannot be written fails now
+  const std::string base = o.outDir + "/" + def.name + (def.variant.empty() ? "" : "-" + def.variant) + "-sweep";
+  AtomicFile csv = openOutput(base + ".csv");
   // a stack is measured against where it stands at the start, a motion against a finer run
   const SweepReference reference = o.stack ? SweepReference{kRestPose, {}} : sweepReference(def, smallest);
   std::vector<SweepRow> rows;
@@ -121,16 +127,14 @@ int sweep(const SweepOptions& o) {
         for (int sub : c == CollisionMethod::SoftStep && (o.stack || !o.substeps.empty()) ? substeps : std::vector<int>{0})
           for (double h : steps) rows.push_back(runSweepCase(def, {i, c, h, it, sub}, reference, o.repeat));
 
-  const std::string base = o.outDir + "/" + def.name + (def.variant.empty() ? "" : "-" + def.variant) + "-sweep";
-  if (o.stack) return stackSweep(o, def, rows, base);
+  if (o.stack) return stackSweep(o, def, rows, base, csv);
   // the CSV: the columns the issue names, then what the error was measured against
-  AtomicFile csv(base + ".csv");
   csv.stream() << "integrator,collisions,dt,iterations,steps,seconds_per_sim_second,error,energy_drift,max_penetration,reference\n";
   for (const SweepRow& r : rows)
     csv.stream() << sim::core::integratorName(r.method.integrator) << ',' << sim::world::collisionMethodName(r.method.collisions) << ','
                  << formatNumber(r.method.dt) << ',' << r.method.iterations << ',' << r.steps << ','
                  << formatNumber(r.secondsPerSimSecond) << ',' << formatNumber(r.error) << ','
-                 << formatNumber(r.energyDrift) << ',' << formatNumber(r.maxPenetration) << ',' << reference.name << '\n';
+                 << formatNumber(r.energyDrift) << ',' << formatNumber(r.maxPenetration) << ',' << csvField(reference.name) << '\n';
 
   // the chart: cost on x, error on y, one line per method
   Chart chart;
@@ -148,6 +152,7 @@ int sweep(const SweepOptions& o) {
   }
   // each line joins a method's runs in the order of their steps
   for (const std::string& label : order) chart.series.push_back(byMethod[label]);
+  if (std::all_of(rows.begin(), rows.end(), [](const SweepRow& r) { return r.error == 0.0; })) chart.note = kAllErrorsZero;
   writeChart(chart, base + ".png");
   csv.commit();
 
@@ -181,7 +186,7 @@ void addSweepCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("-o,--output", o->outDir, "output directory (default out)");
   o->Verbosity::addTo(*cmd, "print nothing (the CSV and the chart are still written); errors still on standard error",
                       "also the CSV's rows, every column in full, after the table");
-  cmd->callback([o, &exitCode] { exitCode = sweep(*o); });
+  cmd->callback([o, &exitCode] { exitCode = runInterruptible("sweep " + o->scene, [&] { return sweep(*o); }); });
 }
 
 }  // namespace render::cli

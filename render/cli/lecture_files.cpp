@@ -6,6 +6,7 @@
 #include "render/cli/commands.h"
 #include "render/cli/scene_options.h"
 #include "render/cli/scene_order.h"
+#include "render/jobs/regular_file.h"
 #include "sim/scene3d/scene_build.h"
 
 namespace render::cli {
@@ -19,9 +20,15 @@ std::vector<std::string> lectureSceneFiles(const std::vector<std::string>& argum
       std::vector<std::string> found;
       for (const fs::directory_entry& e : fs::directory_iterator(a, error))
         if (e.path().extension() == ".yaml" && !e.is_directory()) found.push_back(e.path().string());
+      // a stray FIFO named *.yaml would block the pack in open() before anything renders
+      for (const std::string& f : found)
+        if (const std::string kind = notRegularFile(f); !kind.empty())
+          throw UsageError(f + ": " + kind + "; remove it from the folder or give the scene files one by one");
       if (found.empty()) throw UsageError(a + ": no scene files (*.yaml) in this directory; give a directory of scenes");
       for (const std::string& f : orderedSceneFiles(a, found)) files.push_back(f);
     } else if (fs::exists(a, error)) {
+      if (const std::string kind = notRegularFile(a); !kind.empty())
+        throw UsageError(a + ": " + kind + "; give scene files (*.yaml) or directories of them");
       files.push_back(a);
     } else {
       throw UsageError(a + ": no such file or directory; give scene files (*.yaml) or directories of them");

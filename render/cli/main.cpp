@@ -1,6 +1,9 @@
 // rigidreel: the command line, a thin layer that wires scenes, the simulator and the renderer.
 #include <algorithm>
 #include <functional>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <iostream>
 
 #include "render/cli/commands.h"
@@ -64,6 +67,13 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     std::cerr << "rigidreel: " << e.what() << '\n';
     return render::jobs::kExitFailure;
+  }
+  // what was printed reaches its file only now, for the most part: a full disk (/dev/full), a
+  // closed standard output fail here, and a run whose results were not written is not a success
+  std::cout.flush();
+  if (!std::cout || std::fflush(stdout) != 0 || std::ferror(stdout)) {
+    std::cerr << "rigidreel: cannot write standard output (" << std::strerror(errno) << "); the results are not complete\n";
+    return exitCode == render::jobs::kExitOk ? render::jobs::kExitFailure : exitCode;
   }
   return exitCode;
 }

@@ -1,8 +1,11 @@
 #include "render/cli/output.h"
 
+#include <filesystem>
+#include <iostream>
 #include <regex>
 
 #include "render/cli/commands.h"
+#include "render/jobs/json_writer.h"
 #include "render/scene/render_def.h"
 #include "render/video/output_names.h"
 
@@ -27,7 +30,25 @@ render::video::FrameSize parseSize(const std::string& text, const std::string& o
 
 void checkFps(double fps, const std::string& option) {
   if (!(fps > 0.0) || !(fps <= render::scene::kMaxFps))
-    throw UsageError(option + ": frames per second must be above 0 and at most 1000, got " + timeForName(fps));
+    throw UsageError(option + ": frames per second must be above 0 and at most 1000, got " + render::jobs::formatNumber(fps));
+}
+
+render::jobs::AtomicFile openOutput(const std::string& path, const std::string& option) {
+  try {
+    return render::jobs::AtomicFile(path);
+  } catch (const std::runtime_error& e) {
+    throw UsageError(option + ": " + e.what());
+  }
+}
+
+bool namesStandardOutput(const std::string& path) {
+  return path == "/dev/stdout" || path == "/dev/fd/1" || path == "/proc/self/fd/1";
+}
+
+void refuseInputAsOutput(const std::string& output, const std::string& input, const std::string& option) {
+  std::error_code error;
+  if (std::filesystem::equivalent(output, input, error))
+    throw UsageError(option + ": " + output + " is the scene file this run reads; choose another path to write");
 }
 
 std::string videoDiverged(const std::string& file, const render::video::VariantDiverged& d) {
@@ -37,11 +58,17 @@ std::string videoDiverged(const std::string& file, const render::video::VariantD
 }
 
 std::unique_ptr<render::jobs::AtomicFile> openTrace(const std::string& path) {
+  if (namesStandardOutput(path)) return nullptr;
   try {
     return std::make_unique<render::jobs::AtomicFile>(path);
   } catch (const std::runtime_error& e) {
     throw UsageError(std::string("--trace: ") + e.what());
   }
+}
+
+std::ostream& traceStream(const std::unique_ptr<render::jobs::AtomicFile>& file) {
+  if (file) return file->stream();
+  return std::cout;
 }
 
 }  // namespace render::cli

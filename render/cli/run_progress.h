@@ -1,12 +1,14 @@
 // A long `check` or `simulate` on a terminal says how far it is: "FILE: t = 12.5 of 100 s, 2.1e+06
 // steps/s" on standard error, redrawn in place after the first second, at most four times a second,
-// and cleared when the run ends. On a pipe or a file nothing is drawn and no clock is read.
+// and cleared when the run ends. On a pipe or a file nothing is drawn and no clock is read. On any
+// output it stops the run between two steps on Ctrl-C (render/jobs/interrupt.h).
 #pragma once
 
 #include <chrono>
 #include <cstdio>
 #include <string>
 
+#include "render/jobs/interrupt.h"
 #include "render/jobs/status_line.h"
 #include "sim/world/world.h"
 #include "sim/world3d/world.h"
@@ -23,11 +25,13 @@ class RunProgress : public Observer {
       : what_(std::move(what)), until_(until), next_(next),
         line_(shown, std::chrono::seconds(1), std::chrono::milliseconds(250)) {}
 
-  // the observer to pass to advanceTo: this one on a terminal, else `next` alone (the run as without)
-  Observer* observer() { return line_.enabled() ? this : next_; }
+  // the observer to pass to advanceTo: this one, which also stops the run on Ctrl-C between steps
+  Observer* observer() { return this; }
 
   void afterStep(const World& w) override {
+    render::jobs::checkInterrupted();
     if (next_) next_->afterStep(w);
+    if (!line_.enabled()) return;
     // the clock read every `stride_` steps, about every 10 ms: a step of one body takes less time
     // than reading the clock
     if (++sinceCheck_ < stride_) return;

@@ -35,6 +35,8 @@ SceneFile SceneOptions::load() const {
   if (dt) {
     if (!(*dt > 0.0) || !std::isfinite(*dt)) throw UsageError("--dt: the time step must be a positive finite number");
     def.dt = *dt;
+    if (const std::string over = sim::core::dtOverDuration(def.dt, def.duration); !over.empty())
+      throw UsageError("--dt: " + over + "; choose a smaller step");
     if (const std::string over = sim::scene::stepsOverLimit(def, def.duration); !over.empty())
       throw UsageError("--dt: " + over + "; choose a larger step, or raise the scene's 'sim: {max_steps: N}'");
   }
@@ -70,6 +72,8 @@ SceneFile3 SceneOptions::load3() const {
   if (dt) {
     if (!(*dt > 0.0) || !std::isfinite(*dt)) throw UsageError("--dt: the time step must be a positive finite number");
     def.dt = *dt;
+    if (const std::string over = sim::core::dtOverDuration(def.dt, def.duration); !over.empty())
+      throw UsageError("--dt: " + over + "; choose a smaller step");
     if (const std::string over = sim::core::stepsOverLimit(def.dt, def.maxSteps, def.duration); !over.empty())
       throw UsageError("--dt: " + over + "; choose a larger step, or raise the scene's 'sim: {max_steps: N}'");
   }

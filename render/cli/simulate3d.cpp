@@ -1,6 +1,7 @@
 // `rigidreel simulate` of a 3D scene: the state at the end time as text or one JSON object (every
 // body's position, orientation [w, x, y, z], velocity, angular velocity and angular momentum, world
 // frame; the energies and momenta of the whole scene), and every step as a CSV trace.
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 #include <iostream>
@@ -93,8 +94,9 @@ int simulate3d(const SceneOptions& o, std::optional<double> until, bool json, co
   std::unique_ptr<AtomicFile> traceFile;
   std::unique_ptr<render::video::TraceWriter3> trace;
   if (!tracePath.empty()) {
+    refuseInputAsOutput(tracePath, o.scene, "--trace");
     traceFile = openTrace(tracePath);
-    trace = std::make_unique<render::video::TraceWriter3>(traceFile->stream(), def);
+    trace = std::make_unique<render::video::TraceWriter3>(traceStream(traceFile), def);
     trace->rows(world);
   }
   try {
@@ -102,6 +104,13 @@ int simulate3d(const SceneOptions& o, std::optional<double> until, bool json, co
     world.advanceTo(end, progress.observer());
   } catch (const Diverged& d) {
     std::cerr << divergedMessage(o.scene, def, d) << '\n';
+    return kExitFailure;
+  }
+  // a state that stayed finite can still make energies past a double's range
+  if (!std::isfinite(energy(world).total()) || !linearMomentum(world).allFinite() || !angularMomentum(world).allFinite()) {
+    std::cerr << o.scene << ": the simulation diverged: at t = " << formatNumber(world.time)
+              << " its energy or momentum is not a finite number (a mass, speed or gravity past a double's range); "
+                 "choose smaller values\n";
     return kExitFailure;
   }
   if (traceFile) traceFile->commit();

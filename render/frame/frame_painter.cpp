@@ -26,6 +26,8 @@ constexpr double kNormalFraction = 0.08;
 constexpr size_t kFewBodies = 20;
 // contacts: auto draws normals and impulses while fewer contact points than this are on screen
 constexpr size_t kManyContacts = 200;
+// px between two points of a trail, drawn and kept: smooth, and a few hundred segments for a long run
+constexpr double kTrailSpacingPx = 1.5;
 
 }  // namespace
 
@@ -51,6 +53,7 @@ History::Options FramePainter::historyOptions() const {
   const render::scene::RenderDef& r = def_.render;
   History::Options o;
   o.trails = r.trails;
+  o.trailSpacing = kTrailSpacingPx * camera_.pixelSize();
   o.hold = r.contactHold;
   o.eventImpulses = r.impulses;
   o.impacts = r.contacts;
@@ -79,7 +82,7 @@ void FramePainter::paint(const sim::world::World& world, const History& history,
   PhysicsDraw staticPhysics(statics);
   sim::debug::describeBodies(world, staticPhysics);
   // trails, points 1.5 px apart at most: smooth, and a few hundred segments for a long run
-  if (r.trails) history.drawTrails(draw, 1.5 * px);
+  if (r.trails) history.drawTrails(draw, kTrailSpacingPx * px);
   for (const DrawList& ghost : ghosts) ghost.replay(draw);
   RoleFilter moving(draw, [](Role role) { return role != Role::StaticBody; });
   PhysicsDraw movingPhysics(moving);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "render/jobs/interrupt.h"
 #include "sim/debug/describe.h"
 
 namespace render::frame {
@@ -9,14 +10,24 @@ using namespace render::draw;
 
 History::History(const sim::world::World& world, Options options) : options_(std::move(options)) {
   trails_.resize(world.bodies.size());
+  tentative_.resize(world.bodies.size(), false);
   points_.resize(options_.points.size());
   afterStep(world);
 }
 
 void History::afterStep(const sim::world::World& world) {
+  // a snapshot's run to its time: Ctrl-C between two steps
+  render::jobs::checkInterrupted();
   if (options_.trails)
-    for (size_t i = 0; i < world.bodies.size(); ++i)
-      if (!world.bodies[i].isStatic) trails_[i].push_back(world.bodies[i].x);
+    for (size_t i = 0; i < world.bodies.size(); ++i) {
+      if (world.bodies[i].isStatic) continue;
+      std::vector<Vec2>& trail = trails_[i];
+      // drawPath's rule, applied as the points come: the latest point replaces one not kept
+      if (tentative_[i]) trail.pop_back();
+      const Vec2 kept = trail.empty() ? world.bodies[i].x : trail.back();
+      tentative_[i] = !trail.empty() && (world.bodies[i].x - kept).norm() < options_.trailSpacing;
+      trail.push_back(world.bodies[i].x);
+    }
   for (size_t k = 0; k < points_.size(); ++k) {
     const auto& [body, local] = options_.points[k];
     points_[k].push_back(world.bodies[body].pose().toWorld(local));

@@ -31,6 +31,10 @@ class History : public sim::world::StepObserver {
     ContactDescriber contacts;         // the contacts touching now (empty: none)
     std::vector<std::pair<int, Vec2>> points = {};  // body points (body coordinates) whose paths to keep
     std::optional<ImpactLabels> labels = std::nullopt;  // impact_values: text on impact and event afterimages
+    // m: a trail keeps a point only this far from the one it kept before (and always the latest),
+    // as drawTrails draws them: the same trail, in memory that grows with the path drawn, not with
+    // the steps (10 bodies over 10⁷ steps kept every point: 3.7 GB); 0 keeps every step's
+    double trailSpacing = 0.0;
   };
 
   // starts with the world's present state (its contacts and positions at the start)
@@ -62,6 +66,7 @@ class History : public sim::world::StepObserver {
 
   Options options_;
   std::vector<std::vector<Vec2>> trails_;  // by body; empty for static bodies or without trails
+  std::vector<bool> tentative_;            // by body: the trail's last point is the latest, not one kept
   std::vector<std::vector<Vec2>> points_;  // by Options::points
   std::vector<Moment> moments_;
   long touching_ = -1;     // index in moments_ of the contacts still touching, -1 when none

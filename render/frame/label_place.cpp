@@ -400,6 +400,20 @@ void LabelPlacer::finish() {
   pending_.clear();
 }
 
+namespace {
+
+// a label as a warning names it: its first 60 bytes, cut before a UTF-8 sequence, and "…" (a label
+// of a megabyte is not repeated on the terminal)
+std::string cutText(const std::string& text) {
+  constexpr size_t kMost = 60;
+  if (text.size() <= kMost) return text;
+  size_t end = kMost;
+  while (end > 0 && (static_cast<unsigned char>(text[end]) & 0xC0) == 0x80) --end;
+  return text.substr(0, end) + "… (" + std::to_string(text.size()) + " bytes)";
+}
+
+}  // namespace
+
 DroppedLabels::DroppedLabels(std::function<void(const std::string&)> sink)
     : sink_(sink ? std::move(sink) : [](const std::string& m) { std::cerr << "rigidreel: warning: " << m << '\n'; }) {}
 
@@ -419,7 +433,7 @@ void DroppedLabels::report(const std::vector<PlacedText>& dropped, double t) {
     if (told_++ >= kNamed) continue;
     char when[32];
     std::snprintf(when, sizeof when, "%.3f", t);
-    sink_("label '" + d.text + "' dropped at t = " + when + " s: no free spot for it in the frame");
+    sink_("label '" + cutText(d.text) + "' dropped at t = " + when + " s: no free spot for it in the frame");
   }
 }
 

@@ -13,29 +13,64 @@
 
 namespace render::jobs {
 
+namespace fs = std::filesystem;
+
+namespace {
+
+// /dev/stdout is a link to /proc/self/fd/1, which links to whatever standard output is, a regular
+// file too: what is named there is a stream to write to, not a file to replace
+bool streamName(const std::string& path) { return path.starts_with("/dev/") || path.starts_with("/proc/"); }
+
+}  // namespace
+
+std::string finalTarget(const std::string& path) {
+  std::error_code error;
+  if (streamName(path) || !fs::is_symlink(fs::symlink_status(path, error))) return path;
+  // a dangling link's target does not exist: weakly_canonical resolves what does
+  const fs::path target = fs::weakly_canonical(path, error);
+  return error ? path : target.string();
+}
+
+bool writtenThrough(const std::string& path) {
+  if (streamName(path)) return true;
+  std::error_code error;
+  const fs::file_status status = fs::status(path, error);
+  return fs::exists(status) && !fs::is_regular_file(status);
+}
+
 AtomicFile::AtomicFile(std::string path)
-    : path_(std::move(path)), temporary_(partName(path_)) {
-  removeStaleParts(path_);
-  out_.open(temporary_, std::ios::binary | std::ios::trunc);
-  if (!out_) throw std::runtime_error(path_ + ": cannot write here (" + std::strerror(errno) + "); choose a writable path");
+    : path_(finalTarget(path)), temporary_(partName(path_)), through_(writtenThrough(path_)) {
+  if (through_) {
+    // a device or a FIFO: opened as it is (no truncation of what is not a file), written as it goes
+    temporary_ = path_;
+    out_.open(path_, std::ios::binary | std::ios::out);
+  } else {
+    removeStaleParts(path_);
+    out_.open(temporary_, std::ios::binary | std::ios::trunc);
+  }
+  if (!out_) throw std::runtime_error(path + ": cannot write here (" + std::strerror(errno) + "); choose a writable path");
 }
 
 AtomicFile::~AtomicFile() {
   if (committed_) return;
   out_.close();
-  std::remove(temporary_.c_str());
+  if (!through_) std::remove(temporary_.c_str());
 }
 
 void AtomicFile::commit() {
   out_.flush();
   const bool ok = static_cast<bool>(out_);
+  const int written = errno;
   out_.close();
-  if (!ok || std::rename(temporary_.c_str(), path_.c_str()) != 0)
+  const bool closed = static_cast<bool>(out_);
+  if (!ok || !closed) {
+    errno = ok ? errno : written;
+    throw std::runtime_error(path_ + ": could not finish writing (" + std::strerror(errno) + ")");
+  }
+  if (!through_ && std::rename(temporary_.c_str(), path_.c_str()) != 0)
     throw std::runtime_error(path_ + ": could not finish writing (" + std::strerror(errno) + ")");
   committed_ = true;
 }
-
-namespace fs = std::filesystem;
 
 StagedDirectory::StagedDirectory(const std::string& final) : final_(final) {
   const fs::path path(final);

@@ -25,12 +25,12 @@ void checkInterrupted() {
   if (interruptedFlag) throw Interrupted();
 }
 
-int runInterruptible(const std::function<int()>& command) {
+int runInterruptible(const std::string& what, const std::function<int()>& command) {
   catchInterrupts();
   try {
     return command();
   } catch (const Interrupted& e) {
-    std::cerr << "rigidreel: " << e.what() << '\n';
+    std::cerr << "rigidreel: " << what << ' ' << e.what() << '\n';
     return kExitInterrupted;
   }
 }

@@ -4,6 +4,7 @@
 
 #include <functional>
 #include <stdexcept>
+#include <string>
 
 namespace render::jobs {
 
@@ -19,7 +20,8 @@ void checkInterrupted();
 // the exit status of a process stopped by SIGINT, as shells report it
 inline constexpr int kExitInterrupted = 130;
 
-// a subcommand with Ctrl-C caught: its exit status, or kExitInterrupted after saying so
-int runInterruptible(const std::function<int()>& command);
+// a subcommand with Ctrl-C caught: its exit status, or kExitInterrupted after saying on one line
+// what was interrupted ("rigidreel: simulate a.yaml interrupted; …")
+int runInterruptible(const std::string& what, const std::function<int()>& command);
 
 }  // namespace render::jobs

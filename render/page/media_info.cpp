@@ -28,18 +28,20 @@ Bytes head(const std::string& path, size_t limit) {
 }
 
 // the boxes inside [from, to): calls `visit(type, bodyStart, bodyEnd)` for each
+// sizes are checked against what is left (to - at), never by adding to `at`: a 64-bit size near
+// 2⁶⁴ would wrap the sum, and the walk would start over forever
 template <class Visit>
 void boxes(const Bytes& b, size_t from, size_t to, Visit visit) {
-  for (size_t at = from; at + 8 <= to;) {
+  for (size_t at = from; at < to && to - at >= 8;) {
     uint64_t size = bigEndian(b, at, 4);
     size_t header = 8;
     if (size == 1) {  // a 64-bit size follows the type
-      if (at + 16 > to) return;
+      if (to - at < 16) return;
       size = bigEndian(b, at + 8, 8), header = 16;
     } else if (size == 0) {  // to the end
       size = to - at;
     }
-    if (size < header || at + size > to) return;
+    if (size < header || size > to - at) return;
     visit(std::string_view(reinterpret_cast<const char*>(&b[at + 4]), 4), at + header, at + size);
     at += size;
   }
@@ -57,10 +59,14 @@ std::optional<MediaInfo> pngInfo(const std::string& path) {
 }
 
 // the body of the file's top-level `moov` box, found by reading box headers and seeking past the
-// rest (the media data may be hundreds of megabytes)
+// rest (the media data may be hundreds of megabytes). Each box must fit in what is left of the file,
+// so every seek goes forward and the walk ends.
 Bytes movieBox(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  for (;;) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in) return {};
+  const uint64_t fileSize = static_cast<uint64_t>(in.tellg());
+  in.seekg(0);
+  for (uint64_t at = 0; at < fileSize;) {
     Bytes header(16);
     if (!in.read(reinterpret_cast<char*>(header.data()), 8)) return {};
     uint64_t size = bigEndian(header, 0, 4), headerSize = 8;
@@ -68,7 +74,8 @@ Bytes movieBox(const std::string& path) {
       if (!in.read(reinterpret_cast<char*>(header.data()) + 8, 8)) return {};
       size = bigEndian(header, 8, 8), headerSize = 16;
     }
-    if (size == 0 || size < headerSize) return {};
+    if (size == 0 || size < headerSize || size > fileSize - at) return {};
+    at += size;
     const uint64_t body = size - headerSize;
     if (std::string_view(reinterpret_cast<const char*>(&header[4]), 4) == "moov") {
       // a movie header of a few kilobytes per minute of video; refuse an absurd one
@@ -77,8 +84,9 @@ Bytes movieBox(const std::string& path) {
       if (!in.read(reinterpret_cast<char*>(b.data()), static_cast<std::streamsize>(body))) return {};
       return b;
     }
-    in.seekg(static_cast<std::streamoff>(body), std::ios::cur);
+    in.seekg(static_cast<std::streamoff>(at));
   }
+  return {};
 }
 
 std::optional<MediaInfo> mp4Info(const std::string& path) {

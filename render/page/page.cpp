@@ -15,6 +15,7 @@
 
 #include "render/jobs/atomic_file.h"
 #include "render/jobs/exit_status.h"
+#include "render/jobs/regular_file.h"
 
 namespace render::page {
 using namespace render::jobs;
@@ -249,6 +250,8 @@ std::vector<PageScene> readPack(const std::string& dir) {
     // every file it names, read: what the page says of it is what the file holds
     const auto media = [&](const std::string& file, bool video) {
       const std::string path = (folder / file).string();
+      if (const std::string kind = notRegularFile(path); !kind.empty())
+        throw UsageError(path + ": " + kind + " (" + recordPath + " names it); remove it and render the scene again");
       const std::optional<MediaInfo> m = video ? mp4Info(path) : pngInfo(path);
       if (!m)
         throw UsageError(recordPath + ": '" + file + "' is " + (fs::exists(path) ? std::string("not a readable ") + (video ? "MP4" : "PNG") : "missing") +

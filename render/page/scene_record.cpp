@@ -7,6 +7,7 @@
 #include "render/jobs/atomic_file.h"
 #include "render/jobs/exit_status.h"
 #include "render/jobs/json_writer.h"
+#include "render/jobs/regular_file.h"
 
 namespace render::page {
 using namespace render::jobs;
@@ -110,6 +111,8 @@ void writeSceneRecord(const SceneRecord& r, const std::string& path) {
 }
 
 SceneRecord readSceneRecord(const std::string& path) {
+  if (const std::string kind = notRegularFile(path); !kind.empty())
+    throw UsageError(path + ": " + kind + "; remove it and render the scene again to rewrite it");
   YAML::Node root;
   try {
     root = YAML::LoadFile(path);

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "render/scene/output_name_rules.h"
+
 namespace render::scene {
 using sim::yaml::describe;
 using sim::yaml::Reader;
@@ -220,7 +222,9 @@ std::vector<BodyLook> readLooks(const YAML::Node& bodies, const Reader& reader) 
 
 RenderDef readRender(const sim::yaml::SceneSource& source, const sim::scene::SceneDef& model) {
   return sim::yaml::readGuarded(source.file, [&] {
-    const Reader reader(source.file);
+    Reader reader(source.file);
+    reader.placeUnmarked(source.variantMark);
+    checkOutputNames(source, model.name, reader);
     RenderDef out;
     out.bodies = readLooks(source.root["bodies"], reader);
     const YAML::Node block = source.root[kRenderKey];

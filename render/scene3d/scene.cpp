@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "render/scene/render_yaml.h"
+#include "render/scene/output_name_rules.h"
 #include "render/scene/scene_style.h"
 #include "sim/yaml3d/reader3.h"
 
@@ -108,7 +109,9 @@ Scene readScene(const sim::yaml::SceneSource& source, const sim::yaml::OtherKeys
   Scene s;
   s.model = sim::yaml3d::readModel(source, keys);
   sim::yaml::readGuarded(source.file, [&] {
-    const Reader3 r(source.file);
+    Reader3 r(source.file);
+    r.placeUnmarked(source.variantMark);
+    render::scene::checkOutputNames(source, s.model.name, r);
     s.render.bodies = render::scene::readLooks(source.root["bodies"], r);
     const YAML::Node block = source.root[render::scene::kRenderKey];
     if (block) readBlock(block, r, s.model, s);

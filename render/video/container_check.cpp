@@ -122,7 +122,10 @@ std::string webmDefect(FileBytes& f) {
     if (!element || element->first != id) return "it does not start with a WebM header and segment";
     const auto size = vint(f, at + element->second, false);
     if (!size) return "its segment has no size (the muxer's trailer was not written)";
-    at += element->second + size->second + size->first;
+    // against what is left, not by adding: a size near 2⁶⁴ would wrap the sum
+    const uint64_t header = element->second + size->second;
+    if (size->first > f.size() - at - header) return "its segment runs past the end of the file";
+    at += header + size->first;
   }
   if (at != f.size()) return "its segment ends at byte " + std::to_string(at) + ", not at the file's end";
   return "";

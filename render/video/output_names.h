@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "sim/scene/scene_def.h"
 
@@ -16,7 +17,10 @@ std::string outputBase(const std::string& scene, const std::string& variant);
 std::string panelsFileName(const std::string& scene, const std::string& when, int strobe);
 // "-strobe<N>" for a still with N ghosts, "" without
 std::string strobeSuffix(int strobe);
-// a time for a file name: shortest form, at most 6 significant digits ("0.5", "1.23457")
+// a time for a file name: shortest form, at most 6 significant digits ("0.5", "1.23457"); -0 is "0"
 std::string timeForName(double t);
+// the names of several times: 6 significant digits, or as many more as tell every two different
+// times apart (100.0001 and 100.0004 are "100.0001" and "100.0004", not both "100")
+std::vector<std::string> timesForNames(const std::vector<double>& times);
 
 }  // namespace render::video

@@ -245,10 +245,13 @@ StillsOf<D> stillsOf(const RenderPlanOf<D>& plan, const StillSpec& spec) {
                 .height = scenes.front().render.height,
                 .camera = sharedCamera(scenes, surveys, spec.panels),
                 .shots = {}};
+  std::vector<double> firsts;
+  for (const std::vector<double>& shot : instants) firsts.push_back(shot[0]);
+  const std::vector<std::string> timeNames = timesForNames(firsts);
   for (size_t shot = 0; shot < instants.size(); ++shot) {
     StillOutput out{.path = s.directory + "/", .instants = instants[shot], .titles = {}};
     const std::string impact = spec.impacts ? "-impact" + std::to_string(shot + 1) : "";
-    const std::string at = "-t" + timeForName(instants[shot][0]);
+    const std::string at = "-t" + timeNames[shot];
     if (spec.panels) {
       out.path += panelsFileName(first.model.name, spec.impacts ? impact : at, strobe);
       for (size_t i = 0; i < plan.variants.size(); ++i)
@@ -256,6 +259,11 @@ StillsOf<D> stillsOf(const RenderPlanOf<D>& plan, const StillSpec& spec) {
     } else {
       out.path += baseOf(first.model) + impact + at + strobeSuffix(strobe) + ".png";
     }
+    // the plan checked before anything is drawn: one file a still
+    for (const StillOutput& other : s.shots)
+      if (other.path == out.path)
+        throw UsageError(out.path + ": two stills would be written to this file (--at gives the time " + timeNames[shot] +
+                         " twice?); give each time once");
     s.shots.push_back(std::move(out));
   }
   return s;

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "render/jobs/exit_status.h"
+#include "render/jobs/json_writer.h"
 
 namespace render::video {
 using namespace render::scene;
@@ -40,6 +41,13 @@ long TimeMap::frameCount(double fps) const {
     m << "the video would have " << frames << " frames (" << length_ << " s at " << fps << " fps), more than the limit of "
       << kMaxFrames << "; shorten the scene's duration, title_card or slow_motion (or --duration), or lower --fps";
     throw render::jobs::UsageError(m.str());
+  }
+  // fewer frames than one a video length: ffmpeg fails, or writes one frame shown for hours
+  if (length_ > 0.0 && length_ * fps < 1.0 - 1e-9) {
+    using render::jobs::formatNumber;
+    throw render::jobs::UsageError("at " + formatNumber(fps) + " fps a video of " + formatNumber(length_) +
+                                   " s has less than one frame; give at least " + formatNumber(1.0 / length_) +
+                                   " fps (one frame a video length)");
   }
   return std::max(1L, static_cast<long>(frames));
 }

@@ -99,7 +99,8 @@ VideoWriter::VideoWriter(const std::string& path, VideoFormat format, int width,
   // a write to an ffmpeg that has died is an error to report (EPIPE), not a signal that kills us
   ::signal(SIGPIPE, SIG_IGN);
   removeStaleParts(path_);
-  std::vector<std::string> args = ffmpegArguments(format, width, height, fps, temporary_);
+  // "file:" and an absolute path: ffmpeg reads "run:1/…" as a protocol and "-weird/…" as an option
+  std::vector<std::string> args = ffmpegArguments(format, width, height, fps, "file:" + std::filesystem::absolute(temporary_).string());
   args.insert(args.begin(), program_);
   Child child;
   try {

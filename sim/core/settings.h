@@ -28,6 +28,11 @@ inline constexpr int kDefaultMaxBodies = 100000;
 // r·(1 − cos π/n)): more is a generated outline that meant a circle
 inline constexpr int kDefaultMaxVertices = 1024;
 
+// default bound on a scene's forces, events and expect entries together (sim: max_entries): each is
+// a few hundred bytes of definition and is looked up once per step or event; a million is far past
+// any scene written by hand and well within memory
+inline constexpr int kDefaultMaxEntries = 1000000;
+
 // default density, kg/m² (area density in 2D), when neither density nor mass is given
 inline constexpr double kDefaultDensity = 1.0;
 

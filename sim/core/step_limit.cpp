@@ -16,4 +16,12 @@ std::string stepsOverLimit(double dt, double maxSteps, double until) {
   return m.str();
 }
 
+std::string dtOverDuration(double dt, double duration) {
+  if (!(duration > 0.0) || dt <= duration) return "";
+  std::ostringstream m;
+  m.precision(17);
+  m << "dt = " << dt << " s is longer than the scene's duration of " << duration << " s: the run would take no step";
+  return m.str();
+}
+
 }  // namespace sim::core

@@ -13,4 +13,8 @@ double stepCount(double dt, double until);
 // run to `until` at `dt` exceeds `maxSteps`, "" when it does not
 std::string stepsOverLimit(double dt, double maxSteps, double until);
 
+// "dt = 10 s is longer than the scene's duration of 1 s: the run would take no step" when dt passes
+// a duration above 0 (the world would jump to the end without stepping), "" when it does not
+std::string dtOverDuration(double dt, double duration);
+
 }  // namespace sim::core

@@ -23,9 +23,10 @@ std::vector<double> pair(const Vec2& v) { return {v.x(), v.y()}; }
 
 }  // namespace
 
-std::vector<CheckResult> evaluate(const ExpectDef& e, const SceneDef& def, const World& world) {
+std::vector<CheckResult> evaluate(const ExpectDef& e, const SceneDef& def, const World& world,
+                                  const std::unordered_map<std::string, int>* indices) {
   std::vector<CheckResult> out;
-  const int i = e.body.empty() ? -1 : def.bodyIndex(e.body);
+  const int i = e.body.empty() ? -1 : !indices ? def.bodyIndex(e.body) : indices->count(e.body) ? indices->at(e.body) : -1;
   const std::string prefix = i < 0 ? "" : e.body + ".";
   if (i >= 0) {
     const Body& b = world.bodies[i];
@@ -57,18 +58,19 @@ std::vector<CheckResult> runExpects(const SceneDef& def, World& world, sim::worl
   for (const ExpectDef& e : def.expects) order.push_back(&e);
   std::stable_sort(order.begin(), order.end(), [](auto* a, auto* b) { return a->time < b->time; });
   std::vector<CheckResult> out;
+  const std::unordered_map<std::string, int> indices = def.bodyIndices();
   for (const ExpectDef* e : order) {
     // the run's own steps up to the entry (none split there: the run goes on to its duration as
     // `simulate` runs it), and a copy advanced to its time when it falls between two of them
     const double end = std::max(def.duration, e->time);
     world.advanceWithin(e->time, end, observer);
     if (std::abs(world.time - e->time) <= settings::kTimeSnap * world.dt) {
-      for (CheckResult& r : evaluate(*e, def, world)) out.push_back(std::move(r));
+      for (CheckResult& r : evaluate(*e, def, world, &indices)) out.push_back(std::move(r));
       continue;
     }
     World between = world;
     between.advanceTo(e->time);
-    for (CheckResult& r : evaluate(*e, def, between)) out.push_back(std::move(r));
+    for (CheckResult& r : evaluate(*e, def, between, &indices)) out.push_back(std::move(r));
   }
   return out;
 }

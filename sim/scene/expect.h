@@ -16,7 +16,9 @@ using namespace sim::world;
 using sim::core::CheckResult;
 
 // every quantity of one entry, for a world already at the entry's time
-std::vector<CheckResult> evaluate(const ExpectDef& expect, const SceneDef& def, const World& world);
+// (`indices`: the scene's bodyIndices(), when many entries are evaluated; else each name is scanned for)
+std::vector<CheckResult> evaluate(const ExpectDef& expect, const SceneDef& def, const World& world,
+                                  const std::unordered_map<std::string, int>* indices = nullptr);
 
 // runs the scene's world through every expect entry in time order on its own step grid (an entry
 // between two steps is evaluated on a copy advanced to its time; `observer`, if any, sees every

@@ -13,6 +13,12 @@ int SceneDef::bodyIndex(const std::string& n) const {
   return -1;
 }
 
+std::unordered_map<std::string, int> SceneDef::bodyIndices() const {
+  std::unordered_map<std::string, int> out;
+  for (size_t i = 0; i < bodies.size(); ++i) out.emplace(bodies[i].name, static_cast<int>(i));
+  return out;
+}
+
 MassProperties massProperties(const BodyDef& def) {
   if (def.shape.kind == ShapeKind::Plane) return {};
   const AreaProperties a = areaProperties(def.shape);
@@ -54,8 +60,10 @@ World buildWorld(const SceneDef& def) {
     w.bodies.push_back(std::move(b));
   }
   // the readers check every name; a definition changed after reading (a stability search) must too
+  const std::unordered_map<std::string, int> indices = def.bodyIndices();
   auto index = [&](const std::string& name) {
-    const int i = def.bodyIndex(name);
+    const auto it = indices.find(name);
+    const int i = it == indices.end() ? -1 : it->second;
     if (i < 0) throw std::invalid_argument("a force, spring, drag or event names body '" + name + "', which the scene does not have");
     return i;
   };

@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "sim/core/force_defs.h"
@@ -81,8 +82,10 @@ struct SceneDef {
   std::vector<EventDef> events;
   std::vector<ExpectDef> expects;
 
-  // index of the body with this name, or -1
+  // index of the body with this name, or -1 (a scan: for one lookup)
   int bodyIndex(const std::string& name) const;
+  // every body's index by its name: for lookups of many entries, in one pass
+  std::unordered_map<std::string, int> bodyIndices() const;
 };
 
 }  // namespace sim::scene

@@ -39,13 +39,14 @@ bool measuresRun(const ExpectDef& e) { return e.precessionRate || e.spacePrecess
 }  // namespace
 
 std::vector<CheckResult> evaluate(const ExpectDef& e, const SceneDef& def, const World& world,
-                                  const std::vector<FreeBodyMeasures>& measures) {
+                                  const std::vector<FreeBodyMeasures>& measures,
+                                  const std::unordered_map<std::string, int>* indices) {
   std::vector<CheckResult> out;
   auto compare = [&](std::string quantity, std::vector<double> expected, std::vector<double> actual) {
     out.push_back(sim::core::compareValues(e.time, e.tolerance, std::move(quantity), std::move(expected), std::move(actual)));
     out.back().earlierRun = e.earlierRun;
   };
-  const int i = e.body.empty() ? -1 : def.bodyIndex(e.body);
+  const int i = e.body.empty() ? -1 : !indices ? def.bodyIndex(e.body) : indices->count(e.body) ? indices->at(e.body) : -1;
   const std::string prefix = i < 0 ? "" : e.body + ".";
   if (i >= 0) {
     const Body& b = world.bodies[i];
@@ -99,9 +100,10 @@ std::vector<CheckResult> runExpects(const SceneDef& def, World& world, StepObser
   const bool measuring = std::any_of(order.begin(), order.end(), [](auto* e) { return measuresRun(*e); });
   Measuring measures(world, observer);
   std::vector<CheckResult> out;
+  const std::unordered_map<std::string, int> indices = def.bodyIndices();
   for (const ExpectDef* e : order) {
     world.advanceTo(e->time, measuring ? &measures : observer);
-    for (CheckResult& r : evaluate(*e, def, world, measures.bodies)) out.push_back(std::move(r));
+    for (CheckResult& r : evaluate(*e, def, world, measures.bodies, &indices)) out.push_back(std::move(r));
   }
   return out;
 }

@@ -14,8 +14,10 @@ using sim::core::CheckResult;
 
 // every quantity of one entry, for a world at the entry's time; `measures` followed each body from
 // t = 0 (by body index)
+// (`indices`: the scene's bodyIndices(), when many entries are evaluated; else each name is scanned for)
 std::vector<CheckResult> evaluate(const ExpectDef& expect, const SceneDef& def, const World& world,
-                                  const std::vector<FreeBodyMeasures>& measures);
+                                  const std::vector<FreeBodyMeasures>& measures,
+                                  const std::unordered_map<std::string, int>* indices = nullptr);
 
 // runs the scene's world from t = 0 through every expect entry in time order, measuring as it goes
 // (`observer`, if any, sees every step: a progress line)

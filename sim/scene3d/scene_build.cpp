@@ -8,6 +8,12 @@ int SceneDef::bodyIndex(const std::string& name) const {
   return -1;
 }
 
+std::unordered_map<std::string, int> SceneDef::bodyIndices() const {
+  std::unordered_map<std::string, int> out;
+  for (size_t i = 0; i < bodies.size(); ++i) out.emplace(bodies[i].name, static_cast<int>(i));
+  return out;
+}
+
 MassProperties massProperties(const BodyDef& b) {
   // the shape at unit density: its volume and its inertia per kg/m³
   const MassProperties unit = massProperties(b.shape, 1.0);
@@ -30,6 +36,9 @@ Body buildBody(const BodyDef& def) {
 }
 
 World buildWorld(const SceneDef& s) {
+  // every name looked up in one index (the readers checked each)
+  const std::unordered_map<std::string, int> indices = s.bodyIndices();
+  const auto index = [&](const std::string& name) { return indices.at(name); };
   World w;
   for (const BodyDef& b : s.bodies) w.bodies.push_back(buildBody(b));
   w.integrator = s.integrator;
@@ -37,14 +46,14 @@ World buildWorld(const SceneDef& s) {
   w.normalizeQuaternions = s.normalize;
   w.forces.gravity = s.gravity;
   for (const PointForceDef& f : s.pointForces)
-    w.forces.pointForces.push_back({s.bodyIndex(f.body), f.point, f.force, f.bodyFrame, f.from, f.until});
+    w.forces.pointForces.push_back({index(f.body), f.point, f.force, f.bodyFrame, f.from, f.until});
   for (const SpringDef& sp : s.springs) {
     const bool anchored = sp.body2.empty();
-    w.forces.springs.push_back({s.bodyIndex(sp.body), sp.point, anchored ? kWorldAnchor : s.bodyIndex(sp.body2),
+    w.forces.springs.push_back({index(sp.body), sp.point, anchored ? kWorldAnchor : index(sp.body2),
                                 anchored ? sp.anchor : sp.point2, sp.stiffness, sp.restLength, sp.damping});
   }
-  for (const DragDef& d : s.drags) w.forces.drags.push_back({s.bodyIndex(d.body), d.linear, d.angular});
-  for (const EventDef& e : s.events) w.events.push_back({e.time, s.bodyIndex(e.body), e.point, e.pointInWorld, e.impulse});
+  for (const DragDef& d : s.drags) w.forces.drags.push_back({index(d.body), d.linear, d.angular});
+  for (const EventDef& e : s.events) w.events.push_back({e.time, index(e.body), e.point, e.pointInWorld, e.impulse});
   return w;
 }
 

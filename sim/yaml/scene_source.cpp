@@ -134,6 +134,9 @@ void mergeVariant(const Reader& r, SceneSource& s, size_t fileBytes) {
       if (const std::string fault = pathNameFault(kv.first.Scalar()); !fault.empty())
         r.fail(kv.first, "variant name '" + kv.first.Scalar() + "' names output files but " + fault +
                              "; use letters, digits, '-' or '_'");
+      // a name given twice: the second would be dropped and the first run twice
+      if (std::find(s.variantNames.begin(), s.variantNames.end(), kv.first.Scalar()) != s.variantNames.end())
+        r.fail(kv.first, "variant '" + kv.first.Scalar() + "' is defined twice; give each variant once, or rename one");
       s.variantNames.push_back(kv.first.Scalar());
       if (kv.second.IsMap() && kv.second["dimensions"])
         r.fail(kv.second["dimensions"], "a variant cannot change 'dimensions': a scene is 2D or 3D throughout");
@@ -146,6 +149,8 @@ void mergeVariant(const Reader& r, SceneSource& s, size_t fileBytes) {
     r.fail(variants ? variants : s.root, "unknown variant '" + s.variant + "'; " +
                                              (known.empty() ? "this scene has no variants" : "this scene has: " + known));
   }
+  for (const auto& kv : variants)
+    if (kv.first.Scalar() == s.variant) s.variantMark = kv.first.Mark();
   const YAML::Node changes = variants[s.variant];
   if (changes.IsMap()) {
     if (changes["variants"]) r.fail(changes["variants"], "a variant cannot define variants");
@@ -163,9 +168,16 @@ std::string stem(const std::string& path) {
 }  // namespace
 
 SceneSource sceneSourceText(const std::string& text, const std::string& file, const std::string& variant) {
-  SceneSource s{file, stem(file), variant, {}, {}, 2};
+  SceneSource s{file, stem(file), variant, {}, {}, 2, YAML::Mark::null_mark()};
   try {
-    s.root = YAML::Load(text);
+    // every document read: a second one would otherwise be ignored without a word
+    const std::vector<YAML::Node> documents = YAML::LoadAll(text);
+    if (documents.size() > 1) {
+      const YAML::Mark at = documents[1].Mark();
+      throw SceneError(file, at.is_null() ? 1 : at.line + 1, at.is_null() ? 1 : at.column + 1,
+                       "a second YAML document (after '---'): a scene file holds one scene; put the other in a file of its own");
+    }
+    if (!documents.empty()) s.root = documents.front();
   } catch (const YAML::DeepRecursion& e) {
     // yaml-cpp's guard against a stack overflow says only "bad file"
     throw SceneError(file, e.mark.is_null() ? 0 : e.mark.line + 1, e.mark.column + 1,
@@ -189,8 +201,14 @@ SceneSource sceneSourceText(const std::string& text, const std::string& file, co
 }
 
 SceneSource readSceneSource(const std::string& path, const std::string& variant) {
-  if (std::filesystem::is_directory(path))
+  // only a regular file: opening a FIFO blocks until a writer comes, a device never ends
+  std::error_code error;
+  const std::filesystem::file_type kind = std::filesystem::status(path, error).type();
+  if (kind == std::filesystem::file_type::directory)
     throw SceneError(path, 0, 0, "is a directory, not a scene file; give the path of a .yaml file");
+  if (kind != std::filesystem::file_type::regular && kind != std::filesystem::file_type::not_found)
+    throw SceneError(path, 0, 0, std::string("is ") + (kind == std::filesystem::file_type::fifo ? "a FIFO (named pipe)" : kind == std::filesystem::file_type::socket ? "a socket" : "a device") +
+                                     ", not a regular file; give the path of a scene file (.yaml)");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SceneError(path, 0, 0, "cannot open the scene file (does it exist and is it readable?)");
   // read in pieces up to the limit, not to the end: /dev/zero and pipes have no end

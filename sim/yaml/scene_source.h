@@ -24,6 +24,9 @@ struct SceneSource {
   std::vector<std::string> variantNames;  // every variant the file defines, in order
   YAML::Node root;                        // a map; variants deep-merged over the base scene
   int dimensions = 2;                     // `dimensions:`, 2 (the default) or 3; no variant changes it
+  // the merged variant's key: where a fault in a map the merge made (which has no place in the file) is
+  // reported; null for the base scene
+  YAML::Mark variantMark = YAML::Mark::null_mark();
 };
 
 // the scene in `path`, with the named variant deep-merged over it ("" for the base scene): maps key

@@ -5,6 +5,8 @@
 #include <sstream>
 #include <unordered_set>
 
+#include "sim/core/step_limit.h"
+#include "sim/scene/scene_build.h"
 #include "sim/scene/step_limit.h"
 #include "sim/yaml/force_reader.h"
 #include "sim/yaml/path_name.h"
@@ -20,7 +22,9 @@ namespace {
 
 class SceneReader : public Reader {
  public:
-  SceneReader(const SceneSource& source, const OtherKeys& others) : Reader(source.file), others_(others) {}
+  SceneReader(const SceneSource& source, const OtherKeys& others) : Reader(source.file), others_(others) {
+    placeUnmarked(source.variantMark);
+  }
 
   SceneDef read(const SceneSource& source) {
     const YAML::Node root = source.root;
@@ -48,7 +52,7 @@ class SceneReader : public Reader {
     }
     if (const YAML::Node sim = root["sim"]) {
       checkKeys(sim, {"integrator", "dt", "collisions", "iterations", "position_iterations", "substeps", "contact_hertz", "max_steps",
-                      "max_bodies", "max_vertices"},
+                      "max_bodies", "max_vertices", "max_entries"},
                 "sim");
       optional(sim, "max_steps", s.maxSteps, &Reader::positive);
       readSizeLimits(*this, sim, limits_);
@@ -64,6 +68,8 @@ class SceneReader : public Reader {
     }
     const YAML::Node stepsAt = root["sim"] && root["sim"]["dt"] ? root["sim"]["dt"] : root["duration"] ? root["duration"] : root;
     s.stepsLoc = {stepsAt.Mark().line + 1, stepsAt.Mark().column + 1};
+    if (const std::string over = sim::core::dtOverDuration(s.dt, s.duration); !over.empty())
+      fail(stepsAt, over + "; choose a dt of at most the duration (a hundredth of it or less to see any motion)");
     if (const std::string over = stepsOverLimit(s, s.duration); !over.empty())
       fail(stepsAt, over + "; raise dt, shorten duration, or, if the scene needs that many, raise the limit with "
                            "'sim: {max_steps: N}'");
@@ -72,10 +78,12 @@ class SceneReader : public Reader {
     checkBodyCount(*this, bodies, limits_);
     for (const YAML::Node& b : bodies) s.bodies.push_back(readBody(b));
     // forces and events are read alike in 2D and 3D (sim/yaml/force_reader.h) but for the vector
+    size_t entries = 0;
     sim::yaml::readForcesAndEvents(*this, root, s,
-                                   [this](const YAML::Node& v, const std::string& key) { return vec2(v, key); });
+                                   [this](const YAML::Node& v, const std::string& key) { return vec2(v, key); }, limits_, entries);
     if (const YAML::Node expect = root["expect"]) {
       if (!expect.IsSequence()) fail(expect, "'expect' must be a list, got " + describe(expect));
+      sim::yaml::checkEntryCount(*this, expect, entries, limits_);
       for (const YAML::Node& e : expect) s.expects.push_back(readExpect(e, s));
     }
     return s;
@@ -146,6 +154,25 @@ class SceneReader : public Reader {
     }
     if (b.isStatic && (b.velocity != Vec2::Zero() || b.angularVelocity != 0.0))
       fail(n, "static body '" + b.name + "' cannot move; remove its velocity or make it dynamic");
+    // what the numbers make must be numbers too: a mass of 1e308 spread over a shape overflows its
+    // inertia, and the energies made of it are then inf and nan
+    if (!b.isStatic) {
+      const auto toText = [](double x) {
+        std::ostringstream m;
+        m << x;
+        return m.str();
+      };
+      const sim::scene::MassProperties mp = sim::scene::massProperties(b);
+      const double reach = boundingRadius(b.shape);
+      const double speed = b.velocity.norm() + std::abs(b.angularVelocity) * reach;
+      if (!std::isfinite(mp.mass) || !std::isfinite(mp.inertia) || !(mp.inertia > 0.0))
+        fail(n["mass"] ? n["mass"] : n["density"] ? n["density"] : n["inertia"] ? n["inertia"] : n,
+             "body '" + b.name + "': its mass or moment of inertia is not a finite positive number (mass " +
+                 toText(mp.mass) + ", inertia " + toText(mp.inertia) + "); choose a smaller mass or density");
+      if (!std::isfinite(mp.mass * speed * speed) || !std::isfinite(mp.inertia * b.angularVelocity * b.angularVelocity))
+        fail(n["angular_velocity"] ? n["angular_velocity"] : n["velocity"] ? n["velocity"] : n,
+             "body '" + b.name + "': its kinetic energy is not a finite number; choose a smaller speed or mass");
+    }
     return b;
   }
 

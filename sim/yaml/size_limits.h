@@ -15,6 +15,7 @@ namespace sim::yaml {
 struct SizeLimits {
   int maxBodies = sim::core::settings::kDefaultMaxBodies;      // sim: {max_bodies: N}
   int maxVertices = sim::core::settings::kDefaultMaxVertices;  // sim: {max_vertices: N}
+  int maxEntries = sim::core::settings::kDefaultMaxEntries;    // sim: {max_entries: N}
 };
 
 // the overrides in the scene's `sim:` map
@@ -22,6 +23,7 @@ inline void readSizeLimits(const Reader& r, const YAML::Node& sim, SizeLimits& l
   constexpr int most = std::numeric_limits<int>::max();
   if (sim["max_bodies"]) limits.maxBodies = r.wholeNumber(sim["max_bodies"], "max_bodies", 1, most);
   if (sim["max_vertices"]) limits.maxVertices = r.wholeNumber(sim["max_vertices"], "max_vertices", 3, most);
+  if (sim["max_entries"]) limits.maxEntries = r.wholeNumber(sim["max_entries"], "max_entries", 1, most);
 }
 
 // the list `list` holds at most `limit` entries, else "<what> N <entries>, more than the limit of
@@ -44,6 +46,17 @@ inline void checkBodyCount(const Reader& r, const YAML::Node& bodies, const Size
 inline void checkVertexCount(const Reader& r, const YAML::Node& polygon, const SizeLimits& limits) {
   checkCount(r, polygon, limits.maxVertices, "a polygon of ", "vertices", "max_vertices",
              "a round outline needs far fewer (or is a circle), or ");
+}
+
+// forces, events and expect entries together hold at most limits.maxEntries: `seen` counts those
+// of the lists before, and the list that passes the limit is refused at its start
+inline void checkEntryCount(const Reader& r, const YAML::Node& list, size_t& seen, const SizeLimits& limits) {
+  seen += list.size();
+  if (seen <= static_cast<size_t>(limits.maxEntries)) return;
+  std::ostringstream m;
+  m << "forces, events and expect entries number " << seen << " up to this list, more than the limit of " << limits.maxEntries
+    << "; if the scene needs that many, raise the limit with 'sim: {max_entries: N}'";
+  r.fail(list, m.str());
 }
 
 }  // namespace sim::yaml

@@ -10,11 +10,13 @@
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "sim/core/math.h"
 #include "sim/scene/scene_def.h"
 #include "sim/yaml/scene_error.h"
+#include "sim/yaml/utf8.h"
 
 namespace sim::yaml {
 using sim::core::Vec2;
@@ -73,8 +75,12 @@ class Reader {
  public:
   explicit Reader(std::string file) : file_(std::move(file)) {}
 
+  // a node without a place in the file (a map a variant's merge made) is reported at `m`: the
+  // variant's key
+  void placeUnmarked(const YAML::Mark& m) { unmarked_ = m; }
+
   [[noreturn]] void fail(const YAML::Node& at, const std::string& message) const {
-    const YAML::Mark m = at.Mark();
+    const YAML::Mark m = at.Mark().is_null() ? unmarked_ : at.Mark();
     if (m.is_null()) throw SceneError(file_, 1, 1, message);
     throw SceneError(file_, m.line + 1, m.column + 1, message);
   }
@@ -154,6 +160,9 @@ class Reader {
 
   std::string text(const YAML::Node& n, const std::string& key) const {
     if (!n.IsScalar()) fail(n, "expected text for '" + key + "', got " + describe(n));
+    if (const size_t at = invalidUtf8At(n.Scalar()); at != std::string::npos)
+      fail(n, "'" + key + "' is not UTF-8 text (byte " + std::to_string(at + 1) +
+                  " of it): save the file as UTF-8, or write the character as an escape in double quotes (\"\\u00e9\")");
     return n.Scalar();
   }
 
@@ -190,7 +199,7 @@ class Reader {
   std::string bodyRef(const YAML::Node& map, const std::string& key, const Scene& scene, const std::string& what) const {
     const YAML::Node n = required(map, key, what);
     const std::string name = text(n, key);
-    if (scene.bodyIndex(name) < 0) {
+    if (!hasBody(scene.bodies, name)) {
       std::string known;
       for (const auto& b : scene.bodies) known += (known.empty() ? "; the bodies are: " : ", ") + b.name;
       fail(n, "no body named '" + name + "'" + known);
@@ -235,7 +244,28 @@ class Reader {
     return *value;
   }
 
+  // whether `bodies` has one named `name`, through one index of the names grown as bodies are
+  // read: a scan per force, event and expect entry made loading quadratic (50,000 of each: 96 s).
+  // A hit is checked against the list, and a miss looked up again in a new index, so that an index
+  // of another list (a reader used twice) is never trusted.
+  template <class Bodies>
+  bool hasBody(const Bodies& bodies, const std::string& name) const {
+    for (int attempt = 0; attempt < 2; ++attempt) {
+      if (attempt == 1 || indexedBodies_ != &bodies || indexed_ > bodies.size()) bodyIndex_.clear(), indexed_ = 0;
+      indexedBodies_ = &bodies;
+      for (; indexed_ < bodies.size(); ++indexed_) bodyIndex_.emplace(bodies[indexed_].name, indexed_);
+      const auto it = bodyIndex_.find(name);
+      if (it != bodyIndex_.end() && bodies[it->second].name == name) return true;
+    }
+    return false;
+  }
+
   std::string file_;
+  YAML::Mark unmarked_ = YAML::Mark::null_mark();
+  // bodyRef's index: the names of `*indexedBodies_`'s first `indexed_` bodies (a copy starts its own)
+  mutable std::unordered_map<std::string, size_t> bodyIndex_;
+  mutable const void* indexedBodies_ = nullptr;
+  mutable size_t indexed_ = 0;
 };
 
 // runs `read`, turning a tree shape it did not foresee (yaml-cpp's exceptions) into a SceneError with

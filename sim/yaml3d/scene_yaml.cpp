@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <unordered_set>
 #include <utility>
 
 #include "sim/core/step_limit.h"
@@ -41,7 +42,9 @@ const Refusals kExpectRefusals = {{"angle", "a 3D body's rotation is checked by 
 
 class SceneReader3 : public Reader3 {
  public:
-  SceneReader3(const SceneSource& source, const OtherKeys& others) : Reader3(source.file), others_(others) {}
+  SceneReader3(const SceneSource& source, const OtherKeys& others) : Reader3(source.file), others_(others) {
+    placeUnmarked(source.variantMark);
+  }
 
   SceneDef read(const SceneSource& source) {
     const YAML::Node root = source.root;
@@ -64,7 +67,7 @@ class SceneReader3 : public Reader3 {
       optional(w, "gravity", s.gravity, &Reader3::vec3);
     }
     if (const YAML::Node sim = root["sim"]) {
-      keys(sim, {"integrator", "dt", "normalize", "max_steps", "max_bodies"}, kSimRefusals, "sim");
+      keys(sim, {"integrator", "dt", "normalize", "max_steps", "max_bodies", "max_entries"}, kSimRefusals, "sim");
       optional(sim, "max_steps", s.maxSteps, &Reader::positive);
       readSizeLimits(*this, sim, limits_);
       if (sim["integrator"])
@@ -73,7 +76,11 @@ class SceneReader3 : public Reader3 {
       optional(sim, "dt", s.dt, &Reader::positive);
       optional(sim, "normalize", s.normalize, &Reader::boolean);
     }
-    // a bound on work, as in 2D: a typo in dt must not run for years
+    // a bound on work, as in 2D: a typo in dt must not run for years, nor one that takes no step
+    if (const std::string over = sim::core::dtOverDuration(s.dt, s.duration); !over.empty()) {
+      const YAML::Node at = root["sim"] && root["sim"]["dt"] ? root["sim"]["dt"] : root["duration"] ? root["duration"] : root;
+      fail(at, over + "; choose a dt of at most the duration (a hundredth of it or less to see any motion)");
+    }
     if (const std::string over = stepsOverLimit(s.dt, s.maxSteps, s.duration); !over.empty()) {
       const YAML::Node at = root["sim"] && root["sim"]["dt"] ? root["sim"]["dt"] : root["duration"] ? root["duration"] : root;
       fail(at, over + "; raise dt, shorten duration, or, if the scene needs that many, raise the limit with "
@@ -82,12 +89,14 @@ class SceneReader3 : public Reader3 {
     const YAML::Node bodies = required(root, "bodies", "a scene");
     if (!bodies.IsSequence() || bodies.size() == 0) fail(bodies, "'bodies' must be a list of at least one body");
     checkBodyCount(*this, bodies, limits_);
-    for (const YAML::Node& b : bodies) s.bodies.push_back(readBody(b, s));
+    for (const YAML::Node& b : bodies) s.bodies.push_back(readBody(b));
     // forces and events are read alike in 2D and 3D (sim/yaml/force_reader.h) but for the vector
+    size_t entries = 0;
     sim::yaml::readForcesAndEvents(*this, root, s,
-                                   [this](const YAML::Node& v, const std::string& key) { return vec3(v, key); });
+                                   [this](const YAML::Node& v, const std::string& key) { return vec3(v, key); }, limits_, entries);
     if (const YAML::Node expect = root["expect"]) {
       if (!expect.IsSequence()) fail(expect, "'expect' must be a list, got " + describe(expect));
+      sim::yaml::checkEntryCount(*this, expect, entries, limits_);
       for (const YAML::Node& e : expect) s.expects.push_back(readExpect(e, s));
     }
     return s;
@@ -117,7 +126,7 @@ class SceneReader3 : public Reader3 {
     }
   }
 
-  BodyDef readBody(const YAML::Node& n, const SceneDef& s) {
+  BodyDef readBody(const YAML::Node& n) {
     if (!n.IsMap()) fail(n, "expected a map for a body, got " + describe(n));
     keys(n, with({"name", "shape", "density", "mass", "inertia", "position", "orientation", "velocity", "angular_velocity"},
                  others_.body),
@@ -126,7 +135,8 @@ class SceneReader3 : public Reader3 {
     b.loc = b.massLoc = {n.Mark().line + 1, n.Mark().column + 1};
     b.name = text(required(n, "name", "every body"), "name");
     if (b.name.empty()) fail(n, "a body's name cannot be empty");
-    if (s.bodyIndex(b.name) >= 0) fail(n["name"], "duplicate body name '" + b.name + "'; names must be unique");
+    // by hash: a scan of the names before would make loading quadratic in the bodies
+    if (!bodyNames_.insert(b.name).second) fail(n["name"], "duplicate body name '" + b.name + "'; names must be unique");
     b.shape = readShape(required(n, "shape", "body '" + b.name + "'"));
     optional(n, "density", b.density, &Reader::positive);
     optional(n, "mass", b.mass, &Reader::positive);
@@ -187,6 +197,7 @@ class SceneReader3 : public Reader3 {
 
   const OtherKeys& others_;
   sim::yaml::SizeLimits limits_;
+  std::unordered_set<std::string> bodyNames_;
 };
 
 }  // namespace

@@ -75,6 +75,26 @@ TEST_CASE("trails follow the center of mass, points closer than the spacing merg
   CHECK(coarse.toText() == "segment Trail#0 (0,0) (0.15,0)\nsegment Trail#0 (0.15,0) (0.3,0)\nsegment Trail#0 (0.3,0) (0.4,0)\n");
 }
 
+TEST_CASE("a trail kept at its drawing spacing draws as the trail of every step, from far fewer points") {
+  History::Options every{true, 0.5, false, false, 1.0, 1.0, {}};
+  History::Options spaced = every;
+  spaced.trailSpacing = 0.1495;
+  sim::world::World a = ballWorld(), b = ballWorld();
+  History all(a, every), kept(b, spaced);
+  // through the kick at t = 0.5: the path turns, and the points kept must turn with it
+  a.advanceTo(1.2, &all);
+  b.advanceTo(1.2, &kept);
+  DrawList fromAll, fromKept;
+  all.drawTrails(fromAll, 0.1495);
+  kept.drawTrails(fromKept, 0.1495);
+  CHECK(fromKept.toText() == fromAll.toText());
+  CHECK(fromAll.calls().size() > 3);
+  // and a trail drawn finer than it was kept shows only what was kept: a segment per 0.15 m
+  DrawList fine;
+  kept.drawTrails(fine, 0.0095);
+  CHECK(fine.calls().size() == fromKept.calls().size());
+}
+
 TEST_CASE("an impact shows its point, its normal and the impulse on the moving body, then fades") {
   // a ball (A, body 0) at 1 m/s meets a static wall (B) whose face is at x = 1.5 at t = 1
   sim::world::World w = sim::scene::buildWorld(sim::yaml::loadSceneText(

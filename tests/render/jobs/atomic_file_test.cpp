@@ -3,6 +3,7 @@
 #include "render/jobs/atomic_file.h"
 
 #include <doctest/doctest.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -118,4 +119,49 @@ TEST_CASE("writers publishing one folder at once all succeed, and the folder is 
   // nothing left beside the folder: every swapped-out old one removed
   CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator()) == 1);
   fs::remove_all(dir);
+}
+
+TEST_CASE("a path that is not a regular file is written through; a symlink keeps being one, its target replaced") {
+  const fs::path dir = scratch("through");
+  const fs::path fifo = dir / "fifo";
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  // a reader at the FIFO's other end, in a child: what it reads comes back as its exit status
+  const pid_t reader = ::fork();
+  if (reader == 0) {
+    std::ifstream in(fifo);
+    std::string line;
+    std::getline(in, line);
+    ::_exit(line == "through" ? 0 : 1);
+  }
+  {
+    AtomicFile out(fifo.string());
+    CHECK(out.temporaryPath() == fifo.string());
+    out.stream() << "through\n";
+    out.commit();
+  }
+  int status = 0;
+  ::waitpid(reader, &status, 0);
+  CHECK(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 0);
+  CHECK(fs::is_fifo(fifo));
+
+  std::ofstream(dir / "target") << "old";
+  fs::create_symlink("target", dir / "link");
+  {
+    AtomicFile out((dir / "link").string());
+    out.stream() << "new";
+    out.commit();
+  }
+  CHECK(fs::is_symlink(dir / "link"));
+  std::ifstream in(dir / "target");
+  std::string text;
+  in >> text;
+  CHECK(text == "new");
+  fs::remove_all(dir);
+}
+
+TEST_CASE("a write that fails at the end is an error, and nothing is left under the final name") {
+  AtomicFile full("/dev/full");
+  full.stream() << std::string(1 << 16, 'x');
+  CHECK_THROWS_WITH_AS(full.commit(), doctest::Contains("/dev/full: could not finish writing"), std::runtime_error);
 }

@@ -134,7 +134,7 @@ namespace {
 // prints `said` and exits 0, as ffmpeg 5.1 does when the disk fills while it writes the trailer
 fs::path fakeFfmpeg(const fs::path& dir, const std::string& contents, const std::string& said) {
   const fs::path fake = dir / "fake-ffmpeg";
-  std::ofstream(fake) << "#!/bin/sh\nfor a; do out=$a; done\ncat >/dev/null\nprintf '" << contents
+  std::ofstream(fake) << "#!/bin/sh\nfor a; do out=${a#file:}; done\ncat >/dev/null\nprintf '" << contents
                       << "' > \"$out\"\nprintf '" << said << "' >&2\nexit 0\n";
   fs::permissions(fake, fs::perms::owner_all);
   return fake;
@@ -193,7 +193,7 @@ TEST_CASE("a silent ffmpeg that leaves a file without its index or frames does n
     twelve.finish();
   }
   const fs::path copier = dir / "copier";
-  std::ofstream(copier) << "#!/bin/sh\nfor a; do out=$a; done\ncat >/dev/null\ncp '" << (dir / "twelve.mp4").string()
+  std::ofstream(copier) << "#!/bin/sh\nfor a; do out=${a#file:}; done\ncat >/dev/null\ncp '" << (dir / "twelve.mp4").string()
                         << "' \"$out\"\n";
   fs::permissions(copier, fs::perms::owner_all);
   CHECK(finishOverGoodVideo(dir, copier.string()).find("holds 12 frames, not the 3 written") != std::string::npos);

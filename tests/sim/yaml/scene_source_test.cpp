@@ -3,7 +3,14 @@
 // once, and bounded by the file's size however aliases repeat what they name.
 #include <doctest/doctest.h>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "sim/yaml/scene_source.h"
 #include "sim/yaml/scene_yaml.h"
@@ -120,12 +127,33 @@ TEST_CASE("a variant keeps the scene's order of keys and bodies, and appends wha
   CHECK(s.root["bodies"][1]["name"].Scalar() == "c");
 }
 
-TEST_CASE("a file without end or larger than the limit is refused after reading at most the limit") {
+TEST_CASE("a file larger than the limit is refused after reading at most the limit") {
+  const std::string path = (std::filesystem::temp_directory_path() / ("rigidreel-big-" + std::to_string(::getpid()) + ".yaml")).string();
+  std::ofstream(path) << "name: big\n";
+  std::filesystem::resize_file(path, (17u << 20));
   try {
-    (void)sim::yaml::readSceneSource("/dev/zero");
-    FAIL_CHECK("/dev/zero loaded");
+    (void)sim::yaml::readSceneSource(path);
+    FAIL_CHECK("17 MiB loaded");
   } catch (const sim::yaml::SceneError& e) {
-    CHECK(std::string(e.what()).find("/dev/zero") == 0);
+    CHECK(std::string(e.what()).find(path) == 0);
     CHECK(e.message.find("larger than the limit of 16 MiB") != std::string::npos);
   }
+  std::filesystem::remove(path);
+}
+
+TEST_CASE("a device, a FIFO or a folder is refused before it is opened") {
+  const std::string fifo = (std::filesystem::temp_directory_path() / ("rigidreel-fifo-" + std::to_string(::getpid()) + ".yaml")).string();
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  for (const auto& [path, what] : std::vector<std::pair<std::string, std::string>>{
+           {"/dev/zero", "is a device, not a regular file"}, {fifo, "is a FIFO (named pipe), not a regular file"},
+           {std::filesystem::temp_directory_path().string(), "is a directory"}}) {
+    CAPTURE(path);
+    try {
+      (void)sim::yaml::readSceneSource(path);
+      FAIL_CHECK("loaded");
+    } catch (const sim::yaml::SceneError& e) {
+      CHECK(e.message.find(what) == 0);
+    }
+  }
+  std::filesystem::remove(fifo);
 }

@@ -52,6 +52,21 @@ TEST_CASE("the default bounds are the documented ones") {
   const sim::yaml::SizeLimits limits;
   CHECK(limits.maxBodies == 100000);
   CHECK(limits.maxVertices == 1024);
+  CHECK(limits.maxEntries == 1000000);
+}
+
+TEST_CASE("forces, events and expect entries together past max_entries are refused at the list that passes it") {
+  const std::string scene = circles(2) +
+                            "forces: [{type: force, body: b0, force: [1, 0]}]\n"
+                            "events: [{time: 0.1, body: b1, impulse: [1, 0]}]\n"
+                            "expect: [{time: 0.5, body: b0, position: [0, 0], tolerance: 10}]\n";
+  // the lists start on lines 5, 6 and 7: with a limit of 2 the expect list is the one that passes it
+  expectSceneError("sim: {max_entries: 2}\n" + scene, 7, 9,
+                   {"forces, events and expect entries number 3 up to this list, more than the limit of 2",
+                    "'sim: {max_entries: N}'"});
+  expectSceneError("sim: {max_entries: 1}\n" + scene, 6, 9, {"number 2 up to this list"});
+  const sim::scene::SceneDef def = sim::yaml::loadSceneText("sim: {max_entries: 3}\n" + scene, kFile);
+  CHECK(def.pointForces.size() + def.events.size() + def.expects.size() == 3);
 }
 
 TEST_CASE("a polygon past max_vertices is refused at its list; the key raises the bound") {
