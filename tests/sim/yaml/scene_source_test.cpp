@@ -144,9 +144,11 @@ TEST_CASE("a file larger than the limit is refused after reading at most the lim
 TEST_CASE("a device, a FIFO or a folder is refused before it is opened") {
   const std::string fifo = (std::filesystem::temp_directory_path() / ("rigidreel-fifo-" + std::to_string(::getpid()) + ".yaml")).string();
   REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
-  for (const auto& [path, what] : std::vector<std::pair<std::string, std::string>>{
+  // no structured binding: clang 14 cannot capture one in CAPTURE (make sanitize builds with it)
+  for (const auto& [pathBound, whatBound] : std::vector<std::pair<std::string, std::string>>{
            {"/dev/zero", "is a device, not a regular file"}, {fifo, "is a FIFO (named pipe), not a regular file"},
            {std::filesystem::temp_directory_path().string(), "is a directory"}}) {
+    const std::string path = pathBound, what = whatBound;
     CAPTURE(path);
     try {
       (void)sim::yaml::readSceneSource(path);
