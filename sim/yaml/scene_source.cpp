@@ -3,12 +3,15 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <unordered_map>
 #include <unordered_set>
 #include <utility>
 
 #include <yaml-cpp/depthguard.h>
+#include <yaml-cpp/eventhandler.h>
+#include <yaml-cpp/parser.h>
 
 #include "sim/yaml/path_name.h"
 #include "sim/yaml/yaml_reader.h"
@@ -158,6 +161,28 @@ void mergeVariant(const Reader& r, SceneSource& s, size_t fileBytes) {
   }
 }
 
+// where a text's second YAML document starts, if it has one (the parser's events, no nodes built)
+std::optional<YAML::Mark> secondDocument(const std::string& text) {
+  struct Starts : YAML::EventHandler {
+    std::vector<YAML::Mark> marks;
+    void OnDocumentStart(const YAML::Mark& at) override { marks.push_back(at); }
+    void OnDocumentEnd() override {}
+    void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+    void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
+    void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t, const std::string&) override {}
+    void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {}
+    void OnSequenceEnd() override {}
+    void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {}
+    void OnMapEnd() override {}
+  } starts;
+  std::istringstream in(text);
+  YAML::Parser parser(in);
+  for (int documents = 0; documents < 2 && parser.HandleNextDocument(starts); ++documents) {
+  }
+  if (starts.marks.size() < 2) return std::nullopt;
+  return starts.marks[1];
+}
+
 std::string stem(const std::string& path) {
   std::string base = path.substr(path.find_last_of('/') + 1);
   if (base.size() > 5 && base.ends_with(".yaml")) base.resize(base.size() - 5);
@@ -170,14 +195,14 @@ std::string stem(const std::string& path) {
 SceneSource sceneSourceText(const std::string& text, const std::string& file, const std::string& variant) {
   SceneSource s{file, stem(file), variant, {}, {}, 2, YAML::Mark::null_mark()};
   try {
-    // every document read: a second one would otherwise be ignored without a word
-    const std::vector<YAML::Node> documents = YAML::LoadAll(text);
-    if (documents.size() > 1) {
-      const YAML::Mark at = documents[1].Mark();
+    // a second document would otherwise be ignored without a word; counted up to two, never all:
+    // yaml-cpp's LoadAll never ends on some malformed bytes (it keeps finding empty documents)
+    if (const std::optional<YAML::Mark> second = secondDocument(text)) {
+      const YAML::Mark at = *second;
       throw SceneError(file, at.is_null() ? 1 : at.line + 1, at.is_null() ? 1 : at.column + 1,
                        "a second YAML document (after '---'): a scene file holds one scene; put the other in a file of its own");
     }
-    if (!documents.empty()) s.root = documents.front();
+    s.root = YAML::Load(text);
   } catch (const YAML::DeepRecursion& e) {
     // yaml-cpp's guard against a stack overflow says only "bad file"
     throw SceneError(file, e.mark.is_null() ? 0 : e.mark.line + 1, e.mark.column + 1,
