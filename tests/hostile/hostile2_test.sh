@@ -204,8 +204,9 @@ printf 'name: index.html\nbodies: [{name: a, shape: {circle: 1}}]\n' >page.yaml
 expect "a scene named index.html is refused at its name" 2 "page.yaml:1:7: the scene's name 'index.html'" lecture page.yaml -o o
 printf 'name: twice\nbodies: [{name: a, shape: {circle: 1}}]\nvariants:\n  a: {duration: 2}\n  a: {duration: 3}\n' >twice.yaml
 expect "a variant given twice is refused at its second key" 2 "twice.yaml:5:3: variant 'a' is defined twice" render twice.yaml -o o --all-variants
+# the error points at the '---' line that starts the second document
 printf 'name: two\nbodies: [{name: a, shape: {circle: 1}}]\n---\nname: other\nbodies: [{name: b, shape: {circle: 1}}]\n' >two.yaml
-expect "a second YAML document is refused" 2 "two.yaml:4:1: a second YAML document" check two.yaml
+expect "a second YAML document is refused" 2 "two.yaml:3:1: a second YAML document" check two.yaml
 
 # --- loading is linear and bounded; trails grow with the path drawn -----------------------------
 printf 'name: many\nsim: {max_entries: 2}\nbodies: [{name: a, shape: {circle: 1}}]\nevents: [{time: 0.1, body: a, impulse: [1, 0]}]\nexpect:\n- {time: 0.5, body: a, velocity: [0.318, 0], tolerance: 1}\n- {time: 0.6, body: a, velocity: [0.318, 0], tolerance: 1}\n' >many.yaml
