@@ -95,8 +95,9 @@ class SoftStepSolver final : public Method {
       warmStart();
       solve(h, true);
       integratePositions(h);
-      for (int r = 0; r < settings::kRelaxIterations; ++r) solve(h, false);
-      accumulateImpulses();
+      static_assert(settings::kRelaxIterations >= 1, "the totals are added in the last relax pass");
+      // the last relax pass adds each point's impulse to the step's total as it goes
+      for (int r = 0; r < settings::kRelaxIterations; ++r) solve(h, false, r + 1 == settings::kRelaxIterations);
     }
     storeBodies(world);
     return false;
@@ -259,8 +260,8 @@ class SoftStepSolver final : public Method {
     }
   }
 
-  void solve(double h, bool useBias) {
-    const soft::PassSettings s{1.0 / h, settings::kContactPushMaxSpeed, useBias};
+  void solve(double h, bool useBias, bool accumulate = false) {
+    const soft::PassSettings s{1.0 / h, settings::kContactPushMaxSpeed, useBias, accumulate};
     soft::BodyState* bodies = states_.data();
     for (size_t r = 0; r < ranges_.size(); ++r) {
       const auto [begin, end] = ranges_[r];
@@ -269,12 +270,6 @@ class SoftStepSolver final : public Method {
       else
         soft::solveWide(blocks_.data(), begin, end, bodies, s);
     }
-  }
-
-  void accumulateImpulses() {
-    for (soft::ContactBlock& blk : blocks_)
-      for (soft::PointLanes& p : blk.p)
-        for (int l = 0; l < soft::kLanes; ++l) p.totalNormalImpulse.l[l] += p.normalImpulse.l[l];
   }
 
   LeverArms armsOf(size_t contact, int k) const {
