@@ -105,6 +105,10 @@ class GlCanvas final : public Canvas {
   void ring(const Vec2& center, double radius, double width);
   void strokeSegment(const Vec2& a, const Vec2& b, double width);
   void strokeClosed(const std::vector<Vec2>& vertices, double width);
+  // a closed convex outline with mitred corners, `half` its half width in world units
+  void strokeMitred(const std::vector<Vec2>& vertices, double half);
+  // polygons under this many pixels across are outlined mitred (strokeMitred), as one strip
+  static constexpr double kSmallOutlinePx = 16.0;
   void strokeArrow(const Vec2& tail, const Vec2& head, double width);
   // diagonal lines over the pixels of the primitive just drawn, within `box` (its bounds) and the view
   void hatch(const Bounds& box, const Color& c, double opacity);
