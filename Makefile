@@ -68,13 +68,15 @@ BENCH_BASELINE ?=
 # BOX2D3=DIR: Box2D v3's column in the stack table, from DIR/b3_pyramid (built by
 # ../shared/peers/box2d-v3/build.sh DIR); without it the table has Box2D 2.4 and ours
 BOX2D3 ?=
+# BENCH_FLAGS=--renders-only: the 720p render rows alone (the poll and both pyramids), a few minutes
+BENCH_FLAGS ?=
 bench: build
 	@$(MAKE) --no-print-directory deps PACKAGES="$(BENCH_PACKAGES)"
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
 	@cmake --build $(BUILD) -j $(JOBS) --target rigidreel_bench rigidreel_stack_bench
 	@mkdir -p out/bench && rm -f out/bench/stacks.csv
 	./$(BUILD)/rigidreel_stack_bench --method sequential --method soft_step --csv out/bench/stacks.csv $(if $(BOX2D3),--box2d3 $(BOX2D3))
-	./$(BUILD)/rigidreel_bench ./$(BUILD)/rigidreel scenes/three_collisions_poll.yaml $(BENCH_BASELINE)
+	./$(BUILD)/rigidreel_bench ./$(BUILD)/rigidreel scenes/three_collisions_poll.yaml $(BENCH_BASELINE) $(BENCH_FLAGS)
 
 clean:
 	rm -rf $(BUILD) $(SANITIZE_BUILD) $(FUZZ_BUILD)

@@ -6,7 +6,8 @@
 // it too, in the same run. Results go to out/bench/*.csv and a summary on stdout; ratios are
 // measured in one run, since these machines are noisy.
 //
-// usage: rigidreel_bench RIGIDREEL SCENE [BASELINE_RIGIDREEL]
+// usage: rigidreel_bench RIGIDREEL SCENE [BASELINE_RIGIDREEL] [--renders-only]
+// (--renders-only: the 720p renders alone, the poll and both pyramids; no start-up, 1080p or lecture pack)
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -182,9 +183,11 @@ std::string fileText(const std::string& path) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::string rigidreel = argc > 1 ? argv[1] : "build/rigidreel";
-  const std::string scene = argc > 2 ? argv[2] : "scenes/three_collisions_poll.yaml";
-  const std::string baseline = argc > 3 ? argv[3] : "";
+  std::vector<std::string> args(argv + 1, argv + argc);
+  const bool rendersOnly = std::erase(args, std::string("--renders-only")) > 0;
+  const std::string rigidreel = args.size() > 0 ? args[0] : "build/rigidreel";
+  const std::string scene = args.size() > 1 ? args[1] : "scenes/three_collisions_poll.yaml";
+  const std::string baseline = args.size() > 2 ? args[2] : "";
   fs::create_directories("out/bench");
   // each line as it comes: the lecture packs take minutes
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
@@ -204,6 +207,7 @@ int main(int argc, char** argv) {
   // start-up: `check` of one scene, the median of 21 runs
   const std::string checked = "scenes/poll_bar_impulse.yaml";
   for (const auto& [name, program] : programs) {
+    if (rendersOnly) break;
     const double s = medianTime({program, "check", checked}, 21);
     row("check start-up", name, "", 0, s);
     std::printf("%-9s check %s: %6.1f ms (median of 21)\n", name.c_str(), checked.c_str(), 1000.0 * s);
@@ -287,7 +291,8 @@ int main(int argc, char** argv) {
     std::printf("  rigidreel's video is ffmpeg alone's, byte for byte: %s\n", same ? "yes" : "NO");
   };
   // the two-body poll at 720p and 1080p, 2 s
-  for (const auto& [w, h] : {std::pair{1280, 720}, std::pair{1920, 1080}}) pipeline(scene, w, h, "2");
+  for (const auto& [w, h] : {std::pair{1280, 720}, std::pair{1920, 1080}})
+    if (w == 1280 || !rendersOnly) pipeline(scene, w, h, "2");
   // Box2D's pyramid (stack_layouts.h), resting, soft_step, 0.5 s at 720p: base 20 (210 boxes) and
   // base 100 (5,050 boxes), how the cost grows with the bodies (issue 23's targets: 1.3 and 1.5 x)
   for (int base : {20, 100}) {
@@ -307,6 +312,7 @@ int main(int argc, char** argv) {
   // the lecture pack (scenes/lecture, as `make lecture` makes it)
   std::printf("\n");
   for (const auto& [name, program] : programs) {
+    if (rendersOnly) break;
     const std::string dir = "out/bench/lecture-" + name;
     fs::remove_all(dir);
     const Timed t = timeProgram({program, "lecture", "scenes/lecture", "-o", dir, "--quiet"});

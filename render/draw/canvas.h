@@ -31,6 +31,9 @@ class Canvas {
   // labels go through render::frame::LabelPlacer, which may move them to a free spot; any other
   // canvas draws them where they prefer to be
   virtual void label(const Vec2& anchor, const Vec2& direction, const std::string& text, const Pen& pen) = 0;
+  // the points that follow are many (a frame of hundreds of contacts): a canvas may draw them
+  // coarser, for speed, until told otherwise
+  virtual void manyPoints(bool many) { (void)many; }
 };
 
 // the center of a label's box, half-extents `halfWidth` × `halfHeight`, beyond `anchor` along the

@@ -148,13 +148,13 @@ void GlCanvas::polygon(const std::vector<Vec2>& vertices, const Pen& s) {
   enter(s.role);
   // bars and panels are areas without an outline
   if (info(s.role).area) {
-    beginPrimitive(fillColor(s), s.opacity);
+    beginPrimitive(fillColor(s), s.opacity, false, false);
     fillConvex(vertices);
     return;
   }
   const bool solid = s.role == Role::Body || s.role == Role::StaticBody;
   if (solid) {
-    beginPrimitive(fillColor(s), s.opacity, s.role == Role::StaticBody);
+    beginPrimitive(fillColor(s), s.opacity, s.role == Role::StaticBody, false);
     fillConvex(vertices);
     if (s.role == Role::StaticBody) {
       Bounds area;
@@ -170,7 +170,7 @@ void GlCanvas::circle(const Vec2& center, double radius, const Pen& s) {
   enter(s.role);
   const bool solid = s.role == Role::Body || s.role == Role::StaticBody;
   if (solid) {
-    beginPrimitive(fillColor(s), s.opacity, s.role == Role::StaticBody);
+    beginPrimitive(fillColor(s), s.opacity, s.role == Role::StaticBody, false);
     fillDisc(center, radius);
     if (s.role == Role::StaticBody) {
       Bounds area;
@@ -208,6 +208,7 @@ void GlCanvas::segment(const Vec2& a, const Vec2& b, const Pen& s) {
 void GlCanvas::point(const Vec2& p, const Pen& s) {
   enter(s.role);
   const double w = style_.lineWidth;
+  const double tolerance = manyPoints_ ? 0.25 : 0.05;
   switch (s.role) {
     case Role::IncidentVertex:
       // a ring, so the vertex itself stays visible inside it
@@ -216,14 +217,14 @@ void GlCanvas::point(const Vec2& p, const Pen& s) {
       break;
     case Role::ContactPoint:
       // a dot with a rim of the background, visible over a body of the same color
-      beginPrimitive(style_.background, s.opacity);
-      fillDisc(p, 2.9 * w * px_);
-      beginPrimitive(strokeColor(s), s.opacity);
-      fillDisc(p, 2.2 * w * px_);
+      beginPrimitive(style_.background, s.opacity, false, false);
+      fillDisc(p, 2.9 * w * px_, tolerance);
+      beginPrimitive(strokeColor(s), s.opacity, false, false);
+      fillDisc(p, 2.2 * w * px_, tolerance);
       break;
     default:
-      beginPrimitive(strokeColor(s), s.opacity);
-      fillDisc(p, 1.6 * w * px_);
+      beginPrimitive(strokeColor(s), s.opacity, false, false);
+      fillDisc(p, 1.6 * w * px_, tolerance);
   }
 }
 
@@ -246,16 +247,18 @@ void GlCanvas::label(const Vec2& anchor, const Vec2& direction, const std::strin
   texts_.push_back({center, text, Anchor::Center, strokeColor(s).withAlpha(s.opacity)});
 }
 
-void GlCanvas::beginPrimitive(const Color& c, double opacity, bool marks) {
+void GlCanvas::beginPrimitive(const Color& c, double opacity, bool marks, bool overlaps) {
   // a frame of many bodies takes long: Ctrl-C ends it here, not after it (a flag read, no more)
   render::jobs::checkInterrupted();
   const double alpha = c.a * std::clamp(opacity, 0.0, 1.0);
   keyed({c.r, c.g, c.b, alpha, marks ? 1.0 : 0.0});
-  if (alpha >= 1.0 && !marks) {
-    // opaque: overlaps do not show, so no stencil, and no state between primitives: its triangles
-    // join the batch, drawn with the others in one call (a stencil change per primitive made
+  if ((alpha >= 1.0 || !overlaps) && !marks) {
+    // opaque, or one convex fan (GL's rasterization rules cover each sample of it once): overlaps
+    // do not show, so no stencil, and no state between primitives: its triangles join the batch,
+    // drawn with the others in one call, in order (a stencil change per primitive made
     // contact-heavy frames several times slower, and a call per primitive made frames of many
-    // bodies cost in proportion to the calls)
+    // bodies cost in proportion to the calls; fading contact dots, a call each, made a frame of a
+    // 210-box pyramid's 800 contacts cost three times its bodies)
     batching_ = true;
     color_ = {static_cast<float>(c.r), static_cast<float>(c.g), static_cast<float>(c.b), static_cast<float>(alpha)};
     stencil_ = 0;
@@ -357,17 +360,17 @@ const std::vector<Vec2>& GlCanvas::unitCircle(int n) {
   return points;
 }
 
-int GlCanvas::discSegments(double radius) const {
-  // chords within 0.05 px of the circle: n = π / acos(1 − 0.05 / r), r in pixels
+int GlCanvas::discSegments(double radius, double tolerance) const {
+  // chords within `tolerance` px of the circle: n = π / acos(1 − tolerance / r), r in pixels
   const double r = radius / px_;
-  if (!(r > 0.05)) return 8;
+  if (!(r > tolerance)) return 8;
   // clamped before the conversion: past 10¹⁵ px (a fixed camera a femtometre high) the quotient is
   // infinite, and converting it is undefined behavior
-  return static_cast<int>(std::clamp(std::ceil(std::numbers::pi / std::acos(1.0 - 0.05 / r)), 8.0, 720.0));
+  return static_cast<int>(std::clamp(std::ceil(std::numbers::pi / std::acos(1.0 - tolerance / r)), 8.0, 720.0));
 }
 
-void GlCanvas::fillDisc(const Vec2& center, double radius) {
-  const std::vector<Vec2>& circle = unitCircle(discSegments(radius));
+void GlCanvas::fillDisc(const Vec2& center, double radius, double tolerance) {
+  const std::vector<Vec2>& circle = unitCircle(discSegments(radius, tolerance));
   shape(GL_TRIANGLE_FAN);
   vertex(center);
   for (const Vec2& u : circle) vertex(center + radius * u);
@@ -399,9 +402,18 @@ void GlCanvas::strokeSegment(const Vec2& a, const Vec2& b, double width) {
 }
 
 void GlCanvas::strokeClosed(const std::vector<Vec2>& vertices, double width) {
+  const double half = 0.5 * width * px_;
+  // a polygon a few pixels across: its outline as one strip with mitred corners, 2 triangles an
+  // edge (a round join's corner differs by a fifth of a pixel's area: no difference at that size,
+  // and the joins were four fifths of a small box's triangles)
+  Bounds extent;
+  for (const Vec2& v : vertices) extent.add(v);
+  if (vertices.size() >= 3 && extent.size().maxCoeff() < kSmallOutlinePx * px_) {
+    strokeMitred(vertices, half);
+    return;
+  }
   // each edge, and one round join at each vertex: the same pixels as every edge with both its caps
   // (the one color covers them once), with half the discs
-  const double half = 0.5 * width * px_;
   for (size_t i = 0; i < vertices.size(); ++i) {
     const Vec2 &a = vertices[i], &b = vertices[(i + 1) % vertices.size()];
     const Vec2 d = b - a;
@@ -411,6 +423,33 @@ void GlCanvas::strokeClosed(const std::vector<Vec2>& vertices, double width) {
     }
     fillDisc(a, half);
   }
+}
+
+void GlCanvas::strokeMitred(const std::vector<Vec2>& vertices, double half) {
+  // the outline's outer and inner corners: each vertex moved along its corner's bisector by
+  // half / cos(half the turn), whichever way the polygon winds (the signed area's sign)
+  const size_t n = vertices.size();
+  double area = 0.0;
+  for (size_t i = 0; i < n; ++i) {
+    const Vec2 &a = vertices[i], &b = vertices[(i + 1) % n];
+    area += a.x() * b.y() - b.x() * a.y();
+  }
+  const double outward = area >= 0.0 ? -1.0 : 1.0;
+  shape(GL_TRIANGLE_STRIP);
+  for (size_t k = 0; k <= n; ++k) {
+    const size_t i = k % n;
+    const Vec2 &prev = vertices[(i + n - 1) % n], &v = vertices[i], &next = vertices[(i + 1) % n];
+    const Vec2 d0 = (v - prev).normalized(), d1 = (next - v).normalized();
+    // each edge's outward normal, and their mean scaled to reach both offset edges
+    const Vec2 n0 = perpendicular(d0) * outward, n1 = perpendicular(d1) * outward;
+    const Vec2 mean = n0 + n1;
+    const double c = mean.dot(n0);
+    // a corner sharper than about 30° (never in a body) keeps a bounded spike
+    const Vec2 miter = mean.allFinite() && c > 0.07 ? mean * (half / c) : n0 * half;
+    vertex(v + miter);
+    vertex(v - miter);
+  }
+  endShape();
 }
 
 void GlCanvas::strokeArrow(const Vec2& tail, const Vec2& head, double width) {

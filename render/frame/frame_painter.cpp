@@ -98,7 +98,9 @@ void FramePainter::paint(const sim::world::World& world, const History& history,
   history.drawAfterimages(world.time, held);
   if (r.contactsAuto && contactsOnScreen(held) >= kManyContacts) {
     RoleFilter dots(beside, [](Role role) { return role != Role::ContactNormal && role != Role::Impulse; });
+    target.manyPoints(true);
     held.replay(dots);
+    target.manyPoints(false);
   } else {
     held.replay(beside);
   }
