@@ -9,6 +9,7 @@
 #include "render/cli/commands.h"
 #include "render/cli/scene_options.h"
 #include "render/golden/trace_compare.h"
+#include "render/jobs/interrupt.h"
 #include "render/jobs/json_writer.h"
 #include "render/video/output_names.h"
 
@@ -105,7 +106,7 @@ void addCompareCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--trace", o->trace, "their trajectory, in the --trace CSV format (scenes/README.md)")->required();
   cmd->add_option("--tolerance", o->tolerance, "position=1e-3,angle=1e-3,velocity=1e-2 (the defaults)");
   cmd->add_option("--plot", o->plot, "write an error-against-time chart into this directory");
-  cmd->callback([o, &exitCode] { exitCode = compare(*o); });
+  cmd->callback([o, &exitCode] { exitCode = runInterruptible("compare " + o->scene, [&] { return compare(*o); }); });
 }
 
 }  // namespace render::cli

@@ -4,6 +4,7 @@
 #include <memory>
 #include <sstream>
 
+#include "render/analysis/interrupt_check.h"
 #include "render/cli/commands.h"
 #include "render/cli/scene_options.h"
 #include "render/jobs/json_writer.h"
@@ -62,7 +63,8 @@ int expect(const ExpectCommand& o) {
         def.expects.push_back(e);
       }
   sim::world::World world = startWorld(def, o.scene);
-  const std::vector<sim::core::CheckResult> results = sim::scene::runExpects(def, world);
+  render::analysis::InterruptCheck interrupt;
+  const std::vector<sim::core::CheckResult> results = sim::scene::runExpects(def, world, &interrupt);
   std::cout << "# rigidreel expect " << o.scene << (def.variant.empty() ? "" : " --variant " + def.variant) << '\n';
   std::cout << "expect:\n";
   for (size_t i = own; i < def.expects.size(); ++i) {
@@ -90,7 +92,7 @@ void addExpectCommand(CLI::App& app, int& exitCode) {
   o->addTo(*cmd);
   cmd->add_option("--at", o->at, "times in seconds, separated by commas (default: the scene's duration)");
   cmd->add_option("--tolerance", o->tolerance, "each entry's tolerance (default: 1e-9)");
-  cmd->callback([o, &exitCode] { exitCode = expect(*o); });
+  cmd->callback([o, &exitCode] { exitCode = runInterruptible("expect " + o->scene, [&] { return expect(*o); }); });
 }
 
 }  // namespace render::cli

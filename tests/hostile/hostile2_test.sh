@@ -52,6 +52,9 @@ interrupted INT "render long.yaml" render long.yaml -o o --size 160x90 --fps 10 
 interrupted TERM lecture lecture pack -o o --size 160x90 --fps 10 --quiet
 [ ! -e o/long ]
 check "  ... and the lecture left no folder of the scene" $?
+"$BIN" simulate ball.yaml --trace theirs.csv >/dev/null 2>&1
+interrupted INT "compare long.yaml" compare long.yaml --trace theirs.csv --plot o
+interrupted TERM "expect long.yaml" expect long.yaml
 
 # --- inputs that are not files: refused at once, exit 2 ------------------------------------------
 mkfifo fifo.yaml
