@@ -67,6 +67,9 @@ StillRequest request(const SnapshotCommand& o) {
 }
 
 int snapshot(const SnapshotCommand& o) {
+  // a trace written over what the run reads would destroy it before it is read whole
+  refuseInputAsOutput(o.trace, o.scene, "--trace");
+  refuseInputAsOutput(o.trace, o.overlay, "--trace", "the --overlay trace");
   // each path as it is written (not with -q); -v adds the progress bar and the summary
   const auto print = [&o](const std::string& path) {
     if (!o.quiet) std::cout << path << '\n';
