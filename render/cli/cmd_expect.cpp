@@ -6,6 +6,7 @@
 
 #include "render/analysis/interrupt_check.h"
 #include "render/cli/commands.h"
+#include "render/cli/decimal_text.h"
 #include "render/cli/scene_options.h"
 #include "render/jobs/json_writer.h"
 #include "sim/scene/expect.h"
@@ -25,14 +26,8 @@ std::vector<double> times(const std::string& text, double duration) {
   std::stringstream in(text);
   std::string item;
   while (std::getline(in, item, ',')) {
-    size_t used = 0;
-    double t = -1.0;
-    try {
-      t = std::stod(item, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (item.empty() || used != item.size() || !(t >= 0.0 && t <= duration))
+    const double t = decimalText(item).value_or(-1.0);
+    if (!(t >= 0.0 && t <= duration))
       throw UsageError("--at: expected times in seconds within [0, " + formatNumber(duration) + "] separated by commas, got '" + item + "'");
     out.push_back(t);
   }

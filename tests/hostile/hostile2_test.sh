@@ -188,6 +188,16 @@ expect "--dt longer than the duration is refused" 2 "--dt: dt = 5 s is longer th
 expect "--fps 1e-10: refused before ffmpeg" 2 "has less than one frame" render ball.yaml -o o --fps 1e-10 --quiet
 expect "--fps 3e-5 on a 1 s scene: refused" 2 "has less than one frame; give at least 1 fps" render ball.yaml -o o --fps 3e-5 --quiet
 expect "--fps 1000.0000001 says what it got" 2 "got 1000.0000001" render ball.yaml -o o --fps 1000.0000001 --quiet
+# a subnormal time is a number (strtod's ERANGE on underflow), and -0 names the time 0
+rm -rf at && run snapshot ball.yaml --at 1e-320 -o at
+[ "$rc" -eq 0 ] && [ "$(find at -name 'ball-t*.png' | wc -l)" -eq 1 ]
+check "snapshot --at 1e-320: a picture, not 'not a number'" $? "exit $rc: $(head -c 300 err)"
+rm -rf at && run snapshot ball.yaml --at -0 -o at
+[ "$rc" -eq 0 ] && [ -s at/ball/ball-t0.png ] && ! find at -name '*t-0*' | grep -q .
+check "snapshot --at -0: written as t0, no t-0.png" $? "exit $rc; $(find at -type f)"
+run expect ball.yaml --at 1e-320,-0
+[ "$rc" -eq 0 ] && grep -q "time: 1e-320," out && grep -q "time: 0," out
+check "expect --at 1e-320,-0: both times taken, -0 printed 0" $? "exit $rc: $(head -c 300 err)"
 printf 'name: it\nbodies: [{name: a, shape: {circle: 1}}]\nstability: {parameter: iterations, from: 0.4, to: 10}\n' >it.yaml
 expect "stability from: 0.4 for iterations is refused" 2 "it.yaml:3:42: 'from' must be a whole number from 1 to 1000" stability it.yaml -o o
 sed -i 's/from: 0.4, to: 10/from: 1, to: 3e9/' it.yaml
