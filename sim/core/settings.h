@@ -120,6 +120,9 @@ inline constexpr double kContactPushMaxSpeed = 3.0;
 // does not stay in the bodies as energy (Box2D v3: one, useBias = false)
 inline constexpr int kRelaxIterations = 1;
 
+// the most threads sim: threads and --threads accept (each set of contacts is split between them)
+inline constexpr int kMaxThreads = 64;
+
 // default coefficients: restitution halfway between elastic and plastic, frictionless as in the
 // notes
 inline constexpr double kDefaultRestitution = 0.5;

@@ -82,6 +82,8 @@ class World {
   // soft_step: a set's contacts solved four at a time in SIMD lanes where the processor has them
   // (false: one at a time, in the same order, to the same state)
   bool simdLanes = true;
+  // soft_step: threads that share each set of contacts (the same state with any number)
+  int threads = 1;
 
   double time = 0.0;
   long steps = 0;
