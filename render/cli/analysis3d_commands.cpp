@@ -15,6 +15,7 @@
 #include "render/jobs/atomic_file.h"
 #include "render/jobs/csv_field.h"
 #include "render/jobs/json_writer.h"
+#include "render/video/plan_writer.h"
 
 namespace render::cli {
 using namespace render::jobs;
@@ -54,7 +55,7 @@ int sweep3d(const SceneOptions& so, const MethodLists& methods, const std::strin
   const std::vector<double> steps =
       dt.empty() ? defaultSweepSteps(def.dt) : parseRange(dt, "--dt");
   if (repeat < 1 || repeat > 1000) throw UsageError("--repeat: expected a whole number from 1 to 1000");
-  std::filesystem::create_directories(outDir);
+  render::video::createOutputDirectory(outDir);
   checkSweepSteps(*std::min_element(steps.begin(), steps.end()), def.expects.empty(), def.maxSteps, def.duration);
   // the CSV's temporary opened before the runs: a folder that cannot be written fails now
   const std::string base = analysisBase(outDir, def, "sweep");
@@ -105,7 +106,7 @@ int stability3d(const SceneOptions& so, const MethodLists& methods, const std::s
   const SceneFile3 file = so.load3();
   const sim::scene3d::SceneDef& def = file.model();
   const std::vector<Integrator> integrators = integrators3(methods);
-  std::filesystem::create_directories(outDir);
+  render::video::createOutputDirectory(outDir);
   const std::string base = analysisBase(outDir, def, "stability");
   AtomicFile csv = openOutput(base + ".csv");
   csv.stream() << "integrator,collisions,parameter,largest_stable,first_failing,failure\n";

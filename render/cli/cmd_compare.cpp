@@ -9,8 +9,10 @@
 #include "render/cli/commands.h"
 #include "render/cli/scene_options.h"
 #include "render/golden/trace_compare.h"
+#include "render/jobs/interrupt.h"
 #include "render/jobs/json_writer.h"
 #include "render/video/output_names.h"
+#include "render/video/plan_writer.h"
 
 namespace render::cli {
 using namespace render::golden;
@@ -51,9 +53,6 @@ void plot(const std::vector<BodyComparison>& bodies, const std::string& dir, con
     chart.series.push_back({b.name + " angle", floorOf(b.angleErrors), false});
     chart.series.push_back({b.name + " velocity", floorOf(b.velocityErrors), false});
   }
-  std::error_code error;
-  fs::create_directories(dir, error);
-  if (error) throw UsageError("--plot: cannot create " + dir + " (" + error.message() + ")");
   const std::string path = (fs::path(dir) / (base + "-compare.png")).string();
   render::analysis::writeChart(chart, path);
   std::cout << "chart: " << path << '\n';
@@ -68,6 +67,8 @@ int compare(const CompareCommand& o) {
     throw UsageError(std::string("--tolerance: ") + e.what());
   }
   const sim::scene::SceneDef def = o.load().model();
+  // a chart's folder that cannot be made is bad input, said before the run
+  if (!o.plot.empty()) render::video::createOutputDirectory(o.plot, "--plot");
   const Trace theirs = readTrace(o.trace, def);
   sim::world::World world = startWorld(def, o.scene);
   const std::vector<BodyComparison> bodies = compareTrace(def, world, theirs, tolerance);
@@ -105,7 +106,7 @@ void addCompareCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--trace", o->trace, "their trajectory, in the --trace CSV format (scenes/README.md)")->required();
   cmd->add_option("--tolerance", o->tolerance, "position=1e-3,angle=1e-3,velocity=1e-2 (the defaults)");
   cmd->add_option("--plot", o->plot, "write an error-against-time chart into this directory");
-  cmd->callback([o, &exitCode] { exitCode = compare(*o); });
+  cmd->callback([o, &exitCode] { exitCode = runInterruptible("compare " + o->scene, [&] { return compare(*o); }); });
 }
 
 }  // namespace render::cli

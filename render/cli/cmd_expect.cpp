@@ -4,7 +4,9 @@
 #include <memory>
 #include <sstream>
 
+#include "render/analysis/interrupt_check.h"
 #include "render/cli/commands.h"
+#include "render/cli/decimal_text.h"
 #include "render/cli/scene_options.h"
 #include "render/jobs/json_writer.h"
 #include "sim/scene/expect.h"
@@ -24,14 +26,8 @@ std::vector<double> times(const std::string& text, double duration) {
   std::stringstream in(text);
   std::string item;
   while (std::getline(in, item, ',')) {
-    size_t used = 0;
-    double t = -1.0;
-    try {
-      t = std::stod(item, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (item.empty() || used != item.size() || !(t >= 0.0 && t <= duration))
+    const double t = decimalText(item).value_or(-1.0);
+    if (!(t >= 0.0 && t <= duration))
       throw UsageError("--at: expected times in seconds within [0, " + formatNumber(duration) + "] separated by commas, got '" + item + "'");
     out.push_back(t);
   }
@@ -62,7 +58,8 @@ int expect(const ExpectCommand& o) {
         def.expects.push_back(e);
       }
   sim::world::World world = startWorld(def, o.scene);
-  const std::vector<sim::core::CheckResult> results = sim::scene::runExpects(def, world);
+  render::analysis::InterruptCheck interrupt;
+  const std::vector<sim::core::CheckResult> results = sim::scene::runExpects(def, world, &interrupt);
   std::cout << "# rigidreel expect " << o.scene << (def.variant.empty() ? "" : " --variant " + def.variant) << '\n';
   std::cout << "expect:\n";
   for (size_t i = own; i < def.expects.size(); ++i) {
@@ -90,7 +87,7 @@ void addExpectCommand(CLI::App& app, int& exitCode) {
   o->addTo(*cmd);
   cmd->add_option("--at", o->at, "times in seconds, separated by commas (default: the scene's duration)");
   cmd->add_option("--tolerance", o->tolerance, "each entry's tolerance (default: 1e-9)");
-  cmd->callback([o, &exitCode] { exitCode = expect(*o); });
+  cmd->callback([o, &exitCode] { exitCode = runInterruptible("expect " + o->scene, [&] { return expect(*o); }); });
 }
 
 }  // namespace render::cli

@@ -45,6 +45,9 @@ VideoRequest request(const RenderCommand& o) {
 }
 
 int render(const RenderCommand& o) {
+  // a trace written over what the run reads would destroy it before it is read whole
+  refuseInputAsOutput(o.trace, o.scene, "--trace");
+  refuseInputAsOutput(o.trace, o.overlay, "--trace", "the --overlay trace");
   const VideoRequest r = request(o);
   // -v: each file's path as it is written
   const auto wrote = [&o](const std::string& path) {

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "render/cli/commands.h"
+#include "render/cli/decimal_text.h"
 #include "render/cli/output.h"
 #include "render/cli/overlay_option.h"
 #include "render/cli/scene_options.h"
@@ -37,17 +38,9 @@ std::vector<double> parseTimes(const std::string& text) {
   std::stringstream in(text);
   std::string item;
   while (std::getline(in, item, ',')) {
-    size_t used = 0;
-    double t = 0.0;
-    try {
-      t = std::stod(item, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    while (used < item.size() && std::isspace(static_cast<unsigned char>(item[used]))) ++used;
-    if (item.empty() || used != item.size() || !std::isfinite(t))
-      throw UsageError("--at: expected times in seconds separated by commas, e.g. 0.5,1.25; got '" + text + "'");
-    times.push_back(t);
+    const std::optional<double> t = decimalText(item);
+    if (!t) throw UsageError("--at: expected times in seconds separated by commas, e.g. 0.5,1.25; got '" + text + "'");
+    times.push_back(*t);
   }
   if (times.empty()) throw UsageError("--at: give at least one time");
   return times;
@@ -67,6 +60,9 @@ StillRequest request(const SnapshotCommand& o) {
 }
 
 int snapshot(const SnapshotCommand& o) {
+  // a trace written over what the run reads would destroy it before it is read whole
+  refuseInputAsOutput(o.trace, o.scene, "--trace");
+  refuseInputAsOutput(o.trace, o.overlay, "--trace", "the --overlay trace");
   // each path as it is written (not with -q); -v adds the progress bar and the summary
   const auto print = [&o](const std::string& path) {
     if (!o.quiet) std::cout << path << '\n';

@@ -17,6 +17,7 @@
 #include "render/jobs/csv_field.h"
 #include "render/jobs/interrupt.h"
 #include "render/jobs/json_writer.h"
+#include "render/video/plan_writer.h"
 
 namespace render::cli {
 using namespace render::jobs;
@@ -58,7 +59,7 @@ int stability(const StabilityOptions& o) {
 
   const auto integrators = o.integratorList();
   const auto methods = o.collisionList(defaultCollisions(o, def));
-  std::filesystem::create_directories(o.outDir);
+  render::video::createOutputDirectory(o.outDir);
   const std::string base = o.outDir + "/" + def.name + (def.variant.empty() ? "" : "-" + def.variant) + "-stability";
   const std::string parameter(kParameterNames.name(study.stability.parameter));
 

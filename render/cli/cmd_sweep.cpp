@@ -19,6 +19,7 @@
 #include "render/jobs/csv_field.h"
 #include "render/jobs/interrupt.h"
 #include "render/jobs/json_writer.h"
+#include "render/video/plan_writer.h"
 
 namespace render::cli {
 using namespace render::jobs;
@@ -110,7 +111,7 @@ int sweep(const SweepOptions& o) {
   const std::vector<int> iterations = wholeNumbers(o.iterations, "--iterations", def.velocityIterations);
   const std::vector<int> substeps = wholeNumbers(o.substeps, "--substeps", def.substeps);
   if (o.repeat < 1 || o.repeat > 1000) throw UsageError("--repeat: expected a whole number from 1 to 1000");
-  std::filesystem::create_directories(o.outDir);
+  render::video::createOutputDirectory(o.outDir);
 
   const double smallest = *std::min_element(steps.begin(), steps.end());
   checkSweepSteps(smallest, !o.stack && def.expects.empty(), def.maxSteps, def.duration);

@@ -45,10 +45,11 @@ bool namesStandardOutput(const std::string& path) {
   return path == "/dev/stdout" || path == "/dev/fd/1" || path == "/proc/self/fd/1";
 }
 
-void refuseInputAsOutput(const std::string& output, const std::string& input, const std::string& option) {
+void refuseInputAsOutput(const std::string& output, const std::string& input, const std::string& option,
+                         const std::string& what) {
   std::error_code error;
-  if (std::filesystem::equivalent(output, input, error))
-    throw UsageError(option + ": " + output + " is the scene file this run reads; choose another path to write");
+  if (!output.empty() && !input.empty() && std::filesystem::equivalent(output, input, error))
+    throw UsageError(option + ": " + output + " is " + what + " this run reads; choose another path to write");
 }
 
 std::string videoDiverged(const std::string& file, const render::video::VariantDiverged& d) {

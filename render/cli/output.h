@@ -26,8 +26,9 @@ render::jobs::AtomicFile openOutput(const std::string& path, const std::string& 
 bool namesStandardOutput(const std::string& path);
 
 // an output file that is the run's input (the scene named as --trace) would be destroyed by the
-// run: throws UsageError naming the option
-void refuseInputAsOutput(const std::string& output, const std::string& input, const std::string& option);
+// run: throws UsageError naming the option and what the input is ("the scene file")
+void refuseInputAsOutput(const std::string& output, const std::string& input, const std::string& option,
+                         const std::string& what = "the scene file");
 
 // "<file>: the simulation diverged at t = …: body '…' has a non-finite state; try a smaller step
 // (--dt …) or another integrator (--integrator rk4)", a line, as `render` says it

@@ -4,6 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "render/jobs/interrupt.h"
 #include "sim/world/diagnostics.h"
 
 namespace render::golden {
@@ -24,8 +25,12 @@ class Comparer : public sim::world::StepObserver {
     const double steps = def.duration / def.dt;
     every_ = std::max<long>(1, static_cast<long>(steps / kChartPoints));
   }
-  // after a step, their row before an event at that time; after an event, the row after it
-  void afterStep(const sim::world::World& w) override { compare(w, true, ++steps_ % every_ == 0); }
+  // after a step, their row before an event at that time; after an event, the row after it; and
+  // Ctrl-C honoured between two steps
+  void afterStep(const sim::world::World& w) override {
+    render::jobs::checkInterrupted();
+    compare(w, true, ++steps_ % every_ == 0);
+  }
   void afterEvent(const sim::world::World& w, const sim::world::ImpulseEvent&) override { compare(w, false, false); }
   void compare(const sim::world::World& w, bool before, bool chart) {
     for (size_t i = 0; i < bodies_.size(); ++i) {

@@ -209,13 +209,14 @@ void writeAll(const RenderPlanOf<D>& plan, bool quiet, const Wrote& wrote, typen
 
 }  // namespace
 
-void createOutputDirectory(const std::string& dir) {
+void createOutputDirectory(const std::string& dir, const std::string& option) {
   std::error_code error;
   fs::create_directories(dir, error);
   if (error || !fs::is_directory(dir))
-    throw UsageError("-o: cannot create the output directory " + dir + " (" +
-                     (error ? error.message() : "a file is in the way") + "); choose another with -o DIR");
-  if (::access(dir.c_str(), W_OK) != 0) throw UsageError("-o: cannot write in " + dir + "; choose another directory with -o DIR");
+    throw UsageError(option + ": cannot create the output directory " + dir + " (" +
+                     (error ? error.message() : "a file is in the way") + "); choose another with " + option + " DIR");
+  if (::access(dir.c_str(), W_OK) != 0)
+    throw UsageError(option + ": cannot write in " + dir + "; choose another directory with " + option + " DIR");
 }
 
 void writePlan(const RenderPlan& plan, bool quiet, const Wrote& wrote, TraceWriter* trace) { writeAll(plan, quiet, wrote, trace); }

@@ -15,8 +15,9 @@ namespace render::video {
 // told the path of each output file (or frames directory) once it is complete
 using Wrote = std::function<void(const std::string& path)>;
 
-// `dir`, created when missing; throws UsageError when it cannot be created or written
-void createOutputDirectory(const std::string& dir);
+// `dir`, created when missing; throws UsageError naming `option` (-o, --plot) when it cannot be
+// created or written
+void createOutputDirectory(const std::string& dir, const std::string& option = "-o");
 
 // writes every output of `plan`, in the order of plan.paths(), telling `wrote` each; without
 // `quiet`, a progress bar per video and a summary of each on standard output. Throws UsageError (a

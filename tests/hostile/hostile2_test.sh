@@ -52,6 +52,9 @@ interrupted INT "render long.yaml" render long.yaml -o o --size 160x90 --fps 10 
 interrupted TERM lecture lecture pack -o o --size 160x90 --fps 10 --quiet
 [ ! -e o/long ]
 check "  ... and the lecture left no folder of the scene" $?
+"$BIN" simulate ball.yaml --trace theirs.csv >/dev/null 2>&1
+interrupted INT "compare long.yaml" compare long.yaml --trace theirs.csv --plot o
+interrupted TERM "expect long.yaml" expect long.yaml
 
 # --- inputs that are not files: refused at once, exit 2 ------------------------------------------
 mkfifo fifo.yaml
@@ -106,6 +109,19 @@ cmp -s ball.yaml keep.yaml
 check "  ... and the scene is intact" $?
 ln -s keep.yaml alias.yaml
 expect "  ... also through a symlink" 2 "is the scene file this run reads" simulate keep.yaml --trace alias.yaml
+expect "render --trace naming the scene is refused before anything is drawn" 2 "--trace: keep.yaml is the scene file this run reads" \
+  render keep.yaml --trace keep.yaml -o o --size 160x90 --fps 10 --quiet
+cmp -s ball.yaml keep.yaml && [ ! -e o/ball ]
+check "  ... the scene intact, no video" $?
+expect "snapshot --trace naming the scene (through a symlink) is refused" 2 "--trace: alias.yaml is the scene file this run reads" \
+  snapshot keep.yaml --trace alias.yaml --at 0.5 -o o
+cmp -s ball.yaml keep.yaml && [ ! -e o/ball ]
+check "  ... the scene intact, no picture" $?
+cp theirs.csv overlay.csv
+expect "snapshot --trace naming the --overlay trace is refused" 2 "--trace: overlay.csv is the --overlay trace this run reads" \
+  snapshot ball.yaml --overlay overlay.csv --trace overlay.csv --at 0.5 -o o
+cmp -s theirs.csv overlay.csv
+check "  ... the overlay intact" $?
 
 # --- output paths ffmpeg cannot mistake; child command lines end their options ---------------
 run render ball.yaml -o run:1 --size 160x90 --fps 10 --quiet
@@ -136,11 +152,20 @@ run simulate ball.yaml --trace /dev/full
 check "--trace /dev/full: exit 1" $? "exit $rc"
 mkdir -p ro && chmod a-w ro
 if [ "$(id -u)" != 0 ]; then
-  expect "sweep into a folder it cannot write: refused before its runs" 2 "-o: ro/ball-sweep.csv: cannot write here" sweep ball.yaml -o ro
-  expect "stability into a folder it cannot write: refused before its runs" 2 "-o: ro/long-stability.csv: cannot write here" stability long.yaml -o ro
+  expect "sweep into a folder it cannot write: refused before its runs" 2 "-o: cannot write in ro" sweep ball.yaml -o ro
+  expect "stability into a folder it cannot write: refused before its runs" 2 "-o: cannot write in ro" stability long.yaml -o ro
 else
   echo "# skipped: as root every folder is writable"
 fi
+# a folder that cannot be made (a file in the way, root or not): bad input, said before any run
+echo in-the-way >plain
+expect "sweep -o under a file: refused before its runs, exit 2" 2 "-o: cannot create the output directory plain/x" sweep ball.yaml -o plain/x
+expect "stability -o under a file: refused before its runs (10⁹ steps), exit 2" 2 "-o: cannot create the output directory plain/x" \
+  stability long.yaml -o plain/x
+expect "compare --plot under a file: refused before its run (10⁹ steps), exit 2" 2 "--plot: cannot create the output directory plain/x" \
+  compare long.yaml --trace theirs.csv --plot plain/x
+expect "render -o under a file: exit 2" 2 "-o: cannot create the output directory plain/x" render ball.yaml -o plain/x --size 160x90 --fps 10 --quiet
+expect "lecture -o under a file: exit 2" 2 "-o: cannot create plain/x" lecture ball.yaml -o plain/x --size 160x90 --fps 10 --quiet
 # a gnuplot whose PNG is cut short (a full disk) and which exits 0, as gnuplot does
 mkdir -p shortplot
 printf '#!/bin/sh\nout=$(sed -n "s/^set output \\"\\(.*\\)\\"$/\\1/p" | head -1)\nprintf "\\211PNG\\r\\n\\032\\n" >"$out"\nexit 0\n' >shortplot/gnuplot
@@ -163,6 +188,16 @@ expect "--dt longer than the duration is refused" 2 "--dt: dt = 5 s is longer th
 expect "--fps 1e-10: refused before ffmpeg" 2 "has less than one frame" render ball.yaml -o o --fps 1e-10 --quiet
 expect "--fps 3e-5 on a 1 s scene: refused" 2 "has less than one frame; give at least 1 fps" render ball.yaml -o o --fps 3e-5 --quiet
 expect "--fps 1000.0000001 says what it got" 2 "got 1000.0000001" render ball.yaml -o o --fps 1000.0000001 --quiet
+# a subnormal time is a number (strtod's ERANGE on underflow), and -0 names the time 0
+rm -rf at && run snapshot ball.yaml --at 1e-320 -o at
+[ "$rc" -eq 0 ] && [ "$(find at -name 'ball-t*.png' | wc -l)" -eq 1 ]
+check "snapshot --at 1e-320: a picture, not 'not a number'" $? "exit $rc: $(head -c 300 err)"
+rm -rf at && run snapshot ball.yaml --at -0 -o at
+[ "$rc" -eq 0 ] && [ -s at/ball/ball-t0.png ] && ! find at -name '*t-0*' | grep -q .
+check "snapshot --at -0: written as t0, no t-0.png" $? "exit $rc; $(find at -type f)"
+run expect ball.yaml --at 1e-320,-0
+[ "$rc" -eq 0 ] && grep -q "time: 1e-320," out && grep -q "time: 0," out
+check "expect --at 1e-320,-0: both times taken, -0 printed 0" $? "exit $rc: $(head -c 300 err)"
 printf 'name: it\nbodies: [{name: a, shape: {circle: 1}}]\nstability: {parameter: iterations, from: 0.4, to: 10}\n' >it.yaml
 expect "stability from: 0.4 for iterations is refused" 2 "it.yaml:3:42: 'from' must be a whole number from 1 to 1000" stability it.yaml -o o
 sed -i 's/from: 0.4, to: 10/from: 1, to: 3e9/' it.yaml
