@@ -212,7 +212,7 @@ class SoftStepSolver final : public Method {
       const Vec2 g = world.forces.gravity;
       for (size_t i = 0; i < bodies.size(); ++i) {
         const Body& b = bodies[i];
-        if (b.isStatic) continue;
+        if (b.isStatic || world.asleep(static_cast<int>(i))) continue;
         const Vec2 dv = h * Vec2(b.invMass * Vec2(b.mass * g));
         states_[i].vx += dv.x(), states_[i].vy += dv.y();
       }
