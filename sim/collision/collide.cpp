@@ -58,11 +58,14 @@ struct Feature {
   int index;  // vertex i, or edge i from vertex i to i + 1
 };
 
-std::uint32_t featureId(bool referenceOnA, Feature reference, Feature incident) {
-  const auto bits = [](Feature f) {
-    return static_cast<std::uint32_t>(f.kind) | (static_cast<std::uint32_t>(f.index) & 0xffu) << 1;
-  };
-  return referenceOnA ? bits(reference) | bits(incident) << 9 : bits(incident) | bits(reference) << 9;
+// one feature in 32 bits: its kind, then its index (a non-negative int, so it fits in 31)
+FeatureId featureBits(Feature f) {
+  return static_cast<FeatureId>(f.kind) | static_cast<FeatureId>(static_cast<std::uint32_t>(f.index)) << 1;
+}
+
+FeatureId featureId(bool referenceOnA, Feature reference, Feature incident) {
+  return referenceOnA ? featureBits(reference) | featureBits(incident) << 32
+                      : featureBits(incident) | featureBits(reference) << 32;
 }
 
 struct ClipPoint {
@@ -111,7 +114,7 @@ void clipToReference(const WorldPolygon& A, const WorldPolygon& B, const EdgeSep
     const double sep = nRef.dot(twice[k].p - v1);
     if (sep > margin) continue;
     // an incident vertex against the reference edge, or a reference vertex against the incident edge
-    const std::uint32_t id = twice[k].referenceVertex >= 0
+    const FeatureId id = twice[k].referenceVertex >= 0
                                  ? featureId(refA, {FeatureKind::Vertex, twice[k].referenceVertex}, {FeatureKind::Edge, incEdge})
                                  : featureId(refA, {FeatureKind::Edge, edge}, {FeatureKind::Vertex, twice[k].incidentVertex});
     m.points[m.count++] = {twice[k].p - 0.5 * sep * nRef, sep, id};
@@ -158,7 +161,7 @@ Manifold polygons(const PlacedShape& a, const PlacedShape& b, double margin) {
 }
 
 // a contact whose normal points out of the first shape toward the second
-Manifold single(const Vec2& normal, const Vec2& point, double separation, std::uint32_t id, double margin) {
+Manifold single(const Vec2& normal, const Vec2& point, double separation, FeatureId id, double margin) {
   Manifold m;
   m.normal = normal;
   m.separation = separation;
@@ -192,7 +195,7 @@ Manifold polygonCircle(const PlacedShape& p, const PlacedShape& c, double margin
   const Vec2 v1 = P.v[edge], v2 = P.v[(edge + 1) % P.size()];
   Vec2 n = P.n[edge];
   double s = face - r;
-  std::uint32_t id = static_cast<std::uint32_t>(edge);
+  FeatureId id = featureBits({FeatureKind::Edge, edge});
   if (face > 0.0) {
     // outside: the closest feature is the edge or one of its end vertices
     const bool nearV1 = (center - v1).dot(v2 - v1) <= 0.0, nearV2 = (center - v2).dot(v1 - v2) <= 0.0;
@@ -201,7 +204,7 @@ Manifold polygonCircle(const PlacedShape& p, const PlacedShape& c, double margin
       const double distance = (center - v).norm();
       n = (center - v) / distance;
       s = distance - r;
-      id = 0x100u | static_cast<std::uint32_t>(nearV1 ? edge : (edge + 1) % P.size());
+      id = featureBits({FeatureKind::Vertex, nearV1 ? edge : static_cast<int>((edge + 1) % P.size())});
     }
   }
   return single(n, center - (r + 0.5 * s) * n, s, id, margin);
@@ -230,7 +233,7 @@ Manifold planeShape(const PlacedShape& placedPlane, const PlacedShape& placed, d
   }
   m.separation = s[first];
   for (int k : {first, second})
-    if (k >= 0 && s[k] <= margin) m.points[m.count++] = {v[k] - 0.5 * s[k] * n, s[k], static_cast<std::uint32_t>(k)};
+    if (k >= 0 && s[k] <= margin) m.points[m.count++] = {v[k] - 0.5 * s[k] * n, s[k], static_cast<FeatureId>(k)};
   return m;
 }
 

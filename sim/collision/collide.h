@@ -14,10 +14,14 @@
 namespace sim::collision {
 using namespace sim::core;
 
+// names the two features (vertex or edge, with its index) that make a contact point: 32 bits a
+// feature, so that every index a polygon may have (sim: max_vertices, an int) has its own id
+using FeatureId = std::uint64_t;
+
 struct ManifoldPoint {
   Vec2 point = Vec2::Zero();  // world, midway between the two surfaces
   double separation = 0.0;    // negative when overlapping
-  std::uint32_t id = 0;       // the features that make it; stable from step to step
+  FeatureId id = 0;           // the features that make it; stable from step to step
 };
 
 // the separating-axis bookkeeping of the notes' slide, kept for drawing
