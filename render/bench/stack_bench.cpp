@@ -73,6 +73,7 @@ struct RunOptions {
   // contact_hertz} (the stiffness capped at a quarter of the substep rate)
   int substeps = sim::core::settings::kSubsteps;
   double contactHertz = sim::core::settings::kContactHertz;
+  int threads = 1;  // soft_step's sim: threads
 };
 
 // one engine holding one layout: step it, read the boxes back (in layout order)
@@ -160,6 +161,7 @@ sim::scene::SceneDef sceneOf(const bench::StackLayout& layout, const bench::Stac
   def.positionIterations = s.positionIterations;
   def.substeps = o.substeps;
   def.contactHertz = o.contactHertz;
+  def.threads = o.threads;
   sim::scene::BodyDef ground;
   ground.name = "ground";
   ground.shape = sim::core::makeBox(2.0 * layout.groundHalfWidth, 1.0);
@@ -321,6 +323,8 @@ int main(int argc, char** argv) {
   app.add_option("--position-iterations", settings.positionIterations, "position iterations")->check(CLI::Range(0, 1000));
   app.add_option("--friction", settings.friction, "Coulomb friction of every box and the ground");
   app.add_option("--substeps", options.substeps, "rigidreel's soft_step: substeps per step")->check(CLI::Range(1, 1000));
+  app.add_option("--threads", options.threads, "rigidreel's soft_step: threads sharing each set of contacts (processor time counts them all)")
+      ->check(CLI::Range(1, sim::core::settings::kMaxThreads));
   app.add_option("--contact-hertz", options.contactHertz,
                  "rigidreel's soft_step: contact stiffness, Hz (capped at a quarter of the substep rate)")
       ->check([](const std::string& text) {
@@ -369,8 +373,10 @@ int main(int argc, char** argv) {
   std::printf("gravity %g, dt %.6g, %d velocity and %d position iterations, friction %g, restitution %g\n",
               settings.gravity, settings.dt, settings.velocityIterations, settings.positionIterations, settings.friction,
               settings.restitution);
-  std::printf("soft_step: %d substeps, contacts at %g Hz (at most a quarter of the substep rate)\n", options.substeps,
-              options.contactHertz);
+  std::printf("soft_step: %d substeps, contacts at %g Hz (at most a quarter of the substep rate), %d thread%s\n",
+              options.substeps, options.contactHertz, options.threads, options.threads == 1 ? "" : "s");
+  // the stepping thread's processor time includes its waits for the others at each set
+  if (options.threads > 1) std::printf("with --threads, compare ms/step (wall): cpu ms is the stepping thread's alone\n");
   const int dropSettle = static_cast<int>(std::lround(options.settleSeconds / settings.dt));
   std::printf("timed: %d steps after building; touching layouts steps 1-%d (standing from the start), dropped ones "
               "steps %d-%d (after %d untimed steps, %g s, to settle); every engine over the same steps\n",

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <functional>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "render/cli/commands.h"
@@ -110,9 +111,11 @@ std::string runFailure(const sim::scene::SceneDef& def, const sim::world::Diverg
 }
 
 // one scene, one variant ("" for the base), run to its duration as `simulate` runs it; returns
-// false when an expect fails or the run stops before its end
-bool checkCase(const std::string& file, const std::string& variant, const Verbosity& say) {
-  const sim::scene::SceneDef def = readSceneFile(file, variant).model();
+// false when an expect fails or the run stops before its end; `threads` (--threads) in place of
+// the scene's sim: threads when given
+bool checkCase(const std::string& file, const std::string& variant, const Verbosity& say, std::optional<int> threads) {
+  sim::scene::SceneDef def = readSceneFile(file, variant).model();
+  if (threads) def.threads = *threads;
   const std::string label = file + (variant.empty() ? "" : " [" + variant + "]");
   // --quiet: only what failed, so the lines about the model and the run go nowhere
   std::ostream& out = say.quiet ? nowhere() : std::cout;
@@ -231,7 +234,7 @@ std::vector<std::string> sceneFiles(const std::vector<std::string>& arguments) {
   return files;
 }
 
-int check(const std::vector<std::string>& arguments, const Verbosity& say, bool render) {
+int check(const std::vector<std::string>& arguments, const Verbosity& say, bool render, std::optional<int> threads) {
   int code = kExitOk;
   for (const std::string& file : sceneFiles(arguments)) {
     try {
@@ -242,7 +245,7 @@ int check(const std::vector<std::string>& arguments, const Verbosity& say, bool 
         const sim::scene::SceneDef base = readSceneFile(file).model();
         std::vector<std::string> cases = base.variantNames;
         if (cases.empty()) cases.push_back("");
-        for (const std::string& v : cases) ok = checkCase(file, v, say) && ok;
+        for (const std::string& v : cases) ok = checkCase(file, v, say, threads) && ok;
       }
       if (render) ok = planRender(file) && ok;
       if (!ok && code == kExitOk) code = kExitFailure;
@@ -285,15 +288,19 @@ void addCheckCommand(CLI::App& app, int& exitCode) {
   auto say = std::make_shared<Verbosity>();
   auto output = std::make_shared<std::string>();
   auto render = std::make_shared<bool>(false);
+  auto threads = std::make_shared<std::optional<int>>();
   CLI::App* cmd = app.add_subcommand("check", "validate scenes, run every variant to its duration and verify its expect entries");
   cmd->add_option("scenes", *files, "scene files (YAML) and directories of them (every *.yaml, sorted)")->required();
   cmd->add_option("-o,--output", *output, "write the report to this file instead of standard output (errors stay on standard error)");
   say->addTo(*cmd, "only what failed: the failed expect entries and the errors",
              "also every impulse the collision response applied, and every resting and staying-in-contact record, not one line per pair");
+  cmd->add_option("--threads", *threads,
+                  "soft_step: threads sharing each set of contacts, 1 to 64 (each scene's sim: threads; the same result with any)")
+      ->check(CLI::Range(1, sim::core::settings::kMaxThreads));
   cmd->add_flag("--render", *render, "also plan every output the scene asks for (videos, posters, panels), drawing nothing");
-  cmd->callback([files, say, output, render, &exitCode] {
+  cmd->callback([files, say, output, render, threads, &exitCode] {
     OutputFile report(*output);
-    exitCode = runInterruptible("check", [&] { return check(*files, *say, *render); });
+    exitCode = runInterruptible("check", [&] { return check(*files, *say, *render, *threads); });
     // an interrupted check publishes no report
     if (exitCode != render::jobs::kExitInterrupted) report.commit();
   });

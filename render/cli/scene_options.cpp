@@ -21,6 +21,8 @@ void SceneOptions::addTo(CLI::App& command) {
   command.add_option("--substeps", substeps, "soft_step: substeps per step, 1 to 1000 (the scene's sim: substeps)");
   command.add_option("--contact-hertz", contactHertz,
                      "soft_step: contact stiffness in Hz, capped at a quarter of the substep rate (the scene's sim: contact_hertz)");
+  command.add_option("--threads", threads,
+                     "soft_step: threads sharing each set of contacts, 1 to 64 (the scene's sim: threads; the same result with any)");
 }
 
 SceneFile SceneOptions::load() const {
@@ -55,6 +57,10 @@ SceneFile SceneOptions::load() const {
     if (!(*contactHertz > 0.0) || !std::isfinite(*contactHertz))
       throw UsageError("--contact-hertz: the contact stiffness must be a positive finite number of Hz");
     def.contactHertz = *contactHertz;
+  }
+  if (threads) {
+    if (*threads < 1 || *threads > sim::core::settings::kMaxThreads) throw UsageError("--threads: give a whole number from 1 to 64");
+    def.threads = *threads;
   }
   return file;
 }

@@ -20,8 +20,9 @@ struct SceneOptions {
   std::string collisions;
   std::optional<int> substeps;         // soft_step's sim: substeps
   std::optional<double> contactHertz;  // soft_step's sim: contact_hertz, Hz
+  std::optional<int> threads;          // soft_step's sim: threads
 
-  // --variant, --integrator, --dt, --collisions, --substeps, --contact-hertz
+  // --variant, --integrator, --dt, --collisions, --substeps, --contact-hertz, --threads
   void addTo(CLI::App& command);
   // the scene with the overrides applied; throws sim::yaml::SceneError or UsageError
   SceneFile load() const;

@@ -132,6 +132,8 @@ inline constexpr double kSleepAngularSpeed = 2.0 * 3.14159265358979323846 / 180.
 // an island whose every body has been at rest this long falls asleep, s (Box2D's 0.5 s): longer
 // than a bounce or a rocking box takes to turn round through zero speed
 inline constexpr double kTimeToSleep = 0.5;
+// the most threads sim: threads and --threads accept (each set of contacts is split between them)
+inline constexpr int kMaxThreads = 64;
 
 // default coefficients: restitution halfway between elastic and plastic, frictionless as in the
 // notes

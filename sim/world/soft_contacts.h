@@ -51,6 +51,7 @@ struct PassSettings {
   double invH = 0.0;          // 1 / substep
   double maxPushSpeed = 0.0;  // the soft push's bound, m/s
   bool useBias = true;        // false: relax (rigid, no push)
+  bool accumulate = false;    // the substep's last pass: each point's impulse added to its total
 };
 
 // the passes over blocks [begin, end), lane by lane (scalar) or four lanes at once (wide)

@@ -53,6 +53,7 @@ inline void solveBlock(ContactBlock& c, BodyState* bodies, const PassSettings& s
     A.vx = A.vx + mA * px, A.vy = A.vy + mA * py, A.w = A.w + iA * (rAx * py - rAy * px);
     B.vx = B.vx - mB * px, B.vy = B.vy - mB * py, B.w = B.w - iB * (rBx * py - rBy * px);
     L::store(p.normalImpulse, lane, total);
+    if (s.accumulate) L::store(p.totalNormalImpulse, lane, L::load(p.totalNormalImpulse, lane) + total);
   }
   const V tx = zero - ny, ty = nx;
   const V friction = L::load(c.friction, lane);

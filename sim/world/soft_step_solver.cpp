@@ -16,11 +16,13 @@
 // the same.
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "sim/collision/impulse.h"
 #include "sim/world/contact_colors.h"
 #include "sim/world/methods.h"
 #include "sim/world/soft_contacts.h"
+#include "sim/world/worker_pool.h"
 #include "sim/world/world.h"
 
 namespace sim::world {
@@ -85,19 +87,12 @@ class SoftStepSolver final : public Method {
     prepare(world, step.h / world.substeps);
   }
 
-  // the substeps: velocities, soft contacts, positions, relax
+  // the substeps: velocities, soft contacts, positions, relax; with sim: threads, every stage
+  // split between the threads, which meet after each stage and each set of contacts
   bool move(World& world, const TimeStep& step) override {
-    const int n = world.substeps;
-    const double h = step.h / n;
     loadBodies(world);
-    for (int k = 0; k < n; ++k) {
-      integrateVelocities(world, step, h);
-      warmStart();
-      solve(h, true);
-      integratePositions(h);
-      for (int r = 0; r < settings::kRelaxIterations; ++r) solve(h, false);
-      accumulateImpulses();
-    }
+    WorkerPool& threads = pool(world.threads);
+    threads.run([&](int t) { substeps(world, step, Share{t, threads.size()}, threads); });
     storeBodies(world);
     return false;
   }
@@ -109,6 +104,39 @@ class SoftStepSolver final : public Method {
   }
 
  private:
+  // one thread's part of a range: the t-th of n nearly equal pieces (the split never changes a
+  // result, only who computes it)
+  struct Share {
+    int t = 0, n = 1;
+    std::pair<int, int> of(int begin, int end) const {
+      const long len = end - begin;
+      return {begin + static_cast<int>(len * t / n), begin + static_cast<int>(len * (t + 1) / n)};
+    }
+  };
+
+  void substeps(const World& world, const TimeStep& step, const Share& share, WorkerPool& threads) {
+    const int n = world.substeps;
+    const double h = step.h / n;
+    for (int k = 0; k < n; ++k) {
+      integrateVelocities(world, step, h, share, threads);
+      threads.sync();
+      warmStart(share, threads);
+      solve(h, true, false, share, threads);
+      integratePositions(h, share);
+      threads.sync();
+      static_assert(settings::kRelaxIterations >= 1, "the totals are added in the last relax pass");
+      // the last relax pass adds each point's impulse to the step's total as it goes
+      for (int r = 0; r < settings::kRelaxIterations; ++r)
+        solve(h, false, r + 1 == settings::kRelaxIterations, share, threads);
+    }
+  }
+
+  // the pool of `threads` threads, made again when the count changes (a clone starts with none)
+  WorkerPool& pool(int threads) {
+    if (!pool_.p || pool_.p->size() != std::max(threads, 1)) pool_.p = std::make_unique<WorkerPool>(threads);
+    return *pool_.p;
+  }
+
   // the sets of the contacts, unless the touching pairs are those of last step, and each
   // contact's slot: the overflow's blocks first, then each set's, a set's last block padded
   // with lanes that touch only the static record
@@ -146,36 +174,53 @@ class SoftStepSolver final : public Method {
     const double hertz = std::min(world.contactHertz, settings::kContactHertzPerSubstepRate / h);
     const Softness soft = makeSoft(hertz, settings::kContactDampingRatio, h);
     const Softness staticSoft = makeSoft(2.0 * hertz, settings::kContactDampingRatio, h);
-    blocks_.assign(blockCount_, soft::ContactBlock{});
-    for (soft::ContactBlock& blk : blocks_)
-      for (int l = 0; l < soft::kLanes; ++l) blk.a[l] = blk.b[l] = dummy;
+    blocks_.resize(blockCount_);
     vnBefore_.resize(2 * world.contacts.size());
-    for (size_t i = 0; i < world.contacts.size(); ++i) {
-      const Contact& c = world.contacts[i];
-      const Body &a = bodies[c.a], &b = bodies[c.b];
-      soft::ContactBlock& blk = blocks_[slots_[i].block];
-      const int l = slots_[i].lane;
-      const Vec2 n = c.manifold.normal, t = tangentOf(n);
-      const Softness& s = a.isStatic || b.isStatic ? staticSoft : soft;
-      blk.a[l] = a.isStatic ? dummy : c.a, blk.b[l] = b.isStatic ? dummy : c.b;
-      blk.nx.l[l] = n.x(), blk.ny.l[l] = n.y();
-      blk.invMassA.l[l] = a.invMass, blk.invInertiaA.l[l] = a.invInertia;
-      blk.invMassB.l[l] = b.invMass, blk.invInertiaB.l[l] = b.invInertia;
-      blk.friction.l[l] = c.friction;
-      blk.biasRate.l[l] = s.biasRate, blk.massScale.l[l] = s.massScale, blk.impulseScale.l[l] = s.impulseScale;
-      for (int k = 0; k < c.manifold.count; ++k) {
-        soft::PointLanes& p = blk.p[k];
-        const ManifoldPoint& m = c.manifold.points[k];
-        const LeverArms r{m.point - a.x, m.point - b.x};
-        p.rAx.l[l] = r.rA.x(), p.rAy.l[l] = r.rA.y(), p.rBx.l[l] = r.rB.x(), p.rBy.l[l] = r.rB.y();
-        // the separation at the start, less what the anchors' own motion will add to it
-        p.baseSeparation.l[l] = m.separation - n.dot(r.rA - r.rB);
-        p.normalMass.l[l] = effectiveMass(a, b, r.rA, r.rB, n);
-        p.tangentMass.l[l] = effectiveMass(a, b, r.rA, r.rB, t);
-        p.normalImpulse.l[l] = c.state[k].normalImpulse;
-        p.tangentImpulse.l[l] = c.state[k].tangentImpulse;
-        vnBefore_[2 * i + k] = n.dot(relativeVelocityAt(a, b, r));
+    // each thread its share of the blocks cleared, then its share of the contacts (each writes
+    // its own lanes only)
+    WorkerPool& threads = pool(world.threads);
+    threads.run([&](int t) {
+      const Share share{t, threads.size()};
+      const auto [firstBlock, lastBlock] = share.of(0, blockCount_);
+      for (int k = firstBlock; k < lastBlock; ++k) {
+        soft::ContactBlock& blk = blocks_[k];
+        blk = soft::ContactBlock{};
+        for (int l = 0; l < soft::kLanes; ++l) blk.a[l] = blk.b[l] = dummy;
       }
+      threads.sync();
+      const auto [first, last] = share.of(0, static_cast<int>(world.contacts.size()));
+      for (int i = first; i < last; ++i) prepareContact(world, i, soft, staticSoft);
+    });
+  }
+
+  // one contact into its lane: normal, masses, softness, and each point's anchors and impulses
+  void prepareContact(const World& world, int i, const Softness& soft, const Softness& staticSoft) {
+    const std::vector<Body>& bodies = world.bodies;
+    const int dummy = static_cast<int>(bodies.size());
+    const Contact& c = world.contacts[i];
+    const Body &a = bodies[c.a], &b = bodies[c.b];
+    soft::ContactBlock& blk = blocks_[slots_[i].block];
+    const int l = slots_[i].lane;
+    const Vec2 n = c.manifold.normal, t = tangentOf(n);
+    const Softness& s = a.isStatic || b.isStatic ? staticSoft : soft;
+    blk.a[l] = a.isStatic ? dummy : c.a, blk.b[l] = b.isStatic ? dummy : c.b;
+    blk.nx.l[l] = n.x(), blk.ny.l[l] = n.y();
+    blk.invMassA.l[l] = a.invMass, blk.invInertiaA.l[l] = a.invInertia;
+    blk.invMassB.l[l] = b.invMass, blk.invInertiaB.l[l] = b.invInertia;
+    blk.friction.l[l] = c.friction;
+    blk.biasRate.l[l] = s.biasRate, blk.massScale.l[l] = s.massScale, blk.impulseScale.l[l] = s.impulseScale;
+    for (int k = 0; k < c.manifold.count; ++k) {
+      soft::PointLanes& p = blk.p[k];
+      const ManifoldPoint& m = c.manifold.points[k];
+      const LeverArms r{m.point - a.x, m.point - b.x};
+      p.rAx.l[l] = r.rA.x(), p.rAy.l[l] = r.rA.y(), p.rBx.l[l] = r.rB.x(), p.rBy.l[l] = r.rB.y();
+      // the separation at the start, less what the anchors' own motion will add to it
+      p.baseSeparation.l[l] = m.separation - n.dot(r.rA - r.rB);
+      p.normalMass.l[l] = effectiveMass(a, b, r.rA, r.rB, n);
+      p.tangentMass.l[l] = effectiveMass(a, b, r.rA, r.rB, t);
+      p.normalImpulse.l[l] = c.state[k].normalImpulse;
+      p.tangentImpulse.l[l] = c.state[k].tangentImpulse;
+      vnBefore_[2 * i + k] = n.dot(relativeVelocityAt(a, b, r));
     }
   }
 
@@ -206,25 +251,30 @@ class SoftStepSolver final : public Method {
 
   // v += h (f/m), ω += h τ/I with the forces at the substep's start (symplectic Euler); under
   // gravity alone the same numbers without assembling the forces
-  void integrateVelocities(const World& world, const TimeStep& step, double h) {
+  void integrateVelocities(const World& world, const TimeStep& step, double h, const Share& share, WorkerPool& threads) {
     const std::vector<Body>& bodies = world.bodies;
+    const auto [first, last] = share.of(0, static_cast<int>(bodies.size()));
     if (world.forces.gravityOnly()) {
       const Vec2 g = world.forces.gravity;
-      for (size_t i = 0; i < bodies.size(); ++i) {
+      for (int i = first; i < last; ++i) {
         const Body& b = bodies[i];
-        if (b.isStatic || world.asleep(static_cast<int>(i))) continue;
+        if (b.isStatic || world.asleep(i)) continue;
         const Vec2 dv = h * Vec2(b.invMass * Vec2(b.mass * g));
         states_[i].vx += dv.x(), states_[i].vy += dv.y();
       }
       return;
     }
-    states_y_.resize(bodies.size());
-    for (size_t i = 0; i < bodies.size(); ++i) {
-      const soft::BodyState& s = states_[i];
-      states_y_[i] = {x_[i], angle_[i], Vec2(s.vx, s.vy), s.w};
+    // the forces of the whole world on the first thread, then each thread's bodies
+    if (share.t == 0) {
+      states_y_.resize(bodies.size());
+      for (size_t i = 0; i < bodies.size(); ++i) {
+        const soft::BodyState& s = states_[i];
+        states_y_[i] = {x_[i], angle_[i], Vec2(s.vx, s.vy), s.w};
+      }
+      world.rates(step.midpoint(), states_y_, rates_);
     }
-    world.rates(step.midpoint(), states_y_, rates_);
-    for (size_t i = 0; i < bodies.size(); ++i) {
+    threads.sync();
+    for (int i = first; i < last; ++i) {
       if (bodies[i].isStatic) continue;
       const Vec2 dv = h * rates_[i].vDot;
       states_[i].vx += dv.x(), states_[i].vy += dv.y();
@@ -235,8 +285,9 @@ class SoftStepSolver final : public Method {
   // x += h v, θ += h ω; the deltas since the step began, for the separations (the rotation's
   // exactly: Box2D v3's cheaper normalised tangent step let the dropped 210-box pyramid end
   // 0.0501 m off its rest pose, against 0.0483 m)
-  void integratePositions(double h) {
-    for (size_t i = 0; i + 1 < states_.size(); ++i) {
+  void integratePositions(double h, const Share& share) {
+    const auto [first, last] = share.of(0, static_cast<int>(states_.size()) - 1);
+    for (int i = first; i < last; ++i) {
       soft::BodyState& s = states_[i];
       if (s.vx == 0.0 && s.vy == 0.0 && s.w == 0.0) continue;  // static, or at rest
       const double dx = h * s.vx, dy = h * s.vy, da = h * s.w;
@@ -247,34 +298,38 @@ class SoftStepSolver final : public Method {
     }
   }
 
-  // each pass: the overflow one contact after the other, then each set's blocks
-  void warmStart() {
-    soft::BodyState* bodies = states_.data();
+  // each pass: the overflow one contact after the other (on the first thread), then each set's
+  // blocks, split between the threads, which meet after each set
+  template <class Overflow, class Set>
+  void pass(const Share& share, WorkerPool& threads, Overflow overflow, Set set) {
     for (size_t r = 0; r < ranges_.size(); ++r) {
       const auto [begin, end] = ranges_[r];
-      if (r == 0 || !wide_)
-        soft::warmStartScalar(blocks_.data(), begin, end, bodies);
-      else
-        soft::warmStartWide(blocks_.data(), begin, end, bodies);
+      if (begin == end) continue;  // (every thread skips it alike)
+      if (r == 0) {
+        if (share.t == 0) overflow(begin, end);
+      } else {
+        const auto [first, last] = share.of(begin, end);
+        set(first, last);
+      }
+      threads.sync();
     }
   }
 
-  void solve(double h, bool useBias) {
-    const soft::PassSettings s{1.0 / h, settings::kContactPushMaxSpeed, useBias};
+  void warmStart(const Share& share, WorkerPool& threads) {
     soft::BodyState* bodies = states_.data();
-    for (size_t r = 0; r < ranges_.size(); ++r) {
-      const auto [begin, end] = ranges_[r];
-      if (r == 0 || !wide_)
-        soft::solveScalar(blocks_.data(), begin, end, bodies, s);
-      else
-        soft::solveWide(blocks_.data(), begin, end, bodies, s);
-    }
+    soft::ContactBlock* blocks = blocks_.data();
+    pass(
+        share, threads, [&](int b, int e) { soft::warmStartScalar(blocks, b, e, bodies); },
+        [&](int b, int e) { wide_ ? soft::warmStartWide(blocks, b, e, bodies) : soft::warmStartScalar(blocks, b, e, bodies); });
   }
 
-  void accumulateImpulses() {
-    for (soft::ContactBlock& blk : blocks_)
-      for (soft::PointLanes& p : blk.p)
-        for (int l = 0; l < soft::kLanes; ++l) p.totalNormalImpulse.l[l] += p.normalImpulse.l[l];
+  void solve(double h, bool useBias, bool accumulate, const Share& share, WorkerPool& threads) {
+    const soft::PassSettings s{1.0 / h, settings::kContactPushMaxSpeed, useBias, accumulate};
+    soft::BodyState* bodies = states_.data();
+    soft::ContactBlock* blocks = blocks_.data();
+    pass(
+        share, threads, [&](int b, int e) { soft::solveScalar(blocks, b, e, bodies, s); },
+        [&](int b, int e) { wide_ ? soft::solveWide(blocks, b, e, bodies, s) : soft::solveScalar(blocks, b, e, bodies, s); });
   }
 
   LeverArms armsOf(size_t contact, int k) const {
@@ -351,6 +406,13 @@ class SoftStepSolver final : public Method {
   States states_y_;                  // scratch of integrateVelocities, for forces other than gravity
   std::vector<Contact> fresh_;       // the contacts found, then last step's (their storage reused)
   Rates rates_;
+  // the threads of sim: threads (none copied: a clone makes its own)
+  struct PoolHandle {
+    std::unique_ptr<WorkerPool> p;
+    PoolHandle() = default;
+    PoolHandle(const PoolHandle&) {}
+    PoolHandle& operator=(const PoolHandle&) { return *this; }
+  } pool_;
 };
 
 }  // namespace

@@ -85,6 +85,8 @@ class World {
   bool simdLanes = true;
   // sequential and soft_step: islands at rest fall asleep and are not stepped until touched (sleep.h)
   bool sleep = false;
+  // soft_step: threads that share each set of contacts (the same state with any number)
+  int threads = 1;
 
   double time = 0.0;
   long steps = 0;

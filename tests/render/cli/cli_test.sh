@@ -215,6 +215,15 @@ if [ -n "$stiff_cli" ] && [ "$stiff_cli" = "$stiff_yaml" ] && [ "$stiff_cli" != 
 else
   not_ok "--substeps 12 --contact-hertz 100 runs the arch as its variant with sim: {substeps: 12, contact_hertz: 100}"
 fi
+expect "--threads 0 exits 2" 2 err "--threads: give a whole number from 1 to 64" simulate "$POLL" --threads 0
+expect "check --threads 65 exits 2" 2 err "--threads" check "$ARCH" --threads 65
+# the soft_step sets split between two threads: the same state, bit for bit (and check passes)
+if [ -n "$base" ] && [ "$(state --threads 2)" = "$base" ]; then
+  ok "--threads 2 ends the arch in the state of one thread"
+else
+  not_ok "--threads 2 ends the arch in the state of one thread"
+fi
+expect "check --threads 2 passes the arch's expect entries" 0 out "" check "$ARCH" --threads 2 -q
 expect "no subcommand exits 2" 2 err "subcommand" 
 expect "an unknown subcommand exits 2" 2 err "" render-everything "$POLL"
 expect "simulate without a scene exits 2" 2 err "scene" simulate

@@ -51,9 +51,10 @@ std::string pile() {
   return yaml;
 }
 
-unsigned long long run(const std::string& yaml, bool lanes, double seconds) {
+unsigned long long run(const std::string& yaml, bool lanes, double seconds, int threads = 1) {
   sim::world::World w = scene_text::build(yaml);
   w.simdLanes = lanes;
+  w.threads = threads;
   w.advanceTo(seconds);
   return sim::world::stateHash(w);
 }
@@ -74,4 +75,34 @@ TEST_CASE("soft_step: the wide and the scalar contact passes give the same state
     const unsigned long long wide = run(scene.second, true, 3.0), scalar = run(scene.second, false, 3.0);
     CHECK(wide == scalar);
   }
+}
+
+// the sets split between threads (worker_pool.h): each set's contacts touch disjoint bodies, so
+// who solves which changes nothing, to the bit, with the wide or the scalar passes
+TEST_CASE("soft_step: 1, 2 and 3 threads give the same state hash (pyramids, a tumbling pile)") {
+  const std::pair<const char*, std::string> scenes[] = {
+      {"pyramid 20 dropped", pyramid(20, true)},
+      {"pyramid 40 touching", pyramid(40, false)},
+      {"pile", pile()},
+  };
+  for (const auto& scene : scenes) {
+    CAPTURE(std::string(scene.first));
+    const unsigned long long one = run(scene.second, true, 2.0, 1);
+    CHECK(run(scene.second, true, 2.0, 2) == one);
+    CHECK(run(scene.second, true, 2.0, 3) == one);
+    CHECK(run(scene.second, false, 2.0, 2) == run(scene.second, false, 2.0, 1));
+  }
+}
+
+TEST_CASE("soft_step: sim: threads reaches the world, and a copy of a threaded world steps on its own") {
+  sim::world::World w = scene_text::build(pyramid(10, true) + "");
+  w.threads = 2;
+  w.advanceTo(0.5);
+  sim::world::World copy = w;  // the copy makes its own threads
+  copy.advanceTo(1.0);
+  w.advanceTo(1.0);
+  CHECK(sim::world::stateHash(copy) == sim::world::stateHash(w));
+  std::string yaml = pyramid(3, false);
+  yaml.replace(yaml.find("dt: 0.016666666666666667}"), 25, "dt: 0.016666666666666667, threads: 2}");
+  CHECK(scene_text::build(yaml).threads == 2);
 }

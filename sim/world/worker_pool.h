@@ -1,0 +1,40 @@
+// A few threads that run one task side by side and meet at barriers: soft_step's sets of
+// contacts, each set split between the threads (the contacts of a set touch disjoint bodies, so
+// the split never changes the result). The workers sleep between tasks (C++20 atomic wait, a
+// futex) and spin only at the barriers, which are short: one set's contacts.
+#pragma once
+
+#include <atomic>
+#include <functional>
+#include <thread>
+#include <vector>
+
+namespace sim::world {
+
+class WorkerPool {
+ public:
+  // `threads` in all, the caller's included: threads − 1 workers are started
+  explicit WorkerPool(int threads);
+  ~WorkerPool();
+  WorkerPool(const WorkerPool&) = delete;
+  WorkerPool& operator=(const WorkerPool&) = delete;
+
+  int size() const { return threads_; }
+  // task(i) on every thread i (0 on the caller's), back when all have returned
+  void run(const std::function<void(int)>& task);
+  // inside a task: wait until every thread has reached this point
+  void sync();
+
+ private:
+  void work(int index);
+
+  int threads_;
+  std::vector<std::thread> workers_;
+  const std::function<void(int)>* task_ = nullptr;
+  std::atomic<unsigned> epoch_{0};  // bumped for each task (and to stop)
+  std::atomic<int> arrived_{0};
+  std::atomic<unsigned> phase_{0};  // bumped when every thread reached a barrier
+  std::atomic<bool> stop_{false};
+};
+
+}  // namespace sim::world
