@@ -92,6 +92,17 @@ void reportSwitch(const sim::world::World& w, std::ostream& out) {
     out << "  switched: " << describeCollisionMethod(w) << '\n';
 }
 
+// with sim: {sleep: true}, how many of the dynamic bodies sleep at the end (sim/world/sleep.h)
+void reportSleep(const sim::world::World& w, std::ostream& out) {
+  if (!w.sleep) return;
+  long dynamic = 0;
+  for (const sim::core::Body& b : w.bodies) dynamic += !b.isStatic;
+  out << "  sleep: on; " << w.sleepingBodies() << " of " << dynamic << " dynamic bodies asleep at the end";
+  if (w.collisions != sim::world::CollisionMethod::Sequential && w.collisions != sim::world::CollisionMethod::SoftStep)
+    out << " (only the stack solvers sleep; " << sim::world::collisionMethodName(w.collisions) << " does not)";
+  out << '\n';
+}
+
 // why a run stopped before its duration, as `simulate` says it
 std::string runFailure(const sim::scene::SceneDef& def, const sim::world::Diverged& d) {
   return "the simulation diverged at t = " + formatNumber(d.time) + ": body '" + def.bodies[d.body].name +
@@ -137,6 +148,7 @@ bool checkCase(const std::string& file, const std::string& variant, const Verbos
     for (const sim::world::ImpactRecord& r : w.impacts) out << "  impulse " << describeImpact(def, r) << '\n';
   reportResting(def, w, say.verbose, out);
   reportSwitch(w, out);
+  reportSleep(w, out);
   return ok && failure.empty();
 }
 

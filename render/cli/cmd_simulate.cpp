@@ -62,6 +62,8 @@ void printJson(const sim::scene::SceneDef& def, const sim::world::World& w, bool
   j.field("collision_method_reason", describeCollisionMethod(w));
   // only when `auto` switched to the stack solver during the run (the JSON is otherwise unchanged)
   if (w.methodSwitchTime) j.field("collision_method_switch_time", *w.methodSwitchTime);
+  // only with sim: {sleep: true}: how many bodies sleep at the end (sim/world/sleep.h)
+  if (w.sleep) j.field("sleep", true).field("sleeping_bodies", static_cast<long>(w.sleepingBodies()));
   auto name = [&](int i) { return def.bodies[i].name; };
   auto pair = [&](const sim::core::Vec2& v) -> JsonWriter& { return j.beginArray().value(v.x()).value(v.y()).endArray(); };
   // every impulse the collision response applied; b is the obstacle for a body–obstacle collision

@@ -120,6 +120,18 @@ inline constexpr double kContactPushMaxSpeed = 3.0;
 // does not stay in the bodies as energy (Box2D v3: one, useBias = false)
 inline constexpr int kRelaxIterations = 1;
 
+// --- sleeping (sim: {sleep: true}; Box2D 2.4's b2_linearSleepTolerance, b2_angularSleepTolerance
+// and b2_timeToSleep, b2Island::Solve) ---
+
+// a body slower than both of these counts as at rest, m/s and rad/s: Box2D's 1 cm/s and 2°/s, a
+// hundredth of the speed a box reaches falling 5 cm (0.99 m/s) and above the creep of a settled pile
+// under the stack solvers (issue 24: soft_step's fastest body in the 5,050-box pyramid, 0.005 m/s)
+inline constexpr double kSleepLinearSpeed = 0.01;
+inline constexpr double kSleepAngularSpeed = 2.0 * 3.14159265358979323846 / 180.0;
+
+// an island whose every body has been at rest this long falls asleep, s (Box2D's 0.5 s): longer
+// than a bounce or a rocking box takes to turn round through zero speed
+inline constexpr double kTimeToSleep = 0.5;
 // the most threads sim: threads and --threads accept (each set of contacts is split between them)
 inline constexpr int kMaxThreads = 64;
 

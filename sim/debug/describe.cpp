@@ -61,7 +61,7 @@ void describeBodies(const World& world, DebugDraw& draw, double opacity) {
 }
 
 void describeContacts(const World& world, double normalLength, DebugDraw& draw) {
-  for (const Contact& c : world.contacts) {
+  auto describe = [&](const Contact& c) {
     const Manifold& m = c.manifold;
     const Vec2 n = shownNormal(world, c.a, m.normal);
     for (int k = 0; k < m.count; ++k) {
@@ -69,7 +69,11 @@ void describeContacts(const World& world, double normalLength, DebugDraw& draw) 
       draw.arrow(p, p + normalLength * n, {DrawRole::ContactNormal, -1, 1.0});
       draw.point(p, {DrawRole::ContactPoint, -1, 1.0});
     }
-  }
+  };
+  for (const Contact& c : world.contacts) describe(c);
+  // a sleeping pile still touches where it touched when it fell asleep (sim: {sleep: true})
+  for (const std::vector<Contact>& island : world.sleepingContacts())
+    for (const Contact& c : island) describe(c);
 }
 
 void describeImpact(const World& world, const ImpactRecord& r, double impulseScale, double normalLength, DebugDraw& draw) {

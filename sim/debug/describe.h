@@ -11,7 +11,8 @@ using namespace sim::world;
 // every body's shape in its current pose (and a radius for circles, so rotation shows)
 void describeBodies(const World& world, DebugDraw& draw, double opacity = 1.0);
 
-// the contacts touching now (world.contacts): a dot at each manifold point and an arrow
+// the contacts touching now (world.contacts, and those the sleeping islands kept): a dot at each
+// manifold point and an arrow
 // `normalLength` long along its normal, from B into A (into B when A is static, as for a floor)
 void describeContacts(const World& world, double normalLength, DebugDraw& draw);
 

@@ -41,6 +41,7 @@ World buildWorld(const SceneDef& def) {
   w.positionIterations = def.positionIterations;
   w.substeps = def.substeps;
   w.contactHertz = def.contactHertz;
+  w.sleep = def.sleep;
   w.threads = def.threads;
 
   // body points are written in the shape's coordinates; the body origin moves to the centroid

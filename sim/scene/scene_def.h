@@ -75,6 +75,7 @@ struct SceneDef {
   int positionIterations = settings::kPositionIterations;
   int substeps = settings::kSubsteps;  // soft_step
   double contactHertz = settings::kContactHertz;  // soft_step's contact stiffness, Hz
+  bool sleep = false;  // sequential and soft_step: islands at rest fall asleep (sim/world/sleep.h)
   int threads = 1;  // soft_step: threads sharing each set of contacts (sim: threads; the same state with any)
   std::vector<BodyDef> bodies;
   std::vector<PointForceDef> pointForces;

@@ -258,7 +258,7 @@ class SoftStepSolver final : public Method {
       const Vec2 g = world.forces.gravity;
       for (int i = first; i < last; ++i) {
         const Body& b = bodies[i];
-        if (b.isStatic) continue;
+        if (b.isStatic || world.asleep(i)) continue;
         const Vec2 dv = h * Vec2(b.invMass * Vec2(b.mass * g));
         states_[i].vx += dv.x(), states_[i].vy += dv.y();
       }

@@ -35,7 +35,7 @@ void World::rates(double t, const States& y, Rates& out) const {
   out.resize(y.size());
   for (size_t i = 0; i < y.size(); ++i) {
     const Body& b = bodies[i];
-    if (b.isStatic) {
+    if (b.isStatic || sleep_.asleep(static_cast<int>(i))) {
       out[i] = BodyRate{};
       continue;
     }
@@ -56,11 +56,25 @@ void World::setStates(const States& y) {
 
 std::vector<Contact> World::findContacts(double margin) const {
   std::vector<Contact> found;
-  findContacts(margin, found);
+  collectContacts(margin, found, false);
   return found;
 }
 
-void World::findContacts(double margin, std::vector<Contact>& found) const {
+void World::findContacts(double margin, std::vector<Contact>& found) {
+  const bool skip = sleeping() && sleep_.sleepingBodies() > 0;
+  // when every body that can move sleeps, nothing touches anything awake: not even the broad phase
+  if (skip && sleep_.sleepingBodies() == std::count_if(bodies.begin(), bodies.end(), [](const Body& b) { return !b.isStatic; })) {
+    found.clear();
+    return;
+  }
+  collectContacts(margin, found, skip);
+  // sleeping islands that an awake body touches wake before the solve (Box2D v3 wakes a solver set
+  // when a contact begins touching it), and their own contacts are found with them (and may touch
+  // another island)
+  while (skip && sleep_.wakeTouched(found, contacts)) collectContacts(margin, found, sleep_.sleepingBodies() > 0);
+}
+
+void World::collectContacts(double margin, std::vector<Contact>& found, bool awakeOnly) const {
   // each body placed once (one sine and cosine, its vertices in the world), for its bounds and
   // every pair it is in
   placed_.resize(bodies.size());
@@ -79,6 +93,8 @@ void World::findContacts(double margin, std::vector<Contact>& found) const {
   found.clear();
   for (const auto& [i, j] : pairs_) {
     const Body &a = bodies[i], &b = bodies[j];
+    // a sleeping pile's pairs are not tested: they are kept as they were when it fell asleep
+    if (awakeOnly && (a.isStatic || sleep_.asleep(i)) && (b.isStatic || sleep_.asleep(j))) continue;
     const Manifold m = collide(placed_[i], placed_[j], margin);
     if (m.count == 0) continue;
     Contact& c = found.emplace_back();
@@ -192,6 +208,8 @@ void World::stepTo(double stop, double tEnd, StepObserver* observer) {
 // goes on from there (issue 14: `auto` builds a stack instead of failing).
 void World::step(double h) {
   const TimeStep thisStep{time, h};
+  // a point force on during the step wakes the island it pushes
+  if (sleeping()) sleep_.wakeForced(forces, thisStep.midpoint(), contacts);
   if (!mayStackUp_) {
     stepWith(*method_, thisStep);
   } else {
@@ -209,6 +227,8 @@ void World::step(double h) {
     }
   }
   ++steps;
+  // the islands at rest long enough fall asleep
+  if (sleeping()) sleep_.afterStep(bodies, contacts, forces, thisStep.midpoint(), h);
   // stop at the first non-finite state rather than carry NaN forward
   checkFinite(time + h);
 }
@@ -240,11 +260,18 @@ void World::switchToStackSolver(double at) {
 void World::applyDueEvents(StepObserver* observer) {
   while (nextEvent_ < pending_.size() && pending_[nextEvent_].time <= time + settings::kTimeSnap * dt) {
     const ImpulseEvent& e = pending_[nextEvent_++];
+    if (sleeping()) sleep_.wake(e.body, contacts);
     const Body& b = bodies[e.body];
     const Vec2 r = e.pointInWorld ? e.point : b.pose().toWorld(e.point);
     applyImpulse(e.body, r, e.impulse);
     if (observer) observer->afterEvent(*this, e);
   }
+}
+
+// only the stack solvers sleep: the event method's impacts and the isolated impulses find their
+// own contacts, which a sleeping body would ignore
+bool World::sleeping() const {
+  return sleep && (collisions == CollisionMethod::Sequential || collisions == CollisionMethod::SoftStep);
 }
 
 void World::checkFinite(double t) const {

@@ -15,6 +15,7 @@
 #include "sim/core/settings.h"
 #include "sim/world/contact.h"
 #include "sim/world/methods.h"
+#include "sim/world/sleep.h"
 
 namespace sim::world {
 using namespace sim::core;
@@ -82,6 +83,8 @@ class World {
   // soft_step: a set's contacts solved four at a time in SIMD lanes where the processor has them
   // (false: one at a time, in the same order, to the same state)
   bool simdLanes = true;
+  // sequential and soft_step: islands at rest fall asleep and are not stepped until touched (sleep.h)
+  bool sleep = false;
   // soft_step: threads that share each set of contacts (the same state with any number)
   int threads = 1;
 
@@ -114,8 +117,17 @@ class World {
 
   // manifolds of every pair closer than `margin` now, sorted by pair
   std::vector<Contact> findContacts(double margin) const;
-  // the same into `found` (cleared first), whose storage a solver keeps from step to step
-  void findContacts(double margin, std::vector<Contact>& found) const;
+  // the solvers' contacts: as findContacts, less the pairs of sleeping bodies with each other and with
+  // static ones; a sleeping island that a found contact touches wakes first (its kept contacts back
+  // in `contacts`, for the warm start), so that it is solved with what touched it
+  void findContacts(double margin, std::vector<Contact>& found);
+
+  // sleeping (sleep.h): whether a body sleeps now, and how many do
+  bool asleep(int body) const { return sleep_.asleep(body); }
+  int sleepingBodies() const { return sleep_.sleepingBodies(); }
+  // the contacts of the sleeping islands, as they were when each fell asleep (to draw them)
+  const std::vector<std::vector<Contact>>& sleepingContacts() const { return sleep_.keptContacts(); }
+
   // the largest extent of the bodies at the start: the scale of the event method's tolerances
   double sceneSize() const { return sceneSize_; }
 
@@ -129,6 +141,10 @@ class World {
   void switchToStackSolver(double at);
   void applyDueEvents(StepObserver* observer);
   void checkFinite(double t) const;
+  bool sleeping() const;
+  // the manifolds into `found` (cleared first, its storage kept), without the sleeping pairs when
+  // `awakeOnly`
+  void collectContacts(double margin, std::vector<Contact>& found, bool awakeOnly) const;
 
   bool started_ = false;
   std::vector<ImpulseEvent> pending_;  // sorted by time
@@ -136,6 +152,7 @@ class World {
   std::vector<double> switches_;       // sorted force on/off times
   long gridIndex_ = 0;                 // time lies in [gridIndex_ dt, (gridIndex_ + 1) dt)
   double sceneSize_ = 1.0;
+  Sleep sleep_;                        // the islands asleep and the bodies' time at rest
   OwnedMethod method_;                 // the unit of `collisions`, made by start()
   bool mayStackUp_ = false;            // `auto` chose event: a stack forming switches to sequential
   States stepStart_;                   // the states where the step began, to redo it on a switch

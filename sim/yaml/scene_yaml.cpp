@@ -51,7 +51,7 @@ class SceneReader : public Reader {
       optional(w, "friction", s.friction, &Reader::nonNegative);
     }
     if (const YAML::Node sim = root["sim"]) {
-      checkKeys(sim, {"integrator", "dt", "collisions", "iterations", "position_iterations", "substeps", "contact_hertz", "threads", "max_steps",
+      checkKeys(sim, {"integrator", "dt", "collisions", "iterations", "position_iterations", "substeps", "contact_hertz", "threads", "sleep", "max_steps",
                       "max_bodies", "max_vertices", "max_entries"},
                 "sim");
       optional(sim, "max_steps", s.maxSteps, &Reader::positive);
@@ -62,6 +62,12 @@ class SceneReader : public Reader {
       if (sim["position_iterations"]) s.positionIterations = wholeNumber(sim["position_iterations"], "position_iterations", 0, 1000);
       if (sim["substeps"]) s.substeps = wholeNumber(sim["substeps"], "substeps", 1, 1000);
       optional(sim, "contact_hertz", s.contactHertz, &Reader::positive);
+      optional(sim, "sleep", s.sleep, &Reader::boolean);
+      if (s.sleep && (s.collisions == CollisionMethod::None || s.collisions == CollisionMethod::Event ||
+                      s.collisions == CollisionMethod::Isolated))
+        fail(sim["sleep"], "'sleep: true' puts resting islands of the stack solvers to sleep, and 'collisions: " +
+                               std::string(collisionMethodName(s.collisions)) +
+                               "' has none; use 'collisions: sequential', 'soft_step' or 'auto', or drop 'sleep'");
       if (sim["threads"]) s.threads = wholeNumber(sim["threads"], "threads", 1, sim::core::settings::kMaxThreads);
       if (sim["integrator"])
         s.integrator = named(sim["integrator"], "integrator", integratorFromName, kIntegratorNames.list());

@@ -157,6 +157,27 @@ json_check "the JSON says the resting contact still moves" 'len(d["resting"]) >=
 expect "a ball bouncing to a stop came to rest" 0 out "'floor' and 'ball' came to rest at t = 3.63469" \
   check "$SRC/scenes/bouncing_ball.yaml"
 
+# sim: {sleep: true}: a settled pile of three boxes sleeps, said by check and the JSON; refused beside event
+cat >sleepy.yaml <<'EOF'
+duration: 3
+world: {gravity: [0, -10], friction: 0.6, restitution: 0}
+sim: {collisions: soft_step, dt: 0.016666666666666667, sleep: true}
+bodies:
+  - {name: floor, shape: {box: [20, 1]}, static: true, position: [0, -0.5]}
+  - {name: b0, shape: {box: [1, 1]}, position: [-0.55, 0.5]}
+  - {name: b1, shape: {box: [1, 1]}, position: [0.55, 0.5]}
+  - {name: top, shape: {box: [1, 1]}, position: [0, 1.5]}
+EOF
+expect "check says how many bodies sleep at the end" 0 out "sleep: on; 3 of 3 dynamic bodies asleep at the end" \
+  check sleepy.yaml
+run simulate sleepy.yaml --json
+json_check "the JSON gives the sleeping bodies, each at rest exactly" 'd["sleep"] == True' 'd["sleeping_bodies"] == 3' \
+  'all(x["vx"] == 0 and x["vy"] == 0 and x["omega"] == 0 for x in d["bodies"])' 'len(d["contacts"]) >= 3'
+run simulate "$POLL" --variant end --until 1 --json
+json_check "without sleep the JSON has no sleep fields" '"sleep" not in d' '"sleeping_bodies" not in d'
+sed 's/collisions: soft_step/collisions: event/' sleepy.yaml >sleepy_event.yaml
+expect "sleep beside collisions: event exits 2 at its line" 2 err "sleepy_event.yaml:3" simulate sleepy_event.yaml
+
 # ---- simulate: bad input exits 2 -----------------------------------------------------------
 
 expect "a missing scene file exits 2 naming the file" 2 err "missing.yaml: cannot open" simulate missing.yaml
