@@ -155,12 +155,14 @@ class SoftStepSolver final : public Method {
     colorContacts(pairs_, static_cast<int>(world.bodies.size()), colors_);
     slots_.assign(contacts.size(), Slot{});
     ranges_.clear();
+    padded_.clear();
     int block = 0;
     auto place = [&](const std::vector<int>& members) {
       const int first = block;
       for (size_t j = 0; j < members.size(); ++j) slots_[members[j]] = {first + static_cast<int>(j) / soft::kLanes, static_cast<int>(j) % soft::kLanes};
       block = first + static_cast<int>((members.size() + soft::kLanes - 1) / soft::kLanes);
       ranges_.push_back({first, block});
+      if (members.size() % soft::kLanes != 0) padded_.push_back(block - 1);
     };
     place(colors_.overflow);
     for (const std::vector<int>& set : colors_.sets) place(set);
@@ -178,14 +180,15 @@ class SoftStepSolver final : public Method {
     const Softness staticSoft = makeSoft(2.0 * hertz, settings::kContactDampingRatio, h);
     blocks_.resize(blockCount_);
     vnBefore_.resize(2 * world.contacts.size());
-    // each thread its share of the blocks cleared, then its share of the contacts (each writes
-    // its own lanes only)
+    // each thread its share of the padded blocks cleared (the lanes no contact fills touch only
+    // the static record, with zero masses), then its share of the contacts, each of which writes
+    // every number of its own lane
     WorkerPool& threads = pool(world.threads);
     threads.run([&](int t) {
       const Share share{t, threads.size()};
-      const auto [firstBlock, lastBlock] = share.of(0, blockCount_);
-      for (int k = firstBlock; k < lastBlock; ++k) {
-        soft::ContactBlock& blk = blocks_[k];
+      const auto [firstPadded, lastPadded] = share.of(0, static_cast<int>(padded_.size()));
+      for (int k = firstPadded; k < lastPadded; ++k) {
+        soft::ContactBlock& blk = blocks_[padded_[k]];
         blk = soft::ContactBlock{};
         for (int l = 0; l < soft::kLanes; ++l) blk.a[l] = blk.b[l] = dummy;
       }
@@ -222,7 +225,15 @@ class SoftStepSolver final : public Method {
       p.tangentMass.l[l] = effectiveMass(a, b, r.rA, r.rB, t);
       p.normalImpulse.l[l] = c.state[k].normalImpulse;
       p.tangentImpulse.l[l] = c.state[k].tangentImpulse;
+      p.totalNormalImpulse.l[l] = 0.0;
       vnBefore_[2 * i + k] = n.dot(relativeVelocityAt(a, b, r));
+    }
+    // a missing second point: zero masses and impulses, so that it never pushes
+    for (int k = c.manifold.count; k < 2; ++k) {
+      soft::PointLanes& p = blk.p[k];
+      for (soft::Lanes* x : {&p.rAx, &p.rAy, &p.rBx, &p.rBy, &p.baseSeparation, &p.normalMass, &p.tangentMass,
+                             &p.normalImpulse, &p.tangentImpulse, &p.totalNormalImpulse})
+        x->l[l] = 0.0;
     }
   }
 
@@ -402,6 +413,7 @@ class SoftStepSolver final : public Method {
   ContactColors colors_;
   std::vector<Slot> slots_;          // each contact's block and lane
   std::vector<std::pair<int, int>> ranges_;  // blocks of the overflow, then of each set
+  std::vector<int> padded_;          // the blocks with lanes no contact fills (a set's last)
   int blockCount_ = 0;
   std::vector<soft::ContactBlock> blocks_;
   std::vector<double> vnBefore_;     // each point's normal velocity before the step (restitution)
