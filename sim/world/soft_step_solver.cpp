@@ -11,7 +11,7 @@
 // by symplectic Euler, whatever the scene's integrator.
 //
 // Laid out for the machine as v3 is: the bodies' solver state in one flat array (soft_contacts.h),
-// the contacts prepared once per step into blocks of four, sorted into sets (contact_colors.h)
+// the contacts prepared once per step into blocks of eight, sorted into sets (contact_colors.h)
 // so that each block is solved in SIMD lanes; the colouring is kept while the touching pairs stay
 // the same.
 #include <algorithm>
@@ -171,7 +171,7 @@ class SoftStepSolver final : public Method {
 
   void prepare(World& world, double h) {
     arrange(world);
-    wide_ = world.simdLanes && soft::wideAvailable();
+    width_ = world.simdWidth >= 8 && soft::wide512Available() ? 8 : world.simdWidth >= 4 && soft::wideAvailable() ? 4 : 1;
     const std::vector<Body>& bodies = world.bodies;
     const int dummy = static_cast<int>(bodies.size());  // the static bodies' shared record
     // Box2D v3: contactHertz = min(contactHertz, 0.25 × substep rate); static contacts twice as stiff
@@ -335,7 +335,11 @@ class SoftStepSolver final : public Method {
     soft::ContactBlock* blocks = blocks_.data();
     pass(
         share, threads, [&](int b, int e) { soft::warmStartScalar(blocks, b, e, bodies); },
-        [&](int b, int e) { wide_ ? soft::warmStartWide(blocks, b, e, bodies) : soft::warmStartScalar(blocks, b, e, bodies); });
+        [&](int b, int e) {
+          width_ == 8   ? soft::warmStartWide512(blocks, b, e, bodies)
+          : width_ == 4 ? soft::warmStartWide(blocks, b, e, bodies)
+                        : soft::warmStartScalar(blocks, b, e, bodies);
+        });
   }
 
   void solve(double h, bool useBias, bool accumulate, const Share& share, WorkerPool& threads) {
@@ -344,7 +348,11 @@ class SoftStepSolver final : public Method {
     soft::ContactBlock* blocks = blocks_.data();
     pass(
         share, threads, [&](int b, int e) { soft::solveScalar(blocks, b, e, bodies, s); },
-        [&](int b, int e) { wide_ ? soft::solveWide(blocks, b, e, bodies, s) : soft::solveScalar(blocks, b, e, bodies, s); });
+        [&](int b, int e) {
+          width_ == 8   ? soft::solveWide512(blocks, b, e, bodies, s)
+          : width_ == 4 ? soft::solveWide(blocks, b, e, bodies, s)
+                        : soft::solveScalar(blocks, b, e, bodies, s);
+        });
   }
 
   LeverArms armsOf(size_t contact, int k) const {
@@ -407,7 +415,7 @@ class SoftStepSolver final : public Method {
     }
   }
 
-  bool wide_ = false;                // the sets' blocks four lanes at a time
+  int width_ = 1;                    // the sets' blocks eight lanes at a time, four, or one
   bool bouncy_ = false;              // some contact has restitution (the pairs' bodies fix it)
   std::vector<ColoredPair> pairs_;   // the pairs the colouring was made for
   ContactColors colors_;
