@@ -208,7 +208,8 @@ void GlCanvas::segment(const Vec2& a, const Vec2& b, const Pen& s) {
 void GlCanvas::point(const Vec2& p, const Pen& s) {
   enter(s.role);
   const double w = style_.lineWidth;
-  const double tolerance = manyPoints_ ? 0.25 : 0.05;
+  const bool many = manyDotRadius_ > 0.0;
+  const double tolerance = many ? 0.25 : 0.05;
   switch (s.role) {
     case Role::IncidentVertex:
       // a ring, so the vertex itself stays visible inside it
@@ -216,6 +217,12 @@ void GlCanvas::point(const Vec2& p, const Pen& s) {
       ring(p, 4.0 * w * px_, w);
       break;
     case Role::ContactPoint:
+      // many: a plain dot scaled to the bodies, whose rim would be under a pixel
+      if (many) {
+        beginPrimitive(strokeColor(s), s.opacity, false, false);
+        fillDisc(p, manyDotRadius_ * px_, tolerance);
+        break;
+      }
       // a dot with a rim of the background, visible over a body of the same color
       beginPrimitive(style_.background, s.opacity, false, false);
       fillDisc(p, 2.9 * w * px_, tolerance);

@@ -51,7 +51,7 @@ class GlCanvas final : public Canvas {
   void label(const Vec2& anchor, const Vec2& direction, const std::string& text, const Pen& style) override;
   // many points: their discs with chords within a quarter pixel, not a twentieth (a 720p frame of
   // 800 contact dots drew 10 triangles a dot instead of 21: its drawing took half the time)
-  void manyPoints(bool many) override { manyPoints_ = many; }
+  void manyPoints(double dotRadiusPx) override { manyDotRadius_ = dotRadiusPx; }
 
   // the GL draw calls of the frame so far (begin() starts the count): one per batch of opaque
   // primitives and one per translucent primitive, however many bodies the opaque ones draw
@@ -114,7 +114,7 @@ class GlCanvas final : public Canvas {
   void hatch(const Bounds& box, const Color& c, double opacity);
   // the segments of a disc of `radius`: chords within `tolerance` pixels of the circle
   int discSegments(double radius, double tolerance = 0.05) const;
-  bool manyPoints_ = false;
+  double manyDotRadius_ = 0.0;  // px; 0: points drawn as usual
 
   GlContext& gl_;
   TextRenderer& textRenderer_;

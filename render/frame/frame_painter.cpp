@@ -1,6 +1,9 @@
 #include "render/frame/frame_painter.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <limits>
 #include <iostream>
 
 #include "render/draw/text.h"
@@ -26,6 +29,11 @@ constexpr double kNormalFraction = 0.08;
 constexpr size_t kFewBodies = 20;
 // contacts: auto draws normals and impulses while fewer contact points than this are on screen
 constexpr size_t kManyContacts = 200;
+// many contact points: a dot's radius as a fraction of the bodies' narrowest width on the frame,
+// so that a box keeps most of its face (four dots of a resting pile sit on each box's corners)
+constexpr double kManyDotFraction = 0.125;
+// many contact points: dots under this radius (1.5 px across) are left out, a blur rather than a dot
+constexpr double kLeastDotRadiusPx = 0.75;
 // px between two points of a trail, drawn and kept: smooth, and a few hundred segments for a long run
 constexpr double kTrailSpacingPx = 1.5;
 
@@ -97,10 +105,15 @@ void FramePainter::paint(const sim::world::World& world, const History& history,
   DrawList held;
   history.drawAfterimages(world.time, held);
   if (r.contactsAuto && contactsOnScreen(held) >= kManyContacts) {
-    RoleFilter dots(beside, [](Role role) { return role != Role::ContactNormal && role != Role::Impulse; });
-    target.manyPoints(true);
+    // dots scaled to the bodies they sit on, or none where they would cover them
+    const double radius = manyDotRadiusPx(world);
+    const bool showDots = radius >= kLeastDotRadiusPx;
+    RoleFilter dots(beside, [showDots](Role role) {
+      return role != Role::ContactNormal && role != Role::Impulse && (showDots || role != Role::ContactPoint);
+    });
+    target.manyPoints(radius);
     held.replay(dots);
-    target.manyPoints(false);
+    target.manyPoints(0.0);
   } else {
     held.replay(beside);
   }
@@ -141,6 +154,34 @@ size_t FramePainter::contactsOnScreen(const DrawList& calls) const {
       n += p.x() >= view.min.x() && p.x() <= view.max.x() && p.y() >= view.min.y() && p.y() <= view.max.y();
     }
   return n;
+}
+
+double FramePainter::manyDotRadiusPx(const sim::world::World& world) const {
+  // the moving bodies' median narrowest width on the frame, px (a pile's bodies, not its ground)
+  std::vector<double> widths;
+  widths.reserve(world.bodies.size());
+  for (const sim::core::Body& b : world.bodies) {
+    if (b.isStatic) continue;
+    if (b.shape.kind == sim::core::ShapeKind::Circle) widths.push_back(2.0 * b.shape.radius);
+    if (b.shape.kind != sim::core::ShapeKind::Polygon || b.shape.vertices.empty()) continue;
+    // a convex polygon's width: the least, over its edges, of its extent along the edge's normal
+    const std::vector<Vec2>& v = b.shape.vertices;
+    double least = std::numeric_limits<double>::infinity();
+    for (size_t k = 0; k < v.size(); ++k) {
+      const Vec2 e = v[(k + 1) % v.size()] - v[k];
+      if (!(e.norm() > 0.0)) continue;
+      const Vec2 n = Vec2(-e.y(), e.x()).normalized();
+      double lo = n.dot(v[0]), hi = lo;
+      for (const Vec2& q : v) lo = std::min(lo, n.dot(q)), hi = std::max(hi, n.dot(q));
+      least = std::min(least, hi - lo);
+    }
+    if (std::isfinite(least)) widths.push_back(least);
+  }
+  // the usual dot's own radius (lineWidthFor: 2 px at 720p) when no moving body says otherwise
+  const double usual = 2.2 * lineWidthFor(def_.render, camera_.heightPx());
+  if (widths.empty()) return usual;
+  std::nth_element(widths.begin(), widths.begin() + widths.size() / 2, widths.end());
+  return std::min(usual, kManyDotFraction * widths[widths.size() / 2] / camera_.pixelSize());
 }
 
 bool FramePainter::labelFits(const sim::core::Body& b, const std::string& label) const {
