@@ -107,6 +107,11 @@ class GlCanvas final : public Canvas {
   void strokeClosed(const std::vector<Vec2>& vertices, double width);
   // a closed convex outline with mitred corners, `half` its half width in world units
   void strokeMitred(const std::vector<Vec2>& vertices, double half);
+  // each vertex's move to its mitred outline's outer corner, `half` the outline's width away
+  static std::vector<Vec2> mitres(const std::vector<Vec2>& vertices, double half);
+  // a small opaque polygon filled and outlined (mitred) as two fills; false (nothing drawn) when
+  // it is too large or narrower than its outline
+  bool fillOutlined(const std::vector<Vec2>& vertices, const Color& fill, const Color& stroke, double width);
   // polygons under this many pixels across are outlined mitred (strokeMitred), as one strip
   static constexpr double kSmallOutlinePx = 16.0;
   void strokeArrow(const Vec2& tail, const Vec2& head, double width);
