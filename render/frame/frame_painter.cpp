@@ -37,6 +37,27 @@ constexpr double kLeastDotRadiusPx = 0.75;
 // px between two points of a trail, drawn and kept: smooth, and a few hundred segments for a long run
 constexpr double kTrailSpacingPx = 1.5;
 
+// the contact points drawn into it that lie inside `view`, counted as they come (nothing kept)
+class ContactsInView final : public Canvas {
+ public:
+  explicit ContactsInView(const Bounds& view) : view_(view) {}
+  size_t count = 0;
+  void polygon(const std::vector<Vec2>&, const Pen&) override {}
+  void circle(const Vec2&, double, const Pen&) override {}
+  void halfPlane(const Vec2&, const Vec2&, const Pen&) override {}
+  void segment(const Vec2&, const Vec2&, const Pen&) override {}
+  void point(const Vec2& p, const Pen& pen) override {
+    count += pen.role == Role::ContactPoint && p.x() >= view_.min.x() && p.x() <= view_.max.x() &&
+             p.y() >= view_.min.y() && p.y() <= view_.max.y();
+  }
+  void arrow(const Vec2&, const Vec2&, const Pen&) override {}
+  void text(const Vec2&, const std::string&, const Pen&) override {}
+  void label(const Vec2&, const Vec2&, const std::string&, const Pen&) override {}
+
+ private:
+  Bounds view_;
+};
+
 }  // namespace
 
 FramePainter::FramePainter(const render::scene::Scene& def, const Camera& camera, const RunSurvey& survey,
@@ -102,9 +123,11 @@ void FramePainter::paint(const sim::world::World& world, const History& history,
   ImpulseBeside beside(draw, impulseOffsetPx(lineWidthFor(r, camera_.heightPx())) * px);
   // contacts: dots and normals while few are on screen, else (contacts: auto) dots alone, which
   // still show where bodies touch without a thicket of arrows over them
-  DrawList held;
-  history.drawAfterimages(world.time, held);
-  if (r.contactsAuto && contactsOnScreen(held) >= kManyContacts) {
+  // counted first, then drawn (a copy of tens of thousands of calls made a frame of a 5,050-box
+  // pyramid allocate and free each)
+  ContactsInView onScreen(camera_.view());
+  if (r.contactsAuto) history.drawAfterimages(world.time, onScreen);
+  if (r.contactsAuto && onScreen.count >= kManyContacts) {
     // dots scaled to the bodies they sit on, or none where they would cover them
     const double radius = manyDotRadiusPx(world);
     const bool showDots = radius >= kLeastDotRadiusPx;
@@ -112,10 +135,10 @@ void FramePainter::paint(const sim::world::World& world, const History& history,
       return role != Role::ContactNormal && role != Role::Impulse && (showDots || role != Role::ContactPoint);
     });
     target.manyPoints(radius);
-    held.replay(dots);
+    history.drawAfterimages(world.time, dots);
     target.manyPoints(0.0);
   } else {
-    held.replay(beside);
+    history.drawAfterimages(world.time, beside);
   }
   const double textSize = fontSizeFor(r, camera_.heightPx()) * px;
   // the overlay of every polygon pair closer than a tenth of the view (so, as they approach), its
@@ -143,17 +166,6 @@ void FramePainter::paint(const sim::world::World& world, const History& history,
   draw.finish();
   dropped_.report(draw.dropped(), world.time);
   if (placed) *placed = draw.placed();
-}
-
-size_t FramePainter::contactsOnScreen(const DrawList& calls) const {
-  const Bounds view = camera_.view();
-  size_t n = 0;
-  for (const DrawList::Call& c : calls.calls())
-    if (c.kind == DrawList::Kind::Point && c.style.role == Role::ContactPoint) {
-      const Vec2& p = c.points[0];
-      n += p.x() >= view.min.x() && p.x() <= view.max.x() && p.y() >= view.min.y() && p.y() <= view.max.y();
-    }
-  return n;
 }
 
 double FramePainter::manyDotRadiusPx(const sim::world::World& world) const {

@@ -56,8 +56,6 @@ class FramePainter {
   bool labelFits(const sim::core::Body& body, const std::string& label) const;
   // many contact points: their dots' radius in px, scaled to the moving bodies' width on the frame
   double manyDotRadiusPx(const sim::world::World& world) const;
-  // the contact points of `calls` inside the view
-  size_t contactsOnScreen(const DrawList& calls) const;
   mutable bool unfitTold_ = false;        // labels that do not fit: said once per run
   std::vector<std::string> captionLines_;
   TextWidth textWidth_;                   // of the frame's texts, px (empty: estimated)
