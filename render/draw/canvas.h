@@ -32,8 +32,9 @@ class Canvas {
   // canvas draws them where they prefer to be
   virtual void label(const Vec2& anchor, const Vec2& direction, const std::string& text, const Pen& pen) = 0;
   // the points that follow are many (a frame of hundreds of contacts): a canvas may draw them
-  // coarser, for speed, until told otherwise
-  virtual void manyPoints(bool many) { (void)many; }
+  // coarser, for speed, and a contact point as a plain dot `dotRadiusPx` across its radius, scaled
+  // to the bodies it sits on, until told otherwise (0: each drawn as usual)
+  virtual void manyPoints(double dotRadiusPx) { (void)dotRadiusPx; }
 };
 
 // the center of a label's box, half-extents `halfWidth` × `halfHeight`, beyond `anchor` along the
