@@ -13,6 +13,10 @@
 // touching: rows rest on each other (y = 0.5 + r), so the pyramid must only stand;
 // dropped:  Box2D's own layout (y = 0.75 + 1.25 r), each row 0.25 m above the one below, so it
 //           falls into place. A box rests at its start x in both, so |x − rest x| is the bulge.
+// packed:   Box2D v3's large_pyramid benchmark (its shared/benchmarks.c, the scene b3_pyramid
+//           builds): the boxes of a row side by side, touching (1 m apart), each row 0.5 m right of
+//           the one below, x = 0.5 (r + 1) + j − 0.5 base, resting (y = 0.5 + r). Its rows also
+//           touch sideways, half as many contacts again as the touching layout's.
 #pragma once
 
 #include <algorithm>
@@ -49,11 +53,12 @@ struct StackLayout {
 };
 
 // Box2D's pyramid of `base` boxes on the bottom row (base (base + 1) / 2 boxes in all)
-inline StackLayout pyramid(int base, bool dropped) {
+inline StackLayout pyramid(int base, bool dropped, bool packed = false) {
   StackLayout l;
-  l.name = "pyramid" + std::to_string(base) + (dropped ? "-dropped" : "-touching");
-  l.dropped = dropped;
-  const double left = -7.0, step = 1.125, shift = 0.5625, rise = dropped ? 1.25 : 1.0;
+  l.name = "pyramid" + std::to_string(base) + (packed ? "-packed" : dropped ? "-dropped" : "-touching");
+  l.dropped = dropped && !packed;
+  const double left = packed ? 0.5 - 0.5 * base : -7.0, step = packed ? 1.0 : 1.125, shift = packed ? 0.5 : 0.5625,
+               rise = l.dropped ? 1.25 : 1.0;
   // the ground reaches 40 m past the pyramid on each side, as the testbed's 80 m ground does at base 20
   const double right = left + step * (base - 1);
   l.groundCenterX = 0.5 * (left + right);
@@ -62,7 +67,7 @@ inline StackLayout pyramid(int base, bool dropped) {
     for (int j = 0; j < base - row; ++j) {
       BoxPlacement b;
       b.x = b.restX = left + shift * row + step * j;
-      b.y = (dropped ? 0.75 : 0.5) + rise * row;
+      b.y = (l.dropped ? 0.75 : 0.5) + rise * row;
       b.restY = 0.5 + row;
       l.boxes.push_back(b);
     }

@@ -1,5 +1,5 @@
 // The soft contact passes written once over a lane type (included only by soft_contacts_scalar.cpp
-// and soft_contacts_wide.cpp): L is one lane of a block (double) or all four at once. Every
+// and the soft_contacts_wide*.cpp): L is one lane of a block (double), four or all eight at once. Every
 // operation is the same in both, in the same order, so the two paths agree to the bit; and no
 // fused multiply-add (the build's -ffp-contract=off).
 #pragma once

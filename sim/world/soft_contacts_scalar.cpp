@@ -47,4 +47,13 @@ bool wideAvailable() {
 #endif
 }
 
+bool wide512Available() {
+#if defined(RIGIDREEL_WIDE_AVX512)
+  static const bool avx512 = __builtin_cpu_supports("avx512f");
+  return avx512;
+#else
+  return false;
+#endif
+}
+
 }  // namespace sim::world::soft

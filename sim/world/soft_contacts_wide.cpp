@@ -1,4 +1,4 @@
-// soft_step's contact passes four lanes at once, in GCC's vector extensions: compiled with -mavx2
+// soft_step's contact passes four lanes at once, each block of eight as two halves, in GCC's vector extensions: compiled with -mavx2
 // where the compiler targets x86-64 (sim/CMakeLists.txt), one AVX2 instruction per operation on
 // four doubles; elsewhere the same code in the target's own vectors. The result is the scalar
 // path's to the bit (same operations, same order, no fused multiply-add).
@@ -11,13 +11,16 @@
 namespace sim::world::soft {
 namespace {
 
+static_assert(kLanes == 8, "a block is two halves of four lanes");
+
 typedef double V4 __attribute__((vector_size(32)));
 typedef long long M4 __attribute__((vector_size(32)));
 
 struct WideLanes {
   using V = V4;
-  static V load(const Lanes& x, int) { return *reinterpret_cast<const V4*>(x.l); }
-  static void store(Lanes& x, int, V v) { *reinterpret_cast<V4*>(x.l) = v; }
+  // `half`: the block's first four lanes (0) or its last four (4)
+  static V load(const Lanes& x, int half) { return *reinterpret_cast<const V4*>(x.l + half); }
+  static void store(Lanes& x, int half, V v) { *reinterpret_cast<V4*>(x.l + half) = v; }
   static V splat(double v) { return V4{v, v, v, v}; }
   static M4 greater(V a, V b) { return a > b; }
   // a where m, else b, bit by bit (as the scalar path's m ? a : b)
@@ -34,7 +37,8 @@ struct WideLanes {
     r2 = _mm256_permute2f128_pd(t0, t2, 0x31);
     r3 = _mm256_permute2f128_pd(t1, t3, 0x31);
   }
-  static BodyLanes<V> gather(const BodyState* bodies, const int* index, int) {
+  static BodyLanes<V> gather(const BodyState* bodies, const int* all, int half) {
+    const int* index = all + half;
     const double* b0 = &bodies[index[0]].vx;
     const double* b1 = &bodies[index[1]].vx;
     const double* b2 = &bodies[index[2]].vx;
@@ -46,7 +50,8 @@ struct WideLanes {
     transpose(p0, p1, p2, p3);
     return {V4(v0), V4(v1), V4(v2), V4(p0), V4(p1), V4(p2), V4(p3)};
   }
-  static void scatter(BodyState* bodies, const int* index, int, const BodyLanes<V>& b) {
+  static void scatter(BodyState* bodies, const int* all, int half, const BodyLanes<V>& b) {
+    const int* index = all + half;
     __m256d r0 = __m256d(b.vx), r1 = __m256d(b.vy), r2 = __m256d(b.w), r3 = _mm256_setzero_pd();
     transpose(r0, r1, r2, r3);
     _mm256_store_pd(&bodies[index[0]].vx, r0);
@@ -55,14 +60,16 @@ struct WideLanes {
     _mm256_store_pd(&bodies[index[3]].vx, r3);
   }
 #else
-  static BodyLanes<V> gather(const BodyState* bodies, const int* index, int) {
+  static BodyLanes<V> gather(const BodyState* bodies, const int* all, int half) {
+    const int* index = all + half;
     const BodyState &b0 = bodies[index[0]], &b1 = bodies[index[1]], &b2 = bodies[index[2]], &b3 = bodies[index[3]];
     return {V4{b0.vx, b1.vx, b2.vx, b3.vx},     V4{b0.vy, b1.vy, b2.vy, b3.vy},     V4{b0.w, b1.w, b2.w, b3.w},
             V4{b0.dpx, b1.dpx, b2.dpx, b3.dpx}, V4{b0.dpy, b1.dpy, b2.dpy, b3.dpy}, V4{b0.qc, b1.qc, b2.qc, b3.qc},
             V4{b0.qs, b1.qs, b2.qs, b3.qs}};
   }
-  static void scatter(BodyState* bodies, const int* index, int, const BodyLanes<V>& v) {
-    for (int k = 0; k < kLanes; ++k) {
+  static void scatter(BodyState* bodies, const int* all, int half, const BodyLanes<V>& v) {
+    const int* index = all + half;
+    for (int k = 0; k < 4; ++k) {
       BodyState& b = bodies[index[k]];
       b.vx = v.vx[k], b.vy = v.vy[k], b.w = v.w[k];
     }
@@ -73,11 +80,13 @@ struct WideLanes {
 }  // namespace
 
 void warmStartWide(ContactBlock* blocks, int begin, int end, BodyState* bodies) {
-  for (int i = begin; i < end; ++i) warmStartBlock<WideLanes>(blocks[i], bodies, 0);
+  for (int i = begin; i < end; ++i)
+    for (int half = 0; half < kLanes; half += 4) warmStartBlock<WideLanes>(blocks[i], bodies, half);
 }
 
 void solveWide(ContactBlock* blocks, int begin, int end, BodyState* bodies, const PassSettings& s) {
-  for (int i = begin; i < end; ++i) solveBlock<WideLanes>(blocks[i], bodies, s, 0);
+  for (int i = begin; i < end; ++i)
+    for (int half = 0; half < kLanes; half += 4) solveBlock<WideLanes>(blocks[i], bodies, s, half);
 }
 
 }  // namespace sim::world::soft

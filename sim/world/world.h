@@ -80,9 +80,9 @@ class World {
   int positionIterations = settings::kPositionIterations;
   int substeps = settings::kSubsteps;  // soft_step: substeps per step
   double contactHertz = settings::kContactHertz;  // soft_step: contact stiffness, Hz (capped per substep)
-  // soft_step: a set's contacts solved four at a time in SIMD lanes where the processor has them
-  // (false: one at a time, in the same order, to the same state)
-  bool simdLanes = true;
+  // soft_step: a set's contacts solved up to this many at a time in SIMD lanes where the processor
+  // has them: 8 (AVX-512), 4 (AVX2) or 1 (one at a time); the same order, to the same state
+  int simdWidth = 8;
   // sequential and soft_step: islands at rest fall asleep and are not stepped until touched (sleep.h)
   bool sleep = false;
   // soft_step: threads that share each set of contacts (the same state with any number)
