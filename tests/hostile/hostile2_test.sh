@@ -55,6 +55,9 @@ check "  ... and the lecture left no folder of the scene" $?
 "$BIN" simulate ball.yaml --trace theirs.csv >/dev/null 2>&1
 interrupted INT "compare long.yaml" compare long.yaml --trace theirs.csv --plot o
 interrupted TERM "expect long.yaml" expect long.yaml
+interrupted TERM "golden record" golden record long.yaml -o o
+[ ! -e o/long ]
+check "  ... and golden left no record of the scene" $?
 
 # --- inputs that are not files: refused at once, exit 2 ------------------------------------------
 mkfifo fifo.yaml
