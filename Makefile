@@ -53,7 +53,7 @@ demo: build
 	./$(BUILD)/rigidreel render $(DEMO) --all-variants
 	./$(BUILD)/rigidreel snapshot scenes/three_collisions_poll.yaml --impacts --panels
 
-# the course's pack: every scene in scenes/lecture/, its videos, posters and poll panels (README)
+# the course's pack: every scene in scenes/lecture/, its videos, posters and poll panels (render/README.md)
 lecture: build
 	./$(BUILD)/rigidreel lecture scenes/lecture -o out/lecture
 
@@ -108,7 +108,7 @@ sanitize: clang-deps
 
 # libFuzzer on the scene loader (the `check` path) and on the pair collision functions, each for
 # FUZZ_SECONDS, seeded with scenes/ and the hostile inputs kept in tests/fuzz/; what a fuzzer
-# finds is written to $(FUZZ_BUILD)/<target>-crash-* (see README: Fuzzing)
+# finds is written to $(FUZZ_BUILD)/<target>-crash-* (see tests/README.md: Sanitizers and fuzzing)
 fuzz: clang-deps
 	@cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ -DRIGIDREEL_FUZZ=ON >/dev/null
 	@cmake --build $(FUZZ_BUILD) -j $(JOBS) --target scene_loader_fuzz collide_fuzz

@@ -90,7 +90,7 @@ a { color: var(--accent); }
 .muted { color: var(--muted); font-size: 14px; }
 /* the contents, numbered by the scene files' own numbers (10a, 10b, ...) */
 nav ul { columns: 2; column-gap: 32px; list-style: none; padding-left: 0; margin: 8px 0 16px; }
-.number { display: inline-block; min-width: 3.2em; color: var(--muted); font-variant-numeric: tabular-nums; }
+li .number { display: inline-block; min-width: 3.2em; color: var(--muted); font-variant-numeric: tabular-nums; }
 section { padding: 24px 0; border-bottom: 1px solid var(--line); }
 .description { max-width: 80ch; white-space: pre-line; }
 /* a lone video or panel takes the width; two or three share it; on a narrow screen, one a row at
@@ -151,6 +151,23 @@ void writeChecks(std::ostream& h, const std::vector<CheckRecord>& checks, bool e
 // a file of the scene's folder, relative to the page
 std::string href(const SceneRecord& r, const std::string& file) { return urlOf(r.scene + "/" + file); }
 
+// the panels `which` of a scene, side by side
+void writePanels(std::ostream& h, const PageScene& s, const std::vector<size_t>& which) {
+  const SceneRecord& r = s.record;
+  h << "<div class=\"media\">\n";
+  for (size_t i : which) {
+    const PanelRecord& p = r.panels[i];
+    const MediaInfo& m = s.panels[i];
+    const std::string role = p.question ? "question" : p.answer ? "answer" : "";
+    h << "<figure>\n<a href=\"" << href(r, p.image) << "\"><img src=\"" << href(r, p.image) << "\" width=\"" << m.width
+      << "\" height=\"" << m.height << "\" alt=\"" << escapeHtml(r.title) << ", every variant side by side"
+      << (role.empty() ? "" : ", " + role) << " (" << escapeHtml(p.when) << ")\"></a>\n<figcaption>"
+      << (role.empty() ? "" : "<span class=\"" + role + "\">" + role + "</span> · ") << escapeHtml(p.when) << " · <a href=\""
+      << href(r, p.image) << "\">" << escapeHtml(p.image) << "</a></figcaption>\n</figure>\n";
+  }
+  h << "</div>\n";
+}
+
 void writeSection(std::ostream& h, const PageScene& s) {
   const SceneRecord& r = s.record;
   const std::string number = fileNumber(r.file);
@@ -175,28 +192,24 @@ void writeSection(std::ostream& h, const PageScene& s) {
   }
   h << "</div>\n";
 
-  if (!r.panels.empty()) {
-    h << "<h3>Poll panels</h3>\n<div class=\"media\">\n";
-    for (size_t i = 0; i < r.panels.size(); ++i) {
-      const PanelRecord& p = r.panels[i];
-      const MediaInfo& m = s.panels[i];
-      // labelled "answer" only from the scene's `reveal` time on
-      const std::string role = p.question ? "question" : p.answer ? "answer" : "";
-      h << "<figure>\n<a href=\"" << href(r, p.image) << "\"><img src=\"" << href(r, p.image) << "\" width=\"" << m.width
-        << "\" height=\"" << m.height << "\" alt=\"" << escapeHtml(r.title) << ", every variant side by side"
-        << (role.empty() ? "" : ", " + role) << " (" << escapeHtml(p.when) << ")\"></a>\n<figcaption>"
-        << (role.empty() ? "" : "<span class=\"" + role + "\">" + role + "</span> · ") << escapeHtml(p.when) << " · <a href=\"" << href(r, p.image) << "\">" << escapeHtml(p.image) << "</a></figcaption>\n</figure>\n";
-    }
-    h << "</div>\n";
+  // the panels that ask (or simply show) in the open; those labelled "answer" (from the scene's
+  // `reveal` time on) folded away with the answer's text until clicked, so the page can be shown in class
+  std::vector<size_t> open, answers;
+  for (size_t i = 0; i < r.panels.size(); ++i) (r.panels[i].answer ? answers : open).push_back(i);
+  if (!open.empty()) {
+    h << "<h3>Poll panels</h3>\n";
+    writePanels(h, s, open);
   }
-
-  // the answer folded away until clicked (closed by default), so the page can be shown in class
-  if (!r.answer.empty())
-    h << "<details class=\"poll-answer\"><summary>Answer</summary>\n<p class=\"description\">" << escapeHtml(r.answer)
-      << "</p>\n</details>\n";
-
-  writeChecks(h, r.checks, false);
-  writeChecks(h, r.checks, true);
+  // a poll's checks tell its outcome too (speeds, energies), so they fold away with the answer
+  const bool poll = !r.question.empty();
+  if (!r.answer.empty() || !answers.empty() || (poll && !r.checks.empty())) {
+    h << "<details class=\"poll-answer\"><summary>Answer</summary>\n";
+    if (!r.answer.empty()) h << "<p class=\"description\">" << escapeHtml(r.answer) << "</p>\n";
+    if (!answers.empty()) writePanels(h, s, answers);
+    if (poll) writeChecks(h, r.checks, false), writeChecks(h, r.checks, true);
+    h << "</details>\n";
+  }
+  if (!poll) writeChecks(h, r.checks, false), writeChecks(h, r.checks, true);
   h << "</section>\n";
 }
 

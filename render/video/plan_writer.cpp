@@ -38,15 +38,15 @@ struct Drawing<Planar> {
   using Run = SceneRun;
   using Trace = TraceWriter;
   static constexpr const char* kView = "";
-  // the last instant, with the scene's strobe ghosts when it asks for them
-  static Image poster(SceneRun& run, const VideoOutput& out) { return run.frameAt(out.duration, out.posterStrobe); }
+  // the poster's instant, with the scene's strobe ghosts when it asks for them
+  static Image poster(SceneRun& run, const VideoOutput& out) { return run.frameAt(out.posterTime, out.posterStrobe); }
 };
 template <>
 struct Drawing<Spatial> {
   using Run = render::frame3d::SceneRun3;
   using Trace = TraceWriter3;
   static constexpr const char* kView = "in perspective, ";
-  static Image poster(render::frame3d::SceneRun3& run, const VideoOutput3& out) { return run.frameAt(out.duration); }
+  static Image poster(render::frame3d::SceneRun3& run, const VideoOutput3& out) { return run.frameAt(out.posterTime); }
 };
 
 // `draw()`, a divergence of the simulation naming the variant and what was being drawn
@@ -105,8 +105,9 @@ void writeVideo(const PlannedVariantOf<D>& v, const VideoOutputOf<D>& out, bool 
   if (framesDir) framesDir->commit();
   const double seconds = progress.elapsed();
 
-  // the poster at the end of the video's own run; its strobe ghosts need a run from the start
-  if (out.posterStrobe > 0) {
+  // the poster at the end of the video's own run; its strobe ghosts, or an earlier instant, need a
+  // run from the start
+  if (out.posterStrobe > 0 || out.posterTime < out.duration) {
     Run posterRun(v.scene, out.camera, v.survey, &gl, &text);
     posterRun.endAt(out.duration);
     writePng(Drawing<D>::poster(posterRun, out), out.posterPath);
@@ -124,7 +125,7 @@ void writeVideo(const PlannedVariantOf<D>& v, const VideoOutputOf<D>& out, bool 
     std::cout << out.path << ": " << out.frameCount << " frames, " << out.width << "x" << out.height << " at "
               << timeForName(out.fps) << " fps (" << timeForName(out.frameCount / out.fps) << " s), " << Drawing<D>::kView << rate
               << "\n";
-    std::cout << out.posterPath << ": poster at t = " << timeForName(out.duration) << " s\n";
+    std::cout << out.posterPath << ": poster at t = " << timeForName(out.posterTime) << " s\n";
     if (framesDir) std::cout << out.framesPath << ": " << out.frameCount << " PNG frames\n";
   }
 }

@@ -81,7 +81,8 @@ void checkCards(const Scene& scene) {
   if (r.poll.answerCard > 0.0) sceneCard(r, scene.model.name, scene.model.description, true, r.width, r.height, text);
 }
 
-// the video of variant `i` over `duration` s of simulation, and its poster at the end
+// the video of variant `i` over `duration` s of simulation, and its poster: at the end, or at the
+// start where the scene asks a question (the poster stands beside the question on the page)
 template <class D>
 VideoOutputOf<D> videoOf(const RenderPlanOf<D>& plan, size_t i, const std::string& root, double duration, VideoFormat format,
                          bool frames) {
@@ -104,6 +105,7 @@ VideoOutputOf<D> videoOf(const RenderPlanOf<D>& plan, size_t i, const std::strin
           .height = r.height,
           .fps = r.fps,
           .duration = duration,
+          .posterTime = r.poll.question.empty() ? duration : 0.0,
           .posterStrobe = r.strobe,
           .timeMap = std::move(map),
           .frameCount = count,

@@ -67,7 +67,7 @@ struct PlannedVariantOf {
   typename D::Survey survey;
 };
 
-// a video of one variant, with its poster (the last instant) and, with --frames, every frame as PNG
+// a video of one variant, with its poster and, with --frames, every frame as PNG
 template <class D>
 struct VideoOutputOf {
   size_t variant = 0;      // in RenderPlan::variants
@@ -78,7 +78,9 @@ struct VideoOutputOf {
   VideoFormat format = VideoFormat::Mp4;
   int width = 0, height = 0;
   double fps = 0.0;
-  double duration = 0.0;   // s of simulation: the poster's instant
+  double duration = 0.0;   // s of simulation
+  // the poster's instant: the last, or 0 for a poll (a question's poster must not show its answer)
+  double posterTime = 0.0;
   int posterStrobe = 0;    // the poster's ghosts (2D only)
   TimeMap timeMap;         // video time to simulation time: the title card, slow motion
   long frameCount = 0;

@@ -18,7 +18,7 @@ inline constexpr double kDefaultDuration = 1.0;
 inline constexpr double kDefaultMaxSteps = 1e8;
 
 // default bound on the bodies of one scene (sim: max_bodies): 100,000 circles load in 5.4 s of CPU
-// and 570 MB (`simulate --until 0`, README: Limits); a scene past it is most likely generated
+// and 570 MB (`simulate --until 0`, README.md: Limits); a scene past it is most likely generated
 // wrong, and one that is not says so with `sim: {max_bodies: N}`
 inline constexpr int kDefaultMaxBodies = 100000;
 

@@ -11,7 +11,7 @@ namespace sim::world3d {
 enum class Integrator { ExplicitEuler, SymplecticEuler, Midpoint, Rk4, Splitting };
 
 // one step of size h, in place; a four-vector update leaves |q| off 1 by O(h²) per step, which
-// normalizeRotations takes back (README: Free rigid bodies in 3D, for what each keeps and loses)
+// normalizeRotations takes back (sim/README.md: Free rigid bodies in 3D, for what each keeps and loses)
 void explicitEulerStep(const Dynamics& f, double h, States& y);    // order 1
 // order 1; symplectic in x and v only: with q a four-vector and Euler's equations explicit, a free
 // body's energy grows under it

@@ -43,7 +43,7 @@ class World {
   std::vector<Body> bodies;
   ForceSet forces;
   std::vector<ImpulseEvent> events;  // any order; applied in time order
-  // the splitting by default: the 3D method that keeps |q| = 1 and a free body's L (README)
+  // the splitting by default: the 3D method that keeps |q| = 1 and a free body's L (sim/README.md)
   Integrator integrator = Integrator::Splitting;
   // q ← q/|q| after every step; off, a four-vector method's |q| drifts as its closed form says
   bool normalizeQuaternions = true;

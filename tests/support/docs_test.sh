@@ -31,6 +31,42 @@ for doc in "${docs[@]}"; do
   done < <(grep -noE "(\`|\]\()$roots[A-Za-z0-9_./*-]*" "$doc" | sed -E 's/:(`|\]\()/:/')
 done
 
+# 1b. links as a browser follows them: a relative target from the Markdown file's own folder, and
+# a `#fragment` naming a heading of its target (GitHub's anchors: lower case, punctuation dropped,
+# spaces to hyphens)
+python3 - "${docs[@]}" <<'PY' || failures=$((failures + 1))
+import os, re, sys
+def anchors(path):
+    found, seen = set(), {}
+    for line in open(path, encoding="utf-8"):
+        m = re.match(r"#{1,6} (.*)", line)
+        if not m or line.startswith("#!"):
+            continue
+        slug = re.sub(r"[^\w\- ]", "", m.group(1).strip().lower()).replace(" ", "-")
+        n = seen.get(slug, 0)
+        seen[slug] = n + 1
+        found.add(slug if n == 0 else "%s-%d" % (slug, n))
+    return found
+bad = 0
+for doc in sys.argv[1:]:
+    text = open(doc, encoding="utf-8").read()
+    text = re.sub(r"```.*?```", lambda block: "\n" * block.group(0).count("\n"), text, flags=re.S)
+    for m in re.finditer(r"\]\(([^)\s]+)\)", text):
+        target = m.group(1)
+        if re.match(r"[a-z]+:", target):
+            continue
+        path, _, fragment = target.partition("#")
+        file = os.path.normpath(os.path.join(os.path.dirname(doc), path)) if path else doc
+        line = text.count("\n", 0, m.start()) + 1
+        if not os.path.exists(file):
+            print("FAIL: %s:%d links to %s, which does not exist from %s" % (doc, line, target, os.path.dirname(doc) or "."))
+            bad += 1
+        elif fragment and file.endswith(".md") and fragment not in anchors(file):
+            print("FAIL: %s:%d links to %s, a heading %s lacks" % (doc, line, target, file))
+            bad += 1
+sys.exit(1 if bad else 0)
+PY
+
 # 2. flags shown after `rigidreel SUBCOMMAND` exist in its --help
 subcommands=$("$bin" --help 2>&1 | awk '/^Subcommands:/{on=1; next} on && /^  [a-z]/{print $1} on && /^$/{on=0}')
 [ -n "$subcommands" ] || { echo "could not read the subcommands from '$bin --help'"; exit 1; }

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The README's GNU Parallel recipe (ctest lecture_parallel): one `rigidreel lecture SCENE -j 1` job
+# render/README.md's GNU Parallel recipe (ctest lecture_parallel): one `rigidreel lecture SCENE -j 1` job
 # per scene, run by GNU Parallel into one folder, then `rigidreel lecture --page DIR`. Each job
 # writes its scene's record and rebuilds the page under a lock on the folder, so the page after the
 # jobs already shows every scene; --page rebuilds the same page alone; the folder holds what
@@ -17,7 +17,7 @@ BIN=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
 SRC=$2
 mkdir -p "$3"
 OUT=$(cd "$3" && pwd)
-# from the project, as the README runs it: the page names the scene files as given, the same on
+# from the project, as render/README.md runs it: the page names the scene files as given, the same on
 # every machine (the browser test's screenshot shows them). A poll with question and answer panels
 # and checks, a scene without variants, and a failure case
 cd "$SRC" || exit 2
@@ -35,7 +35,7 @@ mkdir -p "$OUT"
 LOG=$(mktemp -d "${TMPDIR:-/tmp}/rigidreel-parallel.XXXXXX")
 trap 'rm -rf "$LOG"' EXIT
 
-# the recipe, as the README gives it (with the small size and rate), two jobs at a time
+# the recipe, as render/README.md gives it (with the small size and rate), two jobs at a time
 start=$(date +%s%N)
 parallel --will-cite -j 2 --joblog "$LOG/jobs" "$BIN" lecture {} "${SMALL[@]}" -o "$OUT" -j 1 ::: "${SCENES[@]}" >"$LOG/out" 2>"$LOG/err"
 rc=$?

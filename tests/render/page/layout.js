@@ -28,6 +28,9 @@ window.probeResult = new Promise(resolve => {
         }),
         tables: [...document.querySelectorAll(".table")].map(t => ({ overflowX: getComputedStyle(t).overflowX,
                                                                       right: t.getBoundingClientRect().right })),
+        // each table's columns: the left edge of every row's i-th cell (the header's first)
+        columns: [...document.querySelectorAll("table")].map(t => [...t.rows].map(
+          r => [...r.cells].map(c => Math.round(c.getBoundingClientRect().left)))),
       });
     });
   });

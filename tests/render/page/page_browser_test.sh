@@ -127,6 +127,12 @@ if layout["width"] != width or layout["scrollWidth"] > width:
 for t in layout["tables"]:
     if t["overflowX"] != "auto" or t["right"] > width + 0.5:
         bad.append("a table's box is not its own scroller inside the window: %s" % t)
+# every cell under its column's heading (a cell laid out inline would drift off its column)
+for rows in layout["columns"]:
+    for r in rows[1:]:
+        if len(r) == len(rows[0]) and r != rows[0]:
+            bad.append("a table's cells stand at %s, its headings at %s" % (r, rows[0]))
+            break
 for v in layout["videos"]:
     name = v["src"].rsplit("/", 1)[-1]
     scale = min(v["width"] / v["videoWidth"], v["height"] / v["videoHeight"])

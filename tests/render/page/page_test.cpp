@@ -226,6 +226,34 @@ TEST_CASE("the page: the question above the videos, the answer only inside a clo
   CHECK(html.find("<details open") == std::string::npos);
   CHECK(html.find("<figcaption>t = 1 s · ") != std::string::npos);
   CHECK(html.find("answer</span> · t = 1 s") == std::string::npos);
+  // the answer's panel (t = 2.5 s) folded away with the text, the question's in the open before it
+  const size_t questionPanel = html.find("<img src=\"05_impulses/" + r.panels[0].image + "\"");
+  const size_t answerPanel = html.find("<img src=\"05_impulses/" + r.panels[1].image + "\"");
+  REQUIRE(r.panels[1].answer);
+  REQUIRE(questionPanel != std::string::npos);
+  REQUIRE(answerPanel != std::string::npos);
+  CHECK(questionPanel < details);
+  CHECK(answerPanel > details);
+  CHECK(answerPanel < html.find("</details>", details));
+  CHECK(html.find("<img src=\"05_impulses/" + r.panels[1].image + "\"", answerPanel + 1) == std::string::npos);
+  // the checks (the outcome's numbers) folded away as well
+  const size_t closedForms = html.find("<h3>Closed forms, checked</h3>");
+  const size_t earlier = html.find("<h3>Checked against an earlier run</h3>");
+  REQUIRE(closedForms != std::string::npos);
+  CHECK(closedForms > details);
+  CHECK(html.find("</table>", closedForms) < html.find("</details>", details));
+  CHECK(earlier == std::string::npos);  // (both of impulses() are closed forms)
+}
+
+TEST_CASE("the page: a scene that asks nothing shows its checks in the open") {
+  TempDir dir("shown");
+  SceneRecord r = impulses();
+  r.question.clear(), r.answer.clear();
+  for (PanelRecord& p : r.panels) p.question = p.answer = false;
+  writeScene(dir.path, r);
+  const std::string html = pageHtml(readPack(dir.path.string()));
+  CHECK(html.find("<details") == std::string::npos);
+  CHECK(html.find("<h3>Closed forms, checked</h3>") != std::string::npos);
 }
 
 TEST_CASE("closed forms and values an earlier run gave are headed apart") {

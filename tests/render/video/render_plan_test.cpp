@@ -120,14 +120,23 @@ TEST_CASE("render: the time map with the title card and slow motion around each 
     CHECK(video.timeMap.inTitleCard(0.5));
     CHECK(video.timeMap.simTime(1.25) == doctest::Approx(0.25));
     CHECK(video.timeMap.factorAt(0.5) == 4.0);
-    // the poster at the end of the run, in simulation time
+    // the poster at the end of the run, in simulation time (the scene asks no question)
     CHECK(video.duration == v.scene.model.duration);
+    CHECK(video.posterTime == video.duration);
   }
   // --duration sets every video's run, and the survey's
   const RenderPlan shorter = render::video::planVideos(lesson(), {.variant = "long", .duration = 0.3});
   CHECK(shorter.videos.front().duration == 0.3);
   CHECK(shorter.variants.front().survey.impactTimes.empty());
   CHECK(shorter.videos.front().timeMap.videoLength() == doctest::Approx(1.3));
+}
+
+TEST_CASE("render: a poll's posters show the start, not the outcome the question asks about") {
+  const std::string poll = kLesson + "question: Which way does the ball go after the wall?\n";
+  const RenderPlan plan = render::video::planVideos(lesson(poll), {.variant = "long"});
+  REQUIRE(plan.videos.size() == 1);
+  CHECK(plan.videos.front().duration == 2.0);
+  CHECK(plan.videos.front().posterTime == 0.0);
 }
 
 TEST_CASE("render: the camera is fitted over the variant's one survey, the poster's too") {
