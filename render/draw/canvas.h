@@ -1,4 +1,4 @@
-// The renderer's drawing interface: the simulator's (sim::debug::DebugDraw) with the renderer's
+// The renderer's drawing interface: the simulator's (sim::debug_draw::DebugDraw) with the renderer's
 // roles. GlCanvas draws it with OpenGL; DrawList records it for tests and for afterimages. World
 // coordinates, y up.
 #pragma once
@@ -32,8 +32,9 @@ class Canvas {
   // canvas draws them where they prefer to be
   virtual void label(const Vec2& anchor, const Vec2& direction, const std::string& text, const Pen& pen) = 0;
   // the points that follow are many (a frame of hundreds of contacts): a canvas may draw them
-  // coarser, for speed, until told otherwise
-  virtual void manyPoints(bool many) { (void)many; }
+  // coarser, for speed, and a contact point as a plain dot `dotRadiusPx` across its radius, scaled
+  // to the bodies it sits on, until told otherwise (0: each drawn as usual)
+  virtual void manyPoints(double dotRadiusPx) { (void)dotRadiusPx; }
 };
 
 // the center of a label's box, half-extents `halfWidth` × `halfHeight`, beyond `anchor` along the
@@ -47,22 +48,22 @@ inline Vec2 labelCenter(const Vec2& anchor, const Vec2& direction, double halfWi
 
 // the simulator's drawing calls onto a canvas, each role as its row of the table (Box2D's
 // b2DebugDraw, implemented by the application)
-class PhysicsDraw final : public sim::debug::DebugDraw {
+class PhysicsDraw final : public sim::debug_draw::DebugDraw {
  public:
   explicit PhysicsDraw(Canvas& canvas) : canvas_(canvas) {}
-  void polygon(const std::vector<Vec2>& v, const sim::debug::DrawStyle& s) override { canvas_.polygon(v, pen(s)); }
-  void circle(const Vec2& c, double r, const sim::debug::DrawStyle& s) override { canvas_.circle(c, r, pen(s)); }
-  void halfPlane(const Vec2& p, const Vec2& n, const sim::debug::DrawStyle& s) override { canvas_.halfPlane(p, n, pen(s)); }
-  void segment(const Vec2& a, const Vec2& b, const sim::debug::DrawStyle& s) override { canvas_.segment(a, b, pen(s)); }
-  void point(const Vec2& p, const sim::debug::DrawStyle& s) override { canvas_.point(p, pen(s)); }
-  void arrow(const Vec2& t, const Vec2& h, const sim::debug::DrawStyle& s) override { canvas_.arrow(t, h, pen(s)); }
+  void polygon(const std::vector<Vec2>& v, const sim::debug_draw::DrawStyle& s) override { canvas_.polygon(v, pen(s)); }
+  void circle(const Vec2& c, double r, const sim::debug_draw::DrawStyle& s) override { canvas_.circle(c, r, pen(s)); }
+  void halfPlane(const Vec2& p, const Vec2& n, const sim::debug_draw::DrawStyle& s) override { canvas_.halfPlane(p, n, pen(s)); }
+  void segment(const Vec2& a, const Vec2& b, const sim::debug_draw::DrawStyle& s) override { canvas_.segment(a, b, pen(s)); }
+  void point(const Vec2& p, const sim::debug_draw::DrawStyle& s) override { canvas_.point(p, pen(s)); }
+  void arrow(const Vec2& t, const Vec2& h, const sim::debug_draw::DrawStyle& s) override { canvas_.arrow(t, h, pen(s)); }
   // the simulator's text is a label written where it names (a separation inside its edge)
-  void text(const Vec2& at, const std::string& t, const sim::debug::DrawStyle& s) override {
+  void text(const Vec2& at, const std::string& t, const sim::debug_draw::DrawStyle& s) override {
     canvas_.label(at, Vec2::Zero(), t, pen(s));
   }
 
  private:
-  static Pen pen(const sim::debug::DrawStyle& s) { return {fromPhysics(s.role), s.body, s.opacity}; }
+  static Pen pen(const sim::debug_draw::DrawStyle& s) { return {fromPhysics(s.role), s.body, s.opacity}; }
   Canvas& canvas_;
 };
 

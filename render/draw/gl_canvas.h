@@ -51,7 +51,7 @@ class GlCanvas final : public Canvas {
   void label(const Vec2& anchor, const Vec2& direction, const std::string& text, const Pen& style) override;
   // many points: their discs with chords within a quarter pixel, not a twentieth (a 720p frame of
   // 800 contact dots drew 10 triangles a dot instead of 21: its drawing took half the time)
-  void manyPoints(bool many) override { manyPoints_ = many; }
+  void manyPoints(double dotRadiusPx) override { manyDotRadius_ = dotRadiusPx; }
 
   // the GL draw calls of the frame so far (begin() starts the count): one per batch of opaque
   // primitives and one per translucent primitive, however many bodies the opaque ones draw
@@ -107,6 +107,11 @@ class GlCanvas final : public Canvas {
   void strokeClosed(const std::vector<Vec2>& vertices, double width);
   // a closed convex outline with mitred corners, `half` its half width in world units
   void strokeMitred(const std::vector<Vec2>& vertices, double half);
+  // each vertex's move to its mitred outline's outer corner, `half` the outline's width away
+  static std::vector<Vec2> mitres(const std::vector<Vec2>& vertices, double half);
+  // a small opaque polygon filled and outlined (mitred) as two fills; false (nothing drawn) when
+  // it is too large or narrower than its outline
+  bool fillOutlined(const std::vector<Vec2>& vertices, const Color& fill, const Color& stroke, double width);
   // polygons under this many pixels across are outlined mitred (strokeMitred), as one strip
   static constexpr double kSmallOutlinePx = 16.0;
   void strokeArrow(const Vec2& tail, const Vec2& head, double width);
@@ -114,7 +119,7 @@ class GlCanvas final : public Canvas {
   void hatch(const Bounds& box, const Color& c, double opacity);
   // the segments of a disc of `radius`: chords within `tolerance` pixels of the circle
   int discSegments(double radius, double tolerance = 0.05) const;
-  bool manyPoints_ = false;
+  double manyDotRadius_ = 0.0;  // px; 0: points drawn as usual
 
   GlContext& gl_;
   TextRenderer& textRenderer_;

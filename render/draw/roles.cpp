@@ -14,8 +14,8 @@ static_assert(tableInOrder(), "kRoles must list the roles in the order of Role")
 
 }  // namespace
 
-Role fromPhysics(sim::debug::DrawRole role) {
-  using sim::debug::DrawRole;
+Role fromPhysics(sim::debug_draw::DrawRole role) {
+  using sim::debug_draw::DrawRole;
   switch (role) {
     case DrawRole::Body: return Role::Body;
     case DrawRole::StaticBody: return Role::StaticBody;

@@ -1,19 +1,19 @@
 // Every drawing role of a frame in one table: what it is, its name in draw lists, its key in the
 // scene's `render: {colors: ...}`, its default color and its stroke width. The canvas, the draw
 // list, the style and the YAML reader all read this table, so a new overlay is one row here.
-// The simulator's roles (sim::debug::DrawRole) are rows of it too, under the same names.
+// The simulator's roles (sim::debug_draw::DrawRole) are rows of it too, under the same names.
 #pragma once
 
 #include <array>
 #include <optional>
 #include <string_view>
 
-#include "sim/debug/debug_draw.h"
+#include "sim/debug_draw/debug_draw.h"
 
 namespace render::draw {
 
 enum class Role {
-  // the physics the simulator describes (sim::debug::DrawRole)
+  // the physics the simulator describes (sim::debug_draw::DrawRole)
   Body,            // a dynamic body's shape: filled and outlined
   StaticBody,      // a static body or a half-plane obstacle: drawn visibly different
   BodyAxis,        // a radius marking a body's rotation (circles)
@@ -101,7 +101,7 @@ inline constexpr std::array<RoleInfo, kRoleCount> kRoles{{
 constexpr const RoleInfo& info(Role role) { return kRoles[static_cast<size_t>(role)]; }
 
 // the simulator's role as a row of the table (the same name)
-Role fromPhysics(sim::debug::DrawRole role);
+Role fromPhysics(sim::debug_draw::DrawRole role);
 
 // how one call is drawn: its role, the body whose color it takes (-1: none), its opacity (fading
 // contacts, strobe ghosts) and, for a teaching arrow, the index of its own color (-1: the role's)

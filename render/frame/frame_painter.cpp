@@ -1,6 +1,9 @@
 #include "render/frame/frame_painter.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <limits>
 #include <iostream>
 
 #include "render/draw/text.h"
@@ -26,8 +29,34 @@ constexpr double kNormalFraction = 0.08;
 constexpr size_t kFewBodies = 20;
 // contacts: auto draws normals and impulses while fewer contact points than this are on screen
 constexpr size_t kManyContacts = 200;
+// many contact points: a dot's radius as a fraction of the bodies' narrowest width on the frame,
+// so that a box keeps most of its face (four dots of a resting pile sit on each box's corners)
+constexpr double kManyDotFraction = 0.125;
+// many contact points: dots under this radius (1.5 px across) are left out, a blur rather than a dot
+constexpr double kLeastDotRadiusPx = 0.75;
 // px between two points of a trail, drawn and kept: smooth, and a few hundred segments for a long run
 constexpr double kTrailSpacingPx = 1.5;
+
+// the contact points drawn into it that lie inside `view`, counted as they come (nothing kept)
+class ContactsInView final : public Canvas {
+ public:
+  explicit ContactsInView(const Bounds& view) : view_(view) {}
+  size_t count = 0;
+  void polygon(const std::vector<Vec2>&, const Pen&) override {}
+  void circle(const Vec2&, double, const Pen&) override {}
+  void halfPlane(const Vec2&, const Vec2&, const Pen&) override {}
+  void segment(const Vec2&, const Vec2&, const Pen&) override {}
+  void point(const Vec2& p, const Pen& pen) override {
+    count += pen.role == Role::ContactPoint && p.x() >= view_.min.x() && p.x() <= view_.max.x() &&
+             p.y() >= view_.min.y() && p.y() <= view_.max.y();
+  }
+  void arrow(const Vec2&, const Vec2&, const Pen&) override {}
+  void text(const Vec2&, const std::string&, const Pen&) override {}
+  void label(const Vec2&, const Vec2&, const std::string&, const Pen&) override {}
+
+ private:
+  Bounds view_;
+};
 
 }  // namespace
 
@@ -94,15 +123,22 @@ void FramePainter::paint(const sim::world::World& world, const History& history,
   ImpulseBeside beside(draw, impulseOffsetPx(lineWidthFor(r, camera_.heightPx())) * px);
   // contacts: dots and normals while few are on screen, else (contacts: auto) dots alone, which
   // still show where bodies touch without a thicket of arrows over them
-  DrawList held;
-  history.drawAfterimages(world.time, held);
-  if (r.contactsAuto && contactsOnScreen(held) >= kManyContacts) {
-    RoleFilter dots(beside, [](Role role) { return role != Role::ContactNormal && role != Role::Impulse; });
-    target.manyPoints(true);
-    held.replay(dots);
-    target.manyPoints(false);
+  // counted first, then drawn (a copy of tens of thousands of calls made a frame of a 5,050-box
+  // pyramid allocate and free each)
+  ContactsInView onScreen(camera_.view());
+  if (r.contactsAuto) history.drawAfterimages(world.time, onScreen);
+  if (r.contactsAuto && onScreen.count >= kManyContacts) {
+    // dots scaled to the bodies they sit on, or none where they would cover them
+    const double radius = manyDotRadiusPx(world);
+    const bool showDots = radius >= kLeastDotRadiusPx;
+    RoleFilter dots(beside, [showDots](Role role) {
+      return role != Role::ContactNormal && role != Role::Impulse && (showDots || role != Role::ContactPoint);
+    });
+    target.manyPoints(radius);
+    history.drawAfterimages(world.time, dots);
+    target.manyPoints(0.0);
   } else {
-    held.replay(beside);
+    history.drawAfterimages(world.time, beside);
   }
   const double textSize = fontSizeFor(r, camera_.heightPx()) * px;
   // the overlay of every polygon pair closer than a tenth of the view (so, as they approach), its
@@ -132,15 +168,32 @@ void FramePainter::paint(const sim::world::World& world, const History& history,
   if (placed) *placed = draw.placed();
 }
 
-size_t FramePainter::contactsOnScreen(const DrawList& calls) const {
-  const Bounds view = camera_.view();
-  size_t n = 0;
-  for (const DrawList::Call& c : calls.calls())
-    if (c.kind == DrawList::Kind::Point && c.style.role == Role::ContactPoint) {
-      const Vec2& p = c.points[0];
-      n += p.x() >= view.min.x() && p.x() <= view.max.x() && p.y() >= view.min.y() && p.y() <= view.max.y();
+double FramePainter::manyDotRadiusPx(const sim::world::World& world) const {
+  // the moving bodies' median narrowest width on the frame, px (a pile's bodies, not its ground)
+  std::vector<double> widths;
+  widths.reserve(world.bodies.size());
+  for (const sim::core::Body& b : world.bodies) {
+    if (b.isStatic) continue;
+    if (b.shape.kind == sim::core::ShapeKind::Circle) widths.push_back(2.0 * b.shape.radius);
+    if (b.shape.kind != sim::core::ShapeKind::Polygon || b.shape.vertices.empty()) continue;
+    // a convex polygon's width: the least, over its edges, of its extent along the edge's normal
+    const std::vector<Vec2>& v = b.shape.vertices;
+    double least = std::numeric_limits<double>::infinity();
+    for (size_t k = 0; k < v.size(); ++k) {
+      const Vec2 e = v[(k + 1) % v.size()] - v[k];
+      if (!(e.norm() > 0.0)) continue;
+      const Vec2 n = Vec2(-e.y(), e.x()).normalized();
+      double lo = n.dot(v[0]), hi = lo;
+      for (const Vec2& q : v) lo = std::min(lo, n.dot(q)), hi = std::max(hi, n.dot(q));
+      least = std::min(least, hi - lo);
     }
-  return n;
+    if (std::isfinite(least)) widths.push_back(least);
+  }
+  // the usual dot's own radius (lineWidthFor: 2 px at 720p) when no moving body says otherwise
+  const double usual = 2.2 * lineWidthFor(def_.render, camera_.heightPx());
+  if (widths.empty()) return usual;
+  std::nth_element(widths.begin(), widths.begin() + widths.size() / 2, widths.end());
+  return std::min(usual, kManyDotFraction * widths[widths.size() / 2] / camera_.pixelSize());
 }
 
 bool FramePainter::labelFits(const sim::core::Body& b, const std::string& label) const {

@@ -54,8 +54,8 @@ class FramePainter {
   // the bodies' labels, as `labels:` says (auto: those that fit, or all of a small scene)
   void paintLabels(const sim::world::World& world, LabelPlacer& draw) const;
   bool labelFits(const sim::core::Body& body, const std::string& label) const;
-  // the contact points of `calls` inside the view
-  size_t contactsOnScreen(const DrawList& calls) const;
+  // many contact points: their dots' radius in px, scaled to the moving bodies' width on the frame
+  double manyDotRadiusPx(const sim::world::World& world) const;
   mutable bool unfitTold_ = false;        // labels that do not fit: said once per run
   std::vector<std::string> captionLines_;
   TextWidth textWidth_;                   // of the frame's texts, px (empty: estimated)

@@ -2,10 +2,14 @@
 // of the simulation shows (notes: "Rigid body state", "Impulses", "Collisions").
 #pragma once
 
-#include "sim/debug/debug_draw.h"
+#include "sim/debug_draw/debug_draw.h"
 #include "sim/world/world.h"
 
 namespace sim::debug {
+// what is described goes through the simulator's drawing interface
+using sim::debug_draw::DebugDraw;
+using sim::debug_draw::DrawRole;
+using sim::debug_draw::DrawStyle;
 using namespace sim::world;
 
 // every body's shape in its current pose (and a radius for circles, so rotation shows)

@@ -3,10 +3,14 @@
 // written beside the edge; on request every other candidate edge labeled with its separation too.
 #pragma once
 
-#include "sim/debug/debug_draw.h"
+#include "sim/debug_draw/debug_draw.h"
 #include "sim/world/world.h"
 
 namespace sim::debug {
+// what is described goes through the simulator's drawing interface
+using sim::debug_draw::DebugDraw;
+using sim::debug_draw::DrawRole;
+using sim::debug_draw::DrawStyle;
 using namespace sim::world;
 
 // edge e's separation from the polygon `other`: min over its vertices v of n̂_e · (v − p_e), m

@@ -323,3 +323,62 @@ TEST_CASE("a frame's GL draw calls do not grow with the bodies: the same at 55 a
   // the ground (its fill, its hatching, its outline) and one batch of everything opaque
   CHECK(many <= 6);
 }
+
+namespace {
+
+using sim::core::Vec2;
+
+// the contact dots a painted frame asks for: how many, and the radius it gives the canvas for them
+struct DotCount final : render::draw::Canvas {
+  size_t points = 0;
+  std::vector<double> radii;
+  void polygon(const std::vector<Vec2>&, const render::draw::Pen&) override {}
+  void circle(const Vec2&, double, const render::draw::Pen&) override {}
+  void halfPlane(const Vec2&, const Vec2&, const render::draw::Pen&) override {}
+  void segment(const Vec2&, const Vec2&, const render::draw::Pen&) override {}
+  void point(const Vec2&, const render::draw::Pen& p) override { points += p.role == render::draw::Role::ContactPoint; }
+  void arrow(const Vec2&, const Vec2&, const render::draw::Pen&) override {}
+  void text(const Vec2&, const std::string&, const render::draw::Pen&) override {}
+  void label(const Vec2&, const Vec2&, const std::string&, const render::draw::Pen&) override {}
+  void manyPoints(double radiusPx) override { radii.push_back(radiusPx); }
+};
+
+struct DenseDots {
+  DotCount dots;
+  double boxPx;  // a 1 m box's width on the frame
+};
+
+DenseDots denseDots(const std::string& yaml) {
+  const render::scene::Scene def = drawn_scene::load(yaml);
+  const render::frame::RunSurvey survey = render::frame::surveyRun(def);
+  const render::draw::Camera camera = render::frame::cameraFor(def, survey);
+  FramePainter painter(def, camera, survey);
+  sim::world::World world = sim::scene::buildWorld(def.model);
+  render::frame::History history(world, painter.historyOptions());
+  world.advanceTo(0.5, &history);
+  DenseDots d{{}, 1.0 / camera.pixelSize()};
+  painter.paint(world, history, {}, d.dots);
+  return d;
+}
+
+}  // namespace
+
+TEST_CASE("many contact dots are scaled to the boxes they sit on, and left out where under a pixel or two") {
+  // 1280x720: 1 m boxes about 13 px across, so dots an eighth of that, not the usual 4.4 px
+  const DenseDots wide = denseDots(pyramid(20, "render: {size: [1280, 720]}\n"));
+  CAPTURE(wide.boxPx);
+  CHECK(wide.dots.points >= 200);
+  REQUIRE(wide.dots.radii.size() == 2);
+  CHECK(wide.dots.radii[0] == doctest::Approx(0.125 * wide.boxPx).epsilon(0.01));
+  CHECK(wide.dots.radii[0] < 2.2 * 2.0);
+  CHECK(wide.dots.radii[1] == 0.0);
+  // 320x180: boxes about 3 px across, whose dots would be a blur over each: none drawn
+  const DenseDots small = denseDots(pyramid(20, "render: {size: [320, 180]}\n"));
+  CAPTURE(small.boxPx);
+  CHECK(0.125 * small.boxPx < 0.75);
+  CHECK(small.dots.points == 0);
+  // few contacts keep the usual dots, with no radius told
+  const DenseDots few = denseDots(pyramid(3, "render: {size: [1280, 720]}\n"));
+  CHECK(few.dots.points > 0);
+  CHECK(few.dots.radii.empty());
+}

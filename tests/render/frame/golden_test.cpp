@@ -154,6 +154,22 @@ TEST_CASE("golden: bodies of every shape, static ones hatched, a half-plane, lab
   checkGolden("bodies", frame(kBodies, 0.0));
 }
 
+// Box2D's pyramid, base 20 (210 boxes of 1 m) resting, soft_step: a frame of about 800 contact points
+std::string densePyramid() {
+  std::string yaml = "name: golden_pyramid\nduration: 0.5\nworld: {gravity: [0, -10], friction: 0.6}\n"
+                     "sim: {collisions: soft_step, dt: 0.016666666666666667}\nrender: {size: [640, 360]}\n"
+                     "bodies:\n  - {name: ground, shape: {box: [40, 1]}, position: [3.7, -0.5], static: true}\n";
+  for (int r = 0; r < 20; ++r)
+    for (int j = 0; j < 20 - r; ++j)
+      yaml += "  - {name: b" + std::to_string(r) + "_" + std::to_string(j) + ", shape: {box: [1, 1]}, position: [" +
+              std::to_string(-7.0 + 0.5625 * r + 1.125 * j) + ", " + std::to_string(0.5 + r) + "]}\n";
+  return yaml;
+}
+
+TEST_CASE("golden: a dense frame, its contacts as dots scaled to the boxes, without normals or labels") {
+  checkGolden("dense_pyramid", frame(densePyramid(), 0.5));
+}
+
 TEST_CASE("golden: an impact's contact point, normal and impulses") { checkGolden("impact", frame(kImpact, 0.75)); }
 
 TEST_CASE("golden: the impact held on screen, half faded") { checkGolden("impact_fading", frame(kImpact, 1.0)); }

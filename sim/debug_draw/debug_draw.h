@@ -9,8 +9,8 @@
 
 #include "sim/core/math.h"
 
-namespace sim::debug {
-using namespace sim::core;
+namespace sim::debug_draw {
+using sim::core::Vec2;
 
 // the physics a picture of the world shows; a renderer gives each its look
 enum class DrawRole {
@@ -46,4 +46,4 @@ class DebugDraw {
   virtual void text(const Vec2& at, const std::string& text, const DrawStyle& style) = 0;
 };
 
-}  // namespace sim::debug
+}  // namespace sim::debug_draw
