@@ -113,8 +113,9 @@ std::string runFailure(const sim::scene::SceneDef& def, const sim::world::Diverg
 // one scene, one variant ("" for the base), run to its duration as `simulate` runs it; returns
 // false when an expect fails or the run stops before its end; `threads` (--threads) in place of
 // the scene's sim: threads when given
-bool checkCase(const std::string& file, const std::string& variant, const Verbosity& say, std::optional<int> threads) {
-  sim::scene::SceneDef def = readSceneFile(file, variant).model();
+bool checkCase(const OpenScene& scene, const std::string& variant, const Verbosity& say, std::optional<int> threads) {
+  const std::string& file = scene.path();
+  sim::scene::SceneDef def = scene.read(variant).model();
   if (threads) def.threads = *threads;
   const std::string label = file + (variant.empty() ? "" : " [" + variant + "]");
   // --quiet: only what failed, so the lines about the model and the run go nowhere
@@ -165,8 +166,9 @@ std::string describeModel3(const sim::scene3d::SceneDef& d) {
 
 // one variant of a 3D scene ("" for the base), run to its duration; false when an expect fails or
 // the run diverges before its end
-bool checkCase3d(const std::string& file, const std::string& variant, const Verbosity& say) {
-  const sim::scene3d::SceneDef def = readSceneFile3(file, variant).model();
+bool checkCase3d(const OpenScene& scene, const std::string& variant, const Verbosity& say) {
+  const std::string& file = scene.path();
+  const sim::scene3d::SceneDef def = scene.read3(variant).model();
   const std::string label = file + (variant.empty() ? "" : " [" + variant + "]");
   std::ostream& out = say.quiet ? nowhere() : std::cout;
   out << label << ": " << describeModel3(def) << '\n';
@@ -211,13 +213,14 @@ bool planned(const std::string& file, const std::function<Plan()>& plan) {
   }
 }
 
-bool planRender(const std::string& file) {
+bool planRender(const OpenScene& scene) {
+  const std::string& file = scene.path();
   const render::video::LectureRequest request{.root = "out/lecture", .file = file, .size = {}, .fps = {}};
-  if (isSceneFile3d(file))
+  if (scene.is3d())
     return planned<render::video::RenderPlan3, render::video::VariantDiverged3>(
-        file, [&] { return render::video::planLecture3(lectureLoader3(file), request); });
+        file, [&] { return render::video::planLecture3(lectureLoader3(scene), request); });
   return planned<render::video::RenderPlan, render::video::VariantDiverged>(
-      file, [&] { return render::video::planLecture(lectureLoader(file), request); });
+      file, [&] { return render::video::planLecture(lectureLoader(scene), request); });
 }
 
 // the files as given, a directory as every *.yaml in it (as `lecture` reads it: its order.txt's order, else sorted)
@@ -239,15 +242,17 @@ int check(const std::vector<std::string>& arguments, const Verbosity& say, bool 
   for (const std::string& file : sceneFiles(arguments)) {
     try {
       bool ok = true;
-      if (isSceneFile3d(file)) {
-        ok = check3d(file, say);
+      const OpenScene scene(file);
+      if (scene.is3d()) {
+        ok = check3d(scene, say);
       } else {
-        const sim::scene::SceneDef base = readSceneFile(file).model();
-        std::vector<std::string> cases = base.variantNames;
+        // (the base scene read whole, as each variant is: a fault in it is reported though variants replace it)
+        (void)scene.read();
+        std::vector<std::string> cases = scene.variantNames();
         if (cases.empty()) cases.push_back("");
-        for (const std::string& v : cases) ok = checkCase(file, v, say, threads) && ok;
+        for (const std::string& v : cases) ok = checkCase(scene, v, say, threads) && ok;
       }
-      if (render) ok = planRender(file) && ok;
+      if (render) ok = planRender(scene) && ok;
       if (!ok && code == kExitOk) code = kExitFailure;
     } catch (const UsageError& e) {
       std::cerr << file << ": " << e.what() << '\n';
@@ -275,11 +280,11 @@ int check(const std::vector<std::string>& arguments, const Verbosity& say, bool 
 
 }  // namespace
 
-bool check3d(const std::string& file, const Verbosity& say) {
-  std::vector<std::string> cases = readSceneFile3(file).model().variantNames;
+bool check3d(const OpenScene& scene, const Verbosity& say) {
+  std::vector<std::string> cases = scene.read3().model().variantNames;
   if (cases.empty()) cases.push_back("");
   bool ok = true;
-  for (const std::string& v : cases) ok = checkCase3d(file, v, say) && ok;
+  for (const std::string& v : cases) ok = checkCase3d(scene, v, say) && ok;
   return ok;
 }
 

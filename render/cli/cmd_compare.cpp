@@ -59,7 +59,7 @@ void plot(const std::vector<BodyComparison>& bodies, const std::string& dir, con
 }
 
 int compare(const CompareCommand& o) {
-  if (isSceneFile3d(o.scene)) throw UsageError(o.scene + ": a 3D scene; compare takes 2D scenes for now");
+  if (o.is3d()) throw UsageError(o.scene + ": a 3D scene; compare takes 2D scenes for now");
   CompareTolerance tolerance;
   try {
     if (!o.tolerance.empty()) tolerance = parseCompareTolerance(o.tolerance);

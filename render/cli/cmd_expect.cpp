@@ -38,7 +38,7 @@ std::vector<double> times(const std::string& text, double duration) {
 std::string pair(const std::vector<double>& v) { return "[" + formatNumber(v[0]) + ", " + formatNumber(v[1]) + "]"; }
 
 int expect(const ExpectCommand& o) {
-  if (isSceneFile3d(o.scene)) throw UsageError(o.scene + ": a 3D scene; expect takes 2D scenes for now");
+  if (o.is3d()) throw UsageError(o.scene + ": a 3D scene; expect takes 2D scenes for now");
   if (!(o.tolerance >= 0.0)) throw UsageError("--tolerance: give zero or a positive number");
   sim::scene::SceneDef def = o.load().model();
   const std::vector<double> at = o.at.empty() ? std::vector<double>{def.duration} : times(o.at, def.duration);

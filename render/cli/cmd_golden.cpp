@@ -51,17 +51,18 @@ std::vector<Case> casesOf(const std::vector<std::string>& arguments) {
   for (const std::string& a : arguments)
     if (!fs::is_directory(a)) named.push_back(a);
   for (const std::string& file : lectureSceneFiles(arguments)) {
-    if (isSceneFile3d(file)) {
+    const OpenScene opened(file);
+    if (opened.is3d()) {
       if (std::find(named.begin(), named.end(), file) != named.end())
         throw UsageError(file + ": a 3D scene; golden records are of 2D scenes for now");
       std::cerr << file << ": skipped: a 3D scene, and golden records are of 2D scenes for now\n";
       continue;
     }
-    const SceneFile base = readSceneFile(file);
-    std::vector<std::string> variants = base.model().variantNames;
+    (void)opened.read();  // the base scene read whole, as each variant is
+    std::vector<std::string> variants = opened.variantNames();
     if (variants.empty()) variants.push_back("");
     for (const std::string& v : variants) {
-      SceneFile scene = readSceneFile(file, v);
+      SceneFile scene = opened.read(v);
       (void)startWorld(scene.model(), file);
       cases.push_back({file, std::move(scene)});
     }

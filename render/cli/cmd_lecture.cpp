@@ -110,8 +110,9 @@ PackScene planScene(LectureRequest request, const std::string& file) {
   request.file = file;
   PackScene scene;
   scene.file = file;
-  if (isSceneFile3d(file)) {
-    const LoadVariant3 load = lectureLoader3(file);
+  const OpenScene opened(file);
+  if (opened.is3d()) {
+    const LoadVariant3 load = lectureLoader3(opened);
     scene.base3 = load("");
     scene.name = scene.base3->model.name;
     try {
@@ -121,7 +122,7 @@ PackScene planScene(LectureRequest request, const std::string& file) {
     }
     return scene;
   }
-  const LoadVariant load = lectureLoader(file);
+  const LoadVariant load = lectureLoader(opened);
   scene.base = load("");
   try {
     scene.plan = planLecture(load, request);

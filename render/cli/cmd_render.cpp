@@ -53,8 +53,8 @@ int render(const RenderCommand& o) {
   const auto wrote = [&o](const std::string& path) {
     if (o.verbose) std::cout << "wrote " << path << '\n';
   };
-  if (!o.overlay.empty() && isSceneFile3d(o.scene)) throw UsageError("--overlay: a trace is drawn over 2D scenes only");
-  if (isSceneFile3d(o.scene)) try {
+  if (!o.overlay.empty() && o.is3d()) throw UsageError("--overlay: a trace is drawn over 2D scenes only");
+  if (o.is3d()) try {
       const RenderPlan3 plan = planVideos3(o.variantLoader3(), r);
       traced<TraceWriter3>(o.trace, plan, [&](TraceWriter3* trace) { writePlan3(plan, o.quiet, wrote, trace); });
       return kExitOk;

@@ -147,7 +147,7 @@ void printText(const sim::scene::SceneDef& def, const sim::world::World& w, bool
 int simulate(const SimulateOptions& o) {
   const SilencedOutput silenced(o.quiet);
   OutputFile output(o.output);
-  if (isSceneFile3d(o.scene)) {
+  if (o.is3d()) {
     const int code = simulate3d(o, o.until, o.json, o.trace);
     if (code == kExitOk) output.commit();
     return code;

@@ -67,8 +67,8 @@ int snapshot(const SnapshotCommand& o) {
   const auto print = [&o](const std::string& path) {
     if (!o.quiet) std::cout << path << '\n';
   };
-  if (!o.overlay.empty() && isSceneFile3d(o.scene)) throw UsageError("--overlay: a trace is drawn over 2D scenes only");
-  if (isSceneFile3d(o.scene)) try {
+  if (!o.overlay.empty() && o.is3d()) throw UsageError("--overlay: a trace is drawn over 2D scenes only");
+  if (o.is3d()) try {
       const RenderPlan3 plan = planStills3(o.variantLoader3(), request(o));
       traced<TraceWriter3>(o.trace, plan, [&](TraceWriter3* trace) { writePlan3(plan, !o.verbose, print, trace); });
       return kExitOk;

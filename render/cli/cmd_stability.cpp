@@ -33,12 +33,12 @@ struct StabilityOptions : MethodLists, Verbosity {
 // a scene whose variants are the methods compares them all; without variants (or with --variant) the
 // scene's own, and for a scene whose bodies can meet every method that makes them collide (`auto`
 // alone where no two bodies can meet: the others would repeat its numbers)
-std::vector<sim::world::CollisionMethod> defaultCollisions(const StabilityOptions& o, const sim::scene::SceneDef& def) {
+std::vector<sim::world::CollisionMethod> defaultCollisions(const StabilityOptions& o, const OpenScene& file, const sim::scene::SceneDef& def) {
   using sim::world::CollisionMethod;
   std::vector<CollisionMethod> methods;
   if (o.variant.empty() && !def.variantNames.empty()) {
     for (const std::string& v : def.variantNames) {
-      const CollisionMethod m = readSceneFile(o.scene, v).model().collisions;
+      const CollisionMethod m = file.read(v).model().collisions;
       if (std::find(methods.begin(), methods.end(), m) == methods.end()) methods.push_back(m);
     }
     return methods;
@@ -52,13 +52,13 @@ int stability(const StabilityOptions& o) {
   so.scene = o.scene;
   so.variant = o.variant;
   const SilencedOutput silenced(o.quiet);
-  if (isSceneFile3d(o.scene)) return stability3d(so, o, o.outDir, o.verbose);
+  if (so.is3d()) return stability3d(so, o, o.outDir, o.verbose);
   const render::analysis::Study study = so.load().study();
   const sim::scene::SceneDef& def = study.model;
   startWorld(def, o.scene);
 
   const auto integrators = o.integratorList();
-  const auto methods = o.collisionList(defaultCollisions(o, def));
+  const auto methods = o.collisionList(defaultCollisions(o, so.open(), def));
   render::video::createOutputDirectory(o.outDir);
   const std::string base = o.outDir + "/" + def.name + (def.variant.empty() ? "" : "-" + def.variant) + "-stability";
   const std::string parameter(kParameterNames.name(study.stability.parameter));

@@ -100,7 +100,7 @@ int sweep(const SweepOptions& o) {
   so.scene = o.scene;
   so.variant = o.variant;
   const SilencedOutput silenced(o.quiet);
-  if (isSceneFile3d(o.scene)) return sweep3d(so, o, o.dt, o.repeat, o.outDir, o.verbose);
+  if (so.is3d()) return sweep3d(so, o, o.dt, o.repeat, o.outDir, o.verbose);
   const sim::scene::SceneDef def = so.load().model();
   startWorld(def, o.scene);  // bad start states are reported before the long run
 

@@ -37,21 +37,21 @@ std::vector<std::string> lectureSceneFiles(const std::vector<std::string>& argum
   return files;
 }
 
-render::video::LoadVariant lectureLoader(const std::string& file) {
+render::video::LoadVariant lectureLoader(const OpenScene& file) {
   return [file](const std::string& variant) {
-    render::scene::Scene scene = readSceneFile(file, variant).scene;
-    if (!variant.empty() || scene.model.variantNames.empty()) (void)startWorld(scene.model, file);
+    render::scene::Scene scene = file.read(variant).scene;
+    if (!variant.empty() || scene.model.variantNames.empty()) (void)startWorld(scene.model, file.path());
     return scene;
   };
 }
 
-render::video::LoadVariant3 lectureLoader3(const std::string& file) {
+render::video::LoadVariant3 lectureLoader3(const OpenScene& file) {
   return [file](const std::string& variant) {
-    render::scene3d::Scene scene = readSceneFile3(file, variant).scene;
+    render::scene3d::Scene scene = file.read3(variant).scene;
     try {
       (void)sim::scene3d::buildWorld(scene.model);
     } catch (const std::invalid_argument& e) {
-      throw sim::yaml::SceneError(file, 0, 0, (variant.empty() ? "" : "variant '" + variant + "': ") + e.what());
+      throw sim::yaml::SceneError(file.path(), 0, 0, (variant.empty() ? "" : "variant '" + variant + "': ") + e.what());
     }
     return scene;
   };

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "render/cli/scene_file.h"
 #include "render/video/render_plan.h"
 
 namespace render::cli {
@@ -17,9 +18,9 @@ std::vector<std::string> lectureSceneFiles(const std::vector<std::string>& argum
 
 // the file's variants ("" the base scene), each that will be a video (a variant, or the base scene
 // when it has none) with its world started; throws sim::yaml::SceneError
-render::video::LoadVariant lectureLoader(const std::string& file);
+render::video::LoadVariant lectureLoader(const OpenScene& file);
 // the same for a 3D scene file: each variant's world built (a body no solid can be is bad input
 // before anything renders)
-render::video::LoadVariant3 lectureLoader3(const std::string& file);
+render::video::LoadVariant3 lectureLoader3(const OpenScene& file);
 
 }  // namespace render::cli

@@ -6,7 +6,7 @@ namespace render::cli {
 
 namespace {
 
-SceneFile read(const sim::yaml::SceneSource& source) {
+SceneFile readSource(const sim::yaml::SceneSource& source) {
   SceneFile f;
   f.scene = render::scene::readScene(source, {{render::analysis::kStabilityKey, render::golden::kGoldenKey}, {}});
   f.stability = render::analysis::readStability(source, f.scene.model);
@@ -16,18 +16,18 @@ SceneFile read(const sim::yaml::SceneSource& source) {
 
 }  // namespace
 
-SceneFile readSceneFile(const std::string& path, const std::string& variant) {
-  return read(sim::yaml::readSceneSource(path, variant));
-}
+SceneFile readSceneFile(const std::string& path, const std::string& variant) { return OpenScene(path).read(variant); }
 
 SceneFile sceneFileText(const std::string& text, const std::string& file, const std::string& variant) {
-  return read(sim::yaml::sceneSourceText(text, file, variant));
+  return OpenScene(text, file).read(variant);
 }
 
-bool isSceneFile3d(const std::string& path) { return sim::yaml::readSceneSource(path).dimensions == 3; }
+SceneFile3 readSceneFile3(const std::string& path, const std::string& variant) { return OpenScene(path).read3(variant); }
 
-SceneFile3 readSceneFile3(const std::string& path, const std::string& variant) {
-  const sim::yaml::SceneSource source = sim::yaml::readSceneSource(path, variant);
+SceneFile OpenScene::read(const std::string& variant) const { return readSource(sim::yaml::sceneSource(document_, variant)); }
+
+SceneFile3 OpenScene::read3(const std::string& variant) const {
+  const sim::yaml::SceneSource source = sim::yaml::sceneSource(document_, variant);
   SceneFile3 f;
   f.scene = render::scene3d::readScene(source, {{render::analysis::kStabilityKey, render::golden::kGoldenKey}, {}});
   f.stability = render::analysis::readStability3(source);

@@ -4,11 +4,13 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "render/analysis/stability_def.h"
 #include "render/golden/golden_def.h"
 #include "render/scene/scene.h"
 #include "render/scene3d/scene.h"
+#include "sim/yaml/scene_source.h"
 
 namespace render::cli {
 
@@ -39,9 +41,25 @@ struct SceneFile3 {
   sim::scene3d::SceneDef& model() { return scene.model; }
 };
 
-// whether the scene in `path` is 3D: every command asks first and takes the 3D path for it; throws
-// sim::yaml::SceneError for a file that cannot be read
-bool isSceneFile3d(const std::string& path);
 SceneFile3 readSceneFile3(const std::string& path, const std::string& variant = "");
+
+// A scene file read and parsed once: its `dimensions` says which path each subcommand takes, and
+// every variant, 2D or 3D, is merged and read from the one parse. A copy shares the parse.
+class OpenScene {
+ public:
+  // throws sim::yaml::SceneError at the fault's FILE:LINE:COL
+  explicit OpenScene(const std::string& path) : document_(sim::yaml::readSceneDocument(path)) {}
+  OpenScene(const std::string& text, const std::string& file) : document_(sim::yaml::sceneDocumentText(text, file)) {}
+
+  const std::string& path() const { return document_.file; }
+  bool is3d() const { return document_.dimensions == 3; }
+  const std::vector<std::string>& variantNames() const { return document_.variantNames; }
+  // the named variant ("" for the base scene) of a 2D scene, or of a 3D one
+  SceneFile read(const std::string& variant = "") const;
+  SceneFile3 read3(const std::string& variant = "") const;
+
+ private:
+  sim::yaml::SceneDocument document_;
+};
 
 }  // namespace render::cli

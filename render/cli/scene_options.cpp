@@ -25,8 +25,13 @@ void SceneOptions::addTo(CLI::App& command) {
                      "soft_step: threads sharing each set of contacts, 1 to 64 (the scene's sim: threads; the same result with any)");
 }
 
+const OpenScene& SceneOptions::open() const {
+  if (!opened_ || opened_->path() != scene) opened_ = std::make_shared<const OpenScene>(scene);
+  return *opened_;
+}
+
 SceneFile SceneOptions::load() const {
-  SceneFile file = readSceneFile(scene, variant);
+  SceneFile file = open().read(variant);
   sim::scene::SceneDef& def = file.model();
   if (!integrator.empty()) {
     const auto method = sim::core::integratorFromName(integrator);
@@ -66,7 +71,7 @@ SceneFile SceneOptions::load() const {
 }
 
 SceneFile3 SceneOptions::load3() const {
-  SceneFile3 file = readSceneFile3(scene, variant);
+  SceneFile3 file = open().read3(variant);
   sim::scene3d::SceneDef& def = file.model();
   if (!integrator.empty()) {
     const auto method = sim::world3d::kIntegratorNames.parse(integrator);
@@ -92,6 +97,7 @@ SceneFile3 SceneOptions::load3() const {
 }
 
 render::video::LoadVariant SceneOptions::variantLoader() const {
+  (void)open();  // before the copy, which shares the parse
   return [options = *this](const std::string& variant) {
     SceneOptions one = options;
     one.variant = variant;
@@ -100,6 +106,7 @@ render::video::LoadVariant SceneOptions::variantLoader() const {
 }
 
 render::video::LoadVariant3 SceneOptions::variantLoader3() const {
+  (void)open();
   return [options = *this](const std::string& variant) {
     SceneOptions one = options;
     one.variant = variant;

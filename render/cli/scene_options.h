@@ -2,6 +2,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -24,6 +25,9 @@ struct SceneOptions {
 
   // --variant, --integrator, --dt, --collisions, --substeps, --contact-hertz, --threads
   void addTo(CLI::App& command);
+  // the scene file, read and parsed on first use and once: is3d() says which path to take
+  const OpenScene& open() const;
+  bool is3d() const { return open().is3d(); }
   // the scene with the overrides applied; throws sim::yaml::SceneError or UsageError
   SceneFile load() const;
   // the same for a 3D scene (dimensions: 3), whose integrators include the splitting and which has
@@ -33,6 +37,9 @@ struct SceneOptions {
   render::video::LoadVariant variantLoader() const;
   // the same for a 3D scene's variants
   render::video::LoadVariant3 variantLoader3() const;
+
+ private:
+  mutable std::shared_ptr<const OpenScene> opened_;  // (shared by copies, as the variant loaders make)
 };
 
 // the scene's world, started: `auto` resolved and the start state checked; bodies that overlap

@@ -1,4 +1,4 @@
-// The command line's 3D path: each subcommand asks isSceneFile3d first and hands a 3D scene
+// The command line's 3D path: each subcommand opens its scene file once (OpenScene) and hands a 3D scene
 // (dimensions: 3) to these; the 2D path stays as it is.
 #pragma once
 
@@ -19,7 +19,7 @@ namespace render::cli {
 int simulate3d(const SceneOptions& options, std::optional<double> until, bool json, const std::string& trace);
 // `check` of one file: every variant's model described and its expect entries compared; false when
 // one fails. Throws sim::yaml::SceneError, sim::world3d::Diverged
-bool check3d(const std::string& file, const Verbosity& say);
+bool check3d(const OpenScene& scene, const Verbosity& say);
 // `sweep` and `stability`
 // (`verbose`: the CSV printed after the table)
 int sweep3d(const SceneOptions& scene, const MethodLists& methods, const std::string& dt, int repeat, const std::string& outDir,

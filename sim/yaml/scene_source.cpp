@@ -10,9 +10,8 @@
 #include <utility>
 
 #include <yaml-cpp/depthguard.h>
-#include <yaml-cpp/eventhandler.h>
-#include <yaml-cpp/parser.h>
 
+#include "sim/yaml/first_document.h"
 #include "sim/yaml/path_name.h"
 #include "sim/yaml/yaml_reader.h"
 
@@ -126,9 +125,9 @@ class VariantMerge {
   YAML::Node pool_{YAML::NodeType::Sequence};
 };
 
-// the variants' names, and the chosen one merged over the base scene
-void mergeVariant(const Reader& r, SceneSource& s, size_t fileBytes) {
-  const YAML::Node variants = s.root["variants"];
+// the variants' names, each checked
+void listVariants(const Reader& r, SceneDocument& s) {
+  const YAML::Node variants = std::as_const(s.root)["variants"];
   if (variants) {
     if (!variants.IsMap()) r.fail(variants, "'variants' must be a map from names to changes, got " + describe(variants));
     for (const auto& kv : variants) {
@@ -145,11 +144,16 @@ void mergeVariant(const Reader& r, SceneSource& s, size_t fileBytes) {
         r.fail(kv.second["dimensions"], "a variant cannot change 'dimensions': a scene is 2D or 3D throughout");
     }
   }
+}
+
+// the chosen variant merged over the base scene
+void mergeVariant(const Reader& r, const SceneDocument& d, SceneSource& s) {
   if (s.variant.empty()) return;
+  const YAML::Node variants = std::as_const(d.root)["variants"];
   if (std::find(s.variantNames.begin(), s.variantNames.end(), s.variant) == s.variantNames.end()) {
     std::string known;
     for (const auto& n : s.variantNames) known += (known.empty() ? "" : ", ") + n;
-    r.fail(variants ? variants : s.root, "unknown variant '" + s.variant + "'; " +
+    r.fail(variants ? variants : d.root, "unknown variant '" + s.variant + "'; " +
                                              (known.empty() ? "this scene has no variants" : "this scene has: " + known));
   }
   for (const auto& kv : variants)
@@ -157,30 +161,9 @@ void mergeVariant(const Reader& r, SceneSource& s, size_t fileBytes) {
   const YAML::Node changes = variants[s.variant];
   if (changes.IsMap()) {
     if (changes["variants"]) r.fail(changes["variants"], "a variant cannot define variants");
-    s.root = VariantMerge(r, s.variant, fileBytes).map(s.root, changes, true);
+    // (reset, not =: assigning to a node handle rewrites the node it holds, here the document's root)
+    s.root.reset(VariantMerge(r, s.variant, d.bytes).map(d.root, changes, true));
   }
-}
-
-// where a text's second YAML document starts, if it has one (the parser's events, no nodes built)
-std::optional<YAML::Mark> secondDocument(const std::string& text) {
-  struct Starts : YAML::EventHandler {
-    std::vector<YAML::Mark> marks;
-    void OnDocumentStart(const YAML::Mark& at) override { marks.push_back(at); }
-    void OnDocumentEnd() override {}
-    void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
-    void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
-    void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t, const std::string&) override {}
-    void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {}
-    void OnSequenceEnd() override {}
-    void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {}
-    void OnMapEnd() override {}
-  } starts;
-  std::istringstream in(text);
-  YAML::Parser parser(in);
-  for (int documents = 0; documents < 2 && parser.HandleNextDocument(starts); ++documents) {
-  }
-  if (starts.marks.size() < 2) return std::nullopt;
-  return starts.marks[1];
 }
 
 std::string stem(const std::string& path) {
@@ -192,17 +175,17 @@ std::string stem(const std::string& path) {
 
 }  // namespace
 
-SceneSource sceneSourceText(const std::string& text, const std::string& file, const std::string& variant) {
-  SceneSource s{file, stem(file), variant, {}, {}, 2, YAML::Mark::null_mark()};
+SceneDocument sceneDocumentText(const std::string& text, const std::string& file) {
+  SceneDocument d{file, stem(file), {}, {}, 2, text.size()};
   try {
-    // a second document would otherwise be ignored without a word; counted up to two, never all:
-    // yaml-cpp's LoadAll never ends on some malformed bytes (it keeps finding empty documents)
-    if (const std::optional<YAML::Mark> second = secondDocument(text)) {
-      const YAML::Mark at = *second;
+    const FirstDocument parsed = loadFirstDocument(text);
+    // a second document would otherwise be ignored without a word
+    if (parsed.second) {
+      const YAML::Mark at = *parsed.second;
       throw SceneError(file, at.is_null() ? 1 : at.line + 1, at.is_null() ? 1 : at.column + 1,
                        "a second YAML document (after '---'): a scene file holds one scene; put the other in a file of its own");
     }
-    s.root = YAML::Load(text);
+    d.root.reset(parsed.root);
   } catch (const YAML::DeepRecursion& e) {
     // yaml-cpp's guard against a stack overflow says only "bad file"
     throw SceneError(file, e.mark.is_null() ? 0 : e.mark.line + 1, e.mark.column + 1,
@@ -211,21 +194,31 @@ SceneSource sceneSourceText(const std::string& text, const std::string& file, co
   } catch (const YAML::ParserException& e) {
     throw SceneError(file, e.mark.line + 1, e.mark.column + 1, "invalid YAML: " + e.msg);
   }
-  if (!s.root || s.root.IsNull()) throw SceneError(file, 1, 1, "the scene is empty; it needs at least 'bodies:'");
+  if (!d.root || d.root.IsNull()) throw SceneError(file, 1, 1, "the scene is empty; it needs at least 'bodies:'");
   readGuarded(file, [&] {
     const Reader r(file);
-    if (!s.root.IsMap()) r.fail(s.root, "a scene is a map with at least 'bodies:'; got " + describe(s.root));
-    mergeVariant(r, s, text.size());
-    if (const YAML::Node d = std::as_const(s.root)["dimensions"]) {
-      const double n = r.number(d, "dimensions");
-      if (n != 2.0 && n != 3.0) r.fail(d, "'dimensions' is 2 (the default: a plane) or 3 (space), got " + d.Scalar());
-      s.dimensions = static_cast<int>(n);
+    if (!d.root.IsMap()) r.fail(d.root, "a scene is a map with at least 'bodies:'; got " + describe(d.root));
+    listVariants(r, d);
+    if (const YAML::Node n = std::as_const(d.root)["dimensions"]) {
+      const double value = r.number(n, "dimensions");
+      if (value != 2.0 && value != 3.0) r.fail(n, "'dimensions' is 2 (the default: a plane) or 3 (space), got " + n.Scalar());
+      d.dimensions = static_cast<int>(value);
     }
   });
+  return d;
+}
+
+SceneSource sceneSource(const SceneDocument& d, const std::string& variant) {
+  SceneSource s{d.file, d.stem, variant, d.variantNames, d.root, d.dimensions, YAML::Mark::null_mark()};
+  readGuarded(d.file, [&] { mergeVariant(Reader(d.file), d, s); });
   return s;
 }
 
-SceneSource readSceneSource(const std::string& path, const std::string& variant) {
+SceneSource sceneSourceText(const std::string& text, const std::string& file, const std::string& variant) {
+  return sceneSource(sceneDocumentText(text, file), variant);
+}
+
+SceneDocument readSceneDocument(const std::string& path) {
   // only a regular file: opening a FIFO blocks until a writer comes, a device never ends
   std::error_code error;
   const std::filesystem::file_type kind = std::filesystem::status(path, error).type();
@@ -246,7 +239,11 @@ SceneSource readSceneSource(const std::string& path, const std::string& variant)
                                        " MiB for a scene file; is it a scene? (100,000 bodies written one a line take 6 MB)");
   }
   if (in.bad()) throw SceneError(path, 0, 0, "cannot read the scene file");
-  return sceneSourceText(text, path, variant);
+  return sceneDocumentText(text, path);
+}
+
+SceneSource readSceneSource(const std::string& path, const std::string& variant) {
+  return sceneSource(readSceneDocument(path), variant);
 }
 
 }  // namespace sim::yaml

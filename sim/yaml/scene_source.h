@@ -29,6 +29,27 @@ struct SceneSource {
   YAML::Mark variantMark = YAML::Mark::null_mark();
 };
 
+// A scene file read and parsed once: the base scene before any variant, checked to be a map whose
+// variants are well named and whose `dimensions` is 2 or 3. Every variant is merged from it
+// (sceneSource), so that a command reads a file's dimension and all its variants from one parse.
+struct SceneDocument {
+  std::string file;                       // as given: it names the file in messages
+  std::string stem;                       // the file name without .yaml: the default scene name
+  YAML::Node root;                        // the base scene, as the file has it; never changed
+  std::vector<std::string> variantNames;  // every variant the file defines, in order
+  int dimensions = 2;                     // `dimensions:`, 2 (the default) or 3
+  size_t bytes = 0;                       // the file's size: the bound of a variant's merge
+};
+
+// the file at `path`, which must be a regular file of at most kMaxSceneBytes; throws SceneError
+SceneDocument readSceneDocument(const std::string& path);
+// the same from text; `file` names it in messages
+SceneDocument sceneDocumentText(const std::string& text, const std::string& file);
+// the document with the named variant merged over it ("" for the base scene): maps key by key, the
+// bodies list by name, other values whole. Throws SceneError for an unknown variant or a fault in
+// its changes.
+SceneSource sceneSource(const SceneDocument& document, const std::string& variant = "");
+
 // the scene in `path`, with the named variant deep-merged over it ("" for the base scene): maps key
 // by key, the bodies list by name, other values whole. The merge builds new maps and never changes
 // a node of the file, so that aliases (&a, *a) stay what they were written as. Throws

@@ -122,6 +122,17 @@ TEST_CASE("a label with no free spot in reach is dropped, never drawn over anoth
   CHECK(said[0] == "label 'E = 2.00 J' dropped at t = 0.500 s: no free spot for it in the frame");
 }
 
+TEST_CASE("a dropped label's warning names its first 60 bytes, cut before a UTF-8 sequence, not a megabyte") {
+  std::vector<std::string> said;
+  render::frame::DroppedLabels dropped([&](const std::string& m) { said.push_back(m); });
+  PlacedText big;
+  // 59 bytes, then "é" (2 bytes) across the 60th, then a mebibyte
+  big.text = std::string(59, 'a') + "\xc3\xa9" + std::string(1 << 20, 'b');
+  dropped.report({big}, 0.5);
+  REQUIRE(said.size() == 1);
+  CHECK(said[0] == "label '" + std::string(59, 'a') + "… (1048637 bytes)' dropped at t = 0.500 s: no free spot for it in the frame");
+}
+
 TEST_CASE("no label covers the anchor of another, even where that would be its nearest spot") {
   DrawList list;
   LabelPlacer p = placer(list);

@@ -159,3 +159,27 @@ TEST_CASE("a device, a FIFO or a folder is refused before it is opened") {
   }
   std::filesystem::remove(fifo);
 }
+
+TEST_CASE("every variant merged from one parse of the file sees the file, not another variant's changes") {
+  const std::string text =
+      "render: &r {trails: true}\n"
+      "bodies:\n"
+      "  - {name: a, shape: {circle: 1}, position: [0, 0]}\n"
+      "variants:\n"
+      "  v: {bodies: [{name: a, position: [1, 2]}], render: *r, duration: 3}\n"
+      "  w: {}\n";
+  const sim::yaml::SceneDocument d = sim::yaml::sceneDocumentText(text, kFile);
+  CHECK(d.variantNames == std::vector<std::string>{"v", "w"});
+  CHECK(d.dimensions == 2);
+  const sim::yaml::SceneSource v = sim::yaml::sceneSource(d, "v");
+  CHECK(v.root["bodies"][0]["position"][0].as<double>() == 1.0);
+  CHECK(v.root["duration"].as<double>() == 3.0);
+  // the variant after it, and the base, read the file as written
+  for (const std::string& name : {std::string("w"), std::string()}) {
+    CAPTURE(name);
+    const sim::yaml::SceneSource s = sim::yaml::sceneSource(d, name);
+    CHECK(s.root["bodies"][0]["position"][0].as<double>() == 0.0);
+    CHECK(!s.root["duration"]);
+  }
+  CHECK(!d.root["duration"]);
+}
