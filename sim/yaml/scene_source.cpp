@@ -26,12 +26,20 @@ namespace {
 // a: *m}`) would insert into the map it iterates. Each key-value pair of the file costs it at
 // least one byte, so a merge that visits more pairs than the file has bytes is repeating them
 // through aliases (an alias bomb, tenfold per level): it stops there instead of running for hours.
+// the merge nests as deep as yaml-cpp lets a file's own text nest (its parser's depth guard): deeper
+// nesting can come only through aliases, and the merge's recursion would overflow the stack
+constexpr int kMaxMergeDepth = 500;
+
 class VariantMerge {
  public:
   VariantMerge(const Reader& r, std::string variant, size_t fileBytes)
       : r_(r), variant_(std::move(variant)), budget_(fileBytes) {}
 
   YAML::Node map(const YAML::Node& base, const YAML::Node& over, bool deep) {
+    const Nested nested(depth_);
+    if (depth_ > kMaxMergeDepth)
+      r_.fail(over, "variant '" + variant_ + "' nests its maps more than " + std::to_string(kMaxMergeDepth) +
+                        " levels deep through aliases (*name); write the changes out instead of nesting aliases");
     // the changes by name, each given once
     std::unordered_map<std::string, std::pair<YAML::Node, YAML::Node>> changes;
     std::vector<std::string> order;
@@ -63,6 +71,13 @@ class VariantMerge {
   }
 
  private:
+  // one level of map() deeper for as long as it lives
+  struct Nested {
+    explicit Nested(int& depth) : depth_(depth) { ++depth_; }
+    ~Nested() { --depth_; }
+    int& depth_;
+  };
+
   // the bodies by name: a body the variant names has its keys replaced, others are added
   YAML::Node bodies(const YAML::Node& base, const YAML::Node& over) {
     std::unordered_map<std::string, YAML::Node> changes;
@@ -122,6 +137,7 @@ class VariantMerge {
   const Reader& r_;
   const std::string variant_;
   size_t budget_;
+  int depth_ = 0;  // map() calls open now
   YAML::Node pool_{YAML::NodeType::Sequence};
 };
 

@@ -113,6 +113,17 @@ TEST_CASE("a variant whose aliases repeat a tree tenfold per level stops at the 
   CHECK(unknown.message.find("unknown key 'k0' in world") == 0);
 }
 
+TEST_CASE("a variant whose aliases nest maps past the parser's depth is refused, not a stack overflow") {
+  // a chain of 5,000 maps, each one the next's value through an alias: 5,000 levels from text that
+  // nests two, and a merge of the chain with itself walks them all
+  std::string text = kOneBody + "chain:\n  c0: &a0 {k: 1}\n";
+  for (int i = 1; i < 5000; ++i) text += "  c" + std::to_string(i) + ": &a" + std::to_string(i) + " {k: *a" + std::to_string(i - 1) + "}\n";
+  text += "loop: *a4999\nvariants:\n  v: {loop: *a4999}\n";
+  const sim::yaml::SceneError e = loadError(text, "v");
+  CHECK(e.line == 4504);  // c4500, where the map 501 levels down is written
+  CHECK(e.message.find("variant 'v' nests its maps more than 500 levels deep through aliases") == 0);
+}
+
 TEST_CASE("a variant keeps the scene's order of keys and bodies, and appends what it adds") {
   const std::string text = kOneBody + "sim: {dt: 0.01, integrator: rk4}\nvariants:\n"
                            "  v: {sim: {collisions: none, dt: 0.02}, bodies: [{name: c, shape: {circle: 1}}, {name: a, mass: 2}]}\n";
