@@ -13,6 +13,7 @@
 #include "sim/yaml/yaml_reader.h"
 
 namespace render::analysis {
+using namespace sim::world;
 namespace w3 = sim::world3d;
 
 namespace {

@@ -3,6 +3,8 @@
 #include <cmath>
 
 namespace render::analysis {
+using namespace sim::core;
+using namespace sim::collision;
 
 using sim::core::Vec2;
 using sim::scene::BodyDef;

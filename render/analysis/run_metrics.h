@@ -9,8 +9,7 @@
 #include "sim/world/world.h"
 
 namespace render::analysis {
-using namespace sim::core;
-using namespace sim::world;
+using sim::world::World;
 
 struct RunMetrics {
   bool finite = true;

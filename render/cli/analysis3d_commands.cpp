@@ -20,6 +20,7 @@
 namespace render::cli {
 using namespace render::jobs;
 using namespace render::analysis;
+using namespace sim::core;
 using sim::world3d::Integrator;
 using sim::world3d::kIntegratorNames;
 

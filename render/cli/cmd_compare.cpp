@@ -16,6 +16,7 @@
 
 namespace render::cli {
 using namespace render::golden;
+using namespace render::jobs;
 
 namespace {
 

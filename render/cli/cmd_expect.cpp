@@ -12,6 +12,7 @@
 #include "sim/scene/expect.h"
 
 namespace render::cli {
+using namespace render::jobs;
 
 namespace {
 

@@ -18,6 +18,7 @@
 
 namespace render::cli {
 using namespace render::video;
+using namespace render::jobs;
 
 namespace {
 

@@ -22,6 +22,8 @@
 namespace render::cli {
 using namespace render::jobs;
 using namespace render::analysis;
+using namespace sim::world;
+using namespace sim::collision;
 
 namespace {
 

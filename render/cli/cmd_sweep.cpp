@@ -24,6 +24,7 @@
 namespace render::cli {
 using namespace render::jobs;
 using namespace render::analysis;
+using namespace sim::world;
 
 namespace {
 

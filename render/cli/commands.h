@@ -6,7 +6,6 @@
 #include "render/jobs/exit_status.h"
 
 namespace render::cli {
-using namespace render::jobs;
 
 void addSimulateCommand(CLI::App& app, int& exitCode);
 void addCheckCommand(CLI::App& app, int& exitCode);

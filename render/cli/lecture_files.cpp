@@ -10,6 +10,7 @@
 #include "sim/scene3d/scene_build.h"
 
 namespace render::cli {
+using namespace render::jobs;
 namespace fs = std::filesystem;
 
 std::vector<std::string> lectureSceneFiles(const std::vector<std::string>& arguments) {

@@ -5,6 +5,7 @@
 #include "render/cli/commands.h"
 
 namespace render::cli {
+using namespace render::jobs;
 
 std::vector<std::string> splitList(const std::string& text) {
   std::vector<std::string> items;

@@ -10,6 +10,7 @@
 #include "render/video/output_names.h"
 
 namespace render::cli {
+using namespace render::jobs;
 using render::video::timeForName;
 
 render::video::FrameSize parseSize(const std::string& text, const std::string& option) {

@@ -12,6 +12,7 @@
 #include "sim/yaml/scene_yaml.h"
 
 namespace render::cli {
+using namespace render::jobs;
 
 void SceneOptions::addTo(CLI::App& command) {
   command.add_option("--variant", variant, "the named variant of the scene to run");

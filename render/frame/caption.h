@@ -10,7 +10,6 @@
 #include "render/scene/scene.h"
 
 namespace render::frame {
-using namespace render::scene;
 
 // the width in pixels of a line of UTF-8 text
 using TextWidth = std::function<int(const std::string&)>;

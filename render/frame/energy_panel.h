@@ -15,8 +15,10 @@
 #include "sim/world/world.h"
 
 namespace render::frame {
-using namespace render::draw;
-using namespace render::scene;
+using render::draw::Camera;
+using render::draw::Canvas;
+using render::draw::Role;
+using sim::core::Vec2;
 
 struct EnergyBar {
   std::string name;  // e.g. "bar ½mv²", "U", "E"

@@ -19,8 +19,9 @@
 #include "sim/world/world.h"
 
 namespace render::frame {
-using namespace render::draw;
-using namespace render::scene;
+using render::draw::Camera;
+using render::draw::Canvas;
+using render::draw::DrawList;
 
 class FramePainter {
  public:

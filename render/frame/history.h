@@ -14,7 +14,10 @@
 #include "sim/world/world.h"
 
 namespace render::frame {
-using namespace render::draw;
+using render::draw::Canvas;
+using render::draw::DrawList;
+using render::draw::Pen;
+using sim::core::Vec2;
 
 class History : public sim::world::StepObserver {
  public:

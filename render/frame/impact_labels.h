@@ -7,7 +7,7 @@
 #include "sim/world/world.h"
 
 namespace render::frame {
-using namespace render::draw;
+using render::draw::Canvas;
 
 class ImpactLabels {
  public:

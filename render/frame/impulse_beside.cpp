@@ -1,6 +1,7 @@
 #include "render/frame/impulse_beside.h"
 
 namespace render::frame {
+using namespace render::draw;
 
 void ImpulseBeside::arrow(const Vec2& tail, const Vec2& head, const Pen& p) {
   const Vec2 along = head - tail;

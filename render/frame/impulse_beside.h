@@ -7,7 +7,9 @@
 #include "render/draw/canvas.h"
 
 namespace render::frame {
-using namespace render::draw;
+using render::draw::Canvas;
+using render::draw::Pen;
+using sim::core::Vec2;
 
 class ImpulseBeside final : public Canvas {
  public:

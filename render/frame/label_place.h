@@ -35,7 +35,10 @@
 #include "render/frame/caption.h"
 
 namespace render::frame {
-using namespace render::draw;
+using render::draw::Camera;
+using render::draw::Canvas;
+using render::draw::Pen;
+using sim::core::Vec2;
 
 // a box in pixels, y down
 struct PixelBox {

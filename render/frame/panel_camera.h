@@ -13,6 +13,8 @@
 #include "render/frame/survey.h"
 
 namespace render::frame {
+using render::draw::Bounds;
+using render::draw::Camera;
 
 // the world box of what `list` draws in the scene (not texts, labels, the energy panel or
 // half-planes, which reach the frame's edges by design)

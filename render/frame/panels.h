@@ -18,7 +18,9 @@
 #include "render/draw/text.h"
 
 namespace render::frame {
-using namespace render::draw;
+using render::draw::Image;
+using render::draw::Style;
+using render::draw::TextRenderer;
 
 // the default sheet, px: a 1080p slide
 inline constexpr int kSheetWidth = 1920, kSheetHeight = 1080;

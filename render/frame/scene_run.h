@@ -15,8 +15,13 @@
 #include "sim/world/world.h"
 
 namespace render::frame {
-using namespace render::draw;
-using namespace render::scene;
+using render::draw::Camera;
+using render::draw::DrawList;
+using render::draw::GlCanvas;
+using render::draw::GlContext;
+using render::draw::Image;
+using render::draw::Style;
+using render::draw::TextRenderer;
 
 class SceneRun {
  public:

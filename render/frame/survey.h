@@ -10,8 +10,8 @@
 #include "sim/world/world.h"
 
 namespace render::frame {
-using namespace render::draw;
-using namespace render::scene;
+using render::draw::Bounds;
+using render::draw::Camera;
 
 struct RunSurvey {
   Bounds bounds;                    // every body's shape at every step, m

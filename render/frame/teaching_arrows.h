@@ -14,8 +14,10 @@
 #include "sim/world/world.h"
 
 namespace render::frame {
-using namespace render::draw;
-using namespace render::scene;
+using render::draw::Camera;
+using render::draw::Canvas;
+using render::draw::Pen;
+using sim::core::Vec2;
 
 class TeachingArrows {
  public:

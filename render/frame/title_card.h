@@ -14,7 +14,9 @@
 #include "render/frame/caption.h"
 
 namespace render::frame {
-using namespace render::draw;
+using render::draw::Image;
+using render::draw::Style;
+using render::draw::TextRenderer;
 
 // one line of a card: its text, the middle of its top edge in pixels, its size in pixels
 struct CardLine {

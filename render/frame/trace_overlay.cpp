@@ -6,6 +6,8 @@
 #include "render/scene/scene_style.h"
 
 namespace render::frame {
+using namespace render::draw;
+using namespace render::scene;
 
 namespace {
 

@@ -11,7 +11,8 @@
 #include "sim/world/world.h"
 
 namespace render::frame {
-using namespace render::draw;
+using render::draw::Camera;
+using render::draw::Canvas;
 
 // the outlines of the bodies of `overlay` at the world's time, and the legend below the clock
 void drawTraceOverlay(const render::scene::Scene& def, const render::scene::TraceOverlayDef& overlay,

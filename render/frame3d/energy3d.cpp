@@ -12,6 +12,7 @@ namespace render::frame3d {
 using render::draw::Role;
 using render::frame::BarPanel;
 using render::frame::EnergyBar;
+using sim::world3d::Vec3;
 
 namespace {
 

@@ -14,6 +14,7 @@ namespace render::frame3d {
 using render::draw::Role;
 using render::scene3d::Arrow3dDef;
 using namespace sim::world3d;
+using namespace render::draw3d;
 
 namespace {
 

@@ -18,6 +18,12 @@
 #include "render/frame3d/survey3d.h"
 
 namespace render::frame3d {
+using render::draw::Canvas;
+using render::draw::Pen;
+using render::draw3d::Camera3d;
+using render::draw3d::Canvas3d;
+using render::draw3d::Mesh;
+using sim::core::Vec2;
 
 class FramePainter3d {
  public:

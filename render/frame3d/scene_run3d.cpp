@@ -7,6 +7,7 @@
 #include "sim/scene3d/scene_build.h"
 
 namespace render::frame3d {
+using namespace render::draw3d;
 
 namespace {
 

@@ -11,6 +11,9 @@
 #include "render/frame3d/frame_painter3d.h"
 
 namespace render::frame3d {
+using render::draw3d::Camera3d;
+using render::draw3d::DrawList3d;
+using render::draw3d::GlCanvas3d;
 
 class SceneRun3d final : public render::frame::FrameSource {
  public:

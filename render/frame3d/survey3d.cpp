@@ -11,6 +11,7 @@
 
 namespace render::frame3d {
 using namespace sim::world3d;
+using namespace render::draw3d;
 
 namespace {
 

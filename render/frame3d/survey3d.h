@@ -10,7 +10,8 @@
 #include "sim/world3d/world.h"
 
 namespace render::frame3d {
-using namespace render::draw3d;
+using render::draw3d::Box3d;
+using render::draw3d::Camera3d;
 
 struct RunSurvey3d {
   Box3d bounds;                      // every body's bounding ball at every step, and the anchors, m

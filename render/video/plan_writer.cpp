@@ -21,6 +21,9 @@
 
 namespace render::video {
 using namespace render::jobs;
+using namespace render::draw;
+using namespace render::frame;
+using namespace render::scene;
 
 namespace {
 

@@ -14,9 +14,9 @@
 #include "render/video/time_map.h"
 
 namespace render::video {
-using namespace render::draw;
-using namespace render::frame;
-using namespace render::scene;
+using render::draw::Image;
+using render::frame::FrameSource;
+using render::frame::SceneRun;
 
 // where finished frames go; called on the second thread, in frame order
 class FrameSink {

@@ -18,6 +18,9 @@
 namespace render::video {
 using namespace render::jobs;
 using namespace render::frame3d;
+using namespace render::draw;
+using namespace render::frame;
+using namespace render::scene;
 
 namespace {
 

@@ -30,8 +30,10 @@
 #include "sim/world3d/world.h"
 
 namespace render::video {
-using namespace render::draw;
-using namespace render::frame;
+using render::draw::Camera;
+using render::frame::PanelGrid;
+using render::frame::RunSurvey;
+using render::scene::Scene;
 
 struct FrameSize {
   int width = 0, height = 0;

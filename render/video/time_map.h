@@ -11,7 +11,6 @@
 #include "render/scene/render_def.h"
 
 namespace render::video {
-using namespace render::scene;
 
 // simulation times [from, to) shown `factor` times slower
 struct SlowWindow {

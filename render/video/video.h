@@ -15,7 +15,7 @@
 #include "render/draw/image.h"
 
 namespace render::video {
-using namespace render::draw;
+using render::draw::Image;
 
 enum class VideoFormat { Mp4, Webm, Gif };
 

@@ -9,7 +9,6 @@
 #include "sim/collision/collide.h"
 
 namespace sim::collision {
-using namespace sim::core;
 
 // pairs (i, j), i < j, whose boxes overlap, sorted; pairs of two boxes marked `fixed` (static
 // bodies) are skipped. Unbounded boxes (planes) pair with everything their bounds reach.

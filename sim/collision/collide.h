@@ -12,7 +12,9 @@
 #include "sim/core/shape.h"
 
 namespace sim::collision {
-using namespace sim::core;
+using sim::core::Pose;
+using sim::core::Shape;
+using sim::core::Vec2;
 
 // names the two features (vertex or edge, with its index) that make a contact point: 32 bits a
 // feature, so that every index a polygon may have (sim: max_vertices, an int) has its own id

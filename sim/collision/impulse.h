@@ -9,7 +9,9 @@
 #include "sim/core/body.h"
 
 namespace sim::collision {
-using namespace sim::core;
+using sim::core::Body;
+using sim::core::Vec2;
+using sim::core::cross;
 
 // relative velocity of A's and B's material points at r: (v_a + ω_a × r_a) − (v_b + ω_b × r_b)
 inline Vec2 relativeVelocity(const Body& a, const Body& b, const Vec2& r) {

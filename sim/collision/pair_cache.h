@@ -14,7 +14,6 @@
 #include "sim/collision/collide.h"
 
 namespace sim::collision {
-using namespace sim::core;
 
 class PairCache {
  public:

@@ -24,7 +24,9 @@
 #include "sim/core/shape.h"
 
 namespace sim::collision {
-using namespace sim::core;
+using sim::core::BodyState;
+using sim::core::Pose;
+using sim::core::Shape;
 
 // where the two shapes are at τ
 struct PosePair {

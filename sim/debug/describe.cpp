@@ -1,6 +1,9 @@
 #include "sim/debug/describe.h"
 
 namespace sim::debug {
+using namespace sim::world;
+using namespace sim::collision;
+using namespace sim::core;
 
 namespace {
 

@@ -10,7 +10,10 @@ namespace sim::debug {
 using sim::debug_draw::DebugDraw;
 using sim::debug_draw::DrawRole;
 using sim::debug_draw::DrawStyle;
-using namespace sim::world;
+using sim::core::Vec2;
+using sim::world::ImpactRecord;
+using sim::world::ImpulseEvent;
+using sim::world::World;
 
 // every body's shape in its current pose (and a radius for circles, so rotation shows)
 void describeBodies(const World& world, DebugDraw& draw, double opacity = 1.0);

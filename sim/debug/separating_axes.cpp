@@ -10,6 +10,8 @@
 
 namespace sim::debug {
 using namespace sim::collision;
+using namespace sim::core;
+using namespace sim::world;
 
 namespace {
 

@@ -11,7 +11,8 @@ namespace sim::debug {
 using sim::debug_draw::DebugDraw;
 using sim::debug_draw::DrawRole;
 using sim::debug_draw::DrawStyle;
-using namespace sim::world;
+using sim::core::Body;
+using sim::world::World;
 
 // edge e's separation from the polygon `other`: min over its vertices v of n̂_e · (v − p_e), m
 double edgeSeparation(const Body& polygon, int edge, const Body& other);

@@ -9,9 +9,7 @@
 #include "sim/world/world.h"
 
 namespace sim::scene {
-using namespace sim::core;
-using namespace sim::collision;
-using namespace sim::world;
+using sim::world::World;
 
 using sim::core::CheckResult;
 

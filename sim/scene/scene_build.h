@@ -5,9 +5,8 @@
 #include "sim/world/world.h"
 
 namespace sim::scene {
-using namespace sim::core;
-using namespace sim::collision;
-using namespace sim::world;
+using sim::core::Vec2;
+using sim::world::World;
 
 // the definitions must be valid (the loader checks them); body i of the world is def.bodies[i]
 World buildWorld(const SceneDef& def);

@@ -15,9 +15,16 @@
 #include "sim/world/contact.h"
 
 namespace sim::scene {
-using namespace sim::core;
-using namespace sim::collision;
-using namespace sim::world;
+using sim::core::DragDef;
+using sim::core::EventDefOf;
+using sim::core::Integrator;
+using sim::core::PointForceDefOf;
+using sim::core::Shape;
+using sim::core::SourceLoc;
+using sim::core::SpringDefOf;
+using sim::core::Vec2;
+namespace settings = sim::core::settings;
+using sim::world::CollisionMethod;
 
 struct BodyDef {
   std::string name;

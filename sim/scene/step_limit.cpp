@@ -3,6 +3,7 @@
 #include "sim/core/step_limit.h"
 
 namespace sim::scene {
+using namespace sim::core;
 
 double stepCount(const SceneDef& def, double until) { return sim::core::stepCount(def.dt, until); }
 

@@ -8,6 +8,7 @@
 #include "sim/world3d/diagnostics.h"
 
 namespace sim::scene3d {
+using namespace sim::world3d;
 
 namespace {
 

@@ -10,6 +10,8 @@
 #include "sim/world3d/world.h"
 
 namespace sim::scene3d {
+using sim::world3d::FreeBodyMeasures;
+using sim::world3d::World;
 using sim::core::CheckResult;
 
 // every quantity of one entry, for a world at the entry's time; `measures` followed each body from

@@ -1,6 +1,7 @@
 #include "sim/scene3d/scene_build.h"
 
 namespace sim::scene3d {
+using namespace sim::world3d;
 
 int SceneDef::bodyIndex(const std::string& name) const {
   for (size_t i = 0; i < bodies.size(); ++i)

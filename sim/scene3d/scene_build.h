@@ -5,6 +5,9 @@
 #include "sim/world3d/world.h"
 
 namespace sim::scene3d {
+using sim::world3d::Body;
+using sim::world3d::MassProperties;
+using sim::world3d::World;
 
 // a body's mass and inertia: those given, the rest from the shape filled at `density` (or at the
 // density that gives the mass that is given, when only the mass is)

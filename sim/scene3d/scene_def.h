@@ -14,7 +14,11 @@
 #include "sim/world3d/shape.h"
 
 namespace sim::scene3d {
-using namespace sim::world3d;
+using sim::world3d::Integrator;
+using sim::world3d::Mat3;
+using sim::world3d::Quat;
+using sim::world3d::Shape;
+using sim::world3d::Vec3;
 
 using sim::core::SourceLoc;
 

@@ -10,8 +10,9 @@
 #include "sim/core/enum_names.h"
 
 namespace sim::world {
-using namespace sim::core;
-using namespace sim::collision;
+using sim::collision::Manifold;
+using sim::core::EnumNames;
+using sim::core::Vec2;
 
 // collision response, chosen per scene (`sim: {collisions: ...}`) or on the command line
 enum class CollisionMethod {

@@ -4,8 +4,8 @@
 #include "sim/world/world.h"
 
 namespace sim::world {
-using namespace sim::core;
-using namespace sim::collision;
+using sim::core::Body;
+using sim::core::Vec2;
 
 struct KineticEnergy {
   double translational = 0.0;  // ½ m v²

@@ -16,8 +16,10 @@
 #include "sim/world/contact.h"
 
 namespace sim::world {
-using namespace sim::core;
-using namespace sim::collision;
+using sim::core::Dynamics;
+using sim::core::Rates;
+using sim::core::States;
+using sim::core::Vec2;
 
 class World;
 

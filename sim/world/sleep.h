@@ -14,7 +14,8 @@
 #include "sim/world/contact.h"
 
 namespace sim::world {
-using namespace sim::core;
+using sim::core::Body;
+using sim::core::ForceSet;
 
 class Sleep {
  public:

@@ -19,8 +19,16 @@
 #include "sim/world/sleep.h"
 
 namespace sim::world {
-using namespace sim::core;
-using namespace sim::collision;
+using sim::collision::PairCache;
+using sim::collision::PlacedShape;
+using sim::core::Body;
+using sim::core::ForceSet;
+using sim::core::Integrator;
+using sim::core::Rates;
+using sim::core::States;
+using sim::core::StepGrid;
+using sim::core::Vec2;
+namespace settings = sim::core::settings;
 
 // an impulse j applied at exactly `time`: Δv = j/m, Δω = I⁻¹ (r′ × j)
 struct ImpulseEvent {

@@ -14,6 +14,7 @@
 
 namespace sim::yaml3d {
 using namespace sim::scene3d;
+using namespace sim::world3d;
 using sim::core::stepsOverLimit;
 using sim::yaml::Keys;
 using sim::yaml::with;

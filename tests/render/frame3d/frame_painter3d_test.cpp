@@ -11,6 +11,7 @@
 #include "sim/yaml/scene_source.h"
 
 using namespace render::frame3d;
+using namespace render::draw3d;
 using render::draw::DrawList;
 using render::draw::Role;
 

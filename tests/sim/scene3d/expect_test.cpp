@@ -14,6 +14,7 @@
 #include "sim/yaml3d/scene_yaml.h"
 
 using namespace sim::scene3d;
+using namespace sim::world3d;
 
 namespace {
 

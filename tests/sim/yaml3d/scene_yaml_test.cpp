@@ -12,6 +12,7 @@
 #include "support/scene_error_check.h"
 
 using namespace sim::scene3d;
+using sim::core::kWorldAnchor;
 
 namespace {
 
