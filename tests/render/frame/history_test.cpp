@@ -49,6 +49,24 @@ TEST_CASE("a contact stays after the touch ends, fading linearly over the hold t
   CHECK(gone.empty());
 }
 
+TEST_CASE("a second touch is a moment of its own, kept up to date, while the first one fades") {
+  // touching while the ball's center is in [0.2, 0.4] and again in [0.6, 0.7]
+  const auto twice = [](const sim::world::World& w, render::draw::Canvas& d) {
+    const double x = w.bodies[0].x.x();
+    if ((x >= 0.1995 && x <= 0.4005) || (x >= 0.5995 && x <= 0.7005)) d.point({x, 0}, {Role::ContactPoint, -1, 1.0});
+  };
+  sim::world::World w = ballWorld();
+  History h(w, {false, 0.5, false, false, 1.0, 1.0, twice});
+  w.advanceTo(0.65, &h);
+  DrawList both;
+  h.drawAfterimages(w.time, both);
+  CHECK(both.toText() == "point ContactPoint@0.5 (0.4,0)\npoint ContactPoint (0.65,0)\n");
+  w.advanceTo(0.8, &h);
+  DrawList later;
+  h.drawAfterimages(w.time, later);
+  CHECK(later.toText() == "point ContactPoint@0.2 (0.4,0)\npoint ContactPoint@0.8 (0.7,0)\n");
+}
+
 TEST_CASE("an event's impulse is an arrow ending where it strikes, scaled, held like a contact") {
   sim::world::World w = ballWorld();
   History h(w, {false, 0.5, true, false, 0.25, 1.0, {}});
