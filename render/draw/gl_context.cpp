@@ -43,7 +43,7 @@ namespace render::draw {
 //   210-box pyramid:     4: 10.7 | 2: 4.9, max 129, mean 0.27, 1.3 % | 1: 3.2, max 183, 0.46, 1.6 %
 //   5,050-box pyramid:   4: 23.0 | 2: 12.2, max 114, mean 0.95, 5.3 % | 1: 6.7, max 170, 1.65, 6.4 %
 // One sample is a different look at lecture scale: a large body's outline stair-stepped and heavier,
-// a pile of 6 px boxes in vertical bands (their widths alternate 5 and 6 px). Two samples soften a
+// a pile of 6 px boxes in vertical bands (each snapped to whole pixels, widths uneven). Two samples soften a
 // large body's edge in visibly coarser steps (so large bodies keep four), but a frame of hundreds of
 // bodies a few pixels across looks the same at 1:1: GlCanvas asks for two there (fewerSamples).
 Antialiasing defaultAntialiasing() { return {1, 4}; }
