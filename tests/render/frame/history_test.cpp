@@ -2,6 +2,8 @@
 // impulse arrow ending at the point it strikes, trails with nearby points merged.
 #include <doctest/doctest.h>
 
+#include <string>
+
 #include "render/frame/history.h"
 #include "sim/scene/scene_build.h"
 #include "sim/yaml/scene_yaml.h"
@@ -27,6 +29,13 @@ sim::world::World ballWorld() {
 void fakeContacts(const sim::world::World& w, render::draw::Canvas& d) {
   const double x = w.bodies[0].x.x();
   if (x >= 0.1995 && x <= 0.4005) d.point({x, 0}, {Role::ContactPoint, -1, 1.0});
+}
+
+// what the history shows at `t`, as draw-list text
+std::string afterimages(const History& h, double t) {
+  DrawList d;
+  h.drawAfterimages(t, d);
+  return d.toText();
 }
 
 }  // namespace
@@ -58,13 +67,9 @@ TEST_CASE("a second touch is a moment of its own, kept up to date, while the fir
   sim::world::World w = ballWorld();
   History h(w, {false, 0.5, false, false, 1.0, 1.0, twice});
   w.advanceTo(0.65, &h);
-  DrawList both;
-  h.drawAfterimages(w.time, both);
-  CHECK(both.toText() == "point ContactPoint@0.5 (0.4,0)\npoint ContactPoint (0.65,0)\n");
+  CHECK(afterimages(h, w.time) == "point ContactPoint@0.5 (0.4,0)\npoint ContactPoint (0.65,0)\n");
   w.advanceTo(0.8, &h);
-  DrawList later;
-  h.drawAfterimages(w.time, later);
-  CHECK(later.toText() == "point ContactPoint@0.2 (0.4,0)\npoint ContactPoint@0.8 (0.7,0)\n");
+  CHECK(afterimages(h, w.time) == "point ContactPoint@0.2 (0.4,0)\npoint ContactPoint@0.8 (0.7,0)\n");
 }
 
 TEST_CASE("an event's impulse is an arrow ending where it strikes, scaled, held like a contact") {
