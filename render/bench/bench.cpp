@@ -6,9 +6,12 @@
 // it too, in the same run. Results go to out/bench/*.csv and a summary on stdout; ratios are
 // measured in one run, since these machines are noisy.
 //
-// usage: rigidreel_bench RIGIDREEL SCENE [BASELINE_RIGIDREEL] [--renders-only]
-// (--renders-only: the 720p renders alone, the poll and both pyramids; no start-up, 1080p or lecture pack)
+// usage: rigidreel_bench RIGIDREEL SCENE [BASELINE_RIGIDREEL] [--renders-only | --antialiasing]
+// (--renders-only: the 720p renders alone, the poll and both pyramids; no start-up, 1080p or lecture pack;
+// --antialiasing: the poll's and the pyramids' 720p frames at 1, 2 and 4 samples a pixel, their cost
+// split and their difference from the 4-sample frames, with frames to look at in out/bench/antialiasing)
 #include <sys/resource.h>
+#include <time.h>
 #include <unistd.h>
 
 #define GL_GLEXT_PROTOTYPES
@@ -20,10 +23,12 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <sstream>
 #include <string>
 
 #include "render/draw/gl_canvas.h"
+#include "render/draw/png_io.h"
 #include "render/frame/frame_painter.h"
 #include "render/frame/history.h"
 #include "render/frame/scene_run.h"
@@ -180,11 +185,94 @@ std::string fileText(const std::string& path) {
   return s.str();
 }
 
+// the process's CPU seconds, llvmpipe's threads included
+double processCpu() {
+  timespec t{};
+  ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+// Anti-aliasing's cost and look: the frames of `out` drawn at 1, 2 and 4 samples a pixel side by side
+// (one run each, frame by frame), each one's time split as GlContext measures it, and each frame
+// compared with the 4-sample one: the largest and mean difference of a channel (0-255) and the share
+// of pixels that differ at all. Frame `shown` of each is written to out/bench/antialiasing.
+void compareAntialiasing(const render::video::PlannedVariant& v, const render::video::VideoOutput& out,
+                         const std::string& stem) {
+  using namespace render::draw;
+  // every frame at 4, 2 and 1 samples, then the default (4, or 2 where GlCanvas finds the frame dense)
+  const Antialiasing kinds[] = {{1, 4, false}, {1, 2, false}, {1, 1, false}, defaultAntialiasing()};
+  const char* names[] = {"4 samples", "2 samples", "1 sample ", "default  "};
+  const char* files[] = {"s4", "s2", "s1", "default"};
+  struct Drawing {
+    std::unique_ptr<GlContext> gl;
+    std::unique_ptr<render::frame::SceneRun> run;
+    ReadCost cost;
+    double wall = 0.0, cpu = 0.0;
+    int maxDiff = 0;
+    double sumDiff = 0.0, differing = 0.0;
+    Image frame;
+  };
+  TextRenderer text;
+  std::vector<Drawing> d(4);
+  for (size_t i = 0; i < d.size(); ++i) {
+    d[i].gl = std::make_unique<GlContext>(out.width, out.height, kinds[i]);
+    d[i].gl->measureInto(&d[i].cost);
+    d[i].run = std::make_unique<render::frame::SceneRun>(v.scene, out.camera, v.survey, d[i].gl.get(), &text);
+  }
+  const std::string dir = "out/bench/antialiasing";
+  fs::create_directories(dir);
+  const long shown = out.frameCount - 1;
+  long frames = 0;
+  for (long k = 0; k < out.frameCount; ++k) {
+    const double u = static_cast<double>(k) / out.fps;
+    if (out.timeMap.inTitleCard(u)) continue;
+    ++frames;
+    for (Drawing& x : d) {
+      x.gl->makeCurrent();
+      const double cpu = processCpu();
+      const auto start = Clock::now();
+      x.run->frameAt(out.timeMap.simTime(u), x.frame);
+      x.wall += secondsSince(start);
+      x.cpu += processCpu() - cpu;
+    }
+    const std::vector<uint8_t>& ref = d[0].frame.rgba;
+    for (Drawing& x : d) {
+      long diff = 0;
+      for (size_t p = 0; p < ref.size(); p += 4) {
+        bool any = false;
+        for (size_t c = 0; c < 3; ++c) {
+          const int e = std::abs(static_cast<int>(x.frame.rgba[p + c]) - static_cast<int>(ref[p + c]));
+          x.maxDiff = std::max(x.maxDiff, e);
+          x.sumDiff += e;
+          any |= e > 0;
+        }
+        diff += any;
+      }
+      x.differing += static_cast<double>(diff) / static_cast<double>(ref.size() / 4);
+    }
+    if (k == shown)
+      for (size_t i = 0; i < d.size(); ++i) writePng(d[i].frame, dir + "/" + stem + "-" + files[i] + ".png");
+  }
+  const double ms = 1000.0 / static_cast<double>(frames);
+  const double channels = static_cast<double>(frames) * out.width * out.height * 3;
+  std::printf("\n%s, %ld frames at %dx%d, ms per frame (wall; the rest is the simulation and the painter):\n", stem.c_str(),
+              frames, out.width, out.height);
+  for (size_t i = 0; i < d.size(); ++i) {
+    const Drawing& x = d[i];
+    const double rest = x.wall - x.cost.raster - x.cost.readback - x.cost.resolve;
+    std::printf("  %s: frame %6.2f (CPU %6.2f) = rasterizing %6.2f + read-back %5.2f + resolve %5.2f + rest %6.2f"
+                " | against 4: max %3d, mean %.3f, pixels differing %5.2f %%\n",
+                names[i], x.wall * ms, x.cpu * ms, x.cost.raster * ms, x.cost.readback * ms,
+                x.cost.resolve * ms, rest * ms, x.maxDiff, x.sumDiff / channels, 100.0 * x.differing / frames);
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);
-  const bool rendersOnly = std::erase(args, std::string("--renders-only")) > 0;
+  const bool antialiasing = std::erase(args, std::string("--antialiasing")) > 0;
+  const bool rendersOnly = antialiasing || std::erase(args, std::string("--renders-only")) > 0;
   const std::string rigidreel = args.size() > 0 ? args[0] : "build/rigidreel";
   const std::string scene = args.size() > 1 ? args[1] : "scenes/three_collisions_poll.yaml";
   const std::string baseline = args.size() > 2 ? args[2] : "";
@@ -193,7 +281,7 @@ int main(int argc, char** argv) {
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
 
   // every timing of the pipeline, a row each: what, the program timed, the frame size, seconds, ms per frame
-  std::ofstream csv("out/bench/pipeline.csv");
+  std::ofstream csv(antialiasing ? "/dev/null" : "out/bench/pipeline.csv");
   csv << "what,program,size,frames,seconds,ms_per_frame,cpu_seconds\n";
   auto row = [&](const std::string& what, const std::string& program, const std::string& size, long frames, double seconds,
                  double cpu = -1.0) {
@@ -231,6 +319,7 @@ int main(int argc, char** argv) {
     const render::video::VideoOutput& out = plan.videos.front();
     const long frames = out.frameCount;
     const std::string raw = "out/bench/frames-" + size + ".rgba";
+    if (antialiasing) return compareAntialiasing(plan.variants[out.variant], out, stem);
     const FrameParts parts = measureParts(plan.variants[out.variant], out, raw);
 
     const std::vector<std::string> render{"", "render", path, "-o", "out/bench/render", "--size", size, "--fps", "60",
@@ -321,6 +410,6 @@ int main(int argc, char** argv) {
     row("lecture pack", name, "", 0, t.seconds, t.cpu);
     std::printf("%-9s lecture pack: %6.1f s (CPU time %6.1f s)\n", name.c_str(), t.seconds, t.cpu);
   }
-  std::printf("wrote out/bench/pipeline.csv\n");
+  if (!antialiasing) std::printf("wrote out/bench/pipeline.csv\n");
   return 0;
 }

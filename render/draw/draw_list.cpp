@@ -32,7 +32,7 @@ std::string styleText(const Pen& s) {
 }  // namespace
 
 void DrawList::polygon(const std::vector<Vec2>& vertices, const Pen& style) {
-  calls_.push_back({Kind::Polygon, vertices, 0.0, {}, style});
+  calls_.push_back({Kind::Polygon, CallPoints(vertices), 0.0, {}, style});
 }
 void DrawList::circle(const Vec2& center, double radius, const Pen& style) {
   calls_.push_back({Kind::Circle, {center}, radius, {}, style});
@@ -60,7 +60,7 @@ void DrawList::replay(Canvas& target, double opacity) const {
     Pen s = c.style;
     s.opacity *= opacity;
     switch (c.kind) {
-      case Kind::Polygon: target.polygon(c.points, s); break;
+      case Kind::Polygon: target.polygon(c.points.vertices(), s); break;
       case Kind::Circle: target.circle(c.points[0], c.radius, s); break;
       case Kind::HalfPlane: target.halfPlane(c.points[0], c.points[1], s); break;
       case Kind::Segment: target.segment(c.points[0], c.points[1], s); break;

@@ -3,6 +3,9 @@
 // of a frame kept to be drawn again later (a contact that stays on screen, a strobe ghost).
 #pragma once
 
+#include <algorithm>
+#include <initializer_list>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -12,12 +15,44 @@ namespace render::draw {
 
 using sim::core::Vec2;
 
+// a call's points: one or two held in place (a point, an arrow: no allocation, so that recording a
+// pile's 20,000 contacts a step costs no malloc each), a polygon's vertices in a vector
+class CallPoints {
+ public:
+  CallPoints(std::initializer_list<Vec2> points) : count_(points.size()) {
+    if (count_ > 2) {
+      vertices_.assign(points.begin(), points.end());
+      return;
+    }
+    std::copy(points.begin(), points.end(), held_);
+  }
+  explicit CallPoints(const std::vector<Vec2>& vertices) : count_(vertices.size()), vertices_(vertices) { polygon_ = true; }
+  size_t size() const { return count_; }
+  bool empty() const { return count_ == 0; }
+  const Vec2* begin() const { return stored() ? vertices_.data() : held_; }
+  const Vec2* end() const { return begin() + count_; }
+  const Vec2& operator[](size_t i) const { return begin()[i]; }
+  const Vec2& at(size_t i) const {
+    if (i >= count_) throw std::out_of_range("CallPoints::at");
+    return begin()[i];
+  }
+  // a polygon's vertices, as Canvas::polygon takes them
+  const std::vector<Vec2>& vertices() const { return vertices_; }
+
+ private:
+  bool stored() const { return polygon_ || count_ > 2; }
+  size_t count_ = 0;
+  bool polygon_ = false;
+  Vec2 held_[2];
+  std::vector<Vec2> vertices_;
+};
+
 class DrawList final : public Canvas {
  public:
   enum class Kind { Polygon, Circle, HalfPlane, Segment, Point, Arrow, Text, Label };
   struct Call {
     Kind kind;
-    std::vector<Vec2> points;  // vertices; center; point and normal; a and b; point; tail and head; at; anchor and direction
+    CallPoints points;  // vertices; center; point and normal; a and b; point; tail and head; at; anchor and direction
     double radius = 0.0;
     std::string text;
     Pen style;

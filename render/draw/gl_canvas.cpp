@@ -47,6 +47,7 @@ void GlCanvas::start(const Camera& camera, bool clear) {
   camera_ = camera;
   px_ = camera.pixelSize();
   texts_.clear();
+  smallBodies_ = largeBodies_ = 0;
   // 2D drawing in call order: no depth test; straight alpha blending that keeps the frame opaque
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
@@ -107,6 +108,7 @@ void GlCanvas::finish(Image& image) {
     gl_.drawnWithin(pixels);
   }
   under_.reset();
+  if (bounded_ && smallBodies_ >= kDenseBodies && largeBodies_ == 0) gl_.fewerSamples(2);
   gl_.read(image);
   // a halo of the background around each letter, a tenth of the size: legible over any line
   const int halo = std::max(1, style_.fontSize / 10);
@@ -153,6 +155,11 @@ void GlCanvas::polygon(const std::vector<Vec2>& vertices, const Pen& s) {
     return;
   }
   const bool solid = s.role == Role::Body || s.role == Role::StaticBody;
+  if (s.role == Role::Body) {
+    Bounds extent;
+    for (const Vec2& v : vertices) extent.add(v);
+    countBody(extent.size().maxCoeff());
+  }
   // an opaque moving body a few pixels across: two fills, fewer triangles than a fill and its outline
   const bool opaque = s.opacity >= 1.0 && fillColor(s).a >= 1.0 && strokeColor(s).a >= 1.0;
   if (s.role == Role::Body && opaque && fillOutlined(vertices, fillColor(s), strokeColor(s), strokeWidth(s.role))) return;
@@ -172,6 +179,7 @@ void GlCanvas::polygon(const std::vector<Vec2>& vertices, const Pen& s) {
 void GlCanvas::circle(const Vec2& center, double radius, const Pen& s) {
   enter(s.role);
   const bool solid = s.role == Role::Body || s.role == Role::StaticBody;
+  if (s.role == Role::Body) countBody(2.0 * radius);
   if (solid) {
     beginPrimitive(fillColor(s), s.opacity, s.role == Role::StaticBody, false);
     fillDisc(center, radius);
@@ -184,6 +192,14 @@ void GlCanvas::circle(const Vec2& center, double radius, const Pen& s) {
   }
   beginPrimitive(strokeColor(s), s.opacity);
   ring(center, radius, strokeWidth(s.role));
+}
+
+void GlCanvas::countBody(double extent) {
+  // (NaN counts as large: a frame that cannot say is drawn at four)
+  if (extent < kSmallOutlinePx * px_)
+    ++smallBodies_;
+  else
+    ++largeBodies_;
 }
 
 void GlCanvas::halfPlane(const Vec2& point, const Vec2& normal, const Pen& s) {

@@ -114,6 +114,12 @@ class GlCanvas final : public Canvas {
   bool fillOutlined(const std::vector<Vec2>& vertices, const Color& fill, const Color& stroke, double width);
   // polygons under this many pixels across are outlined mitred (strokeMitred), as one strip
   static constexpr double kSmallOutlinePx = 16.0;
+  // a frame of at least this many moving bodies, every one under kSmallOutlinePx across, is dense:
+  // drawn at two samples a pixel, not four (GlContext::fewerSamples; the look measured alike there)
+  static constexpr int kDenseBodies = 200;
+  int smallBodies_ = 0, largeBodies_ = 0;  // the moving bodies drawn this frame, by size
+  // a moving body `extent` world units across counted as small or large
+  void countBody(double extent);
   void strokeArrow(const Vec2& tail, const Vec2& head, double width);
   // diagonal lines over the pixels of the primitive just drawn, within `box` (its bounds) and the view
   void hatch(const Bounds& box, const Color& c, double opacity);

@@ -6,6 +6,7 @@
 #include <GL/glext.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -34,6 +35,17 @@ namespace render::draw {
 // back; after the first, the drawings are limited to where the canvas drew (drawnWithin), since
 // elsewhere every sample is the background. `rigidreel render scenes/three_collisions_poll.yaml
 // --variant A` (the 720p video and its poster, ffmpeg included): 4.3 → 2.7-3.1 CPU seconds.
+//
+// Fewer samples, measured by `build/rigidreel_bench build/rigidreel scenes/three_collisions_poll.yaml
+// --antialiasing` (720p; wall ms per frame of rasterizing at the sample positions; against the
+// 4-sample frames: the largest and mean channel difference, the share of pixels differing):
+//   two-body poll:       4: 4.9 | 2: 2.3, max 128, mean 0.035, 0.23 % | 1: 1.2, max 179, 0.19, 0.33 %
+//   210-box pyramid:     4: 10.7 | 2: 4.9, max 129, mean 0.27, 1.3 % | 1: 3.2, max 183, 0.46, 1.6 %
+//   5,050-box pyramid:   4: 23.0 | 2: 12.2, max 114, mean 0.95, 5.3 % | 1: 6.7, max 170, 1.65, 6.4 %
+// One sample is a different look at lecture scale: a large body's outline stair-stepped and heavier,
+// a pile of 6 px boxes in vertical bands (each snapped to whole pixels, widths uneven). Two samples soften a
+// large body's edge in visibly coarser steps (so large bodies keep four), but a frame of hundreds of
+// bodies a few pixels across looks the same at 1:1: GlCanvas asks for two there (fewerSamples).
 Antialiasing defaultAntialiasing() { return {1, 4}; }
 
 namespace {
@@ -52,10 +64,11 @@ constexpr GLenum kPackInvert = 0x8758;
 
 }  // namespace
 
-GlContext::GlContext(int width, int height, Antialiasing aa) : width_(width), height_(height), aa_(aa) {
+GlContext::GlContext(int width, int height, Antialiasing aa)
+    : width_(width), height_(height), aa_(aa), samplesNow_(aa.samples) {
   const int w = width * aa.supersample, h = height * aa.supersample;
-  if (aa.samples != 1 && aa.samples != static_cast<int>(kSamplePositions.size()))
-    throw std::invalid_argument("GlContext: " + std::to_string(aa.samples) + " samples per pixel (1 or 4)");
+  if (aa.samples != 1 && aa.samples != 2 && aa.samples != static_cast<int>(kSamplePositions.size()))
+    throw std::invalid_argument("GlContext: " + std::to_string(aa.samples) + " samples per pixel (1, 2 or 4)");
   loadGlLibrary();
   // RGBA, 24 depth bits (unused in 2D, but llvmpipe pairs stencil with depth), 8 stencil bits
   context_ = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, nullptr);
@@ -134,6 +147,7 @@ void GlContext::beginFrame() {
   movingWithin_.reset();
   key_.clear();
   part_ = 0;
+  samplesNow_ = aa_.samples;
   staticStencil_ = false;
   clears_ = clearsDepth_ = false;
   glNewList(lists_[0], GL_COMPILE);
@@ -141,6 +155,10 @@ void GlContext::beginFrame() {
 }
 
 void GlContext::drawnWithin(const Bounds& pixels) { drawnWithin_ = pixels; }
+
+void GlContext::fewerSamples(int samples) {
+  if (samples == 2 && aa_.samples == 4 && aa_.fewerWhenDense) samplesNow_ = 2;
+}
 
 void GlContext::clearFrame(const Color& background, bool depth) {
   clears_ = true;
@@ -182,11 +200,16 @@ GlContext::Region GlContext::regionOf(const Bounds& b) const {
 void GlContext::resolveRegion(uint8_t* frame, int parts, const Region& region, bool firstWhole, bool stencil) {
   const int w = width_ * aa_.supersample, h = height_ * aa_.supersample;
   const int bw = region.x1 - region.x0, bh = region.y1 - region.y0;
-  const int drawings = region.empty() ? 1 : aa_.samples;
+  const int drawings = region.empty() ? 1 : samplesNow_;
+  using Clock = std::chrono::steady_clock;
+  const auto since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
   for (int k = 0; k < drawings; ++k) {
     // the pixel centers (x + 0.5, y + 0.5) onto the sample positions: the drawing shifted by their
     // difference, a multiple of 1/8 px, which GL's 1/256 px vertex grid keeps exact
-    const std::array<float, 2> at = drawings > 1 ? kSamplePositions[static_cast<size_t>(k)] : std::array{0.5f, 0.5f};
+    const std::array<float, 2> at = drawings == 4   ? kSamplePositions[static_cast<size_t>(k)]
+                                    : drawings == 2 ? kTwoSamplePositions[static_cast<size_t>(k)]
+                                                    : std::array{0.5f, 0.5f};
+    const auto drawStart = Clock::now();
     glViewportIndexedf(0, 0.5f - at[0], 0.5f - at[1], static_cast<float>(w), static_cast<float>(h));
     // the frame's clears first, of the whole frame: llvmpipe clears whole tiles at memory speed,
     // while under a scissor Mesa clears by drawing a quad through the fragment shader (a profile of
@@ -211,22 +234,34 @@ void GlContext::resolveRegion(uint8_t* frame, int parts, const Region& region, b
     }
     for (int p = 0; p < parts; ++p) glCallList(lists_[p]);
     glDisable(GL_SCISSOR_TEST);
+    auto readStart = Clock::now();
+    if (cost_) {
+      glFinish();
+      cost_->raster += since(drawStart);
+      readStart = Clock::now();
+    }
     if (whole) {
       glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, frame);
     } else {
       samples_[k].resize(static_cast<size_t>(bw) * bh * 4);
       glReadPixels(region.x0, region.y0, bw, bh, GL_RGBA, GL_UNSIGNED_BYTE, samples_[k].data());
     }
+    if (cost_) cost_->readback += since(readStart);
   }
   if (drawings == 1) return;
+  const auto resolveStart = Clock::now();
   // rows top first: the region's top row is the frame's row h − y1
   const size_t row = static_cast<size_t>(bw) * 4;
   for (int r = 0; r < bh; ++r) {
     uint8_t* at = frame + (static_cast<size_t>(h - region.y1 + r) * w + region.x0) * 4;
     const uint8_t* first = firstWhole ? at : samples_[0].data() + r * row;
-    resolveSamples({first, samples_[1].data() + r * row, samples_[2].data() + r * row, samples_[3].data() + r * row}, at,
-                   row);
+    if (drawings == 2)
+      resolveTwoSamples(first, samples_[1].data() + r * row, at, row);
+    else
+      resolveSamples({first, samples_[1].data() + r * row, samples_[2].data() + r * row, samples_[3].data() + r * row},
+                     at, row);
   }
+  if (cost_) cost_->resolve += since(resolveStart);
 }
 
 void GlContext::read(Image& frame) {
@@ -261,11 +296,12 @@ void GlContext::read(Image& frame) {
     // there are the kept frame's; inside it the whole frame is drawn at the four positions, as
     // everywhere before (a pixel's value does not depend on the scissor). Byte for byte the frame
     // the four whole drawings make.
-    if (kept_.size() != bytes || keptKey_ != key_) {
+    if (kept_.size() != bytes || keptKey_ != key_ || keptSamples_ != samplesNow_) {
       if (lastKey_ == key_) {
         kept_.resize(bytes);
         resolveRegion(kept_.data(), 1, regionOf(*drawnWithin_), true, staticStencil_);
         keptKey_ = key_;
+        keptSamples_ = samplesNow_;
       } else {
         kept_.clear();
         keptKey_.clear();
@@ -273,7 +309,9 @@ void GlContext::read(Image& frame) {
     }
     lastKey_ = key_;
     if (!kept_.empty()) {
+      const auto copyStart = std::chrono::steady_clock::now();
       std::memcpy(first, kept_.data(), bytes);
+      if (cost_) cost_->resolve += std::chrono::duration<double>(std::chrono::steady_clock::now() - copyStart).count();
       const Region moving = regionOf(*movingWithin_);
       if (!moving.empty()) resolveRegion(first, 2, moving, false, stencil);
     } else {

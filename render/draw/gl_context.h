@@ -19,7 +19,16 @@ namespace render::draw {
 
 struct Antialiasing {
   int supersample = 1;  // the frame drawn this many times wider and higher, box-filtered down
-  int samples = 4;      // samples per drawn pixel: 1 (none) or 4, at llvmpipe's 4× multisampling positions
+  int samples = 4;      // samples per drawn pixel: 1 (none), 2 or 4, at Direct3D's standard positions
+  bool fewerWhenDense = true;  // fewerSamples() is heeded (false: every frame at `samples`)
+};
+
+// where a context's read()s spent their time, in seconds (for the bench: measured only when asked,
+// since it waits for GL after each drawing)
+struct ReadCost {
+  double raster = 0.0;    // the recorded frame drawn at each sample position, GL finished
+  double readback = 0.0;  // the drawings read out of GL
+  double resolve = 0.0;   // the samples averaged into the frame
 };
 
 // the anti-aliasing frames are drawn with (chosen by measurement, see gl_context.cpp)
@@ -62,6 +71,9 @@ class GlContext {
   // a frame whose static part's key is the last frame's is the static part's frame, drawn and
   // resolved once and kept, with only the region of `pixels` drawn at the four positions over it
   void movingWithin(const Bounds& pixels);
+  // the frame being drawn takes `samples` (2) samples a pixel rather than the context's 4: a frame
+  // dense with small bodies (GlCanvas's rule), where the two look alike (gl_context.cpp)
+  void fewerSamples(int samples);
   // draw the recorded frame at each sample position, resolve the samples and return the frame at the
   // output size, top row first
   Image read();
@@ -71,6 +83,8 @@ class GlContext {
   // a stencil value no pixel holds, for a primitive that marks its pixels: values count up from 1
   // and the stencil is cleared only when the 8 bits run out, not every frame (see gl_context.cpp)
   int freshStencil();
+  // read()s add their costs to `*cost` from now on (nullptr: not measured, the default)
+  void measureInto(ReadCost* cost) { cost_ = cost; }
 
  private:
   int width_, height_;
@@ -91,11 +105,14 @@ class GlContext {
   bool clears_ = false, clearsDepth_ = false;
   std::array<float, 4> clearColor_{};
   std::vector<uint8_t> kept_;   // the static part's frame, resolved
+  int samplesNow_;              // the samples of the frame being drawn (aa_.samples or fewer)
+  int keptSamples_ = 0;         // the samples kept_ was resolved at
   // the drawings at the sample positions (of a region), and the supersampled frame, reused from
   // frame to frame
   std::array<std::vector<uint8_t>, 4> samples_;
   std::vector<uint8_t> drawn_;
   int lastStencil_ = 0;  // the last value given out since the stencil was cleared
+  ReadCost* cost_ = nullptr;
   // the stencil (and depth) cleared, every value free again
   void clearStencil();
   // a pixel region in GL's window coordinates (y up)
@@ -105,7 +122,7 @@ class GlContext {
   };
   // the region of the frame that output pixels `b` may touch at any sample position
   Region regionOf(const Bounds& b) const;
-  // the recorded lists up to `parts` drawn at the four sample positions and resolved into `frame`
+  // the recorded lists up to `parts` drawn at the sample positions and resolved into `frame`
   // (top row first) within `region`; with `firstWhole`, the first drawing is the whole frame and
   // read into `frame` (outside the region every sample is alike), else only the region is drawn
   void resolveRegion(uint8_t* frame, int parts, const Region& region, bool firstWhole, bool stencil);

@@ -50,4 +50,8 @@ void resolveSamples(const std::array<const uint8_t*, 4>& samples, uint8_t* out, 
   for (; i < bytes; ++i) out[i] = resolveChannel(toFloat, p0[i], p1[i], p2[i], p3[i]);
 }
 
+void resolveTwoSamples(const uint8_t* a, const uint8_t* b, uint8_t* out, size_t bytes) {
+  for (size_t i = 0; i < bytes; ++i) out[i] = static_cast<uint8_t>((a[i] + b[i] + 1u) >> 1);
+}
+
 }  // namespace render::draw

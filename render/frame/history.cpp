@@ -76,7 +76,9 @@ void History::observeImpacts(const sim::world::World& world) {
 
 void History::observeContacts(const sim::world::World& world) {
   if (!options_.contacts) return;
-  DrawList now;
+  // described into the last step's storage, which keeps its capacity: no allocation a step
+  DrawList& now = spare_;
+  now.clear();
   options_.contacts(world, now);
   if (now.empty()) {
     touching_ = -1;
@@ -85,7 +87,8 @@ void History::observeContacts(const sim::world::World& world) {
   // contacts that go on touching step after step are one moment, kept up to date; a new touch
   // after a separation is a new moment, so that the last one fades while the next one shows
   if (touching_ >= 0) {
-    moments_[touching_] = {world.time, std::move(now), Moment::Kind::Contact, {-1, -1}};
+    moments_[touching_].time = world.time;
+    std::swap(moments_[touching_].calls, now);
   } else {
     moments_.push_back({world.time, std::move(now), Moment::Kind::Contact, {-1, -1}});
     touching_ = static_cast<long>(moments_.size()) - 1;

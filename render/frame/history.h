@@ -72,6 +72,7 @@ class History : public sim::world::StepObserver {
   std::vector<bool> tentative_;            // by body: the trail's last point is the latest, not one kept
   std::vector<std::vector<Vec2>> points_;  // by Options::points
   std::vector<Moment> moments_;
+  DrawList spare_;          // the touching contacts' previous draw list, its storage reused
   long touching_ = -1;     // index in moments_ of the contacts still touching, -1 when none
   size_t impactsSeen_ = 0;  // records of world.impacts already turned into moments
 };

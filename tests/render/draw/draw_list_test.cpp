@@ -44,3 +44,25 @@ TEST_CASE("a role filter passes only the roles it keeps") {
   REQUIRE(kept.calls().size() == 1);
   CHECK(kept.calls()[0].style.role == Role::StaticBody);
 }
+
+TEST_CASE("a copied list, and one cleared and refilled, replays its own calls; a polygon of any size stays a polygon") {
+  DrawList a;
+  a.polygon({{0, 0}, {1, 0}}, {Role::Body, 0, 1.0});
+  a.polygon({{0, 0}, {2, 0}, {2, 2}, {0, 2}}, {Role::Body, 1, 1.0});
+  a.arrow({0, 0}, {1, 1}, {Role::ContactNormal, -1, 1.0});
+  a.point({5, 6}, {Role::ContactPoint, -1, 1.0});
+  const DrawList copy = a;
+  a.clear();
+  a.point({7, 8}, {Role::ContactPoint, -1, 1.0});
+  DrawList replayed;
+  copy.replay(replayed);
+  CHECK(replayed.toText() ==
+        "polygon Body#0 (0,0) (1,0)\n"
+        "polygon Body#1 (0,0) (2,0) (2,2) (0,2)\n"
+        "arrow ContactNormal (0,0) -> (1,1)\n"
+        "point ContactPoint (5,6)\n");
+  CHECK(a.toText() == "point ContactPoint (7,8)\n");
+  CHECK(copy.calls()[2].points.size() == 2);
+  CHECK(copy.calls()[2].points.at(1) == sim::core::Vec2(1, 1));
+  CHECK_THROWS_AS((void)copy.calls()[3].points.at(1), std::out_of_range);
+}

@@ -180,3 +180,45 @@ TEST_CASE_FIXTURE(Fixture, "hatching is bounded by the frame: stripes a pixel ap
   CHECK(near(i, 50, 50, style.body(1).mixed({1, 1, 1, 1}, 0.6), 40));
   CHECK(near(i, 50, 10, style.background, 0));
 }
+
+TEST_CASE("a frame of at least 200 small moving bodies and no large one is drawn at two samples, any other at four") {
+  using render::draw::Antialiasing;
+  const render::draw::Style style = testStyle();
+  render::draw::TextRenderer text;
+  const Camera camera(Vec2::Zero(), 10.0, 100, 100);
+  // `boxes` turned boxes 0.3 m (3 px) across, on a ground; `large`: one body 2 m (20 px) across too
+  const auto frame = [&](const Antialiasing& aa, int boxes, bool large) {
+    render::draw::GlContext gl(100, 100, aa);
+    render::draw::GlCanvas canvas(gl, text, style);
+    canvas.begin(camera);
+    canvas.polygon({{-5, -5}, {5, -5}, {5, -4}, {-5, -4}}, {Role::StaticBody, 1, 1.0});
+    for (int i = 0; i < boxes; ++i) {
+      const double x = -4.5 + 0.45 * (i % 20) + 0.01 * (i / 20), y = -3.5 + 0.45 * (i / 20);
+      canvas.polygon({{x, y}, {x + 0.3, y + 0.05}, {x + 0.25, y + 0.35}, {x - 0.05, y + 0.3}}, {Role::Body, 0, 1.0});
+    }
+    if (large) canvas.circle({2, 3}, 1.0, {Role::Body, 1, 1.0});
+    return canvas.finish();
+  };
+  const Antialiasing four{1, 4, false}, two{1, 2, false};
+  // the two drawings differ on these edges: otherwise the checks below could not fail
+  REQUIRE(frame(four, 200, false) != frame(two, 200, false));
+  CHECK(frame(Antialiasing{}, 200, false) == frame(two, 200, false));
+  CHECK(frame(Antialiasing{}, 199, false) == frame(four, 199, false));
+  CHECK(frame(Antialiasing{}, 200, true) == frame(four, 200, true));
+}
+
+TEST_CASE("two samples a pixel: an edge through the middle of a pixel column is half covered") {
+  render::draw::GlContext gl(8, 8, render::draw::Antialiasing{1, 2, false});
+  render::draw::TextRenderer text;
+  const render::draw::Style style = testStyle();
+  render::draw::GlCanvas canvas(gl, text, style);
+  // 1 px per m, the origin at the frame's center: a bar (an area, no outline) whose right edge halves column 4
+  canvas.begin(Camera(Vec2::Zero(), 8.0, 8, 8));
+  canvas.polygon({{-4, -4}, {0.5, -4}, {0.5, 4}, {-4, 4}}, {Role::RotationalBar, 0, 1.0});
+  const Image i = canvas.finish();
+  const Color fill = style.bodies[0].mixed({1, 1, 1, 1}, 0.45);
+  CHECK(near(i, 2, 4, fill));
+  CHECK(near(i, 6, 4, style.background));
+  // the samples at x + 0.25 and x + 0.75 of column 4 fall on either side of x = 4.5 px
+  CHECK(near(i, 4, 4, fill.mixed(style.background, 0.5), 2));
+}

@@ -2,6 +2,8 @@
 // impulse arrow ending at the point it strikes, trails with nearby points merged.
 #include <doctest/doctest.h>
 
+#include <string>
+
 #include "render/frame/history.h"
 #include "sim/scene/scene_build.h"
 #include "sim/yaml/scene_yaml.h"
@@ -29,6 +31,13 @@ void fakeContacts(const sim::world::World& w, render::draw::Canvas& d) {
   if (x >= 0.1995 && x <= 0.4005) d.point({x, 0}, {Role::ContactPoint, -1, 1.0});
 }
 
+// what the history shows at `t`, as draw-list text
+std::string afterimages(const History& h, double t) {
+  DrawList d;
+  h.drawAfterimages(t, d);
+  return d.toText();
+}
+
 }  // namespace
 
 TEST_CASE("a contact stays after the touch ends, fading linearly over the hold time") {
@@ -47,6 +56,20 @@ TEST_CASE("a contact stays after the touch ends, fading linearly over the hold t
   DrawList gone;
   h.drawAfterimages(w.time, gone);
   CHECK(gone.empty());
+}
+
+TEST_CASE("a second touch is a moment of its own, kept up to date, while the first one fades") {
+  // touching while the ball's center is in [0.2, 0.4] and again in [0.6, 0.7]
+  const auto twice = [](const sim::world::World& w, render::draw::Canvas& d) {
+    const double x = w.bodies[0].x.x();
+    if ((x >= 0.1995 && x <= 0.4005) || (x >= 0.5995 && x <= 0.7005)) d.point({x, 0}, {Role::ContactPoint, -1, 1.0});
+  };
+  sim::world::World w = ballWorld();
+  History h(w, {false, 0.5, false, false, 1.0, 1.0, twice});
+  w.advanceTo(0.65, &h);
+  CHECK(afterimages(h, w.time) == "point ContactPoint@0.5 (0.4,0)\npoint ContactPoint (0.65,0)\n");
+  w.advanceTo(0.8, &h);
+  CHECK(afterimages(h, w.time) == "point ContactPoint@0.2 (0.4,0)\npoint ContactPoint@0.8 (0.7,0)\n");
 }
 
 TEST_CASE("an event's impulse is an arrow ending where it strikes, scaled, held like a contact") {
