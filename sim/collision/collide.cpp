@@ -225,7 +225,8 @@ Manifold planeShape(const PlacedShape& placedPlane, const PlacedShape& placed, d
   if (o.kind != ShapeKind::Polygon) return m;
   int first = -1, second = -1;
   const std::vector<Vec2>& v = placed.vertices;
-  std::vector<double> s(v.size());
+  thread_local std::vector<double> s;  // (kept per thread: a pile on a half-plane floor allocates nothing per pair)
+  s.resize(v.size());
   for (size_t k = 0; k < v.size(); ++k) {
     s[k] = n.dot(v[k] - pp.x);
     if (first < 0 || s[k] < s[first]) second = first, first = static_cast<int>(k);
