@@ -35,17 +35,15 @@ inline constexpr EnumNames<CollisionMethod, 6> kCollisionMethodNames{{{
 inline std::string_view collisionMethodName(CollisionMethod method) { return kCollisionMethodNames.name(method); }
 inline std::optional<CollisionMethod> collisionMethodFromName(std::string_view name) { return kCollisionMethodNames.parse(name); }
 
-// solver state of one manifold point (sequential impulses, Catto 2006)
+// what a manifold point carries from one step to the next: its accumulated impulses, the warm
+// start of the stack solvers (Catto 2006); each solver keeps its per-step data in its own records
 struct ContactPointState {
   double normalImpulse = 0.0;   // accumulated, clamped ≥ 0
   double tangentImpulse = 0.0;  // accumulated, clamped to ±μ·normalImpulse
-  double normalMass = 0.0;      // effective mass along n̂
-  double tangentMass = 0.0;
-  double bias = 0.0;            // lowest normal velocity allowed: restitution or a closing gap
-  double vnBefore = 0.0;        // normal velocity before the solve
-  Vec2 anchorA = Vec2::Zero();  // contact point in A's and B's body coordinates, for the
-  Vec2 anchorB = Vec2::Zero();  // position pass
 };
+
+// the direction friction acts along at a contact of normal n̂: n̂ turned a quarter counterclockwise
+inline Vec2 tangentOf(const Vec2& n) { return {-n.y(), n.x()}; }
 
 struct Contact {
   int a = 0, b = 0;  // body indices, a < b

@@ -147,30 +147,23 @@ class EventStepper final : public Method {
         throw InitialOverlap(c.a, c.b, -c.manifold.separation);
   }
 
-  void beginStep(World&, const TimeStep&) override {
-    done_ = 0.0;
-    count_ = 0;
-  }
-
-  // to the earliest time of impact within the rest of the step, or to its end
-  bool move(World& world, const TimeStep& step) override {
-    // resting contacts neither sink nor approach; ones that came apart are released
-    holdRestingContacts(world);
-    const States from = world.states();
-    const double span = step.h - done_;
-    const std::optional<double> impact = earliestImpact(world, step, from, span);
-    moveAlong(world, step, from, impact ? *impact : span);
-    done_ = impact ? done_ + *impact : step.h;
-    now_ = step.start + done_;
-    atImpact_ = impact.has_value();
-    return atImpact_;
-  }
-
-  // the impulses of every impact at this instant, and the contacts that came to rest
-  void resolveCollisions(World& world, const TimeStep& step) override {
-    if (!atImpact_) return;
-    resolveImpactsAt(world, step, now_);
-    if (++count_ > settings::kMaxImpactsPerStep) throw ImpactsPileUp(now_, settings::kMaxImpactsPerStep);
+  // to the earliest time of impact within the rest of the step, the impulses of every impact at
+  // that instant, and on, until the step's end
+  void step(World& world, const TimeStep& step) override {
+    double done = 0.0;  // how much of the step is done
+    for (int impacts = 1;; ++impacts) {
+      // resting contacts neither sink nor approach; ones that came apart are released
+      holdRestingContacts(world);
+      const States from = world.states();
+      const double span = step.h - done;
+      const std::optional<double> impact = earliestImpact(world, step, from, span);
+      moveAlong(world, step, from, impact ? *impact : span);
+      if (!impact) return;
+      done += *impact;
+      const double now = step.start + done;
+      resolveImpactsAt(world, step, now);
+      if (impacts > settings::kMaxImpactsPerStep) throw ImpactsPileUp(now, settings::kMaxImpactsPerStep);
+    }
   }
 
   // contact forces of the resting pairs at state y: the smallest pushes that keep every resting
@@ -362,10 +355,6 @@ class EventStepper final : public Method {
 
   bool gravityOnly_ = true;                        // bodies move on exact parabolas
   std::vector<std::pair<int, int>> restingPairs_;  // contacts held at rest (Zeno)
-  double done_ = 0.0;                              // how much of the step is done
-  double now_ = 0.0;                               // the time the motion stopped at
-  int count_ = 0;                                  // impacts in this step
-  bool atImpact_ = false;                          // the motion stopped at an impact
 };
 
 }  // namespace

@@ -1,4 +1,4 @@
-// The `none` method: bodies move freely and pass through each other. Its stage, the free motion
+// The `none` method: bodies move freely and pass through each other. Its step, the free motion
 // by the chosen integrator, is the first stage of the fixed-step methods too.
 #include "sim/world/methods.h"
 #include "sim/world/world.h"
@@ -12,10 +12,7 @@ namespace {
 class FreeMotion final : public Method {
  public:
   std::unique_ptr<Method> clone() const override { return std::make_unique<FreeMotion>(*this); }
-  bool move(World& world, const TimeStep& step) override {
-    moveFreely(world, step);
-    return false;
-  }
+  void step(World& world, const TimeStep& step) override { moveFreely(world, step); }
 };
 
 }  // namespace

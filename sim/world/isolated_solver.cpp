@@ -60,13 +60,9 @@ class IsolatedSolver final : public Method {
  public:
   std::unique_ptr<Method> clone() const override { return std::make_unique<IsolatedSolver>(*this); }
 
-  bool move(World& world, const TimeStep& step) override {
+  void step(World& world, const TimeStep& step) override {
     moveFreely(world, step);
-    return false;
-  }
-
-  // the overlaps where the bodies moved to, each answered with one impulse, then pushed apart
-  void resolveCollisions(World& world, const TimeStep& step) override {
+    // the overlaps where the bodies moved to, each answered with one impulse, then pushed apart
     world.contacts = world.findContacts(0.0);
     resolveDeepestFirst(world, step.end());
     separateOverlaps(world);

@@ -1,6 +1,6 @@
 // The collision methods, one unit each, all declared here and chosen by name (Solver2D's solver.h:
-// interchangeable solvers side by side on the same scenes). World::step calls a method's stages
-// in the notes' order; each method keeps its own state from step to step.
+// interchangeable solvers side by side on the same scenes). World::step calls the method's step;
+// each method keeps its own state from step to step.
 //
 //   none        free_motion.cpp        bodies pass through each other
 //   isolated    isolated_solver.cpp    the notes' impulse at each overlap after a fixed step
@@ -30,20 +30,16 @@ struct TimeStep {
   double midpoint() const { return start + 0.5 * h; }
 };
 
-// a collision method: the stages World::step calls, in the notes' order
+// a collision method: one step of the world, read top to bottom as the method's algorithm is
+// written (Box2D-Lite's World::Step; Box2D v3's stage list for soft_step)
 class Method {
  public:
   virtual ~Method() = default;
   virtual std::unique_ptr<Method> clone() const = 0;
   // once, before the first step (event: the bodies must start apart)
   virtual void start(World&) {}
-  // before the bodies move: what the method needs of where the step begins (sequential: contacts)
-  virtual void beginStep(World&, const TimeStep&) {}
-  // forces and torques, velocities, positions: the integrator over the step, or (event) up to the
-  // first time of impact; true when the motion stopped at an impact before the step's end
-  virtual bool move(World&, const TimeStep&) = 0;
-  // collisions and impulses where the motion stopped
-  virtual void resolveCollisions(World&, const TimeStep&) {}
+  // the bodies from step.start to step.end(): their motion and every collision in it
+  virtual void step(World&, const TimeStep&) = 0;
   // forces of the contacts the method holds, added to the applied ones at state y (event: resting
   // contacts push back so that they do not sink in)
   virtual void addContactForces(const World&, const States& /*y*/, std::vector<Vec2>& /*force*/,

@@ -15,37 +15,13 @@ using namespace sim::collision;
 
 namespace {
 
-Vec2 tangentOf(const Vec2& n) { return {-n.y(), n.x()}; }
-
 // A gap may close within the step (a speculative contact) where the point arrives: it carried no
 // load last step, or the gap is wider than the slop. A loaded point within the slop counts as
 // touching (Box2D 2.4's points only exist touching): in a tall pile the position pass opens such
 // gaps every step, and letting them close at s/h turned its pushes into approach speed, so the
 // pile breathed (issue 14; base-100 pyramid's fastest body 1.68 → 1.39 m/s, Box2D 1.40)
-bool gapMayClose(const ContactPointState& s, double separation) {
-  return s.normalImpulse == 0.0 || separation > settings::kLinearSlop;
-}
-
-// a contact's effective masses, anchors and the velocity each of its points must reach
-void prepareStates(Contact& c, const Body& a, const Body& b, const Pose& poseA, const Pose& poseB, double h) {
-  const Vec2 n = c.manifold.normal, t = tangentOf(n);
-  for (int k = 0; k < c.manifold.count; ++k) {
-    ContactPointState& s = c.state[k];
-    const ManifoldPoint& p = c.manifold.points[k];
-    s.normalMass = 1.0 / inverseEffectiveMass(a, b, p.point, n);
-    s.tangentMass = 1.0 / inverseEffectiveMass(a, b, p.point, t);
-    s.anchorA = poseA.toBody(p.point);
-    s.anchorB = poseB.toBody(p.point);
-    const double vn = s.vnBefore = n.dot(relativeVelocity(a, b, p.point));
-    // restitution from the velocity before the solve, for contacts that close within the step
-    // and arrive fast enough; slower ones settle; a gap may close but not be overrun
-    if (vn < -settings::kRestitutionThreshold && p.separation + h * vn < 0.0)
-      s.bias = -c.restitution * vn;
-    else if (p.separation > 0.0 && gapMayClose(s, p.separation))
-      s.bias = -p.separation / h;
-    else
-      s.bias = 0.0;
-  }
+bool gapMayClose(double warmNormalImpulse, double separation) {
+  return warmNormalImpulse == 0.0 || separation > settings::kLinearSlop;
 }
 
 // The inner loops run on flat arrays built once per step (Box2D v3's contact constraints): the
@@ -77,8 +53,9 @@ struct PositionBody {
 // one manifold point, prepared once per step
 struct SolverPoint {
   Vec2 rA = Vec2::Zero(), rB = Vec2::Zero();  // from each center of mass to the point, at the step's start
-  double normalMass = 0.0, tangentMass = 0.0, bias = 0.0;
-  double normalImpulse = 0.0, tangentImpulse = 0.0;
+  double normalMass = 0.0, tangentMass = 0.0;  // effective masses along n̂ and the tangent
+  double bias = 0.0;  // lowest normal velocity allowed: restitution or a closing gap
+  double normalImpulse = 0.0, tangentImpulse = 0.0;  // accumulated; warm started from the contact
 };
 
 // what the velocity loops read of a contact (kept small: the loops stream through all of them)
@@ -98,19 +75,31 @@ struct PositionPoint {
   double separation = 0.0;                              // at the step's start
 };
 
-// a contact's flat constraint, from its prepared states
-void buildConstraint(const Contact& c, const Body& a, const Body& b, SolverContact& s, PositionPoint anchors[2]) {
+// a contact's flat constraint: effective masses, lever arms, anchors, the velocity each point must
+// reach (and the normal velocity before the solve, for the impacts), its warm-start impulses
+void buildConstraint(const Contact& c, const Body& a, const Body& b, const Pose& poseA, const Pose& poseB, double h,
+                     SolverContact& s, PositionPoint anchors[2], double vnBefore[2]) {
   s.a = c.a, s.b = c.b, s.count = c.manifold.count;
   s.n = c.manifold.normal;
   s.friction = c.friction;
+  const Vec2 n = s.n, t = tangentOf(n);
   for (int k = 0; k < s.count; ++k) {
-    const ContactPointState& st = c.state[k];
     const ManifoldPoint& mp = c.manifold.points[k];
     SolverPoint& p = s.p[k];
+    p.normalMass = 1.0 / inverseEffectiveMass(a, b, mp.point, n);
+    p.tangentMass = 1.0 / inverseEffectiveMass(a, b, mp.point, t);
+    anchors[k] = {poseA.toBody(mp.point), poseB.toBody(mp.point), mp.separation};
+    const double vn = vnBefore[k] = n.dot(relativeVelocity(a, b, mp.point));
+    p.normalImpulse = c.state[k].normalImpulse, p.tangentImpulse = c.state[k].tangentImpulse;
+    // restitution from the velocity before the solve, for contacts that close within the step
+    // and arrive fast enough; slower ones settle; a gap may close but not be overrun
+    if (vn < -settings::kRestitutionThreshold && mp.separation + h * vn < 0.0)
+      p.bias = -c.restitution * vn;
+    else if (mp.separation > 0.0 && gapMayClose(p.normalImpulse, mp.separation))
+      p.bias = -mp.separation / h;
+    else
+      p.bias = 0.0;
     p.rA = mp.point - a.x, p.rB = mp.point - b.x;
-    p.normalMass = st.normalMass, p.tangentMass = st.tangentMass, p.bias = st.bias;
-    p.normalImpulse = st.normalImpulse, p.tangentImpulse = st.tangentImpulse;
-    anchors[k] = {st.anchorA, st.anchorB, mp.separation};
   }
   s.block = false;
   if (s.count == 2) {
@@ -125,21 +114,20 @@ void buildConstraint(const Contact& c, const Body& a, const Body& b, SolverConta
   }
 }
 
-// every contact prepared and its flat constraint built, in one pass (each contact is read once);
-// at the step's start, where the constraints' positions and impulses are those the loops begin from
-void prepareContacts(World& world, double h, std::vector<Pose>& poses, std::vector<SolverContact>& out,
-                     std::vector<PositionPoint>& anchors) {
+// every contact's flat constraint, in one pass (each contact is read once); at the step's start,
+// where the constraints' positions and impulses are those the loops begin from
+void prepareContacts(const World& world, double h, std::vector<Pose>& poses, std::vector<SolverContact>& out,
+                     std::vector<PositionPoint>& anchors, std::vector<double>& vnBefore) {
   const std::vector<Body>& bodies = world.bodies;
   // each body's pose once (one sine and cosine), for every contact it is in
   poses.resize(bodies.size());
   for (size_t i = 0; i < bodies.size(); ++i) poses[i] = bodies[i].pose();
   out.resize(world.contacts.size());
   anchors.resize(2 * world.contacts.size());
+  vnBefore.resize(2 * world.contacts.size());
   for (size_t i = 0; i < world.contacts.size(); ++i) {
-    Contact& c = world.contacts[i];
-    const Body &a = bodies[c.a], &b = bodies[c.b];
-    prepareStates(c, a, b, poses[c.a], poses[c.b], h);
-    buildConstraint(c, a, b, out[i], &anchors[2 * i]);
+    const Contact& c = world.contacts[i];
+    buildConstraint(c, bodies[c.a], bodies[c.b], poses[c.a], poses[c.b], h, out[i], &anchors[2 * i], &vnBefore[2 * i]);
   }
 }
 
@@ -236,42 +224,38 @@ bool solvePositions(std::vector<PositionBody>& bodies, const std::vector<SolverC
 }
 
 // the impacts of the step: contacts that arrived faster than the restitution threshold
-void recordImpacts(World& world, double t) {
-  for (const Contact& c : world.contacts)
+void recordImpacts(World& world, const std::vector<double>& vnBefore, double t) {
+  for (size_t i = 0; i < world.contacts.size(); ++i) {
+    const Contact& c = world.contacts[i];
     for (int k = 0; k < c.manifold.count; ++k) {
       const ContactPointState& s = c.state[k];
-      if (s.vnBefore >= -settings::kRestitutionThreshold || s.normalImpulse <= 0.0) continue;
+      if (vnBefore[2 * i + k] >= -settings::kRestitutionThreshold || s.normalImpulse <= 0.0) continue;
       const Vec2 r = c.manifold.points[k].point, n = c.manifold.normal;
       ImpactRecord rec{t, c.a, c.b, r, n, s.normalImpulse, s.tangentImpulse};
-      rec.vnBefore = s.vnBefore;
+      rec.vnBefore = vnBefore[2 * i + k];
       rec.vnAfter = n.dot(relativeVelocity(world.bodies[c.a], world.bodies[c.b], r));
       world.impacts.push_back(rec);
     }
+  }
 }
 
 class SequentialSolver final : public Method {
  public:
   std::unique_ptr<Method> clone() const override { return std::make_unique<SequentialSolver>(*this); }
 
-  // the contacts where the bodies are now, carrying over last step's impulses (warm starting),
-  // prepared for the loops
-  void beginStep(World& world, const TimeStep& step) override {
+  // Box2D 2.4's b2World::Step as Box2D-Lite's World::Step reads: contacts, free motion, velocity
+  // iterations, positions, position iterations
+  void step(World& world, const TimeStep& step) override {
+    // the contacts where the bodies are now, carrying over last step's impulses (warm starting),
+    // prepared for the loops
     world.findContacts(settings::kContactMargin, fresh_);
     matchWarmStart(world.contacts, fresh_);
     std::swap(world.contacts, fresh_);
-    prepareContacts(world, step.h, poses_, constraints_, anchors_);
-  }
-
-  // move freely, remembering where the free motion ends
-  bool move(World& world, const TimeStep& step) override {
+    prepareContacts(world, step.h, poses_, constraints_, anchors_, vnBefore_);
+    // move freely, remembering where the free motion ends
     moveFreely(world, step);
     free_ = world.states();
-    return false;
-  }
-
-  // the contacts, prepared where the step began, solved on the free velocities; then the
-  // positions from the free motion's, with the velocities the contacts changed
-  void resolveCollisions(World& world, const TimeStep& step) override {
+    // the contacts, prepared where the step began, solved on the free velocities
     std::vector<Body>& bodies = world.bodies;
     velocities_.resize(bodies.size());
     for (size_t i = 0; i < bodies.size(); ++i)
@@ -280,14 +264,16 @@ class SequentialSolver final : public Method {
     for (int k = 0; k < world.velocityIterations; ++k) solveVelocities(velocities_, constraints_);
     for (size_t i = 0; i < bodies.size(); ++i) bodies[i].v = velocities_[i].v, bodies[i].omega = velocities_[i].omega;
     storeImpulses(world);
+    // the positions from the free motion's, with the velocities the contacts changed
     integratePositions(world, step.h);
+    // the position pass: nonlinear Gauss–Seidel until every contact is within the slop
     positions_.resize(bodies.size());
     for (size_t i = 0; i < bodies.size(); ++i)
       positions_[i] = {bodies[i].x, bodies[i].angle, bodies[i].invMass, bodies[i].invInertia, Rot{}, true};
     for (int k = 0; k < world.positionIterations; ++k)
       if (solvePositions(positions_, constraints_, anchors_)) break;
     for (size_t i = 0; i < bodies.size(); ++i) bodies[i].x = positions_[i].x, bodies[i].angle = positions_[i].angle;
-    recordImpacts(world, step.end());
+    recordImpacts(world, vnBefore_, step.end());
   }
 
  private:
@@ -315,6 +301,7 @@ class SequentialSolver final : public Method {
   // scratch of the solver loops, kept from step to step so that a step allocates nothing
   std::vector<SolverContact> constraints_;
   std::vector<PositionPoint> anchors_;  // two per contact
+  std::vector<double> vnBefore_;        // two per contact: each point's normal velocity before the solve
   std::vector<VelocityBody> velocities_;
   std::vector<PositionBody> positions_;
   std::vector<Pose> poses_;

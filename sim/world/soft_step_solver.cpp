@@ -45,8 +45,6 @@ Softness makeSoft(double hertz, double zeta, double h) {
   return {omega / a1, a2 * a3, a3};
 }
 
-Vec2 tangentOf(const Vec2& n) { return {-n.y(), n.x()}; }
-
 // 1 / m_eff⁻¹ along d, or 0 where nothing can move (two static bodies)
 double effectiveMass(const Body& a, const Body& b, const Vec2& rA, const Vec2& rB, const Vec2& d) {
   const double k = inverseEffectiveMassAt(a, b, rA, rB, d);
@@ -79,8 +77,17 @@ class SoftStepSolver final : public Method {
  public:
   std::unique_ptr<Method> clone() const override { return std::make_unique<SoftStepSolver>(*this); }
 
+  // Box2D v3's b2SolverStage list (solver.c): contacts prepared once, then per substep the
+  // velocities, the soft contacts, the positions and the relax pass; restitution after them all
+  void step(World& world, const TimeStep& step) override {
+    beginStep(world, step);
+    move(world, step);
+    resolveCollisions(world, step);
+  }
+
+ private:
   // the contacts where the bodies are now, carrying over last step's impulses, prepared once
-  void beginStep(World& world, const TimeStep& step) override {
+  void beginStep(World& world, const TimeStep& step) {
     world.findContacts(speculativeMargin(world, step.h), fresh_);
     matchWarmStart(world.contacts, fresh_);
     std::swap(world.contacts, fresh_);
@@ -89,21 +96,19 @@ class SoftStepSolver final : public Method {
 
   // the substeps: velocities, soft contacts, positions, relax; with sim: threads, every stage
   // split between the threads, which meet after each stage and each set of contacts
-  bool move(World& world, const TimeStep& step) override {
+  void move(World& world, const TimeStep& step) {
     loadBodies(world);
     WorkerPool& threads = pool(world.threads);
     threads.run([&](int t) { substeps(world, step, Share{t, threads.size()}, threads); });
     storeBodies(world);
-    return false;
   }
 
   // restitution once, from the velocity before the substeps; the impulses kept for next step
-  void resolveCollisions(World& world, const TimeStep& step) override {
+  void resolveCollisions(World& world, const TimeStep& step) {
     applyRestitution(world);
     store(world, step.end());
   }
 
- private:
   // one thread's part of a range: the t-th of n nearly equal pieces (the split never changes a
   // result, only who computes it)
   struct Share {
@@ -401,9 +406,6 @@ class SoftStepSolver final : public Method {
         const double vnBefore = vnBefore_[2 * i + k], total = p.totalNormalImpulse.l[l];
         c.state[k].normalImpulse = p.normalImpulse.l[l];
         c.state[k].tangentImpulse = p.tangentImpulse.l[l];
-        c.state[k].normalMass = p.normalMass.l[l];
-        c.state[k].tangentMass = p.tangentMass.l[l];
-        c.state[k].vnBefore = vnBefore;
         if (vnBefore >= -settings::kRestitutionThreshold || total <= 0.0) continue;
         const LeverArms r = armsOf(i, k);
         const Vec2 n = c.manifold.normal;

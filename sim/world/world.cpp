@@ -202,28 +202,28 @@ void World::stepTo(double stop, double tEnd, StepObserver* observer) {
   applyDueEvents(observer);
 }
 
-// one step of size h, in the notes' order (Box2D-Lite's World::Step); what each stage does is the
-// collision method's (methods.h). Under `auto`, when the event method finds impacts piling up (a
-// stack or a pile forming), the step is done again from where it began by the stack solver, which
-// goes on from there (issue 14: `auto` builds a stack instead of failing).
+// one step of size h by the collision method (methods.h), and what is the world's around it:
+// sleeping, `auto`'s switch and the finiteness check. Under `auto`, when the event method finds
+// impacts piling up (a stack or a pile forming), the step is done again from where it began by
+// the stack solver, which goes on from there.
 void World::step(double h) {
   const TimeStep thisStep{time, h};
   // a point force on during the step wakes the island it pushes
   if (sleeping()) sleep_.wakeForced(forces, thisStep.midpoint(), contacts);
   if (!mayStackUp_) {
-    stepWith(*method_, thisStep);
+    method_->step(*this, thisStep);
   } else {
     stepStart_ = states();
     const size_t impactsBefore = impacts.size(), restingBefore = resting.size();
     try {
-      stepWith(*method_, thisStep);
+      method_->step(*this, thisStep);
     } catch (const ImpactsPileUp&) {
       setStates(stepStart_);
       // what the undone attempt recorded did not happen
       impacts.resize(impactsBefore);
       resting.resize(restingBefore);
       switchToStackSolver(thisStep.start);
-      stepWith(*method_, thisStep);
+      method_->step(*this, thisStep);
     }
   }
   ++steps;
@@ -231,19 +231,6 @@ void World::step(double h) {
   if (sleeping()) sleep_.afterStep(bodies, contacts, forces, thisStep.midpoint(), h);
   // stop at the first non-finite state rather than carry NaN forward
   checkFinite(time + h);
-}
-
-void World::stepWith(Method& method, const TimeStep& thisStep) {
-  // what the method needs of where the step begins (sequential: the contacts, warm started)
-  method.beginStep(*this, thisStep);
-  bool atImpact = false;
-  do {
-    // forces and torques, velocities, positions: the integrator over the step, or (event) up to
-    // the first time of impact
-    atImpact = method.move(*this, thisStep);
-    // collisions and impulses where the motion stopped; after an impact the motion goes on
-    method.resolveCollisions(*this, thisStep);
-  } while (atImpact);
 }
 
 // the stack solver from `at` on: the start of the step in which the impacts piled up

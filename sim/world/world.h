@@ -137,7 +137,6 @@ class World {
   double nextStop(double tEnd) const;
   void stepTo(double stop, double tEnd, StepObserver* observer);
   void step(double h);
-  void stepWith(Method& method, const TimeStep& step);
   void switchToStackSolver(double at);
   void applyDueEvents(StepObserver* observer);
   void checkFinite(double t) const;
