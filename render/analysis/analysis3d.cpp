@@ -17,9 +17,9 @@ namespace w3 = sim::world3d;
 
 namespace {
 
-class Recorder3 : public w3::StepObserver {
+class Recorder3d : public w3::StepObserver {
  public:
-  Recorder3(RunMetrics& m, const w3::Vec3& l0) : m_(m), l0_(l0) {}
+  Recorder3d(RunMetrics& m, const w3::Vec3& l0) : m_(m), l0_(l0) {}
   void afterStep(const w3::World& w) override {
     render::jobs::checkInterrupted();
     ++m_.steps;
@@ -50,8 +50,8 @@ double angleBetween(const w3::Quat& q, const w3::Quat& reference) {
 
 }  // namespace
 
-Metrics3Options criteria3(const sim::scene3d::SceneDef& def) {
-  Metrics3Options o;
+Metrics3dOptions criteria3d(const sim::scene3d::SceneDef& def) {
+  Metrics3dOptions o;
   o.energy = def.events.empty() && def.pointForces.empty();
   bool anchored = false;
   for (const sim::scene3d::SpringDef& s : def.springs) anchored = anchored || s.body2.empty();
@@ -63,7 +63,7 @@ RunMetrics measureRun3(w3::World& world, double until) {
   RunMetrics m;
   const w3::Energy e0 = energy(world);
   startEnergy(e0.kinetic, e0.potential, m);
-  Recorder3 recorder(m, angularMomentum(world));
+  Recorder3d recorder(m, angularMomentum(world));
   try {
     world.advanceTo(until, &recorder);
   } catch (const w3::Diverged& d) {
@@ -75,7 +75,7 @@ RunMetrics measureRun3(w3::World& world, double until) {
   return m;
 }
 
-bool holds3(RunMetrics& m, const Metrics3Options& o) {
+bool holds3d(RunMetrics& m, const Metrics3dOptions& o) {
   // a tenth of |L| or of E, a hundredth of |q|: far beyond round-off and a method's truncation on a
   // scene it resolves, and well before a picture turns wrong
   if (!m.finite) m.failure = "non-finite state";
@@ -86,23 +86,23 @@ bool holds3(RunMetrics& m, const Metrics3Options& o) {
   return *m.failure == '\0';
 }
 
-Sweep3Reference sweepReference3(const sim::scene3d::SceneDef& def, double smallestDt) {
+Sweep3dReference sweepReference3d(const sim::scene3d::SceneDef& def, double smallestDt) {
   if (!def.expects.empty()) return {"expect", {}};
   const double dt = smallestDt / 64.0;
   w3::World w = sim::scene3d::buildWorld(withMethod(def, w3::Integrator::Rk4, dt));
-  InterruptCheck3 stop;
+  InterruptCheck3d stop;
   w.advanceTo(def.duration, &stop);
   char name[64];
   std::snprintf(name, sizeof name, "rk4 at dt %g", dt);
-  Sweep3Reference out{name, {}};
+  Sweep3dReference out{name, {}};
   for (const w3::Body& b : w.bodies) out.states.push_back(b.state());
   return out;
 }
 
-Sweep3Row runSweepCase3(const sim::scene3d::SceneDef& scene, w3::Integrator integrator, double dt,
-                        const Sweep3Reference& reference, int repeat) {
+Sweep3dRow runSweepCase3d(const sim::scene3d::SceneDef& scene, w3::Integrator integrator, double dt,
+                        const Sweep3dReference& reference, int repeat) {
   const sim::scene3d::SceneDef def = withMethod(scene, integrator, dt);
-  Sweep3Row row;
+  Sweep3dRow row;
   row.integrator = integrator;
   row.dt = dt;
   w3::World w = sim::scene3d::buildWorld(def);
@@ -112,7 +112,7 @@ Sweep3Row runSweepCase3(const sim::scene3d::SceneDef& scene, w3::Integrator inte
     row.error = std::numeric_limits<double>::infinity();
   } else if (reference.name == "expect") {
     w3::World again = sim::scene3d::buildWorld(def);
-    InterruptCheck3 stop;
+    InterruptCheck3d stop;
     for (const sim::core::CheckResult& r : sim::scene3d::runExpects(def, again, &stop)) row.error = std::max(row.error, r.error);
   } else {
     for (size_t i = 0; i < w.bodies.size(); ++i) {
@@ -123,7 +123,7 @@ Sweep3Row runSweepCase3(const sim::scene3d::SceneDef& scene, w3::Integrator inte
   }
   // the timed runs: nothing but the simulation
   std::vector<double> seconds;
-  InterruptCheck3 stop;
+  InterruptCheck3d stop;
   for (int k = 0; k < repeat && row.metrics.finite; ++k) {
     w3::World timed = sim::scene3d::buildWorld(def);
     const auto start = std::chrono::steady_clock::now();
@@ -137,7 +137,7 @@ Sweep3Row runSweepCase3(const sim::scene3d::SceneDef& scene, w3::Integrator inte
   return row;
 }
 
-StabilityDef readStability3(const sim::yaml::SceneSource& source) {
+StabilityDef readStability3d(const sim::yaml::SceneSource& source) {
   const YAML::Node n = source.root[kStabilityKey];
   if (n && n.IsMap() && n["parameter"])
     sim::yaml::readGuarded(source.file, [&] {
@@ -150,8 +150,8 @@ StabilityDef readStability3(const sim::yaml::SceneSource& source) {
   return readStability(source, sim::scene::SceneDef{});
 }
 
-StabilityResult findBoundary3(const sim::scene3d::SceneDef& def, const StabilityDef& stability) {
-  const Metrics3Options o = criteria3(def);
+StabilityResult findBoundary3d(const sim::scene3d::SceneDef& def, const StabilityDef& stability) {
+  const Metrics3dOptions o = criteria3d(def);
   return searchBoundary(stability.from > 0.0 ? stability.from : def.dt, stability.to > 0.0 ? stability.to : 1e12, false,
                         [&](double dt, RunMetrics& m) {
                           sim::scene3d::SceneDef at = def;
@@ -159,7 +159,7 @@ StabilityResult findBoundary3(const sim::scene3d::SceneDef& def, const Stability
                           w3::World w = sim::scene3d::buildWorld(at);
                           // as in 2D: the scene's duration or 1000 steps, whichever is longer
                           m = measureRun3(w, std::max(at.duration, kMinimumSteps * dt));
-                          return holds3(m, o);
+                          return holds3d(m, o);
                         }, Growth::Doubling);
 }
 

@@ -13,7 +13,7 @@ struct InterruptCheck : sim::world::StepObserver {
   void afterStep(const sim::world::World&) override { render::jobs::checkInterrupted(); }
 };
 
-struct InterruptCheck3 : sim::world3d::StepObserver {
+struct InterruptCheck3d : sim::world3d::StepObserver {
   void afterStep(const sim::world3d::World&) override { render::jobs::checkInterrupted(); }
 };
 

@@ -31,7 +31,7 @@ struct RunMetrics {
   double maxDisplacement = 0.0;
   double fastest = 0.0;
   long steps = 0;
-  // 3D runs (run_metrics3.h): the largest |L(t) − L(0)| / |L(0)| about the origin, and | |q| − 1 |
+  // 3D runs (analysis3d.h): the largest |L(t) − L(0)| / |L(0)| about the origin, and | |q| − 1 |
   double angularMomentumDrift = 0.0;
   double quaternionDrift = 0.0;
   const char* failure = "";     // the first criterion that failed, or "" (see holds())

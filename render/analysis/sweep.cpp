@@ -142,7 +142,7 @@ std::vector<double> logRange(double from, double to, int count) {
 std::vector<double> defaultSweepSteps(double dt) { return logRange(dt * 8, dt / 8, 7); }
 
 void checkSweepSteps(double smallestDt, bool referenceRun, double maxSteps, double duration) {
-  // the reference is a 64th of the smallest step (sweepReference, sweepReference3)
+  // the reference is a 64th of the smallest step (sweepReference, sweepReference3d)
   const double finest = referenceRun ? smallestDt / 64.0 : smallestDt;
   if (const std::string over = sim::core::stepsOverLimit(finest, maxSteps, duration); !over.empty())
     throw UsageError(std::string("--dt: ") + (referenceRun ? "the reference run at a 64th of the smallest dt: " : "") + over +

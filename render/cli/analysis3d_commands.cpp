@@ -26,7 +26,7 @@ using sim::world3d::kIntegratorNames;
 namespace {
 
 // the named integrators, or all five
-std::vector<Integrator> integrators3(const MethodLists& m) {
+std::vector<Integrator> integrators3d(const MethodLists& m) {
   if (!m.collisions.empty()) throw UsageError("--collisions: 3D scenes have no contacts, so no collision method to choose");
   std::vector<Integrator> out;
   for (const auto& e : kIntegratorNames.entries()) out.push_back(e.value);
@@ -50,8 +50,8 @@ std::string analysisBase(const std::string& outDir, const sim::scene3d::SceneDef
 
 int sweep3d(const SceneOptions& so, const MethodLists& methods, const std::string& dt, int repeat, const std::string& outDir,
             bool verbose) {
-  const sim::scene3d::SceneDef def = so.load3().model();
-  const std::vector<Integrator> integrators = integrators3(methods);
+  const sim::scene3d::SceneDef def = so.load3d().model();
+  const std::vector<Integrator> integrators = integrators3d(methods);
   const std::vector<double> steps =
       dt.empty() ? defaultSweepSteps(def.dt) : parseRange(dt, "--dt");
   if (repeat < 1 || repeat > 1000) throw UsageError("--repeat: expected a whole number from 1 to 1000");
@@ -61,10 +61,10 @@ int sweep3d(const SceneOptions& so, const MethodLists& methods, const std::strin
   const std::string base = analysisBase(outDir, def, "sweep");
   AtomicFile csv = openOutput(base + ".csv");
 
-  const Sweep3Reference reference = sweepReference3(def, *std::min_element(steps.begin(), steps.end()));
-  std::vector<Sweep3Row> rows;
+  const Sweep3dReference reference = sweepReference3d(def, *std::min_element(steps.begin(), steps.end()));
+  std::vector<Sweep3dRow> rows;
   for (Integrator i : integrators)
-    for (double h : steps) rows.push_back(runSweepCase3(def, i, h, reference, repeat));
+    for (double h : steps) rows.push_back(runSweepCase3d(def, i, h, reference, repeat));
 
   // the 2D sweep's columns (no collisions, iterations or penetration in 3D), then |L| and |q| drift
   csv.stream() << "integrator,collisions,dt,iterations,steps,seconds_per_sim_second,error,energy_drift,max_penetration,"
@@ -75,7 +75,7 @@ int sweep3d(const SceneOptions& so, const MethodLists& methods, const std::strin
   chart.yLabel = "error";
   chart.logX = chart.logY = true;
   for (Integrator i : integrators) chart.series.push_back({std::string(kIntegratorNames.name(i)), {}});
-  for (const Sweep3Row& r : rows) {
+  for (const Sweep3dRow& r : rows) {
     const RunMetrics& m = r.metrics;
     csv.stream() << kIntegratorNames.name(r.integrator) << ",none," << formatNumber(r.dt) << ",0," << r.steps << ','
                  << formatNumber(r.secondsPerSimSecond) << ',' << formatNumber(r.error) << ',' << formatNumber(m.energyDrift)
@@ -85,14 +85,14 @@ int sweep3d(const SceneOptions& so, const MethodLists& methods, const std::strin
     if (m.finite && r.error > 0.0 && r.secondsPerSimSecond > 0.0)
       chart.series[series].points.emplace_back(r.secondsPerSimSecond, r.error);
   }
-  if (std::all_of(rows.begin(), rows.end(), [](const Sweep3Row& r) { return r.error == 0.0; })) chart.note = kAllErrorsZero;
+  if (std::all_of(rows.begin(), rows.end(), [](const Sweep3dRow& r) { return r.error == 0.0; })) chart.note = kAllErrorsZero;
   writeChart(chart, base + ".png");
   csv.commit();
 
   std::cout << std::left << std::setw(18) << "integrator" << std::right << std::setw(12) << "dt" << std::setw(10) << "steps"
             << std::setw(14) << "s/sim s" << std::setw(14) << "error" << std::setw(14) << "energy drift" << std::setw(14)
             << "|L| drift" << std::setw(14) << "||q| - 1|" << '\n';
-  for (const Sweep3Row& r : rows)
+  for (const Sweep3dRow& r : rows)
     std::cout << std::left << std::setw(18) << kIntegratorNames.name(r.integrator) << std::right << std::setprecision(4)
               << std::setw(12) << r.dt << std::setw(10) << r.steps << std::setw(14) << r.secondsPerSimSecond << std::setw(14)
               << r.error << std::setw(14) << r.metrics.energyDrift << std::setw(14) << r.metrics.angularMomentumDrift
@@ -103,9 +103,9 @@ int sweep3d(const SceneOptions& so, const MethodLists& methods, const std::strin
 }
 
 int stability3d(const SceneOptions& so, const MethodLists& methods, const std::string& outDir, bool verbose) {
-  const SceneFile3 file = so.load3();
+  const SceneFile3d file = so.load3d();
   const sim::scene3d::SceneDef& def = file.model();
-  const std::vector<Integrator> integrators = integrators3(methods);
+  const std::vector<Integrator> integrators = integrators3d(methods);
   render::video::createOutputDirectory(outDir);
   const std::string base = analysisBase(outDir, def, "stability");
   AtomicFile csv = openOutput(base + ".csv");
@@ -118,7 +118,7 @@ int stability3d(const SceneOptions& so, const MethodLists& methods, const std::s
   for (Integrator i : integrators) {
     sim::scene3d::SceneDef d = def;
     d.integrator = i;
-    const StabilityResult r = findBoundary3(d, file.stability);
+    const StabilityResult r = findBoundary3d(d, file.stability);
     const std::string name(kIntegratorNames.name(i));
     std::cout << describeBoundary(name, "dt", r) << '\n';
     csv.stream() << name << ",none,dt," << formatNumber(r.largestStable) << ',' << formatNumber(r.firstFailing) << ','

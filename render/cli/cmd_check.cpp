@@ -123,7 +123,7 @@ bool checkCase(const OpenScene& scene, const std::string& variant, const Verbosi
   out << label << ": " << describeModel(def) << '\n';
   sim::world::World w = startWorld(def, file);
   out << "  collisions: " << describeCollisionMethod(w) << '\n';
-  RunProgress2 progress(label, def.duration, nullptr, !say.quiet);
+  RunProgress progress(label, def.duration, nullptr, !say.quiet);
   std::vector<sim::core::CheckResult> results;
   std::string failure;
   try {
@@ -155,7 +155,7 @@ bool checkCase(const OpenScene& scene, const std::string& variant, const Verbosi
 
 // what a 3D scene models: free bodies, their forces and events, the integrator and whether q is
 // normalized after each step
-std::string describeModel3(const sim::scene3d::SceneDef& d) {
+std::string describeModel3d(const sim::scene3d::SceneDef& d) {
   std::ostringstream o;
   o << plural(d.bodies.size(), "body") << " (3D, free); forces:" << forcesOf(d, d.gravity != sim::world3d::Vec3::Zero())
     << "; " << plural(d.events.size(), "impulse event") << "; integrator "
@@ -168,13 +168,13 @@ std::string describeModel3(const sim::scene3d::SceneDef& d) {
 // the run diverges before its end
 bool checkCase3d(const OpenScene& scene, const std::string& variant, const Verbosity& say) {
   const std::string& file = scene.path();
-  const sim::scene3d::SceneDef def = scene.read3(variant).model();
+  const sim::scene3d::SceneDef def = scene.read3d(variant).model();
   const std::string label = file + (variant.empty() ? "" : " [" + variant + "]");
   std::ostream& out = say.quiet ? nowhere() : std::cout;
-  out << label << ": " << describeModel3(def) << '\n';
+  out << label << ": " << describeModel3d(def) << '\n';
   out << "  contacts: none (3D scenes model free rigid bodies: nothing collides, bodies pass through each other)\n";
   sim::world3d::World w = sim::scene3d::buildWorld(def);
-  RunProgress3 progress(label, def.duration, nullptr, !say.quiet);
+  RunProgress3d progress(label, def.duration, nullptr, !say.quiet);
   std::vector<sim::core::CheckResult> results;
   std::string failure;
   try {
@@ -217,8 +217,8 @@ bool planRender(const OpenScene& scene) {
   const std::string& file = scene.path();
   const render::video::LectureRequest request{.root = "out/lecture", .file = file, .size = {}, .fps = {}};
   if (scene.is3d())
-    return planned<render::video::RenderPlan3, render::video::VariantDiverged3>(
-        file, [&] { return render::video::planLecture3(lectureLoader3(scene), request); });
+    return planned<render::video::RenderPlan3d, render::video::VariantDiverged3d>(
+        file, [&] { return render::video::planLecture3d(lectureLoader3d(scene), request); });
   return planned<render::video::RenderPlan, render::video::VariantDiverged>(
       file, [&] { return render::video::planLecture(lectureLoader(scene), request); });
 }
@@ -281,7 +281,7 @@ int check(const std::vector<std::string>& arguments, const Verbosity& say, bool 
 }  // namespace
 
 bool check3d(const OpenScene& scene, const Verbosity& say) {
-  std::vector<std::string> cases = scene.read3().model().variantNames;
+  std::vector<std::string> cases = scene.read3d().model().variantNames;
   if (cases.empty()) cases.push_back("");
   bool ok = true;
   for (const std::string& v : cases) ok = checkCase3d(scene, v, say) && ok;

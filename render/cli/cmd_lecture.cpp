@@ -56,10 +56,10 @@ struct PackScene {
   std::optional<RenderPlan> plan;
   std::exception_ptr diverged;
   // a 3D scene's (dimensions: 3), instead of `base` and `plan`
-  std::optional<render::scene3d::Scene> base3;
-  std::optional<RenderPlan3> plan3;
+  std::optional<render::scene3d::Scene> base3d;
+  std::optional<RenderPlan3d> plan3d;
 
-  std::vector<std::string> paths() const { return plan3 ? plan3->paths() : plan->paths(); }
+  std::vector<std::string> paths() const { return plan3d ? plan3d->paths() : plan->paths(); }
   // what rendering it costs, roughly: the pixels of its frames and stills (0 when it diverged)
   double pixels() const {
     double sum = 0.0;
@@ -67,7 +67,7 @@ struct PackScene {
       for (const auto& v : plan.videos) sum += static_cast<double>(v.frameCount) * v.width * v.height;
       if (plan.stills) sum += static_cast<double>(plan.stills->shots.size() * plan.variants.size()) * plan.stills->width * plan.stills->height;
     };
-    if (plan3) add(*plan3);
+    if (plan3d) add(*plan3d);
     if (plan) add(*plan);
     return sum;
   }
@@ -112,12 +112,12 @@ PackScene planScene(LectureRequest request, const std::string& file) {
   scene.file = file;
   const OpenScene opened(file);
   if (opened.is3d()) {
-    const LoadVariant3 load = lectureLoader3(opened);
-    scene.base3 = load("");
-    scene.name = scene.base3->model.name;
+    const LoadVariant3d load = lectureLoader3d(opened);
+    scene.base3d = load("");
+    scene.name = scene.base3d->model.name;
     try {
-      scene.plan3 = planLecture3(load, request);
-    } catch (const VariantDiverged3&) {
+      scene.plan3d = planLecture3d(load, request);
+    } catch (const VariantDiverged3d&) {
       scene.diverged = std::current_exception();
     }
     return scene;
@@ -146,9 +146,9 @@ SceneResult runHere(const PackScene& scene, const std::string& root) {
       r.outputs.push_back(path);
     };
     // the record last: the page shows a scene only once every file it names is there
-    if (scene.plan3) {
-      writePlan3(*scene.plan3, true, wrote);
-      writeLectureRecord(*scene.plan3, *scene.base3, scene.file, root, since(start), wrote);
+    if (scene.plan3d) {
+      writePlan3d(*scene.plan3d, true, wrote);
+      writeLectureRecord(*scene.plan3d, *scene.base3d, scene.file, root, since(start), wrote);
     } else {
       writePlan(*scene.plan, true, wrote);
       writeLectureRecord(*scene.plan, scene.base, scene.file, root, since(start), wrote);
@@ -161,7 +161,7 @@ SceneResult runHere(const PackScene& scene, const std::string& root) {
     else
       std::cerr << videoDiverged(scene.file, d);
     r.message = "see the message above";
-  } catch (const VariantDiverged3& d) {
+  } catch (const VariantDiverged3d& d) {
     std::cerr << divergedMessage(scene.file, d.model, d) << '\n';
     r.message = "see the message above";
   } catch (const Interrupted&) {

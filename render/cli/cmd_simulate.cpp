@@ -168,7 +168,7 @@ int simulate(const SimulateOptions& o) {
     trace->rows(world);
   }
   try {
-    RunProgress2 progress(o.scene, until, trace.get(), !o.quiet);
+    RunProgress progress(o.scene, until, trace.get(), !o.quiet);
     world.advanceTo(until, progress.observer());
   } catch (const sim::world::Diverged& d) {
     std::cerr << o.scene << ": the simulation diverged at t = " << formatNumber(d.time) << ": body '"

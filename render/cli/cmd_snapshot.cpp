@@ -69,10 +69,10 @@ int snapshot(const SnapshotCommand& o) {
   };
   if (!o.overlay.empty() && o.is3d()) throw UsageError("--overlay: a trace is drawn over 2D scenes only");
   if (o.is3d()) try {
-      const RenderPlan3 plan = planStills3(o.variantLoader3(), request(o));
-      traced<TraceWriter3>(o.trace, plan, [&](TraceWriter3* trace) { writePlan3(plan, !o.verbose, print, trace); });
+      const RenderPlan3d plan = planStills3d(o.variantLoader3(), request(o));
+      traced<TraceWriter3d>(o.trace, plan, [&](TraceWriter3d* trace) { writePlan3d(plan, !o.verbose, print, trace); });
       return kExitOk;
-    } catch (const VariantDiverged3& d) {
+    } catch (const VariantDiverged3d& d) {
       std::cerr << divergedMessage(o.scene, d.model, d) << '\n';
       return kExitFailure;
     }

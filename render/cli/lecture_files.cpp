@@ -45,9 +45,9 @@ render::video::LoadVariant lectureLoader(const OpenScene& file) {
   };
 }
 
-render::video::LoadVariant3 lectureLoader3(const OpenScene& file) {
+render::video::LoadVariant3d lectureLoader3d(const OpenScene& file) {
   return [file](const std::string& variant) {
-    render::scene3d::Scene scene = file.read3(variant).scene;
+    render::scene3d::Scene scene = file.read3d(variant).scene;
     try {
       (void)sim::scene3d::buildWorld(scene.model);
     } catch (const std::invalid_argument& e) {

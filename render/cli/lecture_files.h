@@ -21,6 +21,6 @@ std::vector<std::string> lectureSceneFiles(const std::vector<std::string>& argum
 render::video::LoadVariant lectureLoader(const OpenScene& file);
 // the same for a 3D scene file: each variant's world built (a body no solid can be is bad input
 // before anything renders)
-render::video::LoadVariant3 lectureLoader3(const OpenScene& file);
+render::video::LoadVariant3d lectureLoader3d(const OpenScene& file);
 
 }  // namespace render::cli

@@ -77,14 +77,14 @@ void writeLectureRecord(const render::video::RenderPlan& plan, const render::sce
   wrote(path);
 }
 
-void writeLectureRecord(const render::video::RenderPlan3& plan, const render::scene3d::Scene& base, const std::string& file,
+void writeLectureRecord(const render::video::RenderPlan3d& plan, const render::scene3d::Scene& base, const std::string& file,
                         const std::string& root, double seconds, const std::function<void(const std::string&)>& wrote) {
   const std::string path = lectureRecordPath(plan.scene, root);
   std::vector<std::string> variants;
-  for (const render::video::PlannedVariant3& v : plan.variants) variants.push_back(v.scene.model.variant);
+  for (const render::video::PlannedVariant3d& v : plan.variants) variants.push_back(v.scene.model.variant);
   render::page::SceneRecord r = recordOf(plan, base.render, render::frame::titleOf(base.render, base.model.name),
                                          base.model.description, variants, file, path, seconds);
-  for (const render::video::PlannedVariant3& v : plan.variants)
+  for (const render::video::PlannedVariant3d& v : plan.variants)
     addChecks(v.scene.model.variant, sim::scene3d::runExpects(v.scene.model), r);
   render::page::writeSceneRecord(r, path);
   wrote(path);

@@ -23,7 +23,7 @@ std::string lecturePagePath(const std::string& root);
 void writeLectureRecord(const render::video::RenderPlan& plan, const render::scene::Scene& base, const std::string& file,
                         const std::string& root, double seconds, const std::function<void(const std::string&)>& wrote);
 // the same for a 3D scene's plan
-void writeLectureRecord(const render::video::RenderPlan3& plan, const render::scene3d::Scene& base, const std::string& file,
+void writeLectureRecord(const render::video::RenderPlan3d& plan, const render::scene3d::Scene& base, const std::string& file,
                         const std::string& root, double seconds, const std::function<void(const std::string&)>& wrote);
 
 // the page rebuilt from the records in `root`: "page: DIR/index.html (N scenes)" on standard

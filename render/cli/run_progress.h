@@ -18,10 +18,10 @@ namespace render::cli {
 // a StepObserver of the 2D or the 3D world (World, Observer: sim::world's or sim::world3d's) that
 // passes every call on to `next` (a trace writer, or none)
 template <class World, class Observer, class Event>
-class RunProgress : public Observer {
+class RunProgressOf : public Observer {
  public:
   // (`shown` false: never drawn, as for --quiet)
-  RunProgress(std::string what, double until, Observer* next = nullptr, bool shown = true)
+  RunProgressOf(std::string what, double until, Observer* next = nullptr, bool shown = true)
       : what_(std::move(what)), until_(until), next_(next),
         line_(shown, std::chrono::seconds(1), std::chrono::milliseconds(250)) {}
 
@@ -61,7 +61,7 @@ class RunProgress : public Observer {
   std::chrono::steady_clock::time_point lastCheck_ = std::chrono::steady_clock::now();
 };
 
-using RunProgress2 = RunProgress<sim::world::World, sim::world::StepObserver, sim::world::ImpulseEvent>;
-using RunProgress3 = RunProgress<sim::world3d::World, sim::world3d::StepObserver, sim::world3d::ImpulseEvent>;
+using RunProgress = RunProgressOf<sim::world::World, sim::world::StepObserver, sim::world::ImpulseEvent>;
+using RunProgress3d = RunProgressOf<sim::world3d::World, sim::world3d::StepObserver, sim::world3d::ImpulseEvent>;
 
 }  // namespace render::cli

@@ -22,15 +22,15 @@ SceneFile sceneFileText(const std::string& text, const std::string& file, const 
   return OpenScene(text, file).read(variant);
 }
 
-SceneFile3 readSceneFile3(const std::string& path, const std::string& variant) { return OpenScene(path).read3(variant); }
+SceneFile3d readSceneFile3d(const std::string& path, const std::string& variant) { return OpenScene(path).read3d(variant); }
 
 SceneFile OpenScene::read(const std::string& variant) const { return readSource(sim::yaml::sceneSource(document_, variant)); }
 
-SceneFile3 OpenScene::read3(const std::string& variant) const {
+SceneFile3d OpenScene::read3d(const std::string& variant) const {
   const sim::yaml::SceneSource source = sim::yaml::sceneSource(document_, variant);
-  SceneFile3 f;
+  SceneFile3d f;
   f.scene = render::scene3d::readScene(source, {{render::analysis::kStabilityKey, render::golden::kGoldenKey}, {}});
-  f.stability = render::analysis::readStability3(source);
+  f.stability = render::analysis::readStability3d(source);
   // (3D scenes have no golden records yet; their golden: block is still checked)
   (void)render::golden::readGolden(source, f.scene.model.duration);
   return f;

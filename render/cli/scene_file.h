@@ -33,7 +33,7 @@ SceneFile sceneFileText(const std::string& text, const std::string& file, const 
 
 // a 3D scene file (`dimensions: 3`), read the same way: its model and look (render/scene3d) and its
 // stability: block (dt only)
-struct SceneFile3 {
+struct SceneFile3d {
   render::scene3d::Scene scene;
   render::analysis::StabilityDef stability;
 
@@ -41,7 +41,7 @@ struct SceneFile3 {
   sim::scene3d::SceneDef& model() { return scene.model; }
 };
 
-SceneFile3 readSceneFile3(const std::string& path, const std::string& variant = "");
+SceneFile3d readSceneFile3d(const std::string& path, const std::string& variant = "");
 
 // A scene file read and parsed once: its `dimensions` says which path each subcommand takes, and
 // every variant, 2D or 3D, is merged and read from the one parse. A copy shares the parse.
@@ -56,7 +56,7 @@ class OpenScene {
   const std::vector<std::string>& variantNames() const { return document_.variantNames; }
   // the named variant ("" for the base scene) of a 2D scene, or of a 3D one
   SceneFile read(const std::string& variant = "") const;
-  SceneFile3 read3(const std::string& variant = "") const;
+  SceneFile3d read3d(const std::string& variant = "") const;
 
  private:
   sim::yaml::SceneDocument document_;

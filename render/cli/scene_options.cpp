@@ -70,8 +70,8 @@ SceneFile SceneOptions::load() const {
   return file;
 }
 
-SceneFile3 SceneOptions::load3() const {
-  SceneFile3 file = open().read3(variant);
+SceneFile3d SceneOptions::load3d() const {
+  SceneFile3d file = open().read3d(variant);
   sim::scene3d::SceneDef& def = file.model();
   if (!integrator.empty()) {
     const auto method = sim::world3d::kIntegratorNames.parse(integrator);
@@ -105,12 +105,12 @@ render::video::LoadVariant SceneOptions::variantLoader() const {
   };
 }
 
-render::video::LoadVariant3 SceneOptions::variantLoader3() const {
+render::video::LoadVariant3d SceneOptions::variantLoader3() const {
   (void)open();
   return [options = *this](const std::string& variant) {
     SceneOptions one = options;
     one.variant = variant;
-    return one.load3().scene;
+    return one.load3d().scene;
   };
 }
 

@@ -32,11 +32,11 @@ struct SceneOptions {
   SceneFile load() const;
   // the same for a 3D scene (dimensions: 3), whose integrators include the splitting and which has
   // no collision method to choose (nor soft_step's settings)
-  SceneFile3 load3() const;
+  SceneFile3d load3d() const;
   // any variant of the scene ("" the base scene) with the overrides applied, as a render plan reads them
   render::video::LoadVariant variantLoader() const;
   // the same for a 3D scene's variants
-  render::video::LoadVariant3 variantLoader3() const;
+  render::video::LoadVariant3d variantLoader3() const;
 
  private:
   mutable std::shared_ptr<const OpenScene> opened_;  // (shared by copies, as the variant loaders make)

@@ -85,22 +85,22 @@ std::string divergedMessage(const std::string& file, const sim::scene3d::SceneDe
 }
 
 int simulate3d(const SceneOptions& o, std::optional<double> until, bool json, const std::string& tracePath) {
-  const sim::scene3d::SceneDef def = o.load3().model();
+  const sim::scene3d::SceneDef def = o.load3d().model();
   const double end = until.value_or(def.duration);
   if (!(end >= 0.0) || !std::isfinite(end)) throw UsageError("--until: the end time must be zero or a positive finite number");
   if (const std::string over = sim::core::stepsOverLimit(def.dt, def.maxSteps, end); !over.empty())
     throw UsageError("--until: " + over + "; choose an earlier end, or raise the scene's 'sim: {max_steps: N}'");
   World world = sim::scene3d::buildWorld(def);
   std::unique_ptr<AtomicFile> traceFile;
-  std::unique_ptr<render::video::TraceWriter3> trace;
+  std::unique_ptr<render::video::TraceWriter3d> trace;
   if (!tracePath.empty()) {
     refuseInputAsOutput(tracePath, o.scene, "--trace");
     traceFile = openTrace(tracePath);
-    trace = std::make_unique<render::video::TraceWriter3>(traceStream(traceFile), def);
+    trace = std::make_unique<render::video::TraceWriter3d>(traceStream(traceFile), def);
     trace->rows(world);
   }
   try {
-    RunProgress3 progress(o.scene, end, trace.get());
+    RunProgress3d progress(o.scene, end, trace.get());
     world.advanceTo(end, progress.observer());
   } catch (const Diverged& d) {
     std::cerr << divergedMessage(o.scene, def, d) << '\n';

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "render/draw3d/camera3.h"
+#include "render/draw3d/camera3d.h"
 #include "sim/world3d/shape.h"
 
 namespace render::draw3d {

@@ -1,5 +1,5 @@
 // A picture of a run at any time without splitting the run's own steps (2D SceneRun and 3D
-// SceneRun3 alike): the run advanced by its steps that end by t, then, when t falls between two of
+// SceneRun3d alike): the run advanced by its steps that end by t, then, when t falls between two of
 // them, a copy of the run (its history too, so that an impact inside the part step shows) advanced
 // to t. The run's trajectory is then the scene's own whatever the pictures' times.
 #pragma once

@@ -14,7 +14,7 @@ using sim::world3d::Vec3;
 
 // the perspective camera: fitted over everything the run covers, looking along `direction`, or
 // placed at `eye` looking at `target`; `up` is the world direction drawn upward
-struct Camera3Def {
+struct Camera3dDef {
   bool automatic = true;
   Vec3 direction = Vec3(1.0, -1.7, 0.9);  // auto: from the fitted center toward the eye
   double margin = 0.08;                   // auto: free space on each side, a fraction of the view
@@ -24,7 +24,7 @@ struct Camera3Def {
 };
 
 // a teaching vector or text drawn every frame: one entry of `arrows:`
-struct Arrow3Def {
+struct Arrow3dDef {
   enum class Show { Axes, Omega, AngularMomentum, Velocity, Path, OmegaPath, State };
   Show show = Show::Axes;
   int body = 0;            // index into the model's bodies
@@ -34,19 +34,19 @@ struct Arrow3Def {
   std::string color;       // "#rrggbb"; empty: the color of `show`'s role
 };
 
-inline constexpr sim::core::EnumNames<Arrow3Def::Show, 7> kShow3Names{{{
-    {Arrow3Def::Show::Axes, "axes"},
-    {Arrow3Def::Show::Omega, "omega"},
-    {Arrow3Def::Show::AngularMomentum, "angular_momentum"},
-    {Arrow3Def::Show::Velocity, "velocity"},
-    {Arrow3Def::Show::Path, "path"},
-    {Arrow3Def::Show::OmegaPath, "omega_path"},
-    {Arrow3Def::Show::State, "state"},
+inline constexpr sim::core::EnumNames<Arrow3dDef::Show, 7> kShow3dNames{{{
+    {Arrow3dDef::Show::Axes, "axes"},
+    {Arrow3dDef::Show::Omega, "omega"},
+    {Arrow3dDef::Show::AngularMomentum, "angular_momentum"},
+    {Arrow3dDef::Show::Velocity, "velocity"},
+    {Arrow3dDef::Show::Path, "path"},
+    {Arrow3dDef::Show::OmegaPath, "omega_path"},
+    {Arrow3dDef::Show::State, "state"},
 }}};
 
-struct Render3Def {
-  Camera3Def camera;
-  std::vector<Arrow3Def> arrows;
+struct Render3dDef {
+  Camera3dDef camera;
+  std::vector<Arrow3dDef> arrows;
   // m of arrow per rad/s, per kg·m²/s, per m/s; 0: the run's largest is a quarter of the view's height
   // at the camera's target
   double omegaScale = 0.0, angularMomentumScale = 0.0, velocityScale = 0.0;

@@ -5,11 +5,11 @@
 #include "render/scene/render_yaml.h"
 #include "render/scene/output_name_rules.h"
 #include "render/scene/scene_style.h"
-#include "sim/yaml3d/reader3.h"
+#include "sim/yaml3d/reader3d.h"
 
 namespace render::scene3d {
 using sim::yaml::Reader;
-using sim::yaml3d::Reader3;
+using sim::yaml3d::Reader3d;
 
 namespace {
 
@@ -18,7 +18,7 @@ const char* const kOnly2d =
     "' draws 2D scenes only; a 3D scene's render: has camera, arrows (axes, omega, angular_momentum, velocity, path, "
     "omega_path, state), trails, springs, energy, momentum and world_axes";
 
-void camera(const YAML::Node& n, const Reader3& r, Camera3Def& out) {
+void camera(const YAML::Node& n, const Reader3d& r, Camera3dDef& out) {
   if (n.IsScalar()) {
     if (n.Scalar() != "auto")
       r.fail(n, "'camera' is 'auto', {direction: [x, y, z], margin: m, fov: f, up: [x, y, z]} or {eye: [x, y, z], "
@@ -56,20 +56,20 @@ void camera(const YAML::Node& n, const Reader3& r, Camera3Def& out) {
     r.fail(n, "the camera looks along 'up'; give an 'up' that is not along the view");
 }
 
-Arrow3Def arrow(const YAML::Node& n, const Reader3& r, const sim::scene3d::SceneDef& scene) {
+Arrow3dDef arrow(const YAML::Node& n, const Reader3d& r, const sim::scene3d::SceneDef& scene) {
   r.checkKeys(n, {"body", "show", "at", "label", "value", "color"}, "an arrow");
-  Arrow3Def a;
+  Arrow3dDef a;
   a.body = scene.bodyIndex(r.bodyRef(n, "body", scene, "an arrow"));
-  a.show = r.named(r.required(n, "show", "an arrow"), "show", [](const std::string& s) { return kShow3Names.parse(s); },
-                   kShow3Names.list());
-  r.optional(n, "at", a.at, &Reader3::vec3);
+  a.show = r.named(r.required(n, "show", "an arrow"), "show", [](const std::string& s) { return kShow3dNames.parse(s); },
+                   kShow3dNames.list());
+  r.optional(n, "at", a.at, &Reader3d::vec3);
   r.optional(n, "label", a.label, &Reader::text);
   r.optional(n, "value", a.value, &Reader::boolean);
   if (n["color"]) a.color = render::scene::readColor(n["color"], r, "color");
   return a;
 }
 
-void readBlock(const YAML::Node& node, const Reader3& r, const sim::scene3d::SceneDef& model, Scene& out) {
+void readBlock(const YAML::Node& node, const Reader3d& r, const sim::scene3d::SceneDef& model, Scene& out) {
   for (const char* key : {"contacts", "contact_hold", "impulses", "impulse_scale", "velocities", "sat", "sat_axes",
                           "strobe", "force_scale", "momentum_scale", "impact_values"})
     if (node[key]) r.fail(node[key], std::string("'") + key + kOnly2d);
@@ -86,7 +86,7 @@ void readBlock(const YAML::Node& node, const Reader3& r, const sim::scene3d::Sce
   r.optional(node, "time", shared.time, &Reader::boolean);
   r.optional(node, "energy", shared.overlays.energy, &Reader::boolean);
   r.optional(node, "momentum", shared.overlays.momentum, &Reader::boolean);
-  Render3Def& space = out.space;
+  Render3dDef& space = out.space;
   if (node["camera"]) camera(node["camera"], r, space.camera);
   if (const YAML::Node arrows = node["arrows"]) {
     if (!arrows.IsSequence()) r.fail(arrows, "'arrows' must be a list of {body, show}, got " + sim::yaml::describe(arrows));
@@ -109,7 +109,7 @@ Scene readScene(const sim::yaml::SceneSource& source, const sim::yaml::OtherKeys
   Scene s;
   s.model = sim::yaml3d::readModel(source, keys);
   sim::yaml::readGuarded(source.file, [&] {
-    Reader3 r(source.file);
+    Reader3d r(source.file);
     r.placeUnmarked(source.variantMark);
     render::scene::checkOutputNames(source, s.model.name, r);
     s.render.bodies = render::scene::readLooks(source.root["bodies"], r);
@@ -130,7 +130,7 @@ Scene readScene(const sim::yaml::SceneSource& source, const sim::yaml::OtherKeys
 
 draw::Style makeStyle(const Scene& scene, int frameHeight) {
   std::vector<std::string> arrowColors;
-  for (const Arrow3Def& a : scene.space.arrows) arrowColors.push_back(a.color);
+  for (const Arrow3dDef& a : scene.space.arrows) arrowColors.push_back(a.color);
   return render::scene::makeStyle(scene.render, std::vector<bool>(scene.model.bodies.size(), false), arrowColors, frameHeight);
 }
 

@@ -10,7 +10,7 @@
 #include "render/draw/png_io.h"
 #include "render/frame/panels.h"
 #include "render/frame/scene_run.h"
-#include "render/frame3d/scene_run3.h"
+#include "render/frame3d/scene_run3d.h"
 #include "render/jobs/atomic_file.h"
 #include "render/jobs/exit_status.h"
 #include "render/jobs/progress.h"
@@ -43,10 +43,10 @@ struct Drawing<Planar> {
 };
 template <>
 struct Drawing<Spatial> {
-  using Run = render::frame3d::SceneRun3;
-  using Trace = TraceWriter3;
+  using Run = render::frame3d::SceneRun3d;
+  using Trace = TraceWriter3d;
   static constexpr const char* kView = "in perspective, ";
-  static Image poster(render::frame3d::SceneRun3& run, const VideoOutput3& out) { return run.frameAt(out.posterTime); }
+  static Image poster(render::frame3d::SceneRun3d& run, const VideoOutput3d& out) { return run.frameAt(out.posterTime); }
 };
 
 // `draw()`, a divergence of the simulation naming the variant and what was being drawn
@@ -167,16 +167,16 @@ void writeStills(const RenderPlan& plan, const Stills& stills, const Wrote& wrot
 // 3D stills, shot by shot: a fresh run per variant (its trails and paths start from t = 0), alone or
 // side by side
 // (`trace` follows the first run, taken on to its end)
-void writeStills(const RenderPlan3& plan, const Stills3& stills, const Wrote& wrote, TraceWriter3* trace) {
+void writeStills(const RenderPlan3d& plan, const Stills3d& stills, const Wrote& wrote, TraceWriter3d* trace) {
   const render::scene3d::Scene& first = stills.scenes.front();
   GlContext gl(stills.width, stills.height);
   TextRenderer text;
   for (const StillOutput& shot : stills.shots) {
     std::vector<Image> frames;
     for (size_t i = 0; i < plan.variants.size(); ++i) {
-      const PlannedVariant3& v = plan.variants[i];
-      render::frame3d::SceneRun3 run(stills.scenes[i], stills.camera, stills.surveys[i], &gl, &text);
-      TraceWriter3* const traced = &shot == &stills.shots.front() && i == 0 ? trace : nullptr;
+      const PlannedVariant3d& v = plan.variants[i];
+      render::frame3d::SceneRun3d run(stills.scenes[i], stills.camera, stills.surveys[i], &gl, &text);
+      TraceWriter3d* const traced = &shot == &stills.shots.front() && i == 0 ? trace : nullptr;
       follow(run, traced);
       drawing<Spatial>(v, DrawStage::Stills, [&] {
         frames.push_back(run.frameAt(shot.instants[i]));
@@ -222,7 +222,7 @@ void createOutputDirectory(const std::string& dir, const std::string& option) {
 
 void writePlan(const RenderPlan& plan, bool quiet, const Wrote& wrote, TraceWriter* trace) { writeAll(plan, quiet, wrote, trace); }
 
-void writePlan3(const RenderPlan3& plan, bool quiet, const Wrote& wrote, TraceWriter3* trace) {
+void writePlan3d(const RenderPlan3d& plan, bool quiet, const Wrote& wrote, TraceWriter3d* trace) {
   writeAll(plan, quiet, wrote, trace);
 }
 

@@ -26,7 +26,7 @@ void createOutputDirectory(const std::string& dir, const std::string& option = "
 // variant is drawn from (its video's, else its first still's), taken on to the variant's end: what
 // `simulate --trace` writes of the same run
 void writePlan(const RenderPlan& plan, bool quiet, const Wrote& wrote, TraceWriter* trace = nullptr);
-// the same for a 3D scene's plan, with VariantDiverged3 for a divergence
-void writePlan3(const RenderPlan3& plan, bool quiet, const Wrote& wrote, TraceWriter3* trace = nullptr);
+// the same for a 3D scene's plan, with VariantDiverged3d for a divergence
+void writePlan3d(const RenderPlan3d& plan, bool quiet, const Wrote& wrote, TraceWriter3d* trace = nullptr);
 
 }  // namespace render::video

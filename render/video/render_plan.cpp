@@ -9,7 +9,7 @@
 #include "render/frame/panel_camera.h"
 #include "render/frame/panels.h"
 #include "render/frame/title_card.h"
-#include "render/frame3d/energy3.h"
+#include "render/frame3d/energy3d.h"
 #include "render/jobs/exit_status.h"
 #include "render/video/output_names.h"
 #include "sim/core/step_limit.h"
@@ -24,7 +24,7 @@ namespace {
 // the width of the energy panel beside a variant's frame, px, in each dimension's own layout
 double panelBand(const Planar::Scene& def, const Planar::Survey& survey) { return EnergyPanel::bandPx(def, survey, def.render.height); }
 double panelBand(const Spatial::Scene& def, const Spatial::Survey& survey) {
-  return EnergyPanel3::bandPx(def, survey, def.render.height);
+  return EnergyPanel3d::bandPx(def, survey, def.render.height);
 }
 
 // the scene's variants, each read for itself, or the base scene itself when it has none
@@ -365,14 +365,14 @@ RenderPlan planVideos(const LoadVariant& load, const VideoRequest& r) { return p
 RenderPlan planStills(const LoadVariant& load, const StillRequest& r) { return planStillsOf<Planar>(load, r); }
 RenderPlan planLecture(const LoadVariant& load, const LectureRequest& r) { return planLectureOf<Planar>(load, r); }
 
-RenderPlan3 planVideos3(const LoadVariant3& load, const VideoRequest& r) { return planVideosOf<Spatial>(load, r); }
+RenderPlan3d planVideos3d(const LoadVariant3d& load, const VideoRequest& r) { return planVideosOf<Spatial>(load, r); }
 
-RenderPlan3 planStills3(const LoadVariant3& load, const StillRequest& r) {
+RenderPlan3d planStills3d(const LoadVariant3d& load, const StillRequest& r) {
   if (r.impacts) throw UsageError("--impacts: " + r.file + " is a 3D scene, and nothing collides in 3D; give times with --at");
   if (r.strobe.value_or(0) > 0) throw UsageError("--strobe: earlier poses are ghosted in 2D frames only");
   return planStillsOf<Spatial>(load, r);
 }
 
-RenderPlan3 planLecture3(const LoadVariant3& load, const LectureRequest& r) { return planLectureOf<Spatial>(load, r); }
+RenderPlan3d planLecture3d(const LoadVariant3d& load, const LectureRequest& r) { return planLectureOf<Spatial>(load, r); }
 
 }  // namespace render::video

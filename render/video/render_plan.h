@@ -21,7 +21,7 @@
 #include "render/draw/camera.h"
 #include "render/frame/panels.h"
 #include "render/frame/survey.h"
-#include "render/frame3d/survey3.h"
+#include "render/frame3d/survey3d.h"
 #include "render/scene/scene.h"
 #include "render/scene3d/scene.h"
 #include "render/video/time_map.h"
@@ -47,8 +47,8 @@ struct Planar {
 };
 struct Spatial {
   using Scene = render::scene3d::Scene;
-  using Survey = render::frame3d::RunSurvey3;
-  using Camera = render::draw3d::Camera3;
+  using Survey = render::frame3d::RunSurvey3d;
+  using Camera = render::draw3d::Camera3d;
   using Diverged = sim::world3d::Diverged;
 };
 template <class D>
@@ -138,12 +138,12 @@ using VideoOutput = VideoOutputOf<Planar>;
 using Stills = StillsOf<Planar>;
 using RenderPlan = RenderPlanOf<Planar>;
 using VariantDiverged = VariantDivergedOf<Planar>;
-using LoadVariant3 = LoadVariantOf<Spatial>;
-using PlannedVariant3 = PlannedVariantOf<Spatial>;
-using VideoOutput3 = VideoOutputOf<Spatial>;
-using Stills3 = StillsOf<Spatial>;
-using RenderPlan3 = RenderPlanOf<Spatial>;
-using VariantDiverged3 = VariantDivergedOf<Spatial>;
+using LoadVariant3d = LoadVariantOf<Spatial>;
+using PlannedVariant3d = PlannedVariantOf<Spatial>;
+using VideoOutput3d = VideoOutputOf<Spatial>;
+using Stills3d = StillsOf<Spatial>;
+using RenderPlan3d = RenderPlanOf<Spatial>;
+using VariantDiverged3d = VariantDivergedOf<Spatial>;
 
 // what `render` asks for, its values checked
 struct VideoRequest {
@@ -190,9 +190,9 @@ RenderPlan planStills(const LoadVariant& load, const StillRequest& request);
 RenderPlan planLecture(const LoadVariant& load, const LectureRequest& request);
 
 // the same for a 3D scene; `--impacts` and `--strobe` are UsageErrors (nothing collides in 3D, and
-// earlier poses are ghosted in 2D frames only). Throw as `load`, VariantDiverged3
-RenderPlan3 planVideos3(const LoadVariant3& load, const VideoRequest& request);
-RenderPlan3 planStills3(const LoadVariant3& load, const StillRequest& request);
-RenderPlan3 planLecture3(const LoadVariant3& load, const LectureRequest& request);
+// earlier poses are ghosted in 2D frames only). Throw as `load`, VariantDiverged3d
+RenderPlan3d planVideos3d(const LoadVariant3d& load, const VideoRequest& request);
+RenderPlan3d planStills3d(const LoadVariant3d& load, const StillRequest& request);
+RenderPlan3d planLecture3d(const LoadVariant3d& load, const LectureRequest& request);
 
 }  // namespace render::video

@@ -23,11 +23,11 @@ void TraceWriter::rows(const sim::world::World& w) {
   }
 }
 
-TraceWriter3::TraceWriter3(std::ostream& out, const sim::scene3d::SceneDef& def) : out_(out), def_(def) {
+TraceWriter3d::TraceWriter3d(std::ostream& out, const sim::scene3d::SceneDef& def) : out_(out), def_(def) {
   out_ << "t,body,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,kinetic_energy\n";
 }
 
-void TraceWriter3::rows(const sim::world3d::World& w) {
+void TraceWriter3d::rows(const sim::world3d::World& w) {
   for (size_t i = 0; i < w.bodies.size(); ++i) {
     const sim::world3d::Body& b = w.bodies[i];
     out_ << formatNumber(w.time) << ',' << csvField(def_.bodies[i].name);

@@ -28,9 +28,9 @@ class TraceWriter : public sim::world::StepObserver {
 };
 
 // a 3D run: t,body,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,kinetic_energy
-class TraceWriter3 : public sim::world3d::StepObserver {
+class TraceWriter3d : public sim::world3d::StepObserver {
  public:
-  TraceWriter3(std::ostream& out, const sim::scene3d::SceneDef& def);
+  TraceWriter3d(std::ostream& out, const sim::scene3d::SceneDef& def);
   void afterStep(const sim::world3d::World& w) override { rows(w); }
   void afterEvent(const sim::world3d::World& w, const sim::world3d::ImpulseEvent&) override { rows(w); }
   void rows(const sim::world3d::World& w);

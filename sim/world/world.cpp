@@ -110,8 +110,9 @@ void World::start() {
   pending_ = events;
   std::stable_sort(pending_.begin(), pending_.end(),
                    [](const ImpulseEvent& a, const ImpulseEvent& b) { return a.time < b.time; });
-  switches_ = forces.breakpoints();
-  std::sort(switches_.begin(), switches_.end());
+  std::vector<double> instants = forces.breakpoints();
+  for (const ImpulseEvent& e : pending_) instants.push_back(e.time);
+  grid_ = StepGrid(dt, std::move(instants));
   measureScene();
   if (collisions == CollisionMethod::Auto) chooseMethod();
   method_ = OwnedMethod(makeMethod(collisions));
@@ -161,43 +162,28 @@ std::unique_ptr<Method> makeMethod(CollisionMethod method) {
   return makeFreeMotion();
 }
 
-// the next time to stop at: the next grid point, event, force switch or the end, whichever is first
-double World::nextStop(double tEnd) const {
-  double stop = std::min(tEnd, (gridIndex_ + 1) * dt);
-  if (nextEvent_ < pending_.size()) stop = std::min(stop, pending_[nextEvent_].time);
-  auto sw = std::upper_bound(switches_.begin(), switches_.end(), time + settings::kTimeSnap * dt);
-  if (sw != switches_.end()) stop = std::min(stop, *sw);
-  return stop;
-}
-
 void World::advanceTo(double tEnd, StepObserver* observer) {
   start();
   applyDueEvents(observer);
-  while (time < tEnd - settings::kTimeSnap * dt) stepTo(nextStop(tEnd), tEnd, observer);
+  while (time < tEnd && !grid_.same(time, tEnd)) stepTo(grid_.nextStop(time, tEnd), tEnd, observer);
   time = std::max(time, tEnd);
 }
 
 void World::advanceWithin(double t, double tEnd, StepObserver* observer) {
   start();
   applyDueEvents(observer);
-  while (time < tEnd - settings::kTimeSnap * dt) {
-    const double stop = nextStop(tEnd);
-    if (stop > t + settings::kTimeSnap * dt) break;
+  while (time < tEnd && !grid_.same(time, tEnd)) {
+    const double stop = grid_.nextStop(time, tEnd);
+    if (stop > t && !grid_.same(stop, t)) break;
     stepTo(stop, tEnd, observer);
   }
 }
 
 // one step from now to `stop` on the way to tEnd, the events due there applied
 void World::stepTo(double stop, double tEnd, StepObserver* observer) {
-  const double grid = (gridIndex_ + 1) * dt;
   step(stop - time);
-  // land on the grid point itself when the stop is (within round-off) the grid point
-  if (std::abs(stop - grid) <= settings::kTimeSnap * dt) {
-    ++gridIndex_;
-    time = std::abs(stop - tEnd) <= settings::kTimeSnap * dt ? tEnd : grid;
-  } else {
-    time = stop;
-  }
+  // land on the grid point or tEnd itself when the stop is one of them within round-off
+  time = grid_.arrive(stop, tEnd);
   if (observer) observer->afterStep(*this);
   applyDueEvents(observer);
 }
@@ -245,7 +231,7 @@ void World::switchToStackSolver(double at) {
 }
 
 void World::applyDueEvents(StepObserver* observer) {
-  while (nextEvent_ < pending_.size() && pending_[nextEvent_].time <= time + settings::kTimeSnap * dt) {
+  while (nextEvent_ < pending_.size() && (pending_[nextEvent_].time < time || grid_.same(pending_[nextEvent_].time, time))) {
     const ImpulseEvent& e = pending_[nextEvent_++];
     if (sleeping()) sleep_.wake(e.body, contacts);
     const Body& b = bodies[e.body];

@@ -13,6 +13,7 @@
 #include "sim/core/forces.h"
 #include "sim/core/integrators.h"
 #include "sim/core/settings.h"
+#include "sim/core/step_grid.h"
 #include "sim/world/contact.h"
 #include "sim/world/methods.h"
 #include "sim/world/sleep.h"
@@ -134,7 +135,6 @@ class World {
  private:
   void measureScene();
   void chooseMethod();
-  double nextStop(double tEnd) const;
   void stepTo(double stop, double tEnd, StepObserver* observer);
   void step(double h);
   void switchToStackSolver(double at);
@@ -148,8 +148,7 @@ class World {
   bool started_ = false;
   std::vector<ImpulseEvent> pending_;  // sorted by time
   size_t nextEvent_ = 0;
-  std::vector<double> switches_;       // sorted force on/off times
-  long gridIndex_ = 0;                 // time lies in [gridIndex_ dt, (gridIndex_ + 1) dt)
+  StepGrid grid_;                      // steps of dt, cut at the events and force switches
   double sceneSize_ = 1.0;
   Sleep sleep_;                        // the islands asleep and the bodies' time at rest
   OwnedMethod method_;                 // the unit of `collisions`, made by start()

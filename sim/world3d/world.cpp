@@ -19,7 +19,7 @@ void World::start() {
                    [](const ImpulseEvent& a, const ImpulseEvent& b) { return a.time < b.time; });
   std::vector<double> instants = forces.breakpoints();
   for (const ImpulseEvent& e : pending_) instants.push_back(e.time);
-  grid_ = StepGrid(dt, std::move(instants));
+  grid_ = sim::core::StepGrid(dt, std::move(instants));
   started_ = true;
 }
 

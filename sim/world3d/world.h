@@ -8,7 +8,7 @@
 
 #include "sim/core/settings.h"
 #include "sim/world3d/integrators.h"
-#include "sim/world3d/step_grid.h"
+#include "sim/core/step_grid.h"
 
 namespace sim::world3d {
 
@@ -56,7 +56,7 @@ class World {
   // for dt ≤ 0. The events, the force switches and dt are read when the first call starts the run.
   void advanceTo(double tEnd, StepObserver* observer = nullptr);
   // advance by the steps that advanceTo(tEnd) takes as long as they end by t, never splitting one
-  // at t: a picture at t between two of them is drawn from a copy advanced to t (scene_run3.h)
+  // at t: a picture at t between two of them is drawn from a copy advanced to t (scene_run3d.h)
   void advanceWithin(double t, double tEnd, StepObserver* observer = nullptr);
 
  private:
@@ -67,7 +67,7 @@ class World {
   void checkFinite() const;
 
   bool started_ = false;
-  StepGrid grid_;
+  sim::core::StepGrid grid_;
   std::vector<ImpulseEvent> pending_;  // sorted by time
   size_t nextEvent_ = 0;
   States scratch_;

@@ -10,7 +10,7 @@
 #include "sim/yaml/force_reader.h"
 #include "sim/yaml/path_name.h"
 #include "sim/yaml/size_limits.h"
-#include "sim/yaml3d/reader3.h"
+#include "sim/yaml3d/reader3d.h"
 
 namespace sim::yaml3d {
 using namespace sim::scene3d;
@@ -40,9 +40,9 @@ const Refusals kShapeRefusals = {
     {"plane", std::string(kNoContacts) + "plane' obstacles"}};
 const Refusals kExpectRefusals = {{"angle", "a 3D body's rotation is checked by 'orientation': [w, x, y, z]"}};
 
-class SceneReader3 : public Reader3 {
+class SceneReader3d : public Reader3d {
  public:
-  SceneReader3(const SceneSource& source, const OtherKeys& others) : Reader3(source.file), others_(others) {
+  SceneReader3d(const SceneSource& source, const OtherKeys& others) : Reader3d(source.file), others_(others) {
     placeUnmarked(source.variantMark);
   }
 
@@ -64,7 +64,7 @@ class SceneReader3 : public Reader3 {
     optional(root, "duration", s.duration, &Reader::positive);
     if (const YAML::Node w = root["world"]) {
       keys(w, {"gravity"}, kWorldRefusals, "world");
-      optional(w, "gravity", s.gravity, &Reader3::vec3);
+      optional(w, "gravity", s.gravity, &Reader3d::vec3);
     }
     if (const YAML::Node sim = root["sim"]) {
       keys(sim, {"integrator", "dt", "normalize", "max_steps", "max_bodies", "max_entries"}, kSimRefusals, "sim");
@@ -141,10 +141,10 @@ class SceneReader3 : public Reader3 {
     optional(n, "density", b.density, &Reader::positive);
     optional(n, "mass", b.mass, &Reader::positive);
     if (const YAML::Node i = n["inertia"]) b.inertia = inertia(i, "inertia");
-    optional(n, "position", b.position, &Reader3::vec3);
-    optional(n, "orientation", b.orientation, &Reader3::orientation);
-    optional(n, "velocity", b.velocity, &Reader3::vec3);
-    optional(n, "angular_velocity", b.angularVelocity, &Reader3::vec3);
+    optional(n, "position", b.position, &Reader3d::vec3);
+    optional(n, "orientation", b.orientation, &Reader3d::orientation);
+    optional(n, "velocity", b.velocity, &Reader3d::vec3);
+    optional(n, "angular_velocity", b.angularVelocity, &Reader3d::vec3);
     // a tensor that no solid has (not symmetric, a moment not positive, I1 + I2 < I3) is located here
     try {
       (void)buildBody(b);
@@ -171,21 +171,21 @@ class SceneReader3 : public Reader3 {
     for (const char* key : {"position", "orientation", "velocity", "angular_velocity", "quaternion_norm", "cone_angle",
                             "precession_rate", "space_precession_rate", "flip_period"})
       if (n[key] && e.body.empty()) fail(n[key], std::string("'") + key + "' is a body's: add 'body:'");
-    optional(n, "position", e.position, &Reader3::vec3);
+    optional(n, "position", e.position, &Reader3d::vec3);
     // typed as the scene's orientation is, but as an answer: a quaternion is compared as written
     if (const YAML::Node q = n["orientation"]) {
       if (!q.IsSequence() || q.size() != 4) fail(q, "expected [w, x, y, z] for 'orientation'");
       e.orientation = Quat(finite(q[0], "orientation"), finite(q[1], "orientation"), finite(q[2], "orientation"),
                            finite(q[3], "orientation"));
     }
-    optional(n, "velocity", e.velocity, &Reader3::vec3);
-    optional(n, "angular_velocity", e.angularVelocity, &Reader3::vec3);
+    optional(n, "velocity", e.velocity, &Reader3d::vec3);
+    optional(n, "angular_velocity", e.angularVelocity, &Reader3d::vec3);
     optional(n, "quaternion_norm", e.quaternionNorm, &Reader::positive);
     optional(n, "kinetic_energy", e.kineticEnergy, &Reader::finite);
     optional(n, "potential_energy", e.potentialEnergy, &Reader::finite);
     optional(n, "total_energy", e.totalEnergy, &Reader::finite);
-    optional(n, "momentum", e.momentum, &Reader3::vec3);
-    optional(n, "angular_momentum", e.angularMomentum, &Reader3::vec3);
+    optional(n, "momentum", e.momentum, &Reader3d::vec3);
+    optional(n, "angular_momentum", e.angularMomentum, &Reader3d::vec3);
     optional(n, "cone_angle", e.coneAngle, &Reader::nonNegative);
     optional(n, "precession_rate", e.precessionRate, &Reader::finite);
     optional(n, "space_precession_rate", e.spacePrecessionRate, &Reader::finite);
@@ -203,7 +203,7 @@ class SceneReader3 : public Reader3 {
 }  // namespace
 
 SceneDef readModel(const SceneSource& source, const OtherKeys& others) {
-  return sim::yaml::readGuarded(source.file, [&] { return SceneReader3(source, others).read(source); });
+  return sim::yaml::readGuarded(source.file, [&] { return SceneReader3d(source, others).read(source); });
 }
 
 SceneDef loadSceneText(const std::string& text, const std::string& file, const std::string& variant) {

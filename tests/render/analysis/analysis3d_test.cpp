@@ -26,10 +26,10 @@ forces:
 )";
 
 // least-squares slope of log(error) against log(dt)
-double slope(const std::vector<render::analysis::Sweep3Row>& rows) {
+double slope(const std::vector<render::analysis::Sweep3dRow>& rows) {
   double sx = 0, sy = 0, sxx = 0, sxy = 0;
   const double n = static_cast<double>(rows.size());
-  for (const render::analysis::Sweep3Row& r : rows) {
+  for (const render::analysis::Sweep3dRow& r : rows) {
     const double x = std::log(r.dt), y = std::log(r.error);
     sx += x, sy += y, sxx += x * x, sxy += x * y;
   }
@@ -45,17 +45,17 @@ TEST_CASE("3D sweep: the work-precision slopes give each integrator's order, 1, 
     double from;  // the largest step of four halvings, in each method's asymptotic range
     double order;
   };
-  const render::analysis::Sweep3Reference reference = render::analysis::sweepReference3(def, 2.5e-4);
+  const render::analysis::Sweep3dReference reference = render::analysis::sweepReference3d(def, 2.5e-4);
   CHECK(reference.name.find("rk4") != std::string::npos);
   for (const Case& c : {Case{w3::Integrator::ExplicitEuler, 2e-3, 1}, Case{w3::Integrator::SymplecticEuler, 2e-3, 1},
                         Case{w3::Integrator::Midpoint, 8e-3, 2}, Case{w3::Integrator::Rk4, 4e-2, 4},
                         Case{w3::Integrator::Splitting, 8e-3, 2}}) {
-    std::vector<render::analysis::Sweep3Row> rows;
-    for (double h = c.from; h > c.from / 10.0; h /= 2.0) rows.push_back(render::analysis::runSweepCase3(def, c.method, h, reference, 1));
+    std::vector<render::analysis::Sweep3dRow> rows;
+    for (double h = c.from; h > c.from / 10.0; h /= 2.0) rows.push_back(render::analysis::runSweepCase3d(def, c.method, h, reference, 1));
     const double measured = slope(rows);
     MESSAGE(w3::kIntegratorNames.name(c.method), ": slope ", measured);
     CHECK(measured == doctest::Approx(c.order).epsilon(0.3 / c.order));
-    for (const render::analysis::Sweep3Row& r : rows) {
+    for (const render::analysis::Sweep3dRow& r : rows) {
       CHECK(r.metrics.finite);
       CHECK(r.steps == std::lround(1.0 / r.dt));
     }

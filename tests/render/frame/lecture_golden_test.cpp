@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "render/frame/scene_run.h"
-#include "render/frame3d/scene_run3.h"
+#include "render/frame3d/scene_run3d.h"
 #include "render/scene/scene_style.h"
 #include "sim/yaml/scene_yaml.h"
 #include "support/drawn_scene.h"
@@ -42,8 +42,8 @@ render::draw::Image frame3d(const std::string& file, render::draw::GlContext& gl
   render::scene3d::Scene def = load(base.model.variantNames.empty() ? "" : base.model.variantNames.front());
   def.render.width = kWidth;
   def.render.height = kHeight;
-  const render::frame3d::RunSurvey3 survey = render::frame3d::surveyRun(def);
-  render::frame3d::SceneRun3 run(def, render::frame3d::cameraFor(def, survey), survey, &gl, &text);
+  const render::frame3d::RunSurvey3d survey = render::frame3d::surveyRun(def);
+  render::frame3d::SceneRun3d run(def, render::frame3d::cameraFor(def, survey), survey, &gl, &text);
   return run.frameAt(0.5 * def.model.duration);
 }
 

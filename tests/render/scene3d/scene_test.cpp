@@ -61,11 +61,11 @@ TEST_CASE("a 3D render: block: shared keys, a fixed camera, arrows and scales") 
   CHECK(s.space.camera.up == Vec3::UnitZ());
   CHECK(s.space.camera.fov == 40.0);
   REQUIRE(s.space.arrows.size() == 5);
-  CHECK(s.space.arrows[1].show == Arrow3Def::Show::Omega);
+  CHECK(s.space.arrows[1].show == Arrow3dDef::Show::Omega);
   CHECK(s.space.arrows[1].value);
   CHECK(s.space.arrows[2].color == "#000000");
   CHECK(s.space.arrows[3].at == Vec3(0.3, 0, 0));
-  CHECK(s.space.arrows[4].show == Arrow3Def::Show::State);
+  CHECK(s.space.arrows[4].show == Arrow3dDef::Show::State);
   CHECK(s.space.omegaScale == 0.1);
   CHECK_FALSE(s.space.worldAxes);
   // the style: the body's own color, and the black of the L arrow

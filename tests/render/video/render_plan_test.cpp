@@ -62,7 +62,7 @@ variants:
   slow: {duration: 0.5, bodies: [{name: box, angular_velocity: [0, 2, 0]}]}
 )";
 
-render::video::LoadVariant3 spin(std::map<std::string, int>* reads = nullptr) {
+render::video::LoadVariant3d spin(std::map<std::string, int>* reads = nullptr) {
   return [reads](const std::string& variant) {
     if (reads) ++(*reads)[variant];
     return render::scene3d::readScene(sim::yaml::sceneSourceText(kSpin, "spin.yaml", variant));
@@ -331,7 +331,7 @@ TEST_CASE("lecture panels: the default at the shortest variant's duration; impac
 
 TEST_CASE("3D scenes are planned as 2D ones: the same names, one survey per variant, panels at the shortest duration") {
   std::map<std::string, int> reads;
-  const render::video::RenderPlan3 plan = render::video::planLecture3(spin(&reads), {.root = "pack", .file = "spin.yaml", .fps = 10});
+  const render::video::RenderPlan3d plan = render::video::planLecture3d(spin(&reads), {.root = "pack", .file = "spin.yaml", .fps = 10});
   CHECK(reads == std::map<std::string, int>{{"", 1}, {"fast", 1}, {"slow", 1}});
   CHECK(plan.paths() == std::vector<std::string>{"pack/spin/spin-fast.mp4", "pack/spin/spin-fast.png", "pack/spin/spin-slow.mp4",
                                                  "pack/spin/spin-slow.png", "pack/spin/spin-panels-t0.25.png"});
@@ -347,12 +347,12 @@ TEST_CASE("3D scenes are planned as 2D ones: the same names, one survey per vari
   CHECK(plan.stills->surveys[1].maxOmega == doctest::Approx(4.0));
 
   // a snapshot of one variant at two times, and what 3D refuses
-  const render::video::RenderPlan3 shots = render::video::planStills3(spin(), {.root = "o", .file = "spin.yaml", .variant = "slow", .times = {0, 0.5}});
+  const render::video::RenderPlan3d shots = render::video::planStills3d(spin(), {.root = "o", .file = "spin.yaml", .variant = "slow", .times = {0, 0.5}});
   CHECK(shots.paths() == std::vector<std::string>{"o/spin/spin-slow-t0.png", "o/spin/spin-slow-t0.5.png"});
-  CHECK(usageError([] { render::video::planStills3(spin(), {.file = "spin.yaml", .variant = "slow", .times = {0.75}}); }) ==
+  CHECK(usageError([] { render::video::planStills3d(spin(), {.file = "spin.yaml", .variant = "slow", .times = {0.75}}); }) ==
         "--at: 0.75 s is outside the scene's duration [0, 0.5]");
-  CHECK(usageError([] { render::video::planStills3(spin(), {.file = "spin.yaml", .impacts = true}); }) ==
+  CHECK(usageError([] { render::video::planStills3d(spin(), {.file = "spin.yaml", .impacts = true}); }) ==
         "--impacts: spin.yaml is a 3D scene, and nothing collides in 3D; give times with --at");
-  CHECK(usageError([] { render::video::planStills3(spin(), {.file = "spin.yaml", .times = {0}, .strobe = 2}); }) ==
+  CHECK(usageError([] { render::video::planStills3d(spin(), {.file = "spin.yaml", .times = {0}, .strobe = 2}); }) ==
         "--strobe: earlier poses are ghosted in 2D frames only");
 }

@@ -1,4 +1,4 @@
-#include "sim/world3d/step_grid.h"
+#include "sim/core/step_grid.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,18 +6,18 @@
 
 #include "sim/core/settings.h"
 
-namespace sim::world3d {
+namespace sim::core {
 
 StepGrid::StepGrid(double dt, std::vector<double> instants) : dt_(dt), instants_(std::move(instants)) {
   std::sort(instants_.begin(), instants_.end());
 }
 
-bool StepGrid::same(double a, double b) const { return std::abs(a - b) <= sim::core::settings::kTimeSnap * dt_; }
+bool StepGrid::same(double a, double b) const { return std::abs(a - b) <= settings::kTimeSnap * dt_; }
 
 double StepGrid::nextStop(double time, double tEnd) const {
   double stop = std::min(tEnd, (index_ + 1) * dt_);
   // the first instant after now (an instant at now has been dealt with)
-  const auto next = std::upper_bound(instants_.begin(), instants_.end(), time + sim::core::settings::kTimeSnap * dt_);
+  const auto next = std::upper_bound(instants_.begin(), instants_.end(), time + settings::kTimeSnap * dt_);
   if (next != instants_.end()) stop = std::min(stop, *next);
   return stop;
 }
@@ -29,4 +29,4 @@ double StepGrid::arrive(double stop, double tEnd) {
   return same(gridPoint, tEnd) ? tEnd : gridPoint;
 }
 
-}  // namespace sim::world3d
+}  // namespace sim::core

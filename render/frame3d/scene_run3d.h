@@ -6,17 +6,17 @@
 
 #include <memory>
 
-#include "render/draw3d/gl_canvas3.h"
+#include "render/draw3d/gl_canvas3d.h"
 #include "render/frame/frame_source.h"
-#include "render/frame3d/frame_painter3.h"
+#include "render/frame3d/frame_painter3d.h"
 
 namespace render::frame3d {
 
-class SceneRun3 final : public render::frame::FrameSource {
+class SceneRun3d final : public render::frame::FrameSource {
  public:
   // `def` must outlive the run; the GL context is the frame's size and current on this thread
   // (without one, only draw lists can be made)
-  SceneRun3(const render::scene3d::Scene& def, const Camera3& camera, const RunSurvey3& survey,
+  SceneRun3d(const render::scene3d::Scene& def, const Camera3d& camera, const RunSurvey3d& survey,
             render::draw::GlContext* gl = nullptr, render::draw::TextRenderer* text = nullptr);
 
   // where the run ends, its last step cut there: the scene's duration unless set before the first frame
@@ -35,7 +35,7 @@ class SceneRun3 final : public render::frame::FrameSource {
   render::draw::Image answerCard() override;
   void showSlowMotion(std::function<double(double)> factorAt) override { painter_.showSlowMotion(std::move(factorAt)); }
   // the calls of the frame at time t, without GL (the draw-list level of the tests)
-  DrawList3 drawListAt(double t);
+  DrawList3d drawListAt(double t);
 
   // the world the last picture was drawn from: the run's own, or its copy between two steps
   const sim::world3d::World& world() const { return shown_ ? shown_->world : run_.world; }
@@ -46,11 +46,11 @@ class SceneRun3 final : public render::frame::FrameSource {
   // the world and its history at one moment of the run (copied to draw between steps)
   struct State {
     sim::world3d::World world;
-    History3 history;
+    History3d history;
   };
   // what the run's own steps are told: its history, and the follower
   struct Observers : sim::world3d::StepObserver {
-    History3* history = nullptr;
+    History3d* history = nullptr;
     sim::world3d::StepObserver* follower = nullptr;
     void afterStep(const sim::world3d::World& w) override;
     void afterEvent(const sim::world3d::World& w, const sim::world3d::ImpulseEvent& e) override;
@@ -59,15 +59,15 @@ class SceneRun3 final : public render::frame::FrameSource {
   const State& reach(double t);
 
   const render::scene3d::Scene& def_;
-  Camera3 camera_;
+  Camera3d camera_;
   render::draw::Style style_;
-  FramePainter3 painter_;
+  FramePainter3d painter_;
   State run_;
   Observers observers_;
   double end_;
   std::unique_ptr<State> between_;  // the copy drawn between steps (kept for its storage)
   const State* shown_ = nullptr;    // the state of the last picture
-  std::unique_ptr<GlCanvas3> canvas_;
+  std::unique_ptr<GlCanvas3d> canvas_;
   render::draw::TextRenderer* text_;
 };
 

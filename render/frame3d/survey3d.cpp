@@ -1,10 +1,10 @@
-#include "render/frame3d/survey3.h"
+#include "render/frame3d/survey3d.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include "render/frame/caption.h"
-#include "render/frame3d/energy3.h"
+#include "render/frame3d/energy3d.h"
 #include "render/scene/scene_style.h"
 #include "sim/scene3d/scene_build.h"
 #include "sim/world3d/diagnostics.h"
@@ -16,7 +16,7 @@ namespace {
 
 class Surveyor : public StepObserver {
  public:
-  Surveyor(const render::scene3d::Scene& def, RunSurvey3& out) : def_(def), out_(out) {}
+  Surveyor(const render::scene3d::Scene& def, RunSurvey3d& out) : def_(def), out_(out) {}
   void afterStep(const World& w) override {
     for (const Body& b : w.bodies) {
       out_.bounds.add(Ball{b.x, boundingRadius(b.shape)});
@@ -36,7 +36,7 @@ class Surveyor : public StepObserver {
 
  private:
   const render::scene3d::Scene& def_;
-  RunSurvey3& out_;
+  RunSurvey3d& out_;
 };
 
 }  // namespace
@@ -55,8 +55,8 @@ std::vector<double> energyValues(const World& world) {
   return values;
 }
 
-RunSurvey3 surveyRun(const render::scene3d::Scene& def, double until) {
-  RunSurvey3 survey;
+RunSurvey3d surveyRun(const render::scene3d::Scene& def, double until) {
+  RunSurvey3d survey;
   World world = sim::scene3d::buildWorld(def.model);
   Surveyor surveyor(def, survey);
   surveyor.afterStep(world);
@@ -67,10 +67,10 @@ RunSurvey3 surveyRun(const render::scene3d::Scene& def, double until) {
   return survey;
 }
 
-void shareScales(const std::vector<RunSurvey3*>& surveys) {
+void shareScales(const std::vector<RunSurvey3d*>& surveys) {
   if (surveys.empty()) return;
-  RunSurvey3 all = *surveys.front();
-  for (const RunSurvey3* s : surveys) {
+  RunSurvey3d all = *surveys.front();
+  for (const RunSurvey3d* s : surveys) {
     all.maxSpeed = std::max(all.maxSpeed, s->maxSpeed);
     all.maxOmega = std::max(all.maxOmega, s->maxOmega);
     all.maxAngularMomentum = std::max(all.maxAngularMomentum, s->maxAngularMomentum);
@@ -79,27 +79,27 @@ void shareScales(const std::vector<RunSurvey3*>& surveys) {
     all.maxLinearMomentum = std::max(all.maxLinearMomentum, s->maxLinearMomentum);
     all.maxWorldAngularMomentum = std::max(all.maxWorldAngularMomentum, s->maxWorldAngularMomentum);
   }
-  for (RunSurvey3* s : surveys) {
+  for (RunSurvey3d* s : surveys) {
     all.bounds = s->bounds;
     *s = all;
   }
 }
 
-Camera3 cameraFor(const render::scene3d::Scene& def, const RunSurvey3& survey) { return cameraFor(def, survey, survey.bounds); }
+Camera3d cameraFor(const render::scene3d::Scene& def, const RunSurvey3d& survey) { return cameraFor(def, survey, survey.bounds); }
 
-Camera3 cameraFor(const render::scene3d::Scene& def, const RunSurvey3& survey, const Box3& bounds) {
+Camera3d cameraFor(const render::scene3d::Scene& def, const RunSurvey3d& survey, const Box3d& bounds) {
   const render::scene::RenderDef& r = def.render;
-  const render::scene3d::Camera3Def& c = def.space.camera;
-  if (!c.automatic) return Camera3::look(c.eye, c.target, c.up, c.fov, r.width, r.height, bounds.ball());
+  const render::scene3d::Camera3dDef& c = def.space.camera;
+  if (!c.automatic) return Camera3d::look(c.eye, c.target, c.up, c.fov, r.width, r.height, bounds.ball());
   // with a caption the bodies are fitted above its band, with an energy panel left of it (a panel
   // wider than half the frame is drawn over the bodies instead: they need the room more)
   const double band = render::frame::captionOf(r, def.model.description).empty()
                           ? 0.0
                           : render::frame::captionLayout(render::scene::fontSizeFor(r, r.height)).band();
-  const double panel = EnergyPanel3::bandPx(def, survey, r.height);
+  const double panel = EnergyPanel3d::bandPx(def, survey, r.height);
   const int above = static_cast<int>(std::lround(r.height - band));
   const int left = static_cast<int>(std::lround(panel <= 0.5 * r.width ? r.width - panel : r.width));
-  return Camera3::fit(bounds, c.direction, c.up, c.fov, c.margin, r.width, r.height, left, above);
+  return Camera3d::fit(bounds, c.direction, c.up, c.fov, c.margin, r.width, r.height, left, above);
 }
 
 }  // namespace render::frame3d

@@ -5,15 +5,15 @@
 
 #include <vector>
 
-#include "render/draw3d/camera3.h"
+#include "render/draw3d/camera3d.h"
 #include "render/scene3d/scene.h"
 #include "sim/world3d/world.h"
 
 namespace render::frame3d {
 using namespace render::draw3d;
 
-struct RunSurvey3 {
-  Box3 bounds;                      // every body's bounding ball at every step, and the anchors, m
+struct RunSurvey3d {
+  Box3d bounds;                      // every body's bounding ball at every step, and the anchors, m
   double maxSpeed = 0.0;            // |v| of any body, m/s
   double maxOmega = 0.0;            // |ω| of any body, rad/s
   double maxAngularMomentum = 0.0;  // |L| of any body about its center, kg·m²/s
@@ -24,9 +24,9 @@ struct RunSurvey3 {
 };
 
 // the scene run from 0 to `until` (its duration when negative); throws sim::world3d::Diverged
-RunSurvey3 surveyRun(const render::scene3d::Scene& def, double until = -1.0);
+RunSurvey3d surveyRun(const render::scene3d::Scene& def, double until = -1.0);
 // the scales (not the bounds) of every survey set to the extremes over all, for panels side by side
-void shareScales(const std::vector<RunSurvey3*>& surveys);
+void shareScales(const std::vector<RunSurvey3d*>& surveys);
 
 // the energy panel's bars now: per body ½ m v·v and ½ ω·L, the potential energy (with gravity or a
 // spring), the total
@@ -34,7 +34,7 @@ std::vector<double> energyValues(const sim::world3d::World& world);
 
 // the scene's camera: fixed, or fitted over `bounds` (the survey's own by default) along its view
 // direction, above the caption's band and left of the energy panel's
-Camera3 cameraFor(const render::scene3d::Scene& def, const RunSurvey3& survey);
-Camera3 cameraFor(const render::scene3d::Scene& def, const RunSurvey3& survey, const Box3& bounds);
+Camera3d cameraFor(const render::scene3d::Scene& def, const RunSurvey3d& survey);
+Camera3d cameraFor(const render::scene3d::Scene& def, const RunSurvey3d& survey, const Box3d& bounds);
 
 }  // namespace render::frame3d

@@ -1,4 +1,4 @@
-#include "render/frame3d/scene_run3.h"
+#include "render/frame3d/scene_run3d.h"
 
 #include <stdexcept>
 
@@ -18,7 +18,7 @@ render::frame::TextWidth textWidth(render::draw::TextRenderer* text, int sizePx)
 
 }  // namespace
 
-SceneRun3::SceneRun3(const render::scene3d::Scene& def, const Camera3& camera, const RunSurvey3& survey,
+SceneRun3d::SceneRun3d(const render::scene3d::Scene& def, const Camera3d& camera, const RunSurvey3d& survey,
                      render::draw::GlContext* gl, render::draw::TextRenderer* text)
     : def_(def),
       camera_(camera),
@@ -26,66 +26,66 @@ SceneRun3::SceneRun3(const render::scene3d::Scene& def, const Camera3& camera, c
       painter_(def, camera, survey, textWidth(text, style_.fontSize)),
       run_([&] {
         sim::world3d::World world = sim::scene3d::buildWorld(def.model);
-        History3 history(world, painter_.historyOptions());
+        History3d history(world, painter_.historyOptions());
         return State{std::move(world), std::move(history)};
       }()),
       end_(def.model.duration),
       text_(text) {
-  if (gl && text) canvas_ = std::make_unique<GlCanvas3>(*gl, *text, style_);
+  if (gl && text) canvas_ = std::make_unique<GlCanvas3d>(*gl, *text, style_);
 }
 
-void SceneRun3::Observers::afterStep(const sim::world3d::World& w) {
+void SceneRun3d::Observers::afterStep(const sim::world3d::World& w) {
   history->afterStep(w);
   if (follower) follower->afterStep(w);
 }
 
-void SceneRun3::Observers::afterEvent(const sim::world3d::World& w, const sim::world3d::ImpulseEvent& e) {
+void SceneRun3d::Observers::afterEvent(const sim::world3d::World& w, const sim::world3d::ImpulseEvent& e) {
   history->afterEvent(w, e);
   if (follower) follower->afterEvent(w, e);
 }
 
-const SceneRun3::State& SceneRun3::reach(double t) {
+const SceneRun3d::State& SceneRun3d::reach(double t) {
   observers_.history = &run_.history;
   const State& state = render::frame::reachBetween(run_, between_, t, end_, &observers_);
   shown_ = &state;
   return state;
 }
 
-void SceneRun3::finish() {
+void SceneRun3d::finish() {
   observers_.history = &run_.history;
   run_.world.advanceTo(end_, &observers_);
   shown_ = &run_;
 }
 
-render::draw::Image SceneRun3::frameAt(double t) {
+render::draw::Image SceneRun3d::frameAt(double t) {
   render::draw::Image frame;
   frameAt(t, frame);
   return frame;
 }
 
-void SceneRun3::frameAt(double t, render::draw::Image& frame) {
-  if (!canvas_) throw std::logic_error("SceneRun3::frameAt needs a GL context");
+void SceneRun3d::frameAt(double t, render::draw::Image& frame) {
+  if (!canvas_) throw std::logic_error("SceneRun3d::frameAt needs a GL context");
   const State& state = reach(t);
   canvas_->begin(camera_);
   painter_.paint(state.world, state.history, *canvas_);
   canvas_->finish(frame);
 }
 
-render::draw::Image SceneRun3::titleCard() {
-  if (!text_) throw std::logic_error("SceneRun3::titleCard needs a text renderer");
+render::draw::Image SceneRun3d::titleCard() {
+  if (!text_) throw std::logic_error("SceneRun3d::titleCard needs a text renderer");
   return render::frame::composeSceneCard(def_.render, def_.model.name, def_.model.description, false, camera_.widthPx(),
                                          camera_.heightPx(), style_, *text_);
 }
 
-render::draw::Image SceneRun3::answerCard() {
-  if (!text_) throw std::logic_error("SceneRun3::answerCard needs a text renderer");
+render::draw::Image SceneRun3d::answerCard() {
+  if (!text_) throw std::logic_error("SceneRun3d::answerCard needs a text renderer");
   return render::frame::composeSceneCard(def_.render, def_.model.name, def_.model.description, true, camera_.widthPx(),
                                          camera_.heightPx(), style_, *text_);
 }
 
-DrawList3 SceneRun3::drawListAt(double t) {
+DrawList3d SceneRun3d::drawListAt(double t) {
   const State& state = reach(t);
-  DrawList3 list;
+  DrawList3d list;
   painter_.paint(state.world, state.history, list);
   return list;
 }

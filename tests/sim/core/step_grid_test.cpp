@@ -1,8 +1,8 @@
-#include "sim/world3d/step_grid.h"
+#include "sim/core/step_grid.h"
 
 #include <doctest/doctest.h>
 
-using sim::world3d::StepGrid;
+using sim::core::StepGrid;
 
 TEST_CASE("steps stop at the next grid point, instant or end, whichever comes first") {
   StepGrid grid(0.1, {0.45, 0.25, 0.25});

@@ -4,7 +4,7 @@
 // drawn twice gives the same bytes.
 #include <doctest/doctest.h>
 
-#include "render/frame3d/scene_run3.h"
+#include "render/frame3d/scene_run3d.h"
 #include "sim/yaml/scene_source.h"
 #include "support/golden_compare.h"
 
@@ -35,10 +35,10 @@ render:
 
 render::draw::Image frame(double t) {
   const render::scene3d::Scene def = render::scene3d::readScene(sim::yaml::sceneSourceText(kScene, "inline.yaml"));
-  const RunSurvey3 survey = surveyRun(def);
+  const RunSurvey3d survey = surveyRun(def);
   render::draw::GlContext gl(def.render.width, def.render.height);
   render::draw::TextRenderer text;
-  SceneRun3 run(def, cameraFor(def, survey), survey, &gl, &text);
+  SceneRun3d run(def, cameraFor(def, survey), survey, &gl, &text);
   return run.frameAt(t);
 }
 

@@ -1,6 +1,6 @@
 // The drawing interface of 3D frames: solids in perspective, and a 2D canvas over them for
 // everything drawn on top (arrows, trails, text, panels), in pixels with y up (overlayPoint).
-// GlCanvas3 draws it with OpenGL; DrawList3 records it for tests, as DrawList does in 2D.
+// GlCanvas3d draws it with OpenGL; DrawList3d records it for tests, as DrawList does in 2D.
 #pragma once
 
 #include <string>
@@ -14,9 +14,9 @@ namespace render::draw3d {
 using render::draw::Canvas;
 using render::draw::Pen;
 
-class Canvas3 {
+class Canvas3d {
  public:
-  virtual ~Canvas3() = default;
+  virtual ~Canvas3d() = default;
   // `mesh` (body coordinates) at the pose r = x + R r_b, shaded in its body's color (pen.body), with
   // a depth buffer, its creases, silhouette and curves outlined
   virtual void solid(const Mesh& mesh, const Vec3& x, const Mat3& rotation, const Pen& pen) = 0;
@@ -24,13 +24,13 @@ class Canvas3 {
   virtual Canvas& overlay() = 0;
 };
 
-// a pixel (y down from the top, as Camera3 gives it) in the overlay's coordinates (y up)
+// a pixel (y down from the top, as Camera3d gives it) in the overlay's coordinates (y up)
 inline Vec2 overlayPoint(const Vec2& pixel, int heightPx) { return {pixel.x(), heightPx - pixel.y()}; }
 // the 2D camera whose world is the overlay's: one unit a pixel, y up
 render::draw::Camera overlayCamera(int widthPx, int heightPx);
 
 // the calls as text lines: a solid per line, then the overlay's lines (DrawList::lines)
-class DrawList3 final : public Canvas3 {
+class DrawList3d final : public Canvas3d {
  public:
   void solid(const Mesh& mesh, const Vec3& x, const Mat3& rotation, const Pen& pen) override;
   Canvas& overlay() override { return overlay_; }

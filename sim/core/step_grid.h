@@ -1,12 +1,12 @@
 // The fixed step grid of a run: steps of dt from t = 0, each cut short where something happens at
 // an exact instant (an impulse, a force switching on or off, the end of the run), so that no step
 // straddles one and the grid itself never shifts. Two times closer than kTimeSnap·dt are the same
-// instant (sim/core/settings.h), as in the 2D world.
+// instant (sim/core/settings.h). The 2D and the 3D world step on it alike.
 #pragma once
 
 #include <vector>
 
-namespace sim::world3d {
+namespace sim::core {
 
 class StepGrid {
  public:
@@ -29,4 +29,4 @@ class StepGrid {
   std::vector<double> instants_;  // sorted
 };
 
-}  // namespace sim::world3d
+}  // namespace sim::core

@@ -23,32 +23,32 @@ struct Ball {
 };
 
 // an axis-aligned box in world coordinates; empty until something is added
-struct Box3 {
+struct Box3d {
   Vec3 min = Vec3::Constant(std::numeric_limits<double>::infinity());
   Vec3 max = Vec3::Constant(-std::numeric_limits<double>::infinity());
   bool empty() const { return !(min.x() <= max.x()); }
   void add(const Vec3& p) { min = min.cwiseMin(p), max = max.cwiseMax(p); }
   void add(const Ball& b) { add(b.center - Vec3::Constant(b.radius)), add(b.center + Vec3::Constant(b.radius)); }
-  void add(const Box3& b) {
+  void add(const Box3d& b) {
     if (!b.empty()) add(b.min), add(b.max);
   }
   // the ball through the box's corners (radius 1 m around a point or nothing, so that a view has a scale)
   Ball ball() const;
 };
 
-class Camera3 {
+class Camera3d {
  public:
   // depth is the distance along the line of sight; only [nearDepth, farDepth] is drawn
-  Camera3(const Vec3& eye, const Vec3& target, const Vec3& up, double fovDegrees, int widthPx, int heightPx,
+  Camera3d(const Vec3& eye, const Vec3& target, const Vec3& up, double fovDegrees, int widthPx, int heightPx,
           const Vec2& principalPx, double nearDepth, double farDepth);
 
   // the nearest camera that shows all of `content` (its eight corners) looking at its center from
   // along `direction`, with `margin` (a fraction of the free part) on each side, the principal point
   // at the center of the frame's top-left freeWidth × freeHeight pixels
-  static Camera3 fit(const Box3& content, const Vec3& direction, const Vec3& up, double fovDegrees, double margin,
+  static Camera3d fit(const Box3d& content, const Vec3& direction, const Vec3& up, double fovDegrees, double margin,
                      int widthPx, int heightPx, int freeWidthPx, int freeHeightPx);
   // the camera at `eye` looking at `target`, its depth range holding `content`
-  static Camera3 look(const Vec3& eye, const Vec3& target, const Vec3& up, double fovDegrees, int widthPx, int heightPx,
+  static Camera3d look(const Vec3& eye, const Vec3& target, const Vec3& up, double fovDegrees, int widthPx, int heightPx,
                       const Ball& content);
 
   // camera coordinates (right, up, depth) of a world point

@@ -2,7 +2,7 @@
 #include <cstdio>
 #include <initializer_list>
 
-#include "render/draw3d/canvas3.h"
+#include "render/draw3d/canvas3d.h"
 
 namespace render::draw3d {
 
@@ -25,7 +25,7 @@ std::string numbers(std::initializer_list<double> values) {
 
 }  // namespace
 
-void DrawList3::solid(const Mesh& mesh, const Vec3& x, const Mat3& rotation, const Pen& pen) {
+void DrawList3d::solid(const Mesh& mesh, const Vec3& x, const Mat3& rotation, const Pen& pen) {
   // R by its rows, as it stands: a drifted q's matrix is no rotation, and the list says so
   const Mat3& r = rotation;
   solids_.push_back("solid " + std::string(render::draw::info(pen.role).name) + "#" + std::to_string(pen.body) + " " +
@@ -33,13 +33,13 @@ void DrawList3::solid(const Mesh& mesh, const Vec3& x, const Mat3& rotation, con
                     numbers({r(1, 0), r(1, 1), r(1, 2)}) + numbers({r(2, 0), r(2, 1), r(2, 2)}));
 }
 
-std::vector<std::string> DrawList3::lines() const {
+std::vector<std::string> DrawList3d::lines() const {
   std::vector<std::string> out = solids_;
   for (const std::string& line : overlay_.lines()) out.push_back(line);
   return out;
 }
 
-std::string DrawList3::toText() const {
+std::string DrawList3d::toText() const {
   std::string text;
   for (const std::string& line : lines()) text += line + "\n";
   return text;

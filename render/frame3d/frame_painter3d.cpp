@@ -1,4 +1,4 @@
-#include "render/frame3d/frame_painter3.h"
+#include "render/frame3d/frame_painter3d.h"
 
 #include <algorithm>
 #include <array>
@@ -12,7 +12,7 @@
 
 namespace render::frame3d {
 using render::draw::Role;
-using render::scene3d::Arrow3Def;
+using render::scene3d::Arrow3dDef;
 using namespace sim::world3d;
 
 namespace {
@@ -25,7 +25,7 @@ constexpr double kAxesLength = 1.3;
 // paths are drawn with points at least this many pixels apart: smooth, and a few hundred segments
 constexpr double kPathSpacingPx = 1.5;
 
-double arrowScale(double given, double largest, const Camera3& camera) {
+double arrowScale(double given, double largest, const Camera3d& camera) {
   if (given > 0.0) return given;
   return largest > 0.0 ? kArrowFraction * camera.viewHeight() / largest : 1.0;
 }
@@ -44,19 +44,19 @@ Vec2 directionOr(const Vec2& v, const Vec2& fallback) {
   return n > 0.0 ? Vec2(v / n) : fallback;
 }
 
-std::string defaultLabel(Arrow3Def::Show show) {
+std::string defaultLabel(Arrow3dDef::Show show) {
   switch (show) {
-    case Arrow3Def::Show::Omega: return "ω";
-    case Arrow3Def::Show::AngularMomentum: return "L";
-    case Arrow3Def::Show::Velocity: return "v";
-    case Arrow3Def::Show::Path: return "r";
+    case Arrow3dDef::Show::Omega: return "ω";
+    case Arrow3dDef::Show::AngularMomentum: return "L";
+    case Arrow3dDef::Show::Velocity: return "v";
+    case Arrow3dDef::Show::Path: return "r";
     default: return "";
   }
 }
 
 }  // namespace
 
-FramePainter3::FramePainter3(const render::scene3d::Scene& def, const Camera3& camera, const RunSurvey3& survey,
+FramePainter3d::FramePainter3d(const render::scene3d::Scene& def, const Camera3d& camera, const RunSurvey3d& survey,
                              const render::frame::TextWidth& width)
     : def_(def),
       camera_(camera),
@@ -82,12 +82,12 @@ FramePainter3::FramePainter3(const render::scene3d::Scene& def, const Camera3& c
                                              width ? width : render::frame::estimatedWidth(static_cast<int>(em_)));
 }
 
-History3::Options FramePainter3::historyOptions() const {
-  History3::Options o;
+History3d::Options FramePainter3d::historyOptions() const {
+  History3d::Options o;
   o.trails = def_.render.trails;
-  for (const Arrow3Def& a : def_.space.arrows) {
-    if (a.show == Arrow3Def::Show::Path) o.points.emplace_back(a.body, a.at);
-    if (a.show == Arrow3Def::Show::OmegaPath) o.omegaTips.push_back(a.body);
+  for (const Arrow3dDef& a : def_.space.arrows) {
+    if (a.show == Arrow3dDef::Show::Path) o.points.emplace_back(a.body, a.at);
+    if (a.show == Arrow3dDef::Show::OmegaPath) o.omegaTips.push_back(a.body);
   }
   // a pixel at the target's depth
   o.spacing = camera_.viewHeight() / camera_.heightPx();
@@ -95,13 +95,13 @@ History3::Options FramePainter3::historyOptions() const {
   return o;
 }
 
-std::optional<Vec2> FramePainter3::screen(const Vec3& world) const {
+std::optional<Vec2> FramePainter3d::screen(const Vec3& world) const {
   const Vec3 c = camera_.toCamera(world);
   if (!(c.z() > camera_.nearDepth())) return std::nullopt;
   return overlayPoint(camera_.pixelOf(c), camera_.heightPx());
 }
 
-void FramePainter3::arrow(const Vec3& tail, const Vec3& head, const Pen& pen, const std::string& label, Canvas& draw) const {
+void FramePainter3d::arrow(const Vec3& tail, const Vec3& head, const Pen& pen, const std::string& label, Canvas& draw) const {
   const std::optional<Vec2> t = screen(tail), h = screen(head);
   if (!t || !h) return;
   // an arrow under a pixel long has nothing to show, not even its direction
@@ -111,7 +111,7 @@ void FramePainter3::arrow(const Vec3& tail, const Vec3& head, const Pen& pen, co
               {Role::Label, pen.body, 1.0});
 }
 
-void FramePainter3::path(const std::vector<Vec3>& points, const Vec3& offset, const Pen& pen, Canvas& draw) const {
+void FramePainter3d::path(const std::vector<Vec3>& points, const Vec3& offset, const Pen& pen, Canvas& draw) const {
   std::optional<Vec2> last;
   for (size_t i = 0; i < points.size(); ++i) {
     const std::optional<Vec2> p = screen(offset + points[i]);
@@ -126,10 +126,10 @@ void FramePainter3::path(const std::vector<Vec3>& points, const Vec3& offset, co
   }
 }
 
-void FramePainter3::paintArrows(const World& world, const History3& history, Canvas& draw) const {
+void FramePainter3d::paintArrows(const World& world, const History3d& history, Canvas& draw) const {
   size_t pointPaths = 0, omegaPaths = 0;
   for (size_t k = 0; k < def_.space.arrows.size(); ++k) {
-    const Arrow3Def& a = def_.space.arrows[k];
+    const Arrow3dDef& a = def_.space.arrows[k];
     const Body& b = world.bodies[a.body];
     const int color = a.color.empty() ? -1 : static_cast<int>(k);
     const std::string name = a.label.empty() ? defaultLabel(a.show) : a.label;
@@ -137,7 +137,7 @@ void FramePainter3::paintArrows(const World& world, const History3& history, Can
       return a.value ? render::frame::vectorText(name, v, unit) : name;
     };
     switch (a.show) {
-      case Arrow3Def::Show::Axes: {
+      case Arrow3dDef::Show::Axes: {
         const Mat3 r = b.rotation();
         const double length = kAxesLength * boundingRadius(b.shape);
         const std::array<Role, 3> roles = {Role::AxisX, Role::AxisY, Role::AxisZ};
@@ -146,20 +146,20 @@ void FramePainter3::paintArrows(const World& world, const History3& history, Can
           arrow(b.x, b.x + length * r.col(i), {roles[i], a.body, 1.0, color}, a.label.empty() ? names[i] : a.label, draw);
         break;
       }
-      case Arrow3Def::Show::Omega:
+      case Arrow3dDef::Show::Omega:
         arrow(b.x, b.x + omegaScale_ * b.omega, {Role::AngularVelocity, a.body, 1.0, color}, labeled(b.omega, "rad/s"), draw);
         break;
-      case Arrow3Def::Show::AngularMomentum: {
+      case Arrow3dDef::Show::AngularMomentum: {
         const Vec3 l = b.angularMomentum();
         arrow(b.x, b.x + momentumScale_ * l, {Role::AngularMomentum, a.body, 1.0, color}, labeled(l, "kg·m²/s"), draw);
         break;
       }
-      case Arrow3Def::Show::Velocity: {
+      case Arrow3dDef::Show::Velocity: {
         const Vec3 r = b.toWorld(a.at), v = b.pointVelocity(r);
         arrow(r, r + velocityScale_ * v, {Role::Velocity, a.body, 1.0, color}, labeled(v, "m/s"), draw);
         break;
       }
-      case Arrow3Def::Show::Path: {
+      case Arrow3dDef::Show::Path: {
         const std::vector<Vec3>& points = history.pointPath(pointPaths++);
         path(points, Vec3::Zero(), {Role::Path, a.body, 1.0, color}, draw);
         if (const std::optional<Vec2> p = screen(points.back())) {
@@ -168,19 +168,19 @@ void FramePainter3::paintArrows(const World& world, const History3& history, Can
         }
         break;
       }
-      case Arrow3Def::Show::OmegaPath: {
+      case Arrow3dDef::Show::OmegaPath: {
         // ω's tip over the run, drawn from the center now: the cone ω sweeps
         std::vector<Vec3> tips = history.omegaPath(omegaPaths++);
         for (Vec3& w : tips) w *= omegaScale_;
         path(tips, b.x, {Role::AngularVelocity, a.body, 0.6, color}, draw);
         break;
       }
-      case Arrow3Def::Show::State: break;  // text, with the time (paintText)
+      case Arrow3dDef::Show::State: break;  // text, with the time (paintText)
     }
   }
 }
 
-std::vector<std::string> FramePainter3::stateText(const Body& b) {
+std::vector<std::string> FramePainter3d::stateText(const Body& b) {
   char q[160], norm[64];
   std::snprintf(q, sizeof q, "q = [%s, %s, %s, %s]", render::frame::signedNumber(b.q.w(), 3).c_str(),
                 render::frame::signedNumber(b.q.x(), 3).c_str(), render::frame::signedNumber(b.q.y(), 3).c_str(),
@@ -189,7 +189,7 @@ std::vector<std::string> FramePainter3::stateText(const Body& b) {
   return {render::frame::vectorText("x", b.x, "m"), q, norm};
 }
 
-void FramePainter3::paintText(const World& world, Canvas& draw) const {
+void FramePainter3d::paintText(const World& world, Canvas& draw) const {
   const render::frame::CaptionLayout layout = render::frame::captionLayout(static_cast<int>(em_));
   const double inset = layout.inset, line = layout.line;
   auto at = [&](double xPx, double yPx) { return overlay_.toWorld({xPx, yPx}); };
@@ -200,8 +200,8 @@ void FramePainter3::paintText(const World& world, Canvas& draw) const {
   const double factor = slowMotion_ ? slowMotion_(world.time) : 1.0;
   if (factor > 1.0) draw.text(at(inset, inset + row * line), render::frame::FramePainter::slowMotionText(factor), caption);
   if (!def_.render.slowMotion.empty()) row += 1.0;
-  for (const Arrow3Def& a : def_.space.arrows) {
-    if (a.show != Arrow3Def::Show::State) continue;
+  for (const Arrow3dDef& a : def_.space.arrows) {
+    if (a.show != Arrow3dDef::Show::State) continue;
     std::vector<std::string> lines = stateText(world.bodies[a.body]);
     // several bodies: each block says whose
     if (world.bodies.size() > 1) {
@@ -215,7 +215,7 @@ void FramePainter3::paintText(const World& world, Canvas& draw) const {
     draw.text(at(inset, bottom - line * static_cast<double>(captionLines_.size() - i)), captionLines_[i], caption);
 }
 
-void FramePainter3::paintWorldAxes(Canvas& draw) const {
+void FramePainter3d::paintWorldAxes(Canvas& draw) const {
   // bottom right, above the caption's band: which way x, y and z point, the farthest drawn first
   const double band = captionLines_.empty() ? 0.0 : render::frame::captionLayout(static_cast<int>(em_)).band();
   const Vec2 origin = overlay_.toWorld({camera_.widthPx() - 3.0 * em_, camera_.heightPx() - band - 2.5 * em_});
@@ -232,7 +232,7 @@ void FramePainter3::paintWorldAxes(Canvas& draw) const {
   }
 }
 
-const Mesh& FramePainter3::meshFor(size_t i, const Body& b) const {
+const Mesh& FramePainter3d::meshFor(size_t i, const Body& b) const {
   // its radius on the frame at its depth (the largest level when it is at or behind the eye)
   const Vec3 c = camera_.toCamera(b.x);
   const double depth = c.z() - radii_[i];
@@ -243,7 +243,7 @@ const Mesh& FramePainter3::meshFor(size_t i, const Body& b) const {
   return found->second;
 }
 
-void FramePainter3::paint(const World& world, const History3& history, Canvas3& canvas) const {
+void FramePainter3d::paint(const World& world, const History3d& history, Canvas3d& canvas) const {
   const render::scene::RenderDef& r = def_.render;
   for (size_t i = 0; i < world.bodies.size(); ++i) {
     const Body& b = world.bodies[i];

@@ -1,4 +1,4 @@
-// A 3D frame of a scene, on a Canvas3 from the world, its history and the render: block, back to
+// A 3D frame of a scene, on a Canvas3d from the world, its history and the render: block, back to
 // front: the solids (shaded, outlined, with a depth buffer); then over them, in pixels: trails,
 // springs, the paths of body points and of ω's tip, the teaching arrows (body axes, ω, L, v) with
 // their labels, the bodies' labels, the time and the state text (x, q, |q|), the world's axes, the
@@ -11,23 +11,23 @@
 #include <string>
 #include <vector>
 
-#include "render/draw3d/canvas3.h"
+#include "render/draw3d/canvas3d.h"
 #include "render/frame/caption.h"
-#include "render/frame3d/energy3.h"
-#include "render/frame3d/history3.h"
-#include "render/frame3d/survey3.h"
+#include "render/frame3d/energy3d.h"
+#include "render/frame3d/history3d.h"
+#include "render/frame3d/survey3d.h"
 
 namespace render::frame3d {
 
-class FramePainter3 {
+class FramePainter3d {
  public:
   // `width` measures text at the frame's font size, to wrap the caption (empty: an estimate)
-  FramePainter3(const render::scene3d::Scene& def, const Camera3& camera, const RunSurvey3& survey,
+  FramePainter3d(const render::scene3d::Scene& def, const Camera3d& camera, const RunSurvey3d& survey,
                 const render::frame::TextWidth& width = {});
 
   // what the history of a run must record for these frames
-  History3::Options historyOptions() const;
-  void paint(const sim::world3d::World& world, const History3& history, Canvas3& canvas) const;
+  History3d::Options historyOptions() const;
+  void paint(const sim::world3d::World& world, const History3d& history, Canvas3d& canvas) const;
   void showSlowMotion(std::function<double(double)> factorAt) { slowMotion_ = std::move(factorAt); }
 
   // "x = (1.00, −0.50, 0.20) m", "q = [0.924, 0.000, 0.383, 0.000]", "|q| = 1.000000"
@@ -41,12 +41,12 @@ class FramePainter3 {
   std::optional<Vec2> screen(const Vec3& world) const;
   void arrow(const Vec3& tail, const Vec3& head, const Pen& pen, const std::string& label, Canvas& draw) const;
   void path(const std::vector<Vec3>& points, const Vec3& offset, const Pen& pen, Canvas& draw) const;
-  void paintArrows(const sim::world3d::World& world, const History3& history, Canvas& draw) const;
+  void paintArrows(const sim::world3d::World& world, const History3d& history, Canvas& draw) const;
   void paintText(const sim::world3d::World& world, Canvas& draw) const;
   void paintWorldAxes(Canvas& draw) const;
 
   const render::scene3d::Scene& def_;
-  Camera3 camera_;
+  Camera3d camera_;
   render::draw::Camera overlay_;  // pixels, y up
   // body i's mesh: one per shape and level of detail (mesh.h: segmentsFor its size on screen),
   // shared by every body of that shape and size, so that memory does not grow with the bodies
@@ -56,7 +56,7 @@ class FramePainter3 {
   mutable std::map<std::pair<std::string, int>, Mesh> meshes_;
   double omegaScale_, momentumScale_, velocityScale_;  // m of arrow per rad/s, kg·m²/s, m/s
   double em_;                     // text size, px
-  EnergyPanel3 panel_;
+  EnergyPanel3d panel_;
   std::vector<std::string> captionLines_;
   std::function<double(double)> slowMotion_;
 };

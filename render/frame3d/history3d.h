@@ -11,7 +11,7 @@
 namespace render::frame3d {
 using sim::world3d::Vec3;
 
-class History3 : public sim::world3d::StepObserver {
+class History3d : public sim::world3d::StepObserver {
  public:
   struct Options {
     bool trails = false;
@@ -22,7 +22,7 @@ class History3 : public sim::world3d::StepObserver {
   };
 
   // starts with the world's present state
-  History3(const sim::world3d::World& world, Options options);
+  History3d(const sim::world3d::World& world, Options options);
   void afterStep(const sim::world3d::World& world) override;
   void afterEvent(const sim::world3d::World& world, const sim::world3d::ImpulseEvent&) override { afterStep(world); }
 

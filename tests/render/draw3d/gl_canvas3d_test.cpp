@@ -1,7 +1,7 @@
 // 3D solids drawn with GL: shaded in their body's color with the light telling faces apart, on the
 // background, the nearer of two solids in front whatever the order they are drawn in, outlines
 // darker than faces, and the overlay over everything.
-#include "render/draw3d/gl_canvas3.h"
+#include "render/draw3d/gl_canvas3d.h"
 
 #include <doctest/doctest.h>
 
@@ -33,8 +33,8 @@ TEST_CASE("a box in perspective: reddish faces of three brightnesses on a white 
   GlContext gl(kWidth, kHeight);
   TextRenderer text;
   const Style style = twoColors();
-  const Camera3 camera(Vec3(3, -4, 2.5), Vec3::Zero(), Vec3::UnitZ(), 35.0, kWidth, kHeight, Vec2(80, 45), 1.0, 20.0);
-  GlCanvas3 canvas(gl, text, style);
+  const Camera3d camera(Vec3(3, -4, 2.5), Vec3::Zero(), Vec3::UnitZ(), 35.0, kWidth, kHeight, Vec2(80, 45), 1.0, 20.0);
+  GlCanvas3d canvas(gl, text, style);
   canvas.begin(camera);
   canvas.solid(boxMesh(Vec3(1, 1, 1)), Vec3::Zero(), Mat3::Identity(), {Role::Body, 0, 1.0});
   const Image image = canvas.finish();
@@ -62,10 +62,10 @@ TEST_CASE("the depth buffer: the nearer box in front whatever the drawing order;
   GlContext gl(kWidth, kHeight);
   TextRenderer text;
   const Style style = twoColors();
-  const Camera3 camera(Vec3(0, -6, 0), Vec3::Zero(), Vec3::UnitZ(), 35.0, kWidth, kHeight, Vec2(80, 45), 1.0, 20.0);
+  const Camera3d camera(Vec3(0, -6, 0), Vec3::Zero(), Vec3::UnitZ(), 35.0, kWidth, kHeight, Vec2(80, 45), 1.0, 20.0);
   for (bool nearFirst : {true, false}) {
     CAPTURE(nearFirst);
-    GlCanvas3 canvas(gl, text, style);
+    GlCanvas3d canvas(gl, text, style);
     canvas.begin(camera);
     // body 1 (blue) nearer the eye, body 0 (red) behind it and larger
     auto nearBox = [&] { canvas.solid(boxMesh(Vec3(1, 1, 1)), Vec3(0, -1, 0), Mat3::Identity(), {Role::Body, 1, 1.0}); };

@@ -2,7 +2,7 @@
 // the solid at its pose, L's arrow fixed in space while ω's wanders about it at a constant length,
 // the state written as text, the energy panel's total unchanged; an overlay left out of the block
 // is left out of the list.
-#include "render/frame3d/scene_run3.h"
+#include "render/frame3d/scene_run3d.h"
 
 #include <doctest/doctest.h>
 
@@ -34,15 +34,15 @@ render:
 )";
 
 struct Frame {
-  DrawList3 list;
+  DrawList3d list;
   std::vector<std::string> lines;
 };
 
 // the scene's draw list at time t, from a fresh run through its own camera
 Frame frameAt(const std::string& yaml, double t) {
   const render::scene3d::Scene def = render::scene3d::readScene(sim::yaml::sceneSourceText(yaml, "inline.yaml"));
-  const RunSurvey3 survey = surveyRun(def);
-  SceneRun3 run(def, cameraFor(def, survey), survey);
+  const RunSurvey3d survey = surveyRun(def);
+  SceneRun3d run(def, cameraFor(def, survey), survey);
   Frame f{run.drawListAt(t), {}};
   f.lines = f.list.lines();
   return f;

@@ -1,6 +1,6 @@
 // The perspective camera: what it looks at lands on its principal point, pixels and clip
 // coordinates agree, the depth range maps to [−1, 1], and a fitted camera shows all of its ball.
-#include "render/draw3d/camera3.h"
+#include "render/draw3d/camera3d.h"
 
 #include <doctest/doctest.h>
 
@@ -10,7 +10,7 @@
 using namespace render::draw3d;
 
 TEST_CASE("a camera looking at a point: it lands on the principal point, right is right and up is up") {
-  const Camera3 c(Vec3(0, -5, 0), Vec3::Zero(), Vec3::UnitZ(), 40.0, 640, 360, Vec2(320, 180), 1.0, 10.0);
+  const Camera3d c(Vec3(0, -5, 0), Vec3::Zero(), Vec3::UnitZ(), 40.0, 640, 360, Vec2(320, 180), 1.0, 10.0);
   CHECK((c.toPixel(Vec3::Zero()) - Vec2(320, 180)).norm() < 1e-12);
   CHECK(c.toPixel(Vec3(1, 0, 0)).x() > 320);   // +x is to the right seen from −y
   CHECK(c.toPixel(Vec3(0, 0, 1)).y() < 180);   // +z is up: a smaller row
@@ -22,7 +22,7 @@ TEST_CASE("a camera looking at a point: it lands on the principal point, right i
 }
 
 TEST_CASE("clip coordinates agree with pixels, and the depth range maps to [−1, 1]") {
-  const Camera3 c(Vec3(1, -4, 2), Vec3(0.2, 0.1, 0), Vec3::UnitZ(), 35.0, 320, 180, Vec2(140, 80), 2.0, 8.0);
+  const Camera3d c(Vec3(1, -4, 2), Vec3(0.2, 0.1, 0), Vec3::UnitZ(), 35.0, 320, 180, Vec2(140, 80), 2.0, 8.0);
   for (const Vec3& p : {Vec3(0, 0, 0), Vec3(0.5, -0.3, 0.7), Vec3(-1, 1, -0.5)}) {
     const Vec4 clip = c.clip(p);
     const Vec2 pixel = c.toPixel(p);
@@ -37,11 +37,11 @@ TEST_CASE("clip coordinates agree with pixels, and the depth range maps to [−1
 }
 
 TEST_CASE("a fitted camera shows the whole box in the free part of the frame, as near as its margin allows") {
-  Box3 box;
+  Box3d box;
   box.add(Vec3(-1, 0.5, 2.5));
   box.add(Vec3(3, 2.5, 3.2));
   // the right 200 px are a panel's, the bottom 60 a caption's
-  const Camera3 c = Camera3::fit(box, Vec3(1, -1.7, 0.9), Vec3::UnitZ(), 35.0, 0.08, 1280, 720, 1080, 660);
+  const Camera3d c = Camera3d::fit(box, Vec3(1, -1.7, 0.9), Vec3::UnitZ(), 35.0, 0.08, 1280, 720, 1080, 660);
   // it looks at the box's center, from the principal point at the middle of the free part
   CHECK((c.toPixel(box.ball().center) - Vec2(540, 330)).norm() < 1e-9);
   double slack = 1e9;

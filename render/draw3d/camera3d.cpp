@@ -1,4 +1,4 @@
-#include "render/draw3d/camera3.h"
+#include "render/draw3d/camera3d.h"
 
 #include <algorithm>
 #include <cmath>
@@ -17,13 +17,13 @@ std::pair<double, double> depthRange(double distance, double radius) {
 
 }  // namespace
 
-Ball Box3::ball() const {
+Ball Box3d::ball() const {
   if (empty()) return {Vec3::Zero(), 1.0};
   const double r = 0.5 * (max - min).norm();
   return {0.5 * (min + max), r > 0.0 ? r : 1.0};
 }
 
-Camera3::Camera3(const Vec3& eye, const Vec3& target, const Vec3& up, double fovDegrees, int widthPx, int heightPx,
+Camera3d::Camera3d(const Vec3& eye, const Vec3& target, const Vec3& up, double fovDegrees, int widthPx, int heightPx,
                  const Vec2& principalPx, double nearDepth, double farDepth)
     : eye_(eye),
       focal_(0.5 * heightPx / std::tan(0.5 * fovDegrees * std::numbers::pi / 180.0)),
@@ -40,12 +40,12 @@ Camera3::Camera3(const Vec3& eye, const Vec3& target, const Vec3& up, double fov
   targetDepth_ = (target - eye).norm();
 }
 
-Camera3 Camera3::fit(const Box3& content, const Vec3& direction, const Vec3& up, double fovDegrees, double margin,
+Camera3d Camera3d::fit(const Box3d& content, const Vec3& direction, const Vec3& up, double fovDegrees, double margin,
                      int widthPx, int heightPx, int freeWidthPx, int freeHeightPx) {
   const Ball ball = content.ball();
-  const Box3 box = content.empty() ? [&] { Box3 b; b.add(ball); return b; }() : content;
+  const Box3d box = content.empty() ? [&] { Box3d b; b.add(ball); return b; }() : content;
   // the view's axes, from the eye toward the content's center
-  const Camera3 axes(ball.center + direction.normalized(), ball.center, up, fovDegrees, widthPx, heightPx, Vec2::Zero(), 1.0, 2.0);
+  const Camera3d axes(ball.center + direction.normalized(), ball.center, up, fovDegrees, widthPx, heightPx, Vec2::Zero(), 1.0, 2.0);
   const double focal = axes.focal_;
   // the half-sizes of the free part the content may fill, px
   const double halfWidth = (1.0 - 2.0 * margin) * 0.5 * freeWidthPx, halfHeight = (1.0 - 2.0 * margin) * 0.5 * freeHeightPx;
@@ -61,24 +61,24 @@ Camera3 Camera3::fit(const Box3& content, const Vec3& direction, const Vec3& up,
   }
   distance = std::max(distance, 1.05 * nearest + 1e-9);
   const auto [nearDepth, farDepth] = depthRange(distance, ball.radius);
-  return Camera3(ball.center + distance * direction.normalized(), ball.center, up, fovDegrees, widthPx, heightPx,
+  return Camera3d(ball.center + distance * direction.normalized(), ball.center, up, fovDegrees, widthPx, heightPx,
                  Vec2(0.5 * freeWidthPx, 0.5 * freeHeightPx), nearDepth, farDepth);
 }
 
-Camera3 Camera3::look(const Vec3& eye, const Vec3& target, const Vec3& up, double fovDegrees, int widthPx, int heightPx,
+Camera3d Camera3d::look(const Vec3& eye, const Vec3& target, const Vec3& up, double fovDegrees, int widthPx, int heightPx,
                       const Ball& content) {
   const auto [nearDepth, farDepth] = depthRange((content.center - eye).norm(), content.radius);
-  return Camera3(eye, target, up, fovDegrees, widthPx, heightPx, Vec2(0.5 * widthPx, 0.5 * heightPx), nearDepth, farDepth);
+  return Camera3d(eye, target, up, fovDegrees, widthPx, heightPx, Vec2(0.5 * widthPx, 0.5 * heightPx), nearDepth, farDepth);
 }
 
-Vec4 Camera3::clipOf(const Vec2& pixel, double depth) const {
+Vec4 Camera3d::clipOf(const Vec2& pixel, double depth) const {
   // normalized device coordinates from pixels (GL's y up), times w = depth
   const double x = 2.0 * pixel.x() / widthPx_ - 1.0, y = 1.0 - 2.0 * pixel.y() / heightPx_;
   const double a = (far_ + near_) / (far_ - near_), b = -2.0 * far_ * near_ / (far_ - near_);
   return {x * depth, y * depth, a * depth + b, depth};
 }
 
-Vec4 Camera3::clip(const Vec3& world) const {
+Vec4 Camera3d::clip(const Vec3& world) const {
   // clipOf(pixelOf(c), depth) multiplied out: linear in c, so that it holds behind the eye too and GL
   // clips triangles that cross the near plane
   const Vec3 c = toCamera(world);
@@ -87,7 +87,7 @@ Vec4 Camera3::clip(const Vec3& world) const {
           (1.0 - 2.0 * principal_.y() / heightPx_) * c.z() + 2.0 * focal_ * c.y() / heightPx_, a * c.z() + b, c.z()};
 }
 
-Vec2 Camera3::screenDirection(const Vec3& d) const {
+Vec2 Camera3d::screenDirection(const Vec3& d) const {
   const Vec3 c = basis_ * d;
   const Vec2 s(c.x(), -c.y());
   return s.norm() > 0.0 ? Vec2(s.normalized()) : Vec2::Zero();

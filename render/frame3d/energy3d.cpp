@@ -1,4 +1,4 @@
-#include "render/frame3d/energy3.h"
+#include "render/frame3d/energy3d.h"
 
 #include <algorithm>
 #include <cmath>
@@ -35,7 +35,7 @@ std::vector<EnergyBar> energyBars(const render::scene3d::Scene& def, const sim::
   return bars;
 }
 
-std::vector<std::string> EnergyPanel3::widestBarTexts(const render::scene3d::Scene& def, const RunSurvey3& survey) {
+std::vector<std::string> EnergyPanel3d::widestBarTexts(const render::scene3d::Scene& def, const RunSurvey3d& survey) {
   std::vector<std::string> texts;
   if (!def.render.overlays.energy) return texts;
   const double most = std::max(std::abs(survey.maxEnergy), std::abs(survey.minEnergy));
@@ -46,25 +46,25 @@ std::vector<std::string> EnergyPanel3::widestBarTexts(const render::scene3d::Sce
   return texts;
 }
 
-std::vector<std::string> EnergyPanel3::widestLines(const render::scene3d::Scene& def, const RunSurvey3& survey) {
+std::vector<std::string> EnergyPanel3d::widestLines(const render::scene3d::Scene& def, const RunSurvey3d& survey) {
   if (!def.render.overlays.momentum) return {};
   return momentumLines(Vec3::Constant(-survey.maxLinearMomentum), Vec3::Constant(-survey.maxWorldAngularMomentum));
 }
 
-double EnergyPanel3::bandPx(const render::scene3d::Scene& def, const RunSurvey3& survey, int heightPx) {
+double EnergyPanel3d::bandPx(const render::scene3d::Scene& def, const RunSurvey3d& survey, int heightPx) {
   if (!def.render.overlays.energy && !def.render.overlays.momentum) return 0.0;
   const double em = render::scene::fontSizeFor(def.render, heightPx);
   return BarPanel::bandPx(BarPanel::widthPx(widestBarTexts(def, survey), widestLines(def, survey), em), em);
 }
 
-EnergyPanel3::EnergyPanel3(const render::scene3d::Scene& def, const render::draw::Camera& camera, const RunSurvey3& survey)
+EnergyPanel3d::EnergyPanel3d(const render::scene3d::Scene& def, const render::draw::Camera& camera, const RunSurvey3d& survey)
     : def_(def),
       energy_(def.render.overlays.energy),
       momentum_(def.render.overlays.momentum),
       panel_(widestBarTexts(def, survey), widestLines(def, survey), survey.minEnergy, survey.maxEnergy, camera,
              render::scene::fontSizeFor(def.render, camera.heightPx())) {}
 
-void EnergyPanel3::draw(const sim::world3d::World& world, render::draw::Canvas& canvas) const {
+void EnergyPanel3d::draw(const sim::world3d::World& world, render::draw::Canvas& canvas) const {
   if (!energy_ && !momentum_) return;
   const std::vector<std::string> lines =
       momentum_ ? momentumLines(sim::world3d::linearMomentum(world), sim::world3d::angularMomentum(world))

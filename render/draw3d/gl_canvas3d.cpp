@@ -1,4 +1,4 @@
-#include "render/draw3d/gl_canvas3.h"
+#include "render/draw3d/gl_canvas3d.h"
 
 #define GL_GLEXT_PROTOTYPES
 #include <GL/gl.h>
@@ -21,18 +21,18 @@ constexpr double kEdgeWidth = 0.75, kCurveWidth = 0.5;
 
 }  // namespace
 
-Color shade(const Color& base, const Vec3& normal, const Camera3& camera, const Lighting& light) {
+Color shade(const Color& base, const Vec3& normal, const Camera3d& camera, const Lighting& light) {
   const double lit = light.ambient + light.diffuse * std::max(0.0, (camera.basis() * normal).dot(light.toLight));
   return {base.r * lit, base.g * lit, base.b * lit, base.a};
 }
 
-GlCanvas3::GlCanvas3(GlContext& gl, TextRenderer& text, const Style& style)
+GlCanvas3d::GlCanvas3d(GlContext& gl, TextRenderer& text, const Style& style)
     : gl_(gl),
       style_(style),
       camera_(Vec3(0, -1, 0), Vec3::Zero(), Vec3::UnitZ(), 40.0, gl.width(), gl.height(), Vec2::Zero(), 0.1, 10.0),
       overlay_(gl, text, style) {}
 
-void GlCanvas3::begin(const Camera3& camera) {
+void GlCanvas3d::begin(const Camera3d& camera) {
   // recorded, to be drawn at each sample position (the overlay is part of the same frame)
   gl_.beginFrame();
   camera_ = camera;
@@ -56,7 +56,7 @@ void GlCanvas3::begin(const Camera3& camera) {
   gl_.clearFrame(style_.background, true);
 }
 
-Canvas& GlCanvas3::overlay() {
+Canvas& GlCanvas3d::overlay() {
   if (!overlaid_) {
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
@@ -66,20 +66,20 @@ Canvas& GlCanvas3::overlay() {
   return overlay_;
 }
 
-Image GlCanvas3::finish() {
+Image GlCanvas3d::finish() {
   Image frame;
   finish(frame);
   return frame;
 }
 
-void GlCanvas3::finish(Image& frame) {
+void GlCanvas3d::finish(Image& frame) {
   overlay();
   // a triangle with its vertices in front of the eye projects within them (clipping only cuts it)
   if (!unbounded_) overlay_.drawnUnder(drawn_);
   overlay_.finish(frame);
 }
 
-void GlCanvas3::vertex(const Vec4& c) {
+void GlCanvas3d::vertex(const Vec4& c) {
   if (c.w() > 0.0)
     drawn_.add(Vec2((c.x() / c.w() + 1.0) * 0.5 * camera_.widthPx(), (1.0 - c.y() / c.w()) * 0.5 * camera_.heightPx()));
   else
@@ -87,8 +87,8 @@ void GlCanvas3::vertex(const Vec4& c) {
   glVertex4d(c.x(), c.y(), c.z(), c.w());
 }
 
-void GlCanvas3::solid(const Mesh& mesh, const Vec3& x, const Mat3& rotation, const Pen& pen) {
-  if (overlaid_) throw std::logic_error("GlCanvas3: solids are drawn before the overlay");
+void GlCanvas3d::solid(const Mesh& mesh, const Vec3& x, const Mat3& rotation, const Pen& pen) {
+  if (overlaid_) throw std::logic_error("GlCanvas3d: solids are drawn before the overlay");
   const Color base = style_.body(pen.body);
   const Color fill = base.mixed(kWhite, kFillLighten);
   std::vector<Vec4> clip(mesh.positions.size());
@@ -128,7 +128,7 @@ void GlCanvas3::solid(const Mesh& mesh, const Vec3& x, const Mat3& rotation, con
       strokeLine(world(curve[i]), world(curve[(i + 1) % curve.size()]), kCurveWidth * style_.lineWidth);
 }
 
-void GlCanvas3::strokeLine(const Vec3& a, const Vec3& b, double widthPx) {
+void GlCanvas3d::strokeLine(const Vec3& a, const Vec3& b, double widthPx) {
   Vec3 ca = camera_.toCamera(a), cb = camera_.toCamera(b);
   // the part in front of the near plane
   const double near = camera_.nearDepth() * 1.0001;

@@ -1,5 +1,5 @@
 // 3D frames drawn with OpenGL 1.x (fixed function, through OSMesa, 4× multisampled as 2D frames):
-// solids as triangles in clip coordinates that Camera3 computes (GL's matrices stay identity), with
+// solids as triangles in clip coordinates that Camera3d computes (GL's matrices stay identity), with
 // a depth buffer; shaded on the CPU by a diffuse light from the viewer's upper left (Lambert), so
 // that a face's brightness tells its slope; creases, silhouettes and surface curves outlined as
 // screen-space strips at the depth of their points, over faces pushed back by a polygon offset.
@@ -7,7 +7,7 @@
 #pragma once
 
 #include "render/draw/gl_canvas.h"
-#include "render/draw3d/canvas3.h"
+#include "render/draw3d/canvas3d.h"
 
 namespace render::draw3d {
 using render::draw::Color;
@@ -25,14 +25,14 @@ struct Lighting {
 };
 
 // the color of a surface of color `base` with outward normal `normal` (world), seen by `camera`
-Color shade(const Color& base, const Vec3& normal, const Camera3& camera, const Lighting& light = {});
+Color shade(const Color& base, const Vec3& normal, const Camera3d& camera, const Lighting& light = {});
 
-class GlCanvas3 final : public Canvas3 {
+class GlCanvas3d final : public Canvas3d {
  public:
-  GlCanvas3(GlContext& gl, TextRenderer& text, const Style& style);
+  GlCanvas3d(GlContext& gl, TextRenderer& text, const Style& style);
 
   // start a frame: clear color and depth, look through `camera`
-  void begin(const Camera3& camera);
+  void begin(const Camera3d& camera);
   // the frame, the overlay's text on top
   Image finish();
   // the same into `frame`, whose storage is reused when it has the frame's size already
@@ -50,7 +50,7 @@ class GlCanvas3 final : public Canvas3 {
 
   GlContext& gl_;
   const Style& style_;
-  Camera3 camera_;
+  Camera3d camera_;
   render::draw::GlCanvas overlay_;
   bool overlaid_ = false;  // GL is set up for the overlay
   // the output pixels the solids' vertices fall on (y down), or unbounded when one lies behind the

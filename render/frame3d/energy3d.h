@@ -6,24 +6,24 @@
 #include <vector>
 
 #include "render/frame/energy_panel.h"
-#include "render/frame3d/survey3.h"
+#include "render/frame3d/survey3d.h"
 
 namespace render::frame3d {
 
 // the bars at the world's present state, in the order drawn (energyValues' order)
 std::vector<render::frame::EnergyBar> energyBars(const render::scene3d::Scene& def, const sim::world3d::World& world);
 
-class EnergyPanel3 {
+class EnergyPanel3d {
  public:
   // `camera` is the overlay's (pixels, y up)
-  EnergyPanel3(const render::scene3d::Scene& def, const render::draw::Camera& camera, const RunSurvey3& survey);
+  EnergyPanel3d(const render::scene3d::Scene& def, const render::draw::Camera& camera, const RunSurvey3d& survey);
   void draw(const sim::world3d::World& world, render::draw::Canvas& draw) const;
   // the right-hand band of the frame the panel takes (0 without one), px
-  static double bandPx(const render::scene3d::Scene& def, const RunSurvey3& survey, int heightPx);
+  static double bandPx(const render::scene3d::Scene& def, const RunSurvey3d& survey, int heightPx);
 
  private:
-  static std::vector<std::string> widestBarTexts(const render::scene3d::Scene& def, const RunSurvey3& survey);
-  static std::vector<std::string> widestLines(const render::scene3d::Scene& def, const RunSurvey3& survey);
+  static std::vector<std::string> widestBarTexts(const render::scene3d::Scene& def, const RunSurvey3d& survey);
+  static std::vector<std::string> widestLines(const render::scene3d::Scene& def, const RunSurvey3d& survey);
 
   const render::scene3d::Scene& def_;
   bool energy_, momentum_;

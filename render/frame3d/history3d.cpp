@@ -1,8 +1,8 @@
-#include "render/frame3d/history3.h"
+#include "render/frame3d/history3d.h"
 
 namespace render::frame3d {
 
-History3::History3(const sim::world3d::World& world, Options options)
+History3d::History3d(const sim::world3d::World& world, Options options)
     : options_(std::move(options)),
       trails_(world.bodies.size()),
       points_(options_.points.size()),
@@ -10,13 +10,13 @@ History3::History3(const sim::world3d::World& world, Options options)
   afterStep(world);
 }
 
-void History3::keep(std::vector<Vec3>& path, const Vec3& p, double spacing) {
+void History3d::keep(std::vector<Vec3>& path, const Vec3& p, double spacing) {
   // the last point is always the newest: replaced while it stays within the spacing of the one before
   if (path.size() >= 2 && (path[path.size() - 2] - p).norm() < spacing) path.back() = p;
   else path.push_back(p);
 }
 
-void History3::afterStep(const sim::world3d::World& world) {
+void History3d::afterStep(const sim::world3d::World& world) {
   if (options_.trails)
     for (size_t i = 0; i < world.bodies.size(); ++i) keep(trails_[i], world.bodies[i].x, options_.spacing);
   for (size_t k = 0; k < options_.points.size(); ++k) {

@@ -12,7 +12,7 @@ using sim::world3d::Quat;
 using sim::world3d::Vec3;
 using sim::yaml::describe;
 
-class Reader3 : public sim::yaml::Reader {
+class Reader3d : public sim::yaml::Reader {
  public:
   using Reader::Reader;
 
