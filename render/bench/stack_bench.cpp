@@ -74,6 +74,7 @@ struct RunOptions {
   int substeps = sim::core::settings::kSubsteps;
   double contactHertz = sim::core::settings::kContactHertz;
   int threads = 1;  // soft_step's sim: threads
+  int simdWidth = 8;  // soft_step's lanes at once: 8 (AVX-512), 4 (AVX2) or 1, where the processor has them
 };
 
 // one engine holding one layout: step it, read the boxes back (in layout order)
@@ -183,6 +184,7 @@ class OurRun : public StackRun {
  public:
   OurRun(const bench::StackLayout& layout, const bench::StackSettings& s, const RunOptions& o, sim::world::CollisionMethod method)
       : world_(sim::scene::buildWorld(sceneOf(layout, s, o, method))), dt_(s.dt) {
+    world_.simdWidth = o.simdWidth;
     world_.start();
   }
   void advance(int steps) override {
@@ -325,6 +327,8 @@ int main(int argc, char** argv) {
   app.add_option("--substeps", options.substeps, "rigidreel's soft_step: substeps per step")->check(CLI::Range(1, 1000));
   app.add_option("--threads", options.threads, "rigidreel's soft_step: threads sharing each set of contacts (processor time counts them all)")
       ->check(CLI::Range(1, sim::core::settings::kMaxThreads));
+  app.add_option("--simd-width", options.simdWidth, "rigidreel's soft_step: lanes solved at once, 8, 4 or 1 (the widest the processor has, at most this)")
+      ->check(CLI::IsMember({1, 4, 8}));
   app.add_option("--contact-hertz", options.contactHertz,
                  "rigidreel's soft_step: contact stiffness, Hz (capped at a quarter of the substep rate)")
       ->check([](const std::string& text) {

@@ -32,19 +32,27 @@ struct EdgeSeparation {
   int vertex = -1;
 };
 
-EdgeSeparation maxSeparation(const WorldPolygon& p, const WorldPolygon& q) {
+// (kSize > 0: both polygons have that many vertices, so that the loops unroll; 0: any)
+template <size_t kSize>
+EdgeSeparation maxSeparationOf(const WorldPolygon& p, const WorldPolygon& q) {
+  const size_t np = kSize ? kSize : p.size(), nq = kSize ? kSize : q.size();
   EdgeSeparation best;
-  for (size_t e = 0; e < p.size(); ++e) {
+  for (size_t e = 0; e < np; ++e) {
     // separation(e → Q): the deepest vertex of Q below the edge's line
     double deepest = kInf;
     int vertex = -1;
-    for (size_t k = 0; k < q.size(); ++k) {
+    for (size_t k = 0; k < nq; ++k) {
       const double d = p.n[e].dot(q.v[k] - p.v[e]);
       if (d < deepest) deepest = d, vertex = static_cast<int>(k);
     }
     if (deepest > best.separation) best = {deepest, static_cast<int>(e), vertex};
   }
   return best;
+}
+
+// boxes, the common case, unrolled (the same operations in the same order)
+EdgeSeparation maxSeparation(const WorldPolygon& p, const WorldPolygon& q) {
+  return p.size() == 4 && q.size() == 4 ? maxSeparationOf<4>(p, q) : maxSeparationOf<0>(p, q);
 }
 
 // A point's id names the two features that make it, one of A and one of B: a vertex of one
@@ -88,6 +96,9 @@ int clipSegment(const ClipPoint in[2], ClipPoint out[2], const Vec2& normal, dou
 // the points of a polygon pair with the reference edge on A (refA) or on B: the incident edge
 // (the one most anti-parallel to the reference normal) clipped to the reference edge's side
 // planes (Box2D-Lite's clipping), keeping the points within the margin of the reference face
+// (kSize > 0: both polygons have that many vertices, so that the loop unrolls and the next vertex
+// is found without a division)
+template <size_t kSize>
 void clipToReference(const WorldPolygon& A, const WorldPolygon& B, const EdgeSeparation& ea, const EdgeSeparation& eb,
                      bool refA, double margin, Manifold& m) {
   const WorldPolygon& ref = refA ? A : B;
@@ -99,11 +110,12 @@ void clipToReference(const WorldPolygon& A, const WorldPolygon& B, const EdgeSep
 
   int incEdge = 0;
   double most = kInf;
-  for (size_t i = 0; i < inc.size(); ++i) {
+  const size_t incCount = kSize ? kSize : inc.size(), refCount = kSize ? kSize : ref.size();
+  for (size_t i = 0; i < incCount; ++i) {
     const double d = inc.n[i].dot(nRef);
     if (d < most) most = d, incEdge = static_cast<int>(i);
   }
-  const int incNext = (incEdge + 1) % static_cast<int>(inc.size()), refNext = (edge + 1) % static_cast<int>(ref.size());
+  const int incNext = static_cast<int>((incEdge + 1) % incCount), refNext = static_cast<int>((edge + 1) % refCount);
   const ClipPoint incident[2] = {{inc.v[incEdge], incEdge, -1}, {inc.v[incNext], incNext, -1}};
   const Vec2 v1 = ref.v[edge], v2 = ref.v[refNext];
   const Vec2 t = (v2 - v1).normalized();
@@ -134,10 +146,11 @@ Manifold polygons(const PlacedShape& a, const PlacedShape& b, double margin) {
   // for the manifold, keep A's edge unless B's is clearly better, so the choice does not flip
   // from step to step on near ties (Box2D's b2CollidePolygons does the same)
   const bool refA = !(eb.separation > ea.separation + settings::kReferenceEdgeHysteresis);
-  clipToReference(A, B, ea, eb, refA, margin, m);
+  const auto clip = A.size() == 4 && B.size() == 4 ? clipToReference<4> : clipToReference<0>;
+  clip(A, B, ea, eb, refA, margin, m);
   if (m.separation > margin) return m;
   // the kept edge's sides can miss the incident edge near a corner: then use the best edge
-  if (m.count == 0 && refA != bestA) clipToReference(A, B, ea, eb, bestA, margin, m);
+  if (m.count == 0 && refA != bestA) clip(A, B, ea, eb, bestA, margin, m);
   // corner against corner: no edge's sides hold the other's edge; the incident vertex touches
   // the reference edge's end, so the contact runs between the closest points of the two
   if (m.count == 0) {
@@ -225,7 +238,8 @@ Manifold planeShape(const PlacedShape& placedPlane, const PlacedShape& placed, d
   if (o.kind != ShapeKind::Polygon) return m;
   int first = -1, second = -1;
   const std::vector<Vec2>& v = placed.vertices;
-  std::vector<double> s(v.size());
+  thread_local std::vector<double> s;  // (kept per thread: a pile on a half-plane floor allocates nothing per pair)
+  s.resize(v.size());
   for (size_t k = 0; k < v.size(); ++k) {
     s[k] = n.dot(v[k] - pp.x);
     if (first < 0 || s[k] < s[first]) second = first, first = static_cast<int>(k);
