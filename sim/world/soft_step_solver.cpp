@@ -77,38 +77,28 @@ class SoftStepSolver final : public Method {
  public:
   std::unique_ptr<Method> clone() const override { return std::make_unique<SoftStepSolver>(*this); }
 
-  // Box2D v3's b2SolverStage list (solver.c): contacts prepared once, then per substep the
-  // velocities, the soft contacts, the positions and the relax pass; restitution after them all
+  // Box2D v3's stages (solver.c's b2SolverStage): the contacts found and prepared once; per
+  // substep the velocities, warm start, the soft solve, the positions and the relax pass;
+  // restitution once after them all; the impulses kept for the next step
   void step(World& world, const TimeStep& step) override {
-    beginStep(world, step);
-    move(world, step);
-    resolveCollisions(world, step);
-  }
-
- private:
-  // the contacts where the bodies are now, carrying over last step's impulses, prepared once
-  void beginStep(World& world, const TimeStep& step) {
+    // the contacts where the bodies are now, carrying over last step's impulses, prepared once
     world.findContacts(speculativeMargin(world, step.h), fresh_);
     matchWarmStart(world.contacts, fresh_);
     std::swap(world.contacts, fresh_);
     prepare(world, step.h / world.substeps);
-  }
-
-  // the substeps: velocities, soft contacts, positions, relax; with sim: threads, every stage
-  // split between the threads, which meet after each stage and each set of contacts
-  void move(World& world, const TimeStep& step) {
+    // the substeps; with sim: threads, every stage split between the threads, which meet after
+    // each stage and each set of contacts
     loadBodies(world);
     WorkerPool& threads = pool(world.threads);
     threads.run([&](int t) { substeps(world, step, Share{t, threads.size()}, threads); });
     storeBodies(world);
-  }
-
-  // restitution once, from the velocity before the substeps; the impulses kept for next step
-  void resolveCollisions(World& world, const TimeStep& step) {
+    // restitution once, from the velocity before the substeps; the impulses kept, the impacts
+    // recorded
     applyRestitution(world);
     store(world, step.end());
   }
 
+ private:
   // one thread's part of a range: the t-th of n nearly equal pieces (the split never changes a
   // result, only who computes it)
   struct Share {
