@@ -101,7 +101,7 @@ Sweep3dReference sweepReference3d(const sim::scene3d::SceneDef& def, double smal
 }
 
 Sweep3dRow runSweepCase3d(const sim::scene3d::SceneDef& scene, w3::Integrator integrator, double dt,
-                        const Sweep3dReference& reference, int repeat) {
+                          const Sweep3dReference& reference, int repeat) {
   const sim::scene3d::SceneDef def = withMethod(scene, integrator, dt);
   Sweep3dRow row;
   row.integrator = integrator;
@@ -144,8 +144,9 @@ StabilityDef readStability3d(const sim::yaml::SceneSource& source) {
     sim::yaml::readGuarded(source.file, [&] {
       const sim::yaml::Reader r(source.file);
       if (r.text(n["parameter"], "parameter") != "dt")
-        r.fail(n["parameter"], "a 3D scene's stability searches 'dt' only: nothing collides in 3D, so no speed, mass "
-                               "ratio or stack height breaks it");
+        r.fail(n["parameter"],
+               "a 3D scene's stability searches 'dt' only: nothing collides in 3D, so no speed, mass "
+               "ratio or stack height breaks it");
     });
   // the block as 2D reads it; with parameter dt it names no body
   return readStability(source, sim::scene::SceneDef{});
@@ -153,15 +154,17 @@ StabilityDef readStability3d(const sim::yaml::SceneSource& source) {
 
 StabilityResult findBoundary3d(const sim::scene3d::SceneDef& def, const StabilityDef& stability) {
   const Metrics3dOptions o = criteria3d(def);
-  return searchBoundary(stability.from > 0.0 ? stability.from : def.dt, stability.to > 0.0 ? stability.to : 1e12, false,
-                        [&](double dt, RunMetrics& m) {
-                          sim::scene3d::SceneDef at = def;
-                          at.dt = dt;
-                          w3::World w = sim::scene3d::buildWorld(at);
-                          // as in 2D: the scene's duration or 1000 steps, whichever is longer
-                          m = measureRun3(w, std::max(at.duration, kMinimumSteps * dt));
-                          return holds3d(m, o);
-                        }, Growth::Doubling);
+  return searchBoundary(
+      stability.from > 0.0 ? stability.from : def.dt, stability.to > 0.0 ? stability.to : 1e12, false,
+      [&](double dt, RunMetrics& m) {
+        sim::scene3d::SceneDef at = def;
+        at.dt = dt;
+        w3::World w = sim::scene3d::buildWorld(at);
+        // as in 2D: the scene's duration or 1000 steps, whichever is longer
+        m = measureRun3(w, std::max(at.duration, kMinimumSteps * dt));
+        return holds3d(m, o);
+      },
+      Growth::Doubling);
 }
 
 }  // namespace render::analysis

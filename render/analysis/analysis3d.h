@@ -52,7 +52,7 @@ Sweep3dReference sweepReference3d(const sim::scene3d::SceneDef& def, double smal
 // reference: its center's, plus its bounding radius times the angle between the orientations),
 // metrics, and the median wall time of `repeat` runs without output
 Sweep3dRow runSweepCase3d(const sim::scene3d::SceneDef& def, sim::world3d::Integrator integrator, double dt,
-                        const Sweep3dReference& reference, int repeat);
+                          const Sweep3dReference& reference, int repeat);
 
 // the stability: block of a 3D scene, which searches `dt` only (nothing collides in 3D); throws
 // sim::yaml::SceneError at the fault

@@ -102,7 +102,8 @@ std::string gnuplotScript(const Chart& chart, const std::string& pngPath) {
     for (size_t i = 0; i < chart.series.size(); ++i) {
       g << "$V" << i << " << EOD\n";
       for (const auto& [x, y] : chart.series[i].points)
-        if (std::isfinite(y)) g << formatNumber(x) << ' ' << formatNumber(y) << ' ' << quoted(valueLabel(y, chart.series[i].lowerBounds)) << "\n";
+        if (std::isfinite(y))
+          g << formatNumber(x) << ' ' << formatNumber(y) << ' ' << quoted(valueLabel(y, chart.series[i].lowerBounds)) << "\n";
       g << "EOD\n";
     }
   // room above the tallest bar for its label
@@ -113,7 +114,7 @@ std::string gnuplotScript(const Chart& chart, const std::string& pngPath) {
     const ChartSeries& s = chart.series[i];
     // gnuplot refuses to plot a block without points
     if (s.points.empty()) continue;
-    const std::string style = !chart.bars ? " using 1:2 with linespoints lw 2 pt 7"
+    const std::string style = !chart.bars     ? " using 1:2 with linespoints lw 2 pt 7"
                               : s.lowerBounds ? " using 1:2 with boxes fill pattern 4 border"
                                               : " using 1:2 with boxes";
     g << (plotted ? ", " : "") << "$S" << i << style << " title " << quoted(s.title);

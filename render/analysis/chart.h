@@ -20,14 +20,14 @@ struct ChartSeries {
 struct Chart {
   std::string title, xLabel, yLabel;
   bool logX = false, logY = false;
-  bool bars = false;  // one bar per point (x is the bar's index) instead of lines
+  bool bars = false;                   // one bar per point (x is the bar's index) instead of lines
   std::vector<std::string> barLabels;  // a tick label per bar; '\n' breaks a line
   bool barValues = false;              // each bar labeled with its value, 3 significant digits
   std::vector<ChartSeries> series;
   // said in the middle of the plot: why it has nothing to draw ("every error is exactly 0"); series
   // without points are left out of the plot, and a chart with none left draws its axes and the note
   std::string note;
-  int width = 1280, height = 800;      // pixels
+  int width = 1280, height = 800;  // pixels
 };
 
 // the gnuplot script that draws `chart` into `pngPath`

@@ -11,11 +11,11 @@
 namespace render::analysis {
 
 struct PyramidRows {
-  int base = 0;                                   // boxes in the bottom row
+  int base = 0;                                      // boxes in the bottom row
   sim::core::Vec2 origin = sim::core::Vec2::Zero();  // the bottom row's first box
   sim::core::Vec2 along = sim::core::Vec2::Zero();   // from one box of a row to the next
   sim::core::Vec2 up = sim::core::Vec2::Zero();      // from a row's first box to the next row's first
-  std::size_t first = 0;                           // index of the bottom row's first box in the scene
+  std::size_t first = 0;                             // index of the bottom row's first box in the scene
 };
 
 // the scene's dynamic bodies read as a pyramid (base n, then n - 1, ... 1 boxes, each row's boxes
@@ -28,7 +28,6 @@ PyramidReading readPyramid(const std::vector<sim::scene::BodyDef>& bodies);
 
 // the static bodies, then a pyramid of `base` boxes like the bottom row's first, spaced and shifted
 // as `rows`, centred where the listed bottom row is, named b<row>_<place> from 1
-std::vector<sim::scene::BodyDef> pyramidOfBase(const std::vector<sim::scene::BodyDef>& bodies, const PyramidRows& rows,
-                                               int base);
+std::vector<sim::scene::BodyDef> pyramidOfBase(const std::vector<sim::scene::BodyDef>& bodies, const PyramidRows& rows, int base);
 
 }  // namespace render::analysis

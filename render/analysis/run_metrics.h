@@ -16,14 +16,14 @@ struct RunMetrics {
   double divergedAt = std::numeric_limits<double>::quiet_NaN();
   double energyStart = 0.0;
   double energyEnd = 0.0;
-  double energyScale = 0.0;   // max(|E(0)|, K(0) + |V(0)|): what drift and trend are relative to
-  double energyDrift = 0.0;   // max |E(t) − E(0)| / energyScale
-  double energyTrend = 0.0;   // max E over the last third / max E over the first third − 1 (relative
-                              // to the scale): growth, told apart from a bounded oscillation
+  double energyScale = 0.0;     // max(|E(0)|, K(0) + |V(0)|): what drift and trend are relative to
+  double energyDrift = 0.0;     // max |E(t) − E(0)| / energyScale
+  double energyTrend = 0.0;     // max E over the last third / max E over the first third − 1 (relative
+                                // to the scale): growth, told apart from a bounded oscillation
   double maxPenetration = 0.0;  // deepest overlap at any step end, m
   bool tunneled = false;        // a body ended up through another, with no contact on the way
   int tunnelA = -1, tunnelB = -1;
-  double topDrift = 0.0;        // the highest dynamic body's displacement over its size
+  double topDrift = 0.0;  // the highest dynamic body's displacement over its size
   // at the end of a finite run, against where the dynamic bodies started (their rest pose in a
   // stack): the highest one's displacement and the largest of any, m, and the fastest speed, m/s
   double topDisplacement = 0.0;
@@ -33,7 +33,7 @@ struct RunMetrics {
   // 3D runs (analysis3d.h): the largest |L(t) − L(0)| / |L(0)| about the origin, and | |q| − 1 |
   double angularMomentumDrift = 0.0;
   double quaternionDrift = 0.0;
-  const char* failure = "";     // the first criterion that failed, or "" (see holds())
+  const char* failure = "";  // the first criterion that failed, or "" (see holds())
 };
 
 struct MetricsOptions {

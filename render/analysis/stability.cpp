@@ -75,7 +75,8 @@ Study withParameter(const Study& study, double value, double phase) {
     case Parameter::Dt: def.dt = value; break;
     case Parameter::Speed: {
       sim::scene::BodyDef& b = def.bodies[def.bodyIndex(s.body)];
-      const sim::core::Vec2 direction = b.velocity.norm() > 0.0 ? sim::core::Vec2(b.velocity.normalized()) : sim::core::Vec2::UnitX();
+      const sim::core::Vec2 direction =
+          b.velocity.norm() > 0.0 ? sim::core::Vec2(b.velocity.normalized()) : sim::core::Vec2::UnitX();
       b.velocity = value * direction;
       b.position -= phase * def.dt * b.velocity;
       break;
@@ -134,8 +135,8 @@ StabilityResult findBoundary(const Study& def) {
   const double limit = s.to > 0.0 ? s.to : (integer ? 1000.0 : 1e12);
   // a pyramid's base grows by doubling (its runs cost the square of the base); a stack by one box
   const Growth growth = s.parameter == Parameter::StackHeight ? Growth::ByOne : Growth::Doubling;
-  StabilityResult r = s.fewest() ? searchFewest(startValue(def), limit, run)
-                                 : searchBoundary(startValue(def), limit, integer, run, growth);
+  StabilityResult r =
+      s.fewest() ? searchFewest(startValue(def), limit, run) : searchBoundary(startValue(def), limit, integer, run, growth);
   r.steps = spent;
   return r;
 }
@@ -250,25 +251,17 @@ std::string describeBoundary(const std::string& method, std::string_view p, cons
   const RunMetrics& m = r.failing;
   const std::string failure = m.failure;
   if (failure == "energy grows")
-    o << "energy +" << std::lround(100.0 * (m.energyEnd - m.energyStart) / std::max(std::abs(m.energyStart), m.energyScale)) << " %";
-  else if (failure == "non-finite state")
-    o << "non-finite state at t = " << m.divergedAt;
-  else if (failure == "tunneling")
-    o << "tunneling (a body passes through another)";
-  else if (failure == "stack drifts")
-    o << "the top drifts " << std::lround(100.0 * m.topDrift) << " % of its size";
-  else if (failure == "a body leaves its rest pose")
-    o << "a body ends " << m.maxDisplacement << " m from its rest pose";
-  else if (failure == "not at rest")
-    o << "a body still moves at " << m.fastest << " m/s";
-  else if (failure == "penetration")
-    o << "penetration " << m.maxPenetration << " m (over 2 × slop)";
-  else if (failure == "angular momentum drifts")
-    o << "|L| drifts " << std::lround(100.0 * m.angularMomentumDrift) << " %";
-  else if (failure == "quaternion drifts")
-    o << "|q| drifts " << m.quaternionDrift << " from 1";
-  else
-    o << failure;
+    o << "energy +" << std::lround(100.0 * (m.energyEnd - m.energyStart) / std::max(std::abs(m.energyStart), m.energyScale))
+      << " %";
+  else if (failure == "non-finite state") o << "non-finite state at t = " << m.divergedAt;
+  else if (failure == "tunneling") o << "tunneling (a body passes through another)";
+  else if (failure == "stack drifts") o << "the top drifts " << std::lround(100.0 * m.topDrift) << " % of its size";
+  else if (failure == "a body leaves its rest pose") o << "a body ends " << m.maxDisplacement << " m from its rest pose";
+  else if (failure == "not at rest") o << "a body still moves at " << m.fastest << " m/s";
+  else if (failure == "penetration") o << "penetration " << m.maxPenetration << " m (over 2 × slop)";
+  else if (failure == "angular momentum drifts") o << "|L| drifts " << std::lround(100.0 * m.angularMomentumDrift) << " %";
+  else if (failure == "quaternion drifts") o << "|q| drifts " << m.quaternionDrift << " from 1";
+  else o << failure;
   o << " at " << p << " = " << r.firstFailing;
   if (r.failsEverywhere) o << " (fails at every value tried)";
   else o << (r.fewest ? "; holds from " : "; holds at ") << r.largestStable;

@@ -19,7 +19,7 @@ struct StabilityResult {
   bool fewest = false;
   double largestStable = 0.0;  // the largest value that held (0 when none did)
   double firstFailing = 0.0;   // the smallest value found to fail (0 when none did)
-  RunMetrics failing;     // the metrics of the run at firstFailing
+  RunMetrics failing;          // the metrics of the run at firstFailing
   bool failsEverywhere = false;
   bool holdsToLimit = false;
   double steps = 0.0;        // the steps of every run of the search together

@@ -55,8 +55,8 @@ StabilityDef readStability(const sim::yaml::SceneSource& source, const sim::scen
     const PyramidReading pyramid = d.parameter == Parameter::PyramidBase ? readPyramid(model.bodies) : PyramidReading{};
     if (d.parameter == Parameter::PyramidBase) {
       if (!pyramid.rows)
-        r.fail(n["parameter"], "pyramid_base grows the pyramid the scene lists, row by row from the bottom: " +
-                                   pyramid.problem + "; list the boxes that way, or choose stack_height");
+        r.fail(n["parameter"], "pyramid_base grows the pyramid the scene lists, row by row from the bottom: " + pyramid.problem +
+                                   "; list the boxes that way, or choose stack_height");
     }
     // a stack height keeps some of the dynamic bodies and a pyramid's base rebuilds them
     if (d.countsBodies()) {
@@ -86,11 +86,15 @@ StabilityDef readStability(const sim::yaml::SceneSource& source, const sim::scen
       while ((largest + 1.0) * (largest + 2.0) / 2.0 + statics <= limits.maxBodies) ++largest;
       if (d.to > largest)
         r.fail(n["to"], "a pyramid of base " + std::to_string(static_cast<long>(d.to)) + " has more bodies than the limit of " +
-                            std::to_string(limits.maxBodies) + " (the largest base within it: " +
-                            std::to_string(static_cast<long>(largest)) + "); lower 'to' or raise the limit with 'sim: {max_bodies: N}'");
-      if (d.from > largest) r.fail(n["from"], "'from' is past the largest base within the bodies limit, " + std::to_string(static_cast<long>(largest)));
+                            std::to_string(limits.maxBodies) +
+                            " (the largest base within it: " + std::to_string(static_cast<long>(largest)) +
+                            "); lower 'to' or raise the limit with 'sim: {max_bodies: N}'");
+      if (d.from > largest)
+        r.fail(n["from"],
+               "'from' is past the largest base within the bodies limit, " + std::to_string(static_cast<long>(largest)));
       if (d.to == 0.0) d.to = std::min(largest, 1000.0);
-      if (d.from > 0.0 && !(d.to > d.from)) r.fail(n["from"], "'from' must be below 'to', " + std::to_string(static_cast<long>(d.to)));
+      if (d.from > 0.0 && !(d.to > d.from))
+        r.fail(n["from"], "'from' must be below 'to', " + std::to_string(static_cast<long>(d.to)));
       // the search starts at the listed base unless told otherwise
       if (d.from == 0.0 && d.to <= base)
         r.fail(n["to"] ? n["to"] : n, "the search starts at the listed pyramid's base, " + std::to_string(base) +

@@ -127,8 +127,8 @@ std::vector<double> parseRange(const std::string& text, const std::string& optio
   char tail = 0;
   if (std::sscanf(text.c_str(), "%lf:%lf:%lf%c", &from, &to, &counted, &tail) != 3 || !(from > 0.0) || !(to > 0.0) ||
       !std::isfinite(from) || !std::isfinite(to) || !(counted >= 1.0 && counted <= 1000.0) || counted != std::floor(counted))
-    throw UsageError(option + ": expected FROM:TO:COUNT with positive FROM and TO and a COUNT from 1 to 1000, got '" +
-                     text + "'");
+    throw UsageError(option + ": expected FROM:TO:COUNT with positive FROM and TO and a COUNT from 1 to 1000, got '" + text +
+                     "'");
   return logRange(from, to, static_cast<int>(counted));
 }
 

@@ -19,7 +19,7 @@ struct SweepCase {
 
 // what the error of a run is measured against
 struct SweepReference {
-  std::string name;                    // "expect", or how the reference run was made
+  std::string name;                          // "expect", or how the reference run was made
   std::vector<sim::core::BodyState> states;  // the reference run's final states (when not "expect")
 };
 

@@ -103,8 +103,7 @@ double simulationSeconds(const render::video::PlannedVariant& v, const render::v
 }
 
 // the parts, drawing the frames of `out` as the recorder does, and keeping them in `raw` (RGBA)
-FrameParts measureParts(const render::video::PlannedVariant& v, const render::video::VideoOutput& out,
-                        const std::string& raw) {
+FrameParts measureParts(const render::video::PlannedVariant& v, const render::video::VideoOutput& out, const std::string& raw) {
   using namespace render::draw;
   FrameParts parts;
   GlContext gl(out.width, out.height);
@@ -142,8 +141,8 @@ FrameParts measureParts(const render::video::PlannedVariant& v, const render::vi
   parts.simulation = simulationSeconds(v, out);
   parts.drawing -= parts.simulation;
   // handing over: the frames into a pipe as wide as the video writer's, to `cat` into /dev/null
-  render::jobs::Child cat = render::jobs::spawnChild({"cat"}, render::jobs::Stream::Pipe, render::jobs::Stream::Null,
-                                                     render::jobs::Stream::Null);
+  render::jobs::Child cat =
+      render::jobs::spawnChild({"cat"}, render::jobs::Stream::Pipe, render::jobs::Stream::Null, render::jobs::Stream::Null);
   render::jobs::widenPipe(cat.input, frame.rgba.size());
   const auto start = Clock::now();
   for (long k = 0; k < out.frameCount; ++k)
@@ -196,8 +195,7 @@ double processCpu() {
 // (one run each, frame by frame), each one's time split as GlContext measures it, and each frame
 // compared with the 4-sample one: the largest and mean difference of a channel (0-255) and the share
 // of pixels that differ at all. Frame `shown` of each is written to out/bench/antialiasing.
-void compareAntialiasing(const render::video::PlannedVariant& v, const render::video::VideoOutput& out,
-                         const std::string& stem) {
+void compareAntialiasing(const render::video::PlannedVariant& v, const render::video::VideoOutput& out, const std::string& stem) {
   using namespace render::draw;
   // every frame at 4, 2 and 1 samples, then the default (4, or 2 where GlCanvas finds the frame dense)
   const Antialiasing kinds[] = {{1, 4, false}, {1, 2, false}, {1, 1, false}, defaultAntialiasing()};
@@ -260,10 +258,11 @@ void compareAntialiasing(const render::video::PlannedVariant& v, const render::v
   for (size_t i = 0; i < d.size(); ++i) {
     const Drawing& x = d[i];
     const double rest = x.wall - x.cost.raster - x.cost.readback - x.cost.resolve;
-    std::printf("  %s: frame %6.2f (CPU %6.2f) = rasterizing %6.2f + read-back %5.2f + resolve %5.2f + rest %6.2f"
-                " | against 4: max %3d, mean %.3f, pixels differing %5.2f %%\n",
-                names[i], x.wall * ms, x.cpu * ms, x.cost.raster * ms, x.cost.readback * ms,
-                x.cost.resolve * ms, rest * ms, x.maxDiff, x.sumDiff / channels, 100.0 * x.differing / frames);
+    std::printf(
+        "  %s: frame %6.2f (CPU %6.2f) = rasterizing %6.2f + read-back %5.2f + resolve %5.2f + rest %6.2f"
+        " | against 4: max %3d, mean %.3f, pixels differing %5.2f %%\n",
+        names[i], x.wall * ms, x.cpu * ms, x.cost.raster * ms, x.cost.readback * ms, x.cost.resolve * ms, rest * ms, x.maxDiff,
+        x.sumDiff / channels, 100.0 * x.differing / frames);
   }
 }
 
@@ -314,16 +313,15 @@ int main(int argc, char** argv) {
     request.fps = fps;
     request.duration = std::stod(seconds);
     const render::video::RenderPlan plan = render::video::planVideos(
-        [&](const std::string& variant) { return render::scene::readScene(sim::yaml::readSceneSource(path, variant)); },
-        request);
+        [&](const std::string& variant) { return render::scene::readScene(sim::yaml::readSceneSource(path, variant)); }, request);
     const render::video::VideoOutput& out = plan.videos.front();
     const long frames = out.frameCount;
     const std::string raw = "out/bench/frames-" + size + ".rgba";
     if (antialiasing) return compareAntialiasing(plan.variants[out.variant], out, stem);
     const FrameParts parts = measureParts(plan.variants[out.variant], out, raw);
 
-    const std::vector<std::string> render{"", "render", path, "-o", "out/bench/render", "--size", size, "--fps", "60",
-                                          "--duration", seconds, "--quiet"};
+    const std::vector<std::string> render{"",      "render", path,         "-o",    "out/bench/render", "--size", size,
+                                          "--fps", "60",     "--duration", seconds, "--quiet"};
     auto renderWith = [&](const std::string& program) {
       std::vector<std::string> a = render;
       a[0] = program;
@@ -333,7 +331,8 @@ int main(int argc, char** argv) {
     const Timed side = timeWithPath(renderWith(rigidreel), standIn);
     // ffmpeg alone, with the arguments rigidreel gives it, on the same frames read from a file
     std::vector<std::string> encode{"ffmpeg"};
-    for (const std::string& a : render::video::ffmpegArguments(render::video::VideoFormat::Mp4, w, h, fps, "out/bench/ffmpeg-only.mp4"))
+    for (const std::string& a :
+         render::video::ffmpegArguments(render::video::VideoFormat::Mp4, w, h, fps, "out/bench/ffmpeg-only.mp4"))
       encode.push_back(a == "pipe:0" ? raw : a);
     const Timed ffmpeg = timeProgram(encode);
     // the whole render, its peak resident memory measured by GNU time (kB)
@@ -376,8 +375,8 @@ int main(int argc, char** argv) {
                   whole.timed.seconds / ffmpeg.seconds, whole.timed.cpu / ffmpeg.cpu);
       csv << "ratio whole render to ffmpeg alone " << stem << ',' << whole.name << ',' << size << ",,"
           << render::jobs::formatNumber(whole.timed.seconds / ffmpeg.seconds) << ",\n";
-      csv << "peak resident MB " << stem << ',' << whole.name << ',' << size << ",,"
-          << render::jobs::formatNumber(whole.peakMb) << ",\n";
+      csv << "peak resident MB " << stem << ',' << whole.name << ',' << size << ",," << render::jobs::formatNumber(whole.peakMb)
+          << ",\n";
     }
     std::printf("  rigidreel's video is ffmpeg alone's, byte for byte: %s\n", same ? "yes" : "NO");
   };

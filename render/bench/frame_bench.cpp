@@ -73,8 +73,9 @@ int main() {
     reference = c.finish();
   }
   Image sample;
-  for (const render::draw::Antialiasing aa : {render::draw::Antialiasing{1, 1}, render::draw::Antialiasing{1, 4}, render::draw::Antialiasing{2, 1},
-                                        render::draw::Antialiasing{3, 1}, render::draw::Antialiasing{2, 4}}) {
+  for (const render::draw::Antialiasing aa :
+       {render::draw::Antialiasing{1, 1}, render::draw::Antialiasing{1, 4}, render::draw::Antialiasing{2, 1},
+        render::draw::Antialiasing{3, 1}, render::draw::Antialiasing{2, 4}}) {
     render::draw::GlContext gl(kWidth, kHeight, aa);
     render::draw::GlCanvas c(gl, text, s);
     scene(c, camera, 0.3);
@@ -96,8 +97,8 @@ int main() {
         ++edges;
         for (int k = 0; k < 3; ++k) error += std::abs(a[k] - p[k]) / 3.0;
       }
-    std::printf("  %d×%d supersampling, %d× multisampling: %6.1f ms, edge error %5.2f\n", aa.supersample,
-                aa.supersample, aa.samples, ms, error / edges);
+    std::printf("  %d×%d supersampling, %d× multisampling: %6.1f ms, edge error %5.2f\n", aa.supersample, aa.supersample,
+                aa.samples, ms, error / edges);
   }
 
   std::printf("PNG of that frame (4× multisampled), mean of %d encodings:\n", kFrames);

@@ -63,17 +63,17 @@
 namespace {
 
 struct RunOptions {
-  int steps = 600;                // timed steps
-  double settleSeconds = 3.0;     // dropped layouts: simulated untimed before the timed steps
-  int every = 0;                  // print the measures every this many steps (0: only at the end)
-  int sample = 10;                // over the second half, measure every this many steps (untimed)
-  bool box2dOuterSkin = true;     // Box2D boxes as wide as ours (see the top of the file)
-  bool box2dContinuous = false;   // Box2D's time of impact against static bodies (rigidreel has none)
+  int steps = 600;               // timed steps
+  double settleSeconds = 3.0;    // dropped layouts: simulated untimed before the timed steps
+  int every = 0;                 // print the measures every this many steps (0: only at the end)
+  int sample = 10;               // over the second half, measure every this many steps (untimed)
+  bool box2dOuterSkin = true;    // Box2D boxes as wide as ours (see the top of the file)
+  bool box2dContinuous = false;  // Box2D's time of impact against static bodies (rigidreel has none)
   // rigidreel's soft_step: substeps per step and contact stiffness, as a scene's sim: {substeps,
   // contact_hertz} (the stiffness capped at a quarter of the substep rate)
   int substeps = sim::core::settings::kSubsteps;
   double contactHertz = sim::core::settings::kContactHertz;
-  int threads = 1;  // soft_step's sim: threads
+  int threads = 1;    // soft_step's sim: threads
   int simdWidth = 8;  // soft_step's lanes at once: 8 (AVX-512), 4 (AVX2) or 1, where the processor has them
 };
 
@@ -108,8 +108,7 @@ double threadCpuSeconds() {
 
 // settle untimed, then run `steps` steps timing only the stepping; the second half of the timed
 // steps is sampled (untimed) for its worst values
-RunResult run(StackRun& engine, const char* name, const bench::StackLayout& layout, int settleSteps,
-              const RunOptions& o) {
+RunResult run(StackRun& engine, const char* name, const bench::StackLayout& layout, int settleSteps, const RunOptions& o) {
   using Clock = std::chrono::steady_clock;
   RunResult r;
   r.settleSteps = settleSteps;
@@ -130,7 +129,8 @@ RunResult run(StackRun& engine, const char* name, const bench::StackLayout& layo
       done = next;
       const std::vector<bench::BodyEnd> end = engine.ends();
       const bench::StackMetrics m = bench::measure(layout, end);
-      if (done >= half) r.worstTop = std::max(r.worstTop, m.topDisplacement), r.worstSpeed = std::max(r.worstSpeed, m.fastestSpeed);
+      if (done >= half)
+        r.worstTop = std::max(r.worstTop, m.topDisplacement), r.worstSpeed = std::max(r.worstSpeed, m.fastestSpeed);
       if (o.every > 0 && done % o.every == 0)
         std::printf("  %-7s step %4d: top %.4f m, max |x - rest x| %.4f m, fastest %.4f m/s, moved %d\n", name,
                     settleSteps + done, m.topDisplacement, m.maxOffRestX, m.fastestSpeed, m.moved);
@@ -274,8 +274,8 @@ class Box2dRun : public StackRun {
 // box's displacement and the fastest body; the other measures are not known (nan) ---
 
 std::optional<RunResult> runBox2d3(const std::string& dir, int base, const RunOptions& o) {
-  const std::string command = "'" + dir + "/b3_pyramid' " + std::to_string(base) + " " + std::to_string(o.steps) + " " +
-                              std::to_string(o.substeps);
+  const std::string command =
+      "'" + dir + "/b3_pyramid' " + std::to_string(base) + " " + std::to_string(o.steps) + " " + std::to_string(o.substeps);
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return std::nullopt;
   double ms = 0.0, top = 0.0, fastest = 0.0;
@@ -299,8 +299,7 @@ std::optional<bench::StackLayout> parseLayout(const std::string& spec) {
     if (part.size() == 3 && part[0] == "pyramid" && (part[2] == "touching" || part[2] == "dropped" || part[2] == "packed"))
       return bench::pyramid(std::stoi(part[1]), part[2] == "dropped", part[2] == "packed");
     if (part.size() == 2 && part[0] == "stack") return bench::stack(std::stoi(part[1]));
-  } catch (const std::exception&) {
-  }
+  } catch (const std::exception&) {}
   return std::nullopt;
 }
 
@@ -308,13 +307,15 @@ std::optional<bench::StackLayout> parseLayout(const std::string& spec) {
 
 int main(int argc, char** argv) {
   CLI::App app{"rigidreel's stack solvers against Box2D 2.4 on the same stack layouts, at Box2D's benchmark settings"};
-  std::vector<std::string> layoutSpecs{"pyramid:20:touching", "pyramid:20:dropped", "pyramid:20:packed",
+  std::vector<std::string> layoutSpecs{"pyramid:20:touching",  "pyramid:20:dropped",  "pyramid:20:packed",
                                        "pyramid:100:touching", "pyramid:100:dropped", "pyramid:100:packed"};
   std::vector<std::string> methods{"sequential"};
   std::string engine = "both", skin = "outer", csvPath, box2d3Dir;
   bench::StackSettings settings;
   RunOptions options;
-  app.add_option("--layout", layoutSpecs, "pyramid:BASE:touching, pyramid:BASE:dropped, pyramid:BASE:packed (Box2D v3's large_pyramid) or stack:HEIGHT (repeatable)");
+  app.add_option(
+      "--layout", layoutSpecs,
+      "pyramid:BASE:touching, pyramid:BASE:dropped, pyramid:BASE:packed (Box2D v3's large_pyramid) or stack:HEIGHT (repeatable)");
   app.add_option("--method", methods, "rigidreel's collision method (repeatable): sequential, soft_step, ...");
   app.add_option("--engine", engine, "both, ours or box2d")->check(CLI::IsMember({"both", "ours", "box2d"}));
   app.add_option("--steps", options.steps, "timed steps of dt (600: 10 s)")->check(CLI::PositiveNumber);
@@ -325,9 +326,11 @@ int main(int argc, char** argv) {
   app.add_option("--position-iterations", settings.positionIterations, "position iterations")->check(CLI::Range(0, 1000));
   app.add_option("--friction", settings.friction, "Coulomb friction of every box and the ground");
   app.add_option("--substeps", options.substeps, "rigidreel's soft_step: substeps per step")->check(CLI::Range(1, 1000));
-  app.add_option("--threads", options.threads, "rigidreel's soft_step: threads sharing each set of contacts (processor time counts them all)")
+  app.add_option("--threads", options.threads,
+                 "rigidreel's soft_step: threads sharing each set of contacts (processor time counts them all)")
       ->check(CLI::Range(1, sim::core::settings::kMaxThreads));
-  app.add_option("--simd-width", options.simdWidth, "rigidreel's soft_step: lanes solved at once, 8, 4 or 1 (the widest the processor has, at most this)")
+  app.add_option("--simd-width", options.simdWidth,
+                 "rigidreel's soft_step: lanes solved at once, 8, 4 or 1 (the widest the processor has, at most this)")
       ->check(CLI::IsMember({1, 4, 8}));
   app.add_option("--contact-hertz", options.contactHertz,
                  "rigidreel's soft_step: contact stiffness, Hz (capped at a quarter of the substep rate)")
@@ -374,22 +377,21 @@ int main(int argc, char** argv) {
              "fastest_m_per_s,fastest_rad_per_s,moved,worst_top_second_half_m,worst_fastest_second_half_m_per_s,"
              "diverged,substeps,contact_hertz,cpu_ratio_to_box2d_v3\n";
   }
-  std::printf("gravity %g, dt %.6g, %d velocity and %d position iterations, friction %g, restitution %g\n",
-              settings.gravity, settings.dt, settings.velocityIterations, settings.positionIterations, settings.friction,
-              settings.restitution);
+  std::printf("gravity %g, dt %.6g, %d velocity and %d position iterations, friction %g, restitution %g\n", settings.gravity,
+              settings.dt, settings.velocityIterations, settings.positionIterations, settings.friction, settings.restitution);
   std::printf("soft_step: %d substeps, contacts at %g Hz (at most a quarter of the substep rate), %d thread%s\n",
               options.substeps, options.contactHertz, options.threads, options.threads == 1 ? "" : "s");
   // the stepping thread's processor time includes its waits for the others at each set
   if (options.threads > 1) std::printf("with --threads, compare ms/step (wall): cpu ms is the stepping thread's alone\n");
   const int dropSettle = static_cast<int>(std::lround(options.settleSeconds / settings.dt));
-  std::printf("timed: %d steps after building; touching layouts steps 1-%d (standing from the start), dropped ones "
-              "steps %d-%d (after %d untimed steps, %g s, to settle); every engine over the same steps\n",
-              options.steps, options.steps, dropSettle + 1, dropSettle + options.steps, dropSettle,
-              options.settleSeconds);
+  std::printf(
+      "timed: %d steps after building; touching layouts steps 1-%d (standing from the start), dropped ones "
+      "steps %d-%d (after %d untimed steps, %g s, to settle); every engine over the same steps\n",
+      options.steps, options.steps, dropSettle + 1, dropSettle + options.steps, dropSettle, options.settleSeconds);
   // at the end of the timed steps, and the worst over their second half, sampled every 10 steps
   std::printf("%-22s %-10s %6s %11s %9s %9s %9s %13s %11s %9s %6s %12s %12s %9s %7s\n", "layout", "engine", "boxes",
-              "timed steps", "ms/step", "cpu ms", "top m", "|x-rest x| m", "fastest m/s", "|w| rad/s", "moved",
-              "worst top m", "worst m/s", "/box2d", "/v3");
+              "timed steps", "ms/step", "cpu ms", "top m", "|x-rest x| m", "fastest m/s", "|w| rad/s", "moved", "worst top m",
+              "worst m/s", "/box2d", "/v3");
   int status = 0;
   for (const std::string& spec : layoutSpecs) {
     const std::optional<bench::StackLayout> layout = parseLayout(spec);
@@ -407,20 +409,18 @@ int main(int argc, char** argv) {
       if (peer3 && &r != &*peer3) std::snprintf(ratio3, sizeof ratio3, "%.2f", r.cpuMsPerStep / peer3->cpuMsPerStep);
       std::snprintf(timed, sizeof timed, "%d-%d", r.settleSteps + 1, r.settleSteps + options.steps);
       std::printf("%-22s %-10s %6zu %11s %9.3f %9.3f %9.4f %13.4f %11.4f %9.4f %6d %12.4f %12.4f %9s %7s%s\n",
-                  layout->name.c_str(), name.c_str(), layout->boxes.size(), timed, r.msPerStep, r.cpuMsPerStep,
-                  m.topDisplacement, m.maxOffRestX, m.fastestSpeed, m.fastestSpin, m.moved, r.worstTop, r.worstSpeed,
-                  ratio, ratio3, r.diverged ? "  DIVERGED" : "");
+                  layout->name.c_str(), name.c_str(), layout->boxes.size(), timed, r.msPerStep, r.cpuMsPerStep, m.topDisplacement,
+                  m.maxOffRestX, m.fastestSpeed, m.fastestSpin, m.moved, r.worstTop, r.worstSpeed, ratio, ratio3,
+                  r.diverged ? "  DIVERGED" : "");
       if (csv.is_open())
-        csv << layout->name << ',' << name << ',' << layout->boxes.size() << ',' << r.settleSteps << ','
-            << r.settleSteps + 1 << ',' << r.settleSteps + options.steps << ',' << settings.velocityIterations << ','
-            << settings.positionIterations << ',' << r.msPerStep << ',' << r.cpuMsPerStep << ',' << ratio << ','
-            << m.topDisplacement << ',' << m.maxOffRestX << ',' << m.fastestSpeed << ',' << m.fastestSpin << ','
-            << m.moved << ',' << r.worstTop << ',' << r.worstSpeed << ',' << r.diverged << ',';
+        csv << layout->name << ',' << name << ',' << layout->boxes.size() << ',' << r.settleSteps << ',' << r.settleSteps + 1
+            << ',' << r.settleSteps + options.steps << ',' << settings.velocityIterations << ',' << settings.positionIterations
+            << ',' << r.msPerStep << ',' << r.cpuMsPerStep << ',' << ratio << ',' << m.topDisplacement << ',' << m.maxOffRestX
+            << ',' << m.fastestSpeed << ',' << m.fastestSpin << ',' << m.moved << ',' << r.worstTop << ',' << r.worstSpeed << ','
+            << r.diverged << ',';
       // the soft_step settings on soft_step's rows only
-      if (name == "soft_step")
-        csv << options.substeps << ',' << options.contactHertz;
-      else
-        csv << ',';
+      if (name == "soft_step") csv << options.substeps << ',' << options.contactHertz;
+      else csv << ',';
       csv << ',' << ratio3 << '\n';
       std::fflush(stdout);
       status |= r.diverged;
@@ -436,10 +436,8 @@ int main(int argc, char** argv) {
     // the touching layout's do not, so its time and top there would be another scene's)
     if (!box2d3Dir.empty() && layout->name.find("-packed") != std::string::npos) {
       peer3 = runBox2d3(box2d3Dir, std::stoi(spec.substr(8)), options);
-      if (peer3)
-        row("box2d-v3", *peer3);
-      else
-        std::fprintf(stderr, "--box2d3: %s/b3_pyramid did not run\n", box2d3Dir.c_str());
+      if (peer3) row("box2d-v3", *peer3);
+      else std::fprintf(stderr, "--box2d3: %s/b3_pyramid did not run\n", box2d3Dir.c_str());
     }
     for (sim::world::CollisionMethod method : ourMethods) {
       const std::string name(sim::world::collisionMethodName(method));

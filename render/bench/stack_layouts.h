@@ -34,22 +34,22 @@ struct BoxPlacement {
 
 // the numbers both engines are given: Box2D's benchmark settings unless changed
 struct StackSettings {
-  double gravity = -10.0;     // m/s², along y
-  double dt = 1.0 / 60.0;     // s
+  double gravity = -10.0;  // m/s², along y
+  double dt = 1.0 / 60.0;  // s
   int velocityIterations = 8;
   int positionIterations = 3;
   double friction = 0.6;
   double restitution = 0.0;
-  double density = 1.0;       // kg/m²; every box alike, so only ratios of mass matter
+  double density = 1.0;  // kg/m²; every box alike, so only ratios of mass matter
 };
 
 struct StackLayout {
-  std::string name;             // e.g. "pyramid100-touching"
-  double boxSize = 1.0;         // side of every box, m
-  double groundHalfWidth = 40;  // the ground is a static box of this half width, 1 m thick,
-  double groundCenterX = 0.0;   // with its top at y = 0
+  std::string name;                 // e.g. "pyramid100-touching"
+  double boxSize = 1.0;             // side of every box, m
+  double groundHalfWidth = 40;      // the ground is a static box of this half width, 1 m thick,
+  double groundCenterX = 0.0;       // with its top at y = 0
   std::vector<BoxPlacement> boxes;  // bottom row first, the top box last
-  bool dropped = false;         // rows start apart: judge by |x − rest x|, not by the top box
+  bool dropped = false;             // rows start apart: judge by |x − rest x|, not by the top box
 };
 
 // Box2D's pyramid of `base` boxes on the bottom row (base (base + 1) / 2 boxes in all)

@@ -53,8 +53,7 @@ int sweep3d(const SceneOptions& so, const MethodLists& methods, const std::strin
             bool verbose) {
   const sim::scene3d::SceneDef def = so.load3d().model();
   const std::vector<Integrator> integrators = integrators3d(methods);
-  const std::vector<double> steps =
-      dt.empty() ? defaultSweepSteps(def.dt) : parseRange(dt, "--dt");
+  const std::vector<double> steps = dt.empty() ? defaultSweepSteps(def.dt) : parseRange(dt, "--dt");
   if (repeat < 1 || repeat > 1000) throw UsageError("--repeat: expected a whole number from 1 to 1000");
   render::video::createOutputDirectory(outDir);
   checkSweepSteps(*std::min_element(steps.begin(), steps.end()), def.expects.empty(), def.maxSteps, def.duration);

@@ -49,9 +49,10 @@ std::string describeModel(const sim::scene::SceneDef& d) {
   size_t dynamic = 0;
   for (const auto& b : d.bodies) dynamic += !b.isStatic;
   std::ostringstream o;
-  o << plural(d.bodies.size(), "body") << " (" << dynamic << " dynamic); forces:"
-    << forcesOf(d, d.gravity != sim::core::Vec2::Zero()) << "; " << plural(d.events.size(), "impulse event") << "; integrator " << sim::core::integratorName(d.integrator)
-    << ", dt " << formatNumber(d.dt) << " s, duration " << formatNumber(d.duration) << " s";
+  o << plural(d.bodies.size(), "body") << " (" << dynamic
+    << " dynamic); forces:" << forcesOf(d, d.gravity != sim::core::Vec2::Zero()) << "; "
+    << plural(d.events.size(), "impulse event") << "; integrator " << sim::core::integratorName(d.integrator) << ", dt "
+    << formatNumber(d.dt) << " s, duration " << formatNumber(d.duration) << " s";
   return o.str();
 }
 
@@ -88,8 +89,7 @@ void reportResting(const sim::scene::SceneDef& def, const sim::world::World& w, 
 
 // say when `auto` went from the event method to the stack solver during the run
 void reportSwitch(const sim::world::World& w, std::ostream& out) {
-  if (w.methodSwitchTime)
-    out << "  switched: " << describeCollisionMethod(w) << '\n';
+  if (w.methodSwitchTime) out << "  switched: " << describeCollisionMethod(w) << '\n';
 }
 
 // with sim: {sleep: true}, how many of the dynamic bodies sleep at the end (sim/world/sleep.h)
@@ -157,10 +157,10 @@ bool checkCase(const OpenScene& scene, const std::string& variant, const Verbosi
 // normalized after each step
 std::string describeModel3d(const sim::scene3d::SceneDef& d) {
   std::ostringstream o;
-  o << plural(d.bodies.size(), "body") << " (3D, free); forces:" << forcesOf(d, d.gravity != sim::world3d::Vec3::Zero())
-    << "; " << plural(d.events.size(), "impulse event") << "; integrator "
-    << sim::world3d::kIntegratorNames.name(d.integrator) << (d.normalize ? " (q normalized after each step)" : " (q left unnormalized)")
-    << ", dt " << formatNumber(d.dt) << " s, duration " << formatNumber(d.duration) << " s";
+  o << plural(d.bodies.size(), "body") << " (3D, free); forces:" << forcesOf(d, d.gravity != sim::world3d::Vec3::Zero()) << "; "
+    << plural(d.events.size(), "impulse event") << "; integrator " << sim::world3d::kIntegratorNames.name(d.integrator)
+    << (d.normalize ? " (q normalized after each step)" : " (q left unnormalized)") << ", dt " << formatNumber(d.dt)
+    << " s, duration " << formatNumber(d.duration) << " s";
   return o.str();
 }
 
@@ -296,11 +296,14 @@ void addCheckCommand(CLI::App& app, int& exitCode) {
   auto threads = std::make_shared<std::optional<int>>();
   CLI::App* cmd = app.add_subcommand("check", "validate scenes, run every variant to its duration and verify its expect entries");
   cmd->add_option("scenes", *files, "scene files (YAML) and directories of them (every *.yaml, sorted)")->required();
-  cmd->add_option("-o,--output", *output, "write the report to this file instead of standard output (errors stay on standard error)");
+  cmd->add_option("-o,--output", *output,
+                  "write the report to this file instead of standard output (errors stay on standard error)");
   say->addTo(*cmd, "only what failed: the failed expect entries and the errors",
-             "also every impulse the collision response applied, and every resting and staying-in-contact record, not one line per pair");
-  cmd->add_option("--threads", *threads,
-                  "soft_step: threads sharing each set of contacts, 1 to 64 (each scene's sim: threads; the same result with any)")
+             "also every impulse the collision response applied, and every resting and staying-in-contact record, not one line "
+             "per pair");
+  cmd->add_option(
+         "--threads", *threads,
+         "soft_step: threads sharing each set of contacts, 1 to 64 (each scene's sim: threads; the same result with any)")
       ->check(CLI::Range(1, sim::core::settings::kMaxThreads));
   cmd->add_flag("--render", *render, "also plan every output the scene asks for (videos, posters, panels), drawing nothing");
   cmd->callback([files, say, output, render, threads, &exitCode] {

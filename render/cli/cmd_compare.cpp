@@ -89,8 +89,8 @@ int compare(const CompareCommand& o) {
     std::cout << (b.exceeded() ? "  FAIL  " : "  ok    ") << b.name << " (t = " << render::video::timeForName(b.from) << " to "
               << render::video::timeForName(b.to) << "): position " << over(b.position, tolerance.position) << "; angle "
               << over(b.angle, tolerance.angle) << "; velocity " << over(b.velocity, tolerance.velocity)
-              << "; kinetic energy at t = " << render::video::timeForName(b.to) << ": ours " << formatNumber(b.oursEnergy) << " J, theirs "
-              << formatNumber(b.theirsEnergy) << " J\n";
+              << "; kinetic energy at t = " << render::video::timeForName(b.to) << ": ours " << formatNumber(b.oursEnergy)
+              << " J, theirs " << formatNumber(b.theirsEnergy) << " J\n";
   }
   if (!any) throw UsageError(o.trace + ": no rows for any body of the scene");
   if (!o.plot.empty()) plot(bodies, o.plot, base, o.trace);

@@ -29,7 +29,8 @@ std::vector<double> times(const std::string& text, double duration) {
   while (std::getline(in, item, ',')) {
     const double t = decimalText(item).value_or(-1.0);
     if (!(t >= 0.0 && t <= duration))
-      throw UsageError("--at: expected times in seconds within [0, " + formatNumber(duration) + "] separated by commas, got '" + item + "'");
+      throw UsageError("--at: expected times in seconds within [0, " + formatNumber(duration) + "] separated by commas, got '" +
+                       item + "'");
     out.push_back(t);
   }
   if (out.empty()) throw UsageError("--at: give at least one time");
@@ -71,10 +72,12 @@ int expect(const ExpectCommand& o) {
         if (r.time == e.time && r.quantity == quantity) return r;
       throw std::logic_error("no result for " + quantity);
     };
-    std::cout << "  - {time: " << formatNumber(e.time) << ", body: " << e.body << ", position: " << pair(find(e.body + ".position").actual)
-              << ", angle: " << formatNumber(find(e.body + ".angle").actual[0]) << ", velocity: "
-              << pair(find(e.body + ".velocity").actual) << ", angular_velocity: "
-              << formatNumber(find(e.body + ".angular_velocity").actual[0]) << ", tolerance: " << formatNumber(o.tolerance) << "}\n";
+    std::cout << "  - {time: " << formatNumber(e.time) << ", body: " << e.body
+              << ", position: " << pair(find(e.body + ".position").actual)
+              << ", angle: " << formatNumber(find(e.body + ".angle").actual[0])
+              << ", velocity: " << pair(find(e.body + ".velocity").actual)
+              << ", angular_velocity: " << formatNumber(find(e.body + ".angular_velocity").actual[0])
+              << ", tolerance: " << formatNumber(o.tolerance) << "}\n";
   }
   return kExitOk;
 }

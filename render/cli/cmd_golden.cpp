@@ -121,8 +121,7 @@ int checkAll(const CheckCommand& o) {
     CaseResult result = checkRun(run, record, o.strict);
     if (fileSha256(c.file) != record.sceneSha256) result.warnings.push_back(c.file + " changed since it was recorded");
     for (const LevelResult& l : result.levels)
-      std::cout << result.name << "  " << levelName(l.level) << "  "
-                << (l.failed() ? "FAIL  " : "") << l.message << '\n';
+      std::cout << result.name << "  " << levelName(l.level) << "  " << (l.failed() ? "FAIL  " : "") << l.message << '\n';
     for (const std::string& w : result.warnings) std::cerr << result.name << ": warning: " << w << '\n';
     results.push_back(std::move(result));
   }
@@ -144,8 +143,8 @@ int checkAll(const CheckCommand& o) {
       if (l.failed()) levels += std::string(levels.empty() ? "" : ", ") + levelName(l.level);
     const GoldenRun run = record(cases[i], o.golden);
     std::cout << "updated " << describeRecord(run, o.golden) << "; replaced the record of "
-              << count(records[i].times.checkpoints.size(), "checkpoint") << " and " << count(records[i].frameNames.size(), "frame")
-              << " that differed in: " << levels << '\n';
+              << count(records[i].times.checkpoints.size(), "checkpoint") << " and "
+              << count(records[i].frameNames.size(), "frame") << " that differed in: " << levels << '\n';
   }
   if (failed && o.update) return kExitOk;
   return failed ? kExitFailure : kExitOk;
@@ -158,7 +157,8 @@ void addGoldenCommand(CLI::App& app, int& exitCode) {
   golden->require_subcommand(1);
 
   auto r = std::make_shared<RecordCommand>();
-  CLI::App* rec = golden->add_subcommand("record", "record each scene variant's states, trace, draw lists and frames into DIR/<scene>[-<variant>]/");
+  CLI::App* rec = golden->add_subcommand(
+      "record", "record each scene variant's states, trace, draw lists and frames into DIR/<scene>[-<variant>]/");
   rec->add_option("scenes", r->scenes, "scene files (YAML) or directories of them")->required();
   rec->add_option("-o,--output", r->output, "the golden directory (default: golden)");
   rec->callback([r, &exitCode] { exitCode = runInterruptible("golden record", [&] { return recordAll(*r); }); });

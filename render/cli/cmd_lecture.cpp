@@ -65,7 +65,8 @@ struct PackScene {
     double sum = 0.0;
     const auto add = [&](const auto& plan) {
       for (const auto& v : plan.videos) sum += static_cast<double>(v.frameCount) * v.width * v.height;
-      if (plan.stills) sum += static_cast<double>(plan.stills->shots.size() * plan.variants.size()) * plan.stills->width * plan.stills->height;
+      if (plan.stills)
+        sum += static_cast<double>(plan.stills->shots.size() * plan.variants.size()) * plan.stills->width * plan.stills->height;
     };
     if (plan3d) add(*plan3d);
     if (plan) add(*plan);
@@ -158,8 +159,7 @@ SceneResult runHere(const PackScene& scene, const std::string& root) {
     if (d.when == VariantDiverged::While::Stills)
       std::cerr << scene.file << ": the simulation diverged at t = " << timeForName(d.time)
                 << "; try a smaller step (sim: {dt: ...}) or another integrator\n";
-    else
-      std::cerr << videoDiverged(scene.file, d);
+    else std::cerr << videoDiverged(scene.file, d);
     r.message = "see the message above";
   } catch (const VariantDiverged3d& d) {
     std::cerr << divergedMessage(scene.file, d.model, d) << '\n';
@@ -236,11 +236,13 @@ int lecture(const LectureCommand& o) {
       ++finished;
       const std::string counter = "[" + std::to_string(finished) + "/" + std::to_string(scenes.size()) + "] ";
       if (r.ok && !o.quiet)
-        std::cout << counter << r.scene << ": " << r.outputs.size() << " outputs in " << secondsText(job.seconds) << " s" << std::endl;
+        std::cout << counter << r.scene << ": " << r.outputs.size() << " outputs in " << secondsText(job.seconds) << " s"
+                  << std::endl;
       if (r.ok && o.verbose)
         for (const std::string& path : r.outputs) std::cout << "  wrote " << path << '\n';
       if (!r.ok)
-        std::cerr << counter << r.scene << " FAILED (" << describeStatus(job.status) << "):\n" << indented(job.errors) << std::flush;
+        std::cerr << counter << r.scene << " FAILED (" << describeStatus(job.status) << "):\n"
+                  << indented(job.errors) << std::flush;
     });
   }
   // the page from every record in the folder, this run's and any other's (after a single scene, it
@@ -256,16 +258,20 @@ int lecture(const LectureCommand& o) {
 
 void addLectureCommand(CLI::App& app, int& exitCode) {
   auto o = std::make_shared<LectureCommand>();
-  CLI::App* cmd = app.add_subcommand(
-      "lecture", "a pack of scenes: every variant's video and poster and the poll panels, one job per scene");
+  CLI::App* cmd =
+      app.add_subcommand("lecture", "a pack of scenes: every variant's video and poster and the poll panels, one job per scene");
   cmd->add_option("scenes", o->paths, "scene files (YAML) and directories of them (every *.yaml)");
   cmd->add_option("-o,--output", o->output, "the output directory (default: out/lecture)");
   cmd->add_option("-j,--jobs", o->jobs, "scenes rendered at a time (default: the number of cores)");
-  cmd->add_option("--size", o->size, "frame size WIDTHxHEIGHT in pixels, even (default: each scene's), and the poll panel sheets' (default 1920x1080)");
+  cmd->add_option(
+      "--size", o->size,
+      "frame size WIDTHxHEIGHT in pixels, even (default: each scene's), and the poll panel sheets' (default 1920x1080)");
   cmd->add_option("--fps", o->fps, "frames per second (default: each scene's)");
-  o->addTo(*cmd, "no line per scene as it ends (the summary and failures stay)", "also every file each scene wrote, under its line");
+  o->addTo(*cmd, "no line per scene as it ends (the summary and failures stay)",
+           "also every file each scene wrote, under its line");
   cmd->add_flag("--list", o->list, "print the paths the pack would write, one a line, and render nothing");
-  cmd->add_option("--title", o->title, "the page's title (default: \"Lecture pack\"; kept in DIR/title.txt for the jobs and --page)");
+  cmd->add_option("--title", o->title,
+                  "the page's title (default: \"Lecture pack\"; kept in DIR/title.txt for the jobs and --page)");
   cmd->add_option("--page", o->page, "only rebuild DIR/index.html from the scenes DIR holds (after jobs run one by one)");
   cmd->callback([o, &exitCode] { exitCode = runInterruptible("lecture", [&] { return lecture(*o); }); });
 }

@@ -35,8 +35,14 @@ struct RenderCommand : SceneOptions, Verbosity {
 VideoRequest request(const RenderCommand& o) {
   const std::optional<VideoFormat> format = videoFormatFromName(o.format);
   if (!format) throw UsageError("--format: unknown format '" + o.format + "'; choose mp4, webm or gif");
-  VideoRequest r{.root = o.output, .variant = o.variant, .allVariants = o.allVariants, .size = {}, .fps = o.fps,
-                 .duration = o.duration, .format = *format, .frames = o.frames};
+  VideoRequest r{.root = o.output,
+                 .variant = o.variant,
+                 .allVariants = o.allVariants,
+                 .size = {},
+                 .fps = o.fps,
+                 .duration = o.duration,
+                 .format = *format,
+                 .frames = o.frames};
   if (!o.size.empty()) r.size = parseSize(o.size);
   if (o.fps) checkFps(*o.fps);
   if (o.duration && (!(*o.duration > 0.0) || !std::isfinite(*o.duration)))
@@ -80,7 +86,8 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("scene", o->scene, "the scene file (YAML)")->required();
   o->SceneOptions::addTo(*cmd);
   cmd->add_option("-o,--output", o->output, "the output directory (default: out)");
-  cmd->add_flag("--all-variants", o->allVariants, "one video per variant (the base scene when it has none)")->excludes("--variant");
+  cmd->add_flag("--all-variants", o->allVariants, "one video per variant (the base scene when it has none)")
+      ->excludes("--variant");
   cmd->add_option("--size", o->size, "frame size WIDTHxHEIGHT in pixels, even (default: the scene's, 1280x720)");
   cmd->add_option("--overlay", o->overlay, "another simulator's trace (CSV, as --trace writes): its bodies dashed over ours");
   cmd->add_option("--fps", o->fps, "frames per second (default: the scene's, 60)");

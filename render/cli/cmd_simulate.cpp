@@ -99,8 +99,7 @@ void printJson(const sim::scene::SceneDef& def, const sim::world::World& w, bool
   std::vector<RestingSpan> spans;
   if (verbose)
     for (const sim::world::RestingRecord& r : w.resting) spans.push_back({r, r.t, 1});
-  else
-    spans = mergeResting(w.resting);
+  else spans = mergeResting(w.resting);
   for (const RestingSpan& s : spans)
     j.beginObject()
         .field("t", s.first.t)
@@ -116,9 +115,8 @@ void printJson(const sim::scene::SceneDef& def, const sim::world::World& w, bool
 }
 
 void printText(const sim::scene::SceneDef& def, const sim::world::World& w, bool verbose) {
-  std::cout << def.name << (def.variant.empty() ? "" : " [" + def.variant + "]") << ": t = " << formatNumber(w.time)
-            << ", " << sim::core::integratorName(w.integrator) << ", dt = " << formatNumber(w.dt) << ", " << w.steps
-            << " steps\n";
+  std::cout << def.name << (def.variant.empty() ? "" : " [" + def.variant + "]") << ": t = " << formatNumber(w.time) << ", "
+            << sim::core::integratorName(w.integrator) << ", dt = " << formatNumber(w.dt) << ", " << w.steps << " steps\n";
   std::cout << std::left << std::setw(16) << "body" << std::right;
   for (const char* h : {"x", "y", "angle", "vx", "vy", "omega", "kinetic"}) std::cout << std::setw(14) << h;
   std::cout << '\n';
@@ -132,8 +130,8 @@ void printText(const sim::scene::SceneDef& def, const sim::world::World& w, bool
   const sim::world::Energy e = sim::world::energy(w);
   const sim::core::Vec2 p = sim::world::linearMomentum(w);
   std::cout << std::setprecision(10) << "energy: kinetic " << e.kinetic << ", potential " << e.potential << ", total "
-            << e.total() << "\nmomentum: (" << p.x() << ", " << p.y() << "), angular momentum about the origin: "
-            << sim::world::angularMomentum(w) << '\n';
+            << e.total() << "\nmomentum: (" << p.x() << ", " << p.y()
+            << "), angular momentum about the origin: " << sim::world::angularMomentum(w) << '\n';
   std::cout << "collisions: " << describeCollisionMethod(w) << "; " << w.impacts.size() << " impulses applied";
   if (verbose)
     for (const sim::world::RestingRecord& r : w.resting) std::cout << "; " << describeResting(def, r);
@@ -154,7 +152,8 @@ int simulate(const SimulateOptions& o) {
   }
   const sim::scene::SceneDef def = o.load().model();
   const double until = o.until.value_or(def.duration);
-  if (!(until >= 0.0) || !std::isfinite(until)) throw UsageError("--until: the end time must be zero or a positive finite number");
+  if (!(until >= 0.0) || !std::isfinite(until))
+    throw UsageError("--until: the end time must be zero or a positive finite number");
   if (const std::string over = sim::scene::stepsOverLimit(def, until); !over.empty())
     throw UsageError("--until: " + over + "; choose an earlier end, or raise the scene's 'sim: {max_steps: N}'");
   sim::world::World world = startWorld(def, o.scene);
@@ -171,9 +170,9 @@ int simulate(const SimulateOptions& o) {
     RunProgress progress(o.scene, until, trace.get(), !o.quiet);
     world.advanceTo(until, progress.observer());
   } catch (const sim::world::Diverged& d) {
-    std::cerr << o.scene << ": the simulation diverged at t = " << formatNumber(d.time) << ": body '"
-              << def.bodies[d.body].name << "' has a non-finite state; try a smaller step (--dt "
-              << formatNumber(def.dt / 4) << ") or another integrator (--integrator rk4)\n";
+    std::cerr << o.scene << ": the simulation diverged at t = " << formatNumber(d.time) << ": body '" << def.bodies[d.body].name
+              << "' has a non-finite state; try a smaller step (--dt " << formatNumber(def.dt / 4)
+              << ") or another integrator (--integrator rk4)\n";
     return kExitFailure;
   } catch (const Interrupted&) {
     throw;
@@ -210,7 +209,8 @@ void addSimulateCommand(CLI::App& app, int& exitCode) {
   options->Verbosity::addTo(*cmd, "print nothing (the exit status, and --trace's file); errors still on standard error",
                             "also every impulse the collision response applied, one a line (the text form; --json has them "
                             "all), and every resting and staying-in-contact record, not one per pair");
-  cmd->callback([options, &exitCode] { exitCode = runInterruptible("simulate " + options->scene, [&] { return simulate(*options); }); });
+  cmd->callback(
+      [options, &exitCode] { exitCode = runInterruptible("simulate " + options->scene, [&] { return simulate(*options); }); });
 }
 
 }  // namespace render::cli

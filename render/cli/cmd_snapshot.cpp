@@ -49,12 +49,17 @@ std::vector<double> parseTimes(const std::string& text) {
 
 // the plan's request, each value checked (UsageError)
 StillRequest request(const SnapshotCommand& o) {
-  StillRequest r{.root = o.output, .file = o.scene, .variant = o.variant, .times = {}, .impacts = o.impacts,
-                 .panels = o.panels, .strobe = o.strobe, .size = {}};
+  StillRequest r{.root = o.output,
+                 .file = o.scene,
+                 .variant = o.variant,
+                 .times = {},
+                 .impacts = o.impacts,
+                 .panels = o.panels,
+                 .strobe = o.strobe,
+                 .size = {}};
   if (!o.at.empty()) r.times = parseTimes(o.at);
   if (r.times.empty() == !o.impacts) throw UsageError("give the times with --at T1,T2,... or ask for --impacts (one of them)");
-  if (o.panels && !o.variant.empty())
-    throw UsageError("--panels shows every variant side by side; leave out --variant");
+  if (o.panels && !o.variant.empty()) throw UsageError("--panels shows every variant side by side; leave out --variant");
   if (o.strobe && (*o.strobe < 0 || *o.strobe > 100)) throw UsageError("--strobe: give a number of ghosts from 0 to 100");
   if (!o.size.empty()) r.size = parseSize(o.size);
   return r;
@@ -100,7 +105,9 @@ void addSnapshotCommand(CLI::App& app, int& exitCode) {
   cmd->add_flag("--panels", o->panels, "every variant side by side in one labeled image");
   cmd->add_option("--strobe", o->strobe, "draw this many earlier poses, fading, behind the present one");
   cmd->add_option("-o,--output", o->output, "the output directory (default: out)");
-  cmd->add_option("--size", o->size, "frame size WIDTHxHEIGHT in pixels, even (default: the scene's, 1280x720); with --panels, the whole sheet's (default 1920x1080)");
+  cmd->add_option("--size", o->size,
+                  "frame size WIDTHxHEIGHT in pixels, even (default: the scene's, 1280x720); with --panels, the whole sheet's "
+                  "(default 1920x1080)");
   o->Verbosity::addTo(*cmd, "print nothing (not each file's path)", "also a progress bar and a summary, as render shows them");
   cmd->add_option("--trace", o->trace, "also write every step of the pictures' run to this CSV file (as simulate --trace)");
   cmd->add_option("--overlay", o->overlay, "another simulator's trace (CSV, as --trace writes): its bodies dashed over ours");

@@ -35,7 +35,8 @@ struct StabilityOptions : MethodLists, Verbosity {
 // a scene whose variants are the methods compares them all; without variants (or with --variant) the
 // scene's own, and for a scene whose bodies can meet every method that makes them collide (`auto`
 // alone where no two bodies can meet: the others would repeat its numbers)
-std::vector<sim::world::CollisionMethod> defaultCollisions(const StabilityOptions& o, const OpenScene& file, const sim::scene::SceneDef& def) {
+std::vector<sim::world::CollisionMethod> defaultCollisions(const StabilityOptions& o, const OpenScene& file,
+                                                           const sim::scene::SceneDef& def) {
   using sim::world::CollisionMethod;
   std::vector<CollisionMethod> methods;
   if (o.variant.empty() && !def.variantNames.empty()) {
@@ -79,7 +80,8 @@ int stability(const StabilityOptions& o) {
   // a method that held up to the search's limit has no boundary found: its bar is a lower bound;
   // for the fewest iterations, a method that failed up to the limit needs more than its bar
   ChartSeries bars{chart.yLabel, {}};
-  ChartSeries bounds{fewest ? "fails up to the search's limit (needs more)" : "holds up to the search's limit (at least this)", {}, true};
+  ChartSeries bounds{
+      fewest ? "fails up to the search's limit (needs more)" : "holds up to the search's limit (at least this)", {}, true};
   for (sim::world::CollisionMethod c : methods)
     for (sim::core::Integrator i : integrators) {
       Study d = study;
@@ -92,7 +94,8 @@ int stability(const StabilityOptions& o) {
                    << formatNumber(r.largestStable) << ',' << formatNumber(r.firstFailing) << ','
                    << csvField(r.holdsToLimit ? "none" : r.failing.failure) << '\n';
       const double x = static_cast<double>(chart.barLabels.size());
-      chart.barLabels.push_back(std::string(sim::core::integratorName(i)) + "\n" + std::string(sim::world::collisionMethodName(c)));
+      chart.barLabels.push_back(std::string(sim::core::integratorName(i)) + "\n" +
+                                std::string(sim::world::collisionMethodName(c)));
       const double value = fewest && r.failsEverywhere ? r.firstFailing : r.largestStable;
       (open ? bounds : bars).points.emplace_back(x, value > 0.0 ? value : NAN);
     }

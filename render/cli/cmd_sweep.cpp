@@ -35,7 +35,8 @@ struct SweepOptions : MethodLists, Verbosity {
 };
 
 std::string methodLabel(const SweepCase& m) {
-  std::string s = std::string(sim::core::integratorName(m.integrator)) + " + " + std::string(sim::world::collisionMethodName(m.collisions));
+  std::string s =
+      std::string(sim::core::integratorName(m.integrator)) + " + " + std::string(sim::world::collisionMethodName(m.collisions));
   if (m.collisions == sim::world::CollisionMethod::Sequential) s += " (" + std::to_string(m.iterations) + " it)";
   if (m.collisions == sim::world::CollisionMethod::SoftStep && m.substeps > 0) s += " (" + std::to_string(m.substeps) + " sub)";
   return s;
@@ -48,7 +49,8 @@ std::vector<int> wholeNumbers(const std::string& text, const std::string& option
   for (const std::string& item : splitList(text)) {
     char* end = nullptr;
     const long n = std::strtol(item.c_str(), &end, 10);
-    if (*end != '\0' || n < 1 || n > 1000) throw UsageError(option + ": expected whole numbers from 1 to 1000, got '" + item + "'");
+    if (*end != '\0' || n < 1 || n > 1000)
+      throw UsageError(option + ": expected whole numbers from 1 to 1000, got '" + item + "'");
     out.push_back(static_cast<int>(n));
   }
   if (out.empty()) throw UsageError(option + ": give at least one whole number");
@@ -59,11 +61,12 @@ std::vector<int> wholeNumbers(const std::string& text, const std::string& option
 // through its iterations or substeps (the work-precision chart of stack solvers)
 int stackSweep(const SweepOptions& o, const sim::scene::SceneDef& def, const std::vector<SweepRow>& rows, const std::string& base,
                AtomicFile& csv) {
-  csv.stream() << "integrator,collisions,dt,iterations,substeps,steps,cpu_seconds_per_step,top_displacement,max_displacement,fastest\n";
+  csv.stream()
+      << "integrator,collisions,dt,iterations,substeps,steps,cpu_seconds_per_step,top_displacement,max_displacement,fastest\n";
   for (const SweepRow& r : rows)
-    csv.stream() << sim::core::integratorName(r.method.integrator) << ',' << sim::world::collisionMethodName(r.method.collisions) << ','
-                 << formatNumber(r.method.dt) << ',' << r.method.iterations << ',' << r.method.substeps << ',' << r.steps << ','
-                 << formatNumber(r.secondsPerStep) << ',' << formatNumber(r.topDisplacement) << ','
+    csv.stream() << sim::core::integratorName(r.method.integrator) << ',' << sim::world::collisionMethodName(r.method.collisions)
+                 << ',' << formatNumber(r.method.dt) << ',' << r.method.iterations << ',' << r.method.substeps << ',' << r.steps
+                 << ',' << formatNumber(r.secondsPerStep) << ',' << formatNumber(r.topDisplacement) << ','
                  << formatNumber(r.maxDisplacement) << ',' << formatNumber(r.fastest) << '\n';
   Chart chart;
   chart.title = def.name + ": cost against the top body's displacement from rest after " + formatNumber(def.duration) + " s";
@@ -107,8 +110,7 @@ int sweep(const SweepOptions& o) {
 
   const auto integrators = o.integratorList();
   const auto methods = o.collisionList({def.collisions});
-  const std::vector<double> steps =
-      o.dt.empty() ? defaultSweepSteps(def.dt) : parseRange(o.dt, "--dt");
+  const std::vector<double> steps = o.dt.empty() ? defaultSweepSteps(def.dt) : parseRange(o.dt, "--dt");
   const std::vector<int> iterations = wholeNumbers(o.iterations, "--iterations", def.velocityIterations);
   const std::vector<int> substeps = wholeNumbers(o.substeps, "--substeps", def.substeps);
   if (o.repeat < 1 || o.repeat > 1000) throw UsageError("--repeat: expected a whole number from 1 to 1000");
@@ -131,12 +133,13 @@ int sweep(const SweepOptions& o) {
 
   if (o.stack) return stackSweep(o, def, rows, base, csv);
   // the CSV: the columns the issue names, then what the error was measured against
-  csv.stream() << "integrator,collisions,dt,iterations,steps,seconds_per_sim_second,error,energy_drift,max_penetration,reference\n";
+  csv.stream()
+      << "integrator,collisions,dt,iterations,steps,seconds_per_sim_second,error,energy_drift,max_penetration,reference\n";
   for (const SweepRow& r : rows)
-    csv.stream() << sim::core::integratorName(r.method.integrator) << ',' << sim::world::collisionMethodName(r.method.collisions) << ','
-                 << formatNumber(r.method.dt) << ',' << r.method.iterations << ',' << r.steps << ','
-                 << formatNumber(r.secondsPerSimSecond) << ',' << formatNumber(r.error) << ','
-                 << formatNumber(r.energyDrift) << ',' << formatNumber(r.maxPenetration) << ',' << csvField(reference.name) << '\n';
+    csv.stream() << sim::core::integratorName(r.method.integrator) << ',' << sim::world::collisionMethodName(r.method.collisions)
+                 << ',' << formatNumber(r.method.dt) << ',' << r.method.iterations << ',' << r.steps << ','
+                 << formatNumber(r.secondsPerSimSecond) << ',' << formatNumber(r.error) << ',' << formatNumber(r.energyDrift)
+                 << ',' << formatNumber(r.maxPenetration) << ',' << csvField(reference.name) << '\n';
 
   // the chart: cost on x, error on y, one line per method
   Chart chart;
@@ -163,8 +166,8 @@ int sweep(const SweepOptions& o) {
             << "penetration" << '\n';
   for (const SweepRow& r : rows)
     std::cout << std::left << std::setw(40) << methodLabel(r.method) << std::right << std::setprecision(4) << std::setw(12)
-              << r.method.dt << std::setw(10) << r.steps << std::setw(14) << r.secondsPerSimSecond << std::setw(14)
-              << r.error << std::setw(14) << r.energyDrift << std::setw(14) << r.maxPenetration << '\n';
+              << r.method.dt << std::setw(10) << r.steps << std::setw(14) << r.secondsPerSimSecond << std::setw(14) << r.error
+              << std::setw(14) << r.energyDrift << std::setw(14) << r.maxPenetration << '\n';
   std::cout << "error against: " << reference.name << "\nwrote " << base << ".csv and " << base << ".png\n";
   if (o.verbose) printFile(base + ".csv");
   return kExitOk;

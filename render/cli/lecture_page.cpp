@@ -48,10 +48,8 @@ render::page::SceneRecord recordOf(const Plan& plan, const render::scene::Render
       const render::video::StillOutput& shot = plan.stills->shots[i];
       const double t = shot.instants.at(0);
       const bool answer = look.poll.revealed(t);
-      if (look.panels.impacts)
-        r.panels.push_back({name(shot.path), "impact " + std::to_string(i + 1), false, answer});
-      else
-        r.panels.push_back({name(shot.path), "t = " + render::video::timeForName(t) + " s", t == 0.0 && !answer, answer});
+      if (look.panels.impacts) r.panels.push_back({name(shot.path), "impact " + std::to_string(i + 1), false, answer});
+      else r.panels.push_back({name(shot.path), "t = " + render::video::timeForName(t) + " s", t == 0.0 && !answer, answer});
     }
   return r;
 }
@@ -72,7 +70,8 @@ void writeLectureRecord(const render::video::RenderPlan& plan, const render::sce
   for (const render::video::PlannedVariant& v : plan.variants) variants.push_back(v.scene.model.variant);
   render::page::SceneRecord r =
       recordOf(plan, base.render, render::frame::titleOf(base), base.model.description, variants, file, path, seconds);
-  for (const render::video::PlannedVariant& v : plan.variants) addChecks(v.scene.model.variant, sim::scene::runExpects(v.scene.model), r);
+  for (const render::video::PlannedVariant& v : plan.variants)
+    addChecks(v.scene.model.variant, sim::scene::runExpects(v.scene.model), r);
   render::page::writeSceneRecord(r, path);
   wrote(path);
 }

@@ -29,8 +29,8 @@ std::string indented(const std::string& text) {
   return out;
 }
 
-void printLectureSummary(const std::vector<SceneResult>& results, double wallSeconds, size_t parallel,
-                         bool messagesShown, bool page, std::ostream& out, std::ostream& errors) {
+void printLectureSummary(const std::vector<SceneResult>& results, double wallSeconds, size_t parallel, bool messagesShown,
+                         bool page, std::ostream& out, std::ostream& errors) {
   size_t nameWidth = 5;
   for (const SceneResult& r : results) nameWidth = std::max(nameWidth, r.scene.size());
   out << padded("scene", nameWidth) << "  status  outputs  seconds  files\n";
@@ -42,14 +42,14 @@ void printLectureSummary(const std::vector<SceneResult>& results, double wallSec
       files += std::filesystem::path(p).filename().string();
     }
     out << padded(r.scene, nameWidth) << "  " << padded(r.ok ? "ok" : "FAILED", 6) << "  "
-        << padded(std::to_string(r.outputs.size()), 7, true) << "  " << padded(secondsText(r.seconds), 7, true) << "  "
-        << files << '\n';
+        << padded(std::to_string(r.outputs.size()), 7, true) << "  " << padded(secondsText(r.seconds), 7, true) << "  " << files
+        << '\n';
     outputs += r.outputs.size();
     failed += r.ok ? 0 : 1;
   }
   if (page) ++outputs;
-  out << "total: " << results.size() << " scenes, " << outputs << " outputs" << (page ? " with the page" : "") << ", " << secondsText(wallSeconds)
-      << " s wall time (" << parallel << " at a time)";
+  out << "total: " << results.size() << " scenes, " << outputs << " outputs" << (page ? " with the page" : "") << ", "
+      << secondsText(wallSeconds) << " s wall time (" << parallel << " at a time)";
   if (failed) out << "; " << failed << " failed";
   out << '\n';
   if (messagesShown) return;

@@ -9,19 +9,19 @@
 namespace render::cli {
 
 struct SceneResult {
-  std::string scene;                 // the scene's name
-  std::string file;                  // its file
+  std::string scene;  // the scene's name
+  std::string file;   // its file
   bool ok = false;
   std::vector<std::string> outputs;  // the paths it wrote
   double seconds = 0;
-  std::string message;               // why it failed: its standard error, or how it ended
+  std::string message;  // why it failed: its standard error, or how it ended
 };
 
 // the table and the total on `out` (the outputs counting the page when `page` was written); the
 // failed scenes, each with its message, on `errors` (unless `messagesShown`: a scene run in this
 // process has said why already)
-void printLectureSummary(const std::vector<SceneResult>& results, double wallSeconds, size_t parallel,
-                         bool messagesShown, bool page, std::ostream& out, std::ostream& errors);
+void printLectureSummary(const std::vector<SceneResult>& results, double wallSeconds, size_t parallel, bool messagesShown,
+                         bool page, std::ostream& out, std::ostream& errors);
 
 // "  " before each line of `text`, which ends with a newline (when not empty)
 std::string indented(const std::string& text);

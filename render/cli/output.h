@@ -46,7 +46,8 @@ std::ostream& traceStream(const std::unique_ptr<render::jobs::AtomicFile>& file)
 template <class Trace, class Plan, class Write>
 void traced(const std::string& path, const Plan& plan, Write&& write) {
   if (path.empty()) return write(static_cast<Trace*>(nullptr));
-  if (plan.variants.size() != 1) throw render::jobs::UsageError("--trace: a trace is one variant's run; choose one with --variant");
+  if (plan.variants.size() != 1)
+    throw render::jobs::UsageError("--trace: a trace is one variant's run; choose one with --variant");
   const std::unique_ptr<render::jobs::AtomicFile> file = openTrace(path);
   Trace trace(traceStream(file), plan.variants.front().scene.model);
   write(&trace);

@@ -22,7 +22,9 @@ class RunProgressOf : public Observer {
  public:
   // (`shown` false: never drawn, as for --quiet)
   RunProgressOf(std::string what, double until, Observer* next = nullptr, bool shown = true)
-      : what_(std::move(what)), until_(until), next_(next),
+      : what_(std::move(what)),
+        until_(until),
+        next_(next),
         line_(shown, std::chrono::seconds(1), std::chrono::milliseconds(250)) {}
 
   // the observer to pass to advanceTo: this one, which also stops the run on Ctrl-C between steps

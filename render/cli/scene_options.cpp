@@ -20,10 +20,12 @@ void SceneOptions::addTo(CLI::App& command) {
   command.add_option("--dt", dt, "fixed time step in seconds");
   command.add_option("--collisions", collisions, "auto, none, event, isolated, sequential or soft_step");
   command.add_option("--substeps", substeps, "soft_step: substeps per step, 1 to 1000 (the scene's sim: substeps)");
-  command.add_option("--contact-hertz", contactHertz,
-                     "soft_step: contact stiffness in Hz, capped at a quarter of the substep rate (the scene's sim: contact_hertz)");
-  command.add_option("--threads", threads,
-                     "soft_step: threads sharing each set of contacts, 1 to 64 (the scene's sim: threads; the same result with any)");
+  command.add_option(
+      "--contact-hertz", contactHertz,
+      "soft_step: contact stiffness in Hz, capped at a quarter of the substep rate (the scene's sim: contact_hertz)");
+  command.add_option(
+      "--threads", threads,
+      "soft_step: threads sharing each set of contacts, 1 to 64 (the scene's sim: threads; the same result with any)");
 }
 
 const OpenScene& SceneOptions::open() const {
@@ -37,7 +39,8 @@ SceneFile SceneOptions::load() const {
   if (!integrator.empty()) {
     const auto method = sim::core::integratorFromName(integrator);
     if (!method)
-      throw UsageError("--integrator: unknown integrator '" + integrator + "'; choose one of: " + sim::core::kIntegratorNames.list());
+      throw UsageError("--integrator: unknown integrator '" + integrator +
+                       "'; choose one of: " + sim::core::kIntegratorNames.list());
     def.integrator = *method;
   }
   if (dt) {
@@ -51,7 +54,8 @@ SceneFile SceneOptions::load() const {
   if (!collisions.empty()) {
     const auto method = sim::world::collisionMethodFromName(collisions);
     if (!method)
-      throw UsageError("--collisions: unknown collision method '" + collisions + "'; choose one of: " + sim::world::kCollisionMethodNames.list());
+      throw UsageError("--collisions: unknown collision method '" + collisions +
+                       "'; choose one of: " + sim::world::kCollisionMethodNames.list());
     def.collisions = *method;
   }
   // (as in the scene's sim: block, they change soft_step only)
@@ -65,7 +69,8 @@ SceneFile SceneOptions::load() const {
     def.contactHertz = *contactHertz;
   }
   if (threads) {
-    if (*threads < 1 || *threads > sim::core::settings::kMaxThreads) throw UsageError("--threads: give a whole number from 1 to 64");
+    if (*threads < 1 || *threads > sim::core::settings::kMaxThreads)
+      throw UsageError("--threads: give a whole number from 1 to 64");
     def.threads = *threads;
   }
   return file;
@@ -77,8 +82,8 @@ SceneFile3d SceneOptions::load3d() const {
   if (!integrator.empty()) {
     const auto method = sim::world3d::kIntegratorNames.parse(integrator);
     if (!method)
-      throw UsageError("--integrator: unknown integrator '" + integrator + "'; choose one of: " +
-                       sim::world3d::kIntegratorNames.list());
+      throw UsageError("--integrator: unknown integrator '" + integrator +
+                       "'; choose one of: " + sim::world3d::kIntegratorNames.list());
     def.integrator = *method;
   }
   if (dt) {
@@ -90,7 +95,8 @@ SceneFile3d SceneOptions::load3d() const {
       throw UsageError("--dt: " + over + "; choose a larger step, or raise the scene's 'sim: {max_steps: N}'");
   }
   if (!collisions.empty())
-    throw UsageError("--collisions: " + scene + " is a 3D scene, and 3D scenes have no contacts (bodies pass through each other)");
+    throw UsageError("--collisions: " + scene +
+                     " is a 3D scene, and 3D scenes have no contacts (bodies pass through each other)");
   if (substeps || contactHertz)
     throw UsageError(std::string(substeps ? "--substeps" : "--contact-hertz") + ": " + scene +
                      " is a 3D scene, and 3D scenes have no contacts to solve");

@@ -46,8 +46,9 @@ std::vector<std::string> orderedSceneFiles(const std::string& folder, std::vecto
     if (at == found.end()) {
       const bool twice = std::any_of(ordered.begin(), ordered.end(), [&](const std::string& f) { return stemOf(f) == e.stem; });
       throw sim::yaml::SceneError(path.string(), e.line, 1,
-                                  twice ? "'" + e.stem + "' is listed twice; list each scene once"
-                                        : "no scene file '" + e.stem + ".yaml' in " + folder + "; list the folder's *.yaml files");
+                                  twice
+                                      ? "'" + e.stem + "' is listed twice; list each scene once"
+                                      : "no scene file '" + e.stem + ".yaml' in " + folder + "; list the folder's *.yaml files");
     }
     ordered.push_back(*at);
     found.erase(at);

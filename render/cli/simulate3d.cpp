@@ -60,20 +60,21 @@ std::string triple(const Vec3& v) {
 }
 
 void printText(const sim::scene3d::SceneDef& def, const World& w) {
-  std::cout << def.name << (def.variant.empty() ? "" : " [" + def.variant + "]") << ": t = " << formatNumber(w.time)
-            << ", " << kIntegratorNames.name(w.integrator) << (w.normalizeQuaternions ? "" : " (q unnormalized)")
+  std::cout << def.name << (def.variant.empty() ? "" : " [" + def.variant + "]") << ": t = " << formatNumber(w.time) << ", "
+            << kIntegratorNames.name(w.integrator) << (w.normalizeQuaternions ? "" : " (q unnormalized)")
             << ", dt = " << formatNumber(w.dt) << ", " << w.steps << " steps\n";
   for (size_t i = 0; i < w.bodies.size(); ++i) {
     const Body& b = w.bodies[i];
-    std::cout << def.bodies[i].name << ": x = " << triple(b.x) << ", q = [" << std::setprecision(6) << b.q.w() << ", "
-              << b.q.x() << ", " << b.q.y() << ", " << b.q.z() << "] (|q| = " << std::setprecision(10) << b.q.norm()
+    std::cout << def.bodies[i].name << ": x = " << triple(b.x) << ", q = [" << std::setprecision(6) << b.q.w() << ", " << b.q.x()
+              << ", " << b.q.y() << ", " << b.q.z() << "] (|q| = " << std::setprecision(10) << b.q.norm()
               << ")\n  v = " << triple(b.v) << ", omega = " << triple(b.omega) << ", L = " << triple(b.angularMomentum())
               << ", kinetic " << std::setprecision(10) << kineticEnergy(b).total() << '\n';
   }
   const Energy e = energy(w);
   std::cout << std::setprecision(10) << "energy: kinetic " << e.kinetic << ", potential " << e.potential << ", total "
-            << e.total() << "\nmomentum: " << triple(linearMomentum(w)) << ", angular momentum about the origin: "
-            << triple(angularMomentum(w)) << "\ncontacts: none (3D scenes model free bodies)\n";
+            << e.total() << "\nmomentum: " << triple(linearMomentum(w))
+            << ", angular momentum about the origin: " << triple(angularMomentum(w))
+            << "\ncontacts: none (3D scenes model free bodies)\n";
 }
 
 }  // namespace

@@ -72,13 +72,27 @@ template <class Keep>
 class RoleFilter final : public Canvas {
  public:
   RoleFilter(Canvas& target, Keep keep) : target_(target), keep_(keep) {}
-  void polygon(const std::vector<Vec2>& v, const Pen& p) override { if (keep_(p.role)) target_.polygon(v, p); }
-  void circle(const Vec2& c, double r, const Pen& p) override { if (keep_(p.role)) target_.circle(c, r, p); }
-  void halfPlane(const Vec2& q, const Vec2& n, const Pen& p) override { if (keep_(p.role)) target_.halfPlane(q, n, p); }
-  void segment(const Vec2& a, const Vec2& b, const Pen& p) override { if (keep_(p.role)) target_.segment(a, b, p); }
-  void point(const Vec2& q, const Pen& p) override { if (keep_(p.role)) target_.point(q, p); }
-  void arrow(const Vec2& t, const Vec2& h, const Pen& p) override { if (keep_(p.role)) target_.arrow(t, h, p); }
-  void text(const Vec2& at, const std::string& t, const Pen& p) override { if (keep_(p.role)) target_.text(at, t, p); }
+  void polygon(const std::vector<Vec2>& v, const Pen& p) override {
+    if (keep_(p.role)) target_.polygon(v, p);
+  }
+  void circle(const Vec2& c, double r, const Pen& p) override {
+    if (keep_(p.role)) target_.circle(c, r, p);
+  }
+  void halfPlane(const Vec2& q, const Vec2& n, const Pen& p) override {
+    if (keep_(p.role)) target_.halfPlane(q, n, p);
+  }
+  void segment(const Vec2& a, const Vec2& b, const Pen& p) override {
+    if (keep_(p.role)) target_.segment(a, b, p);
+  }
+  void point(const Vec2& q, const Pen& p) override {
+    if (keep_(p.role)) target_.point(q, p);
+  }
+  void arrow(const Vec2& t, const Vec2& h, const Pen& p) override {
+    if (keep_(p.role)) target_.arrow(t, h, p);
+  }
+  void text(const Vec2& at, const std::string& t, const Pen& p) override {
+    if (keep_(p.role)) target_.text(at, t, p);
+  }
   void label(const Vec2& a, const Vec2& d, const std::string& t, const Pen& p) override {
     if (keep_(p.role)) target_.label(a, d, t, p);
   }

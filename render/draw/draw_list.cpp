@@ -86,21 +86,43 @@ std::vector<std::string> DrawList::lines() const {
         line.append("circle ").append(style).append(" ").append(coordinates(c.points[0])).append(" r=").append(number(c.radius));
         break;
       case Kind::HalfPlane:
-        line.append("halfplane ").append(style).append(" ").append(coordinates(c.points[0])).append(" n=").append(coordinates(c.points[1]));
+        line.append("halfplane ")
+            .append(style)
+            .append(" ")
+            .append(coordinates(c.points[0]))
+            .append(" n=")
+            .append(coordinates(c.points[1]));
         break;
       case Kind::Segment:
-        line.append("segment ").append(style).append(" ").append(coordinates(c.points[0])).append(" ").append(coordinates(c.points[1]));
+        line.append("segment ")
+            .append(style)
+            .append(" ")
+            .append(coordinates(c.points[0]))
+            .append(" ")
+            .append(coordinates(c.points[1]));
         break;
       case Kind::Point: line.append("point ").append(style).append(" ").append(coordinates(c.points[0])); break;
       case Kind::Arrow:
-        line.append("arrow ").append(style).append(" ").append(coordinates(c.points[0])).append(" -> ").append(coordinates(c.points[1]));
+        line.append("arrow ")
+            .append(style)
+            .append(" ")
+            .append(coordinates(c.points[0]))
+            .append(" -> ")
+            .append(coordinates(c.points[1]));
         break;
       case Kind::Text:
         line.append("text ").append(style).append(" ").append(coordinates(c.points[0])).append(" \"").append(c.text).append("\"");
         break;
       case Kind::Label:
-        line.append("label ").append(style).append(" ").append(coordinates(c.points[0])).append(" beyond ")
-            .append(coordinates(c.points[1])).append(" \"").append(c.text).append("\"");
+        line.append("label ")
+            .append(style)
+            .append(" ")
+            .append(coordinates(c.points[0]))
+            .append(" beyond ")
+            .append(coordinates(c.points[1]))
+            .append(" \"")
+            .append(c.text)
+            .append("\"");
         break;
     }
     out.push_back(std::move(line));

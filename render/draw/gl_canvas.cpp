@@ -14,7 +14,6 @@ namespace render::draw {
 
 namespace {
 
-
 const Color kWhite{1.0, 1.0, 1.0, 1.0};
 const Color kBlack{0.0, 0.0, 0.0, 1.0};
 
@@ -23,8 +22,7 @@ Vec2 perpendicular(const Vec2& d) { return {-d.y(), d.x()}; }
 
 }  // namespace
 
-GlCanvas::GlCanvas(GlContext& gl, TextRenderer& text, const Style& style)
-    : gl_(gl), textRenderer_(text), style_(style) {}
+GlCanvas::GlCanvas(GlContext& gl, TextRenderer& text, const Style& style) : gl_(gl), textRenderer_(text), style_(style) {}
 
 void GlCanvas::begin(const Camera& camera) { start(camera, true); }
 
@@ -196,10 +194,8 @@ void GlCanvas::circle(const Vec2& center, double radius, const Pen& s) {
 
 void GlCanvas::countBody(double extent) {
   // (NaN counts as large: a frame that cannot say is drawn at four)
-  if (extent < kSmallOutlinePx * px_)
-    ++smallBodies_;
-  else
-    ++largeBodies_;
+  if (extent < kSmallOutlinePx * px_) ++smallBodies_;
+  else ++largeBodies_;
 }
 
 void GlCanvas::halfPlane(const Vec2& point, const Vec2& normal, const Pen& s) {
@@ -248,9 +244,7 @@ void GlCanvas::point(const Vec2& p, const Pen& s) {
       beginPrimitive(strokeColor(s), s.opacity, false, false);
       fillDisc(p, 2.2 * w * px_, tolerance);
       break;
-    default:
-      beginPrimitive(strokeColor(s), s.opacity, false, false);
-      fillDisc(p, 1.6 * w * px_, tolerance);
+    default: beginPrimitive(strokeColor(s), s.opacity, false, false); fillDisc(p, 1.6 * w * px_, tolerance);
   }
 }
 
@@ -310,8 +304,8 @@ void GlCanvas::vertex(const Vec2& world) {
     return;
   }
   // GL would take the double as a float: the same float here, so that batched pixels are the same
-  const BatchVertex v{static_cast<float>(world.x() - c.x()), static_cast<float>(world.y() - c.y()), color_[0],
-                      color_[1], color_[2], color_[3]};
+  const BatchVertex v{
+      static_cast<float>(world.x() - c.x()), static_cast<float>(world.y() - c.y()), color_[0], color_[1], color_[2], color_[3]};
   if (shapeMode_ == GL_TRIANGLES) {
     batch_.push_back(v);
     return;

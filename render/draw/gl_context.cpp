@@ -64,8 +64,7 @@ constexpr GLenum kPackInvert = 0x8758;
 
 }  // namespace
 
-GlContext::GlContext(int width, int height, Antialiasing aa)
-    : width_(width), height_(height), aa_(aa), samplesNow_(aa.samples) {
+GlContext::GlContext(int width, int height, Antialiasing aa) : width_(width), height_(height), aa_(aa), samplesNow_(aa.samples) {
   const int w = width * aa.supersample, h = height * aa.supersample;
   if (aa.samples != 1 && aa.samples != 2 && aa.samples != static_cast<int>(kSamplePositions.size()))
     throw std::invalid_argument("GlContext: " + std::to_string(aa.samples) + " samples per pixel (1, 2 or 4)");
@@ -255,11 +254,9 @@ void GlContext::resolveRegion(uint8_t* frame, int parts, const Region& region, b
   for (int r = 0; r < bh; ++r) {
     uint8_t* at = frame + (static_cast<size_t>(h - region.y1 + r) * w + region.x0) * 4;
     const uint8_t* first = firstWhole ? at : samples_[0].data() + r * row;
-    if (drawings == 2)
-      resolveTwoSamples(first, samples_[1].data() + r * row, at, row);
+    if (drawings == 2) resolveTwoSamples(first, samples_[1].data() + r * row, at, row);
     else
-      resolveSamples({first, samples_[1].data() + r * row, samples_[2].data() + r * row, samples_[3].data() + r * row},
-                     at, row);
+      resolveSamples({first, samples_[1].data() + r * row, samples_[2].data() + r * row, samples_[3].data() + r * row}, at, row);
   }
   if (cost_) cost_->resolve += since(resolveStart);
 }

@@ -18,8 +18,8 @@ struct osmesa_context;
 namespace render::draw {
 
 struct Antialiasing {
-  int supersample = 1;  // the frame drawn this many times wider and higher, box-filtered down
-  int samples = 4;      // samples per drawn pixel: 1 (none), 2 or 4, at Direct3D's standard positions
+  int supersample = 1;         // the frame drawn this many times wider and higher, box-filtered down
+  int samples = 4;             // samples per drawn pixel: 1 (none), 2 or 4, at Direct3D's standard positions
   bool fewerWhenDense = true;  // fewerSamples() is heeded (false: every frame at `samples`)
 };
 
@@ -94,9 +94,9 @@ class GlContext {
   unsigned framebuffer_ = 0, renderbuffers_[2] = {0, 0};
   // the display lists of the frame being drawn: its static part, then the rest
   unsigned lists_[2] = {0, 0};
-  int part_ = 0;            // the list being recorded
-  bool recording_ = false;  // between beginFrame() and read()
-  std::optional<Bounds> drawnWithin_;  // what drawnWithin() said of the frame being drawn
+  int part_ = 0;                        // the list being recorded
+  bool recording_ = false;              // between beginFrame() and read()
+  std::optional<Bounds> drawnWithin_;   // what drawnWithin() said of the frame being drawn
   std::optional<Bounds> movingWithin_;  // what movingWithin() said of it
   // the static part's key this frame, the last frame's, and the key of the kept static frame
   std::vector<double> key_, lastKey_, keptKey_;
@@ -104,9 +104,9 @@ class GlContext {
   // what clearFrame() said of the frame being drawn
   bool clears_ = false, clearsDepth_ = false;
   std::array<float, 4> clearColor_{};
-  std::vector<uint8_t> kept_;   // the static part's frame, resolved
-  int samplesNow_;              // the samples of the frame being drawn (aa_.samples or fewer)
-  int keptSamples_ = 0;         // the samples kept_ was resolved at
+  std::vector<uint8_t> kept_;  // the static part's frame, resolved
+  int samplesNow_;             // the samples of the frame being drawn (aa_.samples or fewer)
+  int keptSamples_ = 0;        // the samples kept_ was resolved at
   // the drawings at the sample positions (of a region), and the supersampled frame, reused from
   // frame to frame
   std::array<std::vector<uint8_t>, 4> samples_;

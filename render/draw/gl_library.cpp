@@ -61,10 +61,10 @@ bool glLibraryLoaded() { return library != nullptr; }
 // Each function the renderer calls, defined here with the headers' signature and forwarding to the
 // library's, looked up at its first call. A function missing from this list is an undefined reference
 // when the program links: add a line.
-#define RIGIDREEL_GL(ret, name, params, args)                                                        \
-  extern "C" ret name params {                                                                       \
-    static const auto function = reinterpret_cast<ret(*) params>(render::draw::entry(#name));       \
-    return function args;                                                                            \
+#define RIGIDREEL_GL(ret, name, params, args)                                                 \
+  extern "C" ret name params {                                                                \
+    static const auto function = reinterpret_cast<ret(*) params>(render::draw::entry(#name)); \
+    return function args;                                                                     \
   }
 
 RIGIDREEL_GL(OSMesaContext, OSMesaCreateContextExt, (GLenum f, GLint d, GLint s, GLint a, OSMesaContext c), (f, d, s, a, c))

@@ -9,8 +9,8 @@
 namespace render::draw {
 
 struct PixelTolerance {
-  int channel = 24;               // of 255
-  double fraction = 0.002;        // of the pixels (0.2%: 115 of 320 × 180)
+  int channel = 24;         // of 255
+  double fraction = 0.002;  // of the pixels (0.2%: 115 of 320 × 180)
 };
 
 struct ImageComparison {

@@ -42,8 +42,8 @@ bool encodeRaw(const Image& image, const PngSettings& s, std::vector<uint8_t>* o
     return false;
   }
   png_set_write_fn(png, out, appendBytes, flushNothing);
-  png_set_IHDR(png, info, image.width, image.height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
-               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_set_IHDR(png, info, image.width, image.height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
+               PNG_FILTER_TYPE_DEFAULT);
   png_set_compression_level(png, s.level);
   png_set_compression_strategy(png, s.strategy);
   png_set_filter(png, PNG_FILTER_TYPE_BASE, s.filters);

@@ -46,7 +46,7 @@ enum class Role {
   AxisZ,            // z
   AngularMomentum,  // L = I ω from the center of mass: an arrow
   // another simulator's trajectory over ours (--overlay)
-  Overlay,          // its bodies' outlines, dashed
+  Overlay,  // its bodies' outlines, dashed
 };
 inline constexpr size_t kRoleCount = static_cast<size_t>(Role::Overlay) + 1;
 

@@ -11,8 +11,8 @@ namespace render::draw {
 
 // the 4-sample pattern of llvmpipe (Direct3D's standard one), in pixels from a pixel's lower-left
 // corner, as glGetMultisamplefv(GL_SAMPLE_POSITION) reports it
-constexpr std::array<std::array<float, 2>, 4> kSamplePositions{{{0.375f, 0.125f}, {0.875f, 0.375f}, {0.125f, 0.625f},
-                                                               {0.625f, 0.875f}}};
+constexpr std::array<std::array<float, 2>, 4> kSamplePositions{
+    {{0.375f, 0.125f}, {0.875f, 0.375f}, {0.125f, 0.625f}, {0.625f, 0.875f}}};
 
 // the 2-sample pattern (Direct3D's standard one), in the same coordinates: a cheaper edge, measured
 // against the four in rigidreel_bench --antialiasing

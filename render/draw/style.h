@@ -14,7 +14,7 @@ namespace render::draw {
 struct Style {
   Color background{1.0, 1.0, 1.0, 1.0};
   std::array<Color, kRoleCount> roles = defaultRoleColors();  // by role (unused for a body's color)
-  std::vector<Color> bodies;  // by body index
+  std::vector<Color> bodies;                                  // by body index
   std::vector<Color> arrows;  // by teaching arrow (render.overlays.arrows): its own color or none (alpha 0)
   double lineWidth = 2.0;     // output pixels
   int fontSize = 20;          // output pixels per em

@@ -109,7 +109,8 @@ long TextRenderer::layOut(const std::string& text, int sizePx, Visit visit) {
   unsigned previous = 0;
   int previousSize = 0;
   const int scriptSize = std::max(1, static_cast<int>(std::lround(kScriptSize * sizePx)));
-  const int drop = static_cast<int>(std::lround(kSubscriptDrop * sizePx)), rise = static_cast<int>(std::lround(kSuperscriptRise * sizePx));
+  const int drop = static_cast<int>(std::lround(kSubscriptDrop * sizePx)),
+            rise = static_cast<int>(std::lround(kSuperscriptRise * sizePx));
   for (const ScriptRun& run : scriptRuns(decodeUtf8(text))) {
     const int size = run.script == 0 ? sizePx : scriptSize;
     const Glyph& g = glyph(run.code, size);
@@ -175,8 +176,8 @@ const TextRenderer::Mask& TextRenderer::mask(const std::string& text, int sizePx
   return masks_.emplace(key, std::move(m)).first->second;
 }
 
-void TextRenderer::draw(Image& image, const std::string& text, double x, double y, Anchor anchor, int sizePx,
-                        const Color& color, const Color& halo, int haloPx) {
+void TextRenderer::draw(Image& image, const std::string& text, double x, double y, Anchor anchor, int sizePx, const Color& color,
+                        const Color& halo, int haloPx) {
   const Mask& m = mask(text, sizePx, haloPx);
   // the pen's start on the baseline, whole pixels so that glyphs stay sharp
   double left = x, top = y;

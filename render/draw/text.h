@@ -47,8 +47,8 @@ class TextRenderer {
  private:
   struct Glyph {
     int left = 0, top = 0, width = 0, rows = 0;  // bitmap placement relative to the pen, y up
-    int advance = 0;                            // 26.6 fixed point
-    unsigned index = 0;                         // FreeType's glyph index, for kerning
+    int advance = 0;                             // 26.6 fixed point
+    unsigned index = 0;                          // FreeType's glyph index, for kerning
     std::vector<uint8_t> coverage;
   };
   // a string's coverage and its halo, with `pad` pixels around the text box on every side

@@ -24,7 +24,7 @@ Ball Box3d::ball() const {
 }
 
 Camera3d::Camera3d(const Vec3& eye, const Vec3& target, const Vec3& up, double fovDegrees, int widthPx, int heightPx,
-                 const Vec2& principalPx, double nearDepth, double farDepth)
+                   const Vec2& principalPx, double nearDepth, double farDepth)
     : eye_(eye),
       focal_(0.5 * heightPx / std::tan(0.5 * fovDegrees * std::numbers::pi / 180.0)),
       widthPx_(widthPx),
@@ -40,12 +40,13 @@ Camera3d::Camera3d(const Vec3& eye, const Vec3& target, const Vec3& up, double f
   targetDepth_ = (target - eye).norm();
 }
 
-Camera3d Camera3d::fit(const Box3d& content, const Vec3& direction, const Vec3& up, double fovDegrees, double margin,
-                     int widthPx, int heightPx, int freeWidthPx, int freeHeightPx) {
+Camera3d Camera3d::fit(const Box3d& content, const Vec3& direction, const Vec3& up, double fovDegrees, double margin, int widthPx,
+                       int heightPx, int freeWidthPx, int freeHeightPx) {
   const Ball ball = content.ball();
   const Box3d box = content.empty() ? [&] { Box3d b; b.add(ball); return b; }() : content;
   // the view's axes, from the eye toward the content's center
-  const Camera3d axes(ball.center + direction.normalized(), ball.center, up, fovDegrees, widthPx, heightPx, Vec2::Zero(), 1.0, 2.0);
+  const Camera3d axes(ball.center + direction.normalized(), ball.center, up, fovDegrees, widthPx, heightPx, Vec2::Zero(), 1.0,
+                      2.0);
   const double focal = axes.focal_;
   // the half-sizes of the free part the content may fill, px
   const double halfWidth = (1.0 - 2.0 * margin) * 0.5 * freeWidthPx, halfHeight = (1.0 - 2.0 * margin) * 0.5 * freeHeightPx;
@@ -62,11 +63,11 @@ Camera3d Camera3d::fit(const Box3d& content, const Vec3& direction, const Vec3& 
   distance = std::max(distance, 1.05 * nearest + 1e-9);
   const auto [nearDepth, farDepth] = depthRange(distance, ball.radius);
   return Camera3d(ball.center + distance * direction.normalized(), ball.center, up, fovDegrees, widthPx, heightPx,
-                 Vec2(0.5 * freeWidthPx, 0.5 * freeHeightPx), nearDepth, farDepth);
+                  Vec2(0.5 * freeWidthPx, 0.5 * freeHeightPx), nearDepth, farDepth);
 }
 
 Camera3d Camera3d::look(const Vec3& eye, const Vec3& target, const Vec3& up, double fovDegrees, int widthPx, int heightPx,
-                      const Ball& content) {
+                        const Ball& content) {
   const auto [nearDepth, farDepth] = depthRange((content.center - eye).norm(), content.radius);
   return Camera3d(eye, target, up, fovDegrees, widthPx, heightPx, Vec2(0.5 * widthPx, 0.5 * heightPx), nearDepth, farDepth);
 }

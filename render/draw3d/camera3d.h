@@ -40,16 +40,16 @@ class Camera3d {
  public:
   // depth is the distance along the line of sight; only [nearDepth, farDepth] is drawn
   Camera3d(const Vec3& eye, const Vec3& target, const Vec3& up, double fovDegrees, int widthPx, int heightPx,
-          const Vec2& principalPx, double nearDepth, double farDepth);
+           const Vec2& principalPx, double nearDepth, double farDepth);
 
   // the nearest camera that shows all of `content` (its eight corners) looking at its center from
   // along `direction`, with `margin` (a fraction of the free part) on each side, the principal point
   // at the center of the frame's top-left freeWidth × freeHeight pixels
-  static Camera3d fit(const Box3d& content, const Vec3& direction, const Vec3& up, double fovDegrees, double margin,
-                     int widthPx, int heightPx, int freeWidthPx, int freeHeightPx);
+  static Camera3d fit(const Box3d& content, const Vec3& direction, const Vec3& up, double fovDegrees, double margin, int widthPx,
+                      int heightPx, int freeWidthPx, int freeHeightPx);
   // the camera at `eye` looking at `target`, its depth range holding `content`
   static Camera3d look(const Vec3& eye, const Vec3& target, const Vec3& up, double fovDegrees, int widthPx, int heightPx,
-                      const Ball& content);
+                       const Ball& content);
 
   // camera coordinates (right, up, depth) of a world point
   Vec3 toCamera(const Vec3& world) const { return basis_ * (world - eye_); }

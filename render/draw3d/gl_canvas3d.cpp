@@ -82,8 +82,7 @@ void GlCanvas3d::finish(Image& frame) {
 void GlCanvas3d::vertex(const Vec4& c) {
   if (c.w() > 0.0)
     drawn_.add(Vec2((c.x() / c.w() + 1.0) * 0.5 * camera_.widthPx(), (1.0 - c.y() / c.w()) * 0.5 * camera_.heightPx()));
-  else
-    unbounded_ = true;
+  else unbounded_ = true;
   glVertex4d(c.x(), c.y(), c.z(), c.w());
 }
 

@@ -24,10 +24,8 @@ const State& reachBetween(State& run, std::unique_ptr<State>& between, double t,
   if (t < world.time - snap) throw std::logic_error("a picture earlier than the run's time");
   world.advanceWithin(t, std::max(t, end), observer);
   if (std::abs(world.time - t) <= snap) return run;
-  if (!between)
-    between = std::make_unique<State>(run);
-  else
-    *between = run;
+  if (!between) between = std::make_unique<State>(run);
+  else *between = run;
   try {
     between->world.advanceTo(t, &between->history);
   } catch (const std::runtime_error&) {

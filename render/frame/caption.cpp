@@ -36,7 +36,8 @@ CaptionLayout captionLayout(int fontPx) {
 
 TextWidth estimatedWidth(int sizePx) {
   return [sizePx](const std::string& text) {
-    const auto codePoints = std::count_if(text.begin(), text.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; });
+    const auto codePoints =
+        std::count_if(text.begin(), text.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; });
     return static_cast<int>(std::lround(0.6 * sizePx * static_cast<double>(codePoints)));
   };
 }

@@ -16,7 +16,6 @@ using namespace render::scene;
 
 namespace {
 
-
 // the layout in text heights (em): inset from the frame's edges as the time caption, padding inside,
 // the pitch of rows, the bars' width
 constexpr double kInset = 0.5, kPad = 0.4, kRow = 1.3, kBar = 8.0;
@@ -24,7 +23,6 @@ constexpr double kInset = 0.5, kPad = 0.4, kRow = 1.3, kBar = 8.0;
 constexpr double kBarTop = 0.5 * kLineHeight - 0.45, kBarBottom = 0.5 * kLineHeight + 0.45;
 // the panel is laid out once, from the widest text the run can write, in em
 double textWidth(const std::string& text) { return approximateWidth(text, 1.0); }
-
 
 }  // namespace
 
@@ -58,8 +56,8 @@ std::vector<EnergyBar> energyBars(const render::scene::Scene& def, const sim::wo
   return bars;
 }
 
-BarPanel::BarPanel(const std::vector<std::string>& widestBarTexts, const std::vector<std::string>& widestLines,
-                   double lowest, double highest, const Camera& camera, double em)
+BarPanel::BarPanel(const std::vector<std::string>& widestBarTexts, const std::vector<std::string>& widestLines, double lowest,
+                   double highest, const Camera& camera, double em)
     : camera_(camera), lowest_(std::min(0.0, lowest)), span_(std::max(0.0, highest) - std::min(0.0, lowest)), em_(em) {
   width_ = widthPx(widestBarTexts, widestLines, em_);
   left_ = camera.widthPx() - kInset * em_ - width_;

@@ -21,7 +21,7 @@ using render::draw::Role;
 using sim::core::Vec2;
 
 struct EnergyBar {
-  std::string name;  // e.g. "bar ½mv²", "U", "E"
+  std::string name;    // e.g. "bar ½mv²", "U", "E"
   double value = 0.0;  // J
   Role role = Role::TotalBar;
   int body = -1;
@@ -43,8 +43,7 @@ class BarPanel {
   // the bars (each with its value in J after its name) and the lines under them
   void draw(const std::vector<EnergyBar>& bars, const std::vector<std::string>& lines, Canvas& draw) const;
   // the panel's width at text size `em` px, insets excluded
-  static double widthPx(const std::vector<std::string>& widestBarTexts, const std::vector<std::string>& widestLines,
-                        double em);
+  static double widthPx(const std::vector<std::string>& widestBarTexts, const std::vector<std::string>& widestLines, double em);
   // the right-hand band of the frame a panel of width `widthPx` takes, insets included, px
   static double bandPx(double widthPx, double em);
   // a bar's text: "name = 1.50 J"
@@ -55,9 +54,9 @@ class BarPanel {
   Vec2 at(double xPx, double yPx) const { return camera_.toWorld({xPx, yPx}); }
 
   Camera camera_;
-  double lowest_, span_;   // the bars' scale: the run's least value (≤ 0) and largest − least, J
-  double em_;              // the text size, px
-  double left_, width_;    // the panel's left edge and width, px
+  double lowest_, span_;  // the bars' scale: the run's least value (≤ 0) and largest − least, J
+  double em_;             // the text size, px
+  double left_, width_;   // the panel's left edge and width, px
   double barLeft_, textLeft_;
 };
 

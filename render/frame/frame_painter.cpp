@@ -22,7 +22,6 @@ using namespace render::scene;
 
 namespace {
 
-
 // a contact normal's arrow, as a fraction of the view's height: 58 px at 720p
 constexpr double kNormalFraction = 0.08;
 // labels: auto writes every body's label in a scene of at most this many bodies
@@ -47,8 +46,8 @@ class ContactsInView final : public Canvas {
   void halfPlane(const Vec2&, const Vec2&, const Pen&) override {}
   void segment(const Vec2&, const Vec2&, const Pen&) override {}
   void point(const Vec2& p, const Pen& pen) override {
-    count += pen.role == Role::ContactPoint && p.x() >= view_.min.x() && p.x() <= view_.max.x() &&
-             p.y() >= view_.min.y() && p.y() <= view_.max.y();
+    count += pen.role == Role::ContactPoint && p.x() >= view_.min.x() && p.x() <= view_.max.x() && p.y() >= view_.min.y() &&
+             p.y() <= view_.max.y();
   }
   void arrow(const Vec2&, const Vec2&, const Pen&) override {}
   void text(const Vec2&, const std::string&, const Pen&) override {}
@@ -60,8 +59,7 @@ class ContactsInView final : public Canvas {
 
 }  // namespace
 
-FramePainter::FramePainter(const render::scene::Scene& def, const Camera& camera, const RunSurvey& survey,
-                           const TextWidth& width)
+FramePainter::FramePainter(const render::scene::Scene& def, const Camera& camera, const RunSurvey& survey, const TextWidth& width)
     : def_(def),
       camera_(camera),
       impulseScale_(arrowScale(def.render.impulseScale, survey.maxImpulse, camera)),
@@ -203,8 +201,8 @@ bool FramePainter::labelFits(const sim::core::Body& b, const std::string& label)
   const double halfWidth = 0.5 * (textWidth_ ? textWidth_(label) : estimatedWidth(size)(label)) * px;
   const double halfHeight = 0.5 * lineHeightPx(size) * px;
   const sim::core::Pose pose = b.pose();
-  for (const Vec2& corner : {Vec2(-halfWidth, -halfHeight), Vec2(halfWidth, -halfHeight), Vec2(halfWidth, halfHeight),
-                             Vec2(-halfWidth, halfHeight)}) {
+  for (const Vec2& corner :
+       {Vec2(-halfWidth, -halfHeight), Vec2(halfWidth, -halfHeight), Vec2(halfWidth, halfHeight), Vec2(-halfWidth, halfHeight)}) {
     const Vec2 at = b.x + corner;
     if (b.shape.kind == sim::core::ShapeKind::Circle) {
       if ((at - b.x).norm() > b.shape.radius) return false;

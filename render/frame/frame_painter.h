@@ -33,8 +33,8 @@ class FramePainter {
   // the frame at the world's present time; `ghosts` are earlier poses (strobe), oldest first. Every
   // text goes through one LabelPlacer (label_place.h) and reaches `draw` last, placed; `placed` (when
   // given) is told where each went
-  void paint(const sim::world::World& world, const History& history, const std::vector<DrawList>& ghosts,
-             Canvas& draw, std::vector<PlacedText>* placed = nullptr) const;
+  void paint(const sim::world::World& world, const History& history, const std::vector<DrawList>& ghosts, Canvas& draw,
+             std::vector<PlacedText>* placed = nullptr) const;
   // the text of the time caption, e.g. "t = 0.500 s"
   static std::string timeText(double t);
   // how many times slower a video shows simulation time t (the video's time map); frames say
@@ -57,12 +57,12 @@ class FramePainter {
   bool labelFits(const sim::core::Body& body, const std::string& label) const;
   // many contact points: their dots' radius in px, scaled to the moving bodies' width on the frame
   double manyDotRadiusPx(const sim::world::World& world) const;
-  mutable bool unfitTold_ = false;        // labels that do not fit: said once per run
+  mutable bool unfitTold_ = false;  // labels that do not fit: said once per run
   std::vector<std::string> captionLines_;
-  TextWidth textWidth_;                   // of the frame's texts, px (empty: estimated)
-  mutable DroppedLabels dropped_;         // said once each per run
+  TextWidth textWidth_;            // of the frame's texts, px (empty: estimated)
+  mutable DroppedLabels dropped_;  // said once each per run
   SlowFactor slowMotion_;
-  TeachingArrows arrows_;                 // the lecture overlays
+  TeachingArrows arrows_;  // the lecture overlays
   EnergyPanel panel_;
 };
 

@@ -26,13 +26,13 @@ class History : public sim::world::StepObserver {
 
   struct Options {
     bool trails = false;
-    double hold = 0.5;                 // s an afterimage stays, fading
-    bool eventImpulses = true;         // an arrow where each event applies its impulse
-    bool impacts = true;               // each impact the collision response logs: point, normal, impulses
-    double impulseScale = 1.0;         // m of arrow per N·s
-    double normalLength = 1.0;         // m, the arrow of a contact normal
-    ContactDescriber contacts;         // the contacts touching now (empty: none)
-    std::vector<std::pair<int, Vec2>> points = {};  // body points (body coordinates) whose paths to keep
+    double hold = 0.5;                                  // s an afterimage stays, fading
+    bool eventImpulses = true;                          // an arrow where each event applies its impulse
+    bool impacts = true;                                // each impact the collision response logs: point, normal, impulses
+    double impulseScale = 1.0;                          // m of arrow per N·s
+    double normalLength = 1.0;                          // m, the arrow of a contact normal
+    ContactDescriber contacts;                          // the contacts touching now (empty: none)
+    std::vector<std::pair<int, Vec2>> points = {};      // body points (body coordinates) whose paths to keep
     std::optional<ImpactLabels> labels = std::nullopt;  // impact_values: text on impact and event afterimages
     // m: a trail keeps a point only this far from the one it kept before (and always the latest),
     // as drawTrails draws them: the same trail, in memory that grows with the path drawn, not with
@@ -73,7 +73,7 @@ class History : public sim::world::StepObserver {
   std::vector<std::vector<Vec2>> points_;  // by Options::points
   std::vector<Moment> moments_;
   DrawList spare_;          // the touching contacts' previous draw list, its storage reused
-  long touching_ = -1;     // index in moments_ of the contacts still touching, -1 when none
+  long touching_ = -1;      // index in moments_ of the contacts still touching, -1 when none
   size_t impactsSeen_ = 0;  // records of world.impacts already turned into moments
 };
 

@@ -210,7 +210,8 @@ void LabelPlacer::segment(const Vec2& a, const Vec2& b, const Pen& pen) {
   const bool continues = lastSegment_ && lastSegment_->role == pen.role && lastSegment_->body == pen.body &&
                          lastSegment_->opacity == pen.opacity && lastSegment_->color == pen.color;
   if (!continues) ++groups_;
-  addObstacle({Obstacle::Shape::Stroke, ends, 1.5, boundsOf(ends, 1.5), pen.body, weightOf(pen.role, pen.opacity), false, groups_});
+  addObstacle(
+      {Obstacle::Shape::Stroke, ends, 1.5, boundsOf(ends, 1.5), pen.body, weightOf(pen.role, pen.opacity), false, groups_});
   lastSegment_ = pen;
 }
 
@@ -242,8 +243,8 @@ void LabelPlacer::label(const Vec2& anchor, const Vec2& direction, const std::st
   const Vec2 d(direction.x(), -direction.y());
   const Vec2 at = camera_.toPixel(anchor);
   anchorGrid_.add({at.x(), at.y(), at.x(), at.y()}, pending_.size());
-  pending_.push_back({at, d.norm() > 0.0 ? Vec2(d.normalized()) : Vec2::Zero(), text, pen, false,
-                      static_cast<double>(width_(text))});
+  pending_.push_back(
+      {at, d.norm() > 0.0 ? Vec2(d.normalized()) : Vec2::Zero(), text, pen, false, static_cast<double>(width_(text))});
 }
 
 void LabelPlacer::labelNearby(const Vec2& anchor, const Vec2& direction, const std::string& text, const Pen& pen) {
@@ -288,7 +289,8 @@ double LabelPlacer::cost(const PixelBox& box, const Pending& p, size_t self) con
         hit = segmentCrossesBox(a, b, box);
         if (!hit) {
           double d = std::min((closestInBox(box, a) - a).norm(), (closestInBox(box, b) - b).norm());
-          for (const Vec2& c : {Vec2(box.left, box.top), Vec2(box.right, box.top), Vec2(box.right, box.bottom), Vec2(box.left, box.bottom)})
+          for (const Vec2& c :
+               {Vec2(box.left, box.top), Vec2(box.right, box.top), Vec2(box.right, box.bottom), Vec2(box.left, box.bottom)})
             d = std::min(d, distanceToSegment(c, a, b));
           hit = d < o.radius;
         }
@@ -298,7 +300,8 @@ double LabelPlacer::cost(const PixelBox& box, const Pending& p, size_t self) con
         // the solid side is n·(r − p) ≤ 0
         const Vec2 &q = o.points[0], &n = o.points[1];
         double least = kNever;
-        for (const Vec2& c : {Vec2(box.left, box.top), Vec2(box.right, box.top), Vec2(box.right, box.bottom), Vec2(box.left, box.bottom)})
+        for (const Vec2& c :
+             {Vec2(box.left, box.top), Vec2(box.right, box.top), Vec2(box.right, box.bottom), Vec2(box.left, box.bottom)})
           least = std::min(least, n.dot(c - q));
         hit = least <= 0.0;
         break;
@@ -350,7 +353,8 @@ void LabelPlacer::place(const Pending& p, size_t self) {
       along(labelCenter(p.anchor, u, halfWidth, halfHeight, gap), u, 0);
     }
   candidates.insert(candidates.begin(), {preferred, 0.0});
-  std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) { return a.moved < b.moved; });
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const Candidate& a, const Candidate& b) { return a.moved < b.moved; });
   // the cheapest: a candidate that moved further than the best cost so far cannot beat it
   double best = kNever;
   Vec2 at = preferred;
@@ -394,7 +398,8 @@ void LabelPlacer::finish() {
     target_.segment(camera_.toWorld(from), camera_.toWorld(b), {Role::Label, t.pen.body, 0.6 * t.pen.opacity});
   }
   for (const PlacedText& t : placed_) {
-    const Vec2 at = t.pen.role == Role::Caption ? Vec2(t.box.left, t.box.top) : Vec2(0.5 * (t.box.left + t.box.right), 0.5 * (t.box.top + t.box.bottom));
+    const Vec2 at = t.pen.role == Role::Caption ? Vec2(t.box.left, t.box.top)
+                                                : Vec2(0.5 * (t.box.left + t.box.right), 0.5 * (t.box.top + t.box.bottom));
     target_.text(camera_.toWorld(at), t.text, t.pen);
   }
   pending_.clear();
@@ -426,7 +431,8 @@ void DroppedLabels::report(const std::vector<PlacedText>& dropped, double t) {
       if (c >= '0' && c <= '9') c = '#';
     // and a power of ten's superscript digits ("× 10⁻¹⁶"), so that round-off is one label too
     for (const char* digit : {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹", "⁻"})
-      for (size_t at = shape.find(digit); at != std::string::npos; at = shape.find(digit, at + 1)) shape.replace(at, std::string(digit).size(), "#");
+      for (size_t at = shape.find(digit); at != std::string::npos; at = shape.find(digit, at + 1))
+        shape.replace(at, std::string(digit).size(), "#");
     if (std::find(seen_.begin(), seen_.end(), shape) != seen_.end()) continue;
     seen_.push_back(shape);
     if (told_ == kNamed) sink_("more labels dropped; not named");

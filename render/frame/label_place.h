@@ -98,8 +98,8 @@ class LabelPlacer final : public Canvas {
     Vec2 direction;  // px, unit, y down; zero: centered on the anchor
     std::string text;
     Pen pen;
-    bool fixed;      // Canvas::text: stays where it was asked for (top-left for a caption)
-    double width;    // px
+    bool fixed;           // Canvas::text: stays where it was asked for (top-left for a caption)
+    double width;         // px
     bool nearby = false;  // labelNearby: moved less than a line or not at all
   };
   // the frame cut into square cells, each listing what lies over it (obstacles, placed texts, label

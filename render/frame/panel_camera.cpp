@@ -25,10 +25,8 @@ bool fixedToFrame(Role r) {
     case Role::RotationalBar:
     case Role::PotentialBar:
     case Role::TotalBar:
-    case Role::Panel:
-      return true;
-    default:
-      return false;
+    case Role::Panel: return true;
+    default: return false;
   }
 }
 
@@ -60,8 +58,7 @@ Bounds drawnBounds(const DrawList& list) {
     switch (c.kind) {
       case DrawList::Kind::Text:
       case DrawList::Kind::Label:
-      case DrawList::Kind::HalfPlane:
-        break;
+      case DrawList::Kind::HalfPlane: break;
       case DrawList::Kind::Circle:
         b.add(c.points.at(0) - Vec2(c.radius, c.radius));
         b.add(c.points.at(0) + Vec2(c.radius, c.radius));

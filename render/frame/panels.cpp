@@ -48,10 +48,10 @@ PanelGrid panelGrid(size_t count, int width, int height, bool caption) {
   g.frameWidth = evenDown((width - (g.columns - 1) * g.gap) / static_cast<double>(g.columns));
   g.frameHeight = evenDown((height - g.captionBand - (g.rows - 1) * g.gap) / static_cast<double>(g.rows) - g.titleStrip);
   if (g.frameWidth < render::scene::kMinFrameSide || g.frameHeight < render::scene::kMinFrameSide)
-    throw render::jobs::UsageError("--panels: " + std::to_string(count) + " panels do not fit on a " + std::to_string(width) + "x" +
-                                   std::to_string(height) + " sheet (" + std::to_string(g.columns) + " x " + std::to_string(g.rows) +
-                                   ", each frame " + std::to_string(g.frameWidth) + "x" + std::to_string(g.frameHeight) +
-                                   " px, under " + std::to_string(render::scene::kMinFrameSide) +
+    throw render::jobs::UsageError("--panels: " + std::to_string(count) + " panels do not fit on a " + std::to_string(width) +
+                                   "x" + std::to_string(height) + " sheet (" + std::to_string(g.columns) + " x " +
+                                   std::to_string(g.rows) + ", each frame " + std::to_string(g.frameWidth) + "x" +
+                                   std::to_string(g.frameHeight) + " px, under " + std::to_string(render::scene::kMinFrameSide) +
                                    "); give a larger --size (at most 8192 a side)");
   return g;
 }
@@ -69,8 +69,9 @@ Image composePanels(const std::vector<Image>& frames, const PanelGrid& g, const 
       // a title too long for its panel ends in "…" rather than run into the next
       const auto line = wrapLines(titles[i], g.frameWidth - g.textSize, 1, widthAt(g.textSize));
       if (!line.empty())
-        text.draw(out, line.front(), x + 0.5 * g.frameWidth, y - g.titleStrip + 0.5 * (g.titleStrip - g.textSize) - 0.1 * g.textSize,
-                  Anchor::TopCenter, g.textSize, ink, style.background, 0);
+        text.draw(out, line.front(), x + 0.5 * g.frameWidth,
+                  y - g.titleStrip + 0.5 * (g.titleStrip - g.textSize) - 0.1 * g.textSize, Anchor::TopCenter, g.textSize, ink,
+                  style.background, 0);
     }
   }
   // rules between the columns and between the rows, in the gaps

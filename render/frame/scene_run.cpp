@@ -131,14 +131,14 @@ void SceneRun::paint(const State& state, const std::vector<DrawList>& ghosts, Im
 
 Image SceneRun::titleCard() {
   if (!text_) throw std::logic_error("SceneRun::titleCard needs a text renderer");
-  return composeSceneCard(def_.render, def_.model.name, def_.model.description, false, camera_.widthPx(), camera_.heightPx(), style_,
-                          *text_);
+  return composeSceneCard(def_.render, def_.model.name, def_.model.description, false, camera_.widthPx(), camera_.heightPx(),
+                          style_, *text_);
 }
 
 Image SceneRun::answerCard() {
   if (!text_) throw std::logic_error("SceneRun::answerCard needs a text renderer");
-  return composeSceneCard(def_.render, def_.model.name, def_.model.description, true, camera_.widthPx(), camera_.heightPx(), style_,
-                          *text_);
+  return composeSceneCard(def_.render, def_.model.name, def_.model.description, true, camera_.widthPx(), camera_.heightPx(),
+                          style_, *text_);
 }
 
 DrawList SceneRun::drawListAt(double t, int strobe, std::vector<PlacedText>* placed) {
@@ -158,8 +158,7 @@ void SceneRun::framesAt(const std::vector<double>& instants, int strobe, const s
   });
 }
 
-void SceneRun::drawListsAt(const std::vector<double>& instants, int strobe,
-                           const std::function<void(size_t, DrawList)>& shot) {
+void SceneRun::drawListsAt(const std::vector<double>& instants, int strobe, const std::function<void(size_t, DrawList)>& shot) {
   picturesAt(instants, strobe, [&](size_t i, const State& state, const std::vector<DrawList>& ghosts) {
     DrawList list;
     painter_.paint(state.world, state.history, ghosts, list);

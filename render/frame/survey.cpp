@@ -144,8 +144,9 @@ void checkView(const render::scene::Scene& def, const RunSurvey& survey, const C
            " m from the origin during the run, so the automatic camera's view";
   }
   throw sim::yaml::SceneError(def.file, at.line, at.column,
-                              what + " spans more than 1e150 m and its pixels are not finite numbers; keep the bodies "
-                              "within that (check gravity, speeds and positions) or give a fixed camera");
+                              what +
+                                  " spans more than 1e150 m and its pixels are not finite numbers; keep the bodies "
+                                  "within that (check gravity, speeds and positions) or give a fixed camera");
 }
 
 void shareScales(const std::vector<RunSurvey*>& surveys) {

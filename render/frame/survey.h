@@ -21,13 +21,13 @@ struct RunSurvey {
   double maxImpulse = 0.0;          // of the largest event or impact, N·s
   std::vector<double> impactTimes;  // ascending, each once
   // the lecture overlays' scales (render.overlays)
-  double maxOmega = 0.0;            // |ω| of any body, rad/s
-  double maxForce = 0.0;            // of any point force while it is on, N
-  double maxTorque = 0.0;           // |Σ r′ × f| of the point forces on any body, N·m
-  double maxMomentum = 0.0;         // |m v| of any moving body, kg·m/s
+  double maxOmega = 0.0;                    // |ω| of any body, rad/s
+  double maxForce = 0.0;                    // of any point force while it is on, N
+  double maxTorque = 0.0;                   // |Σ r′ × f| of the point forces on any body, N·m
+  double maxMomentum = 0.0;                 // |m v| of any moving body, kg·m/s
   double minEnergy = 0.0, maxEnergy = 0.0;  // of any bar of the energy panel (≤ 0, ≥ 0), J
-  double maxLinearMomentum = 0.0;   // |Σ m v|, kg·m/s
-  double maxAngularMomentum = 0.0;  // |L| about the origin, kg·m²/s
+  double maxLinearMomentum = 0.0;           // |Σ m v|, kg·m/s
+  double maxAngularMomentum = 0.0;          // |L| about the origin, kg·m²/s
 };
 
 // the scene run from 0 to `until` (its duration when negative); throws sim::world::Diverged

@@ -85,8 +85,8 @@ std::string TeachingArrows::defaultLabel(Show show) {
   return "";
 }
 
-void TeachingArrows::curvedArrow(const Vec2& center, double radius, double middle, double sweep, double pixel,
-                                 const Pen& style, Canvas& draw) {
+void TeachingArrows::curvedArrow(const Vec2& center, double radius, double middle, double sweep, double pixel, const Pen& style,
+                                 Canvas& draw) {
   const double length = std::abs(sweep) * radius;
   if (!(length > pixel)) return;
   const double sign = sweep > 0.0 ? 1.0 : -1.0, from = middle - 0.5 * sweep, to = middle + 0.5 * sweep;

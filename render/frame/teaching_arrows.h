@@ -33,23 +33,23 @@ class TeachingArrows {
   static std::string defaultLabel(render::scene::ArrowDef::Show show);
   // a curved arrow around `center`, `radius` from it, sweeping `sweep` (counter-clockwise when
   // positive) centered on the direction `middle` (an angle); `pixel`: the world length of a pixel
-  static void curvedArrow(const Vec2& center, double radius, double middle, double sweep, double pixel,
-                          const Pen& style, Canvas& draw);
+  static void curvedArrow(const Vec2& center, double radius, double middle, double sweep, double pixel, const Pen& style,
+                          Canvas& draw);
 
  private:
   struct Arrow {
     render::scene::ArrowDef def;
-    Vec2 local;       // `at` in body coordinates after the centroid shift
-    int path = -1;    // index among paths()
+    Vec2 local;     // `at` in body coordinates after the centroid shift
+    int path = -1;  // index among paths()
   };
   void drawOne(const Arrow& a, int index, const sim::world::World& world, const History& history, Canvas& draw) const;
   // the arrow's label (with its value) beyond `anchor` in `direction`
   void label(const Arrow& a, const std::string& value, const Vec2& anchor, const Vec2& direction, Canvas& draw) const;
 
   std::vector<Arrow> arrows_;
-  double px_, viewHeight_;                              // world lengths of a pixel and of the view
-  double velocityScale_, forceScale_, momentumScale_;   // m of arrow per m/s, N, kg·m/s
-  double maxOmega_, maxTorque_;                         // the run's, for the curved arrows' sweeps
+  double px_, viewHeight_;                             // world lengths of a pixel and of the view
+  double velocityScale_, forceScale_, momentumScale_;  // m of arrow per m/s, N, kg·m/s
+  double maxOmega_, maxTorque_;                        // the run's, for the curved arrows' sweeps
 };
 
 }  // namespace render::frame

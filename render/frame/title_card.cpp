@@ -75,12 +75,15 @@ CardLayout sceneCard(const RenderDef& render, const std::string& name, const std
   const SizedWidth widthAt = [&text](int size) -> TextWidth {
     return [&text, size](const std::string& s) { return text.measure(s, size).width; };
   };
-  CardLayout layout = layoutCard(width, height, answer ? "Answer" : titleOf(render, name), shown, fontSizeFor(render, height), widthAt);
+  CardLayout layout =
+      layoutCard(width, height, answer ? "Answer" : titleOf(render, name), shown, fontSizeFor(render, height), widthAt);
   if (!layout.fits) {
     std::ostringstream size;
     size << width << "x" << height;
     throw sim::yaml::SceneError(poll.file, answer ? poll.answerLine : poll.line, answer ? poll.answerColumn : poll.column,
-                                std::string(answer ? "the answer" : poll.question.empty() ? "the description" : "the question") +
+                                std::string(answer                  ? "the answer"
+                                            : poll.question.empty() ? "the description"
+                                                                    : "the question") +
                                     " does not fit on its card at " + size.str() +
                                     " even in the smallest type; shorten it (the card shows every word, never a cut line)");
   }

@@ -45,8 +45,8 @@ Image composeCard(int width, int height, const CardLayout& layout, const Style& 
 // the card of a scene's video, 2D or 3D, `width` × `height` px: its title (titleOf) over its
 // question (else its description), or, with `answer`, "Answer" over its answer. Throws
 // sim::yaml::SceneError at the text's line when it cannot fit
-CardLayout sceneCard(const render::scene::RenderDef& render, const std::string& name, const std::string& description,
-                     bool answer, int width, int height, TextRenderer& text);
+CardLayout sceneCard(const render::scene::RenderDef& render, const std::string& name, const std::string& description, bool answer,
+                     int width, int height, TextRenderer& text);
 // that card drawn in the style of the scene's frames
 Image composeSceneCard(const render::scene::RenderDef& render, const std::string& name, const std::string& description,
                        bool answer, int width, int height, const Style& style, TextRenderer& text);

@@ -75,7 +75,8 @@ void drawTraceOverlay(const render::scene::Scene& def, const render::scene::Trac
     const Vec2 a = camera.toWorld({layout.inset, middle}), b = camera.toWorld({layout.inset + sample, middle});
     if (row == 0) draw.segment(a, b, {Role::Caption, -1, 1.0});
     else dashedLoop({a, b}, false, dash, gap, pen, draw);
-    draw.text(camera.toWorld({layout.inset + sample + 0.5 * layout.line, top}), row == 0 ? ours : theirs, {Role::Caption, -1, 1.0});
+    draw.text(camera.toWorld({layout.inset + sample + 0.5 * layout.line, top}), row == 0 ? ours : theirs,
+              {Role::Caption, -1, 1.0});
   }
 }
 

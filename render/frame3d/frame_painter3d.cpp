@@ -58,7 +58,7 @@ std::string defaultLabel(Arrow3dDef::Show show) {
 }  // namespace
 
 FramePainter3d::FramePainter3d(const render::scene3d::Scene& def, const Camera3d& camera, const RunSurvey3d& survey,
-                             const render::frame::TextWidth& width)
+                               const render::frame::TextWidth& width)
     : def_(def),
       camera_(camera),
       overlay_(overlayCamera(camera.widthPx(), camera.heightPx())),
@@ -72,7 +72,8 @@ FramePainter3d::FramePainter3d(const render::scene3d::Scene& def, const Camera3d
     shapeKeys_.push_back(m.name);
     double radius = 0.0;
     for (const Vec3& p : m.positions) radius = std::max(radius, p.norm());
-    if (b.shape.kind != sim::world3d::ShapeKind::Box) radius = b.shape.kind == sim::world3d::ShapeKind::Sphere ? b.shape.radius : b.shape.semiAxes.maxCoeff();
+    if (b.shape.kind != sim::world3d::ShapeKind::Box)
+      radius = b.shape.kind == sim::world3d::ShapeKind::Sphere ? b.shape.radius : b.shape.semiAxes.maxCoeff();
     radii_.push_back(radius);
   }
   // the caption is the same in every frame: wrapped once, to the frame less an inset on each side
@@ -108,8 +109,7 @@ void FramePainter3d::arrow(const Vec3& tail, const Vec3& head, const Pen& pen, c
   // an arrow under a pixel long has nothing to show, not even its direction
   if ((*h - *t).norm() >= 1.0) draw.arrow(*t, *h, pen);
   if (!label.empty())
-    draw.text(labelBeyond(*h, directionOr(*h - *t, Vec2::UnitY()), label, em_), label,
-              {Role::Label, pen.body, 1.0});
+    draw.text(labelBeyond(*h, directionOr(*h - *t, Vec2::UnitY()), label, em_), label, {Role::Label, pen.body, 1.0});
 }
 
 void FramePainter3d::path(const std::vector<Vec3>& points, const Vec3& offset, const Pen& pen, Canvas& draw) const {
@@ -134,9 +134,7 @@ void FramePainter3d::paintArrows(const World& world, const History3d& history, C
     const Body& b = world.bodies[a.body];
     const int color = a.color.empty() ? -1 : static_cast<int>(k);
     const std::string name = a.label.empty() ? defaultLabel(a.show) : a.label;
-    auto labeled = [&](const Vec3& v, const char* unit) {
-      return a.value ? render::frame::vectorText(name, v, unit) : name;
-    };
+    auto labeled = [&](const Vec3& v, const char* unit) { return a.value ? render::frame::vectorText(name, v, unit) : name; };
     switch (a.show) {
       case Arrow3dDef::Show::Axes: {
         const Mat3 r = b.rotation();
@@ -238,7 +236,8 @@ const Mesh& FramePainter3d::meshFor(size_t i, const Body& b) const {
   const Vec3 c = camera_.toCamera(b.x);
   const double depth = c.z() - radii_[i];
   const int segments = depth > camera_.nearDepth() ? segmentsFor(radii_[i] * camera_.pixelsPerMeter(depth)) : 48;
-  const std::pair<std::string, int> key(shapeKeys_[i], def_.model.bodies[i].shape.kind == sim::world3d::ShapeKind::Box ? 0 : segments);
+  const std::pair<std::string, int> key(shapeKeys_[i],
+                                        def_.model.bodies[i].shape.kind == sim::world3d::ShapeKind::Box ? 0 : segments);
   auto found = meshes_.find(key);
   if (found == meshes_.end()) found = meshes_.emplace(key, meshOf(def_.model.bodies[i].shape, segments)).first;
   return found->second;
@@ -252,7 +251,8 @@ void FramePainter3d::paint(const World& world, const History3d& history, Canvas3
   }
   Canvas& draw = canvas.overlay();
   if (r.trails)
-    for (size_t i = 0; i < world.bodies.size(); ++i) path(history.trail(i), Vec3::Zero(), {Role::Trail, static_cast<int>(i), 1.0}, draw);
+    for (size_t i = 0; i < world.bodies.size(); ++i)
+      path(history.trail(i), Vec3::Zero(), {Role::Trail, static_cast<int>(i), 1.0}, draw);
   if (r.springs)
     for (const Spring& sp : world.forces.springs) {
       const Vec3 a = world.bodies[sp.bodyA].toWorld(sp.pointA);

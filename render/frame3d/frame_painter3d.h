@@ -29,7 +29,7 @@ class FramePainter3d {
  public:
   // `width` measures text at the frame's font size, to wrap the caption (empty: an estimate)
   FramePainter3d(const render::scene3d::Scene& def, const Camera3d& camera, const RunSurvey3d& survey,
-                const render::frame::TextWidth& width = {});
+                 const render::frame::TextWidth& width = {});
 
   // what the history of a run must record for these frames
   History3d::Options historyOptions() const;
@@ -61,7 +61,7 @@ class FramePainter3d {
   std::vector<double> radii_;           // by body: the radius of a ball around its shape, m
   mutable std::map<std::pair<std::string, int>, Mesh> meshes_;
   double omegaScale_, momentumScale_, velocityScale_;  // m of arrow per rad/s, kg·m²/s, m/s
-  double em_;                     // text size, px
+  double em_;                                          // text size, px
   EnergyPanel3d panel_;
   std::vector<std::string> captionLines_;
   std::function<double(double)> slowMotion_;

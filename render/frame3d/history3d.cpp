@@ -23,7 +23,8 @@ void History3d::afterStep(const sim::world3d::World& world) {
     const auto& [body, point] = options_.points[k];
     keep(points_[k], world.bodies[body].toWorld(point), options_.spacing);
   }
-  for (size_t k = 0; k < options_.omegaTips.size(); ++k) keep(omegas_[k], world.bodies[options_.omegaTips[k]].omega, options_.omegaSpacing);
+  for (size_t k = 0; k < options_.omegaTips.size(); ++k)
+    keep(omegas_[k], world.bodies[options_.omegaTips[k]].omega, options_.omegaSpacing);
 }
 
 }  // namespace render::frame3d

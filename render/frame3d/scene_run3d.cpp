@@ -20,7 +20,7 @@ render::frame::TextWidth textWidth(render::draw::TextRenderer* text, int sizePx)
 }  // namespace
 
 SceneRun3d::SceneRun3d(const render::scene3d::Scene& def, const Camera3d& camera, const RunSurvey3d& survey,
-                     render::draw::GlContext* gl, render::draw::TextRenderer* text)
+                       render::draw::GlContext* gl, render::draw::TextRenderer* text)
     : def_(def),
       camera_(camera),
       style_(render::scene3d::makeStyle(def, camera.heightPx())),

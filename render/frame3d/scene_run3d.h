@@ -20,7 +20,7 @@ class SceneRun3d final : public render::frame::FrameSource {
   // `def` must outlive the run; the GL context is the frame's size and current on this thread
   // (without one, only draw lists can be made)
   SceneRun3d(const render::scene3d::Scene& def, const Camera3d& camera, const RunSurvey3d& survey,
-            render::draw::GlContext* gl = nullptr, render::draw::TextRenderer* text = nullptr);
+             render::draw::GlContext* gl = nullptr, render::draw::TextRenderer* text = nullptr);
 
   // where the run ends, its last step cut there: the scene's duration unless set before the first frame
   void endAt(double end) { end_ = end; }

@@ -27,7 +27,8 @@ class Surveyor : public StepObserver {
     }
     // the panel's values cost a pass over the bodies: only for scenes that show it
     if (def_.render.overlays.energy)
-      for (double value : energyValues(w)) out_.minEnergy = std::min(out_.minEnergy, value), out_.maxEnergy = std::max(out_.maxEnergy, value);
+      for (double value : energyValues(w))
+        out_.minEnergy = std::min(out_.minEnergy, value), out_.maxEnergy = std::max(out_.maxEnergy, value);
     if (def_.render.overlays.momentum) {
       out_.maxLinearMomentum = std::max(out_.maxLinearMomentum, linearMomentum(w).norm());
       out_.maxWorldAngularMomentum = std::max(out_.maxWorldAngularMomentum, angularMomentum(w).norm());

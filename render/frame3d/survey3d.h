@@ -14,14 +14,14 @@ using render::draw3d::Box3d;
 using render::draw3d::Camera3d;
 
 struct RunSurvey3d {
-  Box3d bounds;                      // every body's bounding ball at every step, and the anchors, m
-  double maxSpeed = 0.0;            // |v| of any body, m/s
-  double maxOmega = 0.0;            // |ω| of any body, rad/s
-  double maxAngularMomentum = 0.0;  // |L| of any body about its center, kg·m²/s
+  Box3d bounds;                             // every body's bounding ball at every step, and the anchors, m
+  double maxSpeed = 0.0;                    // |v| of any body, m/s
+  double maxOmega = 0.0;                    // |ω| of any body, rad/s
+  double maxAngularMomentum = 0.0;          // |L| of any body about its center, kg·m²/s
   double minEnergy = 0.0, maxEnergy = 0.0;  // of any bar of the energy panel (≤ 0, ≥ 0), J
-  double maxLinearMomentum = 0.0;   // |Σ m v|, kg·m/s
-  double maxWorldAngularMomentum = 0.0;  // |L| about the origin, kg·m²/s
-  std::vector<double> impactTimes;  // none: 3D has no contacts (for the video's time map)
+  double maxLinearMomentum = 0.0;           // |Σ m v|, kg·m/s
+  double maxWorldAngularMomentum = 0.0;     // |L| about the origin, kg·m²/s
+  std::vector<double> impactTimes;          // none: 3D has no contacts (for the video's time map)
 };
 
 // the scene run from 0 to `until` (its duration when negative); throws sim::world3d::Diverged

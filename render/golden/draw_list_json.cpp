@@ -91,8 +91,11 @@ DrawnFrame readDrawnFrame(const std::string& path) {
     f.viewWidth = root["view"]["width"].as<double>();
     f.viewHeight = root["view"]["height"].as<double>();
     for (const YAML::Node& c : root["calls"]) {
-      DrawnCall d{c["kind"].as<std::string>(), c["pen"].as<std::string>(), c["color"].as<std::string>(),
-                  c["text"] ? c["text"].as<std::string>() : "", {}};
+      DrawnCall d{c["kind"].as<std::string>(),
+                  c["pen"].as<std::string>(),
+                  c["color"].as<std::string>(),
+                  c["text"] ? c["text"].as<std::string>() : "",
+                  {}};
       for (const YAML::Node& x : c["numbers"]) d.numbers.push_back(x.as<double>());
       f.calls.push_back(std::move(d));
     }
@@ -113,7 +116,8 @@ std::string compareDrawnFrames(const DrawnFrame& expected, const DrawnFrame& act
     if (e.kind != a.kind || e.pen != a.pen) return at + " is now " + a.kind + " " + a.pen;
     if (e.color != a.color) return at + ": color " + a.color + ", expected " + e.color;
     if (e.text != a.text) return at + ": text \"" + a.text + "\", expected \"" + e.text + "\"";
-    if (e.numbers.size() != a.numbers.size()) return at + ": " + std::to_string(a.numbers.size()) + " numbers, expected " + std::to_string(e.numbers.size());
+    if (e.numbers.size() != a.numbers.size())
+      return at + ": " + std::to_string(a.numbers.size()) + " numbers, expected " + std::to_string(e.numbers.size());
     for (size_t k = 0; k < e.numbers.size(); ++k)
       if (!(std::abs(e.numbers[k] - a.numbers[k]) <= allowed))
         return at + ": number " + std::to_string(k + 1) + " is " + formatNumber(a.numbers[k]) + ", expected " +

@@ -56,8 +56,8 @@ LevelResult stateLevel(const GoldenRun& run, const GoldenRecord& record) {
     if (l.error > 0.0) m << " ('" << l.body << "' at t = " << formatNumber(l.t) << ")";
   };
   const bool within = position.error <= tol.position && angle.error <= tol.angle && velocity.error <= tol.velocity;
-  m << (within ? "ok: " : "") << differing << " of " << run.checkpoints.size() << " state hashes differ (first at t = "
-    << formatNumber(first) << "); largest error: ";
+  m << (within ? "ok: " : "") << differing << " of " << run.checkpoints.size()
+    << " state hashes differ (first at t = " << formatNumber(first) << "); largest error: ";
   part("position", position, tol.position);
   m << ", ";
   part("angle", angle, tol.angle);
@@ -83,7 +83,8 @@ LevelResult drawListLevel(const GoldenRun& run, const GoldenRecord& record) {
     return r;
   }
   r.status = LevelResult::Status::Failed;
-  r.message = std::to_string(failures.size()) + " of " + std::to_string(run.frames.size()) + " frames differ: " + failures.front();
+  r.message =
+      std::to_string(failures.size()) + " of " + std::to_string(run.frames.size()) + " frames differ: " + failures.front();
   if (failures.size() > 1) r.message += " (and " + std::to_string(failures.size() - 1) + " more)";
   r.message += "; what is shown changed";
   return r;
@@ -117,7 +118,8 @@ LevelResult pixelLevel(const GoldenRun& run, const GoldenRecord& record, bool st
     return r;
   }
   r.status = LevelResult::Status::Failed;
-  r.message = std::to_string(r.frames.size()) + " of " + std::to_string(run.frames.size()) + " frames differ: " + r.frames.front().message;
+  r.message = std::to_string(r.frames.size()) + " of " + std::to_string(run.frames.size()) +
+              " frames differ: " + r.frames.front().message;
   return r;
 }
 

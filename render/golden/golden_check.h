@@ -19,9 +19,9 @@ const char* levelName(Level level);  // "state", "draw_list", "pixels"
 
 // a frame that differs in pixels, for the report
 struct FrameDiff {
-  std::string name;           // frame-t<T>
+  std::string name;  // frame-t<T>
   double t = 0.0;
-  std::string expectedPng;    // the record's
+  std::string expectedPng;  // the record's
   render::draw::Image actual, diff;
   std::string message;
 };
@@ -29,14 +29,14 @@ struct FrameDiff {
 struct LevelResult {
   Level level = Level::State;
   enum class Status { Ok, Failed, Skipped } status = Status::Ok;
-  std::string message;  // what differs and by how much, or why skipped; a note when ok
+  std::string message;            // what differs and by how much, or why skipped; a note when ok
   std::vector<FrameDiff> frames;  // pixels only
   bool failed() const { return status == Status::Failed; }
 };
 
 struct CaseResult {
-  std::string name;    // <scene>[-<variant>]
-  std::string file;    // the scene file
+  std::string name;                 // <scene>[-<variant>]
+  std::string file;                 // the scene file
   std::vector<LevelResult> levels;  // state, draw_list, pixels
   std::vector<std::string> warnings;
   bool failed() const;

@@ -23,8 +23,8 @@ struct StateTolerance {
 };
 
 struct GoldenDef {
-  std::vector<double> at;  // s: the frames' times (empty: the scene's duration)
-  bool impacts = true;     // a frame at each impact too (the first kMaxImpactFrames)
+  std::vector<double> at;         // s: the frames' times (empty: the scene's duration)
+  bool impacts = true;            // a frame at each impact too (the first kMaxImpactFrames)
   int width = 640, height = 360;  // px of the golden frames
   StateTolerance tolerance;
   int pixelTolerance = 24;       // of 255: a pixel differs when a channel is off by more

@@ -46,7 +46,9 @@ std::string manifest(const GoldenRun& run, const RecordInfo& info) {
   j.field("renderer", run.renderer).field("renderer_version", run.rendererVersion);
   j.key("size").beginArray().value(static_cast<long>(g.width)).value(static_cast<long>(g.height)).endArray();
   j.key("tolerance").beginObject().field("position", g.tolerance.position).field("angle", g.tolerance.angle);
-  j.field("velocity", g.tolerance.velocity).field("draw_list", 1e-6).field("pixel_tolerance", static_cast<long>(g.pixelTolerance));
+  j.field("velocity", g.tolerance.velocity)
+      .field("draw_list", 1e-6)
+      .field("pixel_tolerance", static_cast<long>(g.pixelTolerance));
   j.field("pixel_fraction", g.pixelFraction).endObject();
   j.key("checkpoints").beginArray();
   for (const Checkpoint& c : run.checkpoints) j.value(c.t);
@@ -132,8 +134,9 @@ GoldenRecord readRecord(const std::string& folder, const sim::scene::SceneDef& d
     }
   }
   if (r.hashes.size() != r.times.checkpoints.size())
-    throw sim::yaml::SceneError(statesPath, number, 1, "has " + std::to_string(r.hashes.size()) + " hashes for " +
-                                                           std::to_string(r.times.checkpoints.size()) + " checkpoints; record it again");
+    throw sim::yaml::SceneError(statesPath, number, 1,
+                                "has " + std::to_string(r.hashes.size()) + " hashes for " +
+                                    std::to_string(r.times.checkpoints.size()) + " checkpoints; record it again");
   r.trace = readTrace((fs::path(folder) / "trace.csv").string(), def).bodies;
   return r;
 }

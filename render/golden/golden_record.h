@@ -23,9 +23,9 @@ std::string rigidreelVersion();
 
 // what a manifest says beside the run
 struct RecordInfo {
-  std::string sceneFile;    // as given
+  std::string sceneFile;  // as given
   std::string sceneSha256;
-  GoldenDef golden;         // size and tolerances
+  GoldenDef golden;  // size and tolerances
 };
 
 // `run` written as DIR/<run.name>/, replacing what was there in one step; throws std::runtime_error
@@ -37,9 +37,9 @@ struct GoldenRecord {
   std::string version, sceneFile, sceneSha256, renderer, rendererVersion;
   GoldenDef golden;
   GoldenTimes times;
-  std::vector<unsigned long long> hashes;  // by checkpoint
+  std::vector<unsigned long long> hashes;       // by checkpoint
   std::vector<std::vector<TraceSample>> trace;  // by the scene's body index, one sample per checkpoint
-  std::vector<std::string> frameNames;     // by frame
+  std::vector<std::string> frameNames;          // by frame
 };
 
 // the record in `folder` for the scene `def`; throws sim::yaml::SceneError naming the file at fault

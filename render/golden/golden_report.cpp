@@ -32,7 +32,8 @@ void writeReport(const std::vector<CaseResult>& results, const std::string& dir)
           ".frames{display:flex;flex-wrap:wrap;gap:.5em}.frames figure{margin:0;flex:1 1 18em;min-width:0}\n"
           ".frames img{width:100%;height:auto;border:1px solid #ccc}figcaption{font-size:.9em}\n"
           "</style>\n</head>\n<body>\n<h1>rigidreel golden check</h1>\n<p>"
-       << results.size() << " scene variants, " << failed << " failed. A failure at one level and not the others says where to look: "
+       << results.size() << " scene variants, " << failed
+       << " failed. A failure at one level and not the others says where to look: "
        << "<em>state</em> the physics, <em>draw_list</em> what is shown, <em>pixels</em> only the rasterizer.</p>\n";
   html << "<table>\n<col class=\"scene\"><col class=\"level\"><col>\n<tr><th>scene</th><th>level</th><th>result</th></tr>\n";
   // the failed scene variants first: in a course's pack they are the few to read
@@ -44,13 +45,16 @@ void writeReport(const std::vector<CaseResult>& results, const std::string& dir)
   for (const CaseResult* pc : order)
     for (const LevelResult& l : pc->levels) {
       const CaseResult& c = *pc;
-      const char* cls = l.status == LevelResult::Status::Failed ? "failed" : l.status == LevelResult::Status::Skipped ? "skipped" : "ok";
+      const char* cls = l.status == LevelResult::Status::Failed    ? "failed"
+                        : l.status == LevelResult::Status::Skipped ? "skipped"
+                                                                   : "ok";
       html << "<tr><td><a href=\"#" << escapeXml(c.name) << "\">" << escapeXml(c.name) << "</a></td><td>" << levelName(l.level)
            << "</td><td class=\"" << cls << "\">" << escapeXml(l.message) << "</td></tr>\n";
     }
   html << "</table>\n";
   for (const CaseResult& c : results) {
-    html << "<section id=\"" << escapeXml(c.name) << "\">\n<h2>" << escapeXml(c.name) << "</h2>\n<p>" << escapeXml(c.file) << "</p>\n";
+    html << "<section id=\"" << escapeXml(c.name) << "\">\n<h2>" << escapeXml(c.name) << "</h2>\n<p>" << escapeXml(c.file)
+         << "</p>\n";
     for (const std::string& w : c.warnings) html << "<p class=\"skipped\">warning: " << escapeXml(w) << "</p>\n";
     for (const LevelResult& l : c.levels)
       for (const FrameDiff& f : l.frames) {
@@ -59,12 +63,13 @@ void writeReport(const std::vector<CaseResult>& results, const std::string& dir)
         fs::copy_file(f.expectedPng, sub / (f.name + "-expected.png"), fs::copy_options::overwrite_existing);
         render::draw::writePng(f.actual, (sub / (f.name + "-actual.png")).string());
         render::draw::writePng(f.diff, (sub / (f.name + "-diff.png")).string());
-        html << "<h3>" << escapeXml(f.name) << " (t = " << render::jobs::formatNumber(f.t) << " s)</h3>\n<p>" << escapeXml(f.message)
-             << "</p>\n<div class=\"frames\">\n";
+        html << "<h3>" << escapeXml(f.name) << " (t = " << render::jobs::formatNumber(f.t) << " s)</h3>\n<p>"
+             << escapeXml(f.message) << "</p>\n<div class=\"frames\">\n";
         for (const char* kind : {"expected", "actual", "diff"})
-          html << "<figure><img src=\"" << escapeXml(c.name + "/" + f.name + "-" + kind + ".png") << "\" alt=\"" << kind << " frame of "
-               << escapeXml(c.name) << " at t = " << render::jobs::formatNumber(f.t) << "\"><figcaption>" << kind
-               << (std::string(kind) == "diff" ? ": pixels off by more than the tolerance in red" : "") << "</figcaption></figure>\n";
+          html << "<figure><img src=\"" << escapeXml(c.name + "/" + f.name + "-" + kind + ".png") << "\" alt=\"" << kind
+               << " frame of " << escapeXml(c.name) << " at t = " << render::jobs::formatNumber(f.t) << "\"><figcaption>" << kind
+               << (std::string(kind) == "diff" ? ": pixels off by more than the tolerance in red" : "")
+               << "</figcaption></figure>\n";
         html << "</div>\n";
       }
     html << "</section>\n";
@@ -90,7 +95,8 @@ void writeJunit(const std::vector<CaseResult>& results, const std::string& path)
       << "\" failures=\"" << failures << "\" errors=\"0\" skipped=\"" << skipped << "\">\n";
   for (const CaseResult& c : results)
     for (const LevelResult& l : c.levels) {
-      out << "  <testcase classname=\"" << escapeXml(c.name) << "\" name=\"" << levelName(l.level) << "\" file=\"" << escapeXml(c.file) << "\"";
+      out << "  <testcase classname=\"" << escapeXml(c.name) << "\" name=\"" << levelName(l.level) << "\" file=\""
+          << escapeXml(c.file) << "\"";
       if (l.status == LevelResult::Status::Ok) {
         out << "/>\n";
         continue;
@@ -98,8 +104,7 @@ void writeJunit(const std::vector<CaseResult>& results, const std::string& path)
       out << ">\n";
       if (l.status == LevelResult::Status::Failed)
         out << "    <failure message=\"" << escapeXml(l.message) << "\">" << escapeXml(l.message) << "</failure>\n";
-      else
-        out << "    <skipped message=\"" << escapeXml(l.message) << "\"/>\n";
+      else out << "    <skipped message=\"" << escapeXml(l.message) << "\"/>\n";
       out << "  </testcase>\n";
     }
   out << "</testsuite>\n</testsuites>\n";

@@ -82,7 +82,8 @@ GoldenRun runGolden(const render::scene::Scene& original, const GoldenDef& golde
     c.t = instants[i];
     c.hash = sim::world::stateHash(shot.world);
     for (size_t b = 0; b < shot.world.bodies.size(); ++b) c.bodies.push_back(sampleOf(shot.world, b));
-    if (pictured[i]) frames[i] = GoldenFrame{instants[i], frameName(instants[i]), drawnFrame(shot.drawList, style, camera), shot.frame};
+    if (pictured[i])
+      frames[i] = GoldenFrame{instants[i], frameName(instants[i]), drawnFrame(shot.drawList, style, camera), shot.frame};
   });
   for (std::optional<GoldenFrame>& f : frames)
     if (f) run.frames.push_back(std::move(*f));

@@ -16,8 +16,8 @@ namespace render::golden {
 
 struct Checkpoint {
   double t = 0.0;
-  unsigned long long hash = 0;        // sim::world::stateHash
-  std::vector<TraceSample> bodies;    // by the scene's body index
+  unsigned long long hash = 0;      // sim::world::stateHash
+  std::vector<TraceSample> bodies;  // by the scene's body index
 };
 
 struct GoldenFrame {

@@ -35,8 +35,8 @@ struct BodyComparison {
   std::string name;
   bool compared = false;  // their trace has rows for it
   ErrorTrack position, angle, velocity;
-  double from = 0.0, to = 0.0;  // the times compared, s
-  double oursEnergy = 0.0, theirsEnergy = 0.0;  // kinetic, J, at the last time compared
+  double from = 0.0, to = 0.0;                                                         // the times compared, s
+  double oursEnergy = 0.0, theirsEnergy = 0.0;                                         // kinetic, J, at the last time compared
   std::vector<std::pair<double, double>> positionErrors, angleErrors, velocityErrors;  // against time, for the chart
   bool exceeded() const { return position.firstOver >= 0.0 || angle.firstOver >= 0.0 || velocity.firstOver >= 0.0; }
 };

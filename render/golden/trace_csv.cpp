@@ -70,8 +70,9 @@ Trace traceText(const std::string& text, const std::string& file, const sim::sce
       return static_cast<int>(at);
     };
     if (fields.size() != fieldCount)
-      fail(number, 1, "expected " + std::to_string(fieldCount) + " comma-separated values as in the header, got " +
-                          std::to_string(fields.size()));
+      fail(number, 1,
+           "expected " + std::to_string(fieldCount) + " comma-separated values as in the header, got " +
+               std::to_string(fields.size()));
     const std::string body = trimmed(fields[column["body"]]);
     const int index = def.bodyIndex(body);
     if (index < 0) {
@@ -108,9 +109,9 @@ Trace traceText(const std::string& text, const std::string& file, const sim::sce
     }
     std::vector<TraceSample>& samples = trace.bodies[index];
     if (!samples.empty() && values[0] < samples.back().t)
-      fail(number, columnOf(column["t"]), "time goes back for '" + body + "': " + formatNumber(values[0]) + " after " +
-                                               formatNumber(samples.back().t) + " on line " + std::to_string(samples.back().line) +
-                                               "; list each body's rows in time order");
+      fail(number, columnOf(column["t"]),
+           "time goes back for '" + body + "': " + formatNumber(values[0]) + " after " + formatNumber(samples.back().t) +
+               " on line " + std::to_string(samples.back().line) + "; list each body's rows in time order");
     samples.push_back({values[0], values[1], values[2], values[3], values[4], values[5], values[6], kinetic, number});
     ++trace.rows;
   }
@@ -145,8 +146,15 @@ bool sampleAt(const std::vector<TraceSample>& samples, double t, TraceSample& ou
   const TraceSample& b = *after;
   const double f = (t - a.t) / (b.t - a.t);
   const auto mix = [f](double p, double q) { return p + (q - p) * f; };
-  out = {t, mix(a.x, b.x), mix(a.y, b.y), mix(a.angle, b.angle), mix(a.vx, b.vx), mix(a.vy, b.vy), mix(a.omega, b.omega),
-         mix(a.kineticEnergy, b.kineticEnergy), b.line};
+  out = {t,
+         mix(a.x, b.x),
+         mix(a.y, b.y),
+         mix(a.angle, b.angle),
+         mix(a.vx, b.vx),
+         mix(a.vy, b.vy),
+         mix(a.omega, b.omega),
+         mix(a.kineticEnergy, b.kineticEnergy),
+         b.line};
   return true;
 }
 

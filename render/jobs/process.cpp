@@ -76,8 +76,7 @@ void widenPipe(int fd, size_t bytes) {
 
 int waitChild(pid_t pid) {
   int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
   return status;
 }
 
@@ -106,7 +105,8 @@ ProcessResult runProgram(const std::vector<std::string>& argv, const std::string
     ::close(child.errors);
   });
   // a program that stops reading early must not kill us with SIGPIPE
-  struct sigaction ignore {}, previous{};
+  struct sigaction ignore {
+  }, previous{};
   ignore.sa_handler = SIG_IGN;
   ::sigaction(SIGPIPE, &ignore, &previous);
   for (size_t done = 0; done < input.size();) {

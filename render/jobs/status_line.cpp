@@ -5,7 +5,10 @@
 namespace render::jobs {
 
 StatusLine::StatusLine(bool enabled, Duration delay, Duration interval, std::FILE* out)
-    : enabled_(enabled && ::isatty(::fileno(out))), delay_(delay), interval_(interval), out_(out),
+    : enabled_(enabled && ::isatty(::fileno(out))),
+      delay_(delay),
+      interval_(interval),
+      out_(out),
       start_(std::chrono::steady_clock::now()) {}
 
 StatusLine::~StatusLine() { erase(); }
@@ -35,8 +38,6 @@ void StatusLine::erase() {
   drawn_ = enabled_ = false;
 }
 
-double StatusLine::elapsed() const {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-}
+double StatusLine::elapsed() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
 
 }  // namespace render::jobs

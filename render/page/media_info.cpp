@@ -53,7 +53,8 @@ std::optional<MediaInfo> pngInfo(const std::string& path) {
   // the signature, then IHDR: length, "IHDR", width, height
   const Bytes b = head(path, 24);
   static const uint8_t signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-  if (b.size() < 24 || !std::equal(signature, signature + 8, b.begin()) || std::string_view(reinterpret_cast<const char*>(&b[12]), 4) != "IHDR")
+  if (b.size() < 24 || !std::equal(signature, signature + 8, b.begin()) ||
+      std::string_view(reinterpret_cast<const char*>(&b[12]), 4) != "IHDR")
     return std::nullopt;
   return MediaInfo{static_cast<int>(bigEndian(b, 16, 4)), static_cast<int>(bigEndian(b, 20, 4)), 0.0};
 }

@@ -136,15 +136,16 @@ void writeChecks(std::ostream& h, const std::vector<CheckRecord>& checks, bool e
   for (const CheckRecord& c : checks)
     if (c.earlierRun == earlierRun) these.push_back(&c);
   if (these.empty()) return;
-  h << "<h3>" << (earlierRun ? "Checked against an earlier run" : "Closed forms, checked") << "</h3>\n" << kTableOpen
-    << "<thead><tr><th>variant</th><th>t (s)</th><th>quantity</th><th>" << (earlierRun ? "earlier run" : "closed form")
+  h << "<h3>" << (earlierRun ? "Checked against an earlier run" : "Closed forms, checked") << "</h3>\n"
+    << kTableOpen << "<thead><tr><th>variant</th><th>t (s)</th><th>quantity</th><th>"
+    << (earlierRun ? "earlier run" : "closed form")
     << "</th><th>simulated</th><th>error</th><th>tolerance</th><th></th></tr></thead>\n<tbody>\n";
   for (const CheckRecord* c : these)
     h << "<tr><td>" << escapeHtml(c->variant.empty() ? "—" : c->variant) << "</td><td class=\"number\">" << shown(c->time, 6)
       << "</td><td>" << escapeHtml(c->quantity) << "</td><td class=\"number\">" << shownValues(c->expected)
       << "</td><td class=\"number\">" << shownValues(c->actual) << "</td><td class=\"number\">" << shown(c->error, 2)
-      << "</td><td class=\"number\">" << shown(c->tolerance, 2) << "</td><td class=\"" << (c->passed() ? "ok\">ok" : "failed\">FAILED")
-      << "</td></tr>\n";
+      << "</td><td class=\"number\">" << shown(c->tolerance, 2) << "</td><td class=\""
+      << (c->passed() ? "ok\">ok" : "failed\">FAILED") << "</td></tr>\n";
   h << "</tbody>\n" << kTableClose;
 }
 
@@ -171,8 +172,8 @@ void writePanels(std::ostream& h, const PageScene& s, const std::vector<size_t>&
 void writeSection(std::ostream& h, const PageScene& s) {
   const SceneRecord& r = s.record;
   const std::string number = fileNumber(r.file);
-  h << "<section id=\"" << sectionId(r.scene) << "\">\n<h2>" << (number.empty() ? "" : "<span class=\"muted\">" + escapeHtml(number) + "</span> ")
-    << escapeHtml(r.title) << "</h2>\n";
+  h << "<section id=\"" << sectionId(r.scene) << "\">\n<h2>"
+    << (number.empty() ? "" : "<span class=\"muted\">" + escapeHtml(number) + "</span> ") << escapeHtml(r.title) << "</h2>\n";
   h << "<p class=\"muted\"><code>" << escapeHtml(r.file) << "</code></p>\n";
   if (!r.description.empty()) h << "<p class=\"description\">" << escapeHtml(r.description) << "</p>\n";
   if (!r.question.empty()) h << "<p class=\"poll-question\"><strong>Question.</strong> " << escapeHtml(r.question) << "</p>\n";
@@ -181,9 +182,9 @@ void writeSection(std::ostream& h, const PageScene& s) {
   for (size_t i = 0; i < r.videos.size(); ++i) {
     const VideoRecord& v = r.videos[i];
     const MediaInfo& m = s.videos[i];
-    h << "<figure>\n<video controls preload=\"metadata\" width=\"" << m.width << "\" height=\"" << m.height
-      << "\" poster=\"" << href(r, v.poster) << "\" data-duration=\"" << shown(m.duration, 9) << "\" style=\"--ratio: "
-      << shown(static_cast<double>(m.height) / std::max(1, m.width), 6) << "\">"
+    h << "<figure>\n<video controls preload=\"metadata\" width=\"" << m.width << "\" height=\"" << m.height << "\" poster=\""
+      << href(r, v.poster) << "\" data-duration=\"" << shown(m.duration, 9)
+      << "\" style=\"--ratio: " << shown(static_cast<double>(m.height) / std::max(1, m.width), 6) << "\">"
       << "<source src=\"" << href(r, v.video) << "\" type=\"video/mp4\">"
       << "<a href=\"" << href(r, v.video) << "\">" << escapeHtml(v.video) << "</a></video>\n";
     h << "<figcaption>" << (v.variant.empty() ? "" : "<strong>" + escapeHtml(v.variant) + "</strong> · ") << m.width << "×"
@@ -267,8 +268,9 @@ std::vector<PageScene> readPack(const std::string& dir) {
         throw UsageError(path + ": " + kind + " (" + recordPath + " names it); remove it and render the scene again");
       const std::optional<MediaInfo> m = video ? mp4Info(path) : pngInfo(path);
       if (!m)
-        throw UsageError(recordPath + ": '" + file + "' is " + (fs::exists(path) ? std::string("not a readable ") + (video ? "MP4" : "PNG") : "missing") +
-                         " in " + folder.string() + "/; render the scene again");
+        throw UsageError(recordPath + ": '" + file + "' is " +
+                         (fs::exists(path) ? std::string("not a readable ") + (video ? "MP4" : "PNG") : "missing") + " in " +
+                         folder.string() + "/; render the scene again");
       return *m;
     };
     for (const VideoRecord& v : r.videos) {
@@ -294,15 +296,18 @@ std::string pageHtml(const std::vector<PageScene>& scenes, const std::string& ti
        "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
        "<title>"
     << escapeHtml(title) << ": " << scenes.size() << " scenes</title>\n<style>" << kStyle << "</style>\n</head>\n<body>\n";
-  h << "<header>\n<h1>" << escapeHtml(title) << "</h1>\n<p class=\"muted\">" << scenes.size() << " scenes, " << videos << " videos, " << panels
+  h << "<header>\n<h1>" << escapeHtml(title) << "</h1>\n<p class=\"muted\">" << scenes.size() << " scenes, " << videos
+    << " videos, " << panels
     << " poll panels, rendered by <code>rigidreel lecture</code>. Every file is in this folder: copy it to any web server "
        "as it is.</p>\n<nav>\n<h2>Contents</h2>\n<ul>\n";
   for (const PageScene& s : scenes)
-    h << "<li><span class=\"number\">" << escapeHtml(fileNumber(s.record.file)) << "</span><a href=\"#" << sectionId(s.record.scene)
-      << "\">" << escapeHtml(s.record.title) << "</a></li>\n";
+    h << "<li><span class=\"number\">" << escapeHtml(fileNumber(s.record.file)) << "</span><a href=\"#"
+      << sectionId(s.record.scene) << "\">" << escapeHtml(s.record.title) << "</a></li>\n";
   h << "</ul>\n</nav>\n</header>\n<main>\n";
   for (const PageScene& s : scenes) writeSection(h, s);
-  h << "</main>\n<footer>\n<h2>How it was made</h2>\n" << kTableOpen << "<thead><tr><th>scene</th><th>videos</th><th>frame size</th>"
+  h << "</main>\n<footer>\n<h2>How it was made</h2>\n"
+    << kTableOpen
+    << "<thead><tr><th>scene</th><th>videos</th><th>frame size</th>"
        "<th>fps</th><th>job (s)</th></tr></thead>\n<tbody>\n";
   double total = 0.0;
   for (const PageScene& s : scenes) {
@@ -315,10 +320,11 @@ std::string pageHtml(const std::vector<PageScene>& scenes, const std::string& ti
     }
     total += r.seconds;
     h << "<tr><td><a href=\"#" << sectionId(r.scene) << "\">" << escapeHtml(r.scene) << "</a></td><td class=\"number\">"
-      << r.videos.size() << "</td><td>" << sizes << "</td><td>" << rates << "</td><td class=\"number seconds\">" << shown(r.seconds, 3)
-      << "</td></tr>\n";
+      << r.videos.size() << "</td><td>" << sizes << "</td><td>" << rates << "</td><td class=\"number seconds\">"
+      << shown(r.seconds, 3) << "</td></tr>\n";
   }
-  h << "</tbody>\n" << kTableClose << "<p class=\"muted seconds\">" << shown(total, 4)
+  h << "</tbody>\n"
+    << kTableClose << "<p class=\"muted seconds\">" << shown(total, 4)
     << " s of job time in all; jobs that ran at once overlap in wall time.</p>\n</footer>\n</body>\n</html>\n";
   return h.str();
 }
@@ -343,7 +349,8 @@ size_t writePage(const std::string& dir) {
   DirectoryLock lock(dir);
   const std::vector<PageScene> scenes = readPack(dir);
   if (scenes.empty())
-    throw UsageError(dir + ": no scenes here (no <scene>/" + kRecordName + "); render some with `rigidreel lecture SCENE... -o " + dir + "`");
+    throw UsageError(dir + ": no scenes here (no <scene>/" + kRecordName + "); render some with `rigidreel lecture SCENE... -o " +
+                     dir + "`");
   AtomicFile page((fs::path(dir) / kPageName).string());
   page.stream() << pageHtml(scenes, packTitle(dir));
   page.commit();

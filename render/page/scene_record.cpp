@@ -36,7 +36,9 @@ class Reader {
     if (v.Type() != type) fail(path_, v.Mark(), std::string("'") + key + "' has the wrong type");
     return v;
   }
-  std::string text(const YAML::Node& object, const char* key) const { return field(object, key, YAML::NodeType::Scalar).Scalar(); }
+  std::string text(const YAML::Node& object, const char* key) const {
+    return field(object, key, YAML::NodeType::Scalar).Scalar();
+  }
   double number(const YAML::Node& object, const char* key) const {
     const YAML::Node v = object[key];
     if (!v) fail(path_, object.Mark(), std::string("'") + key + "' is missing");
@@ -91,7 +93,12 @@ void writeSceneRecord(const SceneRecord& r, const std::string& path) {
   j.endArray();
   j.key("panels").beginArray();
   for (const PanelRecord& p : r.panels)
-    j.beginObject().field("image", p.image).field("when", p.when).field("question", p.question).field("answer", p.answer).endObject();
+    j.beginObject()
+        .field("image", p.image)
+        .field("when", p.when)
+        .field("question", p.question)
+        .field("answer", p.answer)
+        .endObject();
   j.endArray();
   j.key("checks").beginArray();
   for (const CheckRecord& c : r.checks) {
@@ -137,7 +144,8 @@ SceneRecord readSceneRecord(const std::string& path) {
   for (const YAML::Node& v : in.field(root, "videos", YAML::NodeType::Sequence))
     r.videos.push_back({in.text(v, "variant"), in.fileName(v, "video"), in.fileName(v, "poster"), in.number(v, "fps")});
   for (const YAML::Node& p : in.field(root, "panels", YAML::NodeType::Sequence))
-    r.panels.push_back({in.fileName(p, "image"), in.text(p, "when"), in.flag(p, "question"), p["answer"] && in.flag(p, "answer")});
+    r.panels.push_back(
+        {in.fileName(p, "image"), in.text(p, "when"), in.flag(p, "question"), p["answer"] && in.flag(p, "answer")});
   for (const YAML::Node& c : in.field(root, "checks", YAML::NodeType::Sequence))
     r.checks.push_back({in.text(c, "variant"), in.number(c, "time"), in.text(c, "quantity"), in.numbers(c, "expected"),
                         in.numbers(c, "actual"), in.number(c, "error"), in.number(c, "tolerance"),

@@ -21,8 +21,8 @@ struct VideoRecord {
 };
 
 struct PanelRecord {
-  std::string image;  // file name in the scene's folder
-  std::string when;   // "t = 2.5 s", "impact 1"
+  std::string image;      // file name in the scene's folder
+  std::string when;       // "t = 2.5 s", "impact 1"
   bool question = false;  // the poll's question: the scene before anything happens (t = 0)
   bool answer = false;    // the poll's answer: at or after the scene's `reveal` time (never by default)
 };
@@ -39,12 +39,12 @@ struct CheckRecord {
 };
 
 struct SceneRecord {
-  std::string scene;        // its name: the folder
-  std::string file;         // the scene file it came from
+  std::string scene;  // its name: the folder
+  std::string file;   // the scene file it came from
   std::string title, description;
   std::string question, answer;  // the poll's (`question:`, `answer:`); the page folds the answer away
-  double seconds = 0.0;     // the job's wall time
-  int order = 0;            // its place in the folder's order.txt (1, 2, ...), 0 when it has none
+  double seconds = 0.0;          // the job's wall time
+  int order = 0;                 // its place in the folder's order.txt (1, 2, ...), 0 when it has none
   std::vector<VideoRecord> videos;
   std::vector<PanelRecord> panels;
   std::vector<CheckRecord> checks;

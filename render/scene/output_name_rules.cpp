@@ -15,8 +15,7 @@ std::string variantNameClash(const std::string& name) {
   for (size_t start = 0; start <= name.size();) {
     const size_t end = std::min(name.find('-', start), name.size());
     const std::string part = name.substr(start, end - start);
-    if (part.size() > 1 && part[0] == 't' && (digitAt(part, 1) || part[1] == '.'))
-      return "reads as a still's time (-t<seconds>)";
+    if (part.size() > 1 && part[0] == 't' && (digitAt(part, 1) || part[1] == '.')) return "reads as a still's time (-t<seconds>)";
     if (part.starts_with("impact") && digitAt(part, 6)) return "reads as an impact's still (-impact<N>)";
     if (part.starts_with("strobe") && digitAt(part, 6)) return "reads as a strobe still (-strobe<N>)";
     if (part == "panels") return "reads as the poll panels (-panels…)";

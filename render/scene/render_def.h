@@ -41,10 +41,10 @@ inline constexpr double kMaxViewExtent = 1e150;
 // what the view shows: everything the run covers (auto), or a fixed window
 struct CameraDef {
   bool automatic = true;
-  double margin = 0.08;          // auto: free space on each side, as a fraction of the fitted size
-  Vec2 center = Vec2::Zero();    // fixed: world point at the middle of the frame, m
-  double height = 0.0;           // fixed: world height the frame shows, m
-  sim::core::SourceLoc loc;      // where `camera:` is written; 0 when it is the default
+  double margin = 0.08;        // auto: free space on each side, as a fraction of the fitted size
+  Vec2 center = Vec2::Zero();  // fixed: world point at the middle of the frame, m
+  double height = 0.0;         // fixed: world height the frame shows, m
+  sim::core::SourceLoc loc;    // where `camera:` is written; 0 when it is the default
 };
 
 // colors of what is not a body's own (the roles' keys, render/draw/roles.h); bodies without
@@ -76,11 +76,11 @@ struct BodyLook {
 struct ArrowDef {
   enum class Show { Velocity, Offset, Omega, Frame, Path, Force, Torque, Momentum };
   Show show = Show::Velocity;
-  int body = 0;             // index into SceneDef::bodies, resolved when read
-  Vec2 at = Vec2::Zero();   // body coordinates as written (before the centroid shift)
-  std::string label;        // empty: the default of `show` ("v", "r′", "ω", …)
-  bool value = false;       // the magnitude with its unit after the label
-  std::string color;        // "#rrggbb"; empty: the color of `show`'s role
+  int body = 0;            // index into SceneDef::bodies, resolved when read
+  Vec2 at = Vec2::Zero();  // body coordinates as written (before the centroid shift)
+  std::string label;       // empty: the default of `show` ("v", "r′", "ω", …)
+  bool value = false;      // the magnitude with its unit after the label
+  std::string color;       // "#rrggbb"; empty: the color of `show`'s role
 };
 
 // the `show:` names
@@ -110,7 +110,7 @@ struct OverlaysDef {
 // (when window > 0), else simulation times [from, to]
 struct SlowMotionDef {
   double factor = 1.0;
-  double window = 0.0;  // s
+  double window = 0.0;          // s
   double from = 0.0, to = 0.0;  // s
 };
 
@@ -120,7 +120,7 @@ struct SlowMotionDef {
 struct PanelsDef {
   std::vector<double> times;  // s
   bool impacts = false;
-  int line = 0, column = 0;   // where `panels:` is written (1-based); 0 when it is the default
+  int line = 0, column = 0;  // where `panels:` is written (1-based); 0 when it is the default
 };
 
 // another simulator's trajectory drawn over the run (`render`/`snapshot --overlay`): its name in the
@@ -137,10 +137,10 @@ struct TraceOverlayDef {
 // a poll's question apart from its answer (scenes/README.md): the title card shows the question, and
 // the answer is shown only where the scene asks (a closing card, panels labelled from `reveal` on)
 struct PollDef {
-  std::string question;      // top-level (or a variant's) `question:`; empty: the card shows the description
-  std::string answer;        // `answer:`; never drawn but on the answer card, never on the page but folded
-  double answerCard = 0.0;   // s of a closing card with the answer (`render: {answer_card}`); 0: none
-  double reveal = -1.0;      // s from which a panel is labelled "answer" (`render: {reveal}`); < 0: never
+  std::string question;     // top-level (or a variant's) `question:`; empty: the card shows the description
+  std::string answer;       // `answer:`; never drawn but on the answer card, never on the page but folded
+  double answerCard = 0.0;  // s of a closing card with the answer (`render: {answer_card}`); 0: none
+  double reveal = -1.0;     // s from which a panel is labelled "answer" (`render: {reveal}`); < 0: never
   // where the card's text is written (the question, else the description), for a card that cannot fit
   std::string file;
   int line = 0, column = 0;
@@ -149,43 +149,43 @@ struct PollDef {
 };
 
 struct RenderDef {
-  std::vector<BodyLook> bodies;        // by body index of the model
-  int width = 1280;                    // pixels
+  std::vector<BodyLook> bodies;  // by body index of the model
+  int width = 1280;              // pixels
   int height = 720;
-  double fps = 60.0;                   // frames per second of a video
+  double fps = 60.0;  // frames per second of a video
   std::string background = "#ffffff";
-  double lineWidth = 0.0;              // pixels, of outlines, arrows and segments; 0: lineWidthFor's default
-  double fontSize = 0.0;               // pixels; 0: the frame height / 36, at least 11
+  double lineWidth = 0.0;  // pixels, of outlines, arrows and segments; 0: lineWidthFor's default
+  double fontSize = 0.0;   // pixels; 0: the frame height / 36, at least 11
   ColorsDef colors;
   CameraDef camera;
-  bool contacts = true;                // contact points, normals and impact impulses
+  bool contacts = true;  // contact points, normals and impact impulses
   // `contacts: auto` (the default): a frame with many contacts on screen shows their dots alone,
   // without normals (render/frame/frame_painter.cpp); `contacts: true` always draws both
   bool contactsAuto = true;
-  double contactHold = 0.5;            // s a contact stays on screen after an impact, fading
-  bool impulses = true;                // arrows where events apply their impulses (held as contacts)
-  double impulseScale = 0.0;           // m per N·s; 0: the largest event impulse is 1/6 of the view
-  bool velocities = false;             // velocity arrows at the centers of mass
-  double velocityScale = 0.0;          // m per m/s (s); 0: the fastest body's arrow is 1/6 of the view
-  bool trails = false;                 // the path of every center of mass so far
-  bool sat = false;                    // the separating-axis overlay: reference edge, incident vertex
-  int strobe = 0;                      // snapshots and the poster: this many ghosted earlier poses
-  bool springs = true;                 // springs as zigzags, world anchors as dots
-  bool labels = true;                  // body labels
+  double contactHold = 0.5;    // s a contact stays on screen after an impact, fading
+  bool impulses = true;        // arrows where events apply their impulses (held as contacts)
+  double impulseScale = 0.0;   // m per N·s; 0: the largest event impulse is 1/6 of the view
+  bool velocities = false;     // velocity arrows at the centers of mass
+  double velocityScale = 0.0;  // m per m/s (s); 0: the fastest body's arrow is 1/6 of the view
+  bool trails = false;         // the path of every center of mass so far
+  bool sat = false;            // the separating-axis overlay: reference edge, incident vertex
+  int strobe = 0;              // snapshots and the poster: this many ghosted earlier poses
+  bool springs = true;         // springs as zigzags, world anchors as dots
+  bool labels = true;          // body labels
   // `labels: auto` (the default): only labels that fit inside their body, or all of a scene of at
   // most 20 bodies, and leader lines only for the scene's own `label:`s; `labels: true`: all, always
   bool labelsAuto = true;
-  bool time = true;                    // the time in a corner
+  bool time = true;  // the time in a corner
   // video timing and text (section B of the lecture pack): the opening card, the caption, slow motion
-  std::string title;                   // the title card's; empty: the scene's name with '_' as spaces
-  double titleCard = 0.0;              // s the video opens with a title card; 0: none
-  bool captionFromDescription = false; // `caption: true`: the description's first sentence
-  std::string caption;                 // `caption: "text"`; empty (and not from the description): none
+  std::string title;                    // the title card's; empty: the scene's name with '_' as spaces
+  double titleCard = 0.0;               // s the video opens with a title card; 0: none
+  bool captionFromDescription = false;  // `caption: true`: the description's first sentence
+  std::string caption;                  // `caption: "text"`; empty (and not from the description): none
   std::vector<SlowMotionDef> slowMotion;
-  OverlaysDef overlays;                // the lecture overlays
-  PanelsDef panels;                    // `rigidreel lecture`'s poll panels
+  OverlaysDef overlays;                            // the lecture overlays
+  PanelsDef panels;                                // `rigidreel lecture`'s poll panels
   std::shared_ptr<const TraceOverlayDef> overlay;  // set from the command line, never by the file
-  PollDef poll;                        // question, answer, answer card, reveal
+  PollDef poll;                                    // question, answer, answer card, reveal
 };
 
 }  // namespace render::scene

@@ -30,8 +30,8 @@ SlowMotionDef slowMotion(const YAML::Node& n, const Reader& r) {
   if (!(s.factor > 1.0) || s.factor > kMaxSlowFactor) {
     std::ostringstream limit;
     limit << kMaxSlowFactor;
-    r.fail(factor, "'factor' is how many times slower the video runs: above 1 and at most " + limit.str() + ", got " +
-                       factor.Scalar());
+    r.fail(factor,
+           "'factor' is how many times slower the video runs: above 1 and at most " + limit.str() + ", got " + factor.Scalar());
   }
   const bool around = static_cast<bool>(n["window"]), explicitly = n["from"] || n["to"];
   if (around == explicitly) r.fail(n, std::string("slow_motion needs either 'window' or both 'from' and 'to': ") + kSlowForms);
@@ -66,8 +66,7 @@ void readTiming(const YAML::Node& node, const Reader& reader, RenderDef& out) {
     } else if (s.IsSequence()) {
       for (const YAML::Node& one : s) out.slowMotion.push_back(slowMotion(one, reader));
     } else if (!s.IsScalar() || lowered(s.Scalar()) != "false") {
-      reader.fail(s, std::string("expected ") + kSlowForms + ", a list of them, or false for 'slow_motion', got " +
-                         describe(s));
+      reader.fail(s, std::string("expected ") + kSlowForms + ", a list of them, or false for 'slow_motion', got " + describe(s));
     }
   }
 }

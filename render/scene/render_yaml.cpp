@@ -56,8 +56,9 @@ class RenderReader {
       out.center = r_.vec2(n["center"], "center");
       out.height = r_.positive(n["height"], "height");
       if (!(out.height <= kMaxViewExtent) || !(out.center.cwiseAbs().maxCoeff() <= kMaxViewExtent))
-        r_.fail(n, "a fixed camera's center and height are at most 1e150 m (the frame's pixels would not be "
-                   "finite numbers); give a view of what the scene holds");
+        r_.fail(n,
+                "a fixed camera's center and height are at most 1e150 m (the frame's pixels would not be "
+                "finite numbers); give a view of what the scene holds");
     }
     if (n["margin"]) {
       out.margin = r_.nonNegative(n["margin"], "margin");
@@ -102,7 +103,9 @@ void readFrame(const YAML::Node& node, const Reader& reader, RenderDef& out) {
   if (node["colors"]) r.colors(node["colors"], out.colors);
 }
 
-std::string readColor(const YAML::Node& n, const Reader& reader, const std::string& key) { return RenderReader(reader).color(n, key); }
+std::string readColor(const YAML::Node& n, const Reader& reader, const std::string& key) {
+  return RenderReader(reader).color(n, key);
+}
 
 namespace {
 
@@ -127,15 +130,16 @@ void readAuto(const YAML::Node& node, const Reader& reader, const std::string& k
 
 // the block's own keys, but for the overlays and panels read after it
 void readBlock(const YAML::Node& node, const Reader& reader, RenderDef& out) {
-  reader.checkKeys(node, {"size", "fps", "background", "line_width", "font_size", "colors", "camera", "contacts",
-                          "contact_hold", "impulses", "impulse_scale", "velocities", "velocity_scale", "trails", "sat",
-                          "strobe", "springs", "labels", "time", "panels",
-                          // video timing and text
-                          "title", "title_card", "caption", "slow_motion", "answer_card", "reveal",
+  reader.checkKeys(
+      node,
+      {"size", "fps", "background", "line_width", "font_size", "colors", "camera", "contacts", "contact_hold", "impulses",
+       "impulse_scale", "velocities", "velocity_scale", "trails", "sat", "strobe", "springs", "labels", "time", "panels",
+       // video timing and text
+       "title", "title_card", "caption", "slow_motion", "answer_card", "reveal",
 
-                          // the lecture overlays, read by readOverlays
-                          "arrows", "force_scale", "momentum_scale", "impact_values", "energy", "momentum", "sat_axes"},
-                   "render");
+       // the lecture overlays, read by readOverlays
+       "arrows", "force_scale", "momentum_scale", "impact_values", "energy", "momentum", "sat_axes"},
+      "render");
   const RenderReader r(reader);
   readFrame(node, reader, out);
   if (node["camera"]) r.camera(node["camera"], out.camera);
@@ -158,8 +162,9 @@ ArrowDef readArrow(const YAML::Node& n, const Reader& reader, const sim::scene::
   reader.checkKeys(n, {"body", "show", "at", "label", "value", "color"}, "an arrow");
   ArrowDef a;
   a.body = scene.bodyIndex(reader.bodyRef(n, "body", scene, "an arrow"));
-  a.show = reader.named(reader.required(n, "show", "an arrow"), "show",
-                        [](const std::string& s) { return kShowNames.parse(s); }, kShowNames.list());
+  a.show = reader.named(
+      reader.required(n, "show", "an arrow"), "show", [](const std::string& s) { return kShowNames.parse(s); },
+      kShowNames.list());
   reader.optional(n, "at", a.at, &Reader::vec2);
   reader.optional(n, "label", a.label, &Reader::text);
   reader.optional(n, "value", a.value, &Reader::boolean);

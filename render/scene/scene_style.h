@@ -18,7 +18,7 @@ double lineWidthFor(const RenderDef& render, int frameHeight);
 draw::Style makeStyle(const Scene& scene, int frameHeight);
 // the same from the block itself (2D or 3D): `staticBodies` by body index (gray unless colored),
 // each teaching arrow's own color ("" for its role's)
-draw::Style makeStyle(const RenderDef& render, const std::vector<bool>& staticBodies,
-                      const std::vector<std::string>& arrowColors, int frameHeight);
+draw::Style makeStyle(const RenderDef& render, const std::vector<bool>& staticBodies, const std::vector<std::string>& arrowColors,
+                      int frameHeight);
 
 }  // namespace render::scene

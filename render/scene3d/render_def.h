@@ -16,11 +16,11 @@ using sim::world3d::Vec3;
 // placed at `eye` looking at `target`; `up` is the world direction drawn upward
 struct Camera3dDef {
   bool automatic = true;
-  Vec3 direction = Vec3(1.0, -1.7, 0.9);  // auto: from the fitted center toward the eye
-  double margin = 0.08;                   // auto: free space on each side, a fraction of the view
+  Vec3 direction = Vec3(1.0, -1.7, 0.9);           // auto: from the fitted center toward the eye
+  double margin = 0.08;                            // auto: free space on each side, a fraction of the view
   Vec3 eye = Vec3::Zero(), target = Vec3::Zero();  // fixed
   Vec3 up = Vec3::UnitZ();
-  double fov = 35.0;                      // vertical field of view, degrees
+  double fov = 35.0;  // vertical field of view, degrees
 };
 
 // a teaching vector or text drawn every frame: one entry of `arrows:`

@@ -21,15 +21,18 @@ const char* const kOnly2d =
 void camera(const YAML::Node& n, const Reader3d& r, Camera3dDef& out) {
   if (n.IsScalar()) {
     if (n.Scalar() != "auto")
-      r.fail(n, "'camera' is 'auto', {direction: [x, y, z], margin: m, fov: f, up: [x, y, z]} or {eye: [x, y, z], "
-                "target: [x, y, z], up: [x, y, z], fov: f}, got '" + n.Scalar() + "'");
+      r.fail(n,
+             "'camera' is 'auto', {direction: [x, y, z], margin: m, fov: f, up: [x, y, z]} or {eye: [x, y, z], "
+             "target: [x, y, z], up: [x, y, z], fov: f}, got '" +
+                 n.Scalar() + "'");
     return;
   }
   r.checkKeys(n, {"eye", "target", "up", "fov", "direction", "margin"}, "camera");
   if (n["eye"] || n["target"]) {
     if (!n["eye"] || !n["target"]) r.fail(n, "a fixed camera needs both 'eye' and 'target'");
     for (const char* key : {"direction", "margin"})
-      if (n[key]) r.fail(n[key], std::string("'") + key + "' is for the automatic camera; a fixed one looks from 'eye' at 'target'");
+      if (n[key])
+        r.fail(n[key], std::string("'") + key + "' is for the automatic camera; a fixed one looks from 'eye' at 'target'");
     out.automatic = false;
     out.eye = r.vec3(n["eye"], "eye");
     out.target = r.vec3(n["target"], "target");
@@ -37,7 +40,8 @@ void camera(const YAML::Node& n, const Reader3d& r, Camera3dDef& out) {
   }
   if (n["direction"]) {
     out.direction = r.vec3(n["direction"], "direction");
-    if (out.direction.norm() == 0.0) r.fail(n["direction"], "'direction' must be a non-zero vector, from the scene toward the eye");
+    if (out.direction.norm() == 0.0)
+      r.fail(n["direction"], "'direction' must be a non-zero vector, from the scene toward the eye");
   }
   if (n["margin"]) {
     out.margin = r.nonNegative(n["margin"], "margin");
@@ -60,8 +64,8 @@ Arrow3dDef arrow(const YAML::Node& n, const Reader3d& r, const sim::scene3d::Sce
   r.checkKeys(n, {"body", "show", "at", "label", "value", "color"}, "an arrow");
   Arrow3dDef a;
   a.body = scene.bodyIndex(r.bodyRef(n, "body", scene, "an arrow"));
-  a.show = r.named(r.required(n, "show", "an arrow"), "show", [](const std::string& s) { return kShow3dNames.parse(s); },
-                   kShow3dNames.list());
+  a.show = r.named(
+      r.required(n, "show", "an arrow"), "show", [](const std::string& s) { return kShow3dNames.parse(s); }, kShow3dNames.list());
   r.optional(n, "at", a.at, &Reader3d::vec3);
   r.optional(n, "label", a.label, &Reader::text);
   r.optional(n, "value", a.value, &Reader::boolean);
@@ -70,12 +74,35 @@ Arrow3dDef arrow(const YAML::Node& n, const Reader3d& r, const sim::scene3d::Sce
 }
 
 void readBlock(const YAML::Node& node, const Reader3d& r, const sim::scene3d::SceneDef& model, Scene& out) {
-  for (const char* key : {"contacts", "contact_hold", "impulses", "impulse_scale", "velocities", "sat", "sat_axes",
-                          "strobe", "force_scale", "momentum_scale", "impact_values"})
+  for (const char* key : {"contacts", "contact_hold", "impulses", "impulse_scale", "velocities", "sat", "sat_axes", "strobe",
+                          "force_scale", "momentum_scale", "impact_values"})
     if (node[key]) r.fail(node[key], std::string("'") + key + kOnly2d);
-  r.checkKeys(node, {"size", "fps", "background", "line_width", "font_size", "colors", "camera", "trails", "springs",
-                     "labels", "time", "panels", "title", "title_card", "caption", "slow_motion", "answer_card", "reveal", "arrows", "energy",
-                     "momentum", "omega_scale", "angular_momentum_scale", "velocity_scale", "world_axes"},
+  r.checkKeys(node,
+              {"size",
+               "fps",
+               "background",
+               "line_width",
+               "font_size",
+               "colors",
+               "camera",
+               "trails",
+               "springs",
+               "labels",
+               "time",
+               "panels",
+               "title",
+               "title_card",
+               "caption",
+               "slow_motion",
+               "answer_card",
+               "reveal",
+               "arrows",
+               "energy",
+               "momentum",
+               "omega_scale",
+               "angular_momentum_scale",
+               "velocity_scale",
+               "world_axes"},
               "render");
   render::scene::RenderDef& shared = out.render;
   render::scene::readFrame(node, r, shared);
@@ -115,14 +142,13 @@ Scene readScene(const sim::yaml::SceneSource& source, const sim::yaml::OtherKeys
     s.render.bodies = render::scene::readLooks(source.root["bodies"], r);
     const YAML::Node block = source.root[render::scene::kRenderKey];
     if (block) readBlock(block, r, s.model, s);
-    render::scene::readPanels(block ? block["panels"] : block, r, s.model.duration, s.model.variantNames.size(),
-                              s.render.panels);
+    render::scene::readPanels(block ? block["panels"] : block, r, s.model.duration, s.model.variantNames.size(), s.render.panels);
     render::scene::readPoll(source.root, block, r, source.file, s.model.duration, s.render.poll);
     if (s.render.panels.impacts) {
       std::ostringstream times;
       times << "[0, " << s.model.duration << "]";
-      r.fail(block["panels"], "'panels: impacts' shows each variant at its impacts, and nothing collides in 3D; give times, e.g. " +
-                                  times.str());
+      r.fail(block["panels"],
+             "'panels: impacts' shows each variant at its impacts, and nothing collides in 3D; give times, e.g. " + times.str());
     }
   });
   return s;

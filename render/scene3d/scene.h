@@ -13,7 +13,7 @@ namespace render::scene3d {
 struct Scene {
   sim::scene3d::SceneDef model;
   render::scene::RenderDef render;  // the keys 2D and 3D scenes share (the 2D-only ones stay at their defaults)
-  Render3dDef space;                 // the 3D keys
+  Render3dDef space;                // the 3D keys
 };
 
 // the model and the look of the 3D scene in `source`; `others` are keys other readers read (the

@@ -160,8 +160,7 @@ void writeStills(const RenderPlan& plan, const Stills& stills, const Wrote& wrot
       if (stills.panels)
         writePng(composePanels(frames[k], stills.grid, shot.titles, stills.caption, makeStyle(first, first.render.height), text),
                  shot.path);
-      else
-        writePng(frames[k].front(), shot.path);
+      else writePng(frames[k].front(), shot.path);
       wrote(shot.path);
     }
   }
@@ -187,10 +186,10 @@ void writeStills(const RenderPlan3d& plan, const Stills3d& stills, const Wrote& 
       });
     }
     if (stills.panels)
-      writePng(composePanels(frames, stills.grid, shot.titles, stills.caption, render::scene3d::makeStyle(first, first.render.height), text),
+      writePng(composePanels(frames, stills.grid, shot.titles, stills.caption,
+                             render::scene3d::makeStyle(first, first.render.height), text),
                shot.path);
-    else
-      writePng(frames.front(), shot.path);
+    else writePng(frames.front(), shot.path);
     wrote(shot.path);
   }
 }
@@ -223,7 +222,9 @@ void createOutputDirectory(const std::string& dir, const std::string& option) {
     throw UsageError(option + ": cannot write in " + dir + "; choose another directory with " + option + " DIR");
 }
 
-void writePlan(const RenderPlan& plan, bool quiet, const Wrote& wrote, TraceWriter* trace) { writeAll(plan, quiet, wrote, trace); }
+void writePlan(const RenderPlan& plan, bool quiet, const Wrote& wrote, TraceWriter* trace) {
+  writeAll(plan, quiet, wrote, trace);
+}
 
 void writePlan3d(const RenderPlan3d& plan, bool quiet, const Wrote& wrote, TraceWriter3d* trace) {
   writeAll(plan, quiet, wrote, trace);

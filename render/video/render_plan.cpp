@@ -25,7 +25,9 @@ using namespace render::scene;
 namespace {
 
 // the width of the energy panel beside a variant's frame, px, in each dimension's own layout
-double panelBand(const Planar::Scene& def, const Planar::Survey& survey) { return EnergyPanel::bandPx(def, survey, def.render.height); }
+double panelBand(const Planar::Scene& def, const Planar::Survey& survey) {
+  return EnergyPanel::bandPx(def, survey, def.render.height);
+}
 double panelBand(const Spatial::Scene& def, const Spatial::Survey& survey) {
   return EnergyPanel3d::bandPx(def, survey, def.render.height);
 }
@@ -122,7 +124,7 @@ struct StillSpec {
   bool panels = false;
   std::optional<int> strobe;
   std::string root;
-  std::string file;  // named in messages
+  std::string file;                // named in messages
   std::optional<FrameSize> sheet;  // of a panel sheet: 1920 × 1080 unless asked
   std::string baseTitle;           // the base scene's render: {title}: a variant's own differs from it
 };
@@ -156,7 +158,8 @@ std::vector<std::vector<double>> atImpacts(const RenderPlanOf<D>& plan, const st
   std::vector<std::vector<double>> instants;
   for (size_t i = 0; i < most; ++i) {
     std::vector<double> shot;
-    for (const PlannedVariantOf<D>& v : plan.variants) shot.push_back(v.survey.impactTimes[std::min(i, v.survey.impactTimes.size() - 1)]);
+    for (const PlannedVariantOf<D>& v : plan.variants)
+      shot.push_back(v.survey.impactTimes[std::min(i, v.survey.impactTimes.size() - 1)]);
     instants.push_back(shot);
   }
   return instants;
@@ -289,7 +292,8 @@ render::scene::PanelsDef lecturePanels(const typename D::Scene& base, const Rend
       if (v.survey.impactTimes.empty())
         throw sim::yaml::SceneError(file, panels.line, panels.column,
                                     "'panels: impacts' needs an impact in every variant, and variant '" + v.scene.model.variant +
-                                        "' has none; give panel times instead, e.g. [0, " + timeForName(v.scene.model.duration) + "]");
+                                        "' has none; give panel times instead, e.g. [0, " + timeForName(v.scene.model.duration) +
+                                        "]");
   return panels;
 }
 
@@ -326,7 +330,8 @@ RenderPlanOf<D> planStillsOf(const LoadVariantOf<D>& load, const StillRequest& r
   }
   // --size is a single frame's, or with --panels the whole sheet's
   RenderPlanOf<D> plan = surveyed<D>(std::move(scenes), r.panels ? std::nullopt : r.size, std::nullopt, -1.0);
-  plan.stills = stillsOf(plan, {r.times, r.impacts, r.panels, r.strobe, r.root, r.file, r.panels ? r.size : std::nullopt, baseTitle});
+  plan.stills =
+      stillsOf(plan, {r.times, r.impacts, r.panels, r.strobe, r.root, r.file, r.panels ? r.size : std::nullopt, baseTitle});
   return plan;
 }
 

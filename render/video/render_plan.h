@@ -80,11 +80,11 @@ struct VideoOutputOf {
   VideoFormat format = VideoFormat::Mp4;
   int width = 0, height = 0;
   double fps = 0.0;
-  double duration = 0.0;   // s of simulation
+  double duration = 0.0;  // s of simulation
   // the poster's instant: the last, or 0 for a poll (a question's poster must not show its answer)
   double posterTime = 0.0;
-  int posterStrobe = 0;    // the poster's ghosts (2D only)
-  TimeMap timeMap;         // video time to simulation time: the title card, slow motion
+  int posterStrobe = 0;  // the poster's ghosts (2D only)
+  TimeMap timeMap;       // video time to simulation time: the title card, slow motion
   long frameCount = 0;
   typename D::Camera camera;  // fitted over the variant's survey; the poster's too
 };
@@ -100,8 +100,8 @@ struct StillOutput {
 // sheet) one scale for arrows and bars
 template <class D>
 struct StillsOf {
-  std::string directory;                    // <root>/<scene>
-  std::vector<typename D::Scene> scenes;    // each variant as its stills draw it (a panel: its frame's size, its text, no caption)
+  std::string directory;                  // <root>/<scene>
+  std::vector<typename D::Scene> scenes;  // each variant as its stills draw it (a panel: its frame's size, its text, no caption)
   std::vector<typename D::Survey> surveys;  // the variants', side by side with scales shared (shareScales)
   bool panels = false;                      // the variants on one sheet in each image (panels.h)
   PanelGrid grid;                           // that sheet's layout (panels only)
@@ -167,7 +167,7 @@ struct StillRequest {
   std::vector<double> times = {};  // s; empty with `impacts`
   bool impacts = false;
   bool panels = false;
-  std::optional<int> strobe = {};  // ghosts, instead of the scene's
+  std::optional<int> strobe = {};      // ghosts, instead of the scene's
   std::optional<FrameSize> size = {};  // of the frame; with `panels`, of the whole sheet (default 1920 × 1080)
 };
 

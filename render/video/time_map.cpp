@@ -79,8 +79,7 @@ TimeMap timeMapFor(const render::scene::RenderDef& render, const std::vector<dou
   for (const render::scene::SlowMotionDef& s : render.slowMotion) {
     if (s.window > 0.0)
       for (double t : impactTimes) windows.push_back({t - 0.5 * s.window, t + 0.5 * s.window, s.factor});
-    else
-      windows.push_back({s.from, s.to, s.factor});
+    else windows.push_back({s.from, s.to, s.factor});
   }
   return TimeMap(duration, render.titleCard, std::move(windows), render.poll.answerCard);
 }

@@ -17,9 +17,8 @@ void TraceWriter::rows(const sim::world::World& w) {
   for (size_t i = 0; i < w.bodies.size(); ++i) {
     const sim::core::Body& b = w.bodies[i];
     out_ << formatNumber(w.time) << ',' << csvField(def_.bodies[i].name) << ',' << formatNumber(b.x.x()) << ','
-         << formatNumber(b.x.y()) << ',' << formatNumber(b.angle) << ',' << formatNumber(b.v.x()) << ','
-         << formatNumber(b.v.y()) << ',' << formatNumber(b.omega) << ','
-         << formatNumber(sim::world::kineticEnergy(b).total()) << '\n';
+         << formatNumber(b.x.y()) << ',' << formatNumber(b.angle) << ',' << formatNumber(b.v.x()) << ',' << formatNumber(b.v.y())
+         << ',' << formatNumber(b.omega) << ',' << formatNumber(sim::world::kineticEnergy(b).total()) << '\n';
   }
 }
 
@@ -31,8 +30,8 @@ void TraceWriter3d::rows(const sim::world3d::World& w) {
   for (size_t i = 0; i < w.bodies.size(); ++i) {
     const sim::world3d::Body& b = w.bodies[i];
     out_ << formatNumber(w.time) << ',' << csvField(def_.bodies[i].name);
-    for (double x : {b.x.x(), b.x.y(), b.x.z(), b.q.w(), b.q.x(), b.q.y(), b.q.z(), b.v.x(), b.v.y(), b.v.z(),
-                     b.omega.x(), b.omega.y(), b.omega.z(), sim::world3d::kineticEnergy(b).total()})
+    for (double x : {b.x.x(), b.x.y(), b.x.z(), b.q.w(), b.q.x(), b.q.y(), b.q.z(), b.v.x(), b.v.y(), b.v.z(), b.omega.x(),
+                     b.omega.y(), b.omega.z(), sim::world3d::kineticEnergy(b).total()})
       out_ << ',' << formatNumber(x);
     out_ << '\n';
   }

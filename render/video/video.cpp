@@ -68,23 +68,22 @@ std::vector<std::string> ffmpegArguments(VideoFormat format, int width, int heig
   std::vector<std::string> a = {"-hide_banner", "-loglevel", "error", "-y",
                                 // the input: raw frames on standard input, top row first
                                 "-f", "rawvideo", "-pix_fmt", "rgba", "-video_size",
-                                std::to_string(width) + "x" + std::to_string(height), "-framerate", fpsText(fps), "-i",
-                                "pipe:0", "-an"};
+                                std::to_string(width) + "x" + std::to_string(height), "-framerate", fpsText(fps), "-i", "pipe:0",
+                                "-an"};
   const std::vector<std::string> codec = [&]() -> std::vector<std::string> {
     switch (format) {
       case VideoFormat::Mp4:
         // H.264 in yuv420p plays in every browser; the index up front (+faststart) lets it start
         // before it has loaded; CRF 18 keeps thin lines and text sharp
-        return {"-c:v", "libx264", "-preset", "fast", "-crf", "18", "-tune", "animation", "-pix_fmt", "yuv420p",
-                "-movflags", "+faststart", "-f", "mp4"};
+        return {"-c:v",      "libx264",  "-preset", "fast",      "-crf",       "18", "-tune",
+                "animation", "-pix_fmt", "yuv420p", "-movflags", "+faststart", "-f", "mp4"};
       case VideoFormat::Webm:
         // VP9 at constant quality (-b:v 0 with -crf), multithreaded by rows
-        return {"-c:v", "libvpx-vp9", "-b:v", "0", "-crf", "32", "-row-mt", "1", "-deadline", "good", "-cpu-used", "4",
-                "-pix_fmt", "yuv420p", "-f", "webm"};
+        return {"-c:v",      "libvpx-vp9", "-b:v",      "0", "-crf",     "32",      "-row-mt", "1",
+                "-deadline", "good",       "-cpu-used", "4", "-pix_fmt", "yuv420p", "-f",      "webm"};
       case VideoFormat::Gif:
         // one palette made for the whole clip, then used for every frame
-        return {"-vf", "split[a][b];[a]palettegen=stats_mode=diff[p];[b][p]paletteuse=dither=bayer", "-loop", "0", "-f",
-                "gif"};
+        return {"-vf", "split[a][b];[a]palettegen=stats_mode=diff[p];[b][p]paletteuse=dither=bayer", "-loop", "0", "-f", "gif"};
     }
     return {};
   }();
@@ -100,7 +99,8 @@ VideoWriter::VideoWriter(const std::string& path, VideoFormat format, int width,
   ::signal(SIGPIPE, SIG_IGN);
   removeStaleParts(path_);
   // "file:" and an absolute path: ffmpeg reads "run:1/…" as a protocol and "-weird/…" as an option
-  std::vector<std::string> args = ffmpegArguments(format, width, height, fps, "file:" + std::filesystem::absolute(temporary_).string());
+  std::vector<std::string> args =
+      ffmpegArguments(format, width, height, fps, "file:" + std::filesystem::absolute(temporary_).string());
   args.insert(args.begin(), program_);
   Child child;
   try {

@@ -89,9 +89,7 @@ bool grid(const std::vector<Aabb>& boxes, const std::vector<bool>& fixed, std::v
   }
   if (large.size() > 64) return false;
   // cell coordinates, bounded so that far-flung boxes still have integer cells
-  const auto cellOf = [cell](double v) {
-    return static_cast<std::int64_t>(std::floor(std::clamp(v / cell, -1e15, 1e15)));
-  };
+  const auto cellOf = [cell](double v) { return static_cast<std::int64_t>(std::floor(std::clamp(v / cell, -1e15, 1e15))); };
   using Entry = GridEntry;
   std::vector<Entry>& entries = scratch.entries;
   entries.clear();
@@ -109,8 +107,8 @@ bool grid(const std::vector<Aabb>& boxes, const std::vector<bool>& fixed, std::v
   size_t tableSize = 1;
   while (tableSize < 2 * entries.size()) tableSize <<= 1;
   const auto bucketOf = [tableSize](const Entry& e) {
-    const std::uint64_t h = static_cast<std::uint64_t>(e.cx) * 0x9E3779B97F4A7C15ull ^
-                            static_cast<std::uint64_t>(e.cy) * 0xC2B2AE3D27D4EB4Full;
+    const std::uint64_t h =
+        static_cast<std::uint64_t>(e.cx) * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint64_t>(e.cy) * 0xC2B2AE3D27D4EB4Full;
     return static_cast<size_t>((h ^ (h >> 29)) & (tableSize - 1));
   };
   std::vector<int>& start = scratch.start;

@@ -99,8 +99,8 @@ int clipSegment(const ClipPoint in[2], ClipPoint out[2], const Vec2& normal, dou
 // (kSize > 0: both polygons have that many vertices, so that the loop unrolls and the next vertex
 // is found without a division)
 template <size_t kSize>
-void clipToReference(const WorldPolygon& A, const WorldPolygon& B, const EdgeSeparation& ea, const EdgeSeparation& eb,
-                     bool refA, double margin, Manifold& m) {
+void clipToReference(const WorldPolygon& A, const WorldPolygon& B, const EdgeSeparation& ea, const EdgeSeparation& eb, bool refA,
+                     double margin, Manifold& m) {
   const WorldPolygon& ref = refA ? A : B;
   const WorldPolygon& inc = refA ? B : A;
   const int edge = refA ? ea.edge : eb.edge;
@@ -127,8 +127,8 @@ void clipToReference(const WorldPolygon& A, const WorldPolygon& B, const EdgeSep
     if (sep > margin) continue;
     // an incident vertex against the reference edge, or a reference vertex against the incident edge
     const FeatureId id = twice[k].referenceVertex >= 0
-                                 ? featureId(refA, {FeatureKind::Vertex, twice[k].referenceVertex}, {FeatureKind::Edge, incEdge})
-                                 : featureId(refA, {FeatureKind::Edge, edge}, {FeatureKind::Vertex, twice[k].incidentVertex});
+                             ? featureId(refA, {FeatureKind::Vertex, twice[k].referenceVertex}, {FeatureKind::Edge, incEdge})
+                             : featureId(refA, {FeatureKind::Edge, edge}, {FeatureKind::Vertex, twice[k].incidentVertex});
     m.points[m.count++] = {twice[k].p - 0.5 * sep * nRef, sep, id};
   }
 }
@@ -140,8 +140,7 @@ Manifold polygons(const PlacedShape& a, const PlacedShape& b, double margin) {
   Manifold m;
   // the notes' separation(P, Q) and its features, exactly as on the slide
   const bool bestA = ea.separation >= eb.separation;
-  m.sat = {true, std::max(ea.separation, eb.separation), bestA, bestA ? ea.edge : eb.edge,
-           bestA ? ea.vertex : eb.vertex};
+  m.sat = {true, std::max(ea.separation, eb.separation), bestA, bestA ? ea.edge : eb.edge, bestA ? ea.vertex : eb.vertex};
   m.separation = m.sat.separation;
   // for the manifold, keep A's edge unless B's is clearly better, so the choice does not flip
   // from step to step on near ties (Box2D's b2CollidePolygons does the same)
@@ -308,8 +307,7 @@ Aabb bounds(const PlacedShape& placed) {
   const Shape& shape = *placed.shape;
   const Pose& pose = placed.pose;
   switch (shape.kind) {
-    case ShapeKind::Circle:
-      return {pose.x - Vec2::Constant(shape.radius), pose.x + Vec2::Constant(shape.radius)};
+    case ShapeKind::Circle: return {pose.x - Vec2::Constant(shape.radius), pose.x + Vec2::Constant(shape.radius)};
     case ShapeKind::Polygon: {
       Aabb box{Vec2::Constant(kInf), Vec2::Constant(-kInf)};
       for (const Vec2& w : placed.vertices) {

@@ -28,11 +28,11 @@ struct ManifoldPoint {
 
 // the separating-axis bookkeeping of the notes' slide, kept for drawing
 struct SatFeatures {
-  bool valid = false;            // both shapes are polygons
-  double separation = 0.0;       // separation(P, Q): NEGATIVE when they overlap (see sat())
-  bool referenceOnA = true;      // which polygon owns the reference edge
-  int referenceEdge = -1;        // edge i runs from vertex i to i + 1 of its polygon
-  int incidentVertex = -1;       // vertex of the other polygon
+  bool valid = false;        // both shapes are polygons
+  double separation = 0.0;   // separation(P, Q): NEGATIVE when they overlap (see sat())
+  bool referenceOnA = true;  // which polygon owns the reference edge
+  int referenceEdge = -1;    // edge i runs from vertex i to i + 1 of its polygon
+  int incidentVertex = -1;   // vertex of the other polygon
 };
 
 struct Manifold {

@@ -16,8 +16,7 @@ void applyImpulsePair(Body& a, Body& b, const Vec2& r, const Vec2& j) {
   b.omega -= b.invInertia * cross(r - b.x, j);
 }
 
-NormalBlock normalBlock(const Body& a, const Body& b, const Vec2& r1, const Vec2& r2, const Vec2& n, double k11,
-                        double k22) {
+NormalBlock normalBlock(const Body& a, const Body& b, const Vec2& r1, const Vec2& r2, const Vec2& n, double k11, double k22) {
   const double ra1 = cross(r1 - a.x, n), ra2 = cross(r2 - a.x, n);
   const double rb1 = cross(r1 - b.x, n), rb2 = cross(r2 - b.x, n);
   const double k12 = a.invMass + b.invMass + a.invInertia * ra1 * ra2 + b.invInertia * rb1 * rb2;

@@ -10,13 +10,11 @@
 
 namespace sim::collision {
 using sim::core::Body;
-using sim::core::Vec2;
 using sim::core::cross;
+using sim::core::Vec2;
 
 // relative velocity of A's and B's material points at r: (v_a + ω_a × r_a) − (v_b + ω_b × r_b)
-inline Vec2 relativeVelocity(const Body& a, const Body& b, const Vec2& r) {
-  return a.pointVelocity(r) - b.pointVelocity(r);
-}
+inline Vec2 relativeVelocity(const Body& a, const Body& b, const Vec2& r) { return a.pointVelocity(r) - b.pointVelocity(r); }
 
 // m_eff⁻¹ = m_a⁻¹ + m_b⁻¹ + (r_a × n̂)²/I_a + (r_b × n̂)²/I_b, for any direction n̂, from the lever
 // arms r_a, r_b (centers of mass to the point) of any bodies with invMass and invInertia: a Body,
@@ -72,8 +70,7 @@ struct NormalBlock {
 };
 // K for the points r1, r2, with its diagonal as the caller holds it (the sequential solver keeps
 // the effective masses, the event method the inverse ones)
-NormalBlock normalBlock(const Body& a, const Body& b, const Vec2& r1, const Vec2& r2, const Vec2& n, double k11,
-                        double k22);
+NormalBlock normalBlock(const Body& a, const Body& b, const Vec2& r1, const Vec2& r2, const Vec2& n, double k11, double k22);
 
 struct ImpulseResult {
   double gamma = 0.0;    // along n̂

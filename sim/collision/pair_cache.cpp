@@ -20,8 +20,8 @@ constexpr int kMaxGridCalls = 32;
 Aabb enlarge(const Aabb& box, double by) { return {box.lower - Vec2::Constant(by), box.upper + Vec2::Constant(by)}; }
 
 bool contains(const Aabb& outer, const Aabb& inner) {
-  return outer.lower.x() <= inner.lower.x() && outer.lower.y() <= inner.lower.y() &&
-         inner.upper.x() <= outer.upper.x() && inner.upper.y() <= outer.upper.y();
+  return outer.lower.x() <= inner.lower.x() && outer.lower.y() <= inner.lower.y() && inner.upper.x() <= outer.upper.x() &&
+         inner.upper.y() <= outer.upper.y();
 }
 
 void erase(std::vector<int>& list, int value) {
@@ -31,8 +31,7 @@ void erase(std::vector<int>& list, int value) {
 
 }  // namespace
 
-void PairCache::find(const std::vector<Aabb>& boxes, const std::vector<bool>& fixed,
-                     std::vector<std::pair<int, int>>& pairs) {
+void PairCache::find(const std::vector<Aabb>& boxes, const std::vector<bool>& fixed, std::vector<std::pair<int, int>>& pairs) {
   const size_t n = boxes.size();
   // a box is placed anew when it left its enlarged box, or when that is much larger than it (a
   // call with a wider margin than the next): a NaN box always

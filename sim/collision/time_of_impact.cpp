@@ -30,8 +30,7 @@ class Search {
   // regula falsi (Illinois) between lo (gap ≥ 0) and hi (overlap), ending on the gap side
   double refine(double lo, double slo, double hi, double shi) const {
     const double tol = in_.tolerance;
-    for (int k = 0; k < settings::kMaxRefineIterations && slo > tol && hi - lo > settings::kImpactBracket * in_.span;
-         ++k) {
+    for (int k = 0; k < settings::kMaxRefineIterations && slo > tol && hi - lo > settings::kImpactBracket * in_.span; ++k) {
       const double mid = std::clamp(lo + (hi - lo) * slo / (slo - shi), lo, hi);
       const double s = gap(mid);
       if (s >= 0.0) lo = mid, slo = s, shi *= 0.5;

@@ -33,7 +33,7 @@ struct Body {
   Vec2 x = Vec2::Zero();  // center of mass, world
   double angle = 0.0;     // continuous (not wrapped), counter-clockwise: the one stored orientation
   Vec2 v = Vec2::Zero();
-  double omega = 0.0;     // counter-clockwise positive
+  double omega = 0.0;  // counter-clockwise positive
 
   // the notes' q = (cos θ, sin θ), derived: a solver that turns the body changes the angle alone,
   // and q can never lag behind it

@@ -13,7 +13,7 @@ struct CheckResult {
   double time = 0.0;
   std::string quantity;  // e.g. "bar.velocity", "total_energy"
   std::vector<double> expected, actual;
-  double error = 0.0;    // Euclidean norm of actual − expected
+  double error = 0.0;  // Euclidean norm of actual − expected
   double tolerance = 0.0;
   bool earlierRun = false;  // the expected value is an earlier run's (the entry's source: earlier_run), not a closed form
   bool passed() const { return error <= tolerance; }

@@ -6,24 +6,21 @@ namespace sim::core {
 
 namespace {
 
-Vec2 worldPoint(const std::vector<BodyState>& states, int body, const Vec2& local) {
-  return states[body].pose().toWorld(local);
-}
+Vec2 worldPoint(const std::vector<BodyState>& states, int body, const Vec2& local) { return states[body].pose().toWorld(local); }
 
 Vec2 pointVelocity(const BodyState& s, const Vec2& r) { return s.v + cross(s.omega, r - s.x); }
 
 // the force f at world point r on body i: f to the center of mass, r′ × f to the torque
-void applyAt(const std::vector<BodyState>& states, int i, const Vec2& r, const Vec2& f,
-             std::vector<Vec2>& force, std::vector<double>& torque) {
+void applyAt(const std::vector<BodyState>& states, int i, const Vec2& r, const Vec2& f, std::vector<Vec2>& force,
+             std::vector<double>& torque) {
   force[i] += f;
   torque[i] += cross(r - states[i].x, f);
 }
 
 }  // namespace
 
-void ForceSet::accumulate(double window, const std::vector<Body>& bodies,
-                          const std::vector<BodyState>& states, std::vector<Vec2>& force,
-                          std::vector<double>& torque) const {
+void ForceSet::accumulate(double window, const std::vector<Body>& bodies, const std::vector<BodyState>& states,
+                          std::vector<Vec2>& force, std::vector<double>& torque) const {
   const size_t n = bodies.size();
   force.assign(n, Vec2::Zero());
   torque.assign(n, 0.0);

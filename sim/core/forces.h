@@ -14,7 +14,7 @@ struct PointForce {
   int body = 0;
   Vec2 point = Vec2::Zero();  // body coordinates
   Vec2 force = Vec2::Zero();
-  bool bodyFrame = false;     // the force turns with the body
+  bool bodyFrame = false;  // the force turns with the body
   double from = 0.0;
   double until = std::numeric_limits<double>::infinity();
 };
@@ -45,8 +45,8 @@ struct ForceSet {
 
   // net force and torque about the center of mass of each body, for the given states;
   // `window` is a time inside the current step, which decides which timed forces are on
-  void accumulate(double window, const std::vector<Body>& bodies, const std::vector<BodyState>& states,
-                  std::vector<Vec2>& force, std::vector<double>& torque) const;
+  void accumulate(double window, const std::vector<Body>& bodies, const std::vector<BodyState>& states, std::vector<Vec2>& force,
+                  std::vector<double>& torque) const;
 
   // gravity and spring potential energy (constant and drag forces have none)
   double potentialEnergy(const std::vector<Body>& bodies) const;

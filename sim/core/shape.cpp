@@ -12,8 +12,7 @@
 namespace sim::core {
 
 Shape makeCircle(double radius) {
-  if (!(radius > 0.0) || !std::isfinite(radius))
-    throw std::invalid_argument("circle radius must be a positive finite number");
+  if (!(radius > 0.0) || !std::isfinite(radius)) throw std::invalid_argument("circle radius must be a positive finite number");
   Shape s;
   s.kind = ShapeKind::Circle;
   s.radius = radius;
@@ -77,12 +76,14 @@ Shape makePolygon(std::vector<Vec2> v) {
       const std::string at = where.str();
       if (std::abs(turn) <= settings::kPolygonTurnTolerance * size2)
         throw std::invalid_argument("degenerate polygon: vertex " + at + " lies on the line through its neighbours; remove it");
-      throw std::invalid_argument("non-convex polygon: the boundary turns the wrong way at vertex " + at + "; give a convex polygon");
+      throw std::invalid_argument("non-convex polygon: the boundary turns the wrong way at vertex " + at +
+                                  "; give a convex polygon");
     }
     turning += std::atan2(turn, e0.dot(e1));
   }
   if (std::abs(turning - 2.0 * std::numbers::pi) > settings::kPolygonWindingTolerance)
-    throw std::invalid_argument("self-intersecting polygon: its boundary winds more than once; give the vertices of a convex polygon in order");
+    throw std::invalid_argument(
+        "self-intersecting polygon: its boundary winds more than once; give the vertices of a convex polygon in order");
 
   Shape s;
   s.kind = ShapeKind::Polygon;

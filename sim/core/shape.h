@@ -12,9 +12,9 @@ enum class ShapeKind { Circle, Polygon, Plane };
 // a convex shape in body coordinates; polygons are counter-clockwise with outward edge normals
 struct Shape {
   ShapeKind kind = ShapeKind::Circle;
-  double radius = 0.0;            // circle
-  std::vector<Vec2> vertices;     // polygon, counter-clockwise
-  std::vector<Vec2> normals;      // polygon: outward unit normal of edge i, from vertex i to i + 1
+  double radius = 0.0;               // circle
+  std::vector<Vec2> vertices;        // polygon, counter-clockwise
+  std::vector<Vec2> normals;         // polygon: outward unit normal of edge i, from vertex i to i + 1
   Vec2 planeNormal = Vec2::UnitY();  // plane: the solid is {r : n·r ≤ 0} in body coordinates
 };
 

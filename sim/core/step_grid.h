@@ -25,7 +25,7 @@ class StepGrid {
 
  private:
   double dt_ = 1.0;
-  long index_ = 0;  // the current time lies in [index_ dt, (index_ + 1) dt)
+  long index_ = 0;                // the current time lies in [index_ dt, (index_ + 1) dt)
   std::vector<double> instants_;  // sorted
 };
 

@@ -11,8 +11,7 @@ std::string stepsOverLimit(double dt, double maxSteps, double until) {
   const double steps = stepCount(dt, until);
   if (steps <= maxSteps) return "";
   std::ostringstream m;
-  m << "the run needs " << steps << " steps (" << until << " s at dt = " << dt << " s), more than the limit of "
-    << maxSteps;
+  m << "the run needs " << steps << " steps (" << until << " s at dt = " << dt << " s), more than the limit of " << maxSteps;
   return m.str();
 }
 

@@ -33,9 +33,7 @@ void describeSpring(const Vec2& a, const Vec2& b, double amplitude, DebugDraw& d
 }
 
 // the normal as the notes draw it, from B into A; turned into B when A does not move (a floor)
-Vec2 shownNormal(const World& world, int a, const Vec2& normal) {
-  return world.bodies[a].isStatic ? Vec2(-normal) : normal;
-}
+Vec2 shownNormal(const World& world, int a, const Vec2& normal) { return world.bodies[a].isStatic ? Vec2(-normal) : normal; }
 
 }  // namespace
 
@@ -56,9 +54,7 @@ void describeBodies(const World& world, DebugDraw& draw, double opacity) {
         draw.circle(b.x, b.shape.radius, style);
         draw.segment(b.x, pose.toWorld({b.shape.radius, 0.0}), {DrawRole::BodyAxis, static_cast<int>(i), opacity});
         break;
-      case ShapeKind::Plane:
-        draw.halfPlane(b.x, b.q().apply(b.shape.planeNormal), style);
-        break;
+      case ShapeKind::Plane: draw.halfPlane(b.x, b.q().apply(b.shape.planeNormal), style); break;
     }
   }
 }

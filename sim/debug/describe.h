@@ -7,10 +7,10 @@
 
 namespace sim::debug {
 // what is described goes through the simulator's drawing interface
+using sim::core::Vec2;
 using sim::debug_draw::DebugDraw;
 using sim::debug_draw::DrawRole;
 using sim::debug_draw::DrawStyle;
-using sim::core::Vec2;
 using sim::world::ImpactRecord;
 using sim::world::ImpulseEvent;
 using sim::world::World;
@@ -25,8 +25,7 @@ void describeContacts(const World& world, double normalLength, DebugDraw& draw);
 
 // one impact of the collision response: the impulse on each moving body (γ n̂ on A, −γ n̂ on B,
 // `impulseScale` m per N·s) from the point, the normal `normalLength` long and the point
-void describeImpact(const World& world, const ImpactRecord& impact, double impulseScale, double normalLength,
-                    DebugDraw& draw);
+void describeImpact(const World& world, const ImpactRecord& impact, double impulseScale, double normalLength, DebugDraw& draw);
 
 // an event's impulse as an arrow that ends where it strikes the body, `impulseScale` m per N·s
 struct Arrow {

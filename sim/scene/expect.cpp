@@ -43,8 +43,7 @@ std::vector<CheckResult> evaluate(const ExpectDef& e, const SceneDef& def, const
   if (e.potentialEnergy) out.push_back(compare(e, "potential_energy", {*e.potentialEnergy}, {en.potential}));
   if (e.totalEnergy) out.push_back(compare(e, "total_energy", {*e.totalEnergy}, {en.total()}));
   if (e.momentum) out.push_back(compare(e, "momentum", pair(*e.momentum), pair(linearMomentum(world))));
-  if (e.angularMomentum)
-    out.push_back(compare(e, "angular_momentum", {*e.angularMomentum}, {angularMomentum(world)}));
+  if (e.angularMomentum) out.push_back(compare(e, "angular_momentum", {*e.angularMomentum}, {angularMomentum(world)}));
   return out;
 }
 

@@ -66,7 +66,8 @@ World buildWorld(const SceneDef& def) {
   auto index = [&](const std::string& name) {
     const auto it = indices.find(name);
     const int i = it == indices.end() ? -1 : it->second;
-    if (i < 0) throw std::invalid_argument("a force, spring, drag or event names body '" + name + "', which the scene does not have");
+    if (i < 0)
+      throw std::invalid_argument("a force, spring, drag or event names body '" + name + "', which the scene does not have");
     return i;
   };
   auto local = [&](const std::string& name, const Vec2& p) { return Vec2(p - centroid[index(name)]); };

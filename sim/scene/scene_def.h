@@ -54,11 +54,11 @@ struct ExpectDef {
   std::optional<double> angle;
   std::optional<Vec2> velocity;
   std::optional<double> angularVelocity;
-  std::optional<double> kineticEnergy;     // of `body`, or of the world when no body is named
-  std::optional<double> potentialEnergy;   // world
-  std::optional<double> totalEnergy;       // world
-  std::optional<Vec2> momentum;            // world
-  std::optional<double> angularMomentum;   // world, about the origin
+  std::optional<double> kineticEnergy;    // of `body`, or of the world when no body is named
+  std::optional<double> potentialEnergy;  // world
+  std::optional<double> totalEnergy;      // world
+  std::optional<Vec2> momentum;           // world
+  std::optional<double> angularMomentum;  // world, about the origin
   double tolerance = settings::kDefaultExpectTolerance;
   bool earlierRun = false;  // source: earlier_run, a value an earlier run gave (else a closed form)
   SourceLoc loc;
@@ -80,9 +80,9 @@ struct SceneDef {
   CollisionMethod collisions = CollisionMethod::Auto;
   int velocityIterations = settings::kVelocityIterations;
   int positionIterations = settings::kPositionIterations;
-  int substeps = settings::kSubsteps;  // soft_step
+  int substeps = settings::kSubsteps;             // soft_step
   double contactHertz = settings::kContactHertz;  // soft_step's contact stiffness, Hz
-  bool sleep = false;  // sequential and soft_step: islands at rest fall asleep (sim/world/sleep.h)
+  bool sleep = false;                             // sequential and soft_step: islands at rest fall asleep (sim/world/sleep.h)
   int threads = 1;  // soft_step: threads sharing each set of contacts (sim: threads; the same state with any)
   std::vector<BodyDef> bodies;
   std::vector<PointForceDef> pointForces;

@@ -7,8 +7,6 @@ using namespace sim::core;
 
 double stepCount(const SceneDef& def, double until) { return sim::core::stepCount(def.dt, until); }
 
-std::string stepsOverLimit(const SceneDef& def, double until) {
-  return sim::core::stepsOverLimit(def.dt, def.maxSteps, until);
-}
+std::string stepsOverLimit(const SceneDef& def, double until) { return sim::core::stepsOverLimit(def.dt, def.maxSteps, until); }
 
 }  // namespace sim::scene

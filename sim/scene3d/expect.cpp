@@ -78,7 +78,8 @@ std::vector<CheckResult> evaluate(const ExpectDef& e, const SceneDef& def, const
     }
   }
   const Energy en = energy(world);
-  if (e.kineticEnergy) compare(prefix + "kinetic_energy", {*e.kineticEnergy}, {i >= 0 ? kineticEnergy(world.bodies[i]).total() : en.kinetic});
+  if (e.kineticEnergy)
+    compare(prefix + "kinetic_energy", {*e.kineticEnergy}, {i >= 0 ? kineticEnergy(world.bodies[i]).total() : en.kinetic});
   if (e.angularMomentum)
     compare(prefix + "angular_momentum", values(*e.angularMomentum),
             values(i >= 0 ? world.bodies[i].angularMomentum() : angularMomentum(world)));

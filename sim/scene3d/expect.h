@@ -10,9 +10,9 @@
 #include "sim/world3d/world.h"
 
 namespace sim::scene3d {
+using sim::core::CheckResult;
 using sim::world3d::FreeBodyMeasures;
 using sim::world3d::World;
-using sim::core::CheckResult;
 
 // every quantity of one entry, for a world at the entry's time; `measures` followed each body from
 // t = 0 (by body index)

@@ -24,11 +24,11 @@ using sim::core::SourceLoc;
 
 struct BodyDef {
   std::string name;
-  Shape shape;                    // body coordinates, centered on the center of mass
-  std::optional<double> density;  // kg/m³
-  std::optional<double> mass;     // kg
-  std::optional<Mat3> inertia;    // kg·m² about the center, body axes
-  Vec3 position = Vec3::Zero();   // of the center of mass, world
+  Shape shape;                          // body coordinates, centered on the center of mass
+  std::optional<double> density;        // kg/m³
+  std::optional<double> mass;           // kg
+  std::optional<Mat3> inertia;          // kg·m² about the center, body axes
+  Vec3 position = Vec3::Zero();         // of the center of mass, world
   Quat orientation = Quat::Identity();  // body to world, unit
   Vec3 velocity = Vec3::Zero();         // world
   Vec3 angularVelocity = Vec3::Zero();  // world
@@ -72,7 +72,7 @@ struct SceneDef {
   Integrator integrator = Integrator::Splitting;
   double dt = sim::core::settings::kDefaultDt;
   double maxSteps = sim::core::settings::kDefaultMaxSteps;  // the most steps a run may take (sim: max_steps)
-  bool normalize = true;  // q ← q/|q| after every step (World::normalizeQuaternions)
+  bool normalize = true;                                    // q ← q/|q| after every step (World::normalizeQuaternions)
   std::vector<BodyDef> bodies;
   std::vector<PointForceDef> pointForces;
   std::vector<SpringDef> springs;

@@ -208,8 +208,7 @@ class EventStepper final : public Method {
   }
 
   // the first time of impact of any pair within `span` from `from`, or none
-  std::optional<double> earliestImpact(const World& world, const TimeStep& step, const States& from,
-                                       double span) const {
+  std::optional<double> earliestImpact(const World& world, const TimeStep& step, const States& from, double span) const {
     if (span <= 0.0) return std::nullopt;
     const States end = motion(world, step, from, span);
     const double tol = settings::kImpactTolerance * world.sceneSize();

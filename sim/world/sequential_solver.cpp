@@ -52,9 +52,9 @@ struct PositionBody {
 
 // one manifold point, prepared once per step
 struct SolverPoint {
-  Vec2 rA = Vec2::Zero(), rB = Vec2::Zero();  // from each center of mass to the point, at the step's start
-  double normalMass = 0.0, tangentMass = 0.0;  // effective masses along n̂ and the tangent
-  double bias = 0.0;  // lowest normal velocity allowed: restitution or a closing gap
+  Vec2 rA = Vec2::Zero(), rB = Vec2::Zero();         // from each center of mass to the point, at the step's start
+  double normalMass = 0.0, tangentMass = 0.0;        // effective masses along n̂ and the tangent
+  double bias = 0.0;                                 // lowest normal velocity allowed: restitution or a closing gap
   double normalImpulse = 0.0, tangentImpulse = 0.0;  // accumulated; warm started from the contact
 };
 
@@ -93,12 +93,9 @@ void buildConstraint(const Contact& c, const Body& a, const Body& b, const Pose&
     p.normalImpulse = c.state[k].normalImpulse, p.tangentImpulse = c.state[k].tangentImpulse;
     // restitution from the velocity before the solve, for contacts that close within the step
     // and arrive fast enough; slower ones settle; a gap may close but not be overrun
-    if (vn < -settings::kRestitutionThreshold && mp.separation + h * vn < 0.0)
-      p.bias = -c.restitution * vn;
-    else if (mp.separation > 0.0 && gapMayClose(p.normalImpulse, mp.separation))
-      p.bias = -mp.separation / h;
-    else
-      p.bias = 0.0;
+    if (vn < -settings::kRestitutionThreshold && mp.separation + h * vn < 0.0) p.bias = -c.restitution * vn;
+    else if (mp.separation > 0.0 && gapMayClose(p.normalImpulse, mp.separation)) p.bias = -mp.separation / h;
+    else p.bias = 0.0;
     p.rA = mp.point - a.x, p.rB = mp.point - b.x;
   }
   s.block = false;
@@ -203,8 +200,8 @@ bool solvePositions(std::vector<PositionBody>& bodies, const std::vector<SolverC
       const Vec2 pa = a.x + a.rotation().apply(s.anchorA), pb = b.x + b.rotation().apply(s.anchorB);
       const double separation = s.separation + n.dot(pa - pb);
       deepest = std::min(deepest, separation);
-      const double correction = std::clamp(settings::kPositionCorrection * (separation + settings::kLinearSlop),
-                                           -settings::kMaxLinearCorrection, 0.0);
+      const double correction =
+          std::clamp(settings::kPositionCorrection * (separation + settings::kLinearSlop), -settings::kMaxLinearCorrection, 0.0);
       if (correction == 0.0) continue;
       const Vec2 r = 0.5 * (pa + pb);
       const Vec2 ra = r - a.x, rb = r - b.x;

@@ -42,12 +42,12 @@ class Sleep {
   int root(int body);
   void join(int a, int b);
 
-  std::vector<double> atRest_;               // s: how long each body has been at rest
-  std::vector<int> island_;                  // each body's sleeping island, −1 when awake
-  std::vector<std::vector<int>> members_;    // each sleeping island's bodies (empty once woken)
-  std::vector<std::vector<Contact>> kept_;   // each sleeping island's contacts, as they were
-  std::vector<int> parent_;                  // union–find over the bodies, scratch of afterStep
-  std::vector<double> islandRest_;           // scratch: the shortest time at rest of each root
+  std::vector<double> atRest_;              // s: how long each body has been at rest
+  std::vector<int> island_;                 // each body's sleeping island, −1 when awake
+  std::vector<std::vector<int>> members_;   // each sleeping island's bodies (empty once woken)
+  std::vector<std::vector<Contact>> kept_;  // each sleeping island's contacts, as they were
+  std::vector<int> parent_;                 // union–find over the bodies, scratch of afterStep
+  std::vector<double> islandRest_;          // scratch: the shortest time at rest of each root
   int sleeping_ = 0;
 };
 

@@ -40,7 +40,7 @@ struct PointLanes {
 // eight contacts of one set (or of the overflow, solved lane by lane)
 struct ContactBlock {
   int a[kLanes] = {0, 0, 0, 0, 0, 0, 0, 0}, b[kLanes] = {0, 0, 0, 0, 0, 0, 0, 0};  // BodyState indices
-  Lanes nx, ny;                          // normal from B to A
+  Lanes nx, ny;                                                                    // normal from B to A
   Lanes invMassA, invInertiaA, invMassB, invInertiaB;
   Lanes friction;
   Lanes biasRate, massScale, impulseScale;  // the soft constraint (static contacts stiffer)

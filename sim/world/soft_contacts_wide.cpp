@@ -1,7 +1,7 @@
-// soft_step's contact passes four lanes at once, each block of eight as two halves, in GCC's vector extensions: compiled with -mavx2
-// where the compiler targets x86-64 (sim/CMakeLists.txt), one AVX2 instruction per operation on
-// four doubles; elsewhere the same code in the target's own vectors. The result is the scalar
-// path's to the bit (same operations, same order, no fused multiply-add).
+// soft_step's contact passes four lanes at once, each block of eight as two halves, in GCC's vector extensions: compiled with
+// -mavx2 where the compiler targets x86-64 (sim/CMakeLists.txt), one AVX2 instruction per operation on four doubles; elsewhere
+// the same code in the target's own vectors. The result is the scalar path's to the bit (same operations, same order, no fused
+// multiply-add).
 #include "sim/world/soft_contacts_kernel.h"
 
 #if defined(__AVX2__)
@@ -44,8 +44,7 @@ struct WideLanes {
     const double* b2 = &bodies[index[2]].vx;
     const double* b3 = &bodies[index[3]].vx;
     __m256d v0 = _mm256_load_pd(b0), v1 = _mm256_load_pd(b1), v2 = _mm256_load_pd(b2), v3 = _mm256_load_pd(b3);
-    __m256d p0 = _mm256_load_pd(b0 + 4), p1 = _mm256_load_pd(b1 + 4), p2 = _mm256_load_pd(b2 + 4),
-            p3 = _mm256_load_pd(b3 + 4);
+    __m256d p0 = _mm256_load_pd(b0 + 4), p1 = _mm256_load_pd(b1 + 4), p2 = _mm256_load_pd(b2 + 4), p3 = _mm256_load_pd(b3 + 4);
     transpose(v0, v1, v2, v3);
     transpose(p0, p1, p2, p3);
     return {V4(v0), V4(v1), V4(v2), V4(p0), V4(p1), V4(p2), V4(p3)};

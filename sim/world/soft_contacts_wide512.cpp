@@ -2,8 +2,8 @@
 // doubles (GCC's vector extensions; compiled with -mavx512f where the compiler targets x86-64,
 // sim/CMakeLists.txt, and chosen at run time). The bodies' records are read whole and transposed into
 // fields, and written back the same way; a block's lanes touch distinct bodies (or the static
-// record, whose velocity stays zero), so the order of the writes within a block changes nothing. The result is the scalar path's to the bit (same operations, same order, no fused
-// multiply-add).
+// record, whose velocity stays zero), so the order of the writes within a block changes nothing. The result is the scalar path's
+// to the bit (same operations, same order, no fused multiply-add).
 #include "sim/world/soft_contacts_kernel.h"
 
 #if defined(__AVX512F__)
@@ -32,7 +32,9 @@ struct Wide512Lanes {
   static __m512d unpackLow(__m512d a, __m512d b) { return _mm512_maskz_unpacklo_pd(0xff, a, b); }
   static __m512d unpackHigh(__m512d a, __m512d b) { return _mm512_maskz_unpackhi_pd(0xff, a, b); }
   template <int kPick>
-  static __m512d shuffle2(__m512d a, __m512d b) { return _mm512_maskz_shuffle_f64x2(0xff, a, b, kPick); }
+  static __m512d shuffle2(__m512d a, __m512d b) {
+    return _mm512_maskz_shuffle_f64x2(0xff, a, b, kPick);
+  }
   static __m256d lowerHalf(__m512d a) { return __builtin_shufflevector(a, a, 0, 1, 2, 3); }
   static __m256d upperHalf(__m512d a) { return __builtin_shufflevector(a, a, 4, 5, 6, 7); }
   // the eight lanes' records read whole (a record is one register) and turned into columns: an
@@ -96,7 +98,9 @@ void solveWide512(ContactBlock* blocks, int begin, int end, BodyState* bodies, c
 #else
 // without AVX-512 in the build, the scalar passes (never chosen: wide512Available() says no)
 namespace sim::world::soft {
-void warmStartWide512(ContactBlock* blocks, int begin, int end, BodyState* bodies) { warmStartScalar(blocks, begin, end, bodies); }
+void warmStartWide512(ContactBlock* blocks, int begin, int end, BodyState* bodies) {
+  warmStartScalar(blocks, begin, end, bodies);
+}
 void solveWide512(ContactBlock* blocks, int begin, int end, BodyState* bodies, const PassSettings& s) {
   solveScalar(blocks, begin, end, bodies, s);
 }

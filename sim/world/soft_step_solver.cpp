@@ -121,8 +121,7 @@ class SoftStepSolver final : public Method {
       threads.sync();
       static_assert(settings::kRelaxIterations >= 1, "the totals are added in the last relax pass");
       // the last relax pass adds each point's impulse to the step's total as it goes
-      for (int r = 0; r < settings::kRelaxIterations; ++r)
-        solve(h, false, r + 1 == settings::kRelaxIterations, share, threads);
+      for (int r = 0; r < settings::kRelaxIterations; ++r) solve(h, false, r + 1 == settings::kRelaxIterations, share, threads);
     }
   }
 
@@ -154,7 +153,8 @@ class SoftStepSolver final : public Method {
     int block = 0;
     auto place = [&](const std::vector<int>& members) {
       const int first = block;
-      for (size_t j = 0; j < members.size(); ++j) slots_[members[j]] = {first + static_cast<int>(j) / soft::kLanes, static_cast<int>(j) % soft::kLanes};
+      for (size_t j = 0; j < members.size(); ++j)
+        slots_[members[j]] = {first + static_cast<int>(j) / soft::kLanes, static_cast<int>(j) % soft::kLanes};
       block = first + static_cast<int>((members.size() + soft::kLanes - 1) / soft::kLanes);
       ranges_.push_back({first, block});
       if (members.size() % soft::kLanes != 0) padded_.push_back(block - 1);
@@ -226,8 +226,8 @@ class SoftStepSolver final : public Method {
     // a missing second point: zero masses and impulses, so that it never pushes
     for (int k = c.manifold.count; k < 2; ++k) {
       soft::PointLanes& p = blk.p[k];
-      for (soft::Lanes* x : {&p.rAx, &p.rAy, &p.rBx, &p.rBy, &p.baseSeparation, &p.normalMass, &p.tangentMass,
-                             &p.normalImpulse, &p.tangentImpulse, &p.totalNormalImpulse})
+      for (soft::Lanes* x : {&p.rAx, &p.rAy, &p.rBx, &p.rBy, &p.baseSeparation, &p.normalMass, &p.tangentMass, &p.normalImpulse,
+                             &p.tangentImpulse, &p.totalNormalImpulse})
         x->l[l] = 0.0;
     }
   }
@@ -407,22 +407,22 @@ class SoftStepSolver final : public Method {
     }
   }
 
-  int width_ = 1;                    // the sets' blocks eight lanes at a time, four, or one
-  bool bouncy_ = false;              // some contact has restitution (the pairs' bodies fix it)
-  std::vector<ColoredPair> pairs_;   // the pairs the colouring was made for
+  int width_ = 1;                   // the sets' blocks eight lanes at a time, four, or one
+  bool bouncy_ = false;             // some contact has restitution (the pairs' bodies fix it)
+  std::vector<ColoredPair> pairs_;  // the pairs the colouring was made for
   ContactColors colors_;
-  std::vector<Slot> slots_;          // each contact's block and lane
+  std::vector<Slot> slots_;                  // each contact's block and lane
   std::vector<std::pair<int, int>> ranges_;  // blocks of the overflow, then of each set
-  std::vector<int> padded_;          // the blocks with lanes no contact fills (a set's last)
+  std::vector<int> padded_;                  // the blocks with lanes no contact fills (a set's last)
   int blockCount_ = 0;
   std::vector<soft::ContactBlock> blocks_;
-  std::vector<double> vnBefore_;     // each point's normal velocity before the step (restitution)
+  std::vector<double> vnBefore_;         // each point's normal velocity before the step (restitution)
   std::vector<soft::BodyState> states_;  // the bodies during the substeps, then the static record
-  std::vector<Vec2> x_;              // positions and angles during the substeps
+  std::vector<Vec2> x_;                  // positions and angles during the substeps
   std::vector<double> angle_;
-  std::vector<double> turned_;       // each body's rotation since the step began
-  States states_y_;                  // scratch of integrateVelocities, for forces other than gravity
-  std::vector<Contact> fresh_;       // the contacts found, then last step's (their storage reused)
+  std::vector<double> turned_;  // each body's rotation since the step began
+  States states_y_;             // scratch of integrateVelocities, for forces other than gravity
+  std::vector<Contact> fresh_;  // the contacts found, then last step's (their storage reused)
   Rates rates_;
   // the threads of sim: threads (none copied: a clone makes its own)
   struct PoolHandle {

@@ -5,7 +5,6 @@
 #include <limits>
 #include <string>
 
-
 namespace sim::world {
 using namespace sim::core;
 using namespace sim::collision;

@@ -34,7 +34,7 @@ namespace settings = sim::core::settings;
 struct ImpulseEvent {
   double time = 0.0;
   int body = 0;
-  Vec2 point = Vec2::Zero();    // body coordinates, or world coordinates when pointInWorld
+  Vec2 point = Vec2::Zero();  // body coordinates, or world coordinates when pointInWorld
   bool pointInWorld = false;
   Vec2 impulse = Vec2::Zero();  // world coordinates
 };
@@ -87,7 +87,7 @@ class World {
   std::optional<double> methodSwitchTime;  // when `auto` went from event to the stack solver
   int velocityIterations = settings::kVelocityIterations;
   int positionIterations = settings::kPositionIterations;
-  int substeps = settings::kSubsteps;  // soft_step: substeps per step
+  int substeps = settings::kSubsteps;             // soft_step: substeps per step
   double contactHertz = settings::kContactHertz;  // soft_step: contact stiffness, Hz (capped per substep)
   // soft_step: a set's contacts solved up to this many at a time in SIMD lanes where the processor
   // has them: 8 (AVX-512), 4 (AVX2) or 1 (one at a time); the same order, to the same state
@@ -156,18 +156,18 @@ class World {
   bool started_ = false;
   std::vector<ImpulseEvent> pending_;  // sorted by time
   size_t nextEvent_ = 0;
-  StepGrid grid_;                      // steps of dt, cut at the events and force switches
+  StepGrid grid_;  // steps of dt, cut at the events and force switches
   double sceneSize_ = 1.0;
-  Sleep sleep_;                        // the islands asleep and the bodies' time at rest
-  OwnedMethod method_;                 // the unit of `collisions`, made by start()
-  bool mayStackUp_ = false;            // `auto` chose event: a stack forming switches to sequential
-  States stepStart_;                   // the states where the step began, to redo it on a switch
+  Sleep sleep_;              // the islands asleep and the bodies' time at rest
+  OwnedMethod method_;       // the unit of `collisions`, made by start()
+  bool mayStackUp_ = false;  // `auto` chose event: a stack forming switches to sequential
+  States stepStart_;         // the states where the step began, to redo it on a switch
   // the broad phase's candidate pairs, kept from one findContacts to the next (the pairs found
   // do not depend on them)
   mutable PairCache pairCache_;
   mutable std::vector<std::pair<int, int>> pairs_;  // scratch of findContacts: the pairs,
   mutable std::vector<PlacedShape> placed_;         // and the bodies' shapes where they are
-  mutable std::vector<Vec2> force_;    // scratch of rates()
+  mutable std::vector<Vec2> force_;                 // scratch of rates()
   mutable std::vector<double> torque_;
 };
 

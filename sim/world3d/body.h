@@ -9,7 +9,7 @@ namespace sim::world3d {
 // what an integrator advances: 7 numbers of position for 6 degrees of freedom (|q| = 1), and the
 // velocities; v and ω are in the world frame
 struct BodyState {
-  Vec3 x = Vec3::Zero();    // center of mass, world
+  Vec3 x = Vec3::Zero();      // center of mass, world
   Quat q = Quat::Identity();  // [w x y z], body to world: r = x + R(q) r_b
   Vec3 v = Vec3::Zero();
   Vec3 omega = Vec3::Zero();

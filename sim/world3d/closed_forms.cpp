@@ -29,14 +29,10 @@ double completeEllipticK(double k) {
   return completeEllipticKOfComplement(std::sqrt((1.0 - k) * (1.0 + k)));
 }
 
-double bodyPrecessionRate(const SymmetricTop& top) {
-  return top.omegaBody.z() * (top.axial - top.transverse) / top.transverse;
-}
+double bodyPrecessionRate(const SymmetricTop& top) { return top.omegaBody.z() * (top.axial - top.transverse) / top.transverse; }
 
 namespace {
-Vec3 momentumBody(const SymmetricTop& top) {
-  return Vec3(top.transverse, top.transverse, top.axial).cwiseProduct(top.omegaBody);
-}
+Vec3 momentumBody(const SymmetricTop& top) { return Vec3(top.transverse, top.transverse, top.axial).cwiseProduct(top.omegaBody); }
 }  // namespace
 
 double spacePrecessionRate(const SymmetricTop& top) { return momentumBody(top).norm() / top.transverse; }
@@ -61,8 +57,8 @@ double periodFromDifferences(const std::array<double, 3>& i, const std::array<do
   if (d[1] == 0.0) return std::numeric_limits<double>::infinity();  // on the separatrix
   // M² > 2 E I₂: ω circles the axis of I₃; otherwise the axis of I₁ (indices 1 and 3 exchanged)
   const bool aroundLargest = d[1] > 0.0;
-  const double outer = aroundLargest ? i[2] - i[1] : i[1] - i[0];   // I₃ − I₂, or I₂ − I₁
-  const double dFar = aroundLargest ? d[0] : -d[2];                  // M² − 2 E I₁, or 2 E I₃ − M²
+  const double outer = aroundLargest ? i[2] - i[1] : i[1] - i[0];  // I₃ − I₂, or I₂ − I₁
+  const double dFar = aroundLargest ? d[0] : -d[2];                // M² − 2 E I₁, or 2 E I₃ − M²
   const double kPrime2 = (i[2] - i[0]) * std::abs(d[1]) / (outer * dFar);
   return 4.0 * completeEllipticKOfComplement(std::sqrt(kPrime2)) * std::sqrt(i[0] * i[1] * i[2] / (outer * dFar));
 }

@@ -16,8 +16,8 @@ double completeEllipticKOfComplement(double complementaryModulus);
 // a torque-free symmetric top: I₁ = I₂ about the body's x and y, I₃ about its symmetry axis z
 // (Landau & Lifshitz, Mechanics, §33)
 struct SymmetricTop {
-  double transverse = 1.0;  // I₁ = I₂
-  double axial = 1.0;       // I₃
+  double transverse = 1.0;        // I₁ = I₂
+  double axial = 1.0;             // I₃
   Vec3 omegaBody = Vec3::Zero();  // ω in body axes, at any instant
 };
 // the rate at which ω turns about the symmetry axis, seen from the body: Ω = ω₃ (I₃ − I₁) / I₁,

@@ -5,9 +5,7 @@
 
 namespace sim::world3d {
 
-KineticEnergy kineticEnergy(const Body& b) {
-  return {0.5 * b.mass * b.v.squaredNorm(), 0.5 * b.omega.dot(b.angularMomentum())};
-}
+KineticEnergy kineticEnergy(const Body& b) { return {0.5 * b.mass * b.v.squaredNorm(), 0.5 * b.omega.dot(b.angularMomentum())}; }
 
 Energy energy(const World& world) {
   Energy e;

@@ -16,8 +16,7 @@ void Dynamics::rates(const States& y, Rates& out) const {
   for (size_t i = 0; i < y.size(); ++i) {
     const Body& b = bodies[i];
     const BodyState& s = y[i];
-    out[i] = {s.v, quaternionRate(s.q, s.omega), b.invMass * w[i].force,
-              angularAcceleration(b, s.q, s.omega, w[i].torque)};
+    out[i] = {s.v, quaternionRate(s.q, s.omega), b.invMass * w[i].force, angularAcceleration(b, s.q, s.omega, w[i].torque)};
   }
 }
 

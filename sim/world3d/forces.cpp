@@ -24,8 +24,7 @@ void applyAt(const BodyState& s, const Vec3& r, const Vec3& f, Wrench& w) {
 
 }  // namespace
 
-void ForceSet::accumulate(double window, const std::vector<Body>& bodies, const std::vector<BodyState>& at,
-                          Wrenches& out) const {
+void ForceSet::accumulate(double window, const std::vector<Body>& bodies, const std::vector<BodyState>& at, Wrenches& out) const {
   out.assign(bodies.size(), Wrench{});
 
   // uniform gravity acts at the center of mass: no torque

@@ -56,8 +56,7 @@ struct ForceSet {
   // the wrench on each body at the states `at` (poses and velocities may differ from the bodies'
   // own, e.g. an integrator's stage); `window` is a time inside the current step, which decides
   // which timed forces are on
-  void accumulate(double window, const std::vector<Body>& bodies, const std::vector<BodyState>& at,
-                  Wrenches& out) const;
+  void accumulate(double window, const std::vector<Body>& bodies, const std::vector<BodyState>& at, Wrenches& out) const;
 
   // gravity's −m g·x and the springs' ½ k (|d| − l₀)², at the bodies' own states, J
   double potentialEnergy(const std::vector<Body>& bodies) const;

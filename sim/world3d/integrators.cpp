@@ -20,8 +20,7 @@ constexpr Tableau kMidpoint{2, {{{}, {0.5}}}, {0.0, 1.0}};
 constexpr Tableau kRk4{4, {{{}, {0.5}, {0.0, 0.5}, {0.0, 0.0, 1.0}}}, {1.0 / 6, 1.0 / 3, 1.0 / 3, 1.0 / 6}};
 
 // y + h Σ_j c_j k_j over the first `count` rates, body by body (q as a four-vector)
-States combined(const States& y, double h, const std::array<Rates, 4>& k, const std::array<double, 4>& c,
-                int count) {
+States combined(const States& y, double h, const std::array<Rates, 4>& k, const std::array<double, 4>& c, int count) {
   States out = y;
   for (int j = 0; j < count; ++j) {
     if (c[j] == 0.0) continue;

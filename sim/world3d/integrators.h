@@ -12,12 +12,12 @@ enum class Integrator { ExplicitEuler, SymplecticEuler, Midpoint, Rk4, Splitting
 
 // one step of size h, in place; a four-vector update leaves |q| off 1 by O(h²) per step, which
 // normalizeRotations takes back (sim/README.md: Free rigid bodies in 3D, for what each keeps and loses)
-void explicitEulerStep(const Dynamics& f, double h, States& y);    // order 1
+void explicitEulerStep(const Dynamics& f, double h, States& y);  // order 1
 // order 1; symplectic in x and v only: with q a four-vector and Euler's equations explicit, a free
 // body's energy grows under it
 void symplecticEulerStep(const Dynamics& f, double h, States& y);
-void midpointStep(const Dynamics& f, double h, States& y);         // order 2
-void rk4Step(const Dynamics& f, double h, States& y);              // order 4
+void midpointStep(const Dynamics& f, double h, States& y);  // order 2
+void rk4Step(const Dynamics& f, double h, States& y);       // order 4
 // Dullweber–Leimkuhler–McLachlan's symmetric splitting, order 2 (splitting.cpp): kick, the free
 // body's flow as rotations about the principal axes, kick; keeps |q| = 1 and, for a free body,
 // L exactly

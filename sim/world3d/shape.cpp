@@ -50,15 +50,12 @@ double volume(const Shape& shape) {
 //   ellipsoid of semi-axes a: ∫ x² dm = m a²/5 (the unit ball's ∫ x² dV is 4π/15, its volume 4π/3)
 //   sphere: the ellipsoid with a = b = c = r, so I = ⅖ m r² about every axis
 MassProperties massProperties(const Shape& shape, double density) {
-  if (!(density > 0.0) || !std::isfinite(density))
-    throw std::invalid_argument("density must be a positive finite number, kg/m³");
+  if (!(density > 0.0) || !std::isfinite(density)) throw std::invalid_argument("density must be a positive finite number, kg/m³");
   MassProperties p;
   p.mass = density * volume(shape);
   switch (shape.kind) {
     case ShapeKind::Box: p.inertia = fromSecondMoments(p.mass / 12.0 * shape.sides.cwiseAbs2()); break;
-    case ShapeKind::Sphere:
-      p.inertia = fromSecondMoments(Vec3::Constant(p.mass / 5.0 * shape.radius * shape.radius));
-      break;
+    case ShapeKind::Sphere: p.inertia = fromSecondMoments(Vec3::Constant(p.mass / 5.0 * shape.radius * shape.radius)); break;
     case ShapeKind::Ellipsoid: p.inertia = fromSecondMoments(p.mass / 5.0 * shape.semiAxes.cwiseAbs2()); break;
   }
   return p;

@@ -65,8 +65,7 @@ void World::step(double h) {
 
 void World::applyDueEvents(StepObserver* observer) {
   // every event up to now: events before the start of the run are applied at its start
-  while (nextEvent_ < pending_.size() &&
-         (pending_[nextEvent_].time < time || grid_.same(pending_[nextEvent_].time, time))) {
+  while (nextEvent_ < pending_.size() && (pending_[nextEvent_].time < time || grid_.same(pending_[nextEvent_].time, time))) {
     const ImpulseEvent& e = pending_[nextEvent_++];
     Body& b = bodies[e.body];
     b.applyImpulse(e.pointInWorld ? e.point : b.toWorld(e.point), e.impulse);
@@ -77,8 +76,7 @@ void World::applyDueEvents(StepObserver* observer) {
 void World::checkFinite() const {
   for (size_t i = 0; i < bodies.size(); ++i) {
     const Body& b = bodies[i];
-    if (!isFinite(b.x) || !isFinite(b.q) || !isFinite(b.v) || !isFinite(b.omega))
-      throw Diverged(time, static_cast<int>(i));
+    if (!isFinite(b.x) || !isFinite(b.q) || !isFinite(b.v) || !isFinite(b.omega)) throw Diverged(time, static_cast<int>(i));
   }
 }
 

@@ -16,7 +16,7 @@ namespace sim::world3d {
 struct ImpulseEvent {
   double time = 0.0;
   int body = 0;
-  Vec3 point = Vec3::Zero();    // body coordinates, or world coordinates when pointInWorld
+  Vec3 point = Vec3::Zero();  // body coordinates, or world coordinates when pointInWorld
   bool pointInWorld = false;
   Vec3 impulse = Vec3::Zero();  // world coordinates, N·s
 };

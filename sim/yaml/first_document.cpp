@@ -45,8 +45,7 @@ class Builder : public YAML::EventHandler {
     n.set_style(style);
   }
   void OnSequenceEnd() override { done(); }
-  void OnMapStart(const YAML::Mark& at, const std::string& tag, YAML::anchor_t anchor,
-                  YAML::EmitterStyle::value style) override {
+  void OnMapStart(const YAML::Mark& at, const std::string& tag, YAML::anchor_t anchor, YAML::EmitterStyle::value style) override {
     detail::node& n = made(at, anchor);
     n.set_type(YAML::NodeType::Map);
     n.set_tag(tag);

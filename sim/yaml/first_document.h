@@ -11,8 +11,8 @@
 namespace sim::yaml {
 
 struct FirstDocument {
-  YAML::Node root;                    // null for a text with no document
-  std::optional<YAML::Mark> second;   // where a second document starts; its contents are not read
+  YAML::Node root;                   // null for a text with no document
+  std::optional<YAML::Mark> second;  // where a second document starts; its contents are not read
 };
 
 // throws YAML::ParserException (YAML::DeepRecursion for nesting past the parser's limit)

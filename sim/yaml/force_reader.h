@@ -20,21 +20,18 @@ void readForce(const Reader& r, const YAML::Node& n, Scene& s, ReadVector vector
   };
   // without a type, a misspelled key is the likelier fault: name it
   if (!n["type"])
-    r.checkKeys(n, {"type", "body", "point", "anchor", "body2", "point2", "stiffness", "rest_length", "damping", "frame",
-                    "force", "from", "until", "linear", "angular"},
+    r.checkKeys(n,
+                {"type", "body", "point", "anchor", "body2", "point2", "stiffness", "rest_length", "damping", "frame", "force",
+                 "from", "until", "linear", "angular"},
                 "a force");
   const std::string type = r.text(r.required(n, "type", "every force"), "type");
   if (type == "spring") {
-    r.checkKeys(n,
-                {"type", "body", "point", "anchor", "body2", "point2", "stiffness", "rest_length",
-                 "damping"},
-                "a spring");
+    r.checkKeys(n, {"type", "body", "point", "anchor", "body2", "point2", "stiffness", "rest_length", "damping"}, "a spring");
     typename std::decay_t<decltype(s.springs)>::value_type sp;
     sp.body = r.bodyRef(n, "body", s, "a spring");
     optionalVector("point", sp.point);
     if (n["body2"]) {
-      if (n["anchor"])
-        r.fail(n["anchor"], "a spring has either 'anchor' (a world point) or 'body2', not both");
+      if (n["anchor"]) r.fail(n["anchor"], "a spring has either 'anchor' (a world point) or 'body2', not both");
       sp.body2 = r.bodyRef(n, "body2", s, "a spring");
       if (sp.body2 == sp.body) r.fail(n["body2"], "a spring needs two different bodies");
       optionalVector("point2", sp.point2);
@@ -67,8 +64,7 @@ void readForce(const Reader& r, const YAML::Node& n, Scene& s, ReadVector vector
     r.optional(n, "angular", d.angular, &Reader::nonNegative);
     s.drags.push_back(d);
   } else {
-    r.fail(n["type"], "unknown force type '" + type +
-                          "'; choose one of: spring, force, drag (gravity is set in world:)");
+    r.fail(n["type"], "unknown force type '" + type + "'; choose one of: spring, force, drag (gravity is set in world:)");
   }
 }
 

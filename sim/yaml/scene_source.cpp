@@ -122,8 +122,9 @@ class VariantMerge {
 
   void visit(const YAML::Node& at) {
     if (budget_-- == 0)
-      r_.fail(at, "variant '" + variant_ + "' repeats its values through aliases (*name) beyond the file's own size; "
-                  "write the changes out instead of nesting aliases");
+      r_.fail(at, "variant '" + variant_ +
+                      "' repeats its values through aliases (*name) beyond the file's own size; "
+                      "write the changes out instead of nesting aliases");
   }
 
   // a new node in the memory of the nodes made before it. yaml-cpp's node memory is a set that a
@@ -150,8 +151,8 @@ void listVariants(const Reader& r, SceneDocument& s) {
       if (!kv.second.IsMap() && !kv.second.IsNull())
         r.fail(kv.second, "variant '" + kv.first.Scalar() + "' must be a map of changes, got " + describe(kv.second));
       if (const std::string fault = pathNameFault(kv.first.Scalar()); !fault.empty())
-        r.fail(kv.first, "variant name '" + kv.first.Scalar() + "' names output files but " + fault +
-                             "; use letters, digits, '-' or '_'");
+        r.fail(kv.first,
+               "variant name '" + kv.first.Scalar() + "' names output files but " + fault + "; use letters, digits, '-' or '_'");
       // a name given twice: the second would be dropped and the first run twice
       if (std::find(s.variantNames.begin(), s.variantNames.end(), kv.first.Scalar()) != s.variantNames.end())
         r.fail(kv.first, "variant '" + kv.first.Scalar() + "' is defined twice; give each variant once, or rename one");
@@ -169,8 +170,8 @@ void mergeVariant(const Reader& r, const SceneDocument& d, SceneSource& s) {
   if (std::find(s.variantNames.begin(), s.variantNames.end(), s.variant) == s.variantNames.end()) {
     std::string known;
     for (const auto& n : s.variantNames) known += (known.empty() ? "" : ", ") + n;
-    r.fail(variants ? variants : d.root, "unknown variant '" + s.variant + "'; " +
-                                             (known.empty() ? "this scene has no variants" : "this scene has: " + known));
+    r.fail(variants ? variants : d.root,
+           "unknown variant '" + s.variant + "'; " + (known.empty() ? "this scene has no variants" : "this scene has: " + known));
   }
   for (const auto& kv : variants)
     if (kv.first.Scalar() == s.variant) s.variantMark = kv.first.Mark();
@@ -241,8 +242,12 @@ SceneDocument readSceneDocument(const std::string& path) {
   if (kind == std::filesystem::file_type::directory)
     throw SceneError(path, 0, 0, "is a directory, not a scene file; give the path of a .yaml file");
   if (kind != std::filesystem::file_type::regular && kind != std::filesystem::file_type::not_found)
-    throw SceneError(path, 0, 0, std::string("is ") + (kind == std::filesystem::file_type::fifo ? "a FIFO (named pipe)" : kind == std::filesystem::file_type::socket ? "a socket" : "a device") +
-                                     ", not a regular file; give the path of a scene file (.yaml)");
+    throw SceneError(path, 0, 0,
+                     std::string("is ") +
+                         (kind == std::filesystem::file_type::fifo     ? "a FIFO (named pipe)"
+                          : kind == std::filesystem::file_type::socket ? "a socket"
+                                                                       : "a device") +
+                         ", not a regular file; give the path of a scene file (.yaml)");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SceneError(path, 0, 0, "cannot open the scene file (does it exist and is it readable?)");
   // read in pieces up to the limit, not to the end: /dev/zero and pipes have no end
@@ -251,8 +256,9 @@ SceneDocument readSceneDocument(const std::string& path) {
   while (in.read(piece, sizeof piece) || in.gcount() > 0) {
     text.append(piece, static_cast<size_t>(in.gcount()));
     if (text.size() > kMaxSceneBytes)
-      throw SceneError(path, 0, 0, "is larger than the limit of " + std::to_string(kMaxSceneBytes >> 20) +
-                                       " MiB for a scene file; is it a scene? (100,000 bodies written one a line take 6 MB)");
+      throw SceneError(path, 0, 0,
+                       "is larger than the limit of " + std::to_string(kMaxSceneBytes >> 20) +
+                           " MiB for a scene file; is it a scene? (100,000 bodies written one a line take 6 MB)");
   }
   if (in.bad()) throw SceneError(path, 0, 0, "cannot read the scene file");
   return sceneDocumentText(text, path);

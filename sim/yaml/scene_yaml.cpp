@@ -31,9 +31,10 @@ class SceneReader : public Reader {
     SceneDef s;
     s.variant = source.variant;
     s.variantNames = source.variantNames;
-    checkKeys(root, with({"name", "description", "duration", "world", "sim", "bodies", "forces", "events", "variants", "expect",
-                          "dimensions"},
-                         others_.scene),
+    checkKeys(root,
+              with({"name", "description", "duration", "world", "sim", "bodies", "forces", "events", "variants", "expect",
+                    "dimensions"},
+                   others_.scene),
               "the scene");
     // sceneSourceText has read `dimensions`; a 3D scene's model is sim/yaml3d's to read
     if (source.dimensions != 2)
@@ -51,15 +52,17 @@ class SceneReader : public Reader {
       optional(w, "friction", s.friction, &Reader::nonNegative);
     }
     if (const YAML::Node sim = root["sim"]) {
-      checkKeys(sim, {"integrator", "dt", "collisions", "iterations", "position_iterations", "substeps", "contact_hertz", "threads", "sleep", "max_steps",
-                      "max_bodies", "max_vertices", "max_entries"},
+      checkKeys(sim,
+                {"integrator", "dt", "collisions", "iterations", "position_iterations", "substeps", "contact_hertz", "threads",
+                 "sleep", "max_steps", "max_bodies", "max_vertices", "max_entries"},
                 "sim");
       optional(sim, "max_steps", s.maxSteps, &Reader::positive);
       readSizeLimits(*this, sim, limits_);
       if (sim["collisions"])
         s.collisions = named(sim["collisions"], "collisions", collisionMethodFromName, kCollisionMethodNames.list());
       if (sim["iterations"]) s.velocityIterations = wholeNumber(sim["iterations"], "iterations", 1, 1000);
-      if (sim["position_iterations"]) s.positionIterations = wholeNumber(sim["position_iterations"], "position_iterations", 0, 1000);
+      if (sim["position_iterations"])
+        s.positionIterations = wholeNumber(sim["position_iterations"], "position_iterations", 0, 1000);
       if (sim["substeps"]) s.substeps = wholeNumber(sim["substeps"], "substeps", 1, 1000);
       optional(sim, "contact_hertz", s.contactHertz, &Reader::positive);
       optional(sim, "sleep", s.sleep, &Reader::boolean);
@@ -69,8 +72,7 @@ class SceneReader : public Reader {
                                std::string(collisionMethodName(s.collisions)) +
                                "' has none; use 'collisions: sequential', 'soft_step' or 'auto', or drop 'sleep'");
       if (sim["threads"]) s.threads = wholeNumber(sim["threads"], "threads", 1, sim::core::settings::kMaxThreads);
-      if (sim["integrator"])
-        s.integrator = named(sim["integrator"], "integrator", integratorFromName, kIntegratorNames.list());
+      if (sim["integrator"]) s.integrator = named(sim["integrator"], "integrator", integratorFromName, kIntegratorNames.list());
       optional(sim, "dt", s.dt, &Reader::positive);
     }
     const YAML::Node stepsAt = root["sim"] && root["sim"]["dt"] ? root["sim"]["dt"] : root["duration"] ? root["duration"] : root;
@@ -78,16 +80,17 @@ class SceneReader : public Reader {
     if (const std::string over = sim::core::dtOverDuration(s.dt, s.duration); !over.empty())
       fail(stepsAt, over + "; choose a dt of at most the duration (a hundredth of it or less to see any motion)");
     if (const std::string over = stepsOverLimit(s, s.duration); !over.empty())
-      fail(stepsAt, over + "; raise dt, shorten duration, or, if the scene needs that many, raise the limit with "
-                           "'sim: {max_steps: N}'");
+      fail(stepsAt, over +
+                        "; raise dt, shorten duration, or, if the scene needs that many, raise the limit with "
+                        "'sim: {max_steps: N}'");
     const YAML::Node bodies = required(root, "bodies", "a scene");
     if (!bodies.IsSequence() || bodies.size() == 0) fail(bodies, "'bodies' must be a list of at least one body");
     checkBodyCount(*this, bodies, limits_);
     for (const YAML::Node& b : bodies) s.bodies.push_back(readBody(b));
     // forces and events are read alike in 2D and 3D (sim/yaml/force_reader.h) but for the vector
     size_t entries = 0;
-    sim::yaml::readForcesAndEvents(*this, root, s,
-                                   [this](const YAML::Node& v, const std::string& key) { return vec2(v, key); }, limits_, entries);
+    sim::yaml::readForcesAndEvents(
+        *this, root, s, [this](const YAML::Node& v, const std::string& key) { return vec2(v, key); }, limits_, entries);
     if (const YAML::Node expect = root["expect"]) {
       if (!expect.IsSequence()) fail(expect, "'expect' must be a list, got " + describe(expect));
       sim::yaml::checkEntryCount(*this, expect, entries, limits_);
@@ -129,9 +132,10 @@ class SceneReader : public Reader {
   }
 
   BodyDef readBody(const YAML::Node& n) {
-    checkKeys(n, with({"name", "shape", "density", "mass", "inertia", "position", "angle", "velocity", "angular_velocity",
-                       "static", "restitution", "friction"},
-                      others_.body),
+    checkKeys(n,
+              with({"name", "shape", "density", "mass", "inertia", "position", "angle", "velocity", "angular_velocity", "static",
+                    "restitution", "friction"},
+                   others_.body),
               "a body");
     BodyDef b;
     b.loc = {n.Mark().line + 1, n.Mark().column + 1};
@@ -173,16 +177,20 @@ class SceneReader : public Reader {
       const double reach = boundingRadius(b.shape);
       const double speed = b.velocity.norm() + std::abs(b.angularVelocity) * reach;
       if (!std::isfinite(mp.mass) || !std::isfinite(mp.inertia) || !(mp.inertia > 0.0))
-        fail(n["mass"] ? n["mass"] : n["density"] ? n["density"] : n["inertia"] ? n["inertia"] : n,
-             "body '" + b.name + "': its mass or moment of inertia is not a finite positive number (mass " +
-                 toText(mp.mass) + ", inertia " + toText(mp.inertia) + "); choose a smaller mass or density");
+        fail(n["mass"]      ? n["mass"]
+             : n["density"] ? n["density"]
+             : n["inertia"] ? n["inertia"]
+                            : n,
+             "body '" + b.name + "': its mass or moment of inertia is not a finite positive number (mass " + toText(mp.mass) +
+                 ", inertia " + toText(mp.inertia) + "); choose a smaller mass or density");
       if (!std::isfinite(mp.mass * speed * speed) || !std::isfinite(mp.inertia * b.angularVelocity * b.angularVelocity))
-        fail(n["angular_velocity"] ? n["angular_velocity"] : n["velocity"] ? n["velocity"] : n,
+        fail(n["angular_velocity"] ? n["angular_velocity"]
+             : n["velocity"]       ? n["velocity"]
+                                   : n,
              "body '" + b.name + "': its kinetic energy is not a finite number; choose a smaller speed or mass");
     }
     return b;
   }
-
 
   double restitution(const YAML::Node& n) {
     const double c = number(n, "restitution");
@@ -190,10 +198,10 @@ class SceneReader : public Reader {
     return c;
   }
 
-
   ExpectDef readExpect(const YAML::Node& n, const SceneDef& s) {
-    checkKeys(n, {"time", "body", "position", "angle", "velocity", "angular_velocity", "kinetic_energy",
-                  "potential_energy", "total_energy", "momentum", "angular_momentum", "tolerance", "source"},
+    checkKeys(n,
+              {"time", "body", "position", "angle", "velocity", "angular_velocity", "kinetic_energy", "potential_energy",
+               "total_energy", "momentum", "angular_momentum", "tolerance", "source"},
               "an expect entry");
     ExpectDef e;
     e.loc = {n.Mark().line + 1, n.Mark().column + 1};
@@ -232,8 +240,6 @@ SceneDef loadSceneText(const std::string& text, const std::string& file, const s
   return readModel(sceneSourceText(text, file, variant));
 }
 
-SceneDef loadSceneFile(const std::string& path, const std::string& variant) {
-  return readModel(readSceneSource(path, variant));
-}
+SceneDef loadSceneFile(const std::string& path, const std::string& variant) { return readModel(readSceneSource(path, variant)); }
 
 }  // namespace sim::yaml

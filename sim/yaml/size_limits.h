@@ -28,8 +28,8 @@ inline void readSizeLimits(const Reader& r, const YAML::Node& sim, SizeLimits& l
 
 // the list `list` holds at most `limit` entries, else "<what> N <entries>, more than the limit of
 // M; <advice>raise the limit with 'sim: {<key>: N}'" at the list
-inline void checkCount(const Reader& r, const YAML::Node& list, int limit, const std::string& what,
-                       const std::string& entries, const std::string& key, const std::string& advice) {
+inline void checkCount(const Reader& r, const YAML::Node& list, int limit, const std::string& what, const std::string& entries,
+                       const std::string& key, const std::string& advice) {
   if (list.size() <= static_cast<size_t>(limit)) return;
   std::ostringstream m;
   m << what << list.size() << " " << entries << ", more than the limit of " << limit << "; " << advice

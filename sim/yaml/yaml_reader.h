@@ -117,8 +117,7 @@ class Reader {
 
   double positive(const YAML::Node& n, const std::string& key) const {
     const double x = number(n, key);
-    if (!(x > 0.0) || !std::isfinite(x))
-      fail(n, "'" + key + "' must be a positive finite number, got " + n.Scalar());
+    if (!(x > 0.0) || !std::isfinite(x)) fail(n, "'" + key + "' must be a positive finite number, got " + n.Scalar());
     return x;
   }
 
@@ -138,15 +137,14 @@ class Reader {
   int wholeNumber(const YAML::Node& n, const std::string& key, int least, int most) const {
     const double x = number(n, key);
     if (!(x >= least && x <= most) || x != std::floor(x))
-      fail(n, "'" + key + "' must be a whole number from " + std::to_string(least) + " to " + std::to_string(most) +
-                  ", got " + n.Scalar());
+      fail(n, "'" + key + "' must be a whole number from " + std::to_string(least) + " to " + std::to_string(most) + ", got " +
+                  n.Scalar());
     return static_cast<int>(x);
   }
 
   double nonNegative(const YAML::Node& n, const std::string& key) const {
     const double x = number(n, key);
-    if (!(x >= 0.0) || !std::isfinite(x))
-      fail(n, "'" + key + "' must be zero or a positive finite number, got " + n.Scalar());
+    if (!(x >= 0.0) || !std::isfinite(x)) fail(n, "'" + key + "' must be zero or a positive finite number, got " + n.Scalar());
     return x;
   }
 

@@ -28,7 +28,8 @@ class Reader3d : public sim::yaml::Reader {
       if (n.IsMap()) {
         checkKeys(n, {"axis", "angle"}, key);
         const YAML::Node axis = required(n, "axis", key + " as an axis and an angle");
-        return sim::world3d::axisAngle(vec3(axis, "axis"), finite(required(n, "angle", key + " as an axis and an angle"), "angle"));
+        return sim::world3d::axisAngle(vec3(axis, "axis"),
+                                       finite(required(n, "angle", key + " as an axis and an angle"), "angle"));
       }
       if (!n.IsSequence() || n.size() != 4)
         fail(n, "expected a unit quaternion [w, x, y, z] or {axis: [x, y, z], angle: θ} for '" + key + "', got " + shape(n));

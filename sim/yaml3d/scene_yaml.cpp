@@ -52,9 +52,10 @@ class SceneReader3d : public Reader3d {
     SceneDef s;
     s.variant = source.variant;
     s.variantNames = source.variantNames;
-    checkKeys(root, with({"name", "description", "dimensions", "duration", "world", "sim", "bodies", "forces", "events",
-                          "variants", "expect"},
-                         others_.scene),
+    checkKeys(root,
+              with({"name", "description", "dimensions", "duration", "world", "sim", "bodies", "forces", "events", "variants",
+                    "expect"},
+                   others_.scene),
               "the scene");
     if (source.dimensions != 3) fail(root, "this reads 3D scenes, which say 'dimensions: 3'");
     s.name = root["name"] ? text(root["name"], "name") : source.stem;
@@ -72,8 +73,9 @@ class SceneReader3d : public Reader3d {
       optional(sim, "max_steps", s.maxSteps, &Reader::positive);
       readSizeLimits(*this, sim, limits_);
       if (sim["integrator"])
-        s.integrator = named(sim["integrator"], "integrator", [](const std::string& n) { return kIntegratorNames.parse(n); },
-                             kIntegratorNames.list());
+        s.integrator = named(
+            sim["integrator"], "integrator", [](const std::string& n) { return kIntegratorNames.parse(n); },
+            kIntegratorNames.list());
       optional(sim, "dt", s.dt, &Reader::positive);
       optional(sim, "normalize", s.normalize, &Reader::boolean);
     }
@@ -84,8 +86,9 @@ class SceneReader3d : public Reader3d {
     }
     if (const std::string over = stepsOverLimit(s.dt, s.maxSteps, s.duration); !over.empty()) {
       const YAML::Node at = root["sim"] && root["sim"]["dt"] ? root["sim"]["dt"] : root["duration"] ? root["duration"] : root;
-      fail(at, over + "; raise dt, shorten duration, or, if the scene needs that many, raise the limit with "
-                      "'sim: {max_steps: N}'");
+      fail(at, over +
+                   "; raise dt, shorten duration, or, if the scene needs that many, raise the limit with "
+                   "'sim: {max_steps: N}'");
     }
     const YAML::Node bodies = required(root, "bodies", "a scene");
     if (!bodies.IsSequence() || bodies.size() == 0) fail(bodies, "'bodies' must be a list of at least one body");
@@ -93,8 +96,8 @@ class SceneReader3d : public Reader3d {
     for (const YAML::Node& b : bodies) s.bodies.push_back(readBody(b));
     // forces and events are read alike in 2D and 3D (sim/yaml/force_reader.h) but for the vector
     size_t entries = 0;
-    sim::yaml::readForcesAndEvents(*this, root, s,
-                                   [this](const YAML::Node& v, const std::string& key) { return vec3(v, key); }, limits_, entries);
+    sim::yaml::readForcesAndEvents(
+        *this, root, s, [this](const YAML::Node& v, const std::string& key) { return vec3(v, key); }, limits_, entries);
     if (const YAML::Node expect = root["expect"]) {
       if (!expect.IsSequence()) fail(expect, "'expect' must be a list, got " + describe(expect));
       sim::yaml::checkEntryCount(*this, expect, entries, limits_);
@@ -117,7 +120,8 @@ class SceneReader3d : public Reader3d {
       for (const auto& [key, reason] : kShapeRefusals)
         if (n[key]) fail(n, reason);
     checkKeys(n, {"box", "sphere", "ellipsoid"}, "shape");
-    if (n.size() != 1) fail(n, "a shape is exactly one of {box: [a, b, c]} (sides), {sphere: r}, {ellipsoid: [a, b, c]} (semi-axes)");
+    if (n.size() != 1)
+      fail(n, "a shape is exactly one of {box: [a, b, c]} (sides), {sphere: r}, {ellipsoid: [a, b, c]} (semi-axes)");
     try {
       if (const YAML::Node box = n["box"]) return makeBox(vec3(box, "box"));
       if (const YAML::Node sphere = n["sphere"]) return makeSphere(positive(sphere, "sphere"));
@@ -129,8 +133,9 @@ class SceneReader3d : public Reader3d {
 
   BodyDef readBody(const YAML::Node& n) {
     if (!n.IsMap()) fail(n, "expected a map for a body, got " + describe(n));
-    keys(n, with({"name", "shape", "density", "mass", "inertia", "position", "orientation", "velocity", "angular_velocity"},
-                 others_.body),
+    keys(n,
+         with({"name", "shape", "density", "mass", "inertia", "position", "orientation", "velocity", "angular_velocity"},
+              others_.body),
          kBodyRefusals, "a body");
     BodyDef b;
     b.loc = b.massLoc = {n.Mark().line + 1, n.Mark().column + 1};
@@ -155,13 +160,12 @@ class SceneReader3d : public Reader3d {
     return b;
   }
 
-
-
   ExpectDef readExpect(const YAML::Node& n, const SceneDef& s) {
     if (!n.IsMap()) fail(n, "expected a map for an expect entry, got " + describe(n));
-    keys(n, {"time", "body", "position", "orientation", "velocity", "angular_velocity", "quaternion_norm", "kinetic_energy",
-             "potential_energy", "total_energy", "momentum", "angular_momentum", "cone_angle", "precession_rate",
-             "space_precession_rate", "flip_period", "tolerance", "source"},
+    keys(n,
+         {"time", "body", "position", "orientation", "velocity", "angular_velocity", "quaternion_norm", "kinetic_energy",
+          "potential_energy", "total_energy", "momentum", "angular_momentum", "cone_angle", "precession_rate",
+          "space_precession_rate", "flip_period", "tolerance", "source"},
          kExpectRefusals, "an expect entry");
     ExpectDef e;
     e.loc = {n.Mark().line + 1, n.Mark().column + 1};

@@ -37,7 +37,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const sim::scene::SceneDef base = sim::yaml::loadSceneText(text, "fuzz.yaml");
     checkOne(text, "");
     for (const std::string& v : base.variantNames) checkOne(text, v);
-  } catch (const sim::yaml::SceneError&) {
-  }
+  } catch (const sim::yaml::SceneError&) {}
   return 0;
 }

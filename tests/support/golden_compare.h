@@ -48,8 +48,8 @@ inline void checkGolden(const std::string& name, const Image& actual) {
     fs::create_directories((dir / name).parent_path());
     render::draw::writePng(actual, (dir / (name + "-actual.png")).string());
     render::draw::writePng(c.diff, (dir / (name + "-diff.png")).string());
-    FAIL_CHECK(name << ": " << c.differing << " pixels differ by more than " << kTolerance.channel << " (at most "
-                    << c.allowed << " may); see " << (dir / (name + "-actual.png")).string() << " and "
+    FAIL_CHECK(name << ": " << c.differing << " pixels differ by more than " << kTolerance.channel << " (at most " << c.allowed
+                    << " may); see " << (dir / (name + "-actual.png")).string() << " and "
                     << (dir / (name + "-diff.png")).string());
   }
 }

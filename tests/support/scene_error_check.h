@@ -28,8 +28,7 @@ void expectSceneError(Load load, const std::string& file, const std::string& tex
     if (column > 0) CHECK(e.column == column);
     for (const std::string& w : words) CHECK_MESSAGE(e.message.find(w) != std::string::npos, "message lacks '" << w << "'");
     // what() is FILE:LINE:COL: message
-    CHECK(std::string(e.what()) ==
-          file + ":" + std::to_string(e.line) + ":" + std::to_string(e.column) + ": " + e.message);
+    CHECK(std::string(e.what()) == file + ":" + std::to_string(e.line) + ":" + std::to_string(e.column) + ": " + e.message);
   } catch (const std::exception& e) {
     FAIL_CHECK("expected a SceneError, got another exception: " << e.what());
   }

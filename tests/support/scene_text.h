@@ -26,7 +26,9 @@ inline std::string vec(double x, double y) {
   return buf;
 }
 
-inline sim::world::World build(const std::string& yaml) { return sim::scene::buildWorld(sim::yaml::loadSceneText(yaml, "inline.yaml")); }
+inline sim::world::World build(const std::string& yaml) {
+  return sim::scene::buildWorld(sim::yaml::loadSceneText(yaml, "inline.yaml"));
+}
 
 // a random convex shape as YAML: a circle, a box, or a polygon with 3 to 7 vertices on a circle
 inline std::string randomShape(std::mt19937_64& rng) {
@@ -64,9 +66,8 @@ inline std::string randomBody(std::mt19937_64& rng, const char* name, double x, 
   const double speed = vx + spread * u(rng);
   const double vy = 0.2 * u(rng);
   const double omega = 3.0 * u(rng);
-  return std::string("  - {name: ") + name + ", shape: " + shape + ", density: " + num(density) +
-         ", position: " + vec(x, y) + ", angle: " + num(angle) + ", velocity: " + vec(speed, vy) +
-         ", angular_velocity: " + num(omega) + "}\n";
+  return std::string("  - {name: ") + name + ", shape: " + shape + ", density: " + num(density) + ", position: " + vec(x, y) +
+         ", angle: " + num(angle) + ", velocity: " + vec(speed, vy) + ", angular_velocity: " + num(omega) + "}\n";
 }
 
 // Newton's cradle seen from above: five equal balls, c_r = 1, no gravity, four touching, one striking

@@ -9,19 +9,19 @@
 #include "sim/world3d/world.h"
 
 namespace fixtures3d {
-using sim::world3d::Body;
-using sim::world3d::Integrator;
-using sim::world3d::Spring;
 using sim::core::kWorldAnchor;
-using sim::world3d::StepObserver;
-using sim::world3d::Vec3;
-using sim::world3d::World;
 using sim::world3d::angularMomentum;
 using sim::world3d::axisAngle;
+using sim::world3d::Body;
 using sim::world3d::energy;
+using sim::world3d::Integrator;
 using sim::world3d::makeBody;
 using sim::world3d::makeBox;
 using sim::world3d::makeEllipsoid;
+using sim::world3d::Spring;
+using sim::world3d::StepObserver;
+using sim::world3d::Vec3;
+using sim::world3d::World;
 
 // a free box of sides 0.2 × 0.4 × 0.6 m (three distinct moments), 1 kg, tilted and spun about an
 // axis off all three principal axes; no forces: L and E are constant, ω wanders

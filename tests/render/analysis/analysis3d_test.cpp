@@ -47,11 +47,12 @@ TEST_CASE("3D sweep: the work-precision slopes give each integrator's order, 1, 
   };
   const render::analysis::Sweep3dReference reference = render::analysis::sweepReference3d(def, 2.5e-4);
   CHECK(reference.name.find("rk4") != std::string::npos);
-  for (const Case& c : {Case{w3::Integrator::ExplicitEuler, 2e-3, 1}, Case{w3::Integrator::SymplecticEuler, 2e-3, 1},
-                        Case{w3::Integrator::Midpoint, 8e-3, 2}, Case{w3::Integrator::Rk4, 4e-2, 4},
-                        Case{w3::Integrator::Splitting, 8e-3, 2}}) {
+  for (const Case& c :
+       {Case{w3::Integrator::ExplicitEuler, 2e-3, 1}, Case{w3::Integrator::SymplecticEuler, 2e-3, 1},
+        Case{w3::Integrator::Midpoint, 8e-3, 2}, Case{w3::Integrator::Rk4, 4e-2, 4}, Case{w3::Integrator::Splitting, 8e-3, 2}}) {
     std::vector<render::analysis::Sweep3dRow> rows;
-    for (double h = c.from; h > c.from / 10.0; h /= 2.0) rows.push_back(render::analysis::runSweepCase3d(def, c.method, h, reference, 1));
+    for (double h = c.from; h > c.from / 10.0; h /= 2.0)
+      rows.push_back(render::analysis::runSweepCase3d(def, c.method, h, reference, 1));
     const double measured = slope(rows);
     MESSAGE(w3::kIntegratorNames.name(c.method), ": slope ", measured);
     CHECK(measured == doctest::Approx(c.order).epsilon(0.3 / c.order));

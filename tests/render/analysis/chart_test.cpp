@@ -31,7 +31,8 @@ Chart sweepChart() {
   const std::pair<const char*, double> methods[] = {{"explicit_euler", 1}, {"midpoint", 2}, {"rk4", 4}};
   for (const auto& [name, order] : methods) {
     ChartSeries s{name, {}};
-    for (double cost = 1e-4; cost <= 1.01e-2; cost *= std::sqrt(10.0)) s.points.emplace_back(order * cost, 1e-2 * std::pow(1e-4 / cost, order));
+    for (double cost = 1e-4; cost <= 1.01e-2; cost *= std::sqrt(10.0))
+      s.points.emplace_back(order * cost, 1e-2 * std::pow(1e-4 / cost, order));
     c.series.push_back(s);
   }
   return c;
@@ -46,7 +47,7 @@ Chart stabilityChart() {
   c.bars = c.barValues = true;
   c.logY = true;
   c.width = 640, c.height = 480;
-  c.barLabels = {"explicit_euler\nevent", "symplectic_euler\nevent", "rk4\nevent",
+  c.barLabels = {"explicit_euler\nevent",    "symplectic_euler\nevent",    "rk4\nevent",
                  "explicit_euler\nisolated", "symplectic_euler\nisolated", "rk4\nisolated"};
   c.series.push_back({"largest stable speed", {{3, 3.18}, {4, 3.18}, {5, 3.18}}});
   c.series.push_back({"holds up to the search's limit (at least this)", {{0, 100000}, {1, 100000}, {2, 100000}}, true});

@@ -83,9 +83,9 @@ TEST_CASE("bodies that are not a pyramid are refused, naming the box out of plac
   CHECK_FALSE(unlike.rows);
   CHECK(unlike.problem.find("'p1_0' differs from the first box") != std::string::npos);
 
-  const render::analysis::PyramidReading row = render::analysis::readPyramid(bodiesOf(
-      "bodies:\n  - {name: a, shape: {box: [1, 1]}}\n  - {name: b, shape: {box: [1, 1]}, position: [2, 0]}\n"
-      "  - {name: c, shape: {box: [1, 1]}, position: [4, 0]}\n"));
+  const render::analysis::PyramidReading row = render::analysis::readPyramid(
+      bodiesOf("bodies:\n  - {name: a, shape: {box: [1, 1]}}\n  - {name: b, shape: {box: [1, 1]}, position: [2, 0]}\n"
+               "  - {name: c, shape: {box: [1, 1]}, position: [4, 0]}\n"));
   CHECK_FALSE(row.rows);
   CHECK(row.problem.find("a second row must follow") != std::string::npos);
 }

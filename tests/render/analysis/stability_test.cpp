@@ -29,8 +29,8 @@ stability: {parameter: dt, from: 0.01}
 )";
 constexpr double kOmega = 2.0;
 
-double boundary(const char* yaml, sim::core::Integrator method, sim::world::CollisionMethod collisions = sim::world::CollisionMethod::Auto,
-                const std::string& variant = "") {
+double boundary(const char* yaml, sim::core::Integrator method,
+                sim::world::CollisionMethod collisions = sim::world::CollisionMethod::Auto, const std::string& variant = "") {
   render::analysis::Study def = study(yaml, variant);
   def.model.integrator = method;
   if (collisions != sim::world::CollisionMethod::Auto) def.model.collisions = collisions;
@@ -84,7 +84,8 @@ bodies:
 stability: {parameter: speed, body: bullet, from: 0.5, to: 10000}
 )";
   const double allowed = 0.5 * (0.05 + 0.05) * 60.0;
-  CHECK(boundary(yaml, sim::core::Integrator::SymplecticEuler, sim::world::CollisionMethod::Isolated) == doctest::Approx(allowed).epsilon(0.10));
+  CHECK(boundary(yaml, sim::core::Integrator::SymplecticEuler, sim::world::CollisionMethod::Isolated) ==
+        doctest::Approx(allowed).epsilon(0.10));
 
   render::analysis::Study def = study(yaml);
   def.model.collisions = sim::world::CollisionMethod::Event;
@@ -137,9 +138,12 @@ namespace {
 
 // a column of `height` 1 m boxes on the ground, Box2D's benchmark settings, and a stability block
 std::string boxColumn(int height, const std::string& stability) {
-  std::string yaml = "duration: 10\nworld: {gravity: [0, -10], friction: 0.6, restitution: 0}\n"
-                     "sim: {dt: 0.016666666666666667}\nstability: " + stability + "\nbodies:\n"
-                     "  - {name: ground, shape: {plane: {point: [0, 0], normal: [0, 1]}}}\n";
+  std::string yaml =
+      "duration: 10\nworld: {gravity: [0, -10], friction: 0.6, restitution: 0}\n"
+      "sim: {dt: 0.016666666666666667}\nstability: " +
+      stability +
+      "\nbodies:\n"
+      "  - {name: ground, shape: {plane: {point: [0, 0], normal: [0, 1]}}}\n";
   for (int i = 0; i < height; ++i)
     yaml += "  - {name: box" + std::to_string(i) + ", shape: {box: [1, 1]}, position: [0, " + std::to_string(0.5 + i) + "]}\n";
   return yaml;
@@ -150,10 +154,11 @@ std::string boxColumn(int height, const std::string& stability) {
 TEST_CASE("the fewest search brackets the boundary: the value it names holds, the one below fails") {
   // a scene that holds from 7 on: doubling finds 8, bisection comes down to 7 and 6
   int runs = 0;
-  const render::analysis::StabilityResult r = render::analysis::searchFewest(1.0, 64.0, [&](double n, render::analysis::RunMetrics&) {
-    ++runs;
-    return n >= 7.0;
-  });
+  const render::analysis::StabilityResult r =
+      render::analysis::searchFewest(1.0, 64.0, [&](double n, render::analysis::RunMetrics&) {
+        ++runs;
+        return n >= 7.0;
+      });
   CHECK(r.fewest);
   CHECK(r.largestStable == 7.0);
   CHECK(r.firstFailing == 6.0);

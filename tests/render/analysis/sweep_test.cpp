@@ -40,7 +40,8 @@ TEST_CASE("the spring-bar sweep's work-precision slopes give each integrator's o
   };
   const render::analysis::SweepReference reference = render::analysis::sweepReference(def, 2.5e-4);
   CHECK(reference.name.find("rk4") != std::string::npos);
-  for (const Case& c : {Case{sim::core::Integrator::ExplicitEuler, 2e-3, 2.5e-4, 1}, Case{sim::core::Integrator::SymplecticEuler, 2e-3, 2.5e-4, 1},
+  for (const Case& c : {Case{sim::core::Integrator::ExplicitEuler, 2e-3, 2.5e-4, 1},
+                        Case{sim::core::Integrator::SymplecticEuler, 2e-3, 2.5e-4, 1},
                         Case{sim::core::Integrator::Midpoint, 8e-3, 1e-3, 2}, Case{sim::core::Integrator::Rk4, 4e-2, 5e-3, 4}}) {
     std::vector<render::analysis::SweepRow> rows;
     for (double h : render::analysis::parseRange(std::to_string(c.from) + ":" + std::to_string(c.to) + ":4", "--dt"))
@@ -64,13 +65,15 @@ world: {gravity: [0, -10]}
 bodies: [{name: ball, shape: {circle: 0.1}, velocity: [1, 0]}]
 expect: [{time: 1, body: ball, position: [1, -5], tolerance: 1e-9}]
 )",
-                                               "inline.yaml");
+                                                            "inline.yaml");
   const render::analysis::SweepReference reference = render::analysis::sweepReference(def, 0.01);
   CHECK(reference.name == "expect");
   // symplectic Euler's height error is −g h t/2 = −0.05 at h = 0.01: exactly the sweep's error
-  const render::analysis::SweepRow row = render::analysis::runSweepCase(def, {sim::core::Integrator::SymplecticEuler, sim::world::CollisionMethod::Auto, 0.01, 0}, reference, 1);
+  const render::analysis::SweepRow row = render::analysis::runSweepCase(
+      def, {sim::core::Integrator::SymplecticEuler, sim::world::CollisionMethod::Auto, 0.01, 0}, reference, 1);
   CHECK(row.error == doctest::Approx(0.05).epsilon(1e-9));
-  const render::analysis::SweepRow exact = render::analysis::runSweepCase(def, {sim::core::Integrator::Midpoint, sim::world::CollisionMethod::Auto, 0.01, 0}, reference, 1);
+  const render::analysis::SweepRow exact = render::analysis::runSweepCase(
+      def, {sim::core::Integrator::Midpoint, sim::world::CollisionMethod::Auto, 0.01, 0}, reference, 1);
   CHECK(exact.error < 1e-12);
 }
 
@@ -86,19 +89,20 @@ TEST_CASE("--dt ranges are log-spaced and checked") {
 }
 
 TEST_CASE("a stack sweep: more iterations or substeps leave a 10-box column's top nearer its rest pose") {
-  std::string yaml = "duration: 10\nworld: {gravity: [0, -10], friction: 0.6, restitution: 0}\n"
-                     "sim: {dt: 0.016666666666666667}\nbodies:\n"
-                     "  - {name: ground, shape: {plane: {point: [0, 0], normal: [0, 1]}}}\n";
+  std::string yaml =
+      "duration: 10\nworld: {gravity: [0, -10], friction: 0.6, restitution: 0}\n"
+      "sim: {dt: 0.016666666666666667}\nbodies:\n"
+      "  - {name: ground, shape: {plane: {point: [0, 0], normal: [0, 1]}}}\n";
   for (int i = 0; i < 10; ++i)
     yaml += "  - {name: box" + std::to_string(i) + ", shape: {box: [1, 1]}, position: [0, " + std::to_string(0.5 + i) + "]}\n";
   const sim::scene::SceneDef def = sim::yaml::loadSceneText(yaml, "inline.yaml");
   const render::analysis::SweepReference rest{render::analysis::kRestPose, {}};
   using sim::world::CollisionMethod;
   const auto run = [&](CollisionMethod c, int iterations, int substeps) {
-    const render::analysis::SweepRow r = render::analysis::runSweepCase(
-        def, {sim::core::Integrator::SymplecticEuler, c, def.dt, iterations, substeps}, rest, 1);
+    const render::analysis::SweepRow r =
+        render::analysis::runSweepCase(def, {sim::core::Integrator::SymplecticEuler, c, def.dt, iterations, substeps}, rest, 1);
     MESSAGE(sim::world::collisionMethodName(c) << " " << iterations << " it, " << substeps << " substeps: top "
-                                                << r.topDisplacement << " m, farthest " << r.maxDisplacement << " m");
+                                               << r.topDisplacement << " m, farthest " << r.maxDisplacement << " m");
     // the error of a stack sweep is its top body's displacement, the farthest body's at least that
     CHECK(r.error == r.topDisplacement);
     CHECK(r.maxDisplacement >= r.topDisplacement);

@@ -43,5 +43,8 @@ TEST_CASE("the whole text must be the number; blanks around it are allowed") {
   CHECK_FALSE(decimalText("0.5s").has_value());
   CHECK_FALSE(decimalText("1,5").has_value());
   CHECK_FALSE(decimalText("x").has_value());
-  CHECK_FALSE(decimalText(std::string("1\0" "5", 3)).has_value());
+  CHECK_FALSE(decimalText(std::string("1\0"
+                                      "5",
+                                      3))
+                  .has_value());
 }

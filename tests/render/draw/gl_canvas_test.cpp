@@ -9,8 +9,8 @@
 using render::draw::Camera;
 using render::draw::Color;
 using render::draw::Image;
-using render::draw::Role;
 using render::draw::Pen;
+using render::draw::Role;
 using sim::core::Vec2;
 
 namespace {
@@ -132,7 +132,8 @@ TEST_CASE_FIXTURE(Fixture, "frames past the stencil's 255 values, into a reused 
 }
 
 TEST_CASE("supersampled and multisampled contexts both give frames of the output size") {
-  for (const render::draw::Antialiasing aa : {render::draw::Antialiasing{1, 1}, render::draw::Antialiasing{2, 1}, render::draw::Antialiasing{1, 4}}) {
+  for (const render::draw::Antialiasing aa :
+       {render::draw::Antialiasing{1, 1}, render::draw::Antialiasing{2, 1}, render::draw::Antialiasing{1, 4}}) {
     render::draw::GlContext gl(64, 32, aa);
     render::draw::TextRenderer text;
     const render::draw::Style style = testStyle();

@@ -12,8 +12,8 @@ using namespace render::draw3d;
 TEST_CASE("a camera looking at a point: it lands on the principal point, right is right and up is up") {
   const Camera3d c(Vec3(0, -5, 0), Vec3::Zero(), Vec3::UnitZ(), 40.0, 640, 360, Vec2(320, 180), 1.0, 10.0);
   CHECK((c.toPixel(Vec3::Zero()) - Vec2(320, 180)).norm() < 1e-12);
-  CHECK(c.toPixel(Vec3(1, 0, 0)).x() > 320);   // +x is to the right seen from −y
-  CHECK(c.toPixel(Vec3(0, 0, 1)).y() < 180);   // +z is up: a smaller row
+  CHECK(c.toPixel(Vec3(1, 0, 0)).x() > 320);  // +x is to the right seen from −y
+  CHECK(c.toPixel(Vec3(0, 0, 1)).y() < 180);  // +z is up: a smaller row
   // the focal length from the field of view: 180 px over tan 20°
   CHECK(c.focalPx() == doctest::Approx(180.0 / std::tan(20.0 * std::numbers::pi / 180.0)));
   CHECK(c.viewHeight() == doctest::Approx(2 * 5 * std::tan(20.0 * std::numbers::pi / 180.0)));

@@ -36,7 +36,8 @@ TEST_CASE("the energy panel of an elastic impact writes one E throughout, before
       "duration: 1.2\nworld: {restitution: 1}\nsim: {collisions: event}\n"
       "bodies:\n"
       "  - {name: floor, shape: {plane: {point: [0, 0], normal: [0, 1]}}}\n"
-      "  - {name: bar, shape: {box: [2.0, 0.2]}, mass: 1.3, position: [0, 1.3910538555739002], angle: 0.3, velocity: [0.1, -2.17], angular_velocity: 0.77}\n"
+      "  - {name: bar, shape: {box: [2.0, 0.2]}, mass: 1.3, position: [0, 1.3910538555739002], angle: 0.3, velocity: [0.1, "
+      "-2.17], angular_velocity: 0.77}\n"
       "render: {energy: true}\n");
   const render::frame::RunSurvey survey = render::frame::surveyRun(def);
   REQUIRE_FALSE(survey.impactTimes.empty());

@@ -22,7 +22,8 @@ bodies:
 render: {size: [320, 180], camera: {center: [0, 0], height: 10}, energy: true, momentum: true}
 )";
 
-DrawList panelAt(const std::string& yaml, render::draw::Camera* cameraOut = nullptr, render::frame::RunSurvey* surveyOut = nullptr) {
+DrawList panelAt(const std::string& yaml, render::draw::Camera* cameraOut = nullptr,
+                 render::frame::RunSurvey* surveyOut = nullptr) {
   const render::scene::Scene def = drawn_scene::load(yaml);
   const render::frame::RunSurvey survey = render::frame::surveyRun(def);
   if (surveyOut) *surveyOut = survey;
@@ -46,8 +47,8 @@ TEST_CASE("the panel: ½mv² and ½Iω² of each moving body, the total, then p 
   std::vector<std::string> texts;
   for (const auto& c : list.calls())
     if (c.kind == DrawList::Kind::Text) texts.push_back(c.text);
-  CHECK(texts == std::vector<std::string>{"ball ½mv² = 9.00 J", "ball ½Iω² = 2.00 J", "E = 11.0 J",
-                                           "p = (6.00, 0) kg·m/s", "L = −4.00 kg·m²/s"});
+  CHECK(texts == std::vector<std::string>{"ball ½mv² = 9.00 J", "ball ½Iω² = 2.00 J", "E = 11.0 J", "p = (6.00, 0) kg·m/s",
+                                          "L = −4.00 kg·m²/s"});
   // the panel first, its right edge half a line (5.5 px) in from the frame's
   const auto& panel = list.calls()[0];
   CHECK(panel.style.role == Role::Panel);

@@ -132,8 +132,8 @@ TEST_CASE("contacts touching now are dots with normals into the moving body") {
   for (const std::string& l : frameAt(resting, 0.5).lines())
     if (l.find("Contact") != std::string::npos) contacts.push_back(l.substr(0, l.find(' ', 6)));
   // two manifold points, each a normal (pointing up, into the box) and a dot
-  CHECK(contacts == std::vector<std::string>{"arrow ContactNormal", "point ContactPoint", "arrow ContactNormal",
-                                             "point ContactPoint"});
+  CHECK(contacts ==
+        std::vector<std::string>{"arrow ContactNormal", "point ContactPoint", "arrow ContactNormal", "point ContactPoint"});
 }
 
 TEST_CASE("the caption: wrapped at the bottom left, at most two lines; the slow-motion note under the time") {
@@ -279,9 +279,11 @@ TEST_CASE("labels: true and contacts: true keep every label and every normal, ho
 
 TEST_CASE("labels: auto in a larger scene writes a label only where it fits inside its body") {
   // 25 bodies: big boxes with short names, and small ones that cannot hold theirs
-  std::string yaml = "name: fit\nduration: 0.1\nworld: {gravity: [0, 0]}\nsim: {collisions: none}\n"
-                     "render: {size: [640, 360], camera: {center: [0, 0], height: 30}}\nbodies:\n";
-  for (int i = 0; i < 5; ++i) yaml += "  - {name: B" + std::to_string(i) + ", shape: {box: [4, 4]}, position: [" + std::to_string(-20 + 9 * i) + ", 8]}\n";
+  std::string yaml =
+      "name: fit\nduration: 0.1\nworld: {gravity: [0, 0]}\nsim: {collisions: none}\n"
+      "render: {size: [640, 360], camera: {center: [0, 0], height: 30}}\nbodies:\n";
+  for (int i = 0; i < 5; ++i)
+    yaml += "  - {name: B" + std::to_string(i) + ", shape: {box: [4, 4]}, position: [" + std::to_string(-20 + 9 * i) + ", 8]}\n";
   for (int i = 0; i < 20; ++i)
     yaml += "  - {name: small_box_" + std::to_string(i) + ", shape: {box: [0.5, 0.5]}, position: [" +
             std::to_string(-20 + 2 * i) + ", -5]}\n";
@@ -291,10 +293,12 @@ TEST_CASE("labels: auto in a larger scene writes a label only where it fits insi
     if (t.pen.role == render::draw::Role::Label) labels.push_back(t.text);
   CHECK(labels == std::vector<std::string>{"B0", "B1", "B2", "B3", "B4"});
   // a scene of at most 20 bodies keeps all its labels
-  std::string few = "name: few\nduration: 0.1\nworld: {gravity: [0, 0]}\nsim: {collisions: none}\n"
-                    "render: {size: [640, 360], camera: {center: [0, 0], height: 30}}\nbodies:\n";
+  std::string few =
+      "name: few\nduration: 0.1\nworld: {gravity: [0, 0]}\nsim: {collisions: none}\n"
+      "render: {size: [640, 360], camera: {center: [0, 0], height: 30}}\nbodies:\n";
   for (int i = 0; i < 3; ++i)
-    few += "  - {name: small_box_" + std::to_string(i) + ", shape: {box: [0.5, 0.5]}, position: [" + std::to_string(-10 + 8 * i) + ", 0]}\n";
+    few += "  - {name: small_box_" + std::to_string(i) + ", shape: {box: [0.5, 0.5]}, position: [" + std::to_string(-10 + 8 * i) +
+           ", 0]}\n";
   size_t shown = 0;
   for (const render::frame::PlacedText& t : pyramidFrame(few, 0.0).placed) shown += t.pen.role == render::draw::Role::Label;
   CHECK(shown == 3);

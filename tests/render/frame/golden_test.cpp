@@ -23,9 +23,9 @@
 #include "support/golden_compare.h"
 
 namespace fs = std::filesystem;
+using golden::checkGolden;
 using render::draw::Image;
 using render::draw::Role;
-using golden::checkGolden;
 
 namespace {
 
@@ -156,9 +156,10 @@ TEST_CASE("golden: bodies of every shape, static ones hatched, a half-plane, lab
 
 // Box2D's pyramid, base 20 (210 boxes of 1 m) resting, soft_step: a frame of about 800 contact points
 std::string densePyramid() {
-  std::string yaml = "name: golden_pyramid\nduration: 0.5\nworld: {gravity: [0, -10], friction: 0.6}\n"
-                     "sim: {collisions: soft_step, dt: 0.016666666666666667}\nrender: {size: [640, 360]}\n"
-                     "bodies:\n  - {name: ground, shape: {box: [40, 1]}, position: [3.7, -0.5], static: true}\n";
+  std::string yaml =
+      "name: golden_pyramid\nduration: 0.5\nworld: {gravity: [0, -10], friction: 0.6}\n"
+      "sim: {collisions: soft_step, dt: 0.016666666666666667}\nrender: {size: [640, 360]}\n"
+      "bodies:\n  - {name: ground, shape: {box: [40, 1]}, position: [3.7, -0.5], static: true}\n";
   for (int r = 0; r < 20; ++r)
     for (int j = 0; j < 20 - r; ++j)
       yaml += "  - {name: b" + std::to_string(r) + "_" + std::to_string(j) + ", shape: {box: [1, 1]}, position: [" +
@@ -174,9 +175,7 @@ TEST_CASE("golden: an impact's contact point, normal and impulses") { checkGolde
 
 TEST_CASE("golden: the impact held on screen, half faded") { checkGolden("impact_fading", frame(kImpact, 1.0)); }
 
-TEST_CASE("golden: an event's impulse arrow, held after it strikes") {
-  checkGolden("event_impulse", frame(kPoll, 0.6, "end"));
-}
+TEST_CASE("golden: an event's impulse arrow, held after it strikes") { checkGolden("event_impulse", frame(kPoll, 0.6, "end")); }
 
 TEST_CASE("golden: trails and velocity arrows") { checkGolden("trails_velocities", frame(kProjectile, 1.0)); }
 
@@ -185,8 +184,8 @@ TEST_CASE("golden: a strobe image") { checkGolden("strobe", frame(kProjectile, 1
 TEST_CASE("golden: the poll panel sheet, A, B and C at the same instant, as `snapshot --panels` plans it") {
   // a 320 × 180 sheet: three panels as 2 × 2, their titles and the caption once under them
   const auto load = [](const std::string& v) { return drawn_scene::load(kPoll, v); };
-  const render::video::RenderPlan plan =
-      render::video::planStills(load, {.file = "poll.yaml", .times = {1.5}, .panels = true, .size = render::video::FrameSize{320, 180}});
+  const render::video::RenderPlan plan = render::video::planStills(
+      load, {.file = "poll.yaml", .times = {1.5}, .panels = true, .size = render::video::FrameSize{320, 180}});
   const render::video::Stills& stills = *plan.stills;
   render::draw::GlContext gl(stills.width, stills.height);
   render::draw::TextRenderer text;
@@ -233,7 +232,8 @@ bodies:
   - {name: base, shape: {box: [2, 0.5]}, position: [0, 0.25], static: true}
   - {name: box, shape: {box: [0.6, 0.4]}, position: [0.1, 0.85], angle: 0.3}
 render: {sat: true, size: [320, 180], camera: {center: [0, 0.5], height: 1.6}, line_width: 1.5}
-)", 0.0));
+)",
+                                 0.0));
 }
 
 TEST_CASE("golden: a title card shows only the card: the title and the description, no bodies, clock or caption") {
@@ -258,7 +258,8 @@ TEST_CASE("golden: a title card shows only the card: the title and the descripti
 
 TEST_CASE("golden: a caption of two lines and the slow-motion note of a video frame") {
   InlineRun lecture(kPoll, "lecture");
-  const render::video::TimeMap map = render::video::timeMapFor(lecture.def.render, lecture.survey.impactTimes, lecture.def.model.duration);
+  const render::video::TimeMap map =
+      render::video::timeMapFor(lecture.def.render, lecture.survey.impactTimes, lecture.def.model.duration);
   lecture.run.showSlowMotion([&map](double t) { return map.factorAt(t); });
   checkGolden("caption", lecture.run.frameAt(0.6));
 }

@@ -9,20 +9,20 @@
 #include "sim/yaml/scene_yaml.h"
 
 using render::draw::DrawList;
-using render::frame::History;
 using render::draw::Role;
+using render::frame::History;
 
 namespace {
 
 // a ball moving right at 1 m/s, and a kick at t = 0.5
 sim::world::World ballWorld() {
-  return sim::scene::buildWorld(sim::yaml::loadSceneText(
-      "duration: 2\n"
-      "bodies:\n"
-      "  - {name: ball, shape: {circle: 0.5}, velocity: [1, 0]}\n"
-      "events:\n"
-      "  - {time: 0.5, body: ball, impulse: [0, 2], point: [0, 0]}\n",
-      "inline.yaml"));
+  return sim::scene::buildWorld(
+      sim::yaml::loadSceneText("duration: 2\n"
+                               "bodies:\n"
+                               "  - {name: ball, shape: {circle: 0.5}, velocity: [1, 0]}\n"
+                               "events:\n"
+                               "  - {time: 0.5, body: ball, impulse: [0, 2], point: [0, 0]}\n",
+                               "inline.yaml"));
 }
 
 // a made-up contact while the ball's center is in [0.2, 0.4] (with room for round-off)
@@ -120,14 +120,14 @@ TEST_CASE("a trail kept at its drawing spacing draws as the trail of every step,
 
 TEST_CASE("an impact shows its point, its normal and the impulse on the moving body, then fades") {
   // a ball (A, body 0) at 1 m/s meets a static wall (B) whose face is at x = 1.5 at t = 1
-  sim::world::World w = sim::scene::buildWorld(sim::yaml::loadSceneText(
-      "duration: 2\n"
-      "world: {restitution: 1}\n"
-      "sim: {collisions: event}\n"
-      "bodies:\n"
-      "  - {name: ball, shape: {circle: 0.5}, mass: 2, velocity: [1, 0]}\n"
-      "  - {name: wall, shape: {box: [1, 4]}, position: [2, 0], static: true}\n",
-      "inline.yaml"));
+  sim::world::World w =
+      sim::scene::buildWorld(sim::yaml::loadSceneText("duration: 2\n"
+                                                      "world: {restitution: 1}\n"
+                                                      "sim: {collisions: event}\n"
+                                                      "bodies:\n"
+                                                      "  - {name: ball, shape: {circle: 0.5}, mass: 2, velocity: [1, 0]}\n"
+                                                      "  - {name: wall, shape: {box: [1, 4]}, position: [2, 0], static: true}\n",
+                                                      "inline.yaml"));
   History h(w, {false, 0.5, false, true, 0.25, 1.0, {}});
   w.advanceTo(1.1, &h);
   DrawList shown;
@@ -146,14 +146,14 @@ TEST_CASE("an impact shows its point, its normal and the impulse on the moving b
 
 TEST_CASE("a pair that hits again replaces its last impact instead of piling up arrows") {
   // a ball bouncing on a floor (A, static: the normal turns to point into the ball)
-  sim::world::World w = sim::scene::buildWorld(sim::yaml::loadSceneText(
-      "duration: 3\n"
-      "world: {gravity: [0, -10], restitution: 0.5}\n"
-      "sim: {collisions: event}\n"
-      "bodies:\n"
-      "  - {name: floor, shape: {plane: {point: [0, 0], normal: [0, 1]}}}\n"
-      "  - {name: ball, shape: {circle: 0.1}, position: [0, 0.3]}\n",
-      "inline.yaml"));
+  sim::world::World w =
+      sim::scene::buildWorld(sim::yaml::loadSceneText("duration: 3\n"
+                                                      "world: {gravity: [0, -10], restitution: 0.5}\n"
+                                                      "sim: {collisions: event}\n"
+                                                      "bodies:\n"
+                                                      "  - {name: floor, shape: {plane: {point: [0, 0], normal: [0, 1]}}}\n"
+                                                      "  - {name: ball, shape: {circle: 0.1}, position: [0, 0.3]}\n",
+                                                      "inline.yaml"));
   History h(w, {false, 2.0, false, true, 0.0, 0.5, {}});
   // the bounces pile up by t = 0.2 · 1.5 / 0.5 = 0.6 s
   w.advanceTo(1.0, &h);

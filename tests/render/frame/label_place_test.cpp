@@ -23,7 +23,8 @@ namespace {
 // 6 px per character
 Camera camera() { return Camera(Vec2::Zero(), 1.0, 200, 100); }
 LabelPlacer placer(DrawList& list) {
-  return LabelPlacer(list, camera(), 10, [](const std::string& s) { return 6 * static_cast<int>(render::draw::decodeUtf8(s).size()); });
+  return LabelPlacer(list, camera(), 10,
+                     [](const std::string& s) { return 6 * static_cast<int>(render::draw::decodeUtf8(s).size()); });
 }
 const Pen kLabel{Role::Label, -1, 1.0};
 
@@ -130,7 +131,8 @@ TEST_CASE("a dropped label's warning names its first 60 bytes, cut before a UTF-
   big.text = std::string(59, 'a') + "\xc3\xa9" + std::string(1 << 20, 'b');
   dropped.report({big}, 0.5);
   REQUIRE(said.size() == 1);
-  CHECK(said[0] == "label '" + std::string(59, 'a') + "… (1048637 bytes)' dropped at t = 0.500 s: no free spot for it in the frame");
+  CHECK(said[0] ==
+        "label '" + std::string(59, 'a') + "… (1048637 bytes)' dropped at t = 0.500 s: no free spot for it in the frame");
 }
 
 TEST_CASE("no label covers the anchor of another, even where that would be its nearest spot") {

@@ -13,7 +13,8 @@ TEST_CASE("the grid: side by side, 2 × 2, then rows; every panel inside the she
     size_t n;
     int columns, rows;
   };
-  for (const Want& w : {Want{1, 1, 1}, Want{2, 2, 1}, Want{3, 2, 2}, Want{4, 2, 2}, Want{5, 3, 2}, Want{9, 3, 3}, Want{10, 4, 3}}) {
+  for (const Want& w :
+       {Want{1, 1, 1}, Want{2, 2, 1}, Want{3, 2, 2}, Want{4, 2, 2}, Want{5, 3, 2}, Want{9, 3, 3}, Want{10, 4, 3}}) {
     INFO(w.n, " panels");
     const render::frame::PanelGrid g = panelGrid(w.n, 1920, 1080, true);
     CHECK(g.columns == w.columns);

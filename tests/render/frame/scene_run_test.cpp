@@ -23,8 +23,8 @@ std::string exact(const DrawList& list) {
   std::string s;
   char buf[64];
   for (const DrawList::Call& c : list.calls()) {
-    std::snprintf(buf, sizeof buf, "%d %d/%d/%d/%.17g ", static_cast<int>(c.kind), static_cast<int>(c.style.role),
-                  c.style.body, c.style.color, c.style.opacity);
+    std::snprintf(buf, sizeof buf, "%d %d/%d/%d/%.17g ", static_cast<int>(c.kind), static_cast<int>(c.style.role), c.style.body,
+                  c.style.color, c.style.opacity);
     s += buf;
     for (const sim::core::Vec2& p : c.points) {
       std::snprintf(buf, sizeof buf, "(%.17g,%.17g) ", p.x(), p.y());
@@ -135,7 +135,8 @@ struct StepLog : sim::world::StepObserver {
 
 TEST_CASE("the run's own steps are the scene's grid, whatever the pictures' times") {
   // a timed impulse between grid points (rk4, dt 1 ms) and the event method's impacts
-  for (const auto& [fileBound, name] : {std::pair{"scenes/poll_bar_impulse.yaml", "end"}, std::pair{"scenes/three_collisions_poll.yaml", "C"}}) {
+  for (const auto& [fileBound, name] :
+       {std::pair{"scenes/poll_bar_impulse.yaml", "end"}, std::pair{"scenes/three_collisions_poll.yaml", "C"}}) {
     // a copy: clang 14 cannot capture a structured binding in CAPTURE (make sanitize builds with it)
     const char* const file = fileBound;
     CAPTURE(file);

@@ -78,8 +78,9 @@ TEST_CASE("velocity at a body point is v + ω × R r_b, labeled with its magnitu
 }
 
 TEST_CASE("offset r′ = R r_b from the center of mass, `at` as written before the centroid shift") {
-  const Drawn d = arrowsAt("    - {body: bar, show: offset, at: [0, 1]}\n"
-                           "    - {body: tri, show: offset, at: [0, 0], label: corner}\n");
+  const Drawn d = arrowsAt(
+      "    - {body: bar, show: offset, at: [0, 1]}\n"
+      "    - {body: tri, show: offset, at: [0, 0], label: corner}\n");
   REQUIRE(d.list.calls().size() == 4);
   checkPoint(d.list.calls()[0].points[0], Vec2::Zero());
   checkPoint(d.list.calls()[0].points[1], kTop);
@@ -91,8 +92,9 @@ TEST_CASE("offset r′ = R r_b from the center of mass, `at` as written before t
 }
 
 TEST_CASE("force at its point, momentum from the center, each by its scale") {
-  const Drawn d = arrowsAt("    - {body: bar, show: force, value: true}\n"
-                           "    - {body: bar, show: momentum, color: '#ff0000'}\n");
+  const Drawn d = arrowsAt(
+      "    - {body: bar, show: force, value: true}\n"
+      "    - {body: bar, show: momentum, color: '#ff0000'}\n");
   REQUIRE(d.list.calls().size() == 4);
   checkPoint(d.list.calls()[0].points[0], kTop);
   checkPoint(d.list.calls()[0].points[1], kTop + 0.5 * Vec2(0, 3));

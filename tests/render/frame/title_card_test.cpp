@@ -61,8 +61,8 @@ TEST_CASE("a card's text is laid out whole: at its size when it fits, in smaller
 }
 
 TEST_CASE("a card that cannot fit is refused at the question's FILE:LINE:COL, before anything renders") {
-  const render::scene::Scene s = drawn_scene::load(
-      drawn_scene::bounce("1", "question: " + words(3000) + "\nrender: {title_card: 2}\n"), "", "long.yaml");
+  const render::scene::Scene s =
+      drawn_scene::load(drawn_scene::bounce("1", "question: " + words(3000) + "\nrender: {title_card: 2}\n"), "", "long.yaml");
   render::draw::TextRenderer text;
   try {
     render::frame::sceneCard(s.render, s.model.name, s.model.description, false, 1280, 720, text);

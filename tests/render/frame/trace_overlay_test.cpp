@@ -29,7 +29,8 @@ render::scene::Scene withOverlay(render::scene::Scene scene) {
   auto overlay = std::make_shared<render::scene::TraceOverlayDef>();
   overlay->name = "theirs.csv";
   overlay->poseAt = [](size_t body, double t, render::scene::TraceOverlayDef::Pose& pose) {
-    pose = body == 0 ? render::scene::TraceOverlayDef::Pose{{t, 0.6}, 0.0} : render::scene::TraceOverlayDef::Pose{{2, 0.6}, t + 0.5};
+    pose =
+        body == 0 ? render::scene::TraceOverlayDef::Pose{{t, 0.6}, 0.0} : render::scene::TraceOverlayDef::Pose{{2, 0.6}, t + 0.5};
     return true;
   };
   scene.render.overlay = overlay;
@@ -68,8 +69,8 @@ TEST_CASE("with --overlay, a frame's calls are its calls without, plus dashed ou
     else kept.push_back(lines[i]);
   }
   CHECK(kept == without.lines());
-  CHECK(legend == 3);   // the solid sample and the two names
-  CHECK(dashes > 20);   // dashed: many segments around each outline
+  CHECK(legend == 3);  // the solid sample and the two names
+  CHECK(dashes > 20);  // dashed: many segments around each outline
   // every dash lies on their outline: the ball's circle (radius 0.25 around (0.5, 0.6)) or radius,
   // or the box's edges, half-width 0.25 around (2, 0.6) turned by 1 rad; the legend's in the corner
   const Vec2 ball(0.5, 0.6), box(2, 0.6);

@@ -27,8 +27,9 @@ TEST_CASE("without a golden: block, the end and the impacts at 640x360, toleranc
 }
 
 TEST_CASE("every key of the block is read") {
-  const GoldenDef d = read("golden: {at: [0.5, 2], impacts: false, size: [320, 180], tolerance: {position: 1e-6, angle: 2e-6, velocity: 3e-6},"
-                           " pixel_tolerance: 10, pixel_fraction: 0.01}\n");
+  const GoldenDef d = read(
+      "golden: {at: [0.5, 2], impacts: false, size: [320, 180], tolerance: {position: 1e-6, angle: 2e-6, velocity: 3e-6},"
+      " pixel_tolerance: 10, pixel_fraction: 0.01}\n");
   CHECK(d.at == std::vector<double>{0.5, 2});
   CHECK_FALSE(d.impacts);
   CHECK(d.width == 320);

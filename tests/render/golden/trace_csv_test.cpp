@@ -18,7 +18,8 @@ const sim::scene::SceneDef kScene = sim::yaml::loadSceneText(R"(
 bodies:
   - {name: a, shape: {circle: 0.5}, velocity: [1, 0]}
   - {name: b, shape: {circle: 0.5}, position: [3, 0]}
-)", "two.yaml");
+)",
+                                                             "two.yaml");
 
 Trace read(const std::string& text) { return traceText(text, "theirs.csv", kScene); }
 
@@ -62,12 +63,16 @@ TEST_CASE("two rows at one time: the later after an event, the earlier before it
 }
 
 TEST_CASE("a malformed trace is refused at its line and column") {
-  const auto load = [](const std::string& text, const std::string& file, const std::string&) { return traceText(text, file, kScene); };
+  const auto load = [](const std::string& text, const std::string& file, const std::string&) {
+    return traceText(text, file, kScene);
+  };
   const std::string header = "t,body,x,y,angle,vx,vy,omega\n";
-  scene_errors::expectSceneError(load, "theirs.csv", header + "0,a,0,0,0,1,0,0\n0.1,a,0.1,nan,0,1,0,0\n", 3, 11, {"finite number", "'y'"});
+  scene_errors::expectSceneError(load, "theirs.csv", header + "0,a,0,0,0,1,0,0\n0.1,a,0.1,nan,0,1,0,0\n", 3, 11,
+                                 {"finite number", "'y'"});
   scene_errors::expectSceneError(load, "theirs.csv", header + "0,c,0,0,0,1,0,0\n", 2, 3, {"no body named 'c'", "a, b"});
   scene_errors::expectSceneError(load, "theirs.csv", header + "0,a,0,0,0,1,0\n", 2, 1, {"expected 8 comma-separated values"});
-  scene_errors::expectSceneError(load, "theirs.csv", header + "1,a,0,0,0,1,0,0\n0.5,a,0,0,0,1,0,0\n", 3, 1, {"time goes back for 'a'", "line 2"});
+  scene_errors::expectSceneError(load, "theirs.csv", header + "1,a,0,0,0,1,0,0\n0.5,a,0,0,0,1,0,0\n", 3, 1,
+                                 {"time goes back for 'a'", "line 2"});
   scene_errors::expectSceneError(load, "theirs.csv", "t,body,x,y,angle,vx,vy\n0,a,0,0,0,1,0\n", 1, 1, {"no column 'omega'"});
   scene_errors::expectSceneError(load, "theirs.csv", header, 1, 1, {"no rows"});
 }

@@ -71,8 +71,8 @@ TEST_CASE("two at a time runs two at once") {
   // each job holds a slot and waits (up to 10 s) for the other to hold one: only jobs that run at
   // the same time both see 2; run one after the other, each would give up and see 1
   const std::string job = "mkdir " + slots + "/$$; for i in $(seq 200); do [ $(ls " + slots +
-                          " | wc -l) -ge 2 ] && break; sleep 0.05; done; ls " + slots + " | wc -l; sleep 0.1; rmdir " +
-                          slots + "/$$";
+                          " | wc -l) -ge 2 ] && break; sleep 0.05; done; ls " + slots + " | wc -l; sleep 0.1; rmdir " + slots +
+                          "/$$";
   for (const render::jobs::JobResult& r : runAll({shell(job), shell(job)}, 2)) CHECK(std::stoul(r.output) == 2);
   fs::remove_all(dir);
 }

@@ -45,8 +45,8 @@ void spit(const fs::path& p, const std::string& text) { std::ofstream(p) << text
 // a real MP4 (H.264, as the renderer writes) and a PNG, made by ffmpeg
 void makeVideo(const fs::path& p, int w, int h, double seconds) {
   const std::string command = "ffmpeg -v error -y -f lavfi -i testsrc=size=" + std::to_string(w) + "x" + std::to_string(h) +
-                              ":rate=10 -t " + std::to_string(seconds) +
-                              " -c:v libx264 -pix_fmt yuv420p -movflags +faststart '" + p.string() + "'";
+                              ":rate=10 -t " + std::to_string(seconds) + " -c:v libx264 -pix_fmt yuv420p -movflags +faststart '" +
+                              p.string() + "'";
   REQUIRE(std::system(command.c_str()) == 0);
 }
 void makePng(const fs::path& p, int w, int h) {
@@ -64,7 +64,8 @@ SceneRecord impulses() {
   r.question = "Which moves faster, <A> or B?";
   r.answer = "Both at 1/3 m/s; only B turns.";
   r.seconds = 1.25;
-  r.videos = {{"center", "05_impulses-center.mp4", "05_impulses-center.png", 10}, {"end", "05_impulses-end.mp4", "05_impulses-end.png", 10}};
+  r.videos = {{"center", "05_impulses-center.mp4", "05_impulses-center.png", 10},
+              {"end", "05_impulses-end.mp4", "05_impulses-end.png", 10}};
   r.panels = {{"05_impulses-panels-t0.png", "t = 0 s", true}, {"05_impulses-panels-t2.5.png", "t = 2.5 s", false, true}};
   r.checks = {{"end", 2.5, "bar.angular_velocity", {-0.5}, {-0.5000000000000001}, 1.1e-16, 1e-9},
               {"end", 2.5, "bar.velocity", {1.0 / 3, 0}, {1.0 / 3, NAN}, 0.2, 1e-9}};
@@ -180,8 +181,10 @@ TEST_CASE("the page: a section per scene with its videos, posters, panels as que
   CHECK(html.find("<h2><span class=\"muted\">05</span> Impulses</h2>") != std::string::npos);
   CHECK(html.find("<title>Lecture pack: 1 scenes</title>") != std::string::npos);
   CHECK(html.find("<section id=\"scene-05_impulses\">") != std::string::npos);
-  CHECK(html.find("<video controls preload=\"metadata\" width=\"160\" height=\"90\" poster=\"05_impulses/05_impulses-center.png\" "
-                  "data-duration=\"1.5\" style=\"--ratio: 0.5625\"><source src=\"05_impulses/05_impulses-center.mp4\" type=\"video/mp4\">") != std::string::npos);
+  CHECK(
+      html.find("<video controls preload=\"metadata\" width=\"160\" height=\"90\" poster=\"05_impulses/05_impulses-center.png\" "
+                "data-duration=\"1.5\" style=\"--ratio: 0.5625\"><source src=\"05_impulses/05_impulses-center.mp4\" "
+                "type=\"video/mp4\">") != std::string::npos);
   CHECK(html.find("<span class=\"question\">question</span> · t = 0 s") != std::string::npos);
   CHECK(html.find("<span class=\"answer\">answer</span> · t = 2.5 s") != std::string::npos);
   CHECK(html.find("width=\"320\" height=\"90\"") != std::string::npos);
@@ -196,7 +199,8 @@ TEST_CASE("the page: a section per scene with its videos, posters, panels as que
   CHECK(html.find("<table>") != std::string::npos);
   size_t tables = 0, boxed = 0;
   for (size_t at = html.find("<table>"); at != std::string::npos; at = html.find("<table>", at + 1)) ++tables;
-  for (size_t at = html.find("<div class=\"table\">\n<table>"); at != std::string::npos; at = html.find("<div class=\"table\">\n<table>", at + 1))
+  for (size_t at = html.find("<div class=\"table\">\n<table>"); at != std::string::npos;
+       at = html.find("<div class=\"table\">\n<table>", at + 1))
     ++boxed;
   CHECK(tables == 2);
   CHECK(boxed == tables);
@@ -211,7 +215,8 @@ TEST_CASE("the page: the question above the videos, the answer only inside a clo
   r.panels.push_back({"05_impulses-panels-t1.png", "t = 1 s", false, false});
   writeScene(dir.path, r);
   const std::string html = pageHtml(readPack(dir.path.string()));
-  const size_t question = html.find("<p class=\"poll-question\"><strong>Question.</strong> Which moves faster, &lt;A&gt; or B?</p>");
+  const size_t question =
+      html.find("<p class=\"poll-question\"><strong>Question.</strong> Which moves faster, &lt;A&gt; or B?</p>");
   const size_t video = html.find("<video");
   const size_t details = html.find("<details class=\"poll-answer\"><summary>Answer</summary>");
   REQUIRE(question != std::string::npos);
@@ -265,7 +270,8 @@ TEST_CASE("closed forms and values an earlier run gave are headed apart") {
   CHECK(scenes[0].record.checks[1].earlierRun);
   CHECK_FALSE(scenes[0].record.checks[0].earlierRun);
   const std::string html = pageHtml(scenes);
-  const size_t closed = html.find("<h3>Closed forms, checked</h3>"), earlier = html.find("<h3>Checked against an earlier run</h3>");
+  const size_t closed = html.find("<h3>Closed forms, checked</h3>"),
+               earlier = html.find("<h3>Checked against an earlier run</h3>");
   REQUIRE(closed != std::string::npos);
   REQUIRE(earlier != std::string::npos);
   // each table has its own row and its own column heading
@@ -347,7 +353,8 @@ TEST_CASE("the page is built from what the folder holds; a file a record names m
   spit(dir.path / "05_impulses" / "05_impulses-end.png", "not a png");
   CHECK(errorOf([&] { writePage(dir.path.string()); }).find("'05_impulses-end.png' is not a readable PNG") != std::string::npos);
   fs::rename(dir.path / "02_other", dir.path / "03_moved");
-  CHECK(errorOf([&] { readPack(dir.path.string()); }).find("names scene '02_other' but lies in folder '03_moved'") != std::string::npos);
+  CHECK(errorOf([&] { readPack(dir.path.string()); }).find("names scene '02_other' but lies in folder '03_moved'") !=
+        std::string::npos);
 }
 
 TEST_CASE("jobs that end together never lose a scene from the page: one writer at a time, the last sees all") {

@@ -21,7 +21,8 @@ TEST_CASE("timing and text are off by default") {
 }
 
 TEST_CASE("title, title_card, caption and slow_motion are read in each of their forms") {
-  const render::scene::RenderDef r = renderOf("render: {title: Impulses, title_card: 2.5, caption: true, slow_motion: {factor: 4, window: 0.2}}");
+  const render::scene::RenderDef r =
+      renderOf("render: {title: Impulses, title_card: 2.5, caption: true, slow_motion: {factor: 4, window: 0.2}}");
   CHECK(r.title == "Impulses");
   CHECK(r.titleCard == 2.5);
   CHECK(r.captionFromDescription);

@@ -84,7 +84,7 @@ TEST_CASE("every key is read") {
   CHECK(r.colors[Role::StaticBody] == "#010203");
   CHECK(r.colors[Role::ContactPoint] == "#aabbcc");
   CHECK(r.colors[Role::Label] == "#ffffff");
-  CHECK(r.colors[Role::Caption] == "#ffffff");  // both text roles take the key `text`
+  CHECK(r.colors[Role::Caption] == "#ffffff");        // both text roles take the key `text`
   CHECK(r.colors[Role::ContactNormal] == "#d55e00");  // untouched keys keep their defaults
   CHECK_FALSE(r.camera.automatic);
   CHECK(r.camera.center == sim::core::Vec2(1, 2));
@@ -184,18 +184,18 @@ TEST_CASE("the lecture overlays are off by default") {
 
 TEST_CASE("arrows name their body and what to show; the other overlay keys are read") {
   const render::scene::OverlaysDef o = renderOf(
-                                 "render:\n"
-                                 "  arrows:\n"
-                                 "    - {body: a, show: velocity, at: [0, 2], value: true}\n"
-                                 "    - {body: a, show: torque, label: tau, color: '#00ff00'}\n"
-                                 "  force_scale: 0.5\n"
-                                 "  momentum_scale: 0.25\n"
-                                 "  impact_values: true\n"
-                                 "  energy: yes\n"
-                                 "  momentum: true\n"
-                                 "  sat_axes: true\n"
-                                 "  colors: {force: '#010203', panel: '#eeeeee'}\n")
-                                 .overlays;
+                                           "render:\n"
+                                           "  arrows:\n"
+                                           "    - {body: a, show: velocity, at: [0, 2], value: true}\n"
+                                           "    - {body: a, show: torque, label: tau, color: '#00ff00'}\n"
+                                           "  force_scale: 0.5\n"
+                                           "  momentum_scale: 0.25\n"
+                                           "  impact_values: true\n"
+                                           "  energy: yes\n"
+                                           "  momentum: true\n"
+                                           "  sat_axes: true\n"
+                                           "  colors: {force: '#010203', panel: '#eeeeee'}\n")
+                                           .overlays;
   REQUIRE(o.arrows.size() == 2);
   CHECK(o.arrows[0].body == 0);
   CHECK(o.arrows[0].show == render::scene::ArrowDef::Show::Velocity);

@@ -17,9 +17,9 @@ Scene load(const std::string& text, const std::string& variant = "") {
 }
 
 void expectSceneError(const std::string& text, int line, int column, std::initializer_list<std::string> words) {
-  scene_errors::expectSceneError(
-      [](const std::string& t, const std::string& f, const std::string& v) { return readScene(sim::yaml::sceneSourceText(t, f, v)); },
-      kFile, text, line, column, words);
+  scene_errors::expectSceneError([](const std::string& t, const std::string& f,
+                                    const std::string& v) { return readScene(sim::yaml::sceneSourceText(t, f, v)); },
+                                 kFile, text, line, column, words);
 }
 
 // a 3D scene with one body `top` on lines 1-4; the render: block follows on line 5

@@ -21,9 +21,10 @@ namespace {
 
 // a ball that bounces off a wall at t = 0.5, in two variants, with poll panels at the impacts
 render::video::LoadVariant lesson() {
-  const std::string yaml = drawn_scene::bounce("1",
-                                               "render: {title_card: 0.2, slow_motion: {factor: 2, window: 0.2}, panels: impacts}\n"
-                                               "variants:\n  slow: {}\n  fast: {bodies: [{name: ball, velocity: [2, 0]}]}\n");
+  const std::string yaml =
+      drawn_scene::bounce("1",
+                          "render: {title_card: 0.2, slow_motion: {factor: 2, window: 0.2}, panels: impacts}\n"
+                          "variants:\n  slow: {}\n  fast: {bodies: [{name: ball, velocity: [2, 0]}]}\n");
   return [yaml](const std::string& variant) { return drawn_scene::load(yaml, variant, "lesson.yaml"); };
 }
 
@@ -39,7 +40,8 @@ std::set<std::string> written(const fs::path& root) {
   std::set<std::string> files;
   for (const fs::directory_entry& e : fs::recursive_directory_iterator(root)) {
     if (e.is_directory() && e.path().filename().string().ends_with("-frames")) files.insert(e.path().string() + "/");
-    else if (e.is_regular_file() && !e.path().parent_path().filename().string().ends_with("-frames")) files.insert(e.path().string());
+    else if (e.is_regular_file() && !e.path().parent_path().filename().string().ends_with("-frames"))
+      files.insert(e.path().string());
   }
   return files;
 }
@@ -59,8 +61,8 @@ std::string bytes(const std::string& path) {
 
 TEST_CASE("a lecture job writes exactly the paths its plan lists, in their order") {
   Scratch scratch;
-  const RenderPlan plan =
-      render::video::planLecture(lesson(), {.root = scratch.root.string(), .file = "lesson.yaml", .size = FrameSize{64, 36}, .fps = 5});
+  const RenderPlan plan = render::video::planLecture(
+      lesson(), {.root = scratch.root.string(), .file = "lesson.yaml", .size = FrameSize{64, 36}, .fps = 5});
   const std::vector<std::string> paths = plan.paths();
   REQUIRE(paths.size() == 5);  // two videos, two posters, one panel at the first impact
   CHECK(write(plan) == paths);
@@ -86,8 +88,11 @@ TEST_CASE("stills beyond one batch are the pictures a plan of each alone draws, 
   // more shots than one run of each variant draws at a time (16), out of order
   std::vector<double> times;
   for (int i = 20; i >= 0; --i) times.push_back(0.05 * i);
-  const RenderPlan plan = render::video::planStills(
-      lesson(), {.root = (scratch.root / "all").string(), .file = "lesson.yaml", .times = times, .panels = true, .size = FrameSize{64, 36}});
+  const RenderPlan plan = render::video::planStills(lesson(), {.root = (scratch.root / "all").string(),
+                                                               .file = "lesson.yaml",
+                                                               .times = times,
+                                                               .panels = true,
+                                                               .size = FrameSize{64, 36}});
   CHECK(write(plan) == plan.paths());
   for (size_t shot : {size_t{0}, size_t{3}, size_t{17}, size_t{20}}) {
     CAPTURE(times[shot]);

@@ -25,7 +25,7 @@ using render::video::VideoRequest;
 
 namespace {
 
-const std::string kPoll = std::string(RIGIDREEL_SOURCE_DIR) + "/scenes/poll_bar_impulse.yaml";          // center, end
+const std::string kPoll = std::string(RIGIDREEL_SOURCE_DIR) + "/scenes/poll_bar_impulse.yaml";        // center, end
 const std::string kThree = std::string(RIGIDREEL_SOURCE_DIR) + "/scenes/three_collisions_poll.yaml";  // A, B, C
 
 // a file's variants as the command line reads them, counting the reads
@@ -41,9 +41,10 @@ struct Loader {
 };
 
 // a ball that hits a wall at t = 0.5, and a variant that runs half as long
-const std::string kLesson = drawn_scene::bounce("2",
-                                                "render: {title_card: 1, slow_motion: {factor: 4, window: 0.2}, size: [320, 180]}\n"
-                                                "variants:\n  long: {}\n  brief: {duration: 1}\n");
+const std::string kLesson =
+    drawn_scene::bounce("2",
+                        "render: {title_card: 1, slow_motion: {factor: 4, window: 0.2}, size: [320, 180]}\n"
+                        "variants:\n  long: {}\n  brief: {duration: 1}\n");
 
 render::video::LoadVariant lesson(const std::string& yaml = kLesson) {
   return [yaml](const std::string& variant) { return drawn_scene::load(yaml, variant, "lesson.yaml"); };
@@ -83,16 +84,16 @@ std::string usageError(const std::function<void()>& plan) {
 TEST_CASE("render: each variant's video and poster, named under <root>/<scene>/") {
   Loader poll{kPoll, {}};
   const RenderPlan plan = render::video::planVideos(poll(), {.root = "o", .allVariants = true});
-  CHECK(plan.paths() == std::vector<std::string>{"o/poll_bar_impulse/poll_bar_impulse-center.mp4",
-                                                 "o/poll_bar_impulse/poll_bar_impulse-center.png",
-                                                 "o/poll_bar_impulse/poll_bar_impulse-end.mp4",
-                                                 "o/poll_bar_impulse/poll_bar_impulse-end.png"});
+  CHECK(plan.paths() == std::vector<std::string>{
+                            "o/poll_bar_impulse/poll_bar_impulse-center.mp4", "o/poll_bar_impulse/poll_bar_impulse-center.png",
+                            "o/poll_bar_impulse/poll_bar_impulse-end.mp4", "o/poll_bar_impulse/poll_bar_impulse-end.png"});
   // the base scene for the names of its variants, then each variant once
   CHECK(poll.reads == std::map<std::string, int>{{"", 1}, {"center", 1}, {"end", 1}});
 
   Loader one{kPoll, {}};
   const RenderPlan webm = render::video::planVideos(
-      one(), {.variant = "end", .size = FrameSize{160, 90}, .fps = 5, .format = render::video::VideoFormat::Webm, .frames = true});
+      one(),
+      {.variant = "end", .size = FrameSize{160, 90}, .fps = 5, .format = render::video::VideoFormat::Webm, .frames = true});
   CHECK(webm.paths() == std::vector<std::string>{"out/poll_bar_impulse/poll_bar_impulse-end.webm",
                                                  "out/poll_bar_impulse/poll_bar_impulse-end.png",
                                                  "out/poll_bar_impulse/poll_bar_impulse-end-frames/"});
@@ -178,7 +179,8 @@ TEST_CASE("snapshot --impacts: shot i is each variant at its own i-th impact, or
   for (const render::video::PlannedVariant& v : plan.variants) most = std::max(most, v.survey.impactTimes.size());
   REQUIRE(shots.size() == most);
   for (size_t shot = 0; shot < shots.size(); ++shot) {
-    CHECK(shots[shot].path == "out/three_collisions_poll/three_collisions_poll-panels-impact" + std::to_string(shot + 1) + ".png");
+    CHECK(shots[shot].path ==
+          "out/three_collisions_poll/three_collisions_poll-panels-impact" + std::to_string(shot + 1) + ".png");
     for (size_t i = 0; i < plan.variants.size(); ++i) {
       const std::vector<double>& impacts = plan.variants[i].survey.impactTimes;
       CHECK(shots[shot].instants[i] == impacts[std::min(shot, impacts.size() - 1)]);
@@ -189,7 +191,8 @@ TEST_CASE("snapshot --impacts: shot i is each variant at its own i-th impact, or
 
   const RenderPlan one = render::video::planStills(Loader{kThree, {}}(), {.file = kThree, .variant = "B", .impacts = true});
   const double t = one.variants.front().survey.impactTimes.front();
-  CHECK(one.paths().front() == "out/three_collisions_poll/three_collisions_poll-B-impact1-t" + render::video::timeForName(t) + ".png");
+  CHECK(one.paths().front() ==
+        "out/three_collisions_poll/three_collisions_poll-B-impact1-t" + render::video::timeForName(t) + ".png");
 }
 
 TEST_CASE("panels share one camera, fitted over every variant's run, and one scale for arrows and bars") {
@@ -212,11 +215,15 @@ TEST_CASE("panels share one camera, fitted over every variant's run, and one sca
 }
 
 TEST_CASE("snapshot errors, with the messages the command has always given") {
-  CHECK(usageError([] { render::video::planStills(Loader{kPoll, {}}(), {.file = kPoll, .variant = "end", .times = {0.5, 7}}); }) ==
-        "--at: 7 s is outside the scene's duration [0, 2]");
-  CHECK(usageError([] { render::video::planStills(Loader{kPoll, {}}(), {.file = kPoll, .times = {-1}, .panels = true}); }) ==
-        "--at: -1 s is outside the scene's duration [0, 2]");
-  CHECK(usageError([] { render::video::planStills(Loader{kPoll, {}}(), {.file = kPoll, .variant = "end", .impacts = true}); }) ==
+  CHECK(usageError([] {
+          render::video::planStills(Loader{kPoll, {}}(), {.file = kPoll, .variant = "end", .times = {0.5, 7}});
+        }) == "--at: 7 s is outside the scene's duration [0, 2]");
+  CHECK(usageError([] {
+          render::video::planStills(Loader{kPoll, {}}(), {.file = kPoll, .times = {-1}, .panels = true});
+        }) == "--at: -1 s is outside the scene's duration [0, 2]");
+  CHECK(usageError([] {
+          render::video::planStills(Loader{kPoll, {}}(), {.file = kPoll, .variant = "end", .impacts = true});
+        }) ==
         "--impacts: " + kPoll + " (variant end) has no impacts in its 2 s; nothing collides there (use --at to choose times)");
   // a time after the brief variant's end: every variant must reach it
   CHECK(usageError([] { render::video::planStills(lesson(), {.file = "lesson.yaml", .times = {1.5}, .panels = true}); }) ==
@@ -230,7 +237,8 @@ TEST_CASE("snapshot errors, with the messages the command has always given") {
 
 TEST_CASE("lecture: every variant's video and poster, then the panels, each variant read and surveyed once") {
   Loader three{kThree, {}};
-  const RenderPlan plan = render::video::planLecture(three(), {.root = "pack", .file = kThree, .size = FrameSize{160, 90}, .fps = 10});
+  const RenderPlan plan =
+      render::video::planLecture(three(), {.root = "pack", .file = kThree, .size = FrameSize{160, 90}, .fps = 10});
   CHECK(three.reads == std::map<std::string, int>{{"", 1}, {"A", 1}, {"B", 1}, {"C", 1}});
   CHECK(plan.scene == "three_collisions_poll");
   const std::vector<std::string> paths = plan.paths();
@@ -254,7 +262,8 @@ TEST_CASE("lecture: every variant's video and poster, then the panels, each vari
 TEST_CASE("a three-variant panel sheet is 1920 × 1080 by default, 2 × 2, and every arrow lies inside its panel") {
   // the lecture's poll: velocity arrows, impact normals and impulses, a caption
   const std::string lecture = std::string(RIGIDREEL_SOURCE_DIR) + "/scenes/lecture/08_three_collisions_poll.yaml";
-  const RenderPlan plan = render::video::planStills(Loader{lecture, {}}(), {.file = lecture, .times = {0, 0.8, 2}, .panels = true});
+  const RenderPlan plan =
+      render::video::planStills(Loader{lecture, {}}(), {.file = lecture, .times = {0, 0.8, 2}, .panels = true});
   const render::video::Stills& stills = *plan.stills;
   CHECK(stills.grid.sheetWidth == 1920);
   CHECK(stills.grid.sheetHeight == 1080);
@@ -298,8 +307,9 @@ TEST_CASE("a three-variant panel sheet is 1920 × 1080 by default, 2 × 2, and e
 }
 
 TEST_CASE("panel titles: a variant's own render: {title}, else its key; never the answer") {
-  const std::string yaml = drawn_scene::bounce("1", "answer: It bounces back.\nrender: {title: Lesson}\n"
-                                                     "variants:\n  slow: {render: {title: Slowly}}\n  fast: {}\n");
+  const std::string yaml = drawn_scene::bounce("1",
+                                               "answer: It bounces back.\nrender: {title: Lesson}\n"
+                                               "variants:\n  slow: {render: {title: Slowly}}\n  fast: {}\n");
   const auto load = [&](const std::string& v) { return drawn_scene::load(yaml, v, "lesson.yaml"); };
   const RenderPlan plan = render::video::planStills(load, {.file = "lesson.yaml", .times = {0.5}, .panels = true});
   CHECK(plan.stills->shots[0].titles == std::vector<std::string>{"A: Slowly", "B: fast"});
@@ -325,13 +335,15 @@ TEST_CASE("lecture panels: the default at the shortest variant's duration; impac
   } catch (const sim::yaml::SceneError& e) {
     CHECK(e.line == 8);
     CHECK(e.message ==
-          "'panels: impacts' needs an impact in every variant, and variant 'brief' has none; give panel times instead, e.g. [0, 0.3]");
+          "'panels: impacts' needs an impact in every variant, and variant 'brief' has none; give panel times instead, e.g. [0, "
+          "0.3]");
   }
 }
 
 TEST_CASE("3D scenes are planned as 2D ones: the same names, one survey per variant, panels at the shortest duration") {
   std::map<std::string, int> reads;
-  const render::video::RenderPlan3d plan = render::video::planLecture3d(spin(&reads), {.root = "pack", .file = "spin.yaml", .fps = 10});
+  const render::video::RenderPlan3d plan =
+      render::video::planLecture3d(spin(&reads), {.root = "pack", .file = "spin.yaml", .fps = 10});
   CHECK(reads == std::map<std::string, int>{{"", 1}, {"fast", 1}, {"slow", 1}});
   CHECK(plan.paths() == std::vector<std::string>{"pack/spin/spin-fast.mp4", "pack/spin/spin-fast.png", "pack/spin/spin-slow.mp4",
                                                  "pack/spin/spin-slow.png", "pack/spin/spin-panels-t0.25.png"});
@@ -347,7 +359,8 @@ TEST_CASE("3D scenes are planned as 2D ones: the same names, one survey per vari
   CHECK(plan.stills->surveys[1].maxOmega == doctest::Approx(4.0));
 
   // a snapshot of one variant at two times, and what 3D refuses
-  const render::video::RenderPlan3d shots = render::video::planStills3d(spin(), {.root = "o", .file = "spin.yaml", .variant = "slow", .times = {0, 0.5}});
+  const render::video::RenderPlan3d shots =
+      render::video::planStills3d(spin(), {.root = "o", .file = "spin.yaml", .variant = "slow", .times = {0, 0.5}});
   CHECK(shots.paths() == std::vector<std::string>{"o/spin/spin-slow-t0.png", "o/spin/spin-slow-t0.5.png"});
   CHECK(usageError([] { render::video::planStills3d(spin(), {.file = "spin.yaml", .variant = "slow", .times = {0.75}}); }) ==
         "--at: 0.75 s is outside the scene's duration [0, 0.5]");

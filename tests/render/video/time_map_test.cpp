@@ -91,9 +91,9 @@ TEST_CASE("the map is monotone and continuous, and ends at the duration") {
 }
 
 TEST_CASE("windows are sorted, clipped to the run, and merged where they overlap or touch, at the larger factor") {
-  const auto merged = render::video::mergeWindows({{0.9, 1.0, 3.0}, {0.4, 0.7, 4.0}, {0.2, 0.5, 2.0}, {-0.1, 0.1, 2.0},
-                                            {0.1, 0.15, 6.0}, {1.9, 2.5, 2.0}, {2.2, 2.4, 9.0}},
-                                           2.0);
+  const auto merged = render::video::mergeWindows(
+      {{0.9, 1.0, 3.0}, {0.4, 0.7, 4.0}, {0.2, 0.5, 2.0}, {-0.1, 0.1, 2.0}, {0.1, 0.15, 6.0}, {1.9, 2.5, 2.0}, {2.2, 2.4, 9.0}},
+      2.0);
   CHECK(merged == std::vector<SlowWindow>{{0.0, 0.15, 6.0}, {0.2, 0.7, 4.0}, {0.9, 1.0, 3.0}, {1.9, 2.0, 2.0}});
   const TimeMap map(2.0, 0.0, {{0.2, 0.5, 2.0}, {0.4, 0.7, 4.0}});
   CHECK(map.videoLength() == doctest::Approx(2.0 + 3.0 * 0.5).epsilon(1e-15));

@@ -30,9 +30,10 @@ fs::path scratchDir() {
 
 // what ffprobe says of the first video stream: "codec,width,height,pix_fmt,frames"
 std::string probe(const fs::path& video) {
-  const std::string command = "ffprobe -v error -select_streams v:0 -count_frames -show_entries "
-                              "stream=codec_name,pix_fmt,width,height,nb_read_frames -of csv=p=0 '" +
-                              video.string() + "'";
+  const std::string command =
+      "ffprobe -v error -select_streams v:0 -count_frames -show_entries "
+      "stream=codec_name,pix_fmt,width,height,nb_read_frames -of csv=p=0 '" +
+      video.string() + "'";
   std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
   std::string out;
   std::array<char, 256> buf;

@@ -73,8 +73,7 @@ void randomBoxes(std::mt19937_64& rng, int n, bool onGrid, int large, std::vecto
 
 // overlappingPairs against brute force over `trials` random sets of n(trial) boxes; how many
 // pairs and overlapping static pairs (which must be left out) the comparison saw
-std::pair<size_t, size_t> compareWithBruteForce(std::mt19937_64& rng, int trials, int minBoxes, int maxBoxes,
-                                                int large) {
+std::pair<size_t, size_t> compareWithBruteForce(std::mt19937_64& rng, int trials, int minBoxes, int maxBoxes, int large) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   size_t totalPairs = 0, skippedStatic = 0;
   for (int trial = 0; trial < trials; ++trial) {

@@ -74,7 +74,7 @@ double pointSegmentDistance(const Vec2& x, const Vec2& a, const Vec2& b, double*
 // convex polygons (for overlapping ones it is the distance between the boundaries)
 struct Closest {
   double distance = kInf;
-  Vec2 onP, onQ;         // the closest points
+  Vec2 onP, onQ;              // the closest points
   bool edgeInterior = false;  // a vertex against the interior of an edge
 };
 
@@ -219,7 +219,7 @@ TEST_CASE("sat: 12,000 random convex polygon pairs against a brute-force referen
     pb.x = pa.x + offset * direction;
 
     std::vector<Vec2> A = worldVertices(a, pa), B = worldVertices(b, pb);
-    double gap = 0.0;            // the intended gap of a touching-ish pair
+    double gap = 0.0;           // the intended gap of a touching-ish pair
     bool vertexOnEdge = false;  // ... met a vertex against an edge's interior
     if (kind == 3) {
       // move B toward A along the line of the closest points until the gap is a small ε (or an
@@ -325,8 +325,7 @@ TEST_CASE("sat: 12,000 random convex polygon pairs against a brute-force referen
     }
   }
   MESSAGE("overlapping " << overlapping << ", separated " << separated << " (" << equalToDistance
-                         << " with separation = distance), touching " << touching << ", missed contacts "
-                         << missedContacts);
+                         << " with separation = distance), touching " << touching << ", missed contacts " << missedContacts);
   CHECK(overlapping > pairs / 4);
   CHECK(separated > pairs / 4);
   CHECK(touching > 100);
@@ -334,7 +333,8 @@ TEST_CASE("sat: 12,000 random convex polygon pairs against a brute-force referen
 }
 
 TEST_CASE("sat is only for two polygons") {
-  const sim::core::Shape box = sim::core::makeBox(1, 1), circle = sim::core::makeCircle(0.5), plane = sim::core::makePlane({0, 1});
+  const sim::core::Shape box = sim::core::makeBox(1, 1), circle = sim::core::makeCircle(0.5),
+                         plane = sim::core::makePlane({0, 1});
   CHECK_FALSE(sim::collision::sat(box, pose(0, 0), circle, pose(0, 0)).valid);
   CHECK_FALSE(sim::collision::sat(circle, pose(0, 0), box, pose(0, 0)).valid);
   CHECK_FALSE(sim::collision::sat(box, pose(0, 0), plane, pose(0, 0)).valid);
@@ -402,7 +402,8 @@ TEST_CASE("a box lying flat on a bigger box: two points, normal from B up to A, 
   CHECK(leftmost(next).separation == doctest::Approx(-depth - 0.5e-4).epsilon(1e-6));
   CHECK(rightmost(next).separation == doctest::Approx(-depth + 0.5e-4).epsilon(1e-6));
   // and turned the other way
-  const sim::collision::Manifold other = sim::collision::collide(top, pose(0.3 - 1e-4, 0.5 + 0.25 - depth, -1e-4), floor, pFloor, kMargin);
+  const sim::collision::Manifold other =
+      sim::collision::collide(top, pose(0.3 - 1e-4, 0.5 + 0.25 - depth, -1e-4), floor, pFloor, kMargin);
   REQUIRE(other.count == 2);
   CHECK(leftmost(other).id == leftmost(m).id);
   CHECK(rightmost(other).id == rightmost(m).id);
@@ -495,7 +496,8 @@ TEST_CASE("a tilted box resting on a corner: one point") {
   CHECK((swapped.points[0].point - m.points[0].point).norm() < 1e-12);
 
   // a small turn keeps the feature id
-  const sim::collision::Manifold turned = sim::collision::collide(box, pose(p.x.x() + 1e-4, p.x.y(), angle + 1e-4), floor, pose(0, 0), kMargin);
+  const sim::collision::Manifold turned =
+      sim::collision::collide(box, pose(p.x.x() + 1e-4, p.x.y(), angle + 1e-4), floor, pose(0, 0), kMargin);
   REQUIRE(turned.count == 1);
   CHECK(turned.points[0].id == m.points[0].id);
 }
@@ -773,7 +775,8 @@ TEST_CASE("half-planes: a floor with normal (0, 1) through its pose's x") {
     CHECK((swapped.points[0].point - m.points[0].point).norm() < 1e-12);
   }
   SUBCASE("a circle above it, beyond the margin") {
-    const sim::collision::Manifold m = sim::collision::collide(sim::core::makeCircle(0.5), pose(-7.0, 0.0), floor, pFloor, kMargin);
+    const sim::collision::Manifold m =
+        sim::collision::collide(sim::core::makeCircle(0.5), pose(-7.0, 0.0), floor, pFloor, kMargin);
     CHECK(m.count == 0);
     CHECK(m.separation == doctest::Approx(0.5).epsilon(1e-12));
   }
@@ -790,7 +793,8 @@ TEST_CASE("half-planes: a floor with normal (0, 1) through its pose's x") {
       CHECK(m.points[k].point.y() == doctest::Approx(-1.005).epsilon(1e-12));
     }
     CHECK(m.points[0].id != m.points[1].id);
-    const sim::collision::Manifold next = sim::collision::collide(box, pose(2.0 + 1e-4, -1.0 + 0.25 - 0.01, 1e-4), floor, pFloor, kMargin);
+    const sim::collision::Manifold next =
+        sim::collision::collide(box, pose(2.0 + 1e-4, -1.0 + 0.25 - 0.01, 1e-4), floor, pFloor, kMargin);
     REQUIRE(next.count == 2);
     CHECK(leftmost(next).id == leftmost(m).id);
     CHECK(rightmost(next).id == rightmost(m).id);
@@ -813,7 +817,8 @@ TEST_CASE("half-planes: a floor with normal (0, 1) through its pose's x") {
     CHECK(m.points[0].point.y() == doctest::Approx(-1.01).epsilon(1e-12));
   }
   SUBCASE("a box above it, beyond the margin") {
-    const sim::collision::Manifold m = sim::collision::collide(sim::core::makeBox(1.0, 0.5), pose(0.0, 0.0, 0.3), floor, pFloor, kMargin);
+    const sim::collision::Manifold m =
+        sim::collision::collide(sim::core::makeBox(1.0, 0.5), pose(0.0, 0.0, 0.3), floor, pFloor, kMargin);
     CHECK(m.count == 0);
     // the lowest corner of a box turned by 0.3 is 0.5 sin 0.3 + 0.25 cos 0.3 below its center
     CHECK(m.separation == doctest::Approx(1.0 - 0.5 * std::sin(0.3) - 0.25 * std::cos(0.3)).epsilon(1e-12));

@@ -256,9 +256,9 @@ TEST_CASE("two points solved together: a box landing flat on a floor bounces wit
   sim::core::Body box = body(1.0, 1.0 / 6.0, {0.0, 0.5}, {0.0, -2.0}, 0.0);
   sim::core::Body floor = obstacle();
   const sim::core::Vec2 n(0.0, 1.0), r1(-0.5, 0.0), r2(0.5, 0.0);
-  const sim::collision::NormalBlock K = sim::collision::normalBlock(
-      box, floor, r1, r2, n, sim::collision::inverseEffectiveMass(box, floor, r1, n),
-      sim::collision::inverseEffectiveMass(box, floor, r2, n));
+  const sim::collision::NormalBlock K =
+      sim::collision::normalBlock(box, floor, r1, r2, n, sim::collision::inverseEffectiveMass(box, floor, r1, n),
+                                  sim::collision::inverseEffectiveMass(box, floor, r2, n));
   // K = [[1 + 0.25·6, 1 − 0.25·6], [1 − 0.25·6, 1 + 0.25·6]] = [[2.5, −0.5], [−0.5, 2.5]]
   CHECK(K.k11 == 2.5);
   CHECK(K.k12 == -0.5);

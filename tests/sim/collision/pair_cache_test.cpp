@@ -57,8 +57,7 @@ TEST_CASE("PairCache finds exactly the overlapping pairs, call after call, howev
       // the margin: as the solvers' (small), wider than the extension, or unbounded
       const double margin = call % 7 == 3 ? 3.0 * e : (call % 13 == 5 ? std::numeric_limits<double>::infinity() : 0.01);
       std::vector<Aabb> boxes(n);
-      for (int i = 0; i < n; ++i)
-        boxes[i] = {lower[i] - Vec2::Constant(margin), lower[i] + size[i] + Vec2::Constant(margin)};
+      for (int i = 0; i < n; ++i) boxes[i] = {lower[i] - Vec2::Constant(margin), lower[i] + size[i] + Vec2::Constant(margin)};
       if (n > 0 && call % 11 == 4) boxes[n / 2].lower.x() = std::nan("");
       cache.find(boxes, fixed, got);
       const Pairs expected = bruteForce(boxes, fixed);

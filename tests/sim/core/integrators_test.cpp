@@ -44,7 +44,7 @@ double stateError(const sim::core::Body& a, const sim::core::Body& b) {
 }
 
 constexpr sim::core::Integrator kAll[] = {sim::core::Integrator::ExplicitEuler, sim::core::Integrator::SymplecticEuler,
-                                    sim::core::Integrator::Midpoint, sim::core::Integrator::Rk4};
+                                          sim::core::Integrator::Midpoint, sim::core::Integrator::Rk4};
 
 }  // namespace
 
@@ -87,8 +87,9 @@ TEST_CASE("spring bar: measured convergence orders are 1, 1, 2, 4 (±0.3)") {
     double order;
   };
   // steps in each method's asymptotic range, well above the reference's and round-off's error
-  for (const Case& c : {Case{sim::core::Integrator::ExplicitEuler, 1e-3, 1}, Case{sim::core::Integrator::SymplecticEuler, 1e-3, 1},
-                        Case{sim::core::Integrator::Midpoint, 4e-3, 2}, Case{sim::core::Integrator::Rk4, 2e-2, 4}}) {
+  for (const Case& c :
+       {Case{sim::core::Integrator::ExplicitEuler, 1e-3, 1}, Case{sim::core::Integrator::SymplecticEuler, 1e-3, 1},
+        Case{sim::core::Integrator::Midpoint, 4e-3, 2}, Case{sim::core::Integrator::Rk4, 2e-2, 4}}) {
     CAPTURE(sim::core::integratorName(c.method));
     const double coarse = stateError(run(kSpringBar, c.method, c.h, until).bodies[0], reference.bodies[0]);
     const double fine = stateError(run(kSpringBar, c.method, c.h / 2, until).bodies[0], reference.bodies[0]);

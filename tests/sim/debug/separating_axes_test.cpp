@@ -19,7 +19,8 @@ const sim::scene::SceneDef kPair = sim::yaml::loadSceneText(R"(
 bodies:
   - {name: base, shape: {box: [2, 1]}, static: true}
   - {name: box, shape: {box: [1, 1]}, position: [0, 1.1]}
-)", "inline.yaml");
+)",
+                                                            "inline.yaml");
 
 std::vector<std::string> texts(const DrawList& list) {
   std::vector<std::string> out;

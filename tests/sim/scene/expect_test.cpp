@@ -18,7 +18,8 @@ sim: {integrator: midpoint, dt: 0.01}
 bodies: [{name: ball, shape: {circle: 0.5}, mass: 2, velocity: [1, 10]}]
 expect:
   - {time: 1, body: ball, position: [1, 5], velocity: [1, 0], tolerance: 1e-12}
-  - {time: 2, body: ball, position: [2, )" << y << R"(], tolerance: 1e-12}
+  - {time: 2, body: ball, position: [2, )"
+    << y << R"(], tolerance: 1e-12}
   - {time: 2, total_energy: 101, momentum: [2, -20], tolerance: 1e-12}
 )";
   return o.str();

@@ -98,7 +98,8 @@ bodies:
   // RK4 at dt = 0.001 and the crossings on Hermite's cubic: far below the straight line's 1e-7
   CHECK(r.error < 1e-8 * period);
   // one flip by t = 2: no period yet, and the quantity says why
-  const CheckResult early = only(runExpects(load(body + "expect:\n  - {time: 2, body: box, flip_period: " + num(period) + "}\n")));
+  const CheckResult early =
+      only(runExpects(load(body + "expect:\n  - {time: 2, body: box, flip_period: " + num(period) + "}\n")));
   CHECK_FALSE(early.passed());
   CHECK(early.quantity.find("2 are needed") != std::string::npos);
 }
@@ -146,7 +147,8 @@ bodies:
   - {name: a, shape: {box: [1, 2, 3]}, angular_velocity: [0, 0, 4]}
 )";
   const double growth = std::pow(1.0 + std::pow(0.01 * 4 / 2, 2), 200 / 2.0);
-  const CheckResult r = only(runExpects(load(scene + "expect:\n  - {time: 2, body: a, quaternion_norm: " + num(growth) + ", tolerance: 1e-13}\n")));
+  const CheckResult r =
+      only(runExpects(load(scene + "expect:\n  - {time: 2, body: a, quaternion_norm: " + num(growth) + ", tolerance: 1e-13}\n")));
   MESSAGE("|q| after 200 steps: ", r.actual[0], " (closed form ", growth, ")");
   CHECK(r.passed());
   CHECK(r.actual[0] > 1.01);

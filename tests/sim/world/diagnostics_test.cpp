@@ -15,7 +15,7 @@ bodies:
 forces:
   - {type: spring, body: a, point: [0, 0], body2: b, point2: [0, 0], stiffness: 8, rest_length: 1}
 )",
-                                         "inline.yaml");
+                                                      "inline.yaml");
   const sim::world::World w = sim::scene::buildWorld(def);
   // ½ m v² + ½ I ω²
   CHECK(sim::world::kineticEnergy(w.bodies[0]).translational == 10.0);
@@ -39,7 +39,7 @@ sim: {integrator: symplectic_euler, dt: 0.01}
 bodies:
   - {name: a, shape: {polygon: [[0, 0], [2, 0], [0, 1]]}, position: [1, 2], velocity: [3, -1], angular_velocity: 2}
 )",
-                                         "inline.yaml");
+                                                      "inline.yaml");
   sim::world::World w = sim::scene::buildWorld(def);
   const double l0 = sim::world::angularMomentum(w), e0 = sim::world::energy(w).total();
   const sim::core::Vec2 p0 = sim::world::linearMomentum(w);

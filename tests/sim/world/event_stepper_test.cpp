@@ -31,7 +31,8 @@ class Conservation : public sim::world::StepObserver {
   // center of mass (and so p) but not the angular momentum: that part is recorded apart
   void afterStep(const sim::world::World& w) override {
     dp = std::max(dp, (sim::world::linearMomentum(w) - p0).norm());
-    (w.resting.empty() ? dl : dlResting) = std::max(w.resting.empty() ? dl : dlResting, std::abs(sim::world::angularMomentum(w) - l0));
+    (w.resting.empty() ? dl : dlResting) =
+        std::max(w.resting.empty() ? dl : dlResting, std::abs(sim::world::angularMomentum(w) - l0));
   }
   sim::core::Vec2 p0;
   double l0;
@@ -115,8 +116,7 @@ TEST_CASE("off-center box–bar impacts (two_bodies) with random velocities and 
                              ", angular_velocity: " + num(omega) +
                              "}\n"
                              "  - {name: bar, shape: {box: [0.2, 2.0]}, mass: 1, position: [0, 0], angle: " +
-                             num(barAngle) + ", velocity: " + vec(barVx, barVy) + ", angular_velocity: " + num(barOmega) +
-                             "}\n";
+                             num(barAngle) + ", velocity: " + vec(barVx, barVy) + ", angular_velocity: " + num(barOmega) + "}\n";
     CAPTURE(yaml);
     impacts += runFreeScene(yaml, cr, 3.0).impacts;
   }
@@ -172,9 +172,8 @@ bodies:
     const double tau = 1e-3, pressing = -2.0 * (freeGap(tau) - freeGap(0.0)) / (tau * tau);
     const sim::world::ImpactRecord& last = w.impacts.back();
     FAIL_CHECK("the event method gave up at t = " << num(last.t) << " after " << w.impacts.size()
-                                                  << " impulses (the last with v_n⁻ = " << last.vnBefore
-                                                  << " m/s); gap now " << freeGap(0.0)
-                                                  << " m, free motion presses the pair together at " << pressing
+                                                  << " impulses (the last with v_n⁻ = " << last.vnBefore << " m/s); gap now "
+                                                  << freeGap(0.0) << " m, free motion presses the pair together at " << pressing
                                                   << " m/s²; error: " << std::string(e.what()));
   }
   checkRestitutionLaw(w, 0.34290821511990971, speedScale(build(yaml)));

@@ -102,7 +102,8 @@ world: {gravity: [0, -9.81], restitution: 0.5}
 sim: {collisions: isolated, dt: 0.001}
 bodies:
   - {name: floor, shape: {plane: {point: [0, 0], normal: [0, 1]}}}
-  - {name: b, shape: )") + shape + R"(, position: [0, 1.0]}
+  - {name: b, shape: )") + shape +
+                                R"(, position: [0, 1.0]}
 )");
     w.advanceTo(2.0);
     REQUIRE(w.impacts.size() > 2);
@@ -117,8 +118,7 @@ namespace {
 
 // the 10-box stack of box_stack.yaml: 1 m boxes on a plane, g = 10, dt = 1/60, μ = 0.6, c_r = 0
 std::string boxStack(const char* method) {
-  std::string s = std::string("world: {gravity: [0, -10], friction: 0.6, restitution: 0}\nsim: {collisions: ") +
-                  method +
+  std::string s = std::string("world: {gravity: [0, -10], friction: 0.6, restitution: 0}\nsim: {collisions: ") + method +
                   ", dt: 0.016666666666666667}\n"
                   "bodies:\n"
                   "  - {name: ground, shape: {plane: {point: [0, 0], normal: [0, 1]}}}\n";
@@ -157,13 +157,10 @@ TEST_CASE("isolated: the 10-box stack does not stand (the known failure of one i
   }
   const double box = 1.0;
   const bool moves = watch.moved > 0.05 * box, sinks = watch.penetration > 2.0 * sim::core::settings::kLinearSlop;
-  MESSAGE("isolated stack over 10 s: top box strayed up to " << watch.moved << " m, ends at ("
-                                                             << w.bodies[10].x.x() << ", " << w.bodies[10].x.y()
-                                                             << "), deepest penetration " << watch.penetration
-                                                             << " m (2 × slop = " << 2.0 * sim::core::settings::kLinearSlop
-                                                             << "); top box past 5 % at t = " << watch.movedAt
-                                                             << " s, penetration past 2 × slop at t = " << watch.sankAt
-                                                             << " s; diverged: " << diverged);
+  MESSAGE("isolated stack over 10 s: top box strayed up to "
+          << watch.moved << " m, ends at (" << w.bodies[10].x.x() << ", " << w.bodies[10].x.y() << "), deepest penetration "
+          << watch.penetration << " m (2 × slop = " << 2.0 * sim::core::settings::kLinearSlop << "); top box past 5 % at t = "
+          << watch.movedAt << " s, penetration past 2 × slop at t = " << watch.sankAt << " s; diverged: " << diverged);
   CHECK((diverged || moves || sinks));
 }
 
@@ -219,8 +216,7 @@ TEST_CASE("isolated: the lowest speed at which the thin body tunnels through the
     if (through && lowest == 0.0) lowest = speed;
   }
   REQUIRE(lowest > 0.0);
-  MESSAGE("isolated: lowest tunneling speed by doubling from 1 m/s: " << lowest << " m/s (" << lowest * kDt
-                                                                      << " m per step)");
+  MESSAGE("isolated: lowest tunneling speed by doubling from 1 m/s: " << lowest << " m/s (" << lowest * kDt << " m per step)");
   // consistent with the geometry: beyond one step of (thickness + 2 margin) there is room to skip
   // the overlap zone, and the doubling search lands within a factor 2 above that speed; below the
   // half thickness per step it never can

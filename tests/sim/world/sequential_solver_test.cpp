@@ -37,13 +37,12 @@ std::string boxStack() {
 // on each other, box j of row r at (−7 + 0.5625 r + 1.125 j, 0.5 + r); 210 boxes. Dropped: Box2D's
 // testbed layout, each row starting 0.25 m above the one below (y = 0.75 + 1.25 r)
 std::string pyramid(bool dropped = false, int positionIterations = 3) {
-  std::string s = std::string(kSolverSettings) +
-                  "  - {name: ground, shape: {box: [80, 1]}, static: true, position: [0, -0.5]}\n";
+  std::string s = std::string(kSolverSettings) + "  - {name: ground, shape: {box: [80, 1]}, static: true, position: [0, -0.5]}\n";
   s.replace(s.find("position_iterations: 3"), 22, "position_iterations: " + std::to_string(positionIterations));
   for (int r = 0; r < 20; ++r)
     for (int j = 0; j < 20 - r; ++j)
-      s += "  - {name: b" + std::to_string(r + 1) + "_" + std::to_string(j + 1) + ", shape: {box: [1, 1]}, position: " +
-           vec(-7.0 + 0.5625 * r + 1.125 * j, dropped ? 0.75 + 1.25 * r : 0.5 + r) + "}\n";
+      s += "  - {name: b" + std::to_string(r + 1) + "_" + std::to_string(j + 1) +
+           ", shape: {box: [1, 1]}, position: " + vec(-7.0 + 0.5625 * r + 1.125 * j, dropped ? 0.75 + 1.25 * r : 0.5 + r) + "}\n";
   return s;
 }
 
@@ -85,10 +84,9 @@ void checkStands(const std::string& yaml, const char* name, size_t bodies) {
   w.advanceTo(10.0, &watch);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   MESSAGE(std::string(name) << ", sequential, 10 s (" << watch.steps << " steps, " << seconds
-                            << " s wall): top box strayed up to " << watch.moved << " m (at t = " << watch.movedAt
-                            << " s), ends " << (w.bodies[top].x - watch.start).norm() << " m from its start, at ("
-                            << num(w.bodies[top].x.x()) << ", " << num(w.bodies[top].x.y())
-                            << "); deepest penetration " << watch.penetration << " m");
+                            << " s wall): top box strayed up to " << watch.moved << " m (at t = " << watch.movedAt << " s), ends "
+                            << (w.bodies[top].x - watch.start).norm() << " m from its start, at (" << num(w.bodies[top].x.x())
+                            << ", " << num(w.bodies[top].x.y()) << "); deepest penetration " << watch.penetration << " m");
   CHECK(watch.steps == 600);
   CHECK(watch.finite);
   const double box = 1.0;
@@ -143,10 +141,9 @@ Settled dropPyramid(int positionIterations) {
 // Before the flip-invariant feature ids it bulged 0.36 m and crept at 0.02 m/s.
 TEST_CASE("sequential: the dropped 20-base pyramid settles in place; 10 position passes do no worse than 3") {
   const Settled three = dropPyramid(3), ten = dropPyramid(10);
-  MESSAGE("dropped pyramid, max |x - rest x| / fastest point speed: 3 passes " << three.offRestX << " m / "
-                                                                              << three.fastest << " m/s; 10 passes "
-                                                                              << ten.offRestX << " m / " << ten.fastest
-                                                                              << " m/s");
+  MESSAGE("dropped pyramid, max |x - rest x| / fastest point speed: 3 passes "
+          << three.offRestX << " m / " << three.fastest << " m/s; 10 passes " << ten.offRestX << " m / " << ten.fastest
+          << " m/s");
   // every box within 0.1 m of its rest x, and at rest (its corners slower than 1 cm/s)
   CHECK(three.offRestX < 0.1);
   CHECK(three.fastest < 0.01);
@@ -160,8 +157,8 @@ TEST_CASE("sequential: warm starting carries the accumulated impulses from step 
   // one 1 m box (density 1: m = 1 kg) resting on a plane, g = 10, dt = 1/60: the floor must give
   // it the impulse m g dt in every step, shared by the two corners
   sim::world::World w = build(std::string(kSolverSettings) +
-                       "  - {name: ground, shape: {plane: {point: [0, 0], normal: [0, 1]}}}\n"
-                       "  - {name: box, shape: {box: [1, 1]}, position: [0, 0.5]}\n");
+                              "  - {name: ground, shape: {plane: {point: [0, 0], normal: [0, 1]}}}\n"
+                              "  - {name: box, shape: {box: [1, 1]}, position: [0, 0.5]}\n");
   const double m = w.bodies[1].mass, g = 10.0, dt = w.dt;
   REQUIRE(m == doctest::Approx(1.0).epsilon(1e-15));
   const double support = m * g * dt;
@@ -237,8 +234,7 @@ TEST_CASE("sequential: the lowest tunneling speed, against the geometry; fast bo
     if (through && lowest == 0.0) lowest = speed;
   }
   REQUIRE(lowest > 0.0);
-  MESSAGE("sequential: lowest tunneling speed by doubling from 1 m/s: " << lowest << " m/s (" << lowest * kDt
-                                                                        << " m per step)");
+  MESSAGE("sequential: lowest tunneling speed by doubling from 1 m/s: " << lowest << " m/s (" << lowest * kDt << " m per step)");
   CHECK(lowest * kDt > 0.05 + margin);
   CHECK(lowest <= 2.0 * (thickness + 2.0 * margin) / kDt);
 
@@ -257,8 +253,7 @@ TEST_CASE("sequential: the lowest tunneling speed, against the geometry; fast bo
     CHECK(through == !sequentialCatches(speed));
     if (through && first == 0.0) first = speed;
   }
-  MESSAGE("sequential: lowest tunneling speed on a 0.25 m/s scan: " << first << " m/s (" << first * kDt
-                                                                     << " m per step)");
+  MESSAGE("sequential: lowest tunneling speed on a 0.25 m/s scan: " << first << " m/s (" << first * kDt << " m per step)");
   CHECK(first * kDt > 0.05 + margin);
   CHECK(first <= (thickness + 2.0 * margin) / kDt);
 }

@@ -18,7 +18,9 @@ using scene_text::build;
 // a pyramid of six boxes on a long floor, and a ball high above that lands on its top at t ≈ 1.3 s
 std::string pile(const std::string& method, const std::string& extra = "", bool ball = true) {
   return "duration: 10\nworld: {gravity: [0, -10], friction: 0.6, restitution: 0}\n"
-         "sim: {collisions: " + method + ", dt: 0.016666666666666667, sleep: true}\n"
+         "sim: {collisions: " +
+         method +
+         ", dt: 0.016666666666666667, sleep: true}\n"
          "bodies:\n"
          "  - {name: floor, shape: {box: [200, 1]}, static: true, position: [0, -0.5]}\n"
          "  - {name: b0, shape: {box: [1, 1]}, position: [-1.1, 0.5]}\n"
@@ -100,7 +102,8 @@ TEST_CASE("sleep: an impulse event or a force switching on wakes the island it s
     CHECK(w.bodies[3].x.x() > before.x());
   }
   SUBCASE("a force on from t = 2") {
-    sim::world::World w = build(pile("sequential", "forces:\n  - {type: force, body: top, point: [0, 0], force: [0, 100], from: 2.0}\n", false));
+    sim::world::World w =
+        build(pile("sequential", "forces:\n  - {type: force, body: top, point: [0, 0], force: [0, 100], from: 2.0}\n", false));
     w.advanceTo(1.98);
     REQUIRE(pileAsleep(w));
     const double y = w.bodies[kTop].x.y();

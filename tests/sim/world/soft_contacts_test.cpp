@@ -24,8 +24,9 @@ std::string pyramid(int base, bool dropped) {
   std::string yaml = kSettings;
   for (int r = 0; r < base; ++r)
     for (int j = 0; j < base - r; ++j)
-      yaml += "  - {name: b" + std::to_string(r) + "_" + std::to_string(j) + ", shape: {box: [1, 1]}, position: " +
-              vec(-7.0 + 0.5625 * r + 1.125 * j, dropped ? 0.75 + 1.25 * r : 0.5 + r) + "}\n";
+      yaml += "  - {name: b" + std::to_string(r) + "_" + std::to_string(j) +
+              ", shape: {box: [1, 1]}, position: " + vec(-7.0 + 0.5625 * r + 1.125 * j, dropped ? 0.75 + 1.25 * r : 0.5 + r) +
+              "}\n";
   return yaml;
 }
 
@@ -64,7 +65,8 @@ unsigned long long run(const std::string& yaml, int width, double seconds, int t
 
 TEST_CASE("soft_step: the AVX-512, AVX2 and scalar contact passes give the same state hash (pyramids, a tumbling pile)") {
   MESSAGE("on this processor: AVX-512 path " << (sim::world::soft::wide512Available() ? "yes" : "no (runs AVX2 or scalar)")
-                                             << ", AVX2 path " << (sim::world::soft::wideAvailable() ? "yes" : "no (runs scalar)"));
+                                             << ", AVX2 path "
+                                             << (sim::world::soft::wideAvailable() ? "yes" : "no (runs scalar)"));
   const std::pair<const char*, std::string> scenes[] = {
       {"pyramid 20 touching", pyramid(20, false)},
       {"pyramid 20 dropped", pyramid(20, true)},

@@ -36,8 +36,8 @@ Pile pyramid(bool dropped) {
   for (int r = 0; r < 20; ++r)
     for (int j = 0; j < 20 - r; ++j) {
       const double x = -7.0 + 0.5625 * r + 1.125 * j;
-      p.yaml += "  - {name: b" + std::to_string(r) + "_" + std::to_string(j) + ", shape: {box: [1, 1]}, position: " +
-                vec(x, dropped ? 0.75 + 1.25 * r : 0.5 + r) + "}\n";
+      p.yaml += "  - {name: b" + std::to_string(r) + "_" + std::to_string(j) +
+                ", shape: {box: [1, 1]}, position: " + vec(x, dropped ? 0.75 + 1.25 * r : 0.5 + r) + "}\n";
       p.rest.emplace_back(x, 0.5 + r);
     }
   return p;
@@ -145,13 +145,14 @@ TEST_CASE("soft_step: a resting contact gives g/ω², ω = 2π · 2 · min(conta
     const int substeps = setting.second;
     CAPTURE(hertz);
     CAPTURE(substeps);
-    const std::string yaml = "world: {gravity: [0, -10], restitution: 0}\n"
-                             "sim: {collisions: soft_step, dt: 0.016666666666666667, substeps: " +
-                             std::to_string(substeps) + ", contact_hertz: " + num(hertz) +
-                             "}\n"
-                             "bodies:\n"
-                             "  - {name: ground, shape: {plane: {point: [0, 0], normal: [0, 1]}}}\n"
-                             "  - {name: ball, shape: {circle: 0.5}, mass: 2, position: [0, 0.5]}\n";
+    const std::string yaml =
+        "world: {gravity: [0, -10], restitution: 0}\n"
+        "sim: {collisions: soft_step, dt: 0.016666666666666667, substeps: " +
+        std::to_string(substeps) + ", contact_hertz: " + num(hertz) +
+        "}\n"
+        "bodies:\n"
+        "  - {name: ground, shape: {plane: {point: [0, 0], normal: [0, 1]}}}\n"
+        "  - {name: ball, shape: {circle: 0.5}, mass: 2, position: [0, 0.5]}\n";
     sim::world::World w = build(yaml);
     w.advanceTo(5.0);
     const double capped = std::min(hertz, 0.25 * 60.0 * substeps);

@@ -41,8 +41,8 @@ class Recorder : public sim::world::StepObserver {
 }  // namespace
 
 TEST_CASE("the notes' poll, both variants, exactly, with every integrator") {
-  for (sim::core::Integrator m : {sim::core::Integrator::ExplicitEuler, sim::core::Integrator::SymplecticEuler, sim::core::Integrator::Midpoint,
-                            sim::core::Integrator::Rk4}) {
+  for (sim::core::Integrator m : {sim::core::Integrator::ExplicitEuler, sim::core::Integrator::SymplecticEuler,
+                                  sim::core::Integrator::Midpoint, sim::core::Integrator::Rk4}) {
     CAPTURE(sim::core::integratorName(m));
     sim::world::World center = poll("center", m);
     center.advanceTo(1.0);
@@ -71,7 +71,7 @@ bodies: [{name: b, shape: {circle: 1}}]
 forces: [{type: force, body: b, force: [1, 0], from: 0.25, until: 0.62}]
 events: [{time: 0.33, body: b, impulse: [0, 1]}]
 )",
-                                         "inline.yaml");
+                                                      "inline.yaml");
   sim::world::World w = sim::scene::buildWorld(def);
   Recorder r;
   w.advanceTo(0.75, &r);
@@ -123,7 +123,7 @@ bodies:
 forces: [{type: spring, body: ground, point: [0, 0], body2: ball, point2: [0, 0], stiffness: 100}]
 events: [{time: 0.5, body: ground, impulse: [100, 100]}]
 )",
-                                         "inline.yaml");
+                                                      "inline.yaml");
   sim::world::World w = sim::scene::buildWorld(def);
   w.advanceTo(1.0);
   CHECK(w.bodies[0].x == sim::core::Vec2(0, -1));
@@ -139,7 +139,7 @@ sim: {integrator: explicit_euler, dt: 0.1}
 bodies: [{name: calm, shape: {circle: 1}}, {name: wild, shape: {circle: 1}, position: [2, 0]}]
 forces: [{type: spring, body: wild, anchor: [0, 0], stiffness: 1e12}]
 )",
-                                         "inline.yaml");
+                                                      "inline.yaml");
   sim::world::World w = sim::scene::buildWorld(def);
   try {
     w.advanceTo(100);
@@ -252,8 +252,8 @@ namespace {
 // Box2D's testbed pyramid, base 5: rows of 1 m boxes 0.25 m apart, dropped onto a ground box; no
 // two bodies touch at the start, so `auto` begins with the event method
 std::string droppedPile(const char* collisions) {
-  std::string s = std::string("world: {gravity: [0, -10], friction: 0.6, restitution: 0}\nsim: {collisions: ") +
-                  collisions + ", dt: 0.016666666666666667}\nbodies:\n"
+  std::string s = std::string("world: {gravity: [0, -10], friction: 0.6, restitution: 0}\nsim: {collisions: ") + collisions +
+                  ", dt: 0.016666666666666667}\nbodies:\n"
                   "  - {name: ground, shape: {box: [40, 1]}, static: true, position: [0, -0.5]}\n";
   for (int r = 0; r < 5; ++r)
     for (int j = 0; j < 5 - r; ++j)

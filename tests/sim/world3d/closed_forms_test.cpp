@@ -56,7 +56,8 @@ double measuredFlipPeriod(World w, int periods) {
 
 TEST_CASE("K(k) by the arithmetic–geometric mean against std::comp_ellint_1 and K(1/√2) = Γ(1/4)²/(4√π)") {
   CHECK(completeEllipticK(0.0) == std::numbers::pi / 2);
-  CHECK(relativeError(completeEllipticK(std::sqrt(0.5)), std::pow(std::tgamma(0.25), 2) / (4 * std::sqrt(std::numbers::pi))) < 1e-15);
+  CHECK(relativeError(completeEllipticK(std::sqrt(0.5)), std::pow(std::tgamma(0.25), 2) / (4 * std::sqrt(std::numbers::pi))) <
+        1e-15);
   for (double k : {0.1, 0.5, 0.9, 0.99, 0.999999}) {
     CAPTURE(k);
     // libstdc++ forms 1 − k², which at k = 0.999999 costs it 1e-12 (K ≈ ln(4/k′), and k′ is then
@@ -118,9 +119,10 @@ TEST_CASE("the flip period from K(k) (Landau & Lifshitz §37) against the simula
   const double split = measuredFlipPeriod(racket(Integrator::Splitting, 1e-3), 3);
   const double splitCoarse = measuredFlipPeriod(racket(Integrator::Splitting, 1e-2), 3);
   const double euler = measuredFlipPeriod(racket(Integrator::ExplicitEuler, 1e-3), 3);
-  MESSAGE("flip period ", expected, " s (a flip every ", expected / 2, " s); relative errors measured over 3 periods: rk4 (dt 1e-3) ",
-          relativeError(rk4, expected), ", splitting (dt 1e-3) ", relativeError(split, expected), ", splitting (dt 1e-2) ",
-          relativeError(splitCoarse, expected), ", explicit Euler (dt 1e-3) ", relativeError(euler, expected));
+  MESSAGE("flip period ", expected, " s (a flip every ", expected / 2,
+          " s); relative errors measured over 3 periods: rk4 (dt 1e-3) ", relativeError(rk4, expected), ", splitting (dt 1e-3) ",
+          relativeError(split, expected), ", splitting (dt 1e-2) ", relativeError(splitCoarse, expected),
+          ", explicit Euler (dt 1e-3) ", relativeError(euler, expected));
   // RK4 to the interpolation of the crossings; the splitting to its O(h²) error, 100 times larger at
   // 10 times the step; explicit Euler, whose E and L drift, is off by half
   CHECK(relativeError(rk4, expected) < 1e-7);
@@ -144,11 +146,13 @@ TEST_CASE("the flip period's limits: small wobbles about the largest axis, and t
 
 TEST_CASE("the notes' poll in 3D: the bar (l = 4, m = 3, I = 4) struck by j = (1, 0, 0) at its center or its end") {
   const Mat3 inertia = Vec3(4.0, 4.0, 0.1).asDiagonal();  // the bar along z
-  const ImpulseOutcome center = afterImpulse(3.0, inertia, Quat::Identity(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3(1, 0, 0));
+  const ImpulseOutcome center =
+      afterImpulse(3.0, inertia, Quat::Identity(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3(1, 0, 0));
   CHECK(center.velocity.isApprox(Vec3(1.0 / 3, 0, 0)));
   CHECK(center.angularVelocity.isZero());
   CHECK(relativeError(center.kineticEnergyAfter, 1.0 / 6) < 1e-15);
-  const ImpulseOutcome end = afterImpulse(3.0, inertia, Quat::Identity(), Vec3::Zero(), Vec3::Zero(), Vec3(0, 0, 2), Vec3(1, 0, 0));
+  const ImpulseOutcome end =
+      afterImpulse(3.0, inertia, Quat::Identity(), Vec3::Zero(), Vec3::Zero(), Vec3(0, 0, 2), Vec3(1, 0, 0));
   CHECK(end.velocity.isApprox(Vec3(1.0 / 3, 0, 0)));
   CHECK(end.angularVelocity.isApprox(Vec3(0, 0.5, 0)));  // r′ × j = (0, 2, 0), I⁻¹ of it
   CHECK(relativeError(end.kineticEnergyAfter, 2.0 / 3) < 1e-15);
@@ -160,7 +164,8 @@ TEST_CASE("the notes' poll in 3D: the bar (l = 4, m = 3, I = 4) struck by j = (1
   bar.q = axisAngle(Vec3(1, 1, 0), 0.6);
   bar.v = Vec3(0.2, 0, 0);
   bar.omega = Vec3(0, 0, 0.3);
-  const ImpulseOutcome expected = afterImpulse(3.0, inertia, bar.q, bar.v, bar.omega, bar.rotation() * Vec3(0, 0, 2), Vec3(1, 0, 0));
+  const ImpulseOutcome expected =
+      afterImpulse(3.0, inertia, bar.q, bar.v, bar.omega, bar.rotation() * Vec3(0, 0, 2), Vec3(1, 0, 0));
   w.bodies.push_back(bar);
   w.events.push_back({0.0, 0, Vec3(0, 0, 2), false, Vec3(1, 0, 0)});
   w.advanceTo(0.0);

@@ -123,5 +123,6 @@ TEST_CASE("the potential energy's gradient is minus the force, and its rate unde
   // the gravity part on its own: −m g·x
   ForceSet gravity;
   gravity.gravity = forces.gravity;
-  CHECK(relativeError(gravity.potentialEnergy(bodies), -(bodies[0].mass * bodies[0].x + bodies[1].mass * bodies[1].x).dot(forces.gravity)) < 1e-14);
+  CHECK(relativeError(gravity.potentialEnergy(bodies),
+                      -(bodies[0].mass * bodies[0].x + bodies[1].mass * bodies[1].x).dot(forces.gravity)) < 1e-14);
 }

@@ -11,8 +11,7 @@ using namespace sim::world3d;
 
 namespace {
 
-constexpr Integrator kClassic[] = {Integrator::ExplicitEuler, Integrator::SymplecticEuler, Integrator::Midpoint,
-                                   Integrator::Rk4};
+constexpr Integrator kClassic[] = {Integrator::ExplicitEuler, Integrator::SymplecticEuler, Integrator::Midpoint, Integrator::Rk4};
 
 // a box spun about its z axis, which is the world's: q = [w 0 0 z] for all time, so R(q) keeps z
 // fixed even as |q| drifts, ω stays constant (ω × I ω = 0) and q̇ = ½ (0, ω) q is linear with
@@ -131,8 +130,8 @@ TEST_CASE("orders 1, 1, 2, 4 of the four classic integrators on a coupled 3D sce
       errors.push_back(fixtures3d::stateDistance(w, reference));
     }
     const double order = fixtures3d::fittedOrder(dts, errors);
-    MESSAGE(kIntegratorNames.name(c.method), ": errors ", errors[0], ", ", errors[1], ", ", errors[2], ", ", errors[3],
-            " at dt ", dts.front(), " to ", dts.back(), ": fitted order ", order);
+    MESSAGE(kIntegratorNames.name(c.method), ": errors ", errors[0], ", ", errors[1], ", ", errors[2], ", ", errors[3], " at dt ",
+            dts.front(), " to ", dts.back(), ": fitted order ", order);
     CHECK(std::abs(order - integratorOrder(c.method)) <= settings::kOrderTolerance);
   }
 }

@@ -15,7 +15,7 @@ namespace {
 // the cells whose centers lie inside: independent of the closed forms, exact for the box up to the
 // midpoint rule's known 1/n², within O(1/n) of a curved solid
 MassProperties quadrature(const Shape& shape, double density, int n) {
-  const Vec3 half = shape.kind == ShapeKind::Box ? Vec3(0.5 * shape.sides)
+  const Vec3 half = shape.kind == ShapeKind::Box      ? Vec3(0.5 * shape.sides)
                     : shape.kind == ShapeKind::Sphere ? Vec3::Constant(shape.radius)
                                                       : shape.semiAxes;
   const Vec3 cell = 2.0 * half / n;
@@ -42,8 +42,7 @@ void checkAgainstQuadrature(const Shape& shape, double density, int n, double to
   for (int i = 0; i < 3; ++i) CHECK(relativeError(sum.inertia(i, i), (1.0 - bias) * exact.inertia(i, i)) <= tolerance);
   // principal axes along the body's: no products of inertia
   CHECK(exact.inertia.isDiagonal());
-  CHECK(std::abs(sum.inertia(0, 1)) + std::abs(sum.inertia(0, 2)) + std::abs(sum.inertia(1, 2)) <
-        1e-9 * sum.inertia.trace());
+  CHECK(std::abs(sum.inertia(0, 1)) + std::abs(sum.inertia(0, 2)) + std::abs(sum.inertia(1, 2)) < 1e-9 * sum.inertia.trace());
 }
 
 }  // namespace

@@ -88,8 +88,8 @@ TEST_CASE("the splitting's order is 2, on the free body and on the coupled scene
       errors.push_back(fixtures3d::stateDistance(w, reference));
     }
     const double order = fixtures3d::fittedOrder(dts, errors);
-    MESSAGE(c.scene, ": errors ", errors[0], ", ", errors[1], ", ", errors[2], ", ", errors[3], " at dt ", dts.front(),
-            " to ", dts.back(), ": fitted order ", order);
+    MESSAGE(c.scene, ": errors ", errors[0], ", ", errors[1], ", ", errors[2], ", ", errors[3], " at dt ", dts.front(), " to ",
+            dts.back(), ": fitted order ", order);
     CHECK(std::abs(order - 2.0) <= settings::kOrderTolerance);
   }
 }

@@ -9,8 +9,8 @@ using namespace sim::world3d;
 
 namespace {
 
-constexpr Integrator kAll[] = {Integrator::ExplicitEuler, Integrator::SymplecticEuler, Integrator::Midpoint,
-                               Integrator::Rk4, Integrator::Splitting};
+constexpr Integrator kAll[] = {Integrator::ExplicitEuler, Integrator::SymplecticEuler, Integrator::Midpoint, Integrator::Rk4,
+                               Integrator::Splitting};
 
 class Recorder : public StepObserver {
  public:
@@ -31,7 +31,8 @@ bool sameState(const World& a, const World& b) {
 
 TEST_CASE("the step grid is split exactly at events and force switches, and events at 0 and at the end apply") {
   World w = fixtures3d::freeBox(Integrator::Rk4, 0.1);
-  w.events = {{0.25, 0, Vec3::Zero(), false, Vec3(1, 0, 0)}, {0.0, 0, Vec3::Zero(), false, Vec3(0, 1, 0)},
+  w.events = {{0.25, 0, Vec3::Zero(), false, Vec3(1, 0, 0)},
+              {0.0, 0, Vec3::Zero(), false, Vec3(0, 1, 0)},
               {0.5, 0, Vec3::Zero(), false, Vec3(0, 0, 1)}};
   w.forces.pointForces.push_back({0, Vec3::Zero(), Vec3(0, 0, 1), false, 0.33, 0.45});
   Recorder r;

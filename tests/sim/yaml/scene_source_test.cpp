@@ -52,7 +52,8 @@ std::string aliasTree(int depth) {
 TEST_CASE("a key given twice in a variant is an error at its second place, not a merge of a map into itself") {
   // the fuzzer's use-after-free: the second `a` merged the map `m` into itself, inserting the null
   // key (never found by name) into the map being iterated
-  const sim::yaml::SceneError e = loadError(kOneBody + "world: {}\nvariants:\n  v:\n    world: {a: &m {~: 1, b: 2}, a: *m}\n", "v");
+  const sim::yaml::SceneError e =
+      loadError(kOneBody + "world: {}\nvariants:\n  v:\n    world: {a: &m {~: 1, b: 2}, a: *m}\n", "v");
   CHECK(e.line == 6);
   CHECK(e.column == 33);
   CHECK(e.message == "duplicate key 'a' in variant 'v'; give each key once");
@@ -61,7 +62,8 @@ TEST_CASE("a key given twice in a variant is an error at its second place, not a
 TEST_CASE("duplicate keys in a variant are errors at every level, as they are in the scene") {
   CHECK(loadError(kOneBody + "variants:\n  v: {duration: 1, duration: 2}\n", "v").message ==
         "duplicate key 'duration' in variant 'v'; give each key once");
-  const sim::yaml::SceneError nested = loadError(kOneBody + "sim: {dt: 0.01}\nvariants:\n  v:\n    sim: {dt: 0.1, dt: 0.2}\n", "v");
+  const sim::yaml::SceneError nested =
+      loadError(kOneBody + "sim: {dt: 0.01}\nvariants:\n  v:\n    sim: {dt: 0.1, dt: 0.2}\n", "v");
   CHECK(nested.line == 6);
   CHECK(nested.column == 20);
   CHECK(nested.message.find("duplicate key 'dt'") == 0);
@@ -117,7 +119,8 @@ TEST_CASE("a variant whose aliases nest maps past the parser's depth is refused,
   // a chain of 5,000 maps, each one the next's value through an alias: 5,000 levels from text that
   // nests two, and a merge of the chain with itself walks them all
   std::string text = kOneBody + "chain:\n  c0: &a0 {k: 1}\n";
-  for (int i = 1; i < 5000; ++i) text += "  c" + std::to_string(i) + ": &a" + std::to_string(i) + " {k: *a" + std::to_string(i - 1) + "}\n";
+  for (int i = 1; i < 5000; ++i)
+    text += "  c" + std::to_string(i) + ": &a" + std::to_string(i) + " {k: *a" + std::to_string(i - 1) + "}\n";
   text += "loop: *a4999\nvariants:\n  v: {loop: *a4999}\n";
   const sim::yaml::SceneError e = loadError(text, "v");
   CHECK(e.line == 4504);  // c4500, where the map 501 levels down is written
@@ -125,8 +128,10 @@ TEST_CASE("a variant whose aliases nest maps past the parser's depth is refused,
 }
 
 TEST_CASE("a variant keeps the scene's order of keys and bodies, and appends what it adds") {
-  const std::string text = kOneBody + "sim: {dt: 0.01, integrator: rk4}\nvariants:\n"
-                           "  v: {sim: {collisions: none, dt: 0.02}, bodies: [{name: c, shape: {circle: 1}}, {name: a, mass: 2}]}\n";
+  const std::string text =
+      kOneBody +
+      "sim: {dt: 0.01, integrator: rk4}\nvariants:\n"
+      "  v: {sim: {collisions: none, dt: 0.02}, bodies: [{name: c, shape: {circle: 1}}, {name: a, mass: 2}]}\n";
   const sim::yaml::SceneSource s = sim::yaml::sceneSourceText(text, kFile, "v");
   std::string keys;
   for (const auto& kv : s.root["sim"]) keys += kv.first.Scalar() + " ";
@@ -139,7 +144,8 @@ TEST_CASE("a variant keeps the scene's order of keys and bodies, and appends wha
 }
 
 TEST_CASE("a file larger than the limit is refused after reading at most the limit") {
-  const std::string path = (std::filesystem::temp_directory_path() / ("rigidreel-big-" + std::to_string(::getpid()) + ".yaml")).string();
+  const std::string path =
+      (std::filesystem::temp_directory_path() / ("rigidreel-big-" + std::to_string(::getpid()) + ".yaml")).string();
   std::ofstream(path) << "name: big\n";
   std::filesystem::resize_file(path, (17u << 20));
   try {
@@ -153,12 +159,14 @@ TEST_CASE("a file larger than the limit is refused after reading at most the lim
 }
 
 TEST_CASE("a device, a FIFO or a folder is refused before it is opened") {
-  const std::string fifo = (std::filesystem::temp_directory_path() / ("rigidreel-fifo-" + std::to_string(::getpid()) + ".yaml")).string();
+  const std::string fifo =
+      (std::filesystem::temp_directory_path() / ("rigidreel-fifo-" + std::to_string(::getpid()) + ".yaml")).string();
   REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
   // no structured binding: clang 14 cannot capture one in CAPTURE (make sanitize builds with it)
-  for (const auto& [pathBound, whatBound] : std::vector<std::pair<std::string, std::string>>{
-           {"/dev/zero", "is a device, not a regular file"}, {fifo, "is a FIFO (named pipe), not a regular file"},
-           {std::filesystem::temp_directory_path().string(), "is a directory"}}) {
+  for (const auto& [pathBound, whatBound] :
+       std::vector<std::pair<std::string, std::string>>{{"/dev/zero", "is a device, not a regular file"},
+                                                        {fifo, "is a FIFO (named pipe), not a regular file"},
+                                                        {std::filesystem::temp_directory_path().string(), "is a directory"}}) {
     const std::string path = pathBound, what = whatBound;
     CAPTURE(path);
     try {

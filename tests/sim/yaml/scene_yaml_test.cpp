@@ -23,8 +23,8 @@ const char* const kFile = "inline.yaml";
 void expectSceneError(const std::string& text, int line, int column, std::initializer_list<std::string> words,
                       const std::string& variant = "") {
   scene_errors::expectSceneError(
-      [](const std::string& t, const std::string& f, const std::string& v) { return sim::yaml::loadSceneText(t, f, v); },
-      kFile, text, line, column, words, variant);
+      [](const std::string& t, const std::string& f, const std::string& v) { return sim::yaml::loadSceneText(t, f, v); }, kFile,
+      text, line, column, words, variant);
 }
 
 // names the call site in failures reported from inside the helper
@@ -123,13 +123,16 @@ TEST_CASE("unknown keys name the nearest valid key") {
       CHECK(message.find("did you mean") == std::string::npos);
     }
     // a two-letter key one swap away is still two letters in three: the list, which has 'dt'
-    EXPECT_SCENE_ERROR("sim:\n  integrator: rk4\n  td: 0.1\n" + kOneBody, 3, 3, {"unknown key 'td'", "choose one of: integrator, dt,"});
+    EXPECT_SCENE_ERROR("sim:\n  integrator: rk4\n  td: 0.1\n" + kOneBody, 3, 3,
+                       {"unknown key 'td'", "choose one of: integrator, dt,"});
   }
   SUBCASE("in sim:") {
-    EXPECT_SCENE_ERROR("sim: {intgrator: rk4}\n" + kOneBody, 1, 7, {"unknown key 'intgrator'", "sim", "did you mean 'integrator'"});
+    EXPECT_SCENE_ERROR("sim: {intgrator: rk4}\n" + kOneBody, 1, 7,
+                       {"unknown key 'intgrator'", "sim", "did you mean 'integrator'"});
   }
   SUBCASE("in world:") {
-    EXPECT_SCENE_ERROR("world:\n  gravty: [0, 1]\n" + kOneBody, 2, 3, {"unknown key 'gravty'", "world", "did you mean 'gravity'"});
+    EXPECT_SCENE_ERROR("world:\n  gravty: [0, 1]\n" + kOneBody, 2, 3,
+                       {"unknown key 'gravty'", "world", "did you mean 'gravity'"});
   }
   SUBCASE("in a force") {
     EXPECT_SCENE_ERROR(kOneBody +
@@ -247,9 +250,7 @@ TEST_CASE("a reference to a body that does not exist lists the bodies") {
 // polygons: reported at the shape
 
 namespace {
-std::string polygonScene(const std::string& vertices) {
-  return "bodies:\n  - name: a\n    shape: {polygon: " + vertices + "}\n";
-}
+std::string polygonScene(const std::string& vertices) { return "bodies:\n  - name: a\n    shape: {polygon: " + vertices + "}\n"; }
 }  // namespace
 
 TEST_CASE("a non-convex polygon is rejected") {
@@ -289,9 +290,9 @@ TEST_CASE("a self-intersecting polygon (a pentagram) is rejected") {
       "[0.9510565162951535, 0.30901699437494745], [-0.5877852522924731, -0.8090169943749475]]";
   EXPECT_SCENE_ERROR(polygonScene(reversed), 3, 12, {"self-intersecting polygon"});
   // the pentagon itself, in order, is fine
-  const sim::scene::SceneDef ok = load(polygonScene(
-      "[[0, 1], [-0.9510565162951535, 0.30901699437494745], [-0.5877852522924731, -0.8090169943749475], "
-      "[0.5877852522924731, -0.8090169943749475], [0.9510565162951535, 0.30901699437494745]]"));
+  const sim::scene::SceneDef ok =
+      load(polygonScene("[[0, 1], [-0.9510565162951535, 0.30901699437494745], [-0.5877852522924731, -0.8090169943749475], "
+                        "[0.5877852522924731, -0.8090169943749475], [0.9510565162951535, 0.30901699437494745]]"));
   CHECK(ok.bodies.at(0).shape.vertices.size() == 5);
 }
 
@@ -348,7 +349,8 @@ TEST_CASE("dt and duration must be positive finite numbers") {
   for (const std::string& value : kNotPositive) {
     CAPTURE(value);
     EXPECT_SCENE_ERROR("sim: {dt: " + value + "}\n" + kOneBody, 1, 11, {"'dt' must be a positive finite number", "got " + value});
-    EXPECT_SCENE_ERROR("sim:\n  integrator: rk4\n  dt: " + value + "\n" + kOneBody, 3, 7, {"'dt' must be a positive finite number"});
+    EXPECT_SCENE_ERROR("sim:\n  integrator: rk4\n  dt: " + value + "\n" + kOneBody, 3, 7,
+                       {"'dt' must be a positive finite number"});
     EXPECT_SCENE_ERROR("duration: " + value + "\n" + kOneBody, 1, 11,
                        {"'duration' must be a positive finite number", "got " + value});
   }
@@ -373,7 +375,8 @@ TEST_CASE("an event time must lie in [0, duration]") {
   // the default duration is 1 s
   EXPECT_SCENE_ERROR(kOneBody + "events:\n  - {time: 1.5, body: a, impulse: [1, 0]}\n", 5, 12, {"[0, 1]"});
   // both ends are inside
-  const sim::scene::SceneDef s = load(scene + "  - {time: 0, body: a, impulse: [1, 0]}\n  - {time: 2, body: a, impulse: [0, 1]}\n");
+  const sim::scene::SceneDef s =
+      load(scene + "  - {time: 0, body: a, impulse: [1, 0]}\n  - {time: 2, body: a, impulse: [0, 1]}\n");
   REQUIRE(s.events.size() == 2);
   CHECK(s.events[0].time == 0.0);
   CHECK(s.events[1].time == 2.0);
@@ -401,33 +404,33 @@ TEST_CASE("an unknown integrator lists the integrators") {
 namespace {
 // variants "zeta", "alpha", "empty", in that (non-alphabetical) order; see the line numbers on the right
 const std::string kVariantScene =
-    "name: merged\n"                                            // 1
-    "duration: 2\n"                                             // 2
-    "sim: {integrator: rk4, dt: 0.01}\n"                        // 3
-    "world: {gravity: [0, -9.81]}\n"                            // 4
-    "bodies:\n"                                                 // 5
-    "  - name: a\n"                                             // 6
-    "    shape: {box: [1, 2]}\n"                                // 7
-    "    mass: 3\n"                                             // 8
-    "    position: [1, 2]\n"                                    // 9
-    "    friction: 0.25\n"                                      // 10
-    "  - name: b\n"                                             // 11
-    "    shape: {circle: 0.5}\n"                                // 12
-    "events:\n"                                                 // 13
-    "  - {time: 0.5, body: a, impulse: [1, 0]}\n"               // 14
-    "  - {time: 1.0, body: b, impulse: [0, 1]}\n"               // 15
-    "variants:\n"                                               // 16
-    "  zeta:\n"                                                 // 17
-    "    sim: {dt: 0.001}\n"                                    // 18
-    "    bodies:\n"                                             // 19
-    "      - {name: a, velocity: [4, 5], mass: 6}\n"            // 20
-    "      - {name: c, shape: {circle: 1}, position: [7, 8]}\n" // 21
-    "    events:\n"                                             // 22
-    "      - {time: 1.5, body: c, impulse: [2, 0]}\n"           // 23
-    "  alpha:\n"                                                // 24
-    "    world: {gravity: [0, 0]}\n"                            // 25
-    "    duration: 3\n"                                         // 26
-    "  empty:\n";                                               // 27
+    "name: merged\n"                                             // 1
+    "duration: 2\n"                                              // 2
+    "sim: {integrator: rk4, dt: 0.01}\n"                         // 3
+    "world: {gravity: [0, -9.81]}\n"                             // 4
+    "bodies:\n"                                                  // 5
+    "  - name: a\n"                                              // 6
+    "    shape: {box: [1, 2]}\n"                                 // 7
+    "    mass: 3\n"                                              // 8
+    "    position: [1, 2]\n"                                     // 9
+    "    friction: 0.25\n"                                       // 10
+    "  - name: b\n"                                              // 11
+    "    shape: {circle: 0.5}\n"                                 // 12
+    "events:\n"                                                  // 13
+    "  - {time: 0.5, body: a, impulse: [1, 0]}\n"                // 14
+    "  - {time: 1.0, body: b, impulse: [0, 1]}\n"                // 15
+    "variants:\n"                                                // 16
+    "  zeta:\n"                                                  // 17
+    "    sim: {dt: 0.001}\n"                                     // 18
+    "    bodies:\n"                                              // 19
+    "      - {name: a, velocity: [4, 5], mass: 6}\n"             // 20
+    "      - {name: c, shape: {circle: 1}, position: [7, 8]}\n"  // 21
+    "    events:\n"                                              // 22
+    "      - {time: 1.5, body: c, impulse: [2, 0]}\n"            // 23
+    "  alpha:\n"                                                 // 24
+    "    world: {gravity: [0, 0]}\n"                             // 25
+    "    duration: 3\n"                                          // 26
+    "  empty:\n";                                                // 27
 }  // namespace
 
 TEST_CASE("an unknown variant lists the known variants") {
@@ -603,8 +606,7 @@ TEST_CASE("the model reads its own keys: another layer's key is unknown unless t
     CHECK(e.line == 2);
     CHECK(e.message.find("unknown key 'color' in a body") != std::string::npos);
   }
-  const sim::scene::SceneDef s =
-      sim::yaml::readModel(sim::yaml::sceneSourceText(text, kFile), {{"render"}, {"color"}});
+  const sim::scene::SceneDef s = sim::yaml::readModel(sim::yaml::sceneSourceText(text, kFile), {{"render"}, {"color"}});
   CHECK(s.bodies.size() == 1);
 }
 
@@ -684,8 +686,8 @@ TEST_CASE("a variant replaces a body's key whole, so it can change a body's shap
 TEST_CASE("an error in a variant's changes is reported at its line in the variant") {
   const std::string scene = kOneBody + "variants:\n";  // the variants start on line 5
   // a value of an existing body
-  EXPECT_SCENE_ERROR(scene + "  v:\n    bodies:\n      - {name: a, mass: -2}\n", 7, 25, {"'mass' must be a positive finite number"},
-                     "v");
+  EXPECT_SCENE_ERROR(scene + "  v:\n    bodies:\n      - {name: a, mass: -2}\n", 7, 25,
+                     {"'mass' must be a positive finite number"}, "v");
   // a value in a map the base does not have
   EXPECT_SCENE_ERROR(scene + "  v:\n    sim: {dt: 0}\n", 6, 15, {"'dt' must be a positive finite number"}, "v");
   // a value in a map the base has
@@ -699,7 +701,8 @@ TEST_CASE("an error in a variant's changes is reported at its line in the varian
   EXPECT_SCENE_ERROR(scene + "  v:\n    events:\n      - {time: 0.5, body: nobody, impulse: [1, 0]}\n", 7, 27,
                      {"no body named 'nobody'"}, "v");
   // a map the base does not have, with an unknown key
-  EXPECT_SCENE_ERROR(scene + "  v:\n    world: {gravty: [0, 1]}\n", 6, 13, {"unknown key 'gravty'", "did you mean 'gravity'"}, "v");
+  EXPECT_SCENE_ERROR(scene + "  v:\n    world: {gravty: [0, 1]}\n", 6, 13, {"unknown key 'gravty'", "did you mean 'gravity'"},
+                     "v");
 }
 
 // Misspelled keys that a variant adds to a map the base already has (the scene itself, an existing
@@ -707,8 +710,8 @@ TEST_CASE("an error in a variant's changes is reported at its line in the varian
 TEST_CASE("an unknown key a variant adds to an existing map is reported at its line in the variant") {
   const std::string scene = "sim: {integrator: rk4}\n" + kOneBody + "variants:\n";  // the variants start on line 6
   EXPECT_SCENE_ERROR(scene + "  v:\n    durtion: 3\n", 7, 5, {"unknown key 'durtion'", "did you mean 'duration'"}, "v");
-  EXPECT_SCENE_ERROR(scene + "  v:\n    sim: {intgrator: midpoint}\n", 7, 11, {"unknown key 'intgrator'", "did you mean 'integrator'"},
-                     "v");
+  EXPECT_SCENE_ERROR(scene + "  v:\n    sim: {intgrator: midpoint}\n", 7, 11,
+                     {"unknown key 'intgrator'", "did you mean 'integrator'"}, "v");
   EXPECT_SCENE_ERROR(scene + "  v:\n    bodies:\n      - {name: a, desity: 2}\n", 8, 19,
                      {"unknown key 'desity'", "did you mean 'density'"}, "v");
 }
@@ -760,8 +763,7 @@ TEST_CASE("loadSceneFile: a file loads, named after its stem, with positions in 
 }
 
 TEST_CASE("duplicate keys, a misspelled force type key, and a directory are reported, not ignored") {
-  EXPECT_SCENE_ERROR("bodies:\n  - name: a\n    shape: {circle: 1}\n    mass: 1\n    mass: -1\n", 5, 5,
-                     {"duplicate key 'mass'"});
+  EXPECT_SCENE_ERROR("bodies:\n  - name: a\n    shape: {circle: 1}\n    mass: 1\n    mass: -1\n", 5, 5, {"duplicate key 'mass'"});
   EXPECT_SCENE_ERROR(kOneBody + "bodies: []\n", 4, 1, {"duplicate key 'bodies'"});
   EXPECT_SCENE_ERROR(kOneBody + "forces: [{tpye: spring, body: a, anchor: [0, 0], stiffness: 1}]\n", 4, 11,
                      {"unknown key 'tpye'", "did you mean 'type'"});
@@ -774,7 +776,8 @@ TEST_CASE("duplicate keys, a misspelled force type key, and a directory are repo
 }
 
 TEST_CASE("booleans take the YAML 1.1 spellings in any case") {
-  const sim::scene::SceneDef s = sim::yaml::loadSceneText("bodies: [{name: a, shape: {circle: 1}, static: True}]\n", "inline.yaml");
+  const sim::scene::SceneDef s =
+      sim::yaml::loadSceneText("bodies: [{name: a, shape: {circle: 1}, static: True}]\n", "inline.yaml");
   CHECK(s.bodies[0].isStatic);
 }
 
@@ -791,8 +794,8 @@ TEST_CASE("a run of more steps than max_steps is refused at dt, or at duration, 
                    {"the run needs 1e+18 steps", "more than the limit of 1e+08", "raise dt", "max_steps"});
   expectSceneError("duration: 1.0e6\nbodies: [{name: a, shape: {box: [1, 1]}}]\n", 1, 11, {"1e+09 steps"});
   // the scene that needs them says so
-  const auto def = sim::yaml::loadSceneText(
-      "duration: 1.0e6\nsim: {max_steps: 1.0e9}\nbodies: [{name: a, shape: {box: [1, 1]}}]\n", kFile);
+  const auto def =
+      sim::yaml::loadSceneText("duration: 1.0e6\nsim: {max_steps: 1.0e9}\nbodies: [{name: a, shape: {box: [1, 1]}}]\n", kFile);
   CHECK(def.maxSteps == 1e9);
 }
 

@@ -16,8 +16,8 @@ const char* const kFile = "inline.yaml";
 
 void expectSceneError(const std::string& text, int line, int column, std::initializer_list<std::string> words) {
   scene_errors::expectSceneError(
-      [](const std::string& t, const std::string& f, const std::string& v) { return sim::yaml::loadSceneText(t, f, v); },
-      kFile, text, line, column, words, "");
+      [](const std::string& t, const std::string& f, const std::string& v) { return sim::yaml::loadSceneText(t, f, v); }, kFile,
+      text, line, column, words, "");
 }
 
 // `n` circles apart on the x axis, the list starting on line `first`
@@ -61,9 +61,9 @@ TEST_CASE("forces, events and expect entries together past max_entries are refus
                             "events: [{time: 0.1, body: b1, impulse: [1, 0]}]\n"
                             "expect: [{time: 0.5, body: b0, position: [0, 0], tolerance: 10}]\n";
   // the lists start on lines 5, 6 and 7: with a limit of 2 the expect list is the one that passes it
-  expectSceneError("sim: {max_entries: 2}\n" + scene, 7, 9,
-                   {"forces, events and expect entries number 3 up to this list, more than the limit of 2",
-                    "'sim: {max_entries: N}'"});
+  expectSceneError(
+      "sim: {max_entries: 2}\n" + scene, 7, 9,
+      {"forces, events and expect entries number 3 up to this list, more than the limit of 2", "'sim: {max_entries: N}'"});
   expectSceneError("sim: {max_entries: 1}\n" + scene, 6, 9, {"number 2 up to this list"});
   const sim::scene::SceneDef def = sim::yaml::loadSceneText("sim: {max_entries: 3}\n" + scene, kFile);
   CHECK(def.pointForces.size() + def.events.size() + def.expects.size() == 3);
@@ -75,5 +75,6 @@ TEST_CASE("a polygon past max_vertices is refused at its list; the key raises th
   expectSceneError(body + polygon(1025) + "}}\n", 2, 32,
                    {"a polygon of 1025 vertices, more than the limit of 1024", "'sim: {max_vertices: N}'"});
   CHECK(sim::yaml::loadSceneText("sim: {max_vertices: 1025}\n" + body + polygon(1025) + "}}\n", kFile)
-            .bodies.front().shape.vertices.size() == 1025);
+            .bodies.front()
+            .shape.vertices.size() == 1025);
 }

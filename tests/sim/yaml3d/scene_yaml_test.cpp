@@ -21,8 +21,8 @@ const char* const kFile = "inline.yaml";
 void expectSceneError(const std::string& text, int line, int column, std::initializer_list<std::string> words,
                       const std::string& variant = "") {
   scene_errors::expectSceneError(
-      [](const std::string& t, const std::string& f, const std::string& v) { return sim::yaml3d::loadSceneText(t, f, v); },
-      kFile, text, line, column, words, variant);
+      [](const std::string& t, const std::string& f, const std::string& v) { return sim::yaml3d::loadSceneText(t, f, v); }, kFile,
+      text, line, column, words, variant);
 }
 
 #define EXPECT_SCENE_ERROR(...)                    \
@@ -154,7 +154,8 @@ TEST_CASE("2D keys in a 3D scene say why 3D has none; 3D keys are checked where 
   EXPECT_SCENE_ERROR(kOneBody + "expect:\n  - {time: 0.5, angular_velocity: [0, 0, 0]}\n", 6, 35, {"a body's"});
   EXPECT_SCENE_ERROR(kOneBody + "expect:\n  - {time: 0.5, body: a, angle: 1}\n", 6, 33, {"orientation"});
   EXPECT_SCENE_ERROR(kOneBody + "expect:\n  - {time: 2, body: a, flip_period: 1}\n", 6, 12, {"outside", "duration"});
-  EXPECT_SCENE_ERROR(kOneBody + "events:\n  - {time: 0.5, body: a, impulse: [1, 0, 0], frame: space}\n", 6, 53, {"'body' or 'world'"});
+  EXPECT_SCENE_ERROR(kOneBody + "events:\n  - {time: 0.5, body: a, impulse: [1, 0, 0], frame: space}\n", 6, 53,
+                     {"'body' or 'world'"});
 }
 
 TEST_CASE("dimensions: 2 or 3, read once for every reader; the 2D reader refuses a 3D scene") {
@@ -162,8 +163,8 @@ TEST_CASE("dimensions: 2 or 3, read once for every reader; the 2D reader refuses
   // the 2D reader takes `dimensions: 2` as it takes no dimensions at all, and says where a 3D scene is read
   CHECK(sim::yaml::loadSceneText("dimensions: 2\nbodies: [{name: a, shape: {circle: 1}}]\n", kFile).bodies.size() == 1);
   scene_errors::expectSceneError(
-      [](const std::string& t, const std::string& f, const std::string& v) { return sim::yaml::loadSceneText(t, f, v); },
-      kFile, kOneBody, 1, 13, {"3D", "sim::yaml3d"});
+      [](const std::string& t, const std::string& f, const std::string& v) { return sim::yaml::loadSceneText(t, f, v); }, kFile,
+      kOneBody, 1, 13, {"3D", "sim::yaml3d"});
   // and the 3D reader a 2D one
   EXPECT_SCENE_ERROR("bodies: [{name: a, shape: {box: [1, 1, 1]}}]\n", 1, 1, {"dimensions: 3"});
 }
