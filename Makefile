@@ -17,7 +17,7 @@ FUZZ_BUILD     ?= build-fuzz
 # seconds each fuzzer runs in `make fuzz`
 FUZZ_SECONDS   ?= 60
 
-.PHONY: all deps configure build build-tests demo lecture test bench clean sanitize fuzz clang-deps
+.PHONY: all deps configure build build-tests demo lecture test bench clean sanitize fuzz clang-deps format format-check
 
 all: build
 
@@ -59,6 +59,16 @@ lecture: build
 
 test: build-tests
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
+
+# every C++ file as .clang-format writes it: `format-check` fails on any difference (`.ci/run`),
+# `format` rewrites the files
+FORMAT_FILES = $(shell git ls-files '*.h' '*.cpp')
+format-check:
+	@$(MAKE) --no-print-directory deps PACKAGES="clang-format"
+	@clang-format --dry-run -Werror $(FORMAT_FILES) && echo "format-check: $(words $(FORMAT_FILES)) files as .clang-format writes them"
+format:
+	@$(MAKE) --no-print-directory deps PACKAGES="clang-format"
+	clang-format -i $(FORMAT_FILES)
 
 # timings (never asserted in tests): stacks against Box2D 2.4 in the same run (both pyramids, both
 # layouts, 600 steps); check's start-up, the video pipeline's parts per frame and the whole render
