@@ -190,6 +190,25 @@ std::string stem(const std::string& path) {
   return base;
 }
 
+// the text at `at` opens a document of its own: a '---' there, or a '...' line (the end of the one
+// before) above it
+bool startsSecondDocument(const std::string& text, const YAML::Mark& at) {
+  if (at.is_null() || at.pos < 0 || static_cast<size_t>(at.pos) >= text.size()) return true;
+  if (text.compare(at.pos, 3, "---") == 0) return true;
+  size_t end = text.rfind('\n', at.pos);
+  while (end != std::string::npos && end > 0) {
+    const size_t begin = text.rfind('\n', end - 1);
+    const size_t from = begin == std::string::npos ? 0 : begin + 1;
+    std::string previous = text.substr(from, end - from);
+    while (!previous.empty() && (previous.back() == ' ' || previous.back() == '\r' || previous.back() == '\t'))
+      previous.pop_back();
+    if (!previous.empty() && previous[0] != '#') return previous == "...";
+    if (begin == std::string::npos) break;
+    end = begin;
+  }
+  return false;
+}
+
 }  // namespace
 
 SceneDocument sceneDocumentText(const std::string& text, const std::string& file) {
@@ -199,7 +218,14 @@ SceneDocument sceneDocumentText(const std::string& text, const std::string& file
     // a second document would otherwise be ignored without a word
     if (parsed.second) {
       const YAML::Mark at = *parsed.second;
-      throw SceneError(file, at.is_null() ? 1 : at.line + 1, at.is_null() ? 1 : at.column + 1,
+      const int line = at.is_null() ? 1 : at.line + 1, column = at.is_null() ? 1 : at.column + 1;
+      // the parser also starts a "document" at text it cannot read as one (a line opening with ','):
+      // only a '---', or text after a '...', is a second document
+      if (!startsSecondDocument(text, at))
+        throw SceneError(file, line, column,
+                         std::string("invalid YAML: a scene cannot start with '") + text[std::max(at.pos, 0)] +
+                             "' here; a scene file is one YAML map of `key: value` lines");
+      throw SceneError(file, line, column,
                        "a second YAML document (after '---'): a scene file holds one scene; put the other in a file of its own");
     }
     d.root.reset(parsed.root);

@@ -127,6 +127,20 @@ TEST_CASE("a variant whose aliases nest maps past the parser's depth is refused,
   CHECK(e.message.find("variant 'v' nests its maps more than 500 levels deep through aliases") == 0);
 }
 
+TEST_CASE("text the parser cannot start a document with is invalid YAML at its place, not a second document") {
+  const sim::yaml::SceneError comma = loadError("\n# a comment\n,a: 1\n", "");
+  CHECK(comma.line == 3);
+  CHECK(comma.column == 1);
+  CHECK(comma.message.find("invalid YAML: a scene cannot start with ','") == 0);
+  // a '---' or a '...' line does start a second one
+  const sim::yaml::SceneError dashes = loadError(kOneBody + "---\nname: t\n", "");
+  CHECK(dashes.line == 3);
+  CHECK(dashes.message.find("a second YAML document") == 0);
+  const sim::yaml::SceneError dots = loadError(kOneBody + "...\n# next\nname: t\n", "");
+  CHECK(dots.line == 5);
+  CHECK(dots.message.find("a second YAML document") == 0);
+}
+
 TEST_CASE("a variant keeps the scene's order of keys and bodies, and appends what it adds") {
   const std::string text =
       kOneBody +
