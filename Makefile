@@ -62,13 +62,17 @@ test: build-tests
 
 # every C++ file as .clang-format writes it: `format-check` fails on any difference (`.ci/run`),
 # `format` rewrites the files
+# (Debian 12's clang-format 14, pinned: another major version formats some lines differently)
 FORMAT_FILES = $(shell git ls-files '*.h' '*.cpp')
+CLANG_FORMAT := clang-format-14
 format-check:
-	@$(MAKE) --no-print-directory deps PACKAGES="clang-format"
-	@clang-format --dry-run -Werror $(FORMAT_FILES) && echo "format-check: $(words $(FORMAT_FILES)) files as .clang-format writes them"
+	@$(MAKE) --no-print-directory deps PACKAGES="$(CLANG_FORMAT)"
+	@test -n "$(FORMAT_FILES)" || { echo "format-check: no C++ files from git ls-files (run it in a git clone)"; exit 1; }
+	@$(CLANG_FORMAT) --dry-run -Werror $(FORMAT_FILES) && echo "format-check: $(words $(FORMAT_FILES)) files as .clang-format writes them"
 format:
-	@$(MAKE) --no-print-directory deps PACKAGES="clang-format"
-	clang-format -i $(FORMAT_FILES)
+	@$(MAKE) --no-print-directory deps PACKAGES="$(CLANG_FORMAT)"
+	@test -n "$(FORMAT_FILES)" || { echo "format: no C++ files from git ls-files (run it in a git clone)"; exit 1; }
+	$(CLANG_FORMAT) -i $(FORMAT_FILES)
 
 # timings (never asserted in tests): stacks against Box2D 2.4 in the same run (both pyramids, both
 # layouts, 600 steps); check's start-up, the video pipeline's parts per frame and the whole render

@@ -60,7 +60,7 @@ Metrics3dOptions criteria3d(const sim::scene3d::SceneDef& def) {
   return o;
 }
 
-RunMetrics measureRun3(w3::World& world, double until) {
+RunMetrics measureRun3d(w3::World& world, double until) {
   RunMetrics m;
   const w3::Energy e0 = energy(world);
   startEnergy(e0.kinetic, e0.potential, m);
@@ -107,7 +107,7 @@ Sweep3dRow runSweepCase3d(const sim::scene3d::SceneDef& scene, w3::Integrator in
   row.integrator = integrator;
   row.dt = dt;
   w3::World w = sim::scene3d::buildWorld(def);
-  row.metrics = measureRun3(w, def.duration);
+  row.metrics = measureRun3d(w, def.duration);
   row.steps = w.steps;
   if (!row.metrics.finite) {
     row.error = std::numeric_limits<double>::infinity();
@@ -161,7 +161,7 @@ StabilityResult findBoundary3d(const sim::scene3d::SceneDef& def, const Stabilit
         at.dt = dt;
         w3::World w = sim::scene3d::buildWorld(at);
         // as in 2D: the scene's duration or 1000 steps, whichever is longer
-        m = measureRun3(w, std::max(at.duration, kMinimumSteps * dt));
+        m = measureRun3d(w, std::max(at.duration, kMinimumSteps * dt));
         return holds3d(m, o);
       },
       Growth::Doubling);

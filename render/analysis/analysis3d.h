@@ -28,7 +28,7 @@ Metrics3dOptions criteria3d(const sim::scene3d::SceneDef& def);
 
 // runs the world to `until` (not started yet), sampling after every step; a divergence ends the
 // run and is recorded, not thrown
-RunMetrics measureRun3(sim::world3d::World& world, double until);
+RunMetrics measureRun3d(sim::world3d::World& world, double until);
 // finite; energy trend ≤ 10 %; |L| within 10 % of |L(0)| where it is kept; | |q| − 1 | ≤ 1 %
 bool holds3d(RunMetrics& metrics, const Metrics3dOptions& options);
 

@@ -61,7 +61,7 @@ int render(const RenderCommand& o) {
   };
   if (!o.overlay.empty() && o.is3d()) throw UsageError("--overlay: a trace is drawn over 2D scenes only");
   if (o.is3d()) try {
-      const RenderPlan3d plan = planVideos3d(o.variantLoader3(), r);
+      const RenderPlan3d plan = planVideos3d(o.variantLoader3d(), r);
       traced<TraceWriter3d>(o.trace, plan, [&](TraceWriter3d* trace) { writePlan3d(plan, o.quiet, wrote, trace); });
       return kExitOk;
     } catch (const VariantDiverged3d& d) {

@@ -75,7 +75,7 @@ int snapshot(const SnapshotCommand& o) {
   };
   if (!o.overlay.empty() && o.is3d()) throw UsageError("--overlay: a trace is drawn over 2D scenes only");
   if (o.is3d()) try {
-      const RenderPlan3d plan = planStills3d(o.variantLoader3(), request(o));
+      const RenderPlan3d plan = planStills3d(o.variantLoader3d(), request(o));
       traced<TraceWriter3d>(o.trace, plan, [&](TraceWriter3d* trace) { writePlan3d(plan, !o.verbose, print, trace); });
       return kExitOk;
     } catch (const VariantDiverged3d& d) {

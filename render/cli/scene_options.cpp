@@ -112,7 +112,7 @@ render::video::LoadVariant SceneOptions::variantLoader() const {
   };
 }
 
-render::video::LoadVariant3d SceneOptions::variantLoader3() const {
+render::video::LoadVariant3d SceneOptions::variantLoader3d() const {
   (void)open();
   return [options = *this](const std::string& variant) {
     SceneOptions one = options;

@@ -36,7 +36,7 @@ struct SceneOptions {
   // any variant of the scene ("" the base scene) with the overrides applied, as a render plan reads them
   render::video::LoadVariant variantLoader() const;
   // the same for a 3D scene's variants
-  render::video::LoadVariant3d variantLoader3() const;
+  render::video::LoadVariant3d variantLoader3d() const;
 
  private:
   mutable std::shared_ptr<const OpenScene> opened_;  // (shared by copies, as the variant loaders make)

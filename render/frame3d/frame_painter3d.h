@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "render/draw/canvas.h"
 #include "render/draw3d/canvas3d.h"
 #include "render/frame/caption.h"
 #include "render/frame3d/energy3d.h"

@@ -1,6 +1,7 @@
 // Energies and momenta of the notes' "Rigid body kinetic energy" and "Forces and torques" slides.
 #pragma once
 
+#include "sim/core/body.h"
 #include "sim/world/world.h"
 
 namespace sim::world {

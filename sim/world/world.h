@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/collision/collide.h"
 #include "sim/collision/pair_cache.h"
 #include "sim/core/body.h"
 #include "sim/core/forces.h"
@@ -81,7 +82,7 @@ class World {
   ForceSet forces;
   std::vector<ImpulseEvent> events;  // any order; applied in time order
   Integrator integrator = Integrator::SymplecticEuler;
-  double dt = settings::kDefaultDt;
+  double dt = settings::kDefaultDt;                    // read once, by start(): the step grid's spacing
   CollisionMethod collisions = CollisionMethod::Auto;  // resolved when the run starts
   MethodReason methodReason = MethodReason::Requested;
   std::optional<double> methodSwitchTime;  // when `auto` went from event to the stack solver

@@ -191,22 +191,31 @@ std::string stem(const std::string& path) {
 }
 
 // the text at `at` opens a document of its own: a '---' there, or a '...' line (the end of the one
-// before) above it
+// before) above it, comments and blank lines between. yaml-cpp's marks do not count a UTF-8 BOM.
 bool startsSecondDocument(const std::string& text, const YAML::Mark& at) {
-  if (at.is_null() || at.pos < 0 || static_cast<size_t>(at.pos) >= text.size()) return true;
-  if (text.compare(at.pos, 3, "---") == 0) return true;
-  size_t end = text.rfind('\n', at.pos);
-  while (end != std::string::npos && end > 0) {
+  const size_t bom = text.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;
+  if (at.is_null() || at.pos < 0 || bom + at.pos >= text.size()) return true;
+  const size_t pos = bom + at.pos;
+  if (text.compare(pos, 3, "---") == 0) return true;
+  const auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
+  size_t end = text.rfind('\n', pos);
+  while (end != std::string::npos && end > bom) {
     const size_t begin = text.rfind('\n', end - 1);
-    const size_t from = begin == std::string::npos ? 0 : begin + 1;
-    std::string previous = text.substr(from, end - from);
-    while (!previous.empty() && (previous.back() == ' ' || previous.back() == '\r' || previous.back() == '\t'))
-      previous.pop_back();
-    if (!previous.empty() && previous[0] != '#') return previous == "...";
+    size_t from = begin == std::string::npos ? bom : begin + 1;
+    while (from < end && blank(text[from])) ++from;
+    if (from < end && text[from] != '#')
+      return text.compare(from, 3, "...") == 0 && (from + 3 == end || blank(text[from + 3]) || text[from + 3] == '#');
     if (begin == std::string::npos) break;
     end = begin;
   }
   return false;
+}
+
+// what a message quotes of the text at `at`: its character when it is printable ASCII
+std::string quotedAt(const std::string& text, const YAML::Mark& at) {
+  const size_t pos = (text.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0) + static_cast<size_t>(std::max(at.pos, 0));
+  if (pos < text.size() && text[pos] > ' ' && text[pos] < 0x7f) return std::string("'") + text[pos] + "'";
+  return "this text";
 }
 
 }  // namespace
@@ -223,8 +232,8 @@ SceneDocument sceneDocumentText(const std::string& text, const std::string& file
       // only a '---', or text after a '...', is a second document
       if (!startsSecondDocument(text, at))
         throw SceneError(file, line, column,
-                         std::string("invalid YAML: a scene cannot start with '") + text[std::max(at.pos, 0)] +
-                             "' here; a scene file is one YAML map of `key: value` lines");
+                         "invalid YAML: a scene cannot start with " + quotedAt(text, at) +
+                             " here; a scene file is one YAML map of `key: value` lines");
       throw SceneError(file, line, column,
                        "a second YAML document (after '---'): a scene file holds one scene; put the other in a file of its own");
     }

@@ -136,9 +136,15 @@ TEST_CASE("text the parser cannot start a document with is invalid YAML at its p
   const sim::yaml::SceneError dashes = loadError(kOneBody + "---\nname: t\n", "");
   CHECK(dashes.line == 3);
   CHECK(dashes.message.find("a second YAML document") == 0);
-  const sim::yaml::SceneError dots = loadError(kOneBody + "...\n# next\nname: t\n", "");
+  const sim::yaml::SceneError dots = loadError(kOneBody + "... # end\n  # next\nname: t\n", "");
   CHECK(dots.line == 5);
   CHECK(dots.message.find("a second YAML document") == 0);
+  // a byte order mark is not counted in the parser's places, and is skipped here too
+  const sim::yaml::SceneError bom = loadError("\xEF\xBB\xBF" + kOneBody + "---\nname: t\n", "");
+  CHECK(bom.line == 3);
+  CHECK(bom.message.find("a second YAML document") == 0);
+  const sim::yaml::SceneError bomComma = loadError("\xEF\xBB\xBF,a: 1\n", "");
+  CHECK(bomComma.message.find("invalid YAML: a scene cannot start with ','") == 0);
 }
 
 TEST_CASE("a variant keeps the scene's order of keys and bodies, and appends what it adds") {
