@@ -19,6 +19,10 @@ namespace sim::yaml {
 
 namespace {
 
+// the merge nests as deep as yaml-cpp lets a file's own text nest (its parser's depth guard): deeper
+// nesting can come only through aliases, and the merge's recursion would overflow the stack
+constexpr int kMaxMergeDepth = 500;
+
 // A variant merged over the scene: maps key by key, the bodies list by name (each body's keys
 // replaced whole), other values whole. The merge builds new maps and lists out of the file's
 // nodes and never changes one: yaml-cpp's nodes are shared by every alias of them, so a merge in
@@ -26,10 +30,6 @@ namespace {
 // a: *m}`) would insert into the map it iterates. Each key-value pair of the file costs it at
 // least one byte, so a merge that visits more pairs than the file has bytes is repeating them
 // through aliases (an alias bomb, tenfold per level): it stops there instead of running for hours.
-// the merge nests as deep as yaml-cpp lets a file's own text nest (its parser's depth guard): deeper
-// nesting can come only through aliases, and the merge's recursion would overflow the stack
-constexpr int kMaxMergeDepth = 500;
-
 class VariantMerge {
  public:
   VariantMerge(const Reader& r, std::string variant, size_t fileBytes)
@@ -190,18 +190,18 @@ std::string stem(const std::string& path) {
   return base;
 }
 
-// the text at `at` opens a document of its own: a '---' there, or a '...' line (the end of the one
-// before) above it, comments and blank lines between. yaml-cpp's marks do not count a UTF-8 BOM.
-bool startsSecondDocument(const std::string& text, const YAML::Mark& at) {
-  const size_t bom = text.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;
-  if (at.is_null() || at.pos < 0 || bom + at.pos >= text.size()) return true;
-  const size_t pos = bom + at.pos;
-  if (text.compare(pos, 3, "---") == 0) return true;
+// the bytes a UTF-8 byte order mark takes at the start of the text: yaml-cpp's marks do not count it
+size_t bomBytes(const std::string& text) { return text.starts_with("\xEF\xBB\xBF") ? 3 : 0; }
+
+// the text at byte `pos` opens a document of its own: a '---' there, or a '...' line (the end of
+// the one before) above it, comments and blank lines between
+bool startsSecondDocument(const std::string& text, size_t pos) {
+  if (pos >= text.size() || text.compare(pos, 3, "---") == 0) return true;
   const auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
   size_t end = text.rfind('\n', pos);
-  while (end != std::string::npos && end > bom) {
+  while (end != std::string::npos && end > bomBytes(text)) {
     const size_t begin = text.rfind('\n', end - 1);
-    size_t from = begin == std::string::npos ? bom : begin + 1;
+    size_t from = begin == std::string::npos ? bomBytes(text) : begin + 1;
     while (from < end && blank(text[from])) ++from;
     if (from < end && text[from] != '#')
       return text.compare(from, 3, "...") == 0 && (from + 3 == end || blank(text[from + 3]) || text[from + 3] == '#');
@@ -209,13 +209,6 @@ bool startsSecondDocument(const std::string& text, const YAML::Mark& at) {
     end = begin;
   }
   return false;
-}
-
-// what a message quotes of the text at `at`: its character when it is printable ASCII
-std::string quotedAt(const std::string& text, const YAML::Mark& at) {
-  const size_t pos = (text.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0) + static_cast<size_t>(std::max(at.pos, 0));
-  if (pos < text.size() && text[pos] > ' ' && text[pos] < 0x7f) return std::string("'") + text[pos] + "'";
-  return "this text";
 }
 
 }  // namespace
@@ -230,10 +223,14 @@ SceneDocument sceneDocumentText(const std::string& text, const std::string& file
       const int line = at.is_null() ? 1 : at.line + 1, column = at.is_null() ? 1 : at.column + 1;
       // the parser also starts a "document" at text it cannot read as one (a line opening with ','):
       // only a '---', or text after a '...', is a second document
-      if (!startsSecondDocument(text, at))
-        throw SceneError(file, line, column,
-                         "invalid YAML: a scene cannot start with " + quotedAt(text, at) +
-                             " here; a scene file is one YAML map of `key: value` lines");
+      const size_t pos = bomBytes(text) + static_cast<size_t>(std::max(at.pos, 0));
+      if (!at.is_null() && !startsSecondDocument(text, pos)) {
+        // the character quoted when it is printable ASCII (not a byte of a longer UTF-8 one)
+        const std::string what = text[pos] > ' ' && text[pos] < 0x7f ? std::string("'") + text[pos] + "'" : "this text";
+        throw SceneError(
+            file, line, column,
+            "invalid YAML: a scene cannot start with " + what + " here; a scene file is one YAML map of `key: value` lines");
+      }
       throw SceneError(file, line, column,
                        "a second YAML document (after '---'): a scene file holds one scene; put the other in a file of its own");
     }
