@@ -1,6 +1,7 @@
 // A touching pair and what the collision methods record about it.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string_view>
@@ -77,6 +78,8 @@ struct RestingRecord {
 // the same pair and the same features as last step start from last step's impulses (warm
 // starting); both lists sorted by pair
 void matchWarmStart(const std::vector<Contact>& previous, std::vector<Contact>& fresh);
+// the same for fresh[first, last) alone (threads each matching their share)
+void matchWarmStart(const std::vector<Contact>& previous, std::vector<Contact>& fresh, size_t first, size_t last);
 
 // pair coefficients (documented in scenes/README.md): the larger restitution (a bouncy ball
 // bounces on any floor, as in Box2D) and the geometric mean of the frictions

@@ -82,14 +82,17 @@ class SoftStepSolver final : public Method {
   // restitution once after them all; the impulses kept for the next step
   void step(World& world, const TimeStep& step) override {
     // the contacts where the bodies are now, carrying over last step's impulses, prepared once
-    world.findContacts(speculativeMargin(world, step.h), fresh_);
-    matchWarmStart(world.contacts, fresh_);
+    WorkerPool& threads = pool(world.threads);
+    world.findContacts(speculativeMargin(world, step.h), fresh_, &threads);
+    threads.run([&](int t) {
+      const auto [first, last] = Share{t, threads.size()}.of(0, static_cast<int>(fresh_.size()));
+      matchWarmStart(world.contacts, fresh_, first, last);
+    });
     std::swap(world.contacts, fresh_);
     prepare(world, step.h / world.substeps);
     // the substeps; with sim: threads, every stage split between the threads, which meet after
     // each stage and each set of contacts
     loadBodies(world);
-    WorkerPool& threads = pool(world.threads);
     threads.run([&](int t) { substeps(world, step, Share{t, threads.size()}, threads); });
     storeBodies(world);
     // restitution once, from the velocity before the substeps; the impulses kept, the impacts
@@ -387,16 +390,33 @@ class SoftStepSolver final : public Method {
 
   // the impulses kept for the next step's warm start, and the impacts of the step recorded
   void store(World& world, double t) {
+    // the impulses back into the contacts, each thread its share
+    WorkerPool& threads = pool(world.threads);
+    threads.run([&](int th) {
+      const auto [first, last] = Share{th, threads.size()}.of(0, static_cast<int>(world.contacts.size()));
+      for (int i = first; i < last; ++i) {
+        Contact& c = world.contacts[i];
+        const soft::ContactBlock& blk = blocks_[slots_[i].block];
+        const int l = slots_[i].lane;
+        for (int k = 0; k < c.manifold.count; ++k) {
+          c.state[k].normalImpulse = blk.p[k].normalImpulse.l[l];
+          c.state[k].tangentImpulse = blk.p[k].tangentImpulse.l[l];
+        }
+      }
+    });
+    // the impacts, in the contacts' order (the approach speeds read first: a pile at rest has
+    // none, and its contacts are not touched again)
     for (size_t i = 0; i < world.contacts.size(); ++i) {
-      Contact& c = world.contacts[i];
-      const soft::ContactBlock& blk = blocks_[slots_[i].block];
-      const int l = slots_[i].lane;
-      for (int k = 0; k < c.manifold.count; ++k) {
+      for (int k = 0; k < 2; ++k) {
+        const double vnBefore = vnBefore_[2 * i + k];
+        if (vnBefore >= -settings::kRestitutionThreshold) continue;
+        const Contact& c = world.contacts[i];
+        if (k >= c.manifold.count) continue;
+        const soft::ContactBlock& blk = blocks_[slots_[i].block];
+        const int l = slots_[i].lane;
         const soft::PointLanes& p = blk.p[k];
-        const double vnBefore = vnBefore_[2 * i + k], total = p.totalNormalImpulse.l[l];
-        c.state[k].normalImpulse = p.normalImpulse.l[l];
-        c.state[k].tangentImpulse = p.tangentImpulse.l[l];
-        if (vnBefore >= -settings::kRestitutionThreshold || total <= 0.0) continue;
+        const double total = p.totalNormalImpulse.l[l];
+        if (total <= 0.0) continue;
         const LeverArms r = armsOf(i, k);
         const Vec2 n = c.manifold.normal;
         ImpactRecord rec{t, c.a, c.b, c.manifold.points[k].point, n, total, p.tangentImpulse.l[l]};

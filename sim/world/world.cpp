@@ -5,6 +5,8 @@
 #include <limits>
 #include <string>
 
+#include "sim/world/worker_pool.h"
+
 namespace sim::world {
 using namespace sim::core;
 using namespace sim::collision;
@@ -59,49 +61,84 @@ std::vector<Contact> World::findContacts(double margin) const {
   return found;
 }
 
-void World::findContacts(double margin, std::vector<Contact>& found) {
+void World::findContacts(double margin, std::vector<Contact>& found, WorkerPool* threads) {
   const bool skip = sleeping() && sleep_.sleepingBodies() > 0;
   // when every body that can move sleeps, nothing touches anything awake: not even the broad phase
   if (skip && sleep_.sleepingBodies() == std::count_if(bodies.begin(), bodies.end(), [](const Body& b) { return !b.isStatic; })) {
     found.clear();
     return;
   }
-  collectContacts(margin, found, skip);
+  collectContacts(margin, found, skip, threads);
   // sleeping islands that an awake body touches wake before the solve (Box2D v3 wakes a solver set
   // when a contact begins touching it), and their own contacts are found with them (and may touch
   // another island)
-  while (skip && sleep_.wakeTouched(found, contacts)) collectContacts(margin, found, sleep_.sleepingBodies() > 0);
+  while (skip && sleep_.wakeTouched(found, contacts)) collectContacts(margin, found, sleep_.sleepingBodies() > 0, threads);
 }
 
-void World::collectContacts(double margin, std::vector<Contact>& found, bool awakeOnly) const {
+void World::collectContacts(double margin, std::vector<Contact>& found, bool awakeOnly, WorkerPool* threads) const {
+  const int n = static_cast<int>(bodies.size());
+  const bool shared = threads && threads->size() > 1;
+  // the i-th of `parts` nearly equal pieces of [0, count)
+  auto piece = [](int count, int i, int parts) {
+    return std::pair<int, int>{static_cast<int>(long{count} * i / parts), static_cast<int>(long{count} * (i + 1) / parts)};
+  };
   // each body placed once (one sine and cosine, its vertices in the world), for its bounds and
   // every pair it is in
-  placed_.resize(bodies.size());
-  std::vector<Aabb> boxes(bodies.size());
-  std::vector<bool> fixed(bodies.size());
-  for (size_t i = 0; i < bodies.size(); ++i) {
-    const Body& b = bodies[i];
-    place(b.shape, b.pose(), placed_[i]);
-    Aabb box = bounds(placed_[i]);
-    box.lower -= Vec2::Constant(margin);
-    box.upper += Vec2::Constant(margin);
-    boxes[i] = box;
-    fixed[i] = b.isStatic;
+  placed_.resize(n);
+  boxes_.resize(n);
+  auto placeBodies = [&](int first, int last) {
+    for (int i = first; i < last; ++i) {
+      const Body& b = bodies[i];
+      place(b.shape, b.pose(), placed_[i]);
+      Aabb box = bounds(placed_[i]);
+      box.lower -= Vec2::Constant(margin);
+      box.upper += Vec2::Constant(margin);
+      boxes_[i] = box;
+    }
+  };
+  if (shared) {
+    threads->run([&](int t) {
+      const auto [first, last] = piece(n, t, threads->size());
+      placeBodies(first, last);
+    });
+  } else {
+    placeBodies(0, n);
   }
-  pairCache_.find(boxes, fixed, pairs_);
-  found.clear();
-  for (const auto& [i, j] : pairs_) {
-    const Body &a = bodies[i], &b = bodies[j];
-    // a sleeping pile's pairs are not tested: they are kept as they were when it fell asleep
-    if (awakeOnly && (a.isStatic || sleep_.asleep(i)) && (b.isStatic || sleep_.asleep(j))) continue;
-    const Manifold m = collide(placed_[i], placed_[j], margin);
-    if (m.count == 0) continue;
+  fixed_.resize(n);
+  for (int i = 0; i < n; ++i) fixed_[i] = bodies[i].isStatic;
+  pairCache_.find(boxes_, fixed_, pairs_);
+  // a pair's manifold; a sleeping pile's pairs are not tested: they are kept as they were when it
+  // fell asleep
+  auto collidePair = [&](const std::pair<int, int>& pair) {
+    const auto [i, j] = pair;
+    if (awakeOnly && (bodies[i].isStatic || sleep_.asleep(i)) && (bodies[j].isStatic || sleep_.asleep(j))) return Manifold{};
+    return collide(placed_[i], placed_[j], margin);
+  };
+  auto keep = [&](const std::pair<int, int>& pair, const Manifold& m) {
+    const auto [i, j] = pair;
     Contact& c = found.emplace_back();
     c.a = i, c.b = j;
     c.manifold = m;
-    c.restitution = combinedRestitution(a.restitution, b.restitution);
-    c.friction = combinedFriction(a.friction, b.friction);
+    c.restitution = combinedRestitution(bodies[i].restitution, bodies[j].restitution);
+    c.friction = combinedFriction(bodies[i].friction, bodies[j].friction);
+  };
+  found.clear();
+  if (!shared) {
+    for (const auto& pair : pairs_) {
+      const Manifold m = collidePair(pair);
+      if (m.count > 0) keep(pair, m);
+    }
+    return;
   }
+  // with threads, each its share of the pairs, then the touching ones kept in order (the same list)
+  const int pairCount = static_cast<int>(pairs_.size());
+  manifolds_.resize(pairCount);
+  threads->run([&](int t) {
+    const auto [first, last] = piece(pairCount, t, threads->size());
+    for (int k = first; k < last; ++k) manifolds_[k] = collidePair(pairs_[k]);
+  });
+  for (int k = 0; k < pairCount; ++k)
+    if (manifolds_[k].count > 0) keep(pairs_[k], manifolds_[k]);
 }
 
 void World::start() {

@@ -20,6 +20,8 @@
 #include "sim/world/sleep.h"
 
 namespace sim::world {
+class WorkerPool;
+using sim::collision::Aabb;
 using sim::collision::PairCache;
 using sim::collision::PlacedShape;
 using sim::core::Body;
@@ -129,8 +131,9 @@ class World {
   std::vector<Contact> findContacts(double margin) const;
   // the solvers' contacts: as findContacts, less the pairs of sleeping bodies with each other and with
   // static ones; a sleeping island that a found contact touches wakes first (its kept contacts back
-  // in `contacts`, for the warm start), so that it is solved with what touched it
-  void findContacts(double margin, std::vector<Contact>& found);
+  // in `contacts`, for the warm start), so that it is solved with what touched it. With `threads`,
+  // the bodies are placed and the pairs collided on all of them (the contacts are the same)
+  void findContacts(double margin, std::vector<Contact>& found, WorkerPool* threads = nullptr);
 
   // sleeping (sleep.h): whether a body sleeps now, and how many do
   bool asleep(int body) const { return sleep_.asleep(body); }
@@ -151,8 +154,8 @@ class World {
   void checkFinite(double t) const;
   bool sleeping() const;
   // the manifolds into `found` (cleared first, its storage kept), without the sleeping pairs when
-  // `awakeOnly`
-  void collectContacts(double margin, std::vector<Contact>& found, bool awakeOnly) const;
+  // `awakeOnly`; the placing and the narrow phase split between `threads` when there are two or more
+  void collectContacts(double margin, std::vector<Contact>& found, bool awakeOnly, WorkerPool* threads = nullptr) const;
 
   bool started_ = false;
   std::vector<ImpulseEvent> pending_;  // sorted by time
@@ -167,7 +170,10 @@ class World {
   // do not depend on them)
   mutable PairCache pairCache_;
   mutable std::vector<std::pair<int, int>> pairs_;  // scratch of findContacts: the pairs,
-  mutable std::vector<PlacedShape> placed_;         // and the bodies' shapes where they are
+  mutable std::vector<PlacedShape> placed_;         // and the bodies' shapes where they are,
+  mutable std::vector<Aabb> boxes_;                 // their bounds with the margin,
+  mutable std::vector<bool> fixed_;                 // which are static,
+  mutable std::vector<Manifold> manifolds_;         // and each pair's manifold, when threads share them
   mutable std::vector<Vec2> force_;                 // scratch of rates()
   mutable std::vector<double> torque_;
 };
