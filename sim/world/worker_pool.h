@@ -1,7 +1,8 @@
 // A few threads that run one task side by side and meet at barriers: soft_step's sets of
 // contacts, each set split between the threads (the contacts of a set touch disjoint bodies, so
 // the split never changes the result). The workers sleep between tasks (C++20 atomic wait, a
-// futex) and spin only at the barriers, which are short: one set's contacts.
+// futex) once no task came for most of a millisecond, and spin at the barriers, which are short:
+// one set's contacts.
 #pragma once
 
 #include <atomic>
