@@ -114,31 +114,43 @@ void World::collectContacts(double margin, std::vector<Contact>& found, bool awa
     if (awakeOnly && (bodies[i].isStatic || sleep_.asleep(i)) && (bodies[j].isStatic || sleep_.asleep(j))) return Manifold{};
     return collide(placed_[i], placed_[j], margin);
   };
-  auto keep = [&](const std::pair<int, int>& pair, const Manifold& m) {
+  auto fill = [&](Contact& c, const std::pair<int, int>& pair, const Manifold& m) {
     const auto [i, j] = pair;
-    Contact& c = found.emplace_back();
     c.a = i, c.b = j;
     c.manifold = m;
     c.restitution = combinedRestitution(bodies[i].restitution, bodies[j].restitution);
     c.friction = combinedFriction(bodies[i].friction, bodies[j].friction);
+    c.state[0] = c.state[1] = ContactPointState{};
   };
-  found.clear();
   if (!shared) {
+    found.clear();
     for (const auto& pair : pairs_) {
       const Manifold m = collidePair(pair);
-      if (m.count > 0) keep(pair, m);
+      if (m.count > 0) fill(found.emplace_back(), pair, m);
     }
     return;
   }
-  // with threads, each its share of the pairs, then the touching ones kept in order (the same list)
-  const int pairCount = static_cast<int>(pairs_.size());
+  // with threads, each collides its share of the pairs and counts the touching ones; then each
+  // writes its touching pairs from where the shares before it end (the same list, in order)
+  const int pairCount = static_cast<int>(pairs_.size()), parts = threads->size();
   manifolds_.resize(pairCount);
+  touching_.assign(parts + 1, 0);
   threads->run([&](int t) {
-    const auto [first, last] = piece(pairCount, t, threads->size());
-    for (int k = first; k < last; ++k) manifolds_[k] = collidePair(pairs_[k]);
+    const auto [first, last] = piece(pairCount, t, parts);
+    for (int k = first; k < last; ++k) {
+      manifolds_[k] = collidePair(pairs_[k]);
+      touching_[t + 1] += manifolds_[k].count > 0;
+    }
   });
-  for (int k = 0; k < pairCount; ++k)
-    if (manifolds_[k].count > 0) keep(pairs_[k], manifolds_[k]);
+  for (int t = 0; t < parts; ++t) touching_[t + 1] += touching_[t];
+  // (the entries kept from the last call are overwritten whole by fill)
+  found.resize(touching_[parts]);
+  threads->run([&](int t) {
+    const auto [first, last] = piece(pairCount, t, parts);
+    int next = touching_[t];
+    for (int k = first; k < last; ++k)
+      if (manifolds_[k].count > 0) fill(found[next++], pairs_[k], manifolds_[k]);
+  });
 }
 
 void World::start() {

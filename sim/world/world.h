@@ -173,7 +173,8 @@ class World {
   mutable std::vector<PlacedShape> placed_;         // and the bodies' shapes where they are,
   mutable std::vector<Aabb> boxes_;                 // their bounds with the margin,
   mutable std::vector<bool> fixed_;                 // which are static,
-  mutable std::vector<Manifold> manifolds_;         // and each pair's manifold, when threads share them
+  mutable std::vector<Manifold> manifolds_;         // and each pair's manifold, when threads share them,
+  mutable std::vector<int> touching_;               // with where each thread's touching pairs begin
   mutable std::vector<Vec2> force_;                 // scratch of rates()
   mutable std::vector<double> torque_;
 };
