@@ -102,16 +102,6 @@ class SoftStepSolver final : public Method {
   }
 
  private:
-  // one thread's part of a range: the t-th of n nearly equal pieces (the split never changes a
-  // result, only who computes it)
-  struct Share {
-    int t = 0, n = 1;
-    std::pair<int, int> of(int begin, int end) const {
-      const long len = end - begin;
-      return {begin + static_cast<int>(len * t / n), begin + static_cast<int>(len * (t + 1) / n)};
-    }
-  };
-
   void substeps(const World& world, const TimeStep& step, const Share& share, WorkerPool& threads) {
     const int n = world.substeps;
     const double h = step.h / n;

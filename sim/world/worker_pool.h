@@ -8,9 +8,20 @@
 #include <atomic>
 #include <functional>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace sim::world {
+
+// one thread's part of a range: the t-th of n nearly equal pieces (the split never changes a
+// result, only who computes it)
+struct Share {
+  int t = 0, n = 1;
+  std::pair<int, int> of(int begin, int end) const {
+    const long len = end - begin;
+    return {begin + static_cast<int>(len * t / n), begin + static_cast<int>(len * (t + 1) / n)};
+  }
+};
 
 class WorkerPool {
  public:

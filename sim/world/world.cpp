@@ -78,10 +78,6 @@ void World::findContacts(double margin, std::vector<Contact>& found, WorkerPool*
 void World::collectContacts(double margin, std::vector<Contact>& found, bool awakeOnly, WorkerPool* threads) const {
   const int n = static_cast<int>(bodies.size());
   const bool shared = threads && threads->size() > 1;
-  // the i-th of `parts` nearly equal pieces of [0, count)
-  auto piece = [](int count, int i, int parts) {
-    return std::pair<int, int>{static_cast<int>(long{count} * i / parts), static_cast<int>(long{count} * (i + 1) / parts)};
-  };
   // each body placed once (one sine and cosine, its vertices in the world), for its bounds and
   // every pair it is in
   placed_.resize(n);
@@ -98,7 +94,7 @@ void World::collectContacts(double margin, std::vector<Contact>& found, bool awa
   };
   if (shared) {
     threads->run([&](int t) {
-      const auto [first, last] = piece(n, t, threads->size());
+      const auto [first, last] = Share{t, threads->size()}.of(0, n);
       placeBodies(first, last);
     });
   } else {
@@ -136,7 +132,7 @@ void World::collectContacts(double margin, std::vector<Contact>& found, bool awa
   manifolds_.resize(pairCount);
   touching_.assign(parts + 1, 0);
   threads->run([&](int t) {
-    const auto [first, last] = piece(pairCount, t, parts);
+    const auto [first, last] = Share{t, parts}.of(0, pairCount);
     for (int k = first; k < last; ++k) {
       manifolds_[k] = collidePair(pairs_[k]);
       touching_[t + 1] += manifolds_[k].count > 0;
@@ -146,7 +142,7 @@ void World::collectContacts(double margin, std::vector<Contact>& found, bool awa
   // (the entries kept from the last call are overwritten whole by fill)
   found.resize(touching_[parts]);
   threads->run([&](int t) {
-    const auto [first, last] = piece(pairCount, t, parts);
+    const auto [first, last] = Share{t, parts}.of(0, pairCount);
     int next = touching_[t];
     for (int k = first; k < last; ++k)
       if (manifolds_[k].count > 0) fill(found[next++], pairs_[k], manifolds_[k]);
