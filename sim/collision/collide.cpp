@@ -84,7 +84,8 @@ struct ClipPoint {
 
 // keep the part of segment (in[0], in[1]) where normal·x ≤ offset (Box2D-Lite's ClipSegmentToLine);
 // the side plane is that of reference vertex `sideVertex`
-int clipSegment(const ClipPoint in[2], ClipPoint out[2], const Vec2& normal, double offset, int sideVertex) {
+[[gnu::always_inline]] inline int clipSegment(const ClipPoint in[2], ClipPoint out[2], const Vec2& normal, double offset,
+                                              int sideVertex) {
   int count = 0;
   const double d0 = normal.dot(in[0].p) - offset, d1 = normal.dot(in[1].p) - offset;
   if (d0 <= 0.0) out[count++] = in[0];

@@ -1,6 +1,8 @@
 // A touching pair and what the collision methods record about it.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -75,15 +77,14 @@ struct RestingRecord {
   bool moving = false;
 };
 
-// the same pair and the same features as last step start from last step's impulses (warm
-// starting); both lists sorted by pair
-void matchWarmStart(const std::vector<Contact>& previous, std::vector<Contact>& fresh);
-// the same for fresh[first, last) alone (threads each matching their share)
-void matchWarmStart(const std::vector<Contact>& previous, std::vector<Contact>& fresh, size_t first, size_t last);
+// one contact's points: each starts from the impulses of `previous`'s point of the same features
+// (the same pair's contact last step: the warm start of the stack solvers, Catto 2006)
+void carryImpulses(const Contact& previous, Contact& c);
 
 // pair coefficients (documented in scenes/README.md): the larger restitution (a bouncy ball
-// bounces on any floor, as in Box2D) and the geometric mean of the frictions
-double combinedRestitution(double a, double b);
-double combinedFriction(double a, double b);
+// bounces on any floor, as in Box2D) and the geometric mean of the frictions (inline: every pair
+// of every step asks, and the call was 1.4 % of a step on the 5,050-box pyramid)
+inline double combinedRestitution(double a, double b) { return std::max(a, b); }
+inline double combinedFriction(double a, double b) { return std::sqrt(a * b); }
 
 }  // namespace sim::world

@@ -246,7 +246,6 @@ class SequentialSolver final : public Method {
     // the contacts where the bodies are now, carrying over last step's impulses (warm starting),
     // prepared for the loops
     world.findContacts(settings::kContactMargin, fresh_);
-    matchWarmStart(world.contacts, fresh_);
     std::swap(world.contacts, fresh_);
     prepareContacts(world, step.h, poses_, constraints_, anchors_, vnBefore_);
     // move freely, remembering where the free motion ends

@@ -84,10 +84,6 @@ class SoftStepSolver final : public Method {
     // the contacts where the bodies are now, carrying over last step's impulses, prepared once
     WorkerPool& threads = pool(world.threads);
     world.findContacts(speculativeMargin(world, step.h), fresh_, &threads);
-    threads.run([&](int t) {
-      const auto [first, last] = Share{t, threads.size()}.of(0, static_cast<int>(fresh_.size()));
-      matchWarmStart(world.contacts, fresh_, first, last);
-    });
     std::swap(world.contacts, fresh_);
     prepare(world, step.h / world.substeps);
     // the substeps; with sim: threads, every stage split between the threads, which meet after

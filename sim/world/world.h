@@ -131,8 +131,10 @@ class World {
   std::vector<Contact> findContacts(double margin) const;
   // the solvers' contacts: as findContacts, less the pairs of sleeping bodies with each other and with
   // static ones; a sleeping island that a found contact touches wakes first (its kept contacts back
-  // in `contacts`, for the warm start), so that it is solved with what touched it. With `threads`,
-  // the bodies are placed and the pairs collided on all of them (the contacts are the same)
+  // in `contacts`, for the warm start), so that it is solved with what touched it. Each found point
+  // starts from the impulses of the same pair's same features in `contacts` (carryImpulses).
+  // With `threads`, the bodies are placed and the pairs collided on all of them (the contacts are
+  // the same)
   void findContacts(double margin, std::vector<Contact>& found, WorkerPool* threads = nullptr);
 
   // sleeping (sleep.h): whether a body sleeps now, and how many do
@@ -153,9 +155,11 @@ class World {
   void applyDueEvents(StepObserver* observer);
   void checkFinite(double t) const;
   bool sleeping() const;
-  // the manifolds into `found` (cleared first, its storage kept), without the sleeping pairs when
-  // `awakeOnly`; the placing and the narrow phase split between `threads` when there are two or more
-  void collectContacts(double margin, std::vector<Contact>& found, bool awakeOnly, WorkerPool* threads = nullptr) const;
+  // the manifolds into `found` (its entries overwritten, its storage kept), without the sleeping pairs when
+  // `awakeOnly`, warm started from `contacts` when `warmStart`; the placing and the narrow phase
+  // split between `threads` when there are two or more
+  void collectContacts(double margin, std::vector<Contact>& found, bool awakeOnly, bool warmStart,
+                       WorkerPool* threads = nullptr) const;
 
   bool started_ = false;
   std::vector<ImpulseEvent> pending_;  // sorted by time
