@@ -75,7 +75,7 @@ format:
 	$(CLANG_FORMAT) -i $(FORMAT_FILES)
 
 # timings (never asserted in tests): stacks against Box2D 2.4 in the same run (both pyramids, both
-# layouts, 600 steps); check's start-up, the video pipeline's parts per frame and the whole render
+# layouts, 600 steps; soft_step in doubles and in floats); check's start-up, the video pipeline's parts per frame and the whole render
 # against ffmpeg alone at 720p and 1080p, the lecture pack's wall time;
 # BENCH_BASELINE=path/to/another/rigidreel times that build too, in the same run
 BENCH_BASELINE ?=
@@ -89,7 +89,7 @@ bench: build
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
 	@cmake --build $(BUILD) -j $(JOBS) --target rigidreel_bench rigidreel_stack_bench
 	@mkdir -p out/bench && rm -f out/bench/stacks.csv
-	./$(BUILD)/rigidreel_stack_bench --method sequential --method soft_step --csv out/bench/stacks.csv $(if $(BOX2D3),--box2d3 $(BOX2D3))
+	./$(BUILD)/rigidreel_stack_bench --method sequential --method soft_step --precision double --precision float --csv out/bench/stacks.csv $(if $(BOX2D3),--box2d3 $(BOX2D3))
 	./$(BUILD)/rigidreel_bench ./$(BUILD)/rigidreel scenes/three_collisions_poll.yaml $(BENCH_BASELINE) $(BENCH_FLAGS)
 
 clean:

@@ -29,6 +29,9 @@
 //   diverged                                    1 when a state stopped being finite
 //   substeps, contact_hertz                     soft_step's rows: its settings (--substeps,
 //                                               --contact-hertz); empty on the others
+//   cpu_ratio_to_box2d_v3                       cpu_ms_per_step over Box2D v3's (--box2d3, packed layouts)
+//   precision                                   ours: double, or float on soft_step:float's rows
+//                                               (--precision); empty on Box2D's
 //
 // rigidreel is reached only through scene definitions and World's public members (bodies,
 // advanceTo), so the program does not depend on how World is organised inside.
@@ -149,7 +152,7 @@ RunResult run(StackRun& engine, const char* name, const bench::StackLayout& layo
 // --- rigidreel, through a scene definition and World's public members ---
 
 sim::scene::SceneDef sceneOf(const bench::StackLayout& layout, const bench::StackSettings& s, const RunOptions& o,
-                             sim::world::CollisionMethod method) {
+                             sim::world::CollisionMethod method, sim::world::Precision precision) {
   sim::scene::SceneDef def;
   def.name = layout.name;
   def.gravity = {0.0, s.gravity};
@@ -163,6 +166,7 @@ sim::scene::SceneDef sceneOf(const bench::StackLayout& layout, const bench::Stac
   def.substeps = o.substeps;
   def.contactHertz = o.contactHertz;
   def.threads = o.threads;
+  def.precision = precision;
   sim::scene::BodyDef ground;
   ground.name = "ground";
   ground.shape = sim::core::makeBox(2.0 * layout.groundHalfWidth, 1.0);
@@ -182,8 +186,9 @@ sim::scene::SceneDef sceneOf(const bench::StackLayout& layout, const bench::Stac
 
 class OurRun : public StackRun {
  public:
-  OurRun(const bench::StackLayout& layout, const bench::StackSettings& s, const RunOptions& o, sim::world::CollisionMethod method)
-      : world_(sim::scene::buildWorld(sceneOf(layout, s, o, method))), dt_(s.dt) {
+  OurRun(const bench::StackLayout& layout, const bench::StackSettings& s, const RunOptions& o, sim::world::CollisionMethod method,
+         sim::world::Precision precision)
+      : world_(sim::scene::buildWorld(sceneOf(layout, s, o, method, precision))), dt_(s.dt) {
     world_.simdWidth = o.simdWidth;
     world_.start();
   }
@@ -332,6 +337,11 @@ int main(int argc, char** argv) {
   app.add_option("--simd-width", options.simdWidth,
                  "rigidreel's soft_step: lanes solved at once, 8, 4 or 1 (the widest the processor has, at most this)")
       ->check(CLI::IsMember({1, 4, 8}));
+  std::vector<std::string> precisions{"double"};
+  app.add_option("--precision", precisions,
+                 "rigidreel's soft_step: double or float, the numbers of its contact solve (repeatable: a row each; "
+                 "soft_step:float names the float rows)")
+      ->check(CLI::IsMember({"double", "float"}));
   app.add_option("--contact-hertz", options.contactHertz,
                  "rigidreel's soft_step: contact stiffness, Hz (capped at a quarter of the substep rate)")
       ->check([](const std::string& text) {
@@ -375,7 +385,7 @@ int main(int argc, char** argv) {
       csv << "layout,engine,boxes,settle_steps,first_timed_step,last_timed_step,velocity_iterations,"
              "position_iterations,ms_per_step,cpu_ms_per_step,cpu_ratio_to_box2d,top_displacement_m,max_off_rest_x_m,"
              "fastest_m_per_s,fastest_rad_per_s,moved,worst_top_second_half_m,worst_fastest_second_half_m_per_s,"
-             "diverged,substeps,contact_hertz,cpu_ratio_to_box2d_v3\n";
+             "diverged,substeps,contact_hertz,cpu_ratio_to_box2d_v3,precision\n";
   }
   std::printf("gravity %g, dt %.6g, %d velocity and %d position iterations, friction %g, restitution %g\n", settings.gravity,
               settings.dt, settings.velocityIterations, settings.positionIterations, settings.friction, settings.restitution);
@@ -389,7 +399,7 @@ int main(int argc, char** argv) {
       "steps %d-%d (after %d untimed steps, %g s, to settle); every engine over the same steps\n",
       options.steps, options.steps, dropSettle + 1, dropSettle + options.steps, dropSettle, options.settleSeconds);
   // at the end of the timed steps, and the worst over their second half, sampled every 10 steps
-  std::printf("%-22s %-10s %6s %11s %9s %9s %9s %13s %11s %9s %6s %12s %12s %9s %7s\n", "layout", "engine", "boxes",
+  std::printf("%-22s %-15s %6s %11s %9s %9s %9s %13s %11s %9s %6s %12s %12s %9s %7s\n", "layout", "engine", "boxes",
               "timed steps", "ms/step", "cpu ms", "top m", "|x-rest x| m", "fastest m/s", "|w| rad/s", "moved", "worst top m",
               "worst m/s", "/box2d", "/v3");
   int status = 0;
@@ -408,7 +418,7 @@ int main(int argc, char** argv) {
       if (peer && &r != &*peer) std::snprintf(ratio, sizeof ratio, "%.2f", r.cpuMsPerStep / peer->cpuMsPerStep);
       if (peer3 && &r != &*peer3) std::snprintf(ratio3, sizeof ratio3, "%.2f", r.cpuMsPerStep / peer3->cpuMsPerStep);
       std::snprintf(timed, sizeof timed, "%d-%d", r.settleSteps + 1, r.settleSteps + options.steps);
-      std::printf("%-22s %-10s %6zu %11s %9.3f %9.3f %9.4f %13.4f %11.4f %9.4f %6d %12.4f %12.4f %9s %7s%s\n",
+      std::printf("%-22s %-15s %6zu %11s %9.3f %9.3f %9.4f %13.4f %11.4f %9.4f %6d %12.4f %12.4f %9s %7s%s\n",
                   layout->name.c_str(), name.c_str(), layout->boxes.size(), timed, r.msPerStep, r.cpuMsPerStep, m.topDisplacement,
                   m.maxOffRestX, m.fastestSpeed, m.fastestSpin, m.moved, r.worstTop, r.worstSpeed, ratio, ratio3,
                   r.diverged ? "  DIVERGED" : "");
@@ -419,9 +429,10 @@ int main(int argc, char** argv) {
             << ',' << m.fastestSpeed << ',' << m.fastestSpin << ',' << m.moved << ',' << r.worstTop << ',' << r.worstSpeed << ','
             << r.diverged << ',';
       // the soft_step settings on soft_step's rows only
-      if (name == "soft_step") csv << options.substeps << ',' << options.contactHertz;
+      if (name.rfind("soft_step", 0) == 0) csv << options.substeps << ',' << options.contactHertz;
       else csv << ',';
-      csv << ',' << ratio3 << '\n';
+      const bool ours = name.rfind("box2d", 0) != 0;
+      csv << ',' << ratio3 << ',' << (!ours ? "" : name.find(":float") != std::string::npos ? "float" : "double") << '\n';
       std::fflush(stdout);
       status |= r.diverged;
     };
@@ -439,11 +450,17 @@ int main(int argc, char** argv) {
       if (peer3) row("box2d-v3", *peer3);
       else std::fprintf(stderr, "--box2d3: %s/b3_pyramid did not run\n", box2d3Dir.c_str());
     }
-    for (sim::world::CollisionMethod method : ourMethods) {
-      const std::string name(sim::world::collisionMethodName(method));
-      OurRun e(*layout, settings, options, method);
-      row(name, run(e, name.c_str(), *layout, settleSteps, options));
-    }
+    // soft_step once per --precision, the others in doubles
+    for (sim::world::CollisionMethod method : ourMethods)
+      for (const std::string& precision : precisions) {
+        const bool soft = method == sim::world::CollisionMethod::SoftStep;
+        if (!soft && precision != precisions.front()) continue;
+        const sim::world::Precision p = soft ? *sim::world::precisionFromName(precision) : sim::world::Precision::Double;
+        const std::string name =
+            std::string(sim::world::collisionMethodName(method)) + (p == sim::world::Precision::Float ? ":float" : "");
+        OurRun e(*layout, settings, options, method, p);
+        row(name, run(e, name.c_str(), *layout, settleSteps, options));
+      }
   }
   std::printf("/box2d: processor time per step against Box2D 2.4's in this run; /v3: against Box2D v3's (--box2d3)\n");
   return status;

@@ -103,6 +103,15 @@ void reportSleep(const sim::world::World& w, std::ostream& out) {
   out << '\n';
 }
 
+// with sim: {precision: float}, that soft_step solves its contacts in floats
+void reportPrecision(const sim::world::World& w, std::ostream& out) {
+  if (w.precision == sim::world::Precision::Double) return;
+  out << "  precision: " << sim::world::precisionName(w.precision) << " (soft_step's contact solve";
+  if (w.collisions != sim::world::CollisionMethod::SoftStep)
+    out << "; " << sim::world::collisionMethodName(w.collisions) << " solves in doubles";
+  out << ")\n";
+}
+
 // why a run stopped before its duration, as `simulate` says it
 std::string runFailure(const sim::scene::SceneDef& def, const sim::world::Diverged& d) {
   return "the simulation diverged at t = " + formatNumber(d.time) + ": body '" + def.bodies[d.body].name +
@@ -150,6 +159,7 @@ bool checkCase(const OpenScene& scene, const std::string& variant, const Verbosi
   reportResting(def, w, say.verbose, out);
   reportSwitch(w, out);
   reportSleep(w, out);
+  reportPrecision(w, out);
   return ok && failure.empty();
 }
 

@@ -64,6 +64,8 @@ void printJson(const sim::scene::SceneDef& def, const sim::world::World& w, bool
   if (w.methodSwitchTime) j.field("collision_method_switch_time", *w.methodSwitchTime);
   // only with sim: {sleep: true}: how many bodies sleep at the end (sim/world/sleep.h)
   if (w.sleep) j.field("sleep", true).field("sleeping_bodies", static_cast<long>(w.sleepingBodies()));
+  // only with sim: {precision: float}
+  if (w.precision != sim::world::Precision::Double) j.field("precision", sim::world::precisionName(w.precision));
   auto name = [&](int i) { return def.bodies[i].name; };
   auto pair = [&](const sim::core::Vec2& v) -> JsonWriter& { return j.beginArray().value(v.x()).value(v.y()).endArray(); };
   // every impulse the collision response applied; b is the obstacle for a body–obstacle collision

@@ -26,6 +26,8 @@ void SceneOptions::addTo(CLI::App& command) {
   command.add_option(
       "--threads", threads,
       "soft_step: threads sharing each set of contacts, 1 to 64 (the scene's sim: threads; the same result with any)");
+  command.add_option("--precision", precision,
+                     "soft_step: double or float, the numbers of its contact solve (the scene's sim: precision)");
 }
 
 const OpenScene& SceneOptions::open() const {
@@ -73,6 +75,13 @@ SceneFile SceneOptions::load() const {
       throw UsageError("--threads: give a whole number from 1 to 64");
     def.threads = *threads;
   }
+  if (!precision.empty()) {
+    const auto p = sim::world::precisionFromName(precision);
+    if (!p)
+      throw UsageError("--precision: unknown precision '" + precision +
+                       "'; choose one of: " + sim::world::kPrecisionNames.list());
+    def.precision = *p;
+  }
   return file;
 }
 
@@ -97,9 +106,11 @@ SceneFile3d SceneOptions::load3d() const {
   if (!collisions.empty())
     throw UsageError("--collisions: " + scene +
                      " is a 3D scene, and 3D scenes have no contacts (bodies pass through each other)");
-  if (substeps || contactHertz)
-    throw UsageError(std::string(substeps ? "--substeps" : "--contact-hertz") + ": " + scene +
-                     " is a 3D scene, and 3D scenes have no contacts to solve");
+  if (substeps || contactHertz || !precision.empty())
+    throw UsageError(std::string(substeps       ? "--substeps"
+                                 : contactHertz ? "--contact-hertz"
+                                                : "--precision") +
+                     ": " + scene + " is a 3D scene, and 3D scenes have no contacts to solve");
   return file;
 }
 

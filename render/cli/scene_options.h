@@ -22,8 +22,9 @@ struct SceneOptions {
   std::optional<int> substeps;         // soft_step's sim: substeps
   std::optional<double> contactHertz;  // soft_step's sim: contact_hertz, Hz
   std::optional<int> threads;          // soft_step's sim: threads
+  std::string precision;               // soft_step's sim: precision
 
-  // --variant, --integrator, --dt, --collisions, --substeps, --contact-hertz, --threads
+  // --variant, --integrator, --dt, --collisions, --substeps, --contact-hertz, --threads, --precision
   void addTo(CLI::App& command);
   // the scene file, read and parsed on first use and once: is3d() says which path to take
   const OpenScene& open() const;

@@ -43,6 +43,7 @@ World buildWorld(const SceneDef& def) {
   w.contactHertz = def.contactHertz;
   w.sleep = def.sleep;
   w.threads = def.threads;
+  w.precision = def.precision;
 
   // body points are written in the shape's coordinates; the body origin moves to the centroid
   std::vector<Vec2> centroid;

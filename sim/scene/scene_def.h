@@ -25,6 +25,7 @@ using sim::core::SpringDefOf;
 using sim::core::Vec2;
 namespace settings = sim::core::settings;
 using sim::world::CollisionMethod;
+using sim::world::Precision;
 
 struct BodyDef {
   std::string name;
@@ -84,6 +85,7 @@ struct SceneDef {
   double contactHertz = settings::kContactHertz;  // soft_step's contact stiffness, Hz
   bool sleep = false;                             // sequential and soft_step: islands at rest fall asleep (sim/world/sleep.h)
   int threads = 1;  // soft_step: threads sharing each set of contacts (sim: threads; the same state with any)
+  Precision precision = Precision::Double;  // soft_step: the numbers of its contact solve (sim: precision)
   std::vector<BodyDef> bodies;
   std::vector<PointForceDef> pointForces;
   std::vector<SpringDef> springs;

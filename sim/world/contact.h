@@ -39,6 +39,16 @@ inline constexpr EnumNames<CollisionMethod, 6> kCollisionMethodNames{{{
 inline std::string_view collisionMethodName(CollisionMethod method) { return kCollisionMethodNames.name(method); }
 inline std::optional<CollisionMethod> collisionMethodFromName(std::string_view name) { return kCollisionMethodNames.parse(name); }
 
+// the numbers soft_step solves its contacts in (`sim: {precision: ...}`): double, or float as Box2D
+// v3 does (half the width of a SIMD lane: faster on piles, to float's round-off)
+enum class Precision { Double, Float };
+inline constexpr EnumNames<Precision, 2> kPrecisionNames{{{
+    {Precision::Double, "double"},
+    {Precision::Float, "float"},
+}}};
+inline std::string_view precisionName(Precision p) { return kPrecisionNames.name(p); }
+inline std::optional<Precision> precisionFromName(std::string_view name) { return kPrecisionNames.parse(name); }
+
 // what a manifold point carries from one step to the next: its accumulated impulses, the warm
 // start of the stack solvers (Catto 2006); each solver keeps its per-step data in its own records
 struct ContactPointState {

@@ -51,10 +51,11 @@ class Method {
 std::unique_ptr<Method> makeFreeMotion();
 std::unique_ptr<Method> makeIsolatedSolver();
 std::unique_ptr<Method> makeSequentialSolver();
-std::unique_ptr<Method> makeSoftStepSolver();
+// `precision`: the numbers of its contact solve
+std::unique_ptr<Method> makeSoftStepSolver(Precision precision = Precision::Double);
 std::unique_ptr<Method> makeEventStepper();
 // the unit of a method by its name (`auto` must be resolved first: World::start)
-std::unique_ptr<Method> makeMethod(CollisionMethod method);
+std::unique_ptr<Method> makeMethod(CollisionMethod method, Precision precision = Precision::Double);
 
 // the free-body equations during one step, as the integrators see them (notes: "Dynamics of a free
 // body"): the world's rates at the step's midpoint, whatever stage time the integrator asks for.

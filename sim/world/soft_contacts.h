@@ -1,11 +1,12 @@
 // soft_step's contact constraints laid out for the machine (Box2D v3's contact_solver.c, its wide
 // constraints; Catto, "SIMD Matters", 2024; written anew here): the bodies' solver state in one
-// flat array of 64-byte records, the contacts of a set (contact_colors.h) packed eight to a
-// block, each number of a block stored as eight doubles side by side, so that one block is solved
-// in the eight lanes of an AVX-512 register, or as two halves in AVX2's four (Box2D v3 solves
-// eight floats in AVX2; eight doubles take AVX-512's width). The scalar path solves the same blocks lane by lane in
-// the same order with the same operations: since the contacts of a block touch disjoint bodies,
-// both give the same state to the bit (tests/world/soft_contacts_test.cpp).
+// flat array of records, the contacts of a set (contact_colors.h) packed eight to a block, each
+// number of a block stored as eight side by side, so that one block is solved in SIMD lanes.
+// In doubles (sim: {precision: double}, the default) a block is one AVX-512 register of eight, or
+// two halves in AVX2's four; in floats (precision: float, as Box2D v3 solves) one AVX2 register of
+// eight. The scalar path solves the same blocks lane by lane in the same order with the same
+// operations: since the contacts of a block touch disjoint bodies, both give the same state to the
+// bit (tests/world/soft_contacts_test.cpp).
 //
 // No Eigen and no standard library templates here: the wide path is compiled with -mavx2 and must
 // share no inline function with the rest of the program.
@@ -16,35 +17,40 @@ namespace sim::world::soft {
 constexpr int kLanes = 8;
 
 // a body during the substeps: velocity, and where it has moved since the step began (position
-// delta dp, rotation delta dq as cos and sin); static bodies all share one record of zeros
-struct alignas(64) BodyState {
-  double vx = 0.0, vy = 0.0, w = 0.0, unused = 0.0;
-  double dpx = 0.0, dpy = 0.0, qc = 1.0, qs = 0.0;
+// delta dp, rotation delta dq as cos and sin); static bodies all share one record of zeros. One
+// record is one register: 64 bytes of doubles, 32 of floats
+template <class T>
+struct alignas(8 * sizeof(T)) BodyStateOf {
+  T vx = 0, vy = 0, w = 0, unused = 0;
+  T dpx = 0, dpy = 0, qc = 1, qs = 0;
 };
 
-// eight doubles, one per lane
-struct alignas(64) Lanes {
-  double l[kLanes] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+// eight numbers, one per lane
+template <class T>
+struct alignas(kLanes * sizeof(T)) LanesOf {
+  T l[kLanes] = {0, 0, 0, 0, 0, 0, 0, 0};
 };
 
 // one manifold point in eight lanes; a lane without a second point has zero masses, so its
 // impulses stay zero
-struct PointLanes {
-  Lanes rAx, rAy, rBx, rBy;  // lever arms from the centers of mass, fixed at the step's start
-  Lanes baseSeparation;      // separation at the start less n · (rA − rB): the moving anchors add to it
-  Lanes normalMass, tangentMass;
-  Lanes normalImpulse, tangentImpulse;  // accumulated, warm started
-  Lanes totalNormalImpulse;             // over the step's substeps
+template <class T>
+struct PointLanesOf {
+  LanesOf<T> rAx, rAy, rBx, rBy;  // lever arms from the centers of mass, fixed at the step's start
+  LanesOf<T> baseSeparation;      // separation at the start less n · (rA − rB): the moving anchors add to it
+  LanesOf<T> normalMass, tangentMass;
+  LanesOf<T> normalImpulse, tangentImpulse;  // accumulated, warm started
+  LanesOf<T> totalNormalImpulse;             // over the step's substeps
 };
 
 // eight contacts of one set (or of the overflow, solved lane by lane)
-struct ContactBlock {
+template <class T>
+struct ContactBlockOf {
   int a[kLanes] = {0, 0, 0, 0, 0, 0, 0, 0}, b[kLanes] = {0, 0, 0, 0, 0, 0, 0, 0};  // BodyState indices
-  Lanes nx, ny;                                                                    // normal from B to A
-  Lanes invMassA, invInertiaA, invMassB, invInertiaB;
-  Lanes friction;
-  Lanes biasRate, massScale, impulseScale;  // the soft constraint (static contacts stiffer)
-  PointLanes p[2];
+  LanesOf<T> nx, ny;                                                               // normal from B to A
+  LanesOf<T> invMassA, invInertiaA, invMassB, invInertiaB;
+  LanesOf<T> friction;
+  LanesOf<T> biasRate, massScale, impulseScale;  // the soft constraint (static contacts stiffer)
+  PointLanesOf<T> p[2];
 };
 
 // what a pass needs besides the blocks
@@ -55,14 +61,18 @@ struct PassSettings {
   bool accumulate = false;    // the substep's last pass: each point's impulse added to its total
 };
 
-// the passes over blocks [begin, end), lane by lane (scalar), four lanes at once (wide: AVX2) or
-// eight (wide512: AVX-512)
-void warmStartScalar(ContactBlock* blocks, int begin, int end, BodyState* bodies);
-void solveScalar(ContactBlock* blocks, int begin, int end, BodyState* bodies, const PassSettings& s);
-void warmStartWide(ContactBlock* blocks, int begin, int end, BodyState* bodies);
-void solveWide(ContactBlock* blocks, int begin, int end, BodyState* bodies, const PassSettings& s);
-void warmStartWide512(ContactBlock* blocks, int begin, int end, BodyState* bodies);
-void solveWide512(ContactBlock* blocks, int begin, int end, BodyState* bodies, const PassSettings& s);
+// the passes over blocks [begin, end), lane by lane (scalar), four lanes at once (wide: AVX2's four
+// doubles; in floats all eight in one AVX2 register) or eight doubles (wide512: AVX-512)
+void warmStartScalar(ContactBlockOf<double>* blocks, int begin, int end, BodyStateOf<double>* bodies);
+void warmStartScalar(ContactBlockOf<float>* blocks, int begin, int end, BodyStateOf<float>* bodies);
+void solveScalar(ContactBlockOf<double>* blocks, int begin, int end, BodyStateOf<double>* bodies, const PassSettings& s);
+void solveScalar(ContactBlockOf<float>* blocks, int begin, int end, BodyStateOf<float>* bodies, const PassSettings& s);
+void warmStartWide(ContactBlockOf<double>* blocks, int begin, int end, BodyStateOf<double>* bodies);
+void warmStartWide(ContactBlockOf<float>* blocks, int begin, int end, BodyStateOf<float>* bodies);
+void solveWide(ContactBlockOf<double>* blocks, int begin, int end, BodyStateOf<double>* bodies, const PassSettings& s);
+void solveWide(ContactBlockOf<float>* blocks, int begin, int end, BodyStateOf<float>* bodies, const PassSettings& s);
+void warmStartWide512(ContactBlockOf<double>* blocks, int begin, int end, BodyStateOf<double>* bodies);
+void solveWide512(ContactBlockOf<double>* blocks, int begin, int end, BodyStateOf<double>* bodies, const PassSettings& s);
 // whether this processor runs the wide path (AVX2) and the wide512 one (AVX-512F), asked once at
 // run time
 bool wideAvailable();

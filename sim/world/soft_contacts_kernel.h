@@ -1,7 +1,7 @@
 // The soft contact passes written once over a lane type (included only by soft_contacts_scalar.cpp
-// and the soft_contacts_wide*.cpp): L is one lane of a block (double), four or all eight at once. Every
-// operation is the same in both, in the same order, so the two paths agree to the bit; and no
-// fused multiply-add (the build's -ffp-contract=off).
+// and the soft_contacts_wide*.cpp): L is one lane of a block (its number type L::T, double or
+// float), four or all eight at once. Every operation is the same in each, in the same order, so the
+// paths agree to the bit; and no fused multiply-add (the build's -ffp-contract=off).
 #pragma once
 
 #include "sim/world/soft_contacts.h"
@@ -19,7 +19,7 @@ struct BodyLanes {
 // relaxing; a point with a gap is speculative: it may close the gap within the substep, no more),
 // then Coulomb friction (Catto 2006), as Box2D v3's b2SolveContactTwoPoints does
 template <class L>
-inline void solveBlock(ContactBlock& c, BodyState* bodies, const PassSettings& s, int lane) {
+inline void solveBlock(ContactBlockOf<typename L::T>& c, BodyStateOf<typename L::T>* bodies, const PassSettings& s, int lane) {
   using V = typename L::V;
   BodyLanes<V> A = L::gather(bodies, c.a, lane), B = L::gather(bodies, c.b, lane);
   const V nx = L::load(c.nx, lane), ny = L::load(c.ny, lane);
@@ -31,7 +31,7 @@ inline void solveBlock(ContactBlock& c, BodyState* bodies, const PassSettings& s
   const V impulseScale = s.useBias ? L::load(c.impulseScale, lane) : zero;
   const V invH = L::splat(s.invH), maxPush = L::splat(-s.maxPushSpeed);
   const V dpx = A.dpx - B.dpx, dpy = A.dpy - B.dpy;
-  for (PointLanes& p : c.p) {
+  for (auto& p : c.p) {
     const V rAx = L::load(p.rAx, lane), rAy = L::load(p.rAy, lane);
     const V rBx = L::load(p.rBx, lane), rBy = L::load(p.rBy, lane);
     // the separation now: the anchors turned by each body's rotation since the step began
@@ -57,7 +57,7 @@ inline void solveBlock(ContactBlock& c, BodyState* bodies, const PassSettings& s
   }
   const V tx = zero - ny, ty = nx;
   const V friction = L::load(c.friction, lane);
-  for (PointLanes& p : c.p) {
+  for (auto& p : c.p) {
     const V rAx = L::load(p.rAx, lane), rAy = L::load(p.rAy, lane);
     const V rBx = L::load(p.rBx, lane), rBy = L::load(p.rBy, lane);
     const V dvx = (A.vx - A.w * rAy) - (B.vx - B.w * rBy);
@@ -79,14 +79,14 @@ inline void solveBlock(ContactBlock& c, BodyState* bodies, const PassSettings& s
 
 // the impulses carried over (last substep's, or last step's) applied again
 template <class L>
-inline void warmStartBlock(ContactBlock& c, BodyState* bodies, int lane) {
+inline void warmStartBlock(ContactBlockOf<typename L::T>& c, BodyStateOf<typename L::T>* bodies, int lane) {
   using V = typename L::V;
   BodyLanes<V> A = L::gather(bodies, c.a, lane), B = L::gather(bodies, c.b, lane);
   const V nx = L::load(c.nx, lane), ny = L::load(c.ny, lane);
   const V tx = L::splat(0.0) - ny, ty = nx;
   const V mA = L::load(c.invMassA, lane), iA = L::load(c.invInertiaA, lane);
   const V mB = L::load(c.invMassB, lane), iB = L::load(c.invInertiaB, lane);
-  for (PointLanes& p : c.p) {
+  for (auto& p : c.p) {
     const V rAx = L::load(p.rAx, lane), rAy = L::load(p.rAy, lane);
     const V rBx = L::load(p.rBx, lane), rBy = L::load(p.rBy, lane);
     const V jn = L::load(p.normalImpulse, lane), jt = L::load(p.tangentImpulse, lane);

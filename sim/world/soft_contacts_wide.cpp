@@ -1,7 +1,7 @@
-// soft_step's contact passes four lanes at once, each block of eight as two halves, in GCC's vector extensions: compiled with
-// -mavx2 where the compiler targets x86-64 (sim/CMakeLists.txt), one AVX2 instruction per operation on four doubles; elsewhere
-// the same code in the target's own vectors. The result is the scalar path's to the bit (same operations, same order, no fused
-// multiply-add).
+// soft_step's contact passes in doubles four lanes at once, each block of eight as two halves, in GCC's vector extensions:
+// compiled with -mavx2 where the compiler targets x86-64 (sim/CMakeLists.txt), one AVX2 instruction per operation on four
+// doubles; elsewhere the same code in the target's own vectors. The result is the scalar path's to the bit (same operations,
+// same order, no fused multiply-add). Floats: soft_contacts_wide_float.cpp.
 #include "sim/world/soft_contacts_kernel.h"
 
 #if defined(__AVX2__)
@@ -17,10 +17,12 @@ typedef double V4 __attribute__((vector_size(32)));
 typedef long long M4 __attribute__((vector_size(32)));
 
 struct WideLanes {
+  using T = double;
   using V = V4;
+  using BodyState = BodyStateOf<double>;
   // `half`: the block's first four lanes (0) or its last four (4)
-  static V load(const Lanes& x, int half) { return *reinterpret_cast<const V4*>(x.l + half); }
-  static void store(Lanes& x, int half, V v) { *reinterpret_cast<V4*>(x.l + half) = v; }
+  static V load(const LanesOf<T>& x, int half) { return *reinterpret_cast<const V4*>(x.l + half); }
+  static void store(LanesOf<T>& x, int half, V v) { *reinterpret_cast<V4*>(x.l + half) = v; }
   static V splat(double v) { return V4{v, v, v, v}; }
   static M4 greater(V a, V b) { return a > b; }
   // a where m, else b, bit by bit (as the scalar path's m ? a : b)
@@ -78,12 +80,12 @@ struct WideLanes {
 
 }  // namespace
 
-void warmStartWide(ContactBlock* blocks, int begin, int end, BodyState* bodies) {
+void warmStartWide(ContactBlockOf<double>* blocks, int begin, int end, BodyStateOf<double>* bodies) {
   for (int i = begin; i < end; ++i)
     for (int half = 0; half < kLanes; half += 4) warmStartBlock<WideLanes>(blocks[i], bodies, half);
 }
 
-void solveWide(ContactBlock* blocks, int begin, int end, BodyState* bodies, const PassSettings& s) {
+void solveWide(ContactBlockOf<double>* blocks, int begin, int end, BodyStateOf<double>* bodies, const PassSettings& s) {
   for (int i = begin; i < end; ++i)
     for (int half = 0; half < kLanes; half += 4) solveBlock<WideLanes>(blocks[i], bodies, s, half);
 }

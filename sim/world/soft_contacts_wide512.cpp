@@ -18,9 +18,11 @@ typedef double V8 __attribute__((vector_size(64)));
 typedef long long M8 __attribute__((vector_size(64)));
 
 struct Wide512Lanes {
+  using T = double;
   using V = V8;
-  static V load(const Lanes& x, int) { return *reinterpret_cast<const V8*>(x.l); }
-  static void store(Lanes& x, int, V v) { *reinterpret_cast<V8*>(x.l) = v; }
+  using BodyState = BodyStateOf<double>;
+  static V load(const LanesOf<T>& x, int) { return *reinterpret_cast<const V8*>(x.l); }
+  static void store(LanesOf<T>& x, int, V v) { *reinterpret_cast<V8*>(x.l) = v; }
   static V splat(double v) { return V8{v, v, v, v, v, v, v, v}; }
   static M8 greater(V a, V b) { return a > b; }
   // a where m, else b, bit by bit (as the scalar path's m ? a : b)
@@ -85,11 +87,11 @@ struct Wide512Lanes {
 
 }  // namespace
 
-void warmStartWide512(ContactBlock* blocks, int begin, int end, BodyState* bodies) {
+void warmStartWide512(ContactBlockOf<double>* blocks, int begin, int end, BodyStateOf<double>* bodies) {
   for (int i = begin; i < end; ++i) warmStartBlock<Wide512Lanes>(blocks[i], bodies, 0);
 }
 
-void solveWide512(ContactBlock* blocks, int begin, int end, BodyState* bodies, const PassSettings& s) {
+void solveWide512(ContactBlockOf<double>* blocks, int begin, int end, BodyStateOf<double>* bodies, const PassSettings& s) {
   for (int i = begin; i < end; ++i) solveBlock<Wide512Lanes>(blocks[i], bodies, s, 0);
 }
 
@@ -98,10 +100,10 @@ void solveWide512(ContactBlock* blocks, int begin, int end, BodyState* bodies, c
 #else
 // without AVX-512 in the build, the scalar passes (never chosen: wide512Available() says no)
 namespace sim::world::soft {
-void warmStartWide512(ContactBlock* blocks, int begin, int end, BodyState* bodies) {
+void warmStartWide512(ContactBlockOf<double>* blocks, int begin, int end, BodyStateOf<double>* bodies) {
   warmStartScalar(blocks, begin, end, bodies);
 }
-void solveWide512(ContactBlock* blocks, int begin, int end, BodyState* bodies, const PassSettings& s) {
+void solveWide512(ContactBlockOf<double>* blocks, int begin, int end, BodyStateOf<double>* bodies, const PassSettings& s) {
   solveScalar(blocks, begin, end, bodies, s);
 }
 }  // namespace sim::world::soft

@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <type_traits>
 
 #include "sim/collision/impulse.h"
 #include "sim/world/contact_colors.h"
@@ -73,7 +74,13 @@ struct LeverArms {
   Vec2 rA, rB;
 };
 
+// T: the numbers of the contact solve, double or float (sim: {precision})
+template <class T>
 class SoftStepSolver final : public Method {
+  using ContactBlock = soft::ContactBlockOf<T>;
+  using BodyState = soft::BodyStateOf<T>;
+  static constexpr bool kFloat = std::is_same_v<T, float>;
+
  public:
   std::unique_ptr<Method> clone() const override { return std::make_unique<SoftStepSolver>(*this); }
 
@@ -153,9 +160,16 @@ class SoftStepSolver final : public Method {
     blockCount_ = block;
   }
 
+  // the lanes a set's block is solved in at once, at most `allowed` (World::simdWidth): doubles
+  // eight (AVX-512), four (AVX2) or one; floats eight (AVX2) or one
+  static int laneWidth(int allowed) {
+    if constexpr (kFloat) return allowed >= 8 && soft::wideAvailable() ? 8 : 1;
+    return allowed >= 8 && soft::wide512Available() ? 8 : allowed >= 4 && soft::wideAvailable() ? 4 : 1;
+  }
+
   void prepare(World& world, double h) {
     arrange(world);
-    width_ = world.simdWidth >= 8 && soft::wide512Available() ? 8 : world.simdWidth >= 4 && soft::wideAvailable() ? 4 : 1;
+    width_ = laneWidth(world.simdWidth);
     const std::vector<Body>& bodies = world.bodies;
     const int dummy = static_cast<int>(bodies.size());  // the static bodies' shared record
     // Box2D v3: contactHertz = min(contactHertz, 0.25 × substep rate); static contacts twice as stiff
@@ -172,8 +186,8 @@ class SoftStepSolver final : public Method {
       const Share share{t, threads.size()};
       const auto [firstPadded, lastPadded] = share.of(0, static_cast<int>(padded_.size()));
       for (int k = firstPadded; k < lastPadded; ++k) {
-        soft::ContactBlock& blk = blocks_[padded_[k]];
-        blk = soft::ContactBlock{};
+        ContactBlock& blk = blocks_[padded_[k]];
+        blk = ContactBlock{};
         for (int l = 0; l < soft::kLanes; ++l) blk.a[l] = blk.b[l] = dummy;
       }
       threads.sync();
@@ -188,7 +202,7 @@ class SoftStepSolver final : public Method {
     const int dummy = static_cast<int>(bodies.size());
     const Contact& c = world.contacts[i];
     const Body &a = bodies[c.a], &b = bodies[c.b];
-    soft::ContactBlock& blk = blocks_[slots_[i].block];
+    ContactBlock& blk = blocks_[slots_[i].block];
     const int l = slots_[i].lane;
     const Vec2 n = c.manifold.normal, t = tangentOf(n);
     const Softness& s = a.isStatic || b.isStatic ? staticSoft : soft;
@@ -199,7 +213,7 @@ class SoftStepSolver final : public Method {
     blk.friction.l[l] = c.friction;
     blk.biasRate.l[l] = s.biasRate, blk.massScale.l[l] = s.massScale, blk.impulseScale.l[l] = s.impulseScale;
     for (int k = 0; k < c.manifold.count; ++k) {
-      soft::PointLanes& p = blk.p[k];
+      soft::PointLanesOf<T>& p = blk.p[k];
       const ManifoldPoint& m = c.manifold.points[k];
       const LeverArms r{m.point - a.x, m.point - b.x};
       p.rAx.l[l] = r.rA.x(), p.rAy.l[l] = r.rA.y(), p.rBx.l[l] = r.rB.x(), p.rBy.l[l] = r.rB.y();
@@ -214,17 +228,17 @@ class SoftStepSolver final : public Method {
     }
     // a missing second point: zero masses and impulses, so that it never pushes
     for (int k = c.manifold.count; k < 2; ++k) {
-      soft::PointLanes& p = blk.p[k];
-      for (soft::Lanes* x : {&p.rAx, &p.rAy, &p.rBx, &p.rBy, &p.baseSeparation, &p.normalMass, &p.tangentMass, &p.normalImpulse,
-                             &p.tangentImpulse, &p.totalNormalImpulse})
-        x->l[l] = 0.0;
+      soft::PointLanesOf<T>& p = blk.p[k];
+      for (soft::LanesOf<T>* x : {&p.rAx, &p.rAy, &p.rBx, &p.rBy, &p.baseSeparation, &p.normalMass, &p.tangentMass,
+                                  &p.normalImpulse, &p.tangentImpulse, &p.totalNormalImpulse})
+        x->l[l] = 0;
     }
   }
 
   // the bodies' solver state from the world: velocities, nothing moved yet
   void loadBodies(const World& world) {
     const std::vector<Body>& bodies = world.bodies;
-    states_.assign(bodies.size() + 1, soft::BodyState{});
+    states_.assign(bodies.size() + 1, BodyState{});
     x_.resize(bodies.size());
     angle_.resize(bodies.size());
     turned_.assign(bodies.size(), 0.0);
@@ -232,7 +246,7 @@ class SoftStepSolver final : public Method {
       const Body& b = bodies[i];
       x_[i] = b.x, angle_[i] = b.angle;
       if (b.isStatic) continue;
-      soft::BodyState& s = states_[i];
+      BodyState& s = states_[i];
       s.vx = b.v.x(), s.vy = b.v.y(), s.w = b.omega;
     }
   }
@@ -241,8 +255,8 @@ class SoftStepSolver final : public Method {
     for (size_t i = 0; i < world.bodies.size(); ++i) {
       Body& b = world.bodies[i];
       if (b.isStatic) continue;
-      const soft::BodyState& s = states_[i];
-      b.v = {s.vx, s.vy}, b.omega = s.w, b.x = x_[i], b.angle = angle_[i];
+      const BodyState& s = states_[i];
+      b.v = {double(s.vx), double(s.vy)}, b.omega = s.w, b.x = x_[i], b.angle = angle_[i];
     }
   }
 
@@ -265,8 +279,8 @@ class SoftStepSolver final : public Method {
     if (share.t == 0) {
       states_y_.resize(bodies.size());
       for (size_t i = 0; i < bodies.size(); ++i) {
-        const soft::BodyState& s = states_[i];
-        states_y_[i] = {x_[i], angle_[i], Vec2(s.vx, s.vy), s.w};
+        const BodyState& s = states_[i];
+        states_y_[i] = {x_[i], angle_[i], Vec2(double(s.vx), double(s.vy)), double(s.w)};
       }
       world.rates(step.midpoint(), states_y_, rates_);
     }
@@ -285,8 +299,8 @@ class SoftStepSolver final : public Method {
   void integratePositions(double h, const Share& share) {
     const auto [first, last] = share.of(0, static_cast<int>(states_.size()) - 1);
     for (int i = first; i < last; ++i) {
-      soft::BodyState& s = states_[i];
-      if (s.vx == 0.0 && s.vy == 0.0 && s.w == 0.0) continue;  // static, or at rest
+      BodyState& s = states_[i];
+      if (s.vx == 0 && s.vy == 0 && s.w == 0) continue;  // static, or at rest
       const double dx = h * s.vx, dy = h * s.vy, da = h * s.w;
       x_[i] += Vec2(dx, dy), angle_[i] += da;
       s.dpx += dx, s.dpy += dy;
@@ -315,35 +329,43 @@ class SoftStepSolver final : public Method {
   }
 
   void warmStart(const Share& share, WorkerPool& threads) {
-    soft::BodyState* bodies = states_.data();
-    soft::ContactBlock* blocks = blocks_.data();
+    BodyState* bodies = states_.data();
+    ContactBlock* blocks = blocks_.data();
     pass(
         share, threads, [&](int b, int e) { soft::warmStartScalar(blocks, b, e, bodies); },
         [&](int b, int e) {
-          width_ == 8   ? soft::warmStartWide512(blocks, b, e, bodies)
-          : width_ == 4 ? soft::warmStartWide(blocks, b, e, bodies)
-                        : soft::warmStartScalar(blocks, b, e, bodies);
+          if constexpr (kFloat) {
+            width_ == 8 ? soft::warmStartWide(blocks, b, e, bodies) : soft::warmStartScalar(blocks, b, e, bodies);
+          } else {
+            width_ == 8   ? soft::warmStartWide512(blocks, b, e, bodies)
+            : width_ == 4 ? soft::warmStartWide(blocks, b, e, bodies)
+                          : soft::warmStartScalar(blocks, b, e, bodies);
+          }
         });
   }
 
   void solve(double h, bool useBias, bool accumulate, const Share& share, WorkerPool& threads) {
     const soft::PassSettings s{1.0 / h, settings::kContactPushMaxSpeed, useBias, accumulate};
-    soft::BodyState* bodies = states_.data();
-    soft::ContactBlock* blocks = blocks_.data();
+    BodyState* bodies = states_.data();
+    ContactBlock* blocks = blocks_.data();
     pass(
         share, threads, [&](int b, int e) { soft::solveScalar(blocks, b, e, bodies, s); },
         [&](int b, int e) {
-          width_ == 8   ? soft::solveWide512(blocks, b, e, bodies, s)
-          : width_ == 4 ? soft::solveWide(blocks, b, e, bodies, s)
-                        : soft::solveScalar(blocks, b, e, bodies, s);
+          if constexpr (kFloat) {
+            width_ == 8 ? soft::solveWide(blocks, b, e, bodies, s) : soft::solveScalar(blocks, b, e, bodies, s);
+          } else {
+            width_ == 8   ? soft::solveWide512(blocks, b, e, bodies, s)
+            : width_ == 4 ? soft::solveWide(blocks, b, e, bodies, s)
+                          : soft::solveScalar(blocks, b, e, bodies, s);
+          }
         });
   }
 
   LeverArms armsOf(size_t contact, int k) const {
-    const soft::ContactBlock& blk = blocks_[slots_[contact].block];
+    const ContactBlock& blk = blocks_[slots_[contact].block];
     const int l = slots_[contact].lane;
-    const soft::PointLanes& p = blk.p[k];
-    return {Vec2(p.rAx.l[l], p.rAy.l[l]), Vec2(p.rBx.l[l], p.rBy.l[l])};
+    const soft::PointLanesOf<T>& p = blk.p[k];
+    return {Vec2(double(p.rAx.l[l]), double(p.rAy.l[l])), Vec2(double(p.rBx.l[l]), double(p.rBy.l[l]))};
   }
 
   // restitution for points that arrived faster than the threshold and pushed (Box2D v3's
@@ -355,17 +377,19 @@ class SoftStepSolver final : public Method {
       const Contact& c = world.contacts[i];
       if (c.restitution == 0.0) continue;
       Body &a = bodies[c.a], &b = bodies[c.b];
-      soft::ContactBlock& blk = blocks_[slots_[i].block];
+      ContactBlock& blk = blocks_[slots_[i].block];
       const int l = slots_[i].lane;
       const Vec2 n = c.manifold.normal;
       for (int k = 0; k < c.manifold.count; ++k) {
-        soft::PointLanes& p = blk.p[k];
+        soft::PointLanesOf<T>& p = blk.p[k];
         const double vnBefore = vnBefore_[2 * i + k];
         if (vnBefore > -settings::kRestitutionThreshold || p.totalNormalImpulse.l[l] == 0.0) continue;
         const LeverArms r = armsOf(i, k);
         const double vn = n.dot(relativeVelocityAt(a, b, r));
         const double impulse = p.normalImpulse.l[l];
-        const double lambda = -p.normalMass.l[l] * (vn + c.restitution * vnBefore);
+        // the mass in doubles from the arms as stored (in floats: so that the law holds to a
+        // double's round-off; in doubles it is the stored mass to the bit)
+        const double lambda = -effectiveMass(a, b, r.rA, r.rB, n) * (vn + c.restitution * vnBefore);
         const double total = std::max(impulse + lambda, 0.0);
         applyAt(a, b, r, (total - impulse) * n);
         p.totalNormalImpulse.l[l] += total - impulse;
@@ -382,7 +406,7 @@ class SoftStepSolver final : public Method {
       const auto [first, last] = Share{th, threads.size()}.of(0, static_cast<int>(world.contacts.size()));
       for (int i = first; i < last; ++i) {
         Contact& c = world.contacts[i];
-        const soft::ContactBlock& blk = blocks_[slots_[i].block];
+        const ContactBlock& blk = blocks_[slots_[i].block];
         const int l = slots_[i].lane;
         for (int k = 0; k < c.manifold.count; ++k) {
           c.state[k].normalImpulse = blk.p[k].normalImpulse.l[l];
@@ -398,9 +422,9 @@ class SoftStepSolver final : public Method {
         if (vnBefore >= -settings::kRestitutionThreshold) continue;
         const Contact& c = world.contacts[i];
         if (k >= c.manifold.count) continue;
-        const soft::ContactBlock& blk = blocks_[slots_[i].block];
+        const ContactBlock& blk = blocks_[slots_[i].block];
         const int l = slots_[i].lane;
-        const soft::PointLanes& p = blk.p[k];
+        const soft::PointLanesOf<T>& p = blk.p[k];
         const double total = p.totalNormalImpulse.l[l];
         if (total <= 0.0) continue;
         const LeverArms r = armsOf(i, k);
@@ -413,7 +437,7 @@ class SoftStepSolver final : public Method {
     }
   }
 
-  int width_ = 1;                   // the sets' blocks eight lanes at a time, four, or one
+  int width_ = 1;                   // the sets' blocks eight lanes at a time, four, or one (laneWidth)
   bool bouncy_ = false;             // some contact has restitution (the pairs' bodies fix it)
   std::vector<ColoredPair> pairs_;  // the pairs the colouring was made for
   ContactColors colors_;
@@ -421,10 +445,10 @@ class SoftStepSolver final : public Method {
   std::vector<std::pair<int, int>> ranges_;  // blocks of the overflow, then of each set
   std::vector<int> padded_;                  // the blocks with lanes no contact fills (a set's last)
   int blockCount_ = 0;
-  std::vector<soft::ContactBlock> blocks_;
-  std::vector<double> vnBefore_;         // each point's normal velocity before the step (restitution)
-  std::vector<soft::BodyState> states_;  // the bodies during the substeps, then the static record
-  std::vector<Vec2> x_;                  // positions and angles during the substeps
+  std::vector<ContactBlock> blocks_;
+  std::vector<double> vnBefore_;   // each point's normal velocity before the step (restitution)
+  std::vector<BodyState> states_;  // the bodies during the substeps, then the static record
+  std::vector<Vec2> x_;            // positions and angles during the substeps
   std::vector<double> angle_;
   std::vector<double> turned_;  // each body's rotation since the step began
   States states_y_;             // scratch of integrateVelocities, for forces other than gravity
@@ -441,6 +465,9 @@ class SoftStepSolver final : public Method {
 
 }  // namespace
 
-std::unique_ptr<Method> makeSoftStepSolver() { return std::make_unique<SoftStepSolver>(); }
+std::unique_ptr<Method> makeSoftStepSolver(Precision precision) {
+  if (precision == Precision::Float) return std::make_unique<SoftStepSolver<float>>();
+  return std::make_unique<SoftStepSolver<double>>();
+}
 
 }  // namespace sim::world

@@ -178,7 +178,7 @@ void World::start() {
   grid_ = StepGrid(dt, std::move(instants));
   measureScene();
   if (collisions == CollisionMethod::Auto) chooseMethod();
-  method_ = OwnedMethod(makeMethod(collisions));
+  method_ = OwnedMethod(makeMethod(collisions, precision));
   method_->start(*this);
   started_ = true;
 }
@@ -213,13 +213,13 @@ void World::chooseMethod() {
   }
 }
 
-std::unique_ptr<Method> makeMethod(CollisionMethod method) {
+std::unique_ptr<Method> makeMethod(CollisionMethod method, Precision precision) {
   switch (method) {
     case CollisionMethod::Auto:  // resolved by World::start
     case CollisionMethod::None: return makeFreeMotion();
     case CollisionMethod::Isolated: return makeIsolatedSolver();
     case CollisionMethod::Sequential: return makeSequentialSolver();
-    case CollisionMethod::SoftStep: return makeSoftStepSolver();
+    case CollisionMethod::SoftStep: return makeSoftStepSolver(precision);
     case CollisionMethod::Event: return makeEventStepper();
   }
   return makeFreeMotion();
@@ -289,7 +289,7 @@ void World::switchToStackSolver(double at) {
   methodSwitchTime = at;
   mayStackUp_ = false;
   contacts.clear();
-  method_ = OwnedMethod(makeMethod(collisions));
+  method_ = OwnedMethod(makeMethod(collisions, precision));
   method_->start(*this);
 }
 

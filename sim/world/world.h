@@ -93,8 +93,11 @@ class World {
   int substeps = settings::kSubsteps;             // soft_step: substeps per step
   double contactHertz = settings::kContactHertz;  // soft_step: contact stiffness, Hz (capped per substep)
   // soft_step: a set's contacts solved up to this many at a time in SIMD lanes where the processor
-  // has them: 8 (AVX-512), 4 (AVX2) or 1 (one at a time); the same order, to the same state
+  // has them: 8 (AVX-512; in floats AVX2), 4 (AVX2; in floats one at a time) or 1 (one at a time);
+  // the same order, to the same state
   int simdWidth = 8;
+  // soft_step: the numbers its contact solve is carried in (the world's state stays double)
+  Precision precision = Precision::Double;
   // sequential and soft_step: islands at rest fall asleep and are not stepped until touched (sleep.h)
   bool sleep = false;
   // soft_step: threads that share each set of contacts (the same state with any number)

@@ -54,7 +54,7 @@ class SceneReader : public Reader {
     if (const YAML::Node sim = root["sim"]) {
       checkKeys(sim,
                 {"integrator", "dt", "collisions", "iterations", "position_iterations", "substeps", "contact_hertz", "threads",
-                 "sleep", "max_steps", "max_bodies", "max_vertices", "max_entries"},
+                 "precision", "sleep", "max_steps", "max_bodies", "max_vertices", "max_entries"},
                 "sim");
       optional(sim, "max_steps", s.maxSteps, &Reader::positive);
       readSizeLimits(*this, sim, limits_);
@@ -72,6 +72,7 @@ class SceneReader : public Reader {
                                std::string(collisionMethodName(s.collisions)) +
                                "' has none; use 'collisions: sequential', 'soft_step' or 'auto', or drop 'sleep'");
       if (sim["threads"]) s.threads = wholeNumber(sim["threads"], "threads", 1, sim::core::settings::kMaxThreads);
+      if (sim["precision"]) s.precision = named(sim["precision"], "precision", precisionFromName, kPrecisionNames.list());
       if (sim["integrator"]) s.integrator = named(sim["integrator"], "integrator", integratorFromName, kIntegratorNames.list());
       optional(sim, "dt", s.dt, &Reader::positive);
     }

@@ -178,6 +178,29 @@ json_check "without sleep the JSON has no sleep fields" '"sleep" not in d' '"sle
 sed 's/collisions: soft_step/collisions: event/' sleepy.yaml >sleepy_event.yaml
 expect "sleep beside collisions: event exits 2 at its line" 2 err "sleepy_event.yaml:3" simulate sleepy_event.yaml
 
+# sim: {precision: float}: soft_step's contact solve in floats, said by check and the JSON (only
+# then), a state other than the doubles', and --precision sets it for one run
+sed 's/sleep: true/precision: float/' sleepy.yaml >floaty.yaml
+expect "check says the contact solve is in floats" 0 out "precision: float (soft_step's contact solve)" check floaty.yaml
+run simulate floaty.yaml --json
+json_check "the JSON says precision: float" 'd["precision"] == "float"' 'd["collision_method"] == "soft_step"'
+floaty_yaml=${out#*\"variant\"}
+run simulate sleepy.yaml --json
+json_check "without it the JSON has no precision field" '"precision" not in d'
+sed 's/, sleep: true//' sleepy.yaml >doubly.yaml
+run simulate doubly.yaml --json --precision float
+if [ "$rc" -eq 0 ] && [ "${out#*\"variant\"}" = "$floaty_yaml" ]; then
+  ok "--precision float runs the scene as sim: {precision: float} does"
+else
+  not_ok "--precision float runs the scene as sim: {precision: float} does"
+fi
+run simulate doubly.yaml --json
+if [ "$rc" -eq 0 ] && [ "${out#*\"variant\"}" != "$floaty_yaml" ]; then ok "floats end in another state than doubles"; else not_ok "floats end in another state than doubles"; fi
+expect "--precision half exits 2 naming the choices" 2 err "--precision: unknown precision 'half'; choose one of: double, float" \
+  simulate doubly.yaml --precision half
+sed 's/precision: float/precision: half/' floaty.yaml >halfy.yaml
+expect "sim: {precision: half} exits 2 at its line" 2 err "halfy.yaml:3:67: unknown precision 'half'" simulate halfy.yaml
+
 # ---- simulate: bad input exits 2 -----------------------------------------------------------
 
 expect "a missing scene file exits 2 naming the file" 2 err "missing.yaml: cannot open" simulate missing.yaml
@@ -403,6 +426,7 @@ EOF
 expect "a quaternion far from unit length is bad input at FILE:LINE:COL" 2 err "far_quaternion.yaml:5:18" check far_quaternion.yaml
 expect "--collisions on a 3D scene exits 2: nothing collides in 3D" 2 err "no contacts" simulate "$TOP" --collisions event
 expect "--contact-hertz on a 3D scene exits 2: it has no contacts to solve" 2 err "no contacts to solve" simulate "$TOP" --contact-hertz 60
+expect "--precision on a 3D scene exits 2: it has no contacts to solve" 2 err "--precision: " simulate "$TOP" --precision float
 expect "snapshot --impacts of a 3D scene exits 2" 2 err "nothing collides in 3D" snapshot "$TOP" --impacts -o snap3
 expect "snapshot of a 3D scene writes its PNG" 0 out "13_symmetric_top-oblate-t0.5.png" snapshot "$TOP" --variant oblate --at 0.5 --size 160x90 -o snap3
 
