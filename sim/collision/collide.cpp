@@ -50,11 +50,6 @@ EdgeSeparation maxSeparationOf(const WorldPolygon& p, const WorldPolygon& q) {
   return best;
 }
 
-// boxes, the common case, unrolled (the same operations in the same order)
-EdgeSeparation maxSeparation(const WorldPolygon& p, const WorldPolygon& q) {
-  return p.size() == 4 && q.size() == 4 ? maxSeparationOf<4>(p, q) : maxSeparationOf<0>(p, q);
-}
-
 // A point's id names the two features that make it, one of A and one of B: a vertex of one
 // polygon against an edge of the other (Box2D's b2ContactFeature). Which polygon holds the
 // reference edge does not enter it, so the id survives the reference passing from one polygon to
@@ -135,9 +130,10 @@ void clipToReference(const WorldPolygon& A, const WorldPolygon& B, const EdgeSep
 }
 
 // polygon against polygon: SAT picks the reference edge, the incident edge is clipped to its sides
-Manifold polygons(const PlacedShape& a, const PlacedShape& b, double margin) {
-  const WorldPolygon A(a), B(b);
-  const EdgeSeparation ea = maxSeparation(A, B), eb = maxSeparation(B, A);
+// (kSize as clipToReference's: 4 for two boxes, the common case, whose loops unroll)
+template <size_t kSize>
+Manifold polygonsOf(const WorldPolygon& A, const WorldPolygon& B, double margin) {
+  const EdgeSeparation ea = maxSeparationOf<kSize>(A, B), eb = maxSeparationOf<kSize>(B, A);
   Manifold m;
   // the notes' separation(P, Q) and its features, exactly as on the slide
   const bool bestA = ea.separation >= eb.separation;
@@ -146,11 +142,10 @@ Manifold polygons(const PlacedShape& a, const PlacedShape& b, double margin) {
   // for the manifold, keep A's edge unless B's is clearly better, so the choice does not flip
   // from step to step on near ties (Box2D's b2CollidePolygons does the same)
   const bool refA = !(eb.separation > ea.separation + settings::kReferenceEdgeHysteresis);
-  const auto clip = A.size() == 4 && B.size() == 4 ? clipToReference<4> : clipToReference<0>;
-  clip(A, B, ea, eb, refA, margin, m);
+  clipToReference<kSize>(A, B, ea, eb, refA, margin, m);
   if (m.separation > margin) return m;
   // the kept edge's sides can miss the incident edge near a corner: then use the best edge
-  if (m.count == 0 && refA != bestA) clip(A, B, ea, eb, bestA, margin, m);
+  if (m.count == 0 && refA != bestA) clipToReference<kSize>(A, B, ea, eb, bestA, margin, m);
   // corner against corner: no edge's sides hold the other's edge; the incident vertex touches
   // the reference edge's end, so the contact runs between the closest points of the two
   if (m.count == 0) {
@@ -171,6 +166,11 @@ Manifold polygons(const PlacedShape& a, const PlacedShape& b, double margin) {
   m.separation = kInf;
   for (int k = 0; k < m.count; ++k) m.separation = std::min(m.separation, m.points[k].separation);
   return m;
+}
+
+Manifold polygons(const PlacedShape& a, const PlacedShape& b, double margin) {
+  const WorldPolygon A(a), B(b);
+  return A.size() == 4 && B.size() == 4 ? polygonsOf<4>(A, B, margin) : polygonsOf<0>(A, B, margin);
 }
 
 // a contact whose normal points out of the first shape toward the second
@@ -273,7 +273,7 @@ SatFeatures sat(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb) 
   place(a, pa, scratchA);
   place(b, pb, scratchB);
   const WorldPolygon A(scratchA), B(scratchB);
-  const EdgeSeparation ea = maxSeparation(A, B), eb = maxSeparation(B, A);
+  const EdgeSeparation ea = maxSeparationOf<0>(A, B), eb = maxSeparationOf<0>(B, A);
   const bool onA = ea.separation >= eb.separation;
   return {true, onA ? ea.separation : eb.separation, onA, onA ? ea.edge : eb.edge, onA ? ea.vertex : eb.vertex};
 }
