@@ -73,9 +73,6 @@ void solveWide(ContactBlockOf<double>* blocks, int begin, int end, BodyStateOf<d
 void solveWide(ContactBlockOf<float>* blocks, int begin, int end, BodyStateOf<float>* bodies, const PassSettings& s);
 void warmStartWide512(ContactBlockOf<double>* blocks, int begin, int end, BodyStateOf<double>* bodies);
 void solveWide512(ContactBlockOf<double>* blocks, int begin, int end, BodyStateOf<double>* bodies, const PassSettings& s);
-// whether this processor runs the wide path (AVX2) and the wide512 one (AVX-512F), asked once at
-// run time
-bool wideAvailable();
-bool wide512Available();
+// (which of them this processor runs: sim/core/simd_support.h)
 
 }  // namespace sim::world::soft

@@ -54,23 +54,4 @@ void solveScalar(ContactBlockOf<float>* blocks, int begin, int end, BodyStateOf<
   solveLanes(blocks, begin, end, bodies, s);
 }
 
-// asked here, outside the -mavx2 unit, so that nothing of it runs on a processor without AVX2
-bool wideAvailable() {
-#if defined(RIGIDREEL_WIDE_AVX2)
-  static const bool avx2 = __builtin_cpu_supports("avx2");
-  return avx2;
-#else
-  return true;
-#endif
-}
-
-bool wide512Available() {
-#if defined(RIGIDREEL_WIDE_AVX512)
-  static const bool avx512 = __builtin_cpu_supports("avx512f");
-  return avx512;
-#else
-  return false;
-#endif
-}
-
 }  // namespace sim::world::soft

@@ -2,6 +2,7 @@
 // compiled with -mavx2 where the compiler targets x86-64 (sim/CMakeLists.txt), one AVX2 instruction per operation on four
 // doubles; elsewhere the same code in the target's own vectors. The result is the scalar path's to the bit (same operations,
 // same order, no fused multiply-add). Floats: soft_contacts_wide_float.cpp.
+#include "sim/core/avx2_transpose.h"
 #include "sim/world/soft_contacts_kernel.h"
 
 #if defined(__AVX2__)
@@ -31,14 +32,7 @@ struct WideLanes {
   static V min(V a, V b) { return select(b < a, b, a); }
 #if defined(__AVX2__)
   // four records' first (or second) halves, read as rows and turned into columns
-  static void transpose(__m256d& r0, __m256d& r1, __m256d& r2, __m256d& r3) {
-    const __m256d t0 = _mm256_unpacklo_pd(r0, r1), t1 = _mm256_unpackhi_pd(r0, r1);
-    const __m256d t2 = _mm256_unpacklo_pd(r2, r3), t3 = _mm256_unpackhi_pd(r2, r3);
-    r0 = _mm256_permute2f128_pd(t0, t2, 0x20);
-    r1 = _mm256_permute2f128_pd(t1, t3, 0x20);
-    r2 = _mm256_permute2f128_pd(t0, t2, 0x31);
-    r3 = _mm256_permute2f128_pd(t1, t3, 0x31);
-  }
+  static void transpose(__m256d& r0, __m256d& r1, __m256d& r2, __m256d& r3) { sim::core::transpose4(r0, r1, r2, r3); }
   static BodyLanes<V> gather(const BodyState* bodies, const int* all, int half) {
     const int* index = all + half;
     const double* b0 = &bodies[index[0]].vx;

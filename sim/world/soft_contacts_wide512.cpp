@@ -98,7 +98,7 @@ void solveWide512(ContactBlockOf<double>* blocks, int begin, int end, BodyStateO
 }  // namespace sim::world::soft
 
 #else
-// without AVX-512 in the build, the scalar passes (never chosen: wide512Available() says no)
+// without AVX-512 in the build, the scalar passes (never chosen: avx512Available() says no)
 namespace sim::world::soft {
 void warmStartWide512(ContactBlockOf<double>* blocks, int begin, int end, BodyStateOf<double>* bodies) {
   warmStartScalar(blocks, begin, end, bodies);

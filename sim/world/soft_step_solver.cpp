@@ -20,6 +20,7 @@
 #include <type_traits>
 
 #include "sim/collision/impulse.h"
+#include "sim/core/simd_support.h"
 #include "sim/world/contact_colors.h"
 #include "sim/world/methods.h"
 #include "sim/world/soft_contacts.h"
@@ -163,8 +164,8 @@ class SoftStepSolver final : public Method {
   // the lanes a set's block is solved in at once, at most `allowed` (World::simdWidth): doubles
   // eight (AVX-512), four (AVX2) or one; floats eight (AVX2) or one
   static int laneWidth(int allowed) {
-    if constexpr (kFloat) return allowed >= 8 && soft::wideAvailable() ? 8 : 1;
-    return allowed >= 8 && soft::wide512Available() ? 8 : allowed >= 4 && soft::wideAvailable() ? 4 : 1;
+    if constexpr (kFloat) return allowed >= 8 && avx2Available() ? 8 : 1;
+    return allowed >= 8 && avx512Available() ? 8 : allowed >= 4 && avx2Available() ? 4 : 1;
   }
 
   void prepare(World& world, double h) {

@@ -160,9 +160,10 @@ class World {
   bool sleeping() const;
   // the manifolds into `found` (its entries overwritten, its storage kept), without the sleeping pairs when
   // `awakeOnly`, warm started from `contacts` when `warmStart`; the placing and the narrow phase
-  // split between `threads` when there are two or more
-  void collectContacts(double margin, std::vector<Contact>& found, bool awakeOnly, bool warmStart,
-                       WorkerPool* threads = nullptr) const;
+  // split between `threads` when there are two or more. `lastStep` (`contacts`, or none): a list
+  // the contacts may be written over while its pairs are theirs (then its storage and found's swap)
+  void collectContacts(double margin, std::vector<Contact>& found, bool awakeOnly, bool warmStart, WorkerPool* threads = nullptr,
+                       std::vector<Contact>* lastStep = nullptr) const;
 
   bool started_ = false;
   std::vector<ImpulseEvent> pending_;  // sorted by time

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/core/simd_support.h"
 #include "sim/world/soft_contacts.h"
 #include "support/scene_text.h"
 
@@ -72,9 +73,8 @@ std::vector<std::pair<const char*, std::string>> threadedScenes() {
 }  // namespace
 
 TEST_CASE("soft_step: the AVX-512, AVX2 and scalar contact passes give the same state hash (pyramids, a tumbling pile)") {
-  MESSAGE("on this processor: AVX-512 path " << (sim::world::soft::wide512Available() ? "yes" : "no (runs AVX2 or scalar)")
-                                             << ", AVX2 path "
-                                             << (sim::world::soft::wideAvailable() ? "yes" : "no (runs scalar)"));
+  MESSAGE("on this processor: AVX-512 path " << (sim::core::avx512Available() ? "yes" : "no (runs AVX2 or scalar)")
+                                             << ", AVX2 path " << (sim::core::avx2Available() ? "yes" : "no (runs scalar)"));
   const std::pair<const char*, std::string> scenes[] = {
       {"pyramid 20 touching", pyramid(20, false)},
       {"pyramid 20 dropped", pyramid(20, true)},
