@@ -17,22 +17,27 @@ struct Input {
   const double* bn[kLanes];
 };
 
-// one lane's manifold, field for field collide()'s Manifold
+// the four lanes' manifolds, field for field collide()'s Manifold, each field for the four lanes
+// side by side (stored a register at a time); flags are 0 or all ones
 struct Output {
-  double normalX, normalY;
-  int count;
-  double pointX[2], pointY[2], pointSeparation[2];
-  std::uint64_t id[2];
-  double satSeparation;
-  bool satReferenceOnA;
-  int satReferenceEdge, satIncidentVertex;
-  double separation;
-  // the lane's clipping kept no point within the margin of a touching pair: collide() finishes it
-  // (the best edge's clipping, or a corner against a corner)
-  bool again;
+  alignas(32) double normalX[kLanes];
+  alignas(32) double normalY[kLanes];
+  alignas(32) long long count[kLanes];
+  alignas(32) double pointX[2][kLanes];
+  alignas(32) double pointY[2][kLanes];
+  alignas(32) double pointSeparation[2][kLanes];
+  alignas(32) std::uint64_t id[2][kLanes];
+  alignas(32) double satSeparation[kLanes];
+  alignas(32) long long satReferenceOnA[kLanes];
+  alignas(32) long long satReferenceEdge[kLanes];
+  alignas(32) long long satIncidentVertex[kLanes];
+  alignas(32) double separation[kLanes];
+  // the lane's clipping kept no point within the margin of a touching pair, or found no edge:
+  // collide() finishes it (the best edge's clipping, or a corner against a corner)
+  alignas(32) long long again[kLanes];
 };
 
 // the four lanes; `hysteresis` is settings::kReferenceEdgeHysteresis
-void collideLanes(const Input& in, double margin, double hysteresis, Output out[kLanes]);
+void collideLanes(const Input& in, double margin, double hysteresis, Output& out);
 
 }  // namespace sim::collision::quad

@@ -73,6 +73,11 @@ struct EdgeSeparation {
   return best;
 }
 
+// a register's lanes stored side by side
+void store(double* to, V v) { *reinterpret_cast<V*>(to) = v; }
+void store(long long* to, I v) { *reinterpret_cast<I*>(to) = v; }
+void store(std::uint64_t* to, I v) { *reinterpret_cast<I*>(to) = v; }
+
 // a point of the incident edge as the clipping carries it (collide.cpp's ClipPoint)
 struct ClipPoint {
   V x, y;
@@ -107,7 +112,7 @@ I featureId(I referenceOnA, I reference, I incident) {
 
 }  // namespace
 
-void collideLanes(const Input& in, double margin, double hysteresis, Output out[kLanes]) {
+void collideLanes(const Input& in, double margin, double hysteresis, Output& out) {
   Polygon A, B;
   loadPoints(in.av, A.vx, A.vy);
   loadPoints(in.an, A.nx, A.ny);
@@ -147,8 +152,12 @@ void collideLanes(const Input& in, double margin, double hysteresis, Output out[
   const V dx = v2x - v1x, dy = v2y - v1y;
   const V z = dx * dx + dy * dy;
   const I positive = z > 0.0;
+#if defined(__AVX2__)
+  const V root = V(_mm256_sqrt_pd(__m256d(z)));
+#else
   V root = z;
   for (int lane = 0; lane < kLanes; ++lane) root[lane] = __builtin_sqrt(z[lane]);
+#endif
   const V tx = select(positive, dx / root, dx), ty = select(positive, dy / root, dy);
   ClipPoint once[2], twice[2];
   I kept = splatI(-1);
@@ -166,28 +175,26 @@ void collideLanes(const Input& in, double margin, double hysteresis, Output out[
     px[k] = twice[k].x - half * nRefX, py[k] = twice[k].y - half * nRefY;
   }
 
-  for (int lane = 0; lane < kLanes; ++lane) {
-    Output& o = out[lane];
-    o.normalX = normalX[lane], o.normalY = normalY[lane];
-    o.satSeparation = satSeparation[lane];
-    o.satReferenceOnA = bestA[lane] != 0;
-    o.satReferenceEdge = static_cast<int>(satEdge[lane]), o.satIncidentVertex = static_cast<int>(satVertex[lane]);
-    o.count = 0;
-    for (int k = 0; k < 2; ++k) o.pointX[k] = o.pointY[k] = o.pointSeparation[k] = 0.0, o.id[k] = 0;
-    for (int k = 0; k < 2; ++k) {
-      if (!keep[k][lane]) continue;
-      o.pointX[o.count] = px[k][lane], o.pointY[o.count] = py[k][lane], o.pointSeparation[o.count] = sep[k][lane];
-      o.id[o.count++] = static_cast<std::uint64_t>(id[k][lane]);
-    }
-    // apart by more than the margin: the first clipping's points as they are, with the notes' separation
-    o.separation = o.satSeparation;
-    // no edge found (no finite separation), or touching with no point kept: collide() decides
-    o.again = ea.edge[lane] < 0 || eb.edge[lane] < 0 || (!(o.separation > margin) && o.count == 0);
-    if (o.again || o.separation > margin) continue;
-    double least = kInf;
-    for (int k = 0; k < o.count; ++k) least = o.pointSeparation[k] < least ? o.pointSeparation[k] : least;
-    o.separation = least;
-  }
+  // the kept points first, in order, and zeros past them (as a Manifold's points start)
+  const I count = (keep[0] & 1) + (keep[1] & 1), first = keep[0], second = keep[0] & keep[1];
+  const V zero = splat(0.0);
+  store(out.normalX, normalX), store(out.normalY, normalY), store(out.count, count);
+  store(out.pointX[0], select(count > 0, select(first, px[0], px[1]), zero));
+  store(out.pointY[0], select(count > 0, select(first, py[0], py[1]), zero));
+  const V firstSeparation = select(count > 0, select(first, sep[0], sep[1]), zero);
+  store(out.pointSeparation[0], firstSeparation);
+  store(out.id[0], selectI(count > 0, selectI(first, id[0], id[1]), splatI(0)));
+  store(out.pointX[1], select(second, px[1], zero)), store(out.pointY[1], select(second, py[1], zero));
+  store(out.pointSeparation[1], select(second, sep[1], zero)), store(out.id[1], selectI(second, id[1], splatI(0)));
+  store(out.satSeparation, satSeparation), store(out.satReferenceOnA, bestA);
+  store(out.satReferenceEdge, satEdge), store(out.satIncidentVertex, satVertex);
+  // apart by more than the margin: the first clipping's points as they are, with the notes'
+  // separation; else the least of the points' (std::min from infinity, as collide() takes it)
+  const I apart = satSeparation > margin;
+  const V least = select(firstSeparation < kInf, firstSeparation, splat(kInf));
+  const V both = select(sep[1] < least, sep[1], least);
+  store(out.separation, select(apart, satSeparation, select(second, both, least)));
+  store(out.again, (ea.edge < 0) | (eb.edge < 0) | (~apart & (count == 0)));
 }
 
 }  // namespace sim::collision::quad

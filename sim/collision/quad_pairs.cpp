@@ -20,21 +20,21 @@ void collideQuadPairs(const PlacedShape* const a[kQuadLanes], const PlacedShape*
     in.av[k] = a[k]->vertices.front().data(), in.an[k] = a[k]->normals.front().data();
     in.bv[k] = b[k]->vertices.front().data(), in.bn[k] = b[k]->normals.front().data();
   }
-  quad::Output lanes[kQuadLanes];
+  quad::Output lanes;
   quad::collideLanes(in, margin, sim::core::settings::kReferenceEdgeHysteresis, lanes);
   for (int k = 0; k < kQuadLanes; ++k) {
-    const quad::Output& o = lanes[k];
-    if (o.again) {
+    if (lanes.again[k]) {
       out[k] = collide(*a[k], *b[k], margin);
       continue;
     }
     Manifold& m = out[k];
-    m = Manifold{};
-    m.normal = Vec2(o.normalX, o.normalY);
-    m.count = o.count;
-    for (int p = 0; p < 2; ++p) m.points[p] = {Vec2(o.pointX[p], o.pointY[p]), o.pointSeparation[p], o.id[p]};
-    m.sat = {true, o.satSeparation, o.satReferenceOnA, o.satReferenceEdge, o.satIncidentVertex};
-    m.separation = o.separation;
+    m.normal = Vec2(lanes.normalX[k], lanes.normalY[k]);
+    m.count = static_cast<int>(lanes.count[k]);
+    for (int p = 0; p < 2; ++p)
+      m.points[p] = {Vec2(lanes.pointX[p][k], lanes.pointY[p][k]), lanes.pointSeparation[p][k], lanes.id[p][k]};
+    m.sat = {true, lanes.satSeparation[k], lanes.satReferenceOnA[k] != 0, static_cast<int>(lanes.satReferenceEdge[k]),
+             static_cast<int>(lanes.satIncidentVertex[k])};
+    m.separation = lanes.separation[k];
   }
 }
 
