@@ -77,7 +77,7 @@ struct RunOptions {
   int substeps = sim::core::settings::kSubsteps;
   double contactHertz = sim::core::settings::kContactHertz;
   int threads = 1;    // soft_step's sim: threads
-  int simdWidth = 8;  // soft_step's lanes at once: 8 (AVX-512), 4 (AVX2) or 1, where the processor has them
+  int simdWidth = 8;  // soft_step's widest SIMD: 8 (AVX-512), 4 (AVX2) or 1, where the processor has it
 };
 
 // one engine holding one layout: step it, read the boxes back (in layout order)
@@ -334,8 +334,9 @@ int main(int argc, char** argv) {
   app.add_option("--threads", options.threads,
                  "rigidreel's soft_step: threads sharing each set of contacts (processor time counts them all)")
       ->check(CLI::Range(1, sim::core::settings::kMaxThreads));
-  app.add_option("--simd-width", options.simdWidth,
-                 "rigidreel's soft_step: lanes solved at once, 8, 4 or 1 (the widest the processor has, at most this)")
+  app.add_option(
+         "--simd-width", options.simdWidth,
+         "rigidreel's soft_step: the widest SIMD, 8 AVX-512, 4 AVX2 or 1 none (the widest the processor has, at most this)")
       ->check(CLI::IsMember({1, 4, 8}));
   std::vector<std::string> precisions{"double"};
   app.add_option("--precision", precisions,

@@ -62,7 +62,8 @@ struct PassSettings {
 };
 
 // the passes over blocks [begin, end), lane by lane (scalar), four lanes at once (wide: AVX2's four
-// doubles; in floats all eight in one AVX2 register) or eight doubles (wide512: AVX-512)
+// doubles; in floats all eight in one AVX2 register, or with AVX-512VL's registers: wideVl) or eight
+// doubles (wide512: AVX-512)
 void warmStartScalar(ContactBlockOf<double>* blocks, int begin, int end, BodyStateOf<double>* bodies);
 void warmStartScalar(ContactBlockOf<float>* blocks, int begin, int end, BodyStateOf<float>* bodies);
 void solveScalar(ContactBlockOf<double>* blocks, int begin, int end, BodyStateOf<double>* bodies, const PassSettings& s);
@@ -71,6 +72,8 @@ void warmStartWide(ContactBlockOf<double>* blocks, int begin, int end, BodyState
 void warmStartWide(ContactBlockOf<float>* blocks, int begin, int end, BodyStateOf<float>* bodies);
 void solveWide(ContactBlockOf<double>* blocks, int begin, int end, BodyStateOf<double>* bodies, const PassSettings& s);
 void solveWide(ContactBlockOf<float>* blocks, int begin, int end, BodyStateOf<float>* bodies, const PassSettings& s);
+void warmStartWideVl(ContactBlockOf<float>* blocks, int begin, int end, BodyStateOf<float>* bodies);
+void solveWideVl(ContactBlockOf<float>* blocks, int begin, int end, BodyStateOf<float>* bodies, const PassSettings& s);
 void warmStartWide512(ContactBlockOf<double>* blocks, int begin, int end, BodyStateOf<double>* bodies);
 void solveWide512(ContactBlockOf<double>* blocks, int begin, int end, BodyStateOf<double>* bodies, const PassSettings& s);
 // (which of them this processor runs: sim/core/simd_support.h)

@@ -47,10 +47,12 @@ Softness makeSoft(double hertz, double zeta, double h) {
   return {omega / a1, a2 * a3, a3};
 }
 
-// 1 / m_eff⁻¹ along d, or 0 where nothing can move (two static bodies)
-double effectiveMass(const Body& a, const Body& b, const Vec2& rA, const Vec2& rB, const Vec2& d) {
-  const double k = inverseEffectiveMassAt(a, b, rA, rB, d);
-  return k > 0.0 ? 1.0 / k : 0.0;
+// 1 / m_eff⁻¹ along d, or 0 where nothing can move (two static bodies), in T: in floats the
+// reciprocal of the float (a float division: the double one was a sixth of the float preparation)
+template <class T = double, class Bd>
+T effectiveMass(const Bd& a, const Bd& b, const Vec2& rA, const Vec2& rB, const Vec2& d) {
+  const T k = static_cast<T>(inverseEffectiveMassAt(a, b, rA, rB, d));
+  return k > 0 ? T(1) / k : T(0);
 }
 
 // Contacts are found once per step, so a point the step will close must be found at its start: the
@@ -68,6 +70,13 @@ double speculativeMargin(const World& world, double h) {
 // where a contact sits among the blocks
 struct Slot {
   int block = 0, lane = 0;
+};
+
+// what the preparation reads of a body, side by side (a Body spreads them over its 208 bytes)
+struct Moving {
+  Vec2 x, v;
+  double omega, invMass, invInertia;
+  bool isStatic;
 };
 
 // a manifold point's lever arms as the impulse helpers read them
@@ -93,10 +102,10 @@ class SoftStepSolver final : public Method {
     WorkerPool& threads = pool(world.threads);
     world.findContacts(speculativeMargin(world, step.h), fresh_, &threads);
     std::swap(world.contacts, fresh_);
+    loadBodies(world, step.h / world.substeps);
     prepare(world, step.h / world.substeps);
     // the substeps; with sim: threads, every stage split between the threads, which meet after
     // each stage and each set of contacts
-    loadBodies(world);
     threads.run([&](int t) { substeps(world, step, Share{t, threads.size()}, threads); });
     storeBodies(world);
     // restitution once, from the velocity before the substeps; the impulses kept, the impacts
@@ -133,7 +142,9 @@ class SoftStepSolver final : public Method {
   // with lanes that touch only the static record
   void arrange(const World& world) {
     const std::vector<Contact>& contacts = world.contacts;
+    // (the world says when it found last step's pairs again: then there is no list to compare)
     bool same = contacts.size() == pairs_.size();
+    if (same && world.contactPairsKept()) return;
     for (size_t i = 0; same && i < contacts.size(); ++i) same = pairs_[i].a == contacts[i].a && pairs_[i].b == contacts[i].b;
     if (same) return;
     pairs_.resize(contacts.size());
@@ -161,12 +172,10 @@ class SoftStepSolver final : public Method {
     blockCount_ = block;
   }
 
-  // the lanes a set's block is solved in at once, at most `allowed` (World::simdWidth): doubles
-  // eight (AVX-512), four (AVX2) or one; floats eight (AVX2) or one
-  static int laneWidth(int allowed) {
-    if constexpr (kFloat) return allowed >= 8 && avx2Available() ? 8 : 1;
-    return allowed >= 8 && avx512Available() ? 8 : allowed >= 4 && avx2Available() ? 4 : 1;
-  }
+  // the widest SIMD the passes may use, at most `allowed` (World::simdWidth): 8 AVX-512, 4 AVX2, 1
+  // none; doubles take eight, four or one lanes at once, floats eight in AVX-512VL's registers or
+  // AVX2's, or one
+  static int laneWidth(int allowed) { return allowed >= 8 && avx512Available() ? 8 : allowed >= 4 && avx2Available() ? 4 : 1; }
 
   void prepare(World& world, double h) {
     arrange(world);
@@ -179,10 +188,11 @@ class SoftStepSolver final : public Method {
     const Softness staticSoft = makeSoft(2.0 * hertz, settings::kContactDampingRatio, h);
     blocks_.resize(blockCount_);
     vnBefore_.resize(2 * world.contacts.size());
+    WorkerPool& threads = pool(world.threads);
+    approaching_.assign(threads.size(), 0);
     // each thread its share of the padded blocks cleared (the lanes no contact fills touch only
     // the static record, with zero masses), then its share of the contacts, each of which writes
     // every number of its own lane
-    WorkerPool& threads = pool(world.threads);
     threads.run([&](int t) {
       const Share share{t, threads.size()};
       const auto [firstPadded, lastPadded] = share.of(0, static_cast<int>(padded_.size()));
@@ -193,16 +203,16 @@ class SoftStepSolver final : public Method {
       }
       threads.sync();
       const auto [first, last] = share.of(0, static_cast<int>(world.contacts.size()));
-      for (int i = first; i < last; ++i) prepareContact(world, i, soft, staticSoft);
+      for (int i = first; i < last; ++i) prepareContact(world, i, soft, staticSoft, t);
     });
   }
 
   // one contact into its lane: normal, masses, softness, and each point's anchors and impulses
-  void prepareContact(const World& world, int i, const Softness& soft, const Softness& staticSoft) {
-    const std::vector<Body>& bodies = world.bodies;
-    const int dummy = static_cast<int>(bodies.size());
+  // (on thread `share`)
+  void prepareContact(const World& world, int i, const Softness& soft, const Softness& staticSoft, int share) {
+    const int dummy = static_cast<int>(world.bodies.size());
     const Contact& c = world.contacts[i];
-    const Body &a = bodies[c.a], &b = bodies[c.b];
+    const Moving &a = moving_[c.a], &b = moving_[c.b];
     ContactBlock& blk = blocks_[slots_[i].block];
     const int l = slots_[i].lane;
     const Vec2 n = c.manifold.normal, t = tangentOf(n);
@@ -220,12 +230,13 @@ class SoftStepSolver final : public Method {
       p.rAx.l[l] = r.rA.x(), p.rAy.l[l] = r.rA.y(), p.rBx.l[l] = r.rB.x(), p.rBy.l[l] = r.rB.y();
       // the separation at the start, less what the anchors' own motion will add to it
       p.baseSeparation.l[l] = m.separation - n.dot(r.rA - r.rB);
-      p.normalMass.l[l] = effectiveMass(a, b, r.rA, r.rB, n);
-      p.tangentMass.l[l] = effectiveMass(a, b, r.rA, r.rB, t);
+      p.normalMass.l[l] = effectiveMass<T>(a, b, r.rA, r.rB, n);
+      p.tangentMass.l[l] = effectiveMass<T>(a, b, r.rA, r.rB, t);
       p.normalImpulse.l[l] = c.state[k].normalImpulse;
       p.tangentImpulse.l[l] = c.state[k].tangentImpulse;
       p.totalNormalImpulse.l[l] = 0.0;
       vnBefore_[2 * i + k] = n.dot(relativeVelocityAt(a, b, r));
+      if (vnBefore_[2 * i + k] < -settings::kRestitutionThreshold) approaching_[share] = 1;
     }
     // a missing second point: zero masses and impulses, so that it never pushes
     for (int k = c.manifold.count; k < 2; ++k) {
@@ -237,18 +248,26 @@ class SoftStepSolver final : public Method {
   }
 
   // the bodies' solver state from the world: velocities, nothing moved yet
-  void loadBodies(const World& world) {
+  // (and what the preparation reads of each; under gravity alone, what it adds to each body's
+  // velocity in a substep h: zero to a static or sleeping body, which is not integrated)
+  void loadBodies(const World& world, double h) {
     const std::vector<Body>& bodies = world.bodies;
     states_.assign(bodies.size() + 1, BodyState{});
     x_.resize(bodies.size());
     angle_.resize(bodies.size());
     turned_.assign(bodies.size(), 0.0);
+    const bool gravity = world.forces.gravityOnly();
+    gravityDv_.assign(gravity ? bodies.size() : 0, Vec2::Zero());
+    moving_.resize(bodies.size());
     for (size_t i = 0; i < bodies.size(); ++i) {
       const Body& b = bodies[i];
+      moving_[i] = {b.x, b.v, b.omega, b.invMass, b.invInertia, b.isStatic};
       x_[i] = b.x, angle_[i] = b.angle;
       if (b.isStatic) continue;
       BodyState& s = states_[i];
       s.vx = b.v.x(), s.vy = b.v.y(), s.w = b.omega;
+      if (gravity && !world.asleep(static_cast<int>(i)))
+        gravityDv_[i] = h * Vec2(b.invMass * Vec2(b.mass * world.forces.gravity));
     }
   }
 
@@ -267,13 +286,8 @@ class SoftStepSolver final : public Method {
     const std::vector<Body>& bodies = world.bodies;
     const auto [first, last] = share.of(0, static_cast<int>(bodies.size()));
     if (world.forces.gravityOnly()) {
-      const Vec2 g = world.forces.gravity;
-      for (int i = first; i < last; ++i) {
-        const Body& b = bodies[i];
-        if (b.isStatic || world.asleep(i)) continue;
-        const Vec2 dv = h * Vec2(b.invMass * Vec2(b.mass * g));
-        states_[i].vx += dv.x(), states_[i].vy += dv.y();
-      }
+      // (adding a zero leaves a static or sleeping body's velocity as it is, a zero)
+      for (int i = first; i < last; ++i) states_[i].vx += gravityDv_[i].x(), states_[i].vy += gravityDv_[i].y();
       return;
     }
     // the forces of the whole world on the first thread, then each thread's bodies
@@ -354,7 +368,9 @@ class SoftStepSolver final : public Method {
         share, threads, [&](int b, int e) { soft::warmStartScalar(blocks, b, e, bodies); },
         [&](int b, int e) {
           if constexpr (kFloat) {
-            width_ == 8 ? soft::warmStartWide(blocks, b, e, bodies) : soft::warmStartScalar(blocks, b, e, bodies);
+            width_ == 8   ? soft::warmStartWideVl(blocks, b, e, bodies)
+            : width_ == 4 ? soft::warmStartWide(blocks, b, e, bodies)
+                          : soft::warmStartScalar(blocks, b, e, bodies);
           } else {
             width_ == 8   ? soft::warmStartWide512(blocks, b, e, bodies)
             : width_ == 4 ? soft::warmStartWide(blocks, b, e, bodies)
@@ -371,7 +387,9 @@ class SoftStepSolver final : public Method {
         share, threads, [&](int b, int e) { soft::solveScalar(blocks, b, e, bodies, s); },
         [&](int b, int e) {
           if constexpr (kFloat) {
-            width_ == 8 ? soft::solveWide(blocks, b, e, bodies, s) : soft::solveScalar(blocks, b, e, bodies, s);
+            width_ == 8   ? soft::solveWideVl(blocks, b, e, bodies, s)
+            : width_ == 4 ? soft::solveWide(blocks, b, e, bodies, s)
+                          : soft::solveScalar(blocks, b, e, bodies, s);
           } else {
             width_ == 8   ? soft::solveWide512(blocks, b, e, bodies, s)
             : width_ == 4 ? soft::solveWide(blocks, b, e, bodies, s)
@@ -434,7 +452,8 @@ class SoftStepSolver final : public Method {
       }
     });
     // the impacts, in the contacts' order (the approach speeds read first: a pile at rest has
-    // none, and its contacts are not touched again)
+    // none, and its contacts are not touched again; nor its speeds, when prepare saw none)
+    if (std::find(approaching_.begin(), approaching_.end(), 1) == approaching_.end()) return;
     for (size_t i = 0; i < world.contacts.size(); ++i) {
       for (int k = 0; k < 2; ++k) {
         const double vnBefore = vnBefore_[2 * i + k];
@@ -466,12 +485,15 @@ class SoftStepSolver final : public Method {
   int blockCount_ = 0;
   std::vector<ContactBlock> blocks_;
   std::vector<double> vnBefore_;   // each point's normal velocity before the step (restitution)
+  std::vector<char> approaching_;  // per thread: one of its points comes faster than restitution's threshold
   std::vector<BodyState> states_;  // the bodies during the substeps, then the static record
   std::vector<Vec2> x_;            // positions and angles during the substeps
   std::vector<double> angle_;
-  std::vector<double> turned_;  // each body's rotation since the step began
-  States states_y_;             // scratch of integrateVelocities, for forces other than gravity
-  std::vector<Contact> fresh_;  // the contacts found, then last step's (their storage reused)
+  std::vector<double> turned_;   // each body's rotation since the step began
+  std::vector<Vec2> gravityDv_;  // under gravity alone, each body's velocity change in a substep
+  std::vector<Moving> moving_;   // the bodies as the preparation reads them
+  States states_y_;              // scratch of integrateVelocities, for forces other than gravity
+  std::vector<Contact> fresh_;   // the contacts found, then last step's (their storage reused)
   Rates rates_;
   // the threads of sim: threads (none copied: a clone makes its own)
   struct PoolHandle {

@@ -58,27 +58,29 @@ void World::setStates(const States& y) {
 
 std::vector<Contact> World::findContacts(double margin) const {
   std::vector<Contact> found;
-  collectContacts(margin, found, false, false);
+  (void)collectContacts(margin, found, false, false);
   return found;
 }
 
 void World::findContacts(double margin, std::vector<Contact>& found, WorkerPool* threads) {
   const bool skip = sleeping() && sleep_.sleepingBodies() > 0;
   // when every body that can move sleeps, nothing touches anything awake: not even the broad phase
+  contactPairsKept_ = false;
   if (skip && sleep_.sleepingBodies() == std::count_if(bodies.begin(), bodies.end(), [](const Body& b) { return !b.isStatic; })) {
     found.clear();
     return;
   }
   // (with nothing asleep, the contacts that stay are written over last step's: wakeTouched reads
   // last step's list whole)
-  collectContacts(margin, found, skip, true, threads, skip ? nullptr : &contacts);
+  contactPairsKept_ = collectContacts(margin, found, skip, true, threads, skip ? nullptr : &contacts);
   // sleeping islands that an awake body touches wake before the solve (Box2D v3 wakes a solver set
   // when a contact begins touching it), and their own contacts are found with them (and may touch
   // another island)
-  while (skip && sleep_.wakeTouched(found, contacts)) collectContacts(margin, found, sleep_.sleepingBodies() > 0, true, threads);
+  while (skip && sleep_.wakeTouched(found, contacts))
+    (void)collectContacts(margin, found, sleep_.sleepingBodies() > 0, true, threads);
 }
 
-void World::collectContacts(double margin, std::vector<Contact>& found, bool awakeOnly, bool warmStart, WorkerPool* threads,
+bool World::collectContacts(double margin, std::vector<Contact>& found, bool awakeOnly, bool warmStart, WorkerPool* threads,
                             std::vector<Contact>* lastStep) const {
   const int n = static_cast<int>(bodies.size());
   const bool shared = threads && threads->size() > 1;
@@ -137,8 +139,7 @@ void World::collectContacts(double margin, std::vector<Contact>& found, bool awa
   };
   // a contact written whole, its impulses those of last step's contact of the same pair (`old`
   // walks `contacts`, sorted by pair as the pairs are, from `from`), matched while it is at hand
-  // (or from `previous`, the same pair's contact that c was until now)
-  auto fill = [&](Contact& c, const std::pair<int, int>& pair, const Manifold& m, size_t& old, const Contact* previous) {
+  auto fill = [&](Contact& c, const std::pair<int, int>& pair, const Manifold& m, size_t& old) {
     const auto [i, j] = pair;
     c.a = i, c.b = j;
     c.manifold = m;
@@ -146,7 +147,6 @@ void World::collectContacts(double margin, std::vector<Contact>& found, bool awa
     c.friction = combinedFriction(bodies[i].friction, bodies[j].friction);
     c.state[0] = c.state[1] = ContactPointState{};
     if (!warmStart) return;
-    if (previous) return carryImpulses(*previous, c);
     while (old < contacts.size() && std::make_pair(contacts[old].a, contacts[old].b) < pair) ++old;
     if (old < contacts.size() && contacts[old].a == i && contacts[old].b == j) carryImpulses(contacts[old], c);
   };
@@ -177,8 +177,11 @@ void World::collectContacts(double margin, std::vector<Contact>& found, bool awa
         if (over) {
           Contact* c = next < lastStep->size() ? &(*lastStep)[next] : nullptr;
           if (c && c->a == pairs_[k].first && c->b == pairs_[k].second) {
+            // (its bodies, so its restitution and friction, are the ones it had)
             const Contact previous = *c;
-            fill(*c, pairs_[k], chunk[k - first], old, &previous);
+            c->manifold = chunk[k - first];
+            c->state[0] = c->state[1] = ContactPointState{};
+            carryImpulses(previous, *c);
             ++next;
             continue;
           }
@@ -186,16 +189,17 @@ void World::collectContacts(double margin, std::vector<Contact>& found, bool awa
           old = next, over = false;
         }
         if (next == found.size()) found.emplace_back();
-        fill(found[next++], pairs_[k], chunk[k - first], old, nullptr);
+        fill(found[next++], pairs_[k], chunk[k - first], old);
       }
     }
-    if (over) {
-      lastStep->resize(next);
-      std::swap(found, *lastStep);
-    } else {
+    if (!over) {
       found.resize(next);
+      return false;
     }
-    return;
+    const bool kept = next == lastStep->size();
+    lastStep->resize(next);
+    std::swap(found, *lastStep);
+    return kept;
   }
   // with threads, each collides its share of the pairs and counts the touching ones; then each
   // writes its touching pairs from where the shares before it end (the same list, in order)
@@ -215,8 +219,9 @@ void World::collectContacts(double margin, std::vector<Contact>& found, bool awa
     int next = touching_[t];
     size_t old = first < last && warmStart ? from(pairs_[first]) : 0;
     for (int k = first; k < last; ++k)
-      if (manifolds_[k].count > 0) fill(found[next++], pairs_[k], manifolds_[k], old, nullptr);
+      if (manifolds_[k].count > 0) fill(found[next++], pairs_[k], manifolds_[k], old);
   });
+  return false;
 }
 
 void World::start() {

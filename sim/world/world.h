@@ -92,9 +92,9 @@ class World {
   int positionIterations = settings::kPositionIterations;
   int substeps = settings::kSubsteps;             // soft_step: substeps per step
   double contactHertz = settings::kContactHertz;  // soft_step: contact stiffness, Hz (capped per substep)
-  // soft_step: a set's contacts solved up to this many at a time in SIMD lanes where the processor
-  // has them: 8 (AVX-512; in floats AVX2), 4 (AVX2; in floats one at a time) or 1 (one at a time);
-  // the same order, to the same state
+  // soft_step: the widest SIMD a set's contacts are solved with, where the processor has it: 8
+  // (AVX-512: eight doubles at once; eight floats with its registers), 4 (AVX2: four doubles, eight
+  // floats) or 1 (one at a time); the same order, to the same state
   int simdWidth = 8;
   // soft_step: the numbers its contact solve is carried in (the world's state stays double)
   Precision precision = Precision::Double;
@@ -139,6 +139,9 @@ class World {
   // With `threads`, the bodies are placed and the pairs collided on all of them (the contacts are
   // the same)
   void findContacts(double margin, std::vector<Contact>& found, WorkerPool* threads = nullptr);
+  // the last findContacts(margin, found) found the pairs of the list before it, in the same order
+  // (then a solver's arrangement of them still holds); false when it cannot tell
+  bool contactPairsKept() const { return contactPairsKept_; }
 
   // sleeping (sleep.h): whether a body sleeps now, and how many do
   bool asleep(int body) const { return sleep_.asleep(body); }
@@ -162,10 +165,12 @@ class World {
   // `awakeOnly`, warm started from `contacts` when `warmStart`; the placing and the narrow phase
   // split between `threads` when there are two or more. `lastStep` (`contacts`, or none): a list
   // the contacts may be written over while its pairs are theirs (then its storage and found's swap)
-  void collectContacts(double margin, std::vector<Contact>& found, bool awakeOnly, bool warmStart, WorkerPool* threads = nullptr,
+  // Returns whether the pairs were lastStep's, each written over its own.
+  bool collectContacts(double margin, std::vector<Contact>& found, bool awakeOnly, bool warmStart, WorkerPool* threads = nullptr,
                        std::vector<Contact>* lastStep = nullptr) const;
 
   bool started_ = false;
+  bool contactPairsKept_ = false;
   std::vector<ImpulseEvent> pending_;  // sorted by time
   size_t nextEvent_ = 0;
   StepGrid grid_;  // steps of dt, cut at the events and force switches

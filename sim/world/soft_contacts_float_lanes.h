@@ -1,0 +1,100 @@
+// soft_step's contact passes in floats (sim: {precision: float}), a whole block of eight lanes in
+// one register of eight floats, as Box2D v3 solves its contacts (contact_solver.c's b2FloatW): the
+// lane type, included by the units that compile it for AVX2 (soft_contacts_wide_float.cpp) and
+// for AVX-512VL (soft_contacts_wide_float_vl.cpp: the same instructions on 256 bits with 32
+// registers instead of 16, so that the pass keeps its numbers in registers), each alone with its
+// flags. The bodies' records (eight floats, one register each) are read whole and transposed into
+// fields, and written back the same way. The result is the scalar path's to the bit (same
+// operations, same order, no fused multiply-add).
+#pragma once
+
+#include "sim/world/soft_contacts_kernel.h"
+
+#if defined(__AVX2__)
+#include <immintrin.h>
+#endif
+
+namespace sim::world::soft {
+namespace {
+
+static_assert(kLanes == 8, "a block is one register of eight floats");
+
+typedef float F8 __attribute__((vector_size(32)));
+typedef int I8 __attribute__((vector_size(32)));
+
+struct WideFloatLanes {
+  using T = float;
+  using V = F8;
+  using BodyState = BodyStateOf<float>;
+  static V load(const LanesOf<T>& x, int) { return *reinterpret_cast<const F8*>(x.l); }
+  static void store(LanesOf<T>& x, int, V v) { *reinterpret_cast<F8*>(x.l) = v; }
+  static V splat(double d) {
+    const float v = static_cast<float>(d);
+    return F8{v, v, v, v, v, v, v, v};
+  }
+  static I8 greater(V a, V b) { return a > b; }
+  // a where m, else b, bit by bit (as the scalar path's m ? a : b)
+  static V select(I8 m, V a, V b) { return reinterpret_cast<F8>((reinterpret_cast<I8>(a) & m) | (reinterpret_cast<I8>(b) & ~m)); }
+  static V max(V a, V b) { return select(a < b, b, a); }
+  static V min(V a, V b) { return select(b < a, b, a); }
+#if defined(__AVX2__)
+  // the eight lanes' records read as rows and turned into columns: an 8 x 8 transpose in three
+  // rounds of shuffles (pairs of rows, quads within each 128-bit half, then the halves)
+  static BodyLanes<V> gather(const BodyState* bodies, const int* index, int) {
+    __m256 r[8];
+    for (int k = 0; k < 8; ++k) r[k] = _mm256_load_ps(&bodies[index[k]].vx);
+    __m256 t[8];
+    for (int k = 0; k < 4; ++k) {
+      t[2 * k] = _mm256_unpacklo_ps(r[2 * k], r[2 * k + 1]);
+      t[2 * k + 1] = _mm256_unpackhi_ps(r[2 * k], r[2 * k + 1]);
+    }
+    // rows 0-3 (h = 0) and 4-7 (h = 1): fields (0 | 4), (1 | 5), (2 | 6), (3 | 7) in each half
+    constexpr int kLow = _MM_SHUFFLE(1, 0, 1, 0), kHigh = _MM_SHUFFLE(3, 2, 3, 2);
+    __m256 u[8];
+    for (int h = 0; h < 2; ++h) {
+      u[4 * h + 0] = _mm256_shuffle_ps(t[4 * h + 0], t[4 * h + 2], kLow);
+      u[4 * h + 1] = _mm256_shuffle_ps(t[4 * h + 0], t[4 * h + 2], kHigh);
+      u[4 * h + 2] = _mm256_shuffle_ps(t[4 * h + 1], t[4 * h + 3], kLow);
+    }
+    u[3] = _mm256_shuffle_ps(t[1], t[3], kHigh);
+    u[7] = _mm256_shuffle_ps(t[5], t[7], kHigh);
+    // all eight rows of a field: the low halves hold fields 0-3, the high ones 4-7 (field 3 unused)
+    const auto low = [&](int q) { return F8(_mm256_permute2f128_ps(u[q], u[q + 4], 0x20)); };
+    const auto high = [&](int q) { return F8(_mm256_permute2f128_ps(u[q], u[q + 4], 0x31)); };
+    return {low(0), low(1), low(2), high(0), high(1), high(2), high(3)};
+  }
+  // the velocities written back as the first half of each record, lane 0 first (the lanes touch
+  // distinct bodies, or the static record whose velocity stays zero)
+  static void scatter(BodyState* bodies, const int* index, int, const BodyLanes<V>& b) {
+    const __m256 zero = _mm256_setzero_ps();
+    const __m256 vLow = _mm256_unpacklo_ps(__m256(b.vx), __m256(b.vy)), vHigh = _mm256_unpackhi_ps(__m256(b.vx), __m256(b.vy));
+    const __m256 wLow = _mm256_unpacklo_ps(__m256(b.w), zero), wHigh = _mm256_unpackhi_ps(__m256(b.w), zero);
+    constexpr int kLow = _MM_SHUFFLE(1, 0, 1, 0), kHigh = _MM_SHUFFLE(3, 2, 3, 2);
+    // (vx, vy, w, 0) of lanes k (low half) and k + 4 (high half), for k = 0, 1, 2, 3
+    const __m256 rows[4] = {_mm256_shuffle_ps(vLow, wLow, kLow), _mm256_shuffle_ps(vLow, wLow, kHigh),
+                            _mm256_shuffle_ps(vHigh, wHigh, kLow), _mm256_shuffle_ps(vHigh, wHigh, kHigh)};
+    for (int k = 0; k < 4; ++k) {
+      _mm_store_ps(&bodies[index[k]].vx, _mm256_castps256_ps128(rows[k]));
+      _mm_store_ps(&bodies[index[k + 4]].vx, _mm256_extractf128_ps(rows[k], 1));
+    }
+  }
+#else
+  static BodyLanes<V> gather(const BodyState* bodies, const int* index, int) {
+    BodyLanes<V> b;
+    for (int k = 0; k < 8; ++k) {
+      const BodyState& s = bodies[index[k]];
+      b.vx[k] = s.vx, b.vy[k] = s.vy, b.w[k] = s.w, b.dpx[k] = s.dpx, b.dpy[k] = s.dpy, b.qc[k] = s.qc, b.qs[k] = s.qs;
+    }
+    return b;
+  }
+  static void scatter(BodyState* bodies, const int* index, int, const BodyLanes<V>& v) {
+    for (int k = 0; k < 8; ++k) {
+      BodyState& b = bodies[index[k]];
+      b.vx = v.vx[k], b.vy = v.vy[k], b.w = v.w[k];
+    }
+  }
+#endif
+};
+
+}  // namespace
+}  // namespace sim::world::soft
