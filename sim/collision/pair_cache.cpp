@@ -63,15 +63,13 @@ void PairCache::find(const std::vector<Aabb>& boxes, const std::vector<bool>& fi
     gridCallsNext_ = 1;
     if (!moved_.empty()) placeMoved(boxes, fixed);
   }
-  // the candidates that overlap now, each pair once (at its lower index) and in order
+  // the candidates that overlap now, each pair once (at its lower index) and in order (each box's
+  // candidates kept sorted: they change only when a box is placed anew)
   pairs.clear();
   for (size_t ii = 0; ii < n; ++ii) {
     const int i = static_cast<int>(ii);
-    found_.clear();
     for (int j : partners_[i])
-      if (j > i && !(fixed[i] && fixed[j]) && boxes[i].overlaps(boxes[j])) found_.push_back(j);
-    std::sort(found_.begin(), found_.end());
-    for (int j : found_) pairs.emplace_back(i, j);
+      if (j > i && !(fixed[i] && fixed[j]) && boxes[i].overlaps(boxes[j])) pairs.emplace_back(i, j);
   }
 }
 
@@ -81,6 +79,7 @@ void PairCache::placeAll(const std::vector<Aabb>& boxes, const std::vector<bool>
   for (size_t i = 0; i < n; ++i) enlarged_[i] = enlarge(boxes[i], settings::kBroadPhaseExtension);
   partners_.resize(n);
   for (std::vector<int>& p : partners_) p.clear();
+  // (the pairs come sorted, so each box's list is: its lower partners, then its higher, in order)
   for (const auto& [i, j] : overlappingPairs(enlarged_, fixed)) {
     partners_[i].push_back(j);
     partners_[j].push_back(i);
@@ -90,10 +89,11 @@ void PairCache::placeAll(const std::vector<Aabb>& boxes, const std::vector<bool>
 void PairCache::placeMoved(const std::vector<Aabb>& boxes, const std::vector<bool>& fixed) {
   const size_t n = boxes.size();
   state_.assign(n, 0);
+  changed_.assign(n, 0);
   for (int i : moved_) {
     state_[i] = 1;
     enlarged_[i] = enlarge(boxes[i], settings::kBroadPhaseExtension);
-    for (int j : partners_[i]) erase(partners_[j], i);
+    for (int j : partners_[i]) erase(partners_[j], i), changed_[j] = 1;
     partners_[i].clear();
   }
   // each moved box against every box; a pair of two moved boxes once, by the first of them
@@ -103,9 +103,13 @@ void PairCache::placeMoved(const std::vector<Aabb>& boxes, const std::vector<boo
       if (j == i || state_[j] == 2 || (fixed[i] && fixed[j]) || !enlarged_[i].overlaps(enlarged_[j])) continue;
       partners_[i].push_back(j);
       partners_[j].push_back(i);
+      changed_[j] = 1;
     }
     state_[i] = 2;
   }
+  // the lists that changed, sorted again: a moved box's, and its old and new partners'
+  for (size_t j = 0; j < n; ++j)
+    if (state_[j] != 0 || changed_[j]) std::sort(partners_[j].begin(), partners_[j].end());
 }
 
 }  // namespace sim::collision

@@ -25,10 +25,10 @@ class PairCache {
   void placeMoved(const std::vector<Aabb>& boxes, const std::vector<bool>& fixed);
 
   std::vector<Aabb> enlarged_;              // each box as placed, enlarged
-  std::vector<std::vector<int>> partners_;  // the candidates of each box, of higher and lower index
+  std::vector<std::vector<int>> partners_;  // the candidates of each box, of lower and higher index, sorted
   std::vector<int> moved_;                  // scratch: the boxes to place anew this call
   std::vector<char> state_;                 // scratch: 0 kept, 1 to place anew, 2 placed anew
-  std::vector<int> found_;                  // scratch: one box's overlapping partners
+  std::vector<char> changed_;               // scratch: a box whose candidates changed this call
   int gridCalls_ = 0;                       // calls left to pair through the grid alone (boxes scatter)
   int gridCallsNext_ = 1;                   // how many, the next time they scatter
 };
