@@ -13,6 +13,7 @@
 #include "sim/core/enum_names.h"
 
 namespace sim::world {
+using sim::collision::FeatureId;
 using sim::collision::Manifold;
 using sim::core::EnumNames;
 using sim::core::Vec2;
@@ -87,9 +88,18 @@ struct RestingRecord {
   bool moving = false;
 };
 
+// what a contact's points carry to the same pair's contact next step: their features and impulses
+struct CarriedPoints {
+  int count = 0;
+  FeatureId id[2] = {0, 0};
+  ContactPointState state[2];
+};
+CarriedPoints carriedPoints(const Contact& c);
+
 // one contact's points: each starts from the impulses of `previous`'s point of the same features
 // (the same pair's contact last step: the warm start of the stack solvers, Catto 2006)
-void carryImpulses(const Contact& previous, Contact& c);
+void carryImpulses(const CarriedPoints& previous, Contact& c);
+inline void carryImpulses(const Contact& previous, Contact& c) { carryImpulses(carriedPoints(previous), c); }
 
 // pair coefficients (documented in scenes/README.md): the larger restitution (a bouncy ball
 // bounces on any floor, as in Box2D) and the geometric mean of the frictions (inline: every pair

@@ -61,10 +61,15 @@ T effectiveMass(const Bd& a, const Bd& b, const Vec2& rA, const Vec2& rB, const 
 // sank 2.7 cm before they were seen and the pile bulged 0.28 m; with this margin 0.041 m (issue 14,
 // rigidreel_stack_bench --method soft_step --layout pyramid:20:dropped).
 double speculativeMargin(const World& world, double h) {
+  // (the largest squared speed, then one square root: the same number, a root a body fewer)
   double fastest = 0.0;
   for (const Body& b : world.bodies)
-    if (!b.isStatic) fastest = std::max(fastest, b.v.norm());
-  return settings::kContactMargin + h * fastest;
+    if (!b.isStatic) fastest = std::max(fastest, b.v.squaredNorm());
+  return settings::kContactMargin + h * std::sqrt(fastest);
+}
+
+bool sameSoftness(const Softness& a, const Softness& b) {
+  return a.biasRate == b.biasRate && a.massScale == b.massScale && a.impulseScale == b.impulseScale;
 }
 
 // where a contact sits among the blocks
@@ -118,6 +123,8 @@ class SoftStepSolver final : public Method {
   void substeps(const World& world, const TimeStep& step, const Share& share, WorkerPool& threads) {
     const int n = world.substeps;
     const double h = step.h / n;
+    // the totals serve restitution and the impact records alone: a pile at rest needs neither
+    const bool totals = bouncy_ || std::find(approaching_.begin(), approaching_.end(), 1) != approaching_.end();
     for (int k = 0; k < n; ++k) {
       integrateVelocities(world, step, h, share, threads);
       threads.sync();
@@ -127,7 +134,8 @@ class SoftStepSolver final : public Method {
       threads.sync();
       static_assert(settings::kRelaxIterations >= 1, "the totals are added in the last relax pass");
       // the last relax pass adds each point's impulse to the step's total as it goes
-      for (int r = 0; r < settings::kRelaxIterations; ++r) solve(h, false, r + 1 == settings::kRelaxIterations, share, threads);
+      for (int r = 0; r < settings::kRelaxIterations; ++r)
+        solve(h, false, totals && r + 1 == settings::kRelaxIterations, share, threads);
     }
   }
 
@@ -140,13 +148,14 @@ class SoftStepSolver final : public Method {
   // the sets of the contacts, unless the touching pairs are those of last step, and each
   // contact's slot: the overflow's blocks first, then each set's, a set's last block padded
   // with lanes that touch only the static record
-  void arrange(const World& world) {
+  // Returns whether they were made anew.
+  bool arrange(const World& world) {
     const std::vector<Contact>& contacts = world.contacts;
     // (the world says when it found last step's pairs again: then there is no list to compare)
     bool same = contacts.size() == pairs_.size();
-    if (same && world.contactPairsKept()) return;
+    if (same && world.contactPairsKept()) return false;
     for (size_t i = 0; same && i < contacts.size(); ++i) same = pairs_[i].a == contacts[i].a && pairs_[i].b == contacts[i].b;
-    if (same) return;
+    if (same) return false;
     pairs_.resize(contacts.size());
     bouncy_ = false;
     for (size_t i = 0; i < contacts.size(); ++i) {
@@ -170,6 +179,7 @@ class SoftStepSolver final : public Method {
     place(colors_.overflow);
     for (const std::vector<int>& set : colors_.sets) place(set);
     blockCount_ = block;
+    return true;
   }
 
   // the widest SIMD the passes may use, at most `allowed` (World::simdWidth): 8 AVX-512, 4 AVX2, 1
@@ -178,7 +188,7 @@ class SoftStepSolver final : public Method {
   static int laneWidth(int allowed) { return allowed >= 8 && avx512Available() ? 8 : allowed >= 4 && avx2Available() ? 4 : 1; }
 
   void prepare(World& world, double h) {
-    arrange(world);
+    const bool arranged = arrange(world);
     width_ = laneWidth(world.simdWidth);
     const std::vector<Body>& bodies = world.bodies;
     const int dummy = static_cast<int>(bodies.size());  // the static bodies' shared record
@@ -186,6 +196,10 @@ class SoftStepSolver final : public Method {
     const double hertz = std::min(world.contactHertz, settings::kContactHertzPerSubstepRate / h);
     const Softness soft = makeSoft(hertz, settings::kContactDampingRatio, h);
     const Softness staticSoft = makeSoft(2.0 * hertz, settings::kContactDampingRatio, h);
+    // the same pairs in the same lanes with the same softness as last step: each lane's bodies,
+    // masses, friction and softness are in it already, and the padded lanes are still zeros
+    const bool kept = !arranged && sameSoftness(soft, soft_) && sameSoftness(staticSoft, staticSoft_);
+    soft_ = soft, staticSoft_ = staticSoft;
     blocks_.resize(blockCount_);
     vnBefore_.resize(2 * world.contacts.size());
     WorkerPool& threads = pool(world.threads);
@@ -195,7 +209,7 @@ class SoftStepSolver final : public Method {
     // every number of its own lane
     threads.run([&](int t) {
       const Share share{t, threads.size()};
-      const auto [firstPadded, lastPadded] = share.of(0, static_cast<int>(padded_.size()));
+      const auto [firstPadded, lastPadded] = share.of(0, kept ? 0 : static_cast<int>(padded_.size()));
       for (int k = firstPadded; k < lastPadded; ++k) {
         ContactBlock& blk = blocks_[padded_[k]];
         blk = ContactBlock{};
@@ -203,13 +217,13 @@ class SoftStepSolver final : public Method {
       }
       threads.sync();
       const auto [first, last] = share.of(0, static_cast<int>(world.contacts.size()));
-      for (int i = first; i < last; ++i) prepareContact(world, i, soft, staticSoft, t);
+      for (int i = first; i < last; ++i) prepareContact(world, i, soft, staticSoft, !kept, t);
     });
   }
 
   // one contact into its lane: normal, masses, softness, and each point's anchors and impulses
-  // (on thread `share`)
-  void prepareContact(const World& world, int i, const Softness& soft, const Softness& staticSoft, int share) {
+  // (the numbers that stay while the lane keeps its pair only when `constants`; on thread `share`)
+  void prepareContact(const World& world, int i, const Softness& soft, const Softness& staticSoft, bool constants, int share) {
     const int dummy = static_cast<int>(world.bodies.size());
     const Contact& c = world.contacts[i];
     const Moving &a = moving_[c.a], &b = moving_[c.b];
@@ -217,12 +231,14 @@ class SoftStepSolver final : public Method {
     const int l = slots_[i].lane;
     const Vec2 n = c.manifold.normal, t = tangentOf(n);
     const Softness& s = a.isStatic || b.isStatic ? staticSoft : soft;
-    blk.a[l] = a.isStatic ? dummy : c.a, blk.b[l] = b.isStatic ? dummy : c.b;
+    if (constants) {
+      blk.a[l] = a.isStatic ? dummy : c.a, blk.b[l] = b.isStatic ? dummy : c.b;
+      blk.invMassA.l[l] = a.invMass, blk.invInertiaA.l[l] = a.invInertia;
+      blk.invMassB.l[l] = b.invMass, blk.invInertiaB.l[l] = b.invInertia;
+      blk.friction.l[l] = c.friction;
+      blk.biasRate.l[l] = s.biasRate, blk.massScale.l[l] = s.massScale, blk.impulseScale.l[l] = s.impulseScale;
+    }
     blk.nx.l[l] = n.x(), blk.ny.l[l] = n.y();
-    blk.invMassA.l[l] = a.invMass, blk.invInertiaA.l[l] = a.invInertia;
-    blk.invMassB.l[l] = b.invMass, blk.invInertiaB.l[l] = b.invInertia;
-    blk.friction.l[l] = c.friction;
-    blk.biasRate.l[l] = s.biasRate, blk.massScale.l[l] = s.massScale, blk.impulseScale.l[l] = s.impulseScale;
     for (int k = 0; k < c.manifold.count; ++k) {
       soft::PointLanesOf<T>& p = blk.p[k];
       const ManifoldPoint& m = c.manifold.points[k];
@@ -484,6 +500,7 @@ class SoftStepSolver final : public Method {
   std::vector<int> padded_;                  // the blocks with lanes no contact fills (a set's last)
   int blockCount_ = 0;
   std::vector<ContactBlock> blocks_;
+  Softness soft_, staticSoft_;     // what the blocks' lanes hold (prepare)
   std::vector<double> vnBefore_;   // each point's normal velocity before the step (restitution)
   std::vector<char> approaching_;  // per thread: one of its points comes faster than restitution's threshold
   std::vector<BodyState> states_;  // the bodies during the substeps, then the static record

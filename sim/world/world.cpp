@@ -183,7 +183,7 @@ bool World::collectContacts(double margin, std::vector<Contact>& found, bool awa
               __builtin_prefetch(reinterpret_cast<const char*>(&(*lastStep)[next + 8]) + line, 1);
           if (c && c->a == pairs_[k].first && c->b == pairs_[k].second) {
             // (its bodies, so its restitution and friction, are the ones it had)
-            const Contact previous = *c;
+            const CarriedPoints previous = carriedPoints(*c);
             c->manifold = chunk[k - first];
             c->state[0] = c->state[1] = ContactPointState{};
             carryImpulses(previous, *c);
