@@ -107,12 +107,15 @@ class SoftStepSolver final : public Method {
     WorkerPool& threads = pool(world.threads);
     world.findContacts(speculativeMargin(world, step.h), fresh_, &threads);
     std::swap(world.contacts, fresh_);
-    loadBodies(world, step.h / world.substeps);
     prepare(world, step.h / world.substeps);
     // the substeps; with sim: threads, every stage split between the threads, which meet after
     // each stage and each set of contacts
-    threads.run([&](int t) { substeps(world, step, Share{t, threads.size()}, threads); });
-    storeBodies(world);
+    threads.run([&](int t) {
+      const Share share{t, threads.size()};
+      substeps(world, step, share, threads);
+      threads.sync();
+      storeBodies(world, share);
+    });
     // restitution once, from the velocity before the substeps; the impulses kept, the impacts
     // recorded
     applyRestitution(world);
@@ -207,8 +210,10 @@ class SoftStepSolver final : public Method {
     // each thread its share of the padded blocks cleared (the lanes no contact fills touch only
     // the static record, with zero masses), then its share of the contacts, each of which writes
     // every number of its own lane
+    sizeBodies(world);
     threads.run([&](int t) {
       const Share share{t, threads.size()};
+      loadBodies(world, h, share);
       const auto [firstPadded, lastPadded] = share.of(0, kept ? 0 : static_cast<int>(padded_.size()));
       for (int k = firstPadded; k < lastPadded; ++k) {
         ContactBlock& blk = blocks_[padded_[k]];
@@ -266,29 +271,34 @@ class SoftStepSolver final : public Method {
   // the bodies' solver state from the world: velocities, nothing moved yet
   // (and what the preparation reads of each; under gravity alone, what it adds to each body's
   // velocity in a substep h: zero to a static or sleeping body, which is not integrated)
-  void loadBodies(const World& world, double h) {
+  // (the arrays sized first, on one thread; then each thread its share of the bodies)
+  void sizeBodies(const World& world) {
+    const size_t n = world.bodies.size();
+    states_.resize(n + 1);
+    states_[n] = BodyState{};
+    x_.resize(n), angle_.resize(n), turned_.resize(n), moving_.resize(n);
+    gravityDv_.resize(world.forces.gravityOnly() ? n : 0);
+  }
+  void loadBodies(const World& world, double h, const Share& share) {
     const std::vector<Body>& bodies = world.bodies;
-    states_.assign(bodies.size() + 1, BodyState{});
-    x_.resize(bodies.size());
-    angle_.resize(bodies.size());
-    turned_.assign(bodies.size(), 0.0);
     const bool gravity = world.forces.gravityOnly();
-    gravityDv_.assign(gravity ? bodies.size() : 0, Vec2::Zero());
-    moving_.resize(bodies.size());
-    for (size_t i = 0; i < bodies.size(); ++i) {
+    const auto [first, last] = share.of(0, static_cast<int>(bodies.size()));
+    for (int i = first; i < last; ++i) {
       const Body& b = bodies[i];
       moving_[i] = {b.x, b.v, b.omega, b.invMass, b.invInertia, b.isStatic};
-      x_[i] = b.x, angle_[i] = b.angle;
-      if (b.isStatic) continue;
+      x_[i] = b.x, angle_[i] = b.angle, turned_[i] = 0.0;
       BodyState& s = states_[i];
+      s = BodyState{};
+      if (gravity) gravityDv_[i] = Vec2::Zero();
+      if (b.isStatic) continue;
       s.vx = b.v.x(), s.vy = b.v.y(), s.w = b.omega;
-      if (gravity && !world.asleep(static_cast<int>(i)))
-        gravityDv_[i] = h * Vec2(b.invMass * Vec2(b.mass * world.forces.gravity));
+      if (gravity && !world.asleep(i)) gravityDv_[i] = h * Vec2(b.invMass * Vec2(b.mass * world.forces.gravity));
     }
   }
 
-  void storeBodies(World& world) const {
-    for (size_t i = 0; i < world.bodies.size(); ++i) {
+  void storeBodies(World& world, const Share& share) const {
+    const auto [first, last] = share.of(0, static_cast<int>(world.bodies.size()));
+    for (int i = first; i < last; ++i) {
       Body& b = world.bodies[i];
       if (b.isStatic) continue;
       const BodyState& s = states_[i];

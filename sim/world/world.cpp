@@ -150,6 +150,14 @@ bool World::collectContacts(double margin, std::vector<Contact>& found, bool awa
     while (old < contacts.size() && std::make_pair(contacts[old].a, contacts[old].b) < pair) ++old;
     if (old < contacts.size() && contacts[old].a == i && contacts[old].b == j) carryImpulses(contacts[old], c);
   };
+  // the same pair's contact last step, written over with its new manifold and warm started from
+  // itself (its bodies, so its restitution and friction, are the ones it had)
+  auto overwrite = [](Contact& c, const Manifold& m) {
+    const CarriedPoints previous = carriedPoints(c);
+    c.manifold = m;
+    c.state[0] = c.state[1] = ContactPointState{};
+    carryImpulses(previous, c);
+  };
   // where last step's contacts reach a pair
   auto from = [&](const std::pair<int, int>& pair) {
     return static_cast<size_t>(
@@ -182,11 +190,7 @@ bool World::collectContacts(double margin, std::vector<Contact>& found, bool awa
             for (size_t line = 0; line < sizeof(Contact); line += 64)
               __builtin_prefetch(reinterpret_cast<const char*>(&(*lastStep)[next + 8]) + line, 1);
           if (c && c->a == pairs_[k].first && c->b == pairs_[k].second) {
-            // (its bodies, so its restitution and friction, are the ones it had)
-            const CarriedPoints previous = carriedPoints(*c);
-            c->manifold = chunk[k - first];
-            c->state[0] = c->state[1] = ContactPointState{};
-            carryImpulses(previous, *c);
+            overwrite(*c, chunk[k - first]);
             ++next;
             continue;
           }
@@ -217,6 +221,30 @@ bool World::collectContacts(double margin, std::vector<Contact>& found, bool awa
     for (int k = first; k < last; ++k) touching_[t + 1] += manifolds_[k].count > 0;
   });
   for (int t = 0; t < parts; ++t) touching_[t + 1] += touching_[t];
+  // as many touching pairs as last step: when each is the pair last step's list holds at its place
+  // (each thread checks its share), every contact is written over its own, as on one thread
+  if (lastStep && warmStart && static_cast<size_t>(touching_[parts]) == lastStep->size()) {
+    differs_.assign(parts, 0);
+    threads->run([&](int t) {
+      const auto [first, last] = Share{t, parts}.of(0, pairCount);
+      int next = touching_[t];
+      for (int k = first; k < last && !differs_[t]; ++k)
+        if (manifolds_[k].count > 0) {
+          const Contact& c = (*lastStep)[next++];
+          differs_[t] = c.a != pairs_[k].first || c.b != pairs_[k].second;
+        }
+    });
+    if (std::find(differs_.begin(), differs_.end(), 1) == differs_.end()) {
+      threads->run([&](int t) {
+        const auto [first, last] = Share{t, parts}.of(0, pairCount);
+        int next = touching_[t];
+        for (int k = first; k < last; ++k)
+          if (manifolds_[k].count > 0) overwrite((*lastStep)[next++], manifolds_[k]);
+      });
+      std::swap(found, *lastStep);
+      return true;
+    }
+  }
   // (the entries kept from the last call are overwritten whole by fill)
   found.resize(touching_[parts]);
   threads->run([&](int t) {

@@ -187,7 +187,8 @@ class World {
   mutable std::vector<Aabb> boxes_;                 // their bounds with the margin,
   mutable std::vector<bool> fixed_;                 // which are static,
   mutable std::vector<Manifold> manifolds_;         // and each pair's manifold, when threads share them,
-  mutable std::vector<int> touching_;               // with where each thread's touching pairs begin
+  mutable std::vector<int> touching_;               // with where each thread's touching pairs begin,
+  mutable std::vector<char> differs_;               // and whether its pairs differ from last step's
   mutable std::vector<Vec2> force_;                 // scratch of rates()
   mutable std::vector<double> torque_;
 };
