@@ -3,8 +3,6 @@
 // no inline function with the rest of the program (quad_pairs.cpp converts to and from Manifold).
 #pragma once
 
-#include <cstdint>
-
 namespace sim::collision::quad {
 
 constexpr int kLanes = 4;
@@ -26,7 +24,7 @@ struct Output {
   alignas(32) double pointX[2][kLanes];
   alignas(32) double pointY[2][kLanes];
   alignas(32) double pointSeparation[2][kLanes];
-  alignas(32) std::uint64_t id[2][kLanes];
+  alignas(32) long long id[2][kLanes];  // FeatureId's bits, as the lanes hold them
   alignas(32) double satSeparation[kLanes];
   alignas(32) long long satReferenceOnA[kLanes];
   alignas(32) long long satReferenceEdge[kLanes];

@@ -5,8 +5,6 @@
 // by the square root of x² + y²; no fused multiply-add), and every choice by the same strict
 // comparison in the same order, blended where the scalar code branches; so each lane is collide()'s
 // result to the bit.
-#include <cstdint>
-
 #include "sim/collision/quad_lanes.h"
 #include "sim/core/avx2_transpose.h"
 
@@ -76,7 +74,6 @@ struct EdgeSeparation {
 // a register's lanes stored side by side
 void store(double* to, V v) { *reinterpret_cast<V*>(to) = v; }
 void store(long long* to, I v) { *reinterpret_cast<I*>(to) = v; }
-void store(std::uint64_t* to, I v) { *reinterpret_cast<I*>(to) = v; }
 
 // a point of the incident edge as the clipping carries it (collide.cpp's ClipPoint)
 struct ClipPoint {

@@ -31,7 +31,8 @@ void collideQuadPairs(const PlacedShape* const a[kQuadLanes], const PlacedShape*
     m.normal = Vec2(lanes.normalX[k], lanes.normalY[k]);
     m.count = static_cast<int>(lanes.count[k]);
     for (int p = 0; p < 2; ++p)
-      m.points[p] = {Vec2(lanes.pointX[p][k], lanes.pointY[p][k]), lanes.pointSeparation[p][k], lanes.id[p][k]};
+      m.points[p] = {Vec2(lanes.pointX[p][k], lanes.pointY[p][k]), lanes.pointSeparation[p][k],
+                     static_cast<FeatureId>(lanes.id[p][k])};
     m.sat = {true, lanes.satSeparation[k], lanes.satReferenceOnA[k] != 0, static_cast<int>(lanes.satReferenceEdge[k]),
              static_cast<int>(lanes.satIncidentVertex[k])};
     m.separation = lanes.separation[k];

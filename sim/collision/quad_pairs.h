@@ -1,8 +1,9 @@
 // Four pairs of four-sided polygons collided at once (the boxes of a pile, the common pair): the
 // same separating-axis search and clipping as collide()'s polygon pair, each operation the same in
 // the same order in AVX2's four lanes, so that the manifolds are collide()'s to the bit
-// (tests/sim/collision/quad_pairs_test.cpp). A lane whose reference edge's sides miss the incident
-// edge (a corner against a corner) is collided again by collide() itself.
+// (tests/sim/collision/quad_pairs_test.cpp). A lane whose first clipping keeps no point of a
+// touching pair (the best edge's clipping, a corner against a corner) is collided again by
+// collide() itself.
 #pragma once
 
 #include "sim/collision/collide.h"

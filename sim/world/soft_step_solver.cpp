@@ -201,8 +201,8 @@ class SoftStepSolver final : public Method {
     const Softness staticSoft = makeSoft(2.0 * hertz, settings::kContactDampingRatio, h);
     // the same pairs in the same lanes with the same softness as last step: each lane's bodies,
     // masses, friction and softness are in it already, and the padded lanes are still zeros
-    const bool kept = !arranged && sameSoftness(soft, soft_) && sameSoftness(staticSoft, staticSoft_);
-    soft_ = soft, staticSoft_ = staticSoft;
+    const bool kept = !arranged && sameSoftness(soft, soft_) && sameSoftness(staticSoft, staticSoft_) && dummy == dummy_;
+    soft_ = soft, staticSoft_ = staticSoft, dummy_ = dummy;
     blocks_.resize(blockCount_);
     vnBefore_.resize(2 * world.contacts.size());
     WorkerPool& threads = pool(world.threads);
@@ -510,7 +510,8 @@ class SoftStepSolver final : public Method {
   std::vector<int> padded_;                  // the blocks with lanes no contact fills (a set's last)
   int blockCount_ = 0;
   std::vector<ContactBlock> blocks_;
-  Softness soft_, staticSoft_;     // what the blocks' lanes hold (prepare)
+  Softness soft_, staticSoft_;  // what the blocks' lanes hold (prepare), with the static record's index
+  int dummy_ = -1;
   std::vector<double> vnBefore_;   // each point's normal velocity before the step (restitution)
   std::vector<char> approaching_;  // per thread: one of its points comes faster than restitution's threshold
   std::vector<BodyState> states_;  // the bodies during the substeps, then the static record

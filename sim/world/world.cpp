@@ -1,6 +1,7 @@
 #include "sim/world/world.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -63,6 +64,7 @@ std::vector<Contact> World::findContacts(double margin) const {
 }
 
 void World::findContacts(double margin, std::vector<Contact>& found, WorkerPool* threads) {
+  assert(&found != &contacts && "findContacts writes over `contacts`: give it another list");
   const bool skip = sleeping() && sleep_.sleepingBodies() > 0;
   // when every body that can move sleeps, nothing touches anything awake: not even the broad phase
   contactPairsKept_ = false;
@@ -151,7 +153,8 @@ bool World::collectContacts(double margin, std::vector<Contact>& found, bool awa
     if (old < contacts.size() && contacts[old].a == i && contacts[old].b == j) carryImpulses(contacts[old], c);
   };
   // the same pair's contact last step, written over with its new manifold and warm started from
-  // itself (its bodies, so its restitution and friction, are the ones it had)
+  // itself (its bodies, so its restitution and friction, are the ones it had: a body's coefficients
+  // are fixed from the start of a run)
   auto overwrite = [](Contact& c, const Manifold& m) {
     const CarriedPoints previous = carriedPoints(c);
     c.manifold = m;

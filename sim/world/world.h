@@ -137,7 +137,9 @@ class World {
   // in `contacts`, for the warm start), so that it is solved with what touched it. Each found point
   // starts from the impulses of the same pair's same features in `contacts` (carryImpulses).
   // With `threads`, the bodies are placed and the pairs collided on all of them (the contacts are
-  // the same)
+  // the same). With nothing asleep the contacts are written over `contacts` where they can be and
+  // the two lists' storage swapped: `contacts` is then `found`'s old storage, to be swapped back
+  // (as the solvers do: `std::swap(world.contacts, found)`); `found` must be another list.
   void findContacts(double margin, std::vector<Contact>& found, WorkerPool* threads = nullptr);
   // the last findContacts(margin, found) found the pairs of the list before it, in the same order
   // (then a solver's arrangement of them still holds); false when it cannot tell

@@ -1,7 +1,8 @@
 // libFuzzer target: the pair collision functions on random convex polygons (and circles) in random
 // poses. Each must return without a crash or a sanitizer report, and the verdicts must be
 // symmetric: the separating-axis separation is the same both ways, and when A overlaps B, B
-// overlaps A at the same depth (within the reference edge's hysteresis).
+// overlaps A at the same depth (within the reference edge's hysteresis). Two quadrilaterals are
+// also collided four pairs at once (quad_pairs.h), which must give collide()'s manifolds to the bit.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "sim/collision/collide.h"
+#include "sim/collision/quad_pairs.h"
 #include "sim/core/settings.h"
 
 namespace {
@@ -63,6 +65,34 @@ sim::core::Pose pose(Bytes& in) {
   return p;
 }
 
+// every field the same to the bit (a sign of zero too)
+bool same(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool same(const sim::collision::Manifold& a, const sim::collision::Manifold& b) {
+  bool ok = same(a.normal.x(), b.normal.x()) && same(a.normal.y(), b.normal.y()) && a.count == b.count &&
+            same(a.separation, b.separation) && a.sat.valid == b.sat.valid && same(a.sat.separation, b.sat.separation) &&
+            a.sat.referenceOnA == b.sat.referenceOnA && a.sat.referenceEdge == b.sat.referenceEdge &&
+            a.sat.incidentVertex == b.sat.incidentVertex;
+  for (int k = 0; k < 2; ++k)
+    ok = ok && same(a.points[k].point.x(), b.points[k].point.x()) && same(a.points[k].point.y(), b.points[k].point.y()) &&
+         same(a.points[k].separation, b.points[k].separation) && a.points[k].id == b.points[k].id;
+  return ok;
+}
+
+// two quadrilaterals both ways, four lanes at once, against collide() one pair at a time
+void checkQuads(const sim::core::Shape& a, const sim::core::Pose& pa, const sim::core::Shape& b, const sim::core::Pose& pb,
+                double margin) {
+  sim::collision::PlacedShape A, B;
+  sim::collision::place(a, pa, A);
+  sim::collision::place(b, pb, B);
+  if (!sim::collision::isQuadPair(A, B)) return;
+  const sim::collision::PlacedShape* first[sim::collision::kQuadLanes] = {&A, &B, &A, &B};
+  const sim::collision::PlacedShape* second[sim::collision::kQuadLanes] = {&B, &A, &B, &A};
+  sim::collision::Manifold lanes[sim::collision::kQuadLanes];
+  sim::collision::collideQuadPairs(first, second, margin, lanes);
+  for (int k = 0; k < sim::collision::kQuadLanes; ++k)
+    if (!same(lanes[k], sim::collision::collide(*first[k], *second[k], margin))) std::abort();
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -85,5 +115,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const double slack = sim::core::settings::kReferenceEdgeHysteresis + 1e-9 * scale;
   if ((ab.separation < -slack && ba.count == 0) || (ba.separation < -slack && ab.count == 0)) std::abort();
   if (ab.separation < -slack && ba.separation < -slack && std::abs(ab.separation - ba.separation) > slack) std::abort();
+  checkQuads(a, pa, b, pb, margin);
   return 0;
 }
