@@ -29,6 +29,9 @@ struct Body {
   bool isStatic = false;
   double restitution = 0.5;  // c_r, combined per pair (contact.h)
   double friction = 0.0;     // Coulomb μ
+  // μ was named, by the body or by the world's default: a pair of which only one body names μ takes
+  // that μ (contact.h: combinedFriction)
+  bool frictionNamed = true;
 
   Vec2 x = Vec2::Zero();  // center of mass, world
   double angle = 0.0;     // continuous (not wrapped), counter-clockwise: the one stored orientation

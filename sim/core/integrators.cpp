@@ -72,4 +72,14 @@ void integrate(Integrator method, const Dynamics& f, double t, double h, States&
   }
 }
 
+double constantAccelerationWeight(Integrator method) {
+  switch (method) {
+    case Integrator::ExplicitEuler: return 0.0;
+    case Integrator::SymplecticEuler: return 1.0;
+    case Integrator::Midpoint:
+    case Integrator::Rk4: return 0.5;
+  }
+  return 1.0;
+}
+
 }  // namespace sim::core

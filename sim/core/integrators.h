@@ -37,6 +37,12 @@ void midpointStep(const Dynamics& f, double t, double h, States& y);
 void rk4Step(const Dynamics& f, double t, double h, States& y);
 void integrate(Integrator method, const Dynamics& f, double t, double h, States& y);
 
+// how far one step moves a body under a constant acceleration a, beyond x + h v, in units of h² a:
+// symplectic Euler 1 (x + h (v + h a)), the midpoint rule and RK4 1/2 (exact: x + h v + ½ h² a),
+// explicit Euler 0 (x + h v). A contact solver's impulse over a step is such a force, P/h held
+// for the step, so it moves the body by this times h Δv, as the integrator moves any other force
+double constantAccelerationWeight(Integrator method);
+
 // names as written in scenes and on the command line
 inline constexpr EnumNames<Integrator, 4> kIntegratorNames{{{
     {Integrator::ExplicitEuler, "explicit_euler"},

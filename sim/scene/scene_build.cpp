@@ -58,7 +58,8 @@ World buildWorld(const SceneDef& def) {
     b.invInertia = 1.0 / mp.inertia;
     b.setState({bd.position, bd.angle, bd.velocity, bd.angularVelocity});
     b.restitution = bd.restitution.value_or(def.restitution);
-    b.friction = bd.friction.value_or(def.friction);
+    b.friction = bd.friction.value_or(def.friction.value_or(settings::kDefaultFriction));
+    b.frictionNamed = bd.friction.has_value() || def.friction.has_value();
     if (bd.isStatic) b.makeStatic();
     w.bodies.push_back(std::move(b));
   }

@@ -73,12 +73,17 @@ struct SceneDef {
   double duration = settings::kDefaultDuration;
   Vec2 gravity = Vec2::Zero();
   double restitution = settings::kDefaultRestitution;
-  double friction = settings::kDefaultFriction;
+  // μ of every body that names none; unset, the default (0) is not a μ the scene named, and a pair
+  // with a body that names one takes that body's (sim::world::combinedFriction)
+  std::optional<double> friction;
   Integrator integrator = Integrator::SymplecticEuler;
   double dt = settings::kDefaultDt;
   double maxSteps = settings::kDefaultMaxSteps;  // the most steps a run may take (sim: max_steps)
   SourceLoc stepsLoc;                            // where dt (or else duration) is set, for messages
   CollisionMethod collisions = CollisionMethod::Auto;
+  // where `sim: {collisions}` and `sim: {integrator}` are written (line 0: not in the file, e.g. set
+  // on the command line), for the warnings of what a named method leaves out (model_warnings.h)
+  SourceLoc collisionsLoc, integratorLoc;
   int velocityIterations = settings::kVelocityIterations;
   int positionIterations = settings::kPositionIterations;
   int substeps = settings::kSubsteps;             // soft_step

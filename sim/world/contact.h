@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "sim/collision/collide.h"
+#include "sim/core/body.h"
 #include "sim/core/enum_names.h"
 
 namespace sim::world {
@@ -106,5 +107,12 @@ inline void carryImpulses(const Contact& previous, Contact& c) { carryImpulses(c
 // of every step asks, and the call was 1.4 % of a step on the 5,050-box pyramid)
 inline double combinedRestitution(double a, double b) { return std::max(a, b); }
 inline double combinedFriction(double a, double b) { return std::sqrt(a * b); }
+// a pair of bodies: the geometric mean when both name μ, else the μ of the one that names it (a
+// crate with μ = 0.4 on a floor that names none slides to a stop, where √(0.4 · 0) would let it
+// slide on without a word), else the world's default that both carry
+inline double combinedFriction(const sim::core::Body& a, const sim::core::Body& b) {
+  if (a.frictionNamed == b.frictionNamed) return combinedFriction(a.friction, b.friction);
+  return a.frictionNamed ? a.friction : b.friction;
+}
 
 }  // namespace sim::world

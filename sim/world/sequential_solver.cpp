@@ -273,14 +273,19 @@ class SequentialSolver final : public Method {
   }
 
  private:
-  // the free motion plus the contact velocity change over the step (for symplectic Euler this is
-  // exactly x + h v⁺, Box2D's integration of positions)
+  // the free motion plus what the contacts' velocity change Δv moves the body: their impulse over
+  // the step is a force P/h held for the step, moved as the integrator moves a constant force
+  // (a split of smooth and contact forces, as the velocity-level time stepping of Stewart and
+  // Trinkle 1996 takes the impulse over the step). Symplectic Euler: x + h v⁺, Box2D's integration
+  // of positions; the midpoint rule and RK4: x + h (v + v⁺)/2 at rest, so a resting body stays,
+  // where h Δv would lift it by ½ h² g every step; explicit Euler: x + h v
   void integratePositions(World& world, double h) const {
+    const double reach = constantAccelerationWeight(world.integrator) * h;
     for (size_t i = 0; i < world.bodies.size(); ++i) {
       Body& b = world.bodies[i];
       if (b.isStatic) continue;
-      b.x = free_[i].x + h * (b.v - free_[i].v);
-      b.angle = free_[i].angle + h * (b.omega - free_[i].omega);
+      b.x = free_[i].x + reach * (b.v - free_[i].v);
+      b.angle = free_[i].angle + reach * (b.omega - free_[i].omega);
     }
   }
 

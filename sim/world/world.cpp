@@ -146,7 +146,7 @@ bool World::collectContacts(double margin, std::vector<Contact>& found, bool awa
     c.a = i, c.b = j;
     c.manifold = m;
     c.restitution = combinedRestitution(bodies[i].restitution, bodies[j].restitution);
-    c.friction = combinedFriction(bodies[i].friction, bodies[j].friction);
+    c.friction = combinedFriction(bodies[i], bodies[j]);
     c.state[0] = c.state[1] = ContactPointState{};
     if (!warmStart) return;
     while (old < contacts.size() && std::make_pair(contacts[old].a, contacts[old].b) < pair) ++old;

@@ -281,3 +281,67 @@ TEST_CASE("Newton's cradle under sequential: momentum kept, the energy bounded")
   // spreads apart with a little more than the plastic minimum. Nothing like the ideal cradle
   // (0.5 J, only the last ball moving), which needs restitution applied contact by contact.
 }
+
+namespace {
+
+const sim::core::Integrator kIntegrators[] = {sim::core::Integrator::ExplicitEuler, sim::core::Integrator::SymplecticEuler,
+                                              sim::core::Integrator::Midpoint, sim::core::Integrator::Rk4};
+
+// `count` 1 m boxes resting on a plane (the lowest touching it, each on the one below) under
+// `integrator` at `dt`, friction 0.5
+std::string restingColumn(sim::core::Integrator integrator, double dt, int count) {
+  std::string s = "world: {gravity: [0, -9.81], friction: 0.5}\nsim: {collisions: sequential, integrator: " +
+                  std::string(sim::core::integratorName(integrator)) + ", dt: " + num(dt) +
+                  "}\nbodies:\n  - {name: floor, shape: {plane: {point: [0, 0], normal: [0, 1]}}}\n";
+  for (int i = 0; i < count; ++i)
+    s += "  - {name: b" + std::to_string(i) + ", shape: {box: [1, 1]}, position: " + vec(0, 0.5 + i) + "}\n";
+  return s;
+}
+
+}  // namespace
+
+// The contact impulse over a step is a force held for the step, moved as the integrator moves a
+// constant force (integratePositions): a resting body stays, where moving it by h Δv under RK4 or
+// the midpoint rule lifted it by ½ h² g a step (4 mm above the floor, moving at 0.04 m/s)
+TEST_CASE("sequential: a box and a column of five at rest stay at rest under every integrator") {
+  for (const sim::core::Integrator integrator : kIntegrators)
+    for (const double dt : {0.001, 1.0 / 60.0})
+      for (const int count : {1, 5}) {
+        CAPTURE(sim::core::integratorName(integrator));
+        CAPTURE(dt);
+        CAPTURE(count);
+        sim::world::World w = build(restingColumn(integrator, dt, count));
+        w.advanceTo(2.0);
+        for (int i = 0; i < count; ++i) {
+          const sim::core::Body& b = w.bodies[1 + i];
+          CHECK(b.v.norm() + std::abs(b.omega) <= 1e-9);
+          // each box on the one below: its height within the slop a contact leaves per box
+          CHECK(std::abs(b.x.y() - (0.5 + i)) <= sim::core::settings::kLinearSlop * (i + 1));
+        }
+      }
+}
+
+// a box launched along a rough floor stops after v²/(2μg) with the integrator's own lag: symplectic
+// Euler's positions take each step's end velocity (h v₀/2 short), explicit Euler's its start's
+// (h v₀/2 long), the midpoint rule and RK4 the trapezoid, exact under a constant deceleration; the
+// stop falls within a step, which leaves μ g h² more either way
+TEST_CASE("sequential: a box sliding to a stop stops at v²/(2μg) within its integrator's lag") {
+  const double v0 = 2.0, mu = 0.3, g = 9.81, stop = v0 * v0 / (2.0 * mu * g);
+  for (const sim::core::Integrator integrator : kIntegrators)
+    for (const double dt : {0.001, 1.0 / 60.0}) {
+      CAPTURE(sim::core::integratorName(integrator));
+      CAPTURE(dt);
+      sim::world::World w = build("world: {gravity: [0, -9.81]}\nsim: {collisions: sequential, integrator: " +
+                                  std::string(sim::core::integratorName(integrator)) + ", dt: " + num(dt) +
+                                  "}\nbodies:\n  - {name: floor, shape: {plane: {point: [0, 0], normal: [0, 1]}}}\n"
+                                  "  - {name: box, shape: {box: [1, 0.5]}, position: [0, 0.25], velocity: [2, 0], friction: " +
+                                  num(mu) + "}\n");
+      w.advanceTo(2.0);
+      const double lag = integrator == sim::core::Integrator::SymplecticEuler ? -0.5 * dt * v0
+                         : integrator == sim::core::Integrator::ExplicitEuler ? 0.5 * dt * v0
+                                                                              : 0.0;
+      CHECK(w.bodies[1].v.norm() <= 1e-9);
+      CHECK(std::abs(w.bodies[1].x.x() - (stop + lag)) <= mu * g * dt * dt);
+      CHECK(std::abs(w.bodies[1].x.y() - 0.25) <= 1e-9);
+    }
+}
