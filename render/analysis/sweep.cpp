@@ -18,7 +18,12 @@ using namespace render::jobs;
 
 namespace {
 
+// an entry that checks a law over the whole run (energy_never_rises), not a value: no error to chart
+bool lawOnly(const sim::scene::ExpectDef& e) { return e.energyNeverRises; }
+
 sim::scene::SceneDef withMethod(sim::scene::SceneDef def, const SweepCase& m) {
+  // the error is the distance from the closed forms' values (the energy ledger's rise is no distance)
+  std::erase_if(def.expects, lawOnly);
   def.integrator = m.integrator;
   def.collisions = m.collisions;
   def.dt = m.dt;
@@ -37,7 +42,7 @@ bool hasCollisions(const sim::scene::SceneDef& def) {
 }  // namespace
 
 SweepReference sweepReference(const sim::scene::SceneDef& def, double smallestDt) {
-  if (!def.expects.empty()) return {"expect", {}};
+  if (!std::all_of(def.expects.begin(), def.expects.end(), lawOnly)) return {"expect", {}};
   SweepCase ref{sim::core::Integrator::Rk4, def.collisions, smallestDt / 64.0, 0};
   std::string name = "rk4 at dt " + formatNumber(ref.dt);
   // the exact event method is the reference where bodies collide and it can run the scene

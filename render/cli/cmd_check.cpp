@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "render/cli/commands.h"
+#include "render/cli/energy_report.h"
 #include "render/cli/lecture_files.h"
 #include "render/cli/run_progress.h"
 #include "render/cli/scene_options.h"
@@ -87,9 +88,9 @@ void reportResting(const sim::scene::SceneDef& def, const sim::world::World& w, 
   for (const RestingSpan& s : mergeResting(w.resting)) out << "  resting: " << describeResting(def, s) << '\n';
 }
 
-// say when `auto` went from the event method to the stack solver during the run
-void reportSwitch(const sim::world::World& w, std::ostream& out) {
-  if (w.methodSwitchTime) out << "  switched: " << describeCollisionMethod(w) << '\n';
+// say when `auto` went from the event method to the stack solver during the run, and why
+void reportSwitch(const sim::scene::SceneDef& def, const sim::world::World& w, std::ostream& out) {
+  if (w.methodSwitch) out << "  switched: " << describeMethodSwitch(def, w) << '\n';
 }
 
 // with sim: {sleep: true}, how many of the dynamic bodies sleep at the end (sim/world/sleep.h)
@@ -126,19 +127,22 @@ bool checkCase(const OpenScene& scene, const std::string& variant, const Verbosi
   const std::string& file = scene.path();
   sim::scene::SceneDef def = scene.read(variant).model();
   if (threads) def.threads = *threads;
+  warnOfModel(def, file);
   const std::string label = file + (variant.empty() ? "" : " [" + variant + "]");
   // --quiet: only what failed, so the lines about the model and the run go nowhere
   std::ostream& out = say.quiet ? nowhere() : std::cout;
   out << label << ": " << describeModel(def) << '\n';
   sim::world::World w = startWorld(def, file);
-  out << "  collisions: " << describeCollisionMethod(w) << '\n';
+  out << "  collisions: " << describeCollisionMethod(def, w) << '\n';
   RunProgress progress(label, def.duration, nullptr, !say.quiet);
+  // where the run's energy goes, step by step (and its `energy_never_rises` entries checked on it)
+  sim::world::EnergyLedger ledger(w, progress.observer());
   std::vector<sim::core::CheckResult> results;
   std::string failure;
   try {
-    results = sim::scene::runExpects(def, w, progress.observer());
+    results = sim::scene::runExpects(def, w, &ledger);
     // on past the last entry to the duration: a scene that passes check must simulate and render
-    w.advanceTo(def.duration, progress.observer());
+    w.advanceTo(def.duration, &ledger);
   } catch (const sim::world::Diverged& d) {
     failure = runFailure(def, d);
   } catch (const sim::world::ImpactsPileUp& e) {
@@ -157,7 +161,8 @@ bool checkCase(const OpenScene& scene, const std::string& variant, const Verbosi
   if (say.verbose)
     for (const sim::world::ImpactRecord& r : w.impacts) out << "  impulse " << describeImpact(def, r) << '\n';
   reportResting(def, w, say.verbose, out);
-  reportSwitch(w, out);
+  reportSwitch(def, w, out);
+  out << "  " << describeLedger(def, ledger) << '\n';
   reportSleep(w, out);
   reportPrecision(w, out);
   return ok && failure.empty();

@@ -4,8 +4,10 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "render/cli/commands.h"
+#include "render/cli/energy_report.h"
 #include "render/cli/output.h"
 #include "render/cli/run_progress.h"
 #include "render/cli/scene_options.h"
@@ -31,7 +33,8 @@ struct SimulateOptions : SceneOptions, Verbosity {
   std::string output;  // -o: the state into this file instead of standard output
 };
 
-void printJson(const sim::scene::SceneDef& def, const sim::world::World& w, bool verbose) {
+void printJson(const sim::scene::SceneDef& def, const sim::world::World& w, const sim::world::EnergyLedger& ledger,
+               bool verbose) {
   JsonWriter j(std::cout);
   j.beginObject();
   j.field("scene", def.name);
@@ -58,10 +61,12 @@ void printJson(const sim::scene::SceneDef& def, const sim::world::World& w, bool
   const sim::core::Vec2 p = sim::world::linearMomentum(w);
   j.key("momentum").beginArray().value(p.x()).value(p.y()).endArray();
   j.field("angular_momentum", sim::world::angularMomentum(w));
+  writeLedger(j, def, ledger);
   j.field("collision_method", sim::world::collisionMethodName(w.collisions));
-  j.field("collision_method_reason", describeCollisionMethod(w));
+  j.field("collision_method_reason", describeCollisionMethod(def, w));
   // only when `auto` switched to the stack solver during the run (the JSON is otherwise unchanged)
-  if (w.methodSwitchTime) j.field("collision_method_switch_time", *w.methodSwitchTime);
+  if (w.methodSwitch)
+    j.field("collision_method_switch_time", w.methodSwitch->time).field("collision_method_switch", describeMethodSwitch(def, w));
   // only with sim: {sleep: true}: how many bodies sleep at the end (sim/world/sleep.h)
   if (w.sleep) j.field("sleep", true).field("sleeping_bodies", static_cast<long>(w.sleepingBodies()));
   // only with sim: {precision: float}
@@ -116,7 +121,8 @@ void printJson(const sim::scene::SceneDef& def, const sim::world::World& w, bool
   std::cout << '\n';
 }
 
-void printText(const sim::scene::SceneDef& def, const sim::world::World& w, bool verbose) {
+void printText(const sim::scene::SceneDef& def, const sim::world::World& w, const sim::world::EnergyLedger& ledger,
+               bool verbose) {
   std::cout << def.name << (def.variant.empty() ? "" : " [" + def.variant + "]") << ": t = " << formatNumber(w.time) << ", "
             << sim::core::integratorName(w.integrator) << ", dt = " << formatNumber(w.dt) << ", " << w.steps << " steps\n";
   std::cout << std::left << std::setw(16) << "body" << std::right;
@@ -134,7 +140,8 @@ void printText(const sim::scene::SceneDef& def, const sim::world::World& w, bool
   std::cout << std::setprecision(10) << "energy: kinetic " << e.kinetic << ", potential " << e.potential << ", total "
             << e.total() << "\nmomentum: (" << p.x() << ", " << p.y()
             << "), angular momentum about the origin: " << sim::world::angularMomentum(w) << '\n';
-  std::cout << "collisions: " << describeCollisionMethod(w) << "; " << w.impacts.size() << " impulses applied";
+  std::cout << describeLedger(def, ledger) << '\n';
+  std::cout << "collisions: " << describeCollisionMethod(def, w) << "; " << w.impacts.size() << " impulses applied";
   if (verbose)
     for (const sim::world::RestingRecord& r : w.resting) std::cout << "; " << describeResting(def, r);
   else
@@ -168,9 +175,11 @@ int simulate(const SimulateOptions& o) {
     trace = std::make_unique<render::video::TraceWriter>(traceStream(traceFile), def);
     trace->rows(world);
   }
+  // where the run's energy goes, step by step
+  std::optional<sim::world::EnergyLedger> ledger;
   try {
     RunProgress progress(o.scene, until, trace.get(), !o.quiet);
-    world.advanceTo(until, progress.observer());
+    world.advanceTo(until, &ledger.emplace(world, progress.observer()));
   } catch (const sim::world::Diverged& d) {
     std::cerr << o.scene << ": the simulation diverged at t = " << formatNumber(d.time) << ": body '" << def.bodies[d.body].name
               << "' has a non-finite state; try a smaller step (--dt " << formatNumber(def.dt / 4)
@@ -192,7 +201,7 @@ int simulate(const SimulateOptions& o) {
     return kExitFailure;
   }
   if (traceFile) traceFile->commit();
-  o.json ? printJson(def, world, o.verbose) : printText(def, world, o.verbose);
+  o.json ? printJson(def, world, *ledger, o.verbose) : printText(def, world, *ledger, o.verbose);
   output.commit();
   return kExitOk;
 }

@@ -117,7 +117,9 @@ int sweep(const SweepOptions& o) {
   render::video::createOutputDirectory(o.outDir);
 
   const double smallest = *std::min_element(steps.begin(), steps.end());
-  checkSweepSteps(smallest, !o.stack && def.expects.empty(), def.maxSteps, def.duration);
+  // (a reference run unless an entry gives values: energy_never_rises gives none)
+  const bool values = std::any_of(def.expects.begin(), def.expects.end(), [](const auto& e) { return !e.energyNeverRises; });
+  checkSweepSteps(smallest, !o.stack && !values, def.maxSteps, def.duration);
   // the CSV's temporary opened before the runs: a folder that cannot be written fails now
   const std::string base = o.outDir + "/" + def.name + (def.variant.empty() ? "" : "-" + def.variant) + "-sweep";
   AtomicFile csv = openOutput(base + ".csv");

@@ -41,7 +41,10 @@ std::vector<std::string> lectureSceneFiles(const std::vector<std::string>& argum
 render::video::LoadVariant lectureLoader(const OpenScene& file) {
   return [file](const std::string& variant) {
     render::scene::Scene scene = file.read(variant).scene;
-    if (!variant.empty() || scene.model.variantNames.empty()) (void)startWorld(scene.model, file.path());
+    if (!variant.empty() || scene.model.variantNames.empty()) {
+      warnOfModel(scene.model, file.path());
+      (void)startWorld(scene.model, file.path());
+    }
     return scene;
   };
 }

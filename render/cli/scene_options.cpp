@@ -1,12 +1,17 @@
 #include "render/cli/scene_options.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
+#include <iostream>
+#include <mutex>
+#include <set>
 #include <sstream>
 
 #include "render/cli/commands.h"
 #include "render/jobs/json_writer.h"
 #include "sim/core/step_limit.h"
+#include "sim/scene/model_warnings.h"
 #include "sim/scene/scene_build.h"
 #include "sim/scene/step_limit.h"
 #include "sim/yaml/scene_yaml.h"
@@ -44,6 +49,7 @@ SceneFile SceneOptions::load() const {
       throw UsageError("--integrator: unknown integrator '" + integrator +
                        "'; choose one of: " + sim::core::kIntegratorNames.list());
     def.integrator = *method;
+    def.integratorLoc = {};
   }
   if (dt) {
     if (!(*dt > 0.0) || !std::isfinite(*dt)) throw UsageError("--dt: the time step must be a positive finite number");
@@ -59,6 +65,7 @@ SceneFile SceneOptions::load() const {
       throw UsageError("--collisions: unknown collision method '" + collisions +
                        "'; choose one of: " + sim::world::kCollisionMethodNames.list());
     def.collisions = *method;
+    def.collisionsLoc = {};
   }
   // (as in the scene's sim: block, they change soft_step only)
   if (substeps) {
@@ -82,6 +89,7 @@ SceneFile SceneOptions::load() const {
                        "'; choose one of: " + sim::world::kPrecisionNames.list());
     def.precision = *p;
   }
+  warnOfModel(def, scene);
   return file;
 }
 
@@ -132,6 +140,19 @@ render::video::LoadVariant3d SceneOptions::variantLoader3d() const {
   };
 }
 
+void warnOfModel(const sim::scene::SceneDef& def, const std::string& file) {
+  // (once per warning and run: a render loads its variant again for each of its passes)
+  static std::mutex lock;
+  static std::set<std::string> said;
+  for (const sim::scene::ModelWarning& w : sim::scene::modelWarnings(def)) {
+    const std::string where = w.loc.line > 0 ? file + ":" + std::to_string(w.loc.line) + ":" + std::to_string(w.loc.column)
+                                             : file + ": --" + w.setting + " " + w.value;
+    const std::string line = where + ": warning: " + (w.loc.line > 0 ? "'" + w.setting + ": " + w.value + "': " : "") + w.message;
+    const std::lock_guard<std::mutex> hold(lock);
+    if (said.insert(line).second) std::cerr << line << '\n';
+  }
+}
+
 sim::world::World startWorld(const sim::scene::SceneDef& def, const std::string& file) {
   sim::world::World world = sim::scene::buildWorld(def);
   try {
@@ -147,7 +168,7 @@ sim::world::World startWorld(const sim::scene::SceneDef& def, const std::string&
   return world;
 }
 
-std::string describeCollisionMethod(const sim::world::World& world) {
+std::string describeCollisionMethod(const sim::scene::SceneDef& def, const sim::world::World& world) {
   std::string s(sim::world::collisionMethodName(world.collisions));
   switch (world.methodReason) {
     case sim::world::MethodReason::Requested: return s + " (as the scene or the command line asks)";
@@ -157,10 +178,30 @@ std::string describeCollisionMethod(const sim::world::World& world) {
     case sim::world::MethodReason::PersistentContacts:
       return s + " (auto: bodies touch at the start under load, so contacts persist and need the iterative solver)";
     case sim::world::MethodReason::StackFormed:
-      return s + " (auto: event until impacts piled up, a stack forming; the iterative solver from t = " +
-             render::jobs::formatNumber(world.methodSwitchTime.value_or(0.0)) + " on)";
+    case sim::world::MethodReason::ContactPersisted: return s + " (auto: " + describeMethodSwitch(def, world) + ")";
   }
   return s;
+}
+
+std::string describeMethodSwitch(const sim::scene::SceneDef& def, const sim::world::World& world) {
+  if (!world.methodSwitch) return "";
+  const sim::world::MethodSwitch& w = *world.methodSwitch;
+  namespace settings = sim::core::settings;
+  // (a time on the step grid, k·dt, to the digits that tell it: 0.576, not 0.5760000000000001)
+  char time[32];
+  const auto end = std::to_chars(time, time + sizeof time, w.time, std::chars_format::general, 9).ptr;
+  const std::string from = "event until t = " + std::string(time, end) + " s, then " +
+                           std::string(sim::world::collisionMethodName(world.collisions)) + ": ";
+  if (w.a < 0) return from + "impacts piled up in one step (a stack forming)";
+  const std::string pair = "'" + def.bodies[w.a].name + "' and '" + def.bodies[w.b].name + "'";
+  switch (w.how) {
+    case sim::world::Persistence::Rested: return from + pair + " stayed in contact (too slow to part after an impact)";
+    case sim::world::Persistence::Rattling:
+      return from + pair + " struck each other " + std::to_string(settings::kRepeatedImpacts) + " times within " +
+             render::jobs::formatNumber(settings::kRepeatWindow) + " s, each slower than " +
+             render::jobs::formatNumber(settings::kRepeatSpeed) + " m/s";
+  }
+  return from + pair;
 }
 
 std::string describeResting(const sim::scene::SceneDef& def, const sim::world::RestingRecord& r) {

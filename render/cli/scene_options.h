@@ -43,12 +43,20 @@ struct SceneOptions {
   mutable std::shared_ptr<const OpenScene> opened_;  // (shared by copies, as the variant loaders make)
 };
 
+// on standard error, once per run, what the scene's named collision method leaves out of what it
+// asks for, at the key that named it: "FILE:LINE:COL: warning: 'collisions: event': ..."
+// (sim/scene/model_warnings.h)
+void warnOfModel(const sim::scene::SceneDef& def, const std::string& file);
+
 // the scene's world, started: `auto` resolved and the start state checked; bodies that overlap
 // where the method cannot start become a sim::yaml::SceneError at the second body's line
 sim::world::World startWorld(const sim::scene::SceneDef& def, const std::string& file);
 
 // "event: no bodies touch at the start, so impacts are isolated"
-std::string describeCollisionMethod(const sim::world::World& world);
+std::string describeCollisionMethod(const sim::scene::SceneDef& def, const sim::world::World& world);
+// when `auto` went from event to the resting-contact solver during the run, and why: "event until
+// t = 0.604 s, then sequential: 'floor' and 'box' stayed in contact (...)"; empty when it did not
+std::string describeMethodSwitch(const sim::scene::SceneDef& def, const sim::world::World& world);
 
 // where the event method turned a pile-up of impacts into resting contact: "'ball' and 'floor' came
 // to rest at t = 2.4 (...)", or, when the pair keeps sliding or turning while it touches, "'bar' and

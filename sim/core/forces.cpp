@@ -73,6 +73,50 @@ double ForceSet::potentialEnergy(const std::vector<Body>& bodies) const {
   return e;
 }
 
+ForcePower ForceSet::power(double window, const std::vector<BodyState>& states) const {
+  ForcePower p;
+  for (const PointForce& f : pointForces) {
+    if (window < f.from || window >= f.until) continue;
+    const BodyState& s = states[f.body];
+    const Vec2 force = f.bodyFrame ? s.q().apply(f.force) : f.force;
+    p.applied += force.dot(pointVelocity(s, worldPoint(states, f.body, f.point)));
+  }
+  // a spring's damping force c ṡ along it, on both ends: power −c ṡ², the stretch rate ṡ squared
+  for (const Spring& sp : springs) {
+    if (sp.damping == 0.0) continue;
+    const Vec2 a = worldPoint(states, sp.bodyA, sp.pointA);
+    const bool toWorld = sp.bodyB == kWorldAnchor;
+    const Vec2 b = toWorld ? sp.pointB : worldPoint(states, sp.bodyB, sp.pointB);
+    const Vec2 d = b - a;
+    const double length = d.norm();
+    if (length == 0.0) continue;
+    const Vec2 vb = toWorld ? Vec2::Zero() : pointVelocity(states[sp.bodyB], b);
+    const double stretchRate = (d / length).dot(vb - pointVelocity(states[sp.bodyA], a));
+    p.damping -= sp.damping * stretchRate * stretchRate;
+  }
+  for (const Drag& d : drags)
+    p.damping -= d.linear * states[d.body].v.squaredNorm() + d.angular * states[d.body].omega * states[d.body].omega;
+  return p;
+}
+
+double ForceSet::pointForceWork(double window, const std::vector<BodyState>& from, const std::vector<BodyState>& to) const {
+  double work = 0.0;
+  for (const PointForce& f : pointForces) {
+    if (window < f.from || window >= f.until) continue;
+    const Vec2 moved = worldPoint(to, f.body, f.point) - worldPoint(from, f.body, f.point);
+    const Vec2 force = f.bodyFrame ? 0.5 * (from[f.body].q().apply(f.force) + to[f.body].q().apply(f.force)) : f.force;
+    work += force.dot(moved);
+  }
+  return work;
+}
+
+bool ForceSet::hasWorkingForces() const {
+  if (!pointForces.empty() || !drags.empty()) return true;
+  for (const Spring& sp : springs)
+    if (sp.damping != 0.0) return true;
+  return false;
+}
+
 std::vector<double> ForceSet::breakpoints() const {
   std::vector<double> t;
   for (const PointForce& p : pointForces) {

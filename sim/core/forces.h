@@ -37,6 +37,14 @@ struct Drag {
   double angular = 0.0;
 };
 
+// the rate at which the forces that have no potential do work on the bodies, W/s: the applied point
+// forces (what a scene puts in) and the damping of drags and springs (what it takes out, ≤ 0);
+// gravity and the springs' stretch are in the potential energy instead
+struct ForcePower {
+  double applied = 0.0;
+  double damping = 0.0;
+};
+
 struct ForceSet {
   Vec2 gravity = Vec2::Zero();
   std::vector<PointForce> pointForces;
@@ -50,6 +58,15 @@ struct ForceSet {
 
   // gravity and spring potential energy (constant and drag forces have none)
   double potentialEnergy(const std::vector<Body>& bodies) const;
+
+  // f · (v + ω × r′) summed over the forces without a potential, at `states` (`window` as accumulate's)
+  ForcePower power(double window, const std::vector<BodyState>& states) const;
+  // the work of the point forces on during a step from `from` to `to` (`window` inside it): f · Δr of
+  // each force's point, exact for a force fixed in the world whatever path the point took; a force
+  // that turns with its body takes the mean of its two directions (second order in the step)
+  double pointForceWork(double window, const std::vector<BodyState>& from, const std::vector<BodyState>& to) const;
+  // some force does work that no potential counts (a point force, a drag, a damped spring)
+  bool hasWorkingForces() const;
 
   // times at which a force switches on or off: the step is split there
   std::vector<double> breakpoints() const;

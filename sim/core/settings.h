@@ -154,6 +154,15 @@ inline constexpr double kRestingSpeed = 1e-6;
 // event method: at most this many impacts in one step before giving up with an error
 inline constexpr int kMaxImpactsPerStep = 10000;
 
+// --- `auto`'s watch over the event method (contact_watch.h) ---
+
+// a pair whose impacts come this many times within kRepeatWindow, each approaching slower than
+// kRepeatSpeed, rattles rather than bounces: under gravity a bounce of 25 ms rises under 1 mm
+// (g τ²/8), and below sequential's restitution threshold (1 m/s) no stack solver bounces either
+inline constexpr int kRepeatedImpacts = 4;
+inline constexpr double kRepeatWindow = 0.1;                   // s
+inline constexpr double kRepeatSpeed = kRestitutionThreshold;  // m/s
+
 // --- event method: time of impact (time_of_impact.h) ---
 
 // the approach speed bound of conservative advancement is taken at the two ends of the span; under

@@ -5,6 +5,7 @@
 
 #include "sim/scene/scene_build.h"
 #include "sim/world/diagnostics.h"
+#include "sim/world/energy_ledger.h"
 
 namespace sim::scene {
 using namespace sim::core;
@@ -21,11 +22,28 @@ CheckResult compare(const ExpectDef& e, std::string quantity, std::vector<double
 
 std::vector<double> pair(const Vec2& v) { return {v.x(), v.y()}; }
 
+// `energy_never_rises` from the ledger of the run up to the entry's time: the first time the
+// adjusted energy rose above its lowest by more than the tolerance, with the rise then and where;
+// else its largest rise
+CheckResult neverRises(const ExpectDef& e, const SceneDef& def, const EnergyLedger& ledger) {
+  const std::optional<EnergyRise> first = ledger.firstRiseAbove(e.tolerance);
+  const bool failed = first && first->time <= e.time + settings::kTimeSnap * def.dt;
+  const EnergyRise r = failed ? *first : ledger.largestRise();
+  std::string quantity = "energy_never_rises";
+  if (failed)
+    quantity += r.a < 0 ? " (rose in free motion: the integrator's)"
+                        : " (rose at the contact of '" + def.bodies[r.a].name + "' and '" + def.bodies[r.b].name + "')";
+  CheckResult result = compare(e, quantity, {0.0}, {r.amount});
+  if (failed) result.time = r.time;
+  return result;
+}
+
 }  // namespace
 
 std::vector<CheckResult> evaluate(const ExpectDef& e, const SceneDef& def, const World& world,
                                   const std::unordered_map<std::string, int>* indices) {
   std::vector<CheckResult> out;
+  if (e.energyNeverRises) return out;  // a whole run's: runExpects checks it
   const int i = e.body.empty() ? -1 : !indices ? def.bodyIndex(e.body) : indices->count(e.body) ? indices->at(e.body) : -1;
   const std::string prefix = i < 0 ? "" : e.body + ".";
   if (i >= 0) {
@@ -58,7 +76,21 @@ std::vector<CheckResult> runExpects(const SceneDef& def, World& world, sim::worl
   std::stable_sort(order.begin(), order.end(), [](auto* a, auto* b) { return a->time < b->time; });
   std::vector<CheckResult> out;
   const std::unordered_map<std::string, int> indices = def.bodyIndices();
+  // the energy ledger sees every step when an entry asks that the energy never rise: the caller's
+  // when it passed its own as the observer, else one of this run's
+  std::optional<EnergyLedger> own;
+  EnergyLedger* ledger = dynamic_cast<EnergyLedger*>(observer);
   for (const ExpectDef* e : order) {
+    if (!e->energyNeverRises) continue;
+    if (!ledger) observer = ledger = &own.emplace(world, observer);
+    ledger->watch(e->tolerance);
+  }
+  for (const ExpectDef* e : order) {
+    if (e->energyNeverRises) {
+      world.advanceWithin(e->time, std::max(def.duration, e->time), observer);
+      out.push_back(neverRises(*e, def, *ledger));
+      continue;
+    }
     // the run's own steps up to the entry (none split there: the run goes on to its duration as
     // `simulate` runs it), and a copy advanced to its time when it falls between two of them
     const double end = std::max(def.duration, e->time);

@@ -60,6 +60,9 @@ struct ExpectDef {
   std::optional<double> totalEnergy;      // world
   std::optional<Vec2> momentum;           // world
   std::optional<double> angularMomentum;  // world, about the origin
+  // the energy, less the work of applied forces and impulse events, never rises by more than the
+  // tolerance above its lowest value so far, at any step up to `time` (sim/world/energy_ledger.h)
+  bool energyNeverRises = false;
   double tolerance = settings::kDefaultExpectTolerance;
   bool earlierRun = false;  // source: earlier_run, a value an earlier run gave (else a closed form)
   SourceLoc loc;

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "sim/collision/quad_pairs.h"
+#include "sim/world/method_models.h"
 #include "sim/world/worker_pool.h"
 
 namespace sim::world {
@@ -287,22 +288,21 @@ void World::measureScene() {
   if (all.upper.x() >= all.lower.x()) sceneSize_ = std::max((all.upper - all.lower).maxCoeff(), settings::kMinSceneSize);
 }
 
-// `auto`: the least model the scene needs
+// `auto`: the least model the scene needs at the start (method_models.h); what the run then shows
+// it needs (contact that persists) is watched for step by step (World::step)
 void World::chooseMethod() {
   size_t dynamic = 0;
   for (const Body& b : bodies) dynamic += !b.isStatic;
   const bool loaded = forces.gravity != Vec2::Zero() || !forces.gravityOnly();
-  if (dynamic == 0 || bodies.size() < 2) {
-    collisions = CollisionMethod::None;
-    methodReason = MethodReason::FewBodies;
-  } else if (loaded && !findContacts(settings::kContactMargin).empty()) {
-    collisions = CollisionMethod::Sequential;
-    methodReason = MethodReason::PersistentContacts;
-  } else {
-    collisions = CollisionMethod::Event;
-    methodReason = MethodReason::IsolatedImpacts;
-    mayStackUp_ = true;
-  }
+  unsigned needs = 0;
+  if (dynamic > 0 && bodies.size() >= 2) needs |= bit(Phenomenon::IsolatedImpacts);
+  // bodies that touch at the start under a load rest on each other: their contacts persist
+  if (needs && loaded && !findContacts(settings::kContactMargin).empty()) needs |= bit(Phenomenon::RestingContact);
+  collisions = leastMethodFor(needs);
+  if (!needs) methodReason = MethodReason::FewBodies;
+  else if (has(needs, Phenomenon::RestingContact)) methodReason = MethodReason::PersistentContacts;
+  else methodReason = MethodReason::IsolatedImpacts;
+  mayStackUp_ = collisions == CollisionMethod::Event;
 }
 
 std::unique_ptr<Method> makeMethod(CollisionMethod method, Precision precision) {
@@ -336,9 +336,10 @@ void World::advanceWithin(double t, double tEnd, StepObserver* observer) {
 
 // one step from now to `stop` on the way to tEnd, the events due there applied
 void World::stepTo(double stop, double tEnd, StepObserver* observer) {
-  step(stop - time);
   // land on the grid point or tEnd itself when the stop is one of them within round-off
-  time = grid_.arrive(stop, tEnd);
+  const double end = grid_.arrive(stop, tEnd);
+  step(stop, end);
+  time = end;
   if (observer) observer->afterStep(*this);
   applyDueEvents(observer);
 }
@@ -347,7 +348,8 @@ void World::stepTo(double stop, double tEnd, StepObserver* observer) {
 // sleeping, `auto`'s switch and the finiteness check. Under `auto`, when the event method finds
 // impacts piling up (a stack or a pile forming), the step is done again from where it began by
 // the stack solver, which goes on from there.
-void World::step(double h) {
+void World::step(double stop, double end) {
+  const double h = stop - time;
   const TimeStep thisStep{time, h};
   // a point force on during the step wakes the island it pushes
   if (sleeping()) sleep_.wakeForced(forces, thisStep.midpoint(), contacts);
@@ -358,12 +360,15 @@ void World::step(double h) {
     const size_t impactsBefore = impacts.size(), restingBefore = resting.size();
     try {
       method_->step(*this, thisStep);
+      // a contact that persists (contact_watch.h) is the resting-contact solver's from the step's end
+      if (const std::optional<PersistentContact> p = watch_.afterStep(*this, impactsBefore, restingBefore))
+        switchToStackSolver({end, p->a, p->b, p->how});
     } catch (const ImpactsPileUp&) {
       setStates(stepStart_);
       // what the undone attempt recorded did not happen
       impacts.resize(impactsBefore);
       resting.resize(restingBefore);
-      switchToStackSolver(thisStep.start);
+      switchToStackSolver({thisStep.start});
       method_->step(*this, thisStep);
     }
   }
@@ -374,11 +379,12 @@ void World::step(double h) {
   checkFinite(time + h);
 }
 
-// the stack solver from `at` on: the start of the step in which the impacts piled up
-void World::switchToStackSolver(double at) {
+// the stack solver from why.time on: the start of the step in which the impacts piled up, or the
+// end of the one in which a contact persisted
+void World::switchToStackSolver(const MethodSwitch& why) {
   collisions = CollisionMethod::Sequential;
-  methodReason = MethodReason::StackFormed;
-  methodSwitchTime = at;
+  methodReason = why.a < 0 ? MethodReason::StackFormed : MethodReason::ContactPersisted;
+  methodSwitch = why;
   mayStackUp_ = false;
   contacts.clear();
   method_ = OwnedMethod(makeMethod(collisions, precision));

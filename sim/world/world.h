@@ -16,6 +16,7 @@
 #include "sim/core/settings.h"
 #include "sim/core/step_grid.h"
 #include "sim/world/contact.h"
+#include "sim/world/contact_watch.h"
 #include "sim/world/methods.h"
 #include "sim/world/sleep.h"
 
@@ -72,9 +73,18 @@ struct ImpactsPileUp : std::runtime_error {
   double time;
 };
 
-// why the collision method is what it is (`auto` explains its choice, and its switch when a stack
-// forms during the run: StackFormed, at methodSwitchTime)
-enum class MethodReason { Requested, FewBodies, IsolatedImpacts, PersistentContacts, StackFormed };
+// why the collision method is what it is (`auto` explains its choice, and its switch during the
+// run: StackFormed or ContactPersisted, told by methodSwitch)
+enum class MethodReason { Requested, FewBodies, IsolatedImpacts, PersistentContacts, StackFormed, ContactPersisted };
+
+// when `auto` went from the event method to the resting-contact solver, and what made it
+struct MethodSwitch {
+  double time = 0.0;
+  // the pair whose contact persisted (contact_watch.h), or none (-1) when impacts piled up in one
+  // step across the scene
+  int a = -1, b = -1;
+  Persistence how = Persistence::Rested;
+};
 
 // The world holds the bodies, the forces, the contacts and the time; the collision method
 // (methods.h) decides how a step answers touching bodies.
@@ -87,7 +97,7 @@ class World {
   double dt = settings::kDefaultDt;                    // read once, by start(): the step grid's spacing
   CollisionMethod collisions = CollisionMethod::Auto;  // resolved when the run starts
   MethodReason methodReason = MethodReason::Requested;
-  std::optional<double> methodSwitchTime;  // when `auto` went from event to the stack solver
+  std::optional<MethodSwitch> methodSwitch;  // when and why `auto` went from event to the stack solver
   int velocityIterations = settings::kVelocityIterations;
   int positionIterations = settings::kPositionIterations;
   int substeps = settings::kSubsteps;             // soft_step: substeps per step
@@ -158,8 +168,9 @@ class World {
   void measureScene();
   void chooseMethod();
   void stepTo(double stop, double tEnd, StepObserver* observer);
-  void step(double h);
-  void switchToStackSolver(double at);
+  // one step from now to `stop` (the time it arrives at: `end`)
+  void step(double stop, double end);
+  void switchToStackSolver(const MethodSwitch& why);
   void applyDueEvents(StepObserver* observer);
   void checkFinite(double t) const;
   bool sleeping() const;
@@ -177,10 +188,12 @@ class World {
   size_t nextEvent_ = 0;
   StepGrid grid_;  // steps of dt, cut at the events and force switches
   double sceneSize_ = 1.0;
-  Sleep sleep_;              // the islands asleep and the bodies' time at rest
-  OwnedMethod method_;       // the unit of `collisions`, made by start()
-  bool mayStackUp_ = false;  // `auto` chose event: a stack forming switches to sequential
-  States stepStart_;         // the states where the step began, to redo it on a switch
+  Sleep sleep_;         // the islands asleep and the bodies' time at rest
+  OwnedMethod method_;  // the unit of `collisions`, made by start()
+  // `auto` chose event: contact that persists, or a stack forming, switches to sequential
+  bool mayStackUp_ = false;
+  ContactWatch watch_;
+  States stepStart_;  // the states where the step began, to redo it on a switch
   // the broad phase's candidate pairs, kept from one findContacts to the next (the pairs found
   // do not depend on them)
   mutable PairCache pairCache_;

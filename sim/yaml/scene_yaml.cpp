@@ -58,8 +58,10 @@ class SceneReader : public Reader {
                 "sim");
       optional(sim, "max_steps", s.maxSteps, &Reader::positive);
       readSizeLimits(*this, sim, limits_);
-      if (sim["collisions"])
+      if (sim["collisions"]) {
         s.collisions = named(sim["collisions"], "collisions", collisionMethodFromName, kCollisionMethodNames.list());
+        s.collisionsLoc = place(sim["collisions"]);
+      }
       if (sim["iterations"]) s.velocityIterations = wholeNumber(sim["iterations"], "iterations", 1, 1000);
       if (sim["position_iterations"])
         s.positionIterations = wholeNumber(sim["position_iterations"], "position_iterations", 0, 1000);
@@ -73,7 +75,10 @@ class SceneReader : public Reader {
                                "' has none; use 'collisions: sequential', 'soft_step' or 'auto', or drop 'sleep'");
       if (sim["threads"]) s.threads = wholeNumber(sim["threads"], "threads", 1, sim::core::settings::kMaxThreads);
       if (sim["precision"]) s.precision = named(sim["precision"], "precision", precisionFromName, kPrecisionNames.list());
-      if (sim["integrator"]) s.integrator = named(sim["integrator"], "integrator", integratorFromName, kIntegratorNames.list());
+      if (sim["integrator"]) {
+        s.integrator = named(sim["integrator"], "integrator", integratorFromName, kIntegratorNames.list());
+        s.integratorLoc = place(sim["integrator"]);
+      }
       optional(sim, "dt", s.dt, &Reader::positive);
     }
     const YAML::Node stepsAt = root["sim"] && root["sim"]["dt"] ? root["sim"]["dt"] : root["duration"] ? root["duration"] : root;
@@ -202,13 +207,27 @@ class SceneReader : public Reader {
   ExpectDef readExpect(const YAML::Node& n, const SceneDef& s) {
     checkKeys(n,
               {"time", "body", "position", "angle", "velocity", "angular_velocity", "kinetic_energy", "potential_energy",
-               "total_energy", "momentum", "angular_momentum", "tolerance", "source"},
+               "total_energy", "momentum", "angular_momentum", "energy_never_rises", "tolerance", "source"},
               "an expect entry");
     ExpectDef e;
     e.loc = {n.Mark().line + 1, n.Mark().column + 1};
-    const YAML::Node t = required(n, "time", "an expect entry");
-    e.time = finite(t, "time");
-    checkTime(t, e.time, s.duration, "expect");
+    // the energy ledger's check holds at every step of the run (up to `time`, the duration unless given)
+    if (const YAML::Node rises = n["energy_never_rises"]) {
+      if (!boolean(rises, "energy_never_rises"))
+        fail(rises, "'energy_never_rises: false' checks nothing; remove the entry, or write 'energy_never_rises: true'");
+      for (const char* key : {"body", "position", "angle", "velocity", "angular_velocity", "kinetic_energy", "potential_energy",
+                              "total_energy", "momentum", "angular_momentum"})
+        if (n[key])
+          fail(n[key], std::string("'") + key +
+                           "' is checked at one time, and 'energy_never_rises' at every step: give each an entry of its own");
+      e.energyNeverRises = true;
+      e.time = s.duration;
+    }
+    if (!e.energyNeverRises || n["time"]) {
+      const YAML::Node t = required(n, "time", "an expect entry");
+      e.time = finite(t, "time");
+      checkTime(t, e.time, s.duration, "expect");
+    }
     if (n["body"]) e.body = bodyRef(n, "body", s, "an expect entry");
     for (const char* key : {"position", "angle", "velocity", "angular_velocity"})
       if (n[key] && e.body.empty()) fail(n[key], std::string("'") + key + "' is a body's: add 'body:'");

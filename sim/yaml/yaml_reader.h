@@ -79,6 +79,13 @@ class Reader {
   // variant's key
   void placeUnmarked(const YAML::Mark& m) { unmarked_ = m; }
 
+  // where a node is written, for a definition's messages (a merged node: the variant's key)
+  sim::core::SourceLoc place(const YAML::Node& at) const {
+    const YAML::Mark m = at.Mark().is_null() ? unmarked_ : at.Mark();
+    if (m.is_null()) return {1, 1};
+    return {m.line + 1, m.column + 1};
+  }
+
   [[noreturn]] void fail(const YAML::Node& at, const std::string& message) const {
     const YAML::Mark m = at.Mark().is_null() ? unmarked_ : at.Mark();
     if (m.is_null()) throw SceneError(file_, 1, 1, message);

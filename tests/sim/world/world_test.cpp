@@ -264,22 +264,24 @@ std::string droppedPile(const char* collisions) {
 
 }  // namespace
 
-TEST_CASE("auto builds a stack: events until impacts pile up, then the stack solver from that step on") {
+TEST_CASE("auto builds a stack: events until a contact persists, then the stack solver from that step on") {
   sim::world::World w = sim::scene::buildWorld(sim::yaml::loadSceneText(droppedPile("auto"), "inline.yaml"));
   std::vector<double> restX;
   for (const sim::core::Body& b : w.bodies) restX.push_back(b.x.x());
   w.start();
   CHECK(w.collisions == sim::world::CollisionMethod::Event);
-  CHECK_FALSE(w.methodSwitchTime);
+  CHECK_FALSE(w.methodSwitch);
   w.advanceTo(10.0);
-  // the switch, reported: which method, why, and from when (the start of a step, as the pile forms
-  // once the lowest rows land, before 1 s)
+  // the switch, reported: which method, why, between which bodies and from when (a step's end, as
+  // the lowest row lands and rattles on the ground, before 1 s and before impacts pile up)
   CHECK(w.collisions == sim::world::CollisionMethod::Sequential);
-  CHECK(w.methodReason == sim::world::MethodReason::StackFormed);
-  REQUIRE(w.methodSwitchTime);
-  CHECK(*w.methodSwitchTime > 0.0);
-  CHECK(*w.methodSwitchTime < 1.0);
-  const double steps = *w.methodSwitchTime / w.dt;
+  CHECK(w.methodReason == sim::world::MethodReason::ContactPersisted);
+  REQUIRE(w.methodSwitch);
+  CHECK(w.methodSwitch->a == 0);
+  CHECK(w.methodSwitch->b >= 1);
+  CHECK(w.methodSwitch->time > 0.0);
+  CHECK(w.methodSwitch->time < 1.0);
+  const double steps = w.methodSwitch->time / w.dt;
   CHECK(std::abs(steps - std::round(steps)) < 1e-6);
   // the pile at rest, in place: every box slower than 1 cm/s and within 0.1 m of its rest x
   for (size_t i = 1; i < w.bodies.size(); ++i) {
@@ -288,11 +290,10 @@ TEST_CASE("auto builds a stack: events until impacts pile up, then the stack sol
     CHECK(std::abs(w.bodies[i].omega) < 0.01);
     CHECK(std::abs(w.bodies[i].x.x() - restX[i]) < 0.1);
   }
-  // the records of the attempt that was undone are gone: no impact at or after the switch is
-  // the event method's, and every later one is at a step's end
+  // no impact after the switch is the event method's: every later one is at a step's end
   for (const sim::world::ImpactRecord& r : w.impacts)
-    if (r.t > *w.methodSwitchTime) CHECK(std::abs(r.t / w.dt - std::round(r.t / w.dt)) < 1e-6);
-  for (const sim::world::RestingRecord& r : w.resting) CHECK(r.t <= *w.methodSwitchTime);
+    if (r.t > w.methodSwitch->time) CHECK(std::abs(r.t / w.dt - std::round(r.t / w.dt)) < 1e-6);
+  for (const sim::world::RestingRecord& r : w.resting) CHECK(r.t <= w.methodSwitch->time);
 
   // named explicitly, event keeps to itself and gives up as before
   sim::world::World event = sim::scene::buildWorld(sim::yaml::loadSceneText(droppedPile("event"), "inline.yaml"));

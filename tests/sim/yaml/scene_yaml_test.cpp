@@ -393,6 +393,23 @@ TEST_CASE("an expect time must lie in [0, duration]") {
   CHECK(s.expects[0].loc.line == 6);
 }
 
+TEST_CASE("energy_never_rises: over the whole run unless a time is given, on its own, and only true") {
+  const std::string scene = "duration: 2\n" + kOneBody + "expect:\n";
+  const sim::scene::SceneDef s =
+      load(scene + "  - {energy_never_rises: true, tolerance: 1e-6}\n  - {energy_never_rises: yes, time: 1}\n");
+  REQUIRE(s.expects.size() == 2);
+  CHECK(s.expects[0].energyNeverRises);
+  CHECK(s.expects[0].time == 2.0);
+  CHECK(s.expects[0].tolerance == 1e-6);
+  CHECK(s.expects[1].time == 1.0);
+  EXPECT_SCENE_ERROR(scene + "  - {energy_never_rises: false}\n", 6, 26, {"checks nothing", "remove the entry"});
+  EXPECT_SCENE_ERROR(scene + "  - {energy_never_rises: true, body: a, angle: 0}\n", 6, 38,
+                     {"'body' is checked at one time", "an entry of its own"});
+  EXPECT_SCENE_ERROR(scene + "  - {energy_never_rises: true, time: 3}\n", 6, 38, {"outside the scene's duration"});
+  // any other entry still needs its time
+  EXPECT_SCENE_ERROR(scene + "  - {total_energy: 1}\n", 6, 5, {"time"});
+}
+
 // ---------------------------------------------------------------------------------------------
 // integrators and variants by name
 

@@ -1,0 +1,44 @@
+// `auto`'s watch over the event method: a contact that persists is one the event method does not
+// model (it ends a Zeno series of bounces in frictionless resting contact, and every bounce of a
+// rattling pair costs a time-of-impact search), so the run goes on under the resting-contact solver
+// from the end of the step in which the watch saw it (World::step). Two signs, whichever comes
+// first: the event method turned a contact resting (a body at rest on another, or sliding on it);
+// one pair's slow impacts repeat within a short window (a box rocking on its corners). A pair that
+// stays touching over consecutive steps under the event method does one of the two: it strikes
+// again at each step, or the method made it resting.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace sim::world {
+
+class World;
+
+// what the watch saw, and between which bodies
+enum class Persistence {
+  Rested,    // the event method found the pair too slow to part and made the contact resting
+  Rattling,  // its slow impacts repeated within settings::kRepeatWindow
+};
+
+struct PersistentContact {
+  Persistence how = Persistence::Rested;
+  int a = 0, b = 0;
+};
+
+class ContactWatch {
+ public:
+  // after one step of the event method, which recorded the world's impacts from `impactsBefore`
+  // and its resting contacts from `restingBefore` on: the contact that persists, if any
+  std::optional<PersistentContact> afterStep(const World& world, size_t impactsBefore, size_t restingBefore);
+
+ private:
+  std::optional<PersistentContact> rattling(const World& world, size_t impactsBefore);
+
+  // each pair's recent slow impact instants (within the window)
+  std::map<std::pair<int, int>, std::vector<double>> instants_;
+};
+
+}  // namespace sim::world
