@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "sim/collision/collide.h"
+#include "sim/core/collision_methods.h"
 #include "sim/core/body.h"
 #include "sim/core/enum_names.h"
 
@@ -19,27 +20,11 @@ using sim::collision::Manifold;
 using sim::core::EnumNames;
 using sim::core::Vec2;
 
-// collision response, chosen per scene (`sim: {collisions: ...}`) or on the command line
-enum class CollisionMethod {
-  Auto,        // the least model the scene needs (see chooseCollisionMethod)
-  None,        // bodies pass through each other: free bodies only
-  Event,       // exact: advance to each time of impact, apply the notes' impulse there
-  Isolated,    // the notes' model on fixed steps: one impulse per approaching contact, then push apart
-  Sequential,  // fixed steps, sequential impulses with warm starting, friction, position correction
-  SoftStep,    // fixed steps in substeps, soft contacts with relax passes (Box2D v3)
-};
-
-// names as written in scenes and on the command line
-inline constexpr EnumNames<CollisionMethod, 6> kCollisionMethodNames{{{
-    {CollisionMethod::Auto, "auto"},
-    {CollisionMethod::None, "none"},
-    {CollisionMethod::Event, "event"},
-    {CollisionMethod::Isolated, "isolated"},
-    {CollisionMethod::Sequential, "sequential"},
-    {CollisionMethod::SoftStep, "soft_step"},
-}}};
-inline std::string_view collisionMethodName(CollisionMethod method) { return kCollisionMethodNames.name(method); }
-inline std::optional<CollisionMethod> collisionMethodFromName(std::string_view name) { return kCollisionMethodNames.parse(name); }
+// the collision methods by name (shared with 3D)
+using sim::core::CollisionMethod;
+using sim::core::collisionMethodFromName;
+using sim::core::collisionMethodName;
+using sim::core::kCollisionMethodNames;
 
 // the numbers soft_step solves its contacts in (`sim: {precision: ...}`): double, or float as Box2D
 // v3 does (half the width of a SIMD lane: faster on piles, to float's round-off)

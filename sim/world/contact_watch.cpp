@@ -21,15 +21,8 @@ std::optional<PersistentContact> ContactWatch::afterStep(const World& world, siz
 std::optional<PersistentContact> ContactWatch::rattling(const World& world, size_t impactsBefore) {
   for (size_t k = impactsBefore; k < world.impacts.size(); ++k) {
     const ImpactRecord& r = world.impacts[k];
-    std::vector<double>& times = instants_[{r.a, r.b}];
-    if (-r.vnBefore > settings::kRepeatSpeed) {
-      times.clear();
-      continue;
-    }
-    if (!times.empty() && r.t - times.back() <= settings::kTouchingTolerance * world.sceneSize()) continue;
-    times.push_back(r.t);
-    std::erase_if(times, [&](double t) { return r.t - t > settings::kRepeatWindow; });
-    if (static_cast<int>(times.size()) >= settings::kRepeatedImpacts) return PersistentContact{Persistence::Rattling, r.a, r.b};
+    if (rattle_.impact(r.a, r.b, r.t, r.vnBefore, settings::kTouchingTolerance * world.sceneSize()))
+      return PersistentContact{Persistence::Rattling, r.a, r.b};
   }
   return std::nullopt;
 }

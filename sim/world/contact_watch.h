@@ -8,20 +8,16 @@
 // again at each step, or the method made it resting.
 #pragma once
 
-#include <map>
 #include <optional>
-#include <utility>
-#include <vector>
+
+#include "sim/core/collision_methods.h"
+#include "sim/core/rattle_watch.h"
 
 namespace sim::world {
 
 class World;
 
-// what the watch saw, and between which bodies
-enum class Persistence {
-  Rested,    // the event method found the pair too slow to part and made the contact resting
-  Rattling,  // its slow impacts repeated within settings::kRepeatWindow
-};
+using sim::core::Persistence;
 
 struct PersistentContact {
   Persistence how = Persistence::Rested;
@@ -37,8 +33,7 @@ class ContactWatch {
  private:
   std::optional<PersistentContact> rattling(const World& world, size_t impactsBefore);
 
-  // each pair's recent slow impact instants (within the window)
-  std::map<std::pair<int, int>, std::vector<double>> instants_;
+  sim::core::RattleWatch rattle_;
 };
 
 }  // namespace sim::world

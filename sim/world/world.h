@@ -73,18 +73,9 @@ struct ImpactsPileUp : std::runtime_error {
   double time;
 };
 
-// why the collision method is what it is (`auto` explains its choice, and its switch during the
-// run: StackFormed or ContactPersisted, told by methodSwitch)
-enum class MethodReason { Requested, FewBodies, IsolatedImpacts, PersistentContacts, StackFormed, ContactPersisted };
-
-// when `auto` went from the event method to the resting-contact solver, and what made it
-struct MethodSwitch {
-  double time = 0.0;
-  // the pair whose contact persisted (contact_watch.h), or none (-1) when impacts piled up in one
-  // step across the scene
-  int a = -1, b = -1;
-  Persistence how = Persistence::Rested;
-};
+using sim::core::MethodReason;
+using sim::core::MethodSwitch;
+using sim::core::Persistence;
 
 // The world holds the bodies, the forces, the contacts and the time; the collision method
 // (methods.h) decides how a step answers touching bodies.
