@@ -8,6 +8,8 @@
 
 #include "render/cli/commands.h"
 #include "render/cli/energy_report.h"
+#include "sim/world/energy_ledger.h"
+#include "sim/world3d/energy_ledger3d.h"
 #include "render/cli/lecture_files.h"
 #include "render/cli/run_progress.h"
 #include "render/cli/scene_options.h"
@@ -162,18 +164,20 @@ bool checkCase(const OpenScene& scene, const std::string& variant, const Verbosi
     for (const sim::world::ImpactRecord& r : w.impacts) out << "  impulse " << describeImpact(def, r) << '\n';
   reportResting(def, w, say.verbose, out);
   reportSwitch(def, w, out);
-  out << "  " << describeLedger(def, ledger) << '\n';
+  out << "  " << describeLedger(accountsOf(ledger), namesOf(def)) << '\n';
   reportSleep(w, out);
   reportPrecision(w, out);
   return ok && failure.empty();
 }
 
-// what a 3D scene models: free bodies, their forces and events, the integrator and whether q is
-// normalized after each step
+// what a 3D scene models: its bodies and planes, their forces and events, the integrator and whether
+// q is normalized after each step
 std::string describeModel3d(const sim::scene3d::SceneDef& d) {
   std::ostringstream o;
-  o << plural(d.bodies.size(), "body") << " (3D, free); forces:" << forcesOf(d, d.gravity != sim::world3d::Vec3::Zero()) << "; "
-    << plural(d.events.size(), "impulse event") << "; integrator " << sim::world3d::kIntegratorNames.name(d.integrator)
+  o << plural(d.bodies.size(), "body") << " (3D)";
+  if (!d.planes.empty()) o << ", " << plural(d.planes.size(), "plane");
+  o << "; forces:" << forcesOf(d, d.gravity != sim::world3d::Vec3::Zero()) << "; " << plural(d.events.size(), "impulse event")
+    << "; integrator " << sim::world3d::kIntegratorNames.name(d.integrator)
     << (d.normalize ? " (q normalized after each step)" : " (q left unnormalized)") << ", dt " << formatNumber(d.dt)
     << " s, duration " << formatNumber(d.duration) << " s";
   return o.str();
@@ -187,25 +191,33 @@ bool checkCase3d(const OpenScene& scene, const std::string& variant, const Verbo
   const std::string label = file + (variant.empty() ? "" : " [" + variant + "]");
   std::ostream& out = say.quiet ? nowhere() : std::cout;
   out << label << ": " << describeModel3d(def) << '\n';
-  out << "  contacts: none (3D scenes model free rigid bodies: nothing collides, bodies pass through each other)\n";
-  sim::world3d::World w = sim::scene3d::buildWorld(def);
+  sim::world3d::World w = startWorld3d(def, file);
+  out << "  collisions: " << describeCollisionMethod(def, w) << '\n';
   RunProgress3d progress(label, def.duration, nullptr, !say.quiet);
+  // where the run's energy goes, step by step (and its `energy_never_rises` entries checked on it)
+  sim::world3d::EnergyLedger3d ledger(w, progress.observer());
   std::vector<sim::core::CheckResult> results;
   std::string failure;
   try {
-    results = sim::scene3d::runExpects(def, w, progress.observer());
-    w.advanceTo(def.duration, progress.observer());
+    results = sim::scene3d::runExpects(def, w, &ledger);
+    w.advanceTo(def.duration, &ledger);
   } catch (const sim::world3d::Diverged& d) {
     failure = divergedMessage(file, def, d);
+  } catch (const sim::world3d::ContactPersists& p) {
+    failure = contactPersistsMessage(def, p);
   }
   progress.finish();
   const bool ok = report(results, say.quiet ? label + ":" : "");
   if (failure.empty()) {
-    out << "  ran to t = " << formatNumber(def.duration) << (def.expects.empty() ? " (no expect entries)" : "") << '\n';
+    out << "  ran to t = " << formatNumber(def.duration) << (def.expects.empty() ? " (no expect entries)" : "");
+    if (!w.impacts.empty()) out << ", " << w.impacts.size() << " impulses";
+    out << '\n';
   } else {
     out << "  FAIL  " << failure << '\n';
     std::cerr << failure << '\n';
   }
+  if (w.methodSwitch) out << "  switched: " << describeMethodSwitch(def, w) << '\n';
+  out << "  " << describeLedger(accountsOf(ledger), namesOf(def)) << '\n';
   return ok && failure.empty();
 }
 

@@ -8,6 +8,7 @@
 
 #include "render/cli/commands.h"
 #include "render/cli/energy_report.h"
+#include "sim/world/energy_ledger.h"
 #include "render/cli/output.h"
 #include "render/cli/run_progress.h"
 #include "render/cli/scene_options.h"
@@ -61,7 +62,7 @@ void printJson(const sim::scene::SceneDef& def, const sim::world::World& w, cons
   const sim::core::Vec2 p = sim::world::linearMomentum(w);
   j.key("momentum").beginArray().value(p.x()).value(p.y()).endArray();
   j.field("angular_momentum", sim::world::angularMomentum(w));
-  writeLedger(j, def, ledger);
+  writeLedger(j, accountsOf(ledger), namesOf(def));
   j.field("collision_method", sim::world::collisionMethodName(w.collisions));
   j.field("collision_method_reason", describeCollisionMethod(def, w));
   // only when `auto` switched to the stack solver during the run (the JSON is otherwise unchanged)
@@ -140,7 +141,7 @@ void printText(const sim::scene::SceneDef& def, const sim::world::World& w, cons
   std::cout << std::setprecision(10) << "energy: kinetic " << e.kinetic << ", potential " << e.potential << ", total "
             << e.total() << "\nmomentum: (" << p.x() << ", " << p.y()
             << "), angular momentum about the origin: " << sim::world::angularMomentum(w) << '\n';
-  std::cout << describeLedger(def, ledger) << '\n';
+  std::cout << describeLedger(accountsOf(ledger), namesOf(def)) << '\n';
   std::cout << "collisions: " << describeCollisionMethod(def, w) << "; " << w.impacts.size() << " impulses applied";
   if (verbose)
     for (const sim::world::RestingRecord& r : w.resting) std::cout << "; " << describeResting(def, r);

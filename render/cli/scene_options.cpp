@@ -13,6 +13,7 @@
 #include "sim/core/step_limit.h"
 #include "sim/scene/model_warnings.h"
 #include "sim/scene/scene_build.h"
+#include "sim/world3d/method_models3d.h"
 #include "sim/scene/step_limit.h"
 #include "sim/yaml/scene_yaml.h"
 
@@ -111,14 +112,19 @@ SceneFile3d SceneOptions::load3d() const {
     if (const std::string over = sim::core::stepsOverLimit(def.dt, def.maxSteps, def.duration); !over.empty())
       throw UsageError("--dt: " + over + "; choose a larger step, or raise the scene's 'sim: {max_steps: N}'");
   }
-  if (!collisions.empty())
-    throw UsageError("--collisions: " + scene +
-                     " is a 3D scene, and 3D scenes have no contacts (bodies pass through each other)");
+  if (!collisions.empty()) {
+    const auto method = sim::core::collisionMethodFromName(collisions);
+    if (!method || !(*method == sim::core::CollisionMethod::Auto || sim::world3d::methodModel3d(*method)))
+      throw UsageError("--collisions: " + scene + " is a 3D scene, which takes the collision methods auto, none, event " +
+                       "and sequential; '" + collisions + "' is not one of them");
+    def.collisions = *method;
+    def.collisionsLoc = {};
+  }
   if (substeps || contactHertz || !precision.empty())
     throw UsageError(std::string(substeps       ? "--substeps"
                                  : contactHertz ? "--contact-hertz"
                                                 : "--precision") +
-                     ": " + scene + " is a 3D scene, and 3D scenes have no contacts to solve");
+                     ": " + scene + " is a 3D scene, which has no soft_step");
   return file;
 }
 
@@ -168,40 +174,74 @@ sim::world::World startWorld(const sim::scene::SceneDef& def, const std::string&
   return world;
 }
 
-std::string describeCollisionMethod(const sim::scene::SceneDef& def, const sim::world::World& world) {
-  std::string s(sim::world::collisionMethodName(world.collisions));
-  switch (world.methodReason) {
-    case sim::world::MethodReason::Requested: return s + " (as the scene or the command line asks)";
-    case sim::world::MethodReason::FewBodies: return s + " (auto: no two bodies can meet, so no collision model is needed)";
-    case sim::world::MethodReason::IsolatedImpacts:
-      return s + " (auto: no bodies touch at the start, so impacts are isolated and can be resolved exactly)";
-    case sim::world::MethodReason::PersistentContacts:
-      return s + " (auto: bodies touch at the start under load, so contacts persist and need the iterative solver)";
-    case sim::world::MethodReason::StackFormed:
-    case sim::world::MethodReason::ContactPersisted: return s + " (auto: " + describeMethodSwitch(def, world) + ")";
-  }
-  return s;
-}
+namespace {
 
-std::string describeMethodSwitch(const sim::scene::SceneDef& def, const sim::world::World& world) {
-  if (!world.methodSwitch) return "";
-  const sim::world::MethodSwitch& w = *world.methodSwitch;
+// the method, why, and when `auto` switched, alike in 2D and 3D
+std::string describeMethod(sim::core::CollisionMethod method, sim::core::MethodReason reason,
+                           const std::optional<sim::core::MethodSwitch>& switched, const NameOf& nameOf);
+
+std::string describeSwitch(sim::core::CollisionMethod method, const std::optional<sim::core::MethodSwitch>& switched,
+                           const NameOf& nameOf) {
+  if (!switched) return "";
+  const sim::core::MethodSwitch& w = *switched;
   namespace settings = sim::core::settings;
   // (a time on the step grid, k·dt, to the digits that tell it: 0.576, not 0.5760000000000001)
   char time[32];
   const auto end = std::to_chars(time, time + sizeof time, w.time, std::chars_format::general, 9).ptr;
-  const std::string from = "event until t = " + std::string(time, end) + " s, then " +
-                           std::string(sim::world::collisionMethodName(world.collisions)) + ": ";
+  const std::string from =
+      "event until t = " + std::string(time, end) + " s, then " + std::string(sim::core::collisionMethodName(method)) + ": ";
   if (w.a < 0) return from + "impacts piled up in one step (a stack forming)";
-  const std::string pair = "'" + def.bodies[w.a].name + "' and '" + def.bodies[w.b].name + "'";
+  const std::string pair = "'" + nameOf(w.a) + "' and '" + nameOf(w.b) + "'";
   switch (w.how) {
-    case sim::world::Persistence::Rested: return from + pair + " stayed in contact (too slow to part after an impact)";
-    case sim::world::Persistence::Rattling:
+    case sim::core::Persistence::Rested: return from + pair + " stayed in contact (too slow to part after an impact)";
+    case sim::core::Persistence::Rattling:
       return from + pair + " struck each other " + std::to_string(settings::kRepeatedImpacts) + " times within " +
              render::jobs::formatNumber(settings::kRepeatWindow) + " s, each slower than " +
              render::jobs::formatNumber(settings::kRepeatSpeed) + " m/s";
   }
   return from + pair;
+}
+
+std::string describeMethod(sim::core::CollisionMethod method, sim::core::MethodReason reason,
+                           const std::optional<sim::core::MethodSwitch>& switched, const NameOf& nameOf) {
+  std::string s(sim::core::collisionMethodName(method));
+  switch (reason) {
+    case sim::core::MethodReason::Requested: return s + " (as the scene or the command line asks)";
+    case sim::core::MethodReason::FewBodies: return s + " (auto: no two bodies can meet, so no collision model is needed)";
+    case sim::core::MethodReason::IsolatedImpacts:
+      return s + " (auto: no bodies touch at the start, so impacts are isolated and can be resolved exactly)";
+    case sim::core::MethodReason::PersistentContacts:
+      return s + " (auto: bodies touch at the start under load, so contacts persist and need the iterative solver)";
+    case sim::core::MethodReason::StackFormed:
+    case sim::core::MethodReason::ContactPersisted: return s + " (auto: " + describeSwitch(method, switched, nameOf) + ")";
+  }
+  return s;
+}
+
+}  // namespace
+
+NameOf namesOf(const sim::scene::SceneDef& def) {
+  return [&def](int i) { return def.bodies[i].name; };
+}
+
+NameOf namesOf(const sim::scene3d::SceneDef& def) {
+  return [&def](int i) { return i >= 0 ? def.bodies[i].name : def.planes[-1 - i].name; };
+}
+
+std::string describeCollisionMethod(const sim::scene::SceneDef& def, const sim::world::World& world) {
+  return describeMethod(world.collisions, world.methodReason, world.methodSwitch, namesOf(def));
+}
+
+std::string describeCollisionMethod(const sim::scene3d::SceneDef& def, const sim::world3d::World& world) {
+  return describeMethod(world.collisions, world.methodReason, world.methodSwitch, namesOf(def));
+}
+
+std::string describeMethodSwitch(const sim::scene::SceneDef& def, const sim::world::World& world) {
+  return describeSwitch(world.collisions, world.methodSwitch, namesOf(def));
+}
+
+std::string describeMethodSwitch(const sim::scene3d::SceneDef& def, const sim::world3d::World& world) {
+  return describeSwitch(world.collisions, world.methodSwitch, namesOf(def));
 }
 
 std::string describeResting(const sim::scene::SceneDef& def, const sim::world::RestingRecord& r) {

@@ -6,10 +6,12 @@
 #include <optional>
 #include <string>
 
+#include "render/cli/energy_report.h"
 #include "render/cli/scene_file.h"
 #include "render/video/render_plan.h"
 #include "sim/scene/scene_def.h"
 #include "sim/world/world.h"
+#include "sim/world3d/world.h"
 
 namespace render::cli {
 
@@ -54,9 +56,14 @@ sim::world::World startWorld(const sim::scene::SceneDef& def, const std::string&
 
 // "event: no bodies touch at the start, so impacts are isolated"
 std::string describeCollisionMethod(const sim::scene::SceneDef& def, const sim::world::World& world);
+std::string describeCollisionMethod(const sim::scene3d::SceneDef& def, const sim::world3d::World& world);
 // when `auto` went from event to the resting-contact solver during the run, and why: "event until
 // t = 0.604 s, then sequential: 'floor' and 'box' stayed in contact (...)"; empty when it did not
 std::string describeMethodSwitch(const sim::scene::SceneDef& def, const sim::world::World& world);
+std::string describeMethodSwitch(const sim::scene3d::SceneDef& def, const sim::world3d::World& world);
+// a body's name by its index; in 3D a plane's by −1 − its index (as contacts and impacts name it)
+NameOf namesOf(const sim::scene::SceneDef& def);
+NameOf namesOf(const sim::scene3d::SceneDef& def);
 
 // where the event method turned a pile-up of impacts into resting contact: "'ball' and 'floor' came
 // to rest at t = 2.4 (...)", or, when the pair keeps sliding or turning while it touches, "'bar' and

@@ -17,6 +17,8 @@
 #include "sim/core/step_limit.h"
 #include "sim/scene3d/scene_build.h"
 #include "sim/world3d/diagnostics.h"
+#include "sim/world3d/energy_ledger3d.h"
+#include "sim/yaml/yaml_reader.h"
 
 namespace render::cli {
 using namespace render::jobs;
@@ -26,7 +28,7 @@ namespace {
 
 JsonWriter& vector3(JsonWriter& j, const Vec3& v) { return j.beginArray().value(v.x()).value(v.y()).value(v.z()).endArray(); }
 
-void printJson(const sim::scene3d::SceneDef& def, const World& w) {
+void printJson(const sim::scene3d::SceneDef& def, const World& w, const EnergyLedger3d& ledger) {
   JsonWriter j(std::cout);
   j.beginObject();
   j.field("scene", def.name);
@@ -49,6 +51,37 @@ void printJson(const sim::scene3d::SceneDef& def, const World& w) {
   j.key("energy").beginObject().field("kinetic", e.kinetic).field("potential", e.potential).field("total", e.total()).endObject();
   vector3(j.key("momentum"), linearMomentum(w));
   vector3(j.key("angular_momentum"), angularMomentum(w));
+  writeLedger(j, accountsOf(ledger), namesOf(def));
+  j.field("collision_method", sim::core::collisionMethodName(w.collisions));
+  j.field("collision_method_reason", describeCollisionMethod(def, w));
+  // only when `auto` switched to sequential during the run
+  if (w.methodSwitch)
+    j.field("collision_method_switch_time", w.methodSwitch->time).field("collision_method_switch", describeMethodSwitch(def, w));
+  const NameOf name = namesOf(def);
+  // every impulse the collision response applied; b is the plane for a body–plane collision
+  j.key("collisions").beginArray();
+  for (const ImpactRecord3& r : w.impacts) {
+    j.beginObject().field("t", r.t).field("a", name(r.a)).field("b", name(r.b));
+    vector3(j.key("point"), r.point);
+    vector3(j.key("normal"), r.normal);
+    j.field("impulse", r.impulse);
+    vector3(j.key("tangent_impulse"), r.tangentImpulse);
+    j.field("vn_before", r.vnBefore).field("vn_after", r.vnAfter).endObject();
+  }
+  j.endArray();
+  // the touching pairs at the end time
+  j.key("contacts").beginArray();
+  for (const Contact3& c : w.findContacts(sim::core::settings::kContactMargin)) {
+    j.beginObject().field("a", name(c.a)).field("b", name(c.b));
+    vector3(j.key("normal"), c.normal);
+    j.key("points").beginArray();
+    for (int k = 0; k < c.count; ++k) {
+      vector3(j.beginObject().key("point"), c.points[k].point);
+      j.field("separation", c.points[k].separation).endObject();
+    }
+    j.endArray().endObject();
+  }
+  j.endArray();
   j.endObject();
   std::cout << '\n';
 }
@@ -59,7 +92,7 @@ std::string triple(const Vec3& v) {
   return o.str();
 }
 
-void printText(const sim::scene3d::SceneDef& def, const World& w) {
+void printText(const sim::scene3d::SceneDef& def, const World& w, const EnergyLedger3d& ledger) {
   std::cout << def.name << (def.variant.empty() ? "" : " [" + def.variant + "]") << ": t = " << formatNumber(w.time) << ", "
             << kIntegratorNames.name(w.integrator) << (w.normalizeQuaternions ? "" : " (q unnormalized)")
             << ", dt = " << formatNumber(w.dt) << ", " << w.steps << " steps\n";
@@ -73,8 +106,9 @@ void printText(const sim::scene3d::SceneDef& def, const World& w) {
   const Energy e = energy(w);
   std::cout << std::setprecision(10) << "energy: kinetic " << e.kinetic << ", potential " << e.potential << ", total "
             << e.total() << "\nmomentum: " << triple(linearMomentum(w))
-            << ", angular momentum about the origin: " << triple(angularMomentum(w))
-            << "\ncontacts: none (3D scenes model free bodies)\n";
+            << ", angular momentum about the origin: " << triple(angularMomentum(w)) << '\n';
+  std::cout << describeLedger(accountsOf(ledger), namesOf(def)) << '\n';
+  std::cout << "collisions: " << describeCollisionMethod(def, w) << "; " << w.impacts.size() << " impulses applied\n";
 }
 
 }  // namespace
@@ -85,13 +119,34 @@ std::string divergedMessage(const std::string& file, const sim::scene3d::SceneDe
          ") or another integrator (--integrator splitting)";
 }
 
+std::string contactPersistsMessage(const sim::scene3d::SceneDef& def, const ContactPersists& p) {
+  const NameOf name = namesOf(def);
+  const std::string where = p.a < 0 ? "" : "'" + name(p.a) + "' and '" + name(p.b) + "' ";
+  return where + "at t = " + formatNumber(p.time) + ": " + p.what() +
+         "; the event method resolves isolated impacts only: use 'sim: {collisions: sequential}' or 'auto' (--collisions)";
+}
+
+World startWorld3d(const sim::scene3d::SceneDef& def, const std::string& file) {
+  World world = sim::scene3d::buildWorld(def);
+  try {
+    world.start();
+  } catch (const ContactPersists& p) {
+    const sim::core::SourceLoc at = def.bodies[p.a].loc;
+    throw sim::yaml::SceneError(file, at.line, at.column,
+                                "body '" + def.bodies[p.a].name + "' overlaps '" + namesOf(def)(p.b) +
+                                    "' at t = 0; the event method starts from separated bodies: move them apart, or choose "
+                                    "--collisions sequential");
+  }
+  return world;
+}
+
 int simulate3d(const SceneOptions& o, std::optional<double> until, bool json, const std::string& tracePath) {
   const sim::scene3d::SceneDef def = o.load3d().model();
   const double end = until.value_or(def.duration);
   if (!(end >= 0.0) || !std::isfinite(end)) throw UsageError("--until: the end time must be zero or a positive finite number");
   if (const std::string over = sim::core::stepsOverLimit(def.dt, def.maxSteps, end); !over.empty())
     throw UsageError("--until: " + over + "; choose an earlier end, or raise the scene's 'sim: {max_steps: N}'");
-  World world = sim::scene3d::buildWorld(def);
+  World world = startWorld3d(def, o.scene);
   std::unique_ptr<AtomicFile> traceFile;
   std::unique_ptr<render::video::TraceWriter3d> trace;
   if (!tracePath.empty()) {
@@ -100,11 +155,16 @@ int simulate3d(const SceneOptions& o, std::optional<double> until, bool json, co
     trace = std::make_unique<render::video::TraceWriter3d>(traceStream(traceFile), def);
     trace->rows(world);
   }
+  // where the run's energy goes, step by step
+  std::optional<EnergyLedger3d> ledger;
   try {
     RunProgress3d progress(o.scene, end, trace.get());
-    world.advanceTo(end, progress.observer());
+    world.advanceTo(end, &ledger.emplace(world, progress.observer()));
   } catch (const Diverged& d) {
     std::cerr << divergedMessage(o.scene, def, d) << '\n';
+    return kExitFailure;
+  } catch (const ContactPersists& p) {
+    std::cerr << o.scene << ": " << contactPersistsMessage(def, p) << '\n';
     return kExitFailure;
   }
   // a state that stayed finite can still make energies past a double's range
@@ -115,7 +175,7 @@ int simulate3d(const SceneOptions& o, std::optional<double> until, bool json, co
     return kExitFailure;
   }
   if (traceFile) traceFile->commit();
-  json ? printJson(def, world) : printText(def, world);
+  json ? printJson(def, world, *ledger) : printText(def, world, *ledger);
   return kExitOk;
 }
 

@@ -30,5 +30,11 @@ int stability3d(const SceneOptions& scene, const MethodLists& methods, const std
 
 // "the simulation diverged at t = …: body '…' has a non-finite state; try …", for standard error
 std::string divergedMessage(const std::string& file, const sim::scene3d::SceneDef& def, const sim::world3d::Diverged& d);
+// why a named `event` stopped: "'die' and 'floor' at t = 0.61: a contact too slow to part persists
+// (...); the event method resolves isolated impacts only: use 'collisions: sequential' or 'auto'"
+std::string contactPersistsMessage(const sim::scene3d::SceneDef& def, const sim::world3d::ContactPersists& p);
+// the scene's world, started: `auto` resolved; bodies that overlap where the event method cannot
+// start are a sim::yaml::SceneError at the body's line
+sim::world3d::World startWorld3d(const sim::scene3d::SceneDef& def, const std::string& file);
 
 }  // namespace render::cli

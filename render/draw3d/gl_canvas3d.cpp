@@ -7,6 +7,7 @@
 #include <cmath>
 
 namespace render::draw3d {
+using render::draw::Role;
 
 namespace {
 
@@ -88,7 +89,8 @@ void GlCanvas3d::vertex(const Vec4& c) {
 
 void GlCanvas3d::solid(const Mesh& mesh, const Vec3& x, const Mat3& rotation, const Pen& pen) {
   if (overlaid_) throw std::logic_error("GlCanvas3d: solids are drawn before the overlay");
-  const Color base = style_.body(pen.body);
+  // a plane obstacle in the static bodies' color, as 2D draws its half-planes
+  const Color base = pen.role == Role::StaticBody ? style_.role(Role::StaticBody) : style_.body(pen.body);
   const Color fill = base.mixed(kWhite, kFillLighten);
   std::vector<Vec4> clip(mesh.positions.size());
   std::vector<Color> colors(mesh.positions.size());

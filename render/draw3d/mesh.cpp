@@ -117,6 +117,31 @@ Mesh ellipsoidMesh(const Vec3& semiAxes, int rings, int segments) {
   return m;
 }
 
+Mesh planeMesh(double side, int cells) {
+  Mesh m;
+  m.name = "plane " + std::to_string(side) + " " + std::to_string(cells);
+  const int n = cells + 1;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      m.positions.push_back(
+          Vec3(side * (static_cast<double>(i) / cells - 0.5), side * (static_cast<double>(j) / cells - 0.5), 0.0));
+      m.normals.push_back(Vec3::UnitZ());
+    }
+  const auto at = [n](int i, int j) { return j * n + i; };
+  for (int j = 0; j < cells; ++j)
+    for (int i = 0; i < cells; ++i) {
+      // counter-clockwise seen from +z
+      m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  for (int k = 0; k < n; ++k)
+    for (int l = 0; l < cells; ++l) {
+      m.creases.push_back({at(l, k), at(l + 1, k)});
+      m.creases.push_back({at(k, l), at(k, l + 1)});
+    }
+  return m;
+}
+
 Mesh meshOf(const sim::world3d::Shape& shape) {
   switch (shape.kind) {
     case sim::world3d::ShapeKind::Box: return boxMesh(shape.sides);

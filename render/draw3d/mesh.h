@@ -25,6 +25,9 @@ struct Mesh {
 };
 
 Mesh boxMesh(const Vec3& sides);
+// a square of `side` in the body's xy plane, facing +z (a plane obstacle's visible patch), ruled
+// into `cells` × `cells` squares whose lines are its creases, so that its tilt and depth show
+Mesh planeMesh(double side, int cells);
 // `rings` latitudes from pole to pole, `segments` longitudes: at 24 × 48 the silhouette's facets
 // are under a pixel for an ellipsoid 300 px across
 Mesh ellipsoidMesh(const Vec3& semiAxes, int rings = 24, int segments = 48);

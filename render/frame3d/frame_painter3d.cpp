@@ -65,6 +65,10 @@ FramePainter3d::FramePainter3d(const render::scene3d::Scene& def, const Camera3d
       omegaScale_(arrowScale(def.space.omegaScale, survey.maxOmega, camera)),
       momentumScale_(arrowScale(def.space.angularMomentumScale, survey.maxAngularMomentum, camera)),
       velocityScale_(arrowScale(def.space.velocityScale, survey.maxSpeed, camera)),
+      impulseScale_(arrowScale(0.0, survey.maxImpulse, camera)),
+      // a patch twice as wide as the ball around everything the run covers
+      planeMesh_(planeMesh(std::max(4.0 * survey.bounds.ball().radius, 1.0), 10)),
+      planeCenter_(survey.bounds.ball().center),
       em_(render::scene::fontSizeFor(def.render, camera.heightPx())),
       panel_(def, overlay_, survey) {
   for (const sim::scene3d::BodyDef& b : def.model.bodies) {
@@ -243,13 +247,46 @@ const Mesh& FramePainter3d::meshFor(size_t i, const Body& b) const {
   return found->second;
 }
 
+void FramePainter3d::paintPlanes(const World& world, Canvas3d& canvas) const {
+  for (const Plane& p : world.planes) {
+    // the patch's z axis along the normal, centered below the run's middle
+    const Quat turn = Quat::FromTwoVectors(Vec3::UnitZ(), p.normal);
+    const Vec3 center = planeCenter_ - p.normal.dot(planeCenter_ - p.point) * p.normal;
+    canvas.solid(planeMesh_, center, turn.toRotationMatrix(), {Role::StaticBody, -1, 1.0});
+  }
+}
+
+void FramePainter3d::paintContacts(const World& world, Canvas& draw) const {
+  // the normal arrows a fixed share of the frame long: they show a direction, not an amount
+  const double normalPx = 2.5 * em_;
+  const auto normalArrow = [&](const Vec3& point, const Vec3& normal, double opacity) {
+    const std::optional<Vec2> p = screen(point), q = screen(point + 0.01 * normal);
+    if (!p) return;
+    draw.point(*p, {Role::ContactPoint, -1, opacity});
+    if (q && (*q - *p).norm() > 1e-9) draw.arrow(*p, *p + normalPx * (*q - *p).normalized(), {Role::ContactNormal, -1, opacity});
+  };
+  for (const Contact3& c : world.findContacts(sim::core::settings::kTouchingTolerance * world.sceneSize() + 1e-6))
+    for (int k = 0; k < c.count; ++k) normalArrow(c.points[k].point, c.normal, 1.0);
+  const double hold = def_.render.contactHold;
+  for (const ImpactRecord3& r : world.impacts) {
+    if (!(r.t <= world.time && world.time - r.t <= hold)) continue;
+    const double fade = hold > 0.0 ? 1.0 - (world.time - r.t) / hold : 1.0;
+    normalArrow(r.point, r.normal, fade);
+    // the impulse on A, ending at the point (as 2D draws an event's impulse)
+    const Vec3 j = r.impulse * r.normal + r.tangentImpulse;
+    arrow(r.point - impulseScale_ * j, r.point, {Role::Impulse, r.a, fade}, "", draw);
+  }
+}
+
 void FramePainter3d::paint(const World& world, const History3d& history, Canvas3d& canvas) const {
   const render::scene::RenderDef& r = def_.render;
+  paintPlanes(world, canvas);
   for (size_t i = 0; i < world.bodies.size(); ++i) {
     const Body& b = world.bodies[i];
     canvas.solid(meshFor(i, b), b.x, b.rotation(), {Role::Body, static_cast<int>(i), 1.0});
   }
   Canvas& draw = canvas.overlay();
+  paintContacts(world, draw);
   if (r.trails)
     for (size_t i = 0; i < world.bodies.size(); ++i)
       path(history.trail(i), Vec3::Zero(), {Role::Trail, static_cast<int>(i), 1.0}, draw);

@@ -51,6 +51,11 @@ class FramePainter3d {
   void paintArrows(const sim::world3d::World& world, const History3d& history, Canvas& draw) const;
   void paintText(const sim::world3d::World& world, Canvas& draw) const;
   void paintWorldAxes(Canvas& draw) const;
+  // each plane as a ruled square around where the bodies go, before the bodies
+  void paintPlanes(const sim::world3d::World& world, Canvas3d& canvas) const;
+  // the contacts touching now (a dot and the normal at each point) and, held for contact_hold after
+  // each impact, its point, normal and the impulse on the body (2D's contacts overlay)
+  void paintContacts(const sim::world3d::World& world, Canvas& draw) const;
 
   const render::scene3d::Scene& def_;
   Camera3d camera_;
@@ -62,6 +67,9 @@ class FramePainter3d {
   std::vector<double> radii_;           // by body: the radius of a ball around its shape, m
   mutable std::map<std::pair<std::string, int>, Mesh> meshes_;
   double omegaScale_, momentumScale_, velocityScale_;  // m of arrow per rad/s, kg·m²/s, m/s
+  double impulseScale_;                                // m of arrow per N·s
+  Mesh planeMesh_;                                     // every plane's patch, square around the run
+  Vec3 planeCenter_;                                   // the center of the run's bounds, projected on each plane
   double em_;                                          // text size, px
   EnergyPanel3d panel_;
   std::vector<std::string> captionLines_;

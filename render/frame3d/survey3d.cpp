@@ -66,6 +66,12 @@ RunSurvey3d surveyRun(const render::scene3d::Scene& def, double until) {
   for (const Spring& sp : world.forces.springs)
     if (sp.bodyB == kWorldAnchor) survey.bounds.add(sp.pointB);
   world.advanceTo(until < 0.0 ? def.model.duration : until, &surveyor);
+  // impacts closer than this are one instant (the corners of a face landing flat), as in 2D
+  constexpr double kSameInstant = 1e-9;
+  for (const ImpactRecord3& r : world.impacts) {
+    if (survey.impactTimes.empty() || r.t - survey.impactTimes.back() > kSameInstant) survey.impactTimes.push_back(r.t);
+    survey.maxImpulse = std::max(survey.maxImpulse, (r.impulse * r.normal + r.tangentImpulse).norm());
+  }
   return survey;
 }
 
@@ -80,9 +86,11 @@ void shareScales(const std::vector<RunSurvey3d*>& surveys) {
     all.maxEnergy = std::max(all.maxEnergy, s->maxEnergy);
     all.maxLinearMomentum = std::max(all.maxLinearMomentum, s->maxLinearMomentum);
     all.maxWorldAngularMomentum = std::max(all.maxWorldAngularMomentum, s->maxWorldAngularMomentum);
+    all.maxImpulse = std::max(all.maxImpulse, s->maxImpulse);
   }
   for (RunSurvey3d* s : surveys) {
     all.bounds = s->bounds;
+    all.impactTimes = s->impactTimes;
     *s = all;
   }
 }

@@ -21,7 +21,8 @@ struct RunSurvey3d {
   double minEnergy = 0.0, maxEnergy = 0.0;  // of any bar of the energy panel (≤ 0, ≥ 0), J
   double maxLinearMomentum = 0.0;           // |Σ m v|, kg·m/s
   double maxWorldAngularMomentum = 0.0;     // |L| about the origin, kg·m²/s
-  std::vector<double> impactTimes;          // none: 3D has no contacts (for the video's time map)
+  std::vector<double> impactTimes;          // every distinct instant of an impact (slow motion, --impacts)
+  double maxImpulse = 0.0;                  // |j| of any impact, N·s (the impulse arrows' scale)
 };
 
 // the scene run from 0 to `until` (its duration when negative); throws sim::world3d::Diverged

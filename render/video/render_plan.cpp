@@ -376,7 +376,6 @@ RenderPlan planLecture(const LoadVariant& load, const LectureRequest& r) { retur
 RenderPlan3d planVideos3d(const LoadVariant3d& load, const VideoRequest& r) { return planVideosOf<Spatial>(load, r); }
 
 RenderPlan3d planStills3d(const LoadVariant3d& load, const StillRequest& r) {
-  if (r.impacts) throw UsageError("--impacts: " + r.file + " is a 3D scene, and nothing collides in 3D; give times with --at");
   if (r.strobe.value_or(0) > 0) throw UsageError("--strobe: earlier poses are ghosted in 2D frames only");
   return planStillsOf<Spatial>(load, r);
 }

@@ -16,7 +16,10 @@
 #include <cmath>
 #include <optional>
 #include <utility>
+#include <string>
 #include <vector>
+
+#include "sim/core/check_result.h"
 
 namespace sim::core {
 
@@ -144,5 +147,23 @@ class EnergyLedgerOf : public Observer {
   };
   std::vector<Watched> watched_;
 };
+
+// `energy_never_rises` checked on a ledger of the run up to `time` (`snap`: a time within it is
+// `time`): at the first step the adjusted energy rose above its lowest by more than `tolerance`,
+// with the rise then and where (`nameOf(i)`: a body's or, in 3D, a plane's name), else its largest
+// rise, which passes
+template <class Ledger, class NameOf>
+CheckResult neverRisesResult(const Ledger& ledger, double time, double tolerance, double snap, bool earlierRun, NameOf nameOf) {
+  const std::optional<EnergyRise> first = ledger.firstRiseAbove(tolerance);
+  const bool failed = first && first->time <= time + snap;
+  const EnergyRise r = failed ? *first : ledger.largestRise();
+  std::string quantity = "energy_never_rises";
+  if (failed)
+    quantity += r.a < 0 ? " (rose in free motion: the integrator's)"
+                        : " (rose at the contact of '" + nameOf(r.a) + "' and '" + nameOf(r.b) + "')";
+  CheckResult result = compareValues(failed ? r.time : time, tolerance, quantity, {0.0}, {r.amount});
+  result.earlierRun = earlierRun;
+  return result;
+}
 
 }  // namespace sim::core

@@ -22,20 +22,10 @@ CheckResult compare(const ExpectDef& e, std::string quantity, std::vector<double
 
 std::vector<double> pair(const Vec2& v) { return {v.x(), v.y()}; }
 
-// `energy_never_rises` from the ledger of the run up to the entry's time: the first time the
-// adjusted energy rose above its lowest by more than the tolerance, with the rise then and where;
-// else its largest rise
+// `energy_never_rises` from the ledger of the run up to the entry's time
 CheckResult neverRises(const ExpectDef& e, const SceneDef& def, const EnergyLedger& ledger) {
-  const std::optional<EnergyRise> first = ledger.firstRiseAbove(e.tolerance);
-  const bool failed = first && first->time <= e.time + settings::kTimeSnap * def.dt;
-  const EnergyRise r = failed ? *first : ledger.largestRise();
-  std::string quantity = "energy_never_rises";
-  if (failed)
-    quantity += r.a < 0 ? " (rose in free motion: the integrator's)"
-                        : " (rose at the contact of '" + def.bodies[r.a].name + "' and '" + def.bodies[r.b].name + "')";
-  CheckResult result = compare(e, quantity, {0.0}, {r.amount});
-  if (failed) result.time = r.time;
-  return result;
+  return neverRisesResult(ledger, e.time, e.tolerance, settings::kTimeSnap * def.dt, e.earlierRun,
+                          [&](int i) { return def.bodies[i].name; });
 }
 
 }  // namespace

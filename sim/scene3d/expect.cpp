@@ -1,10 +1,12 @@
 #include "sim/scene3d/expect.h"
 
 #include <algorithm>
+#include <optional>
 #include <cmath>
 #include <limits>
 
 #include "sim/scene3d/scene_build.h"
+#include "sim/world3d/energy_ledger3d.h"
 #include "sim/world3d/diagnostics.h"
 
 namespace sim::scene3d {
@@ -43,6 +45,7 @@ std::vector<CheckResult> evaluate(const ExpectDef& e, const SceneDef& def, const
                                   const std::vector<FreeBodyMeasures>& measures,
                                   const std::unordered_map<std::string, int>* indices) {
   std::vector<CheckResult> out;
+  if (e.energyNeverRises) return out;  // a whole run's: runExpects checks it
   auto compare = [&](std::string quantity, std::vector<double> expected, std::vector<double> actual) {
     out.push_back(sim::core::compareValues(e.time, e.tolerance, std::move(quantity), std::move(expected), std::move(actual)));
     out.back().earlierRun = e.earlierRun;
@@ -98,13 +101,28 @@ std::vector<CheckResult> runExpects(const SceneDef& def, World& world, StepObser
   std::vector<const ExpectDef*> order;
   for (const ExpectDef& e : def.expects) order.push_back(&e);
   std::stable_sort(order.begin(), order.end(), [](auto* a, auto* b) { return a->time < b->time; });
+  // the energy ledger sees every step when an entry asks that the energy never rise: the caller's
+  // when it passed its own as the observer, else one of this run's
+  std::optional<EnergyLedger3d> own;
+  EnergyLedger3d* ledger = dynamic_cast<EnergyLedger3d*>(observer);
+  for (const ExpectDef* e : order) {
+    if (!e->energyNeverRises) continue;
+    if (!ledger) observer = ledger = &own.emplace(world, observer);
+    ledger->watch(e->tolerance);
+  }
   // the run's measures cost a rotation and a few angles per body and step: only when asked for
   const bool measuring = std::any_of(order.begin(), order.end(), [](auto* e) { return measuresRun(*e); });
   Measuring measures(world, observer);
   std::vector<CheckResult> out;
   const std::unordered_map<std::string, int> indices = def.bodyIndices();
+  // a plane is −1 − its index, as in a contact
+  const auto nameOf = [&](int i) { return i >= 0 ? def.bodies[i].name : def.planes[-1 - i].name; };
   for (const ExpectDef* e : order) {
     world.advanceTo(e->time, measuring ? &measures : observer);
+    if (e->energyNeverRises) {
+      out.push_back(sim::core::neverRisesResult(*ledger, e->time, e->tolerance, 0.0, e->earlierRun, nameOf));
+      continue;
+    }
     for (CheckResult& r : evaluate(*e, def, world, measures.bodies, &indices)) out.push_back(std::move(r));
   }
   return out;

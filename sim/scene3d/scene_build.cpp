@@ -33,6 +33,9 @@ Body buildBody(const BodyDef& def) {
   b.q = def.orientation;
   b.v = def.velocity;
   b.omega = def.angularVelocity;
+  if (def.restitution) b.restitution = *def.restitution;
+  if (def.friction) b.friction = *def.friction;
+  b.frictionNamed = def.friction.has_value();
   return b;
 }
 
@@ -41,7 +44,22 @@ World buildWorld(const SceneDef& s) {
   const std::unordered_map<std::string, int> indices = s.bodyIndices();
   const auto index = [&](const std::string& name) { return indices.at(name); };
   World w;
-  for (const BodyDef& b : s.bodies) w.bodies.push_back(buildBody(b));
+  // a body's or plane's own coefficients, else the world's (2D's rule for friction: contact.h)
+  for (const BodyDef& def : s.bodies) {
+    Body b = buildBody(def);
+    b.restitution = def.restitution.value_or(s.restitution);
+    b.friction = def.friction.value_or(s.friction.value_or(sim::core::settings::kDefaultFriction));
+    b.frictionNamed = def.friction.has_value() || s.friction.has_value();
+    w.bodies.push_back(b);
+  }
+  for (const PlaneDef& p : s.planes) {
+    const bool named = p.friction.has_value() || s.friction.has_value();
+    w.planes.push_back({p.point, p.normal, p.restitution.value_or(s.restitution),
+                        p.friction.value_or(s.friction.value_or(sim::core::settings::kDefaultFriction)), named});
+  }
+  w.collisions = s.collisions;
+  w.velocityIterations = s.velocityIterations;
+  w.positionIterations = s.positionIterations;
   w.integrator = s.integrator;
   w.dt = s.dt;
   w.normalizeQuaternions = s.normalize;

@@ -1,6 +1,6 @@
 // A 3D scene's model (`dimensions: 3`) as plain definitions, free of any file format and of any
 // picture: what the 3D reader produces and buildWorld consumes, as sim/scene's SceneDef is for 2D.
-// No contacts in 3D: there are no static bodies, planes, restitution or collision methods.
+// Contacts in 3D are with static planes and between spheres (sim/world3d/methods3d.h).
 #pragma once
 
 #include <optional>
@@ -8,6 +8,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "sim/core/collision_methods.h"
 #include "sim/core/force_defs.h"
 #include "sim/core/settings.h"
 #include "sim/world3d/integrators.h"
@@ -32,8 +33,19 @@ struct BodyDef {
   Quat orientation = Quat::Identity();  // body to world, unit
   Vec3 velocity = Vec3::Zero();         // world
   Vec3 angularVelocity = Vec3::Zero();  // world
+  std::optional<double> restitution;    // c_r; the world's when absent
+  std::optional<double> friction;       // μ; the world's when absent (2D's rule: sim/scene/scene_def.h)
   SourceLoc loc;
   SourceLoc massLoc;  // where the mass properties are written (the body when they are not)
+};
+
+// a static half-space, written in `bodies:` as {plane: {point, normal}}: solid behind its normal
+struct PlaneDef {
+  std::string name;
+  Vec3 point = Vec3::Zero();
+  Vec3 normal = Vec3::UnitZ();  // unit, as read
+  std::optional<double> restitution, friction;
+  SourceLoc loc;
 };
 
 using PointForceDef = sim::core::PointForceDefOf<Vec3>;
@@ -53,6 +65,9 @@ struct ExpectDef {
   // about its center, or the world's about the origin without a body)
   std::optional<double> kineticEnergy, potentialEnergy, totalEnergy;
   std::optional<Vec3> momentum, angularMomentum;
+  // the energy, less the work of applied forces and events, never rises above its lowest so far by
+  // more than the tolerance, at any step up to `time` (2D's: sim/scene/scene_def.h)
+  bool energyNeverRises = false;
   // the free body's closed forms (closed_forms.h): the angle between ω and L at `time`, and what the
   // run from t = 0 to `time` measures (measures.h): the rates at which ω turns about the symmetry
   // axis in the body and the symmetry axis about L in space, and the period of ω's middle-axis part
@@ -71,16 +86,22 @@ struct SceneDef {
   Vec3 gravity = Vec3::Zero();
   Integrator integrator = Integrator::Splitting;
   double dt = sim::core::settings::kDefaultDt;
-  double maxSteps = sim::core::settings::kDefaultMaxSteps;  // the most steps a run may take (sim: max_steps)
-  bool normalize = true;                                    // q ← q/|q| after every step (World::normalizeQuaternions)
+  double maxSteps = sim::core::settings::kDefaultMaxSteps;        // the most steps a run may take (sim: max_steps)
+  bool normalize = true;                                          // q ← q/|q| after every step (World::normalizeQuaternions)
+  double restitution = sim::core::settings::kDefaultRestitution;  // of every body and plane that names none
+  std::optional<double> friction;                                 // unset: only what a body names
+  sim::core::CollisionMethod collisions = sim::core::CollisionMethod::Auto;
+  SourceLoc collisionsLoc;
+  int velocityIterations = sim::core::settings::kVelocityIterations;  // sequential
+  int positionIterations = sim::core::settings::kPositionIterations;
   std::vector<BodyDef> bodies;
+  std::vector<PlaneDef> planes;
   std::vector<PointForceDef> pointForces;
   std::vector<SpringDef> springs;
   std::vector<DragDef> drags;
   std::vector<EventDef> events;
   std::vector<ExpectDef> expects;
 
-  // index of the body with this name, or -1
   // index of the body with this name, or -1 (a scan: for one lookup)
   int bodyIndex(const std::string& name) const;
   // every body's index by its name: for lookups of many entries, in one pass

@@ -24,6 +24,9 @@ struct BodyState {
 struct Body : BodyState {
   Shape shape;  // in body coordinates, centered on the center of mass
   double mass = 1.0, invMass = 1.0;
+  double restitution = 0.5;                // c_r, combined per pair as in 2D (contact3d.h)
+  double friction = 0.0;                   // Coulomb μ
+  bool frictionNamed = true;               // μ named by the body or the world's default (2D's rule: contact.h)
   Mat3 inertiaBody = Mat3::Identity();     // I_b about the center, body axes (a full tensor)
   Mat3 invInertiaBody = Mat3::Identity();  // I_b⁻¹
   // I_b's eigenvalues, ascending, and its unit eigenvectors as columns, in body coordinates: found

@@ -80,6 +80,34 @@ std::vector<double> ForceSet::breakpoints() const {
   return t;
 }
 
+double ForceSet::pointForceWork(double window, const std::vector<BodyState>& from, const std::vector<BodyState>& to) const {
+  double work = 0.0;
+  for (const PointForce& f : pointForces) {
+    if (window < f.from || window >= f.until) continue;
+    const Vec3 moved = to[f.body].toWorld(f.point) - from[f.body].toWorld(f.point);
+    // a force turning with its body: the mean of its two directions (second order in the step)
+    const Vec3 force = f.bodyFrame ? Vec3(0.5 * (from[f.body].rotation() + to[f.body].rotation()) * f.force) : f.force;
+    work += force.dot(moved);
+  }
+  return work;
+}
+
+sim::core::ForcePower ForceSet::power(double, const std::vector<BodyState>& at) const {
+  sim::core::ForcePower p;
+  // a spring's damping force c ṡ along it, on both ends: power −c ṡ²
+  for (const Spring& sp : springs) {
+    if (sp.damping == 0.0) continue;
+    const SpringEnds e = ends(sp, at);
+    const double length = (e.b - e.a).norm();
+    if (length == 0.0) continue;
+    const Vec3 vb = sp.bodyB == kWorldAnchor ? Vec3::Zero() : at[sp.bodyB].pointVelocity(e.b);
+    const double stretchRate = ((e.b - e.a) / length).dot(vb - at[sp.bodyA].pointVelocity(e.a));
+    p.damping -= sp.damping * stretchRate * stretchRate;
+  }
+  for (const Drag& d : drags) p.damping -= d.linear * at[d.body].v.squaredNorm() + d.angular * at[d.body].omega.squaredNorm();
+  return p;
+}
+
 bool ForceSet::dependsOnVelocity() const {
   for (const Spring& sp : springs)
     if (sp.damping != 0.0) return true;

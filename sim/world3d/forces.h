@@ -67,6 +67,13 @@ struct ForceSet {
   // whether some force depends on the velocities (drag, spring damping): the splitting then
   // takes two force evaluations per kick instead of one
   bool dependsOnVelocity() const;
+
+  // for the energy ledger (sim/core/energy_ledger_of.h), as the 2D ForceSet's: some force does work
+  // that no potential counts; the point forces' work over a step (f · Δr of their points); the
+  // damping's power (≤ 0) at `at`
+  bool hasWorkingForces() const { return !pointForces.empty() || dependsOnVelocity(); }
+  double pointForceWork(double window, const std::vector<BodyState>& from, const std::vector<BodyState>& to) const;
+  sim::core::ForcePower power(double window, const std::vector<BodyState>& at) const;
 };
 
 }  // namespace sim::world3d

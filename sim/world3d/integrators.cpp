@@ -79,6 +79,17 @@ void normalizeRotations(States& y) {
   for (BodyState& s : y) s.q.normalize();
 }
 
+double constantAccelerationWeight(Integrator method) {
+  switch (method) {
+    case Integrator::ExplicitEuler: return 0.0;
+    case Integrator::SymplecticEuler: return 1.0;
+    case Integrator::Midpoint:
+    case Integrator::Rk4:
+    case Integrator::Splitting: return 0.5;
+  }
+  return 1.0;
+}
+
 int integratorOrder(Integrator method) {
   switch (method) {
     case Integrator::ExplicitEuler:

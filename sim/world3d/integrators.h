@@ -24,6 +24,11 @@ void rk4Step(const Dynamics& f, double h, States& y);       // order 4
 void splittingStep(const Dynamics& f, double h, States& y);
 void integrate(Integrator method, const Dynamics& f, double h, States& y);
 
+// how far one step moves a body under a constant acceleration a, beyond x + h v, in units of h² a
+// (2D's constantAccelerationWeight): symplectic Euler 1, the midpoint rule, RK4 and the splitting
+// (kick, drift, kick) ½, explicit Euler 0
+double constantAccelerationWeight(Integrator method);
+
 // q ← q / |q| for every body: the projection back onto unit quaternions after a step
 void normalizeRotations(States& y);
 

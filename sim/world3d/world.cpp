@@ -2,14 +2,22 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
+#include "sim/world3d/collide3d.h"
+#include "sim/world3d/method_models3d.h"
+
 namespace sim::world3d {
+namespace core = sim::core;
 
 Diverged::Diverged(double t, int b)
     : std::runtime_error("body " + std::to_string(b) + "'s state is no longer finite at t = " + std::to_string(t)),
       time(t),
       body(b) {}
+
+ContactPersists::ContactPersists(double t, int a_, int b_, const std::string& why)
+    : std::runtime_error(why), time(t), a(a_), b(b_) {}
 
 void World::start() {
   if (started_) return;
@@ -19,8 +27,71 @@ void World::start() {
                    [](const ImpulseEvent& a, const ImpulseEvent& b) { return a.time < b.time; });
   std::vector<double> instants = forces.breakpoints();
   for (const ImpulseEvent& e : pending_) instants.push_back(e.time);
-  grid_ = sim::core::StepGrid(dt, std::move(instants));
+  grid_ = core::StepGrid(dt, std::move(instants));
+  // the scale of the event method's tolerances: the bodies' extent at the start
+  double extent = 0.0;
+  for (const Body& b : bodies) extent = std::max(extent, 2.0 * boundingRadius(b.shape));
+  sceneSize_ = std::max(extent, core::settings::kMinSceneSize);
+  if (collisions == CollisionMethod::Auto) chooseMethod();
+  method_ = OwnedMethod3(makeMethod3(collisions));
+  method_->start(*this);
   started_ = true;
+}
+
+bool World::bodiesCanMeet() const {
+  int spheres = 0;
+  for (const Body& b : bodies) spheres += b.shape.kind == ShapeKind::Sphere;
+  return (!planes.empty() && !bodies.empty()) || spheres >= 2;
+}
+
+// `auto`: the least model the scene needs at the start (method_models3d.h), then watched
+void World::chooseMethod() {
+  unsigned needs = 0;
+  if (bodiesCanMeet()) needs |= core::bit(core::Phenomenon::IsolatedImpacts);
+  // bodies that touch at the start under a load rest: their contacts persist
+  const bool loaded = forces.gravity != Vec3::Zero() || !forces.pointForces.empty() || !forces.springs.empty();
+  if (needs && loaded && !findContacts(core::settings::kContactMargin).empty())
+    needs |= core::bit(core::Phenomenon::RestingContact);
+  collisions = leastMethodFor3(needs);
+  if (!needs) methodReason = MethodReason::FewBodies;
+  else if (core::has(needs, core::Phenomenon::RestingContact)) methodReason = MethodReason::PersistentContacts;
+  else methodReason = MethodReason::IsolatedImpacts;
+  watching_ = collisions == CollisionMethod::Event;
+}
+
+void World::setStates(const States& y) {
+  for (size_t i = 0; i < bodies.size(); ++i) bodies[i].setState(y[i]);
+}
+
+std::vector<Contact3> World::findContacts(double margin, const States* y) const {
+  const auto at = [&](size_t i) -> const BodyState& { return y ? (*y)[i] : bodies[i]; };
+  std::vector<Contact3> found;
+  for (size_t i = 0; i < bodies.size(); ++i) {
+    const Body& body = bodies[i];
+    for (size_t p = 0; p < planes.size(); ++p) {
+      Contact3 c;
+      c.count = planeContact(body.shape, at(i), planes[p], margin, c.points);
+      if (c.count == 0) continue;
+      c.a = static_cast<int>(i), c.b = -1 - static_cast<int>(p);
+      c.normal = planes[p].normal;
+      c.restitution = combinedRestitution(body.restitution, planes[p].restitution);
+      c.friction = combinedFriction(body.friction, body.frictionNamed, planes[p].friction, planes[p].frictionNamed);
+      found.push_back(c);
+    }
+    if (body.shape.kind != ShapeKind::Sphere) continue;
+    // (spheres alone meet other bodies: the scene reader refuses other pairs that could)
+    for (size_t j = i + 1; j < bodies.size(); ++j) {
+      const Body& other = bodies[j];
+      if (other.shape.kind != ShapeKind::Sphere) continue;
+      Contact3 c;
+      if (!sphereContact(at(i), body.shape.radius, at(j), other.shape.radius, margin, c.points[0], c.normal)) continue;
+      c.a = static_cast<int>(i), c.b = static_cast<int>(j), c.count = 1;
+      c.restitution = combinedRestitution(body.restitution, other.restitution);
+      c.friction = combinedFriction(body.friction, body.frictionNamed, other.friction, other.frictionNamed);
+      found.push_back(c);
+    }
+  }
+  return found;
 }
 
 void World::advanceTo(double tEnd, StepObserver* observer) {
@@ -42,25 +113,50 @@ void World::advanceWithin(double t, double tEnd, StepObserver* observer) {
 
 // one step from now to `stop` on the way to tEnd, the events due there applied
 void World::stepTo(double stop, double tEnd, StepObserver* observer) {
-  step(stop - time);
-  time = grid_.arrive(stop, tEnd);
+  const double end = grid_.arrive(stop, tEnd);
+  step(time, stop - time, end);
+  time = end;
   // stop at the first non-finite state rather than carry NaN forward
   checkFinite();
   if (observer) observer->afterStep(*this);
   applyDueEvents(observer);
 }
 
-// one step of size h: the integrator on every body's state, then (by default) back onto unit
-// quaternions
-void World::step(double h) {
-  scratch_.assign(bodies.begin(), bodies.end());
-  // the timed forces that are on somewhere inside the step are on for all of it (it is split at
-  // every switch)
-  const Dynamics dynamics{bodies, forces, time + 0.5 * h};
-  integrate(integrator, dynamics, h, scratch_);
-  if (normalizeQuaternions) normalizeRotations(scratch_);
-  for (size_t i = 0; i < bodies.size(); ++i) bodies[i].setState(scratch_[i]);
+// one step by the collision method. Under `auto`, a contact the event method cannot carry on
+// (ContactPersists) makes sequential redo the step from where it began, and slow impacts repeated
+// at one pair (the rattle watch) hand the run to it from the step's end
+void World::step(double start, double h, double end) {
+  if (!watching_) {
+    method_->step(*this, start, h);
+  } else {
+    const States from = states();
+    const size_t impactsBefore = impacts.size();
+    try {
+      method_->step(*this, start, h);
+      for (size_t k = impactsBefore; k < impacts.size(); ++k) {
+        const ImpactRecord3& r = impacts[k];
+        if (!rattle_.impact(r.a, r.b, r.t, r.vnBefore, core::settings::kTouchingTolerance * sceneSize_)) continue;
+        switchToSequential({end, r.a, r.b, core::Persistence::Rattling});
+        break;
+      }
+    } catch (const ContactPersists& p) {
+      setStates(from);
+      impacts.resize(impactsBefore);
+      switchToSequential({start, p.a, p.b, core::Persistence::Rested});
+      method_->step(*this, start, h);
+    }
+  }
   ++steps;
+}
+
+void World::switchToSequential(const MethodSwitch& why) {
+  collisions = CollisionMethod::Sequential;
+  methodReason = MethodReason::ContactPersisted;
+  methodSwitch = why;
+  watching_ = false;
+  contacts.clear();
+  method_ = OwnedMethod3(makeMethod3(collisions));
+  method_->start(*this);
 }
 
 void World::applyDueEvents(StepObserver* observer) {
@@ -79,5 +175,32 @@ void World::checkFinite() const {
     if (!isFinite(b.x) || !isFinite(b.q) || !isFinite(b.v) || !isFinite(b.omega)) throw Diverged(time, static_cast<int>(i));
   }
 }
+
+// --- free motion: the `none` method, and the first stage of the others ---
+
+namespace {
+
+class FreeMotion3 final : public Method3 {
+ public:
+  std::unique_ptr<Method3> clone() const override { return std::make_unique<FreeMotion3>(*this); }
+  void step(World& world, double start, double h) override { moveFreely(world, start, h); }
+};
+
+}  // namespace
+
+std::unique_ptr<Method3> makeFreeMotion3() { return std::make_unique<FreeMotion3>(); }
+
+States motion(const World& world, const States& from, double start, double h, double tau) {
+  States y = from;
+  if (tau <= 0.0) return y;
+  // the timed forces that are on somewhere inside the step are on for all of it (it is split at
+  // every switch)
+  const Dynamics dynamics{world.bodies, world.forces, start + 0.5 * h};
+  integrate(world.integrator, dynamics, tau, y);
+  if (world.normalizeQuaternions) normalizeRotations(y);
+  return y;
+}
+
+void moveFreely(World& world, double start, double h) { world.setStates(motion(world, world.states(), start, h, h)); }
 
 }  // namespace sim::world3d

@@ -1,16 +1,26 @@
-// The 3D world: free rigid bodies (no contacts), forces and timed impulses, advanced by one
-// integrator on a fixed step grid split exactly at every event and force switch, as the 2D world
-// (notes: "Dynamics of a free body", "Impulses"; the 3D half of "Representing rigid body state").
+// The 3D world: rigid bodies, static planes, forces and timed impulses, advanced by one integrator
+// on a fixed step grid split exactly at every event and force switch, as the 2D world (notes:
+// "Dynamics of a free body", "Impulses", "Collisions"; the 3D half of "Representing rigid body
+// state"). The collision method (methods3d.h) decides how a step answers touching bodies.
 #pragma once
 
+#include <memory>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
+#include "sim/core/collision_methods.h"
+#include "sim/core/rattle_watch.h"
 #include "sim/core/settings.h"
-#include "sim/world3d/integrators.h"
 #include "sim/core/step_grid.h"
+#include "sim/world3d/contact3d.h"
+#include "sim/world3d/integrators.h"
+#include "sim/world3d/methods3d.h"
 
 namespace sim::world3d {
+using sim::core::CollisionMethod;
+using sim::core::MethodReason;
+using sim::core::MethodSwitch;
 
 // an impulse j applied at exactly `time`: Δv = j/m, Δω = I⁻¹ (r′ × j) with I = R I_b Rᵀ
 struct ImpulseEvent {
@@ -38,9 +48,29 @@ struct Diverged : std::runtime_error {
   int body;
 };
 
+// a method owned by value: a copy of the world has a copy of its method's state
+class OwnedMethod3 {
+ public:
+  OwnedMethod3() = default;
+  explicit OwnedMethod3(std::unique_ptr<Method3> m) : method_(std::move(m)) {}
+  OwnedMethod3(const OwnedMethod3& o) : method_(o.method_ ? o.method_->clone() : nullptr) {}
+  OwnedMethod3& operator=(const OwnedMethod3& o) {
+    method_ = o.method_ ? o.method_->clone() : nullptr;
+    return *this;
+  }
+  OwnedMethod3(OwnedMethod3&&) = default;
+  OwnedMethod3& operator=(OwnedMethod3&&) = default;
+  Method3* operator->() const { return method_.get(); }
+  explicit operator bool() const { return method_ != nullptr; }
+
+ private:
+  std::unique_ptr<Method3> method_;
+};
+
 class World {
  public:
   std::vector<Body> bodies;
+  std::vector<Plane> planes;  // static half-spaces: floors and walls
   ForceSet forces;
   std::vector<ImpulseEvent> events;  // any order; applied in time order
   // the splitting by default: the 3D method that keeps |q| = 1 and a free body's L (sim/README.md)
@@ -48,10 +78,19 @@ class World {
   // q ← q/|q| after every step; off, a four-vector method's |q| drifts as its closed form says
   bool normalizeQuaternions = true;
   double dt = sim::core::settings::kDefaultDt;
+  CollisionMethod collisions = CollisionMethod::Auto;  // resolved when the run starts
+  MethodReason methodReason = MethodReason::Requested;
+  std::optional<MethodSwitch> methodSwitch;                           // when and why `auto` went from event to sequential
+  int velocityIterations = sim::core::settings::kVelocityIterations;  // sequential
+  int positionIterations = sim::core::settings::kPositionIterations;
 
   double time = 0.0;
   long steps = 0;
+  std::vector<Contact3> contacts;      // the touching pairs of the last step (sequential)
+  std::vector<ImpactRecord3> impacts;  // every impulse the collision response applied
 
+  // resolve `auto` and check dt; called by advanceTo, callable earlier to ask
+  void start();
   // advance to exactly tEnd (events at tEnd included); throws Diverged, and std::invalid_argument
   // for dt ≤ 0. The events, the force switches and dt are read when the first call starts the run.
   void advanceTo(double tEnd, StepObserver* observer = nullptr);
@@ -59,10 +98,22 @@ class World {
   // at t: a picture at t between two of them is drawn from a copy advanced to t (scene_run3d.h)
   void advanceWithin(double t, double tEnd, StepObserver* observer = nullptr);
 
+  // every body's state, and the bodies moved to y
+  States states() const { return States(bodies.begin(), bodies.end()); }
+  void setStates(const States& y);
+  // the contacts of every body with every plane and of every two spheres closer than `margin` (at
+  // the states y, the bodies' own when none), by pair; restitution and friction combined
+  std::vector<Contact3> findContacts(double margin, const States* y = nullptr) const;
+  // the largest extent of the bodies at the start: the scale of the event method's tolerances
+  double sceneSize() const { return sceneSize_; }
+  // some contact can happen: a body and a plane, or two spheres
+  bool bodiesCanMeet() const;
+
  private:
-  void start();
+  void chooseMethod();
   void stepTo(double stop, double tEnd, StepObserver* observer);
-  void step(double h);
+  void step(double start, double h, double end);
+  void switchToSequential(const MethodSwitch& why);
   void applyDueEvents(StepObserver* observer);
   void checkFinite() const;
 
@@ -70,7 +121,10 @@ class World {
   sim::core::StepGrid grid_;
   std::vector<ImpulseEvent> pending_;  // sorted by time
   size_t nextEvent_ = 0;
-  States scratch_;
+  double sceneSize_ = 1.0;
+  OwnedMethod3 method_;    // the unit of `collisions`, made by start()
+  bool watching_ = false;  // `auto` chose event: a contact that persists switches to sequential
+  sim::core::RattleWatch rattle_;
 };
 
 }  // namespace sim::world3d

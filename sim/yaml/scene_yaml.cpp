@@ -8,6 +8,7 @@
 #include "sim/core/step_limit.h"
 #include "sim/scene/scene_build.h"
 #include "sim/scene/step_limit.h"
+#include "sim/yaml/expect_time.h"
 #include "sim/yaml/force_reader.h"
 #include "sim/yaml/path_name.h"
 #include "sim/yaml/size_limits.h"
@@ -211,23 +212,9 @@ class SceneReader : public Reader {
               "an expect entry");
     ExpectDef e;
     e.loc = {n.Mark().line + 1, n.Mark().column + 1};
-    // the energy ledger's check holds at every step of the run (up to `time`, the duration unless given)
-    if (const YAML::Node rises = n["energy_never_rises"]) {
-      if (!boolean(rises, "energy_never_rises"))
-        fail(rises, "'energy_never_rises: false' checks nothing; remove the entry, or write 'energy_never_rises: true'");
-      for (const char* key : {"body", "position", "angle", "velocity", "angular_velocity", "kinetic_energy", "potential_energy",
-                              "total_energy", "momentum", "angular_momentum"})
-        if (n[key])
-          fail(n[key], std::string("'") + key +
-                           "' is checked at one time, and 'energy_never_rises' at every step: give each an entry of its own");
-      e.energyNeverRises = true;
-      e.time = s.duration;
-    }
-    if (!e.energyNeverRises || n["time"]) {
-      const YAML::Node t = required(n, "time", "an expect entry");
-      e.time = finite(t, "time");
-      checkTime(t, e.time, s.duration, "expect");
-    }
+    const sim::yaml::ExpectTime when = sim::yaml::readExpectTime(*this, n, s.duration);
+    e.time = when.time;
+    e.energyNeverRises = when.energyNeverRises;
     if (n["body"]) e.body = bodyRef(n, "body", s, "an expect entry");
     for (const char* key : {"position", "angle", "velocity", "angular_velocity"})
       if (n[key] && e.body.empty()) fail(n[key], std::string("'") + key + "' is a body's: add 'body:'");

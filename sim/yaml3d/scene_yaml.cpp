@@ -7,9 +7,11 @@
 
 #include "sim/core/step_limit.h"
 #include "sim/scene3d/scene_build.h"
+#include "sim/yaml/expect_time.h"
 #include "sim/yaml/force_reader.h"
 #include "sim/yaml/path_name.h"
 #include "sim/yaml/size_limits.h"
+#include "sim/world3d/method_models3d.h"
 #include "sim/yaml3d/reader3d.h"
 
 namespace sim::yaml3d {
@@ -22,23 +24,20 @@ using sim::yaml::with;
 namespace {
 
 // keys of a 2D scene that 3D has no use for, and why: said instead of "unknown key"
-const char* const kNoContacts = "3D scenes have no contacts (bodies pass through each other), so no '";
 using Refusals = std::vector<std::pair<const char*, std::string>>;
-const Refusals kWorldRefusals = {{"restitution", std::string(kNoContacts) + "restitution'"},
-                                 {"friction", std::string(kNoContacts) + "friction'"}};
-const Refusals kSimRefusals = {{"collisions", std::string(kNoContacts) + "collisions'"},
-                               {"iterations", std::string(kNoContacts) + "iterations' of a contact solver"},
-                               {"position_iterations", std::string(kNoContacts) + "position_iterations' of a contact solver"},
-                               {"max_vertices", "3D shapes have no vertices to bound ('max_vertices' bounds a 2D polygon's)"}};
+const Refusals kWorldRefusals = {};
+const Refusals kSimRefusals = {{"max_vertices", "3D shapes have no vertices to bound ('max_vertices' bounds a 2D polygon's)"},
+                               {"substeps", "3D has no soft_step, so no 'substeps'"},
+                               {"contact_hertz", "3D has no soft_step, so no 'contact_hertz'"},
+                               {"precision", "3D has no soft_step, so no 'precision'"},
+                               {"sleep", "3D piles do not sleep: 'sleep' is 2D's"},
+                               {"threads", "3D's solver runs on one thread: 'threads' is 2D's"}};
 const Refusals kBodyRefusals = {
     {"angle", "a 3D body turns by 'orientation': a unit quaternion [w, x, y, z] or {axis: [x, y, z], angle: θ}"},
-    {"static", std::string(kNoContacts) + "static' bodies: a body that must not move is no part of a free-body scene"},
-    {"restitution", std::string(kNoContacts) + "restitution'"},
-    {"friction", std::string(kNoContacts) + "friction'"}};
+    {"static", "3D has no static bodies: an obstacle is a plane, {plane: {point: [x, y, z], normal: [nx, ny, nz]}}"}};
 const Refusals kShapeRefusals = {
     {"circle", "'circle' is a 2D shape; in 3D a shape is {box: [a, b, c]}, {sphere: r} or {ellipsoid: [a, b, c]}"},
-    {"polygon", "'polygon' is a 2D shape; in 3D a shape is {box: [a, b, c]}, {sphere: r} or {ellipsoid: [a, b, c]}"},
-    {"plane", std::string(kNoContacts) + "plane' obstacles"}};
+    {"polygon", "'polygon' is a 2D shape; in 3D a shape is {box: [a, b, c]}, {sphere: r} or {ellipsoid: [a, b, c]}"}};
 const Refusals kExpectRefusals = {{"angle", "a 3D body's rotation is checked by 'orientation': [w, x, y, z]"}};
 
 class SceneReader3d : public Reader3d {
@@ -65,11 +64,25 @@ class SceneReader3d : public Reader3d {
     optional(root, "description", s.description, &Reader::text);
     optional(root, "duration", s.duration, &Reader::positive);
     if (const YAML::Node w = root["world"]) {
-      keys(w, {"gravity"}, kWorldRefusals, "world");
+      keys(w, {"gravity", "restitution", "friction"}, kWorldRefusals, "world");
       optional(w, "gravity", s.gravity, &Reader3d::vec3);
+      if (w["restitution"]) s.restitution = restitution(w["restitution"]);
+      optional(w, "friction", s.friction, &Reader::nonNegative);
     }
     if (const YAML::Node sim = root["sim"]) {
-      keys(sim, {"integrator", "dt", "normalize", "max_steps", "max_bodies", "max_entries"}, kSimRefusals, "sim");
+      keys(sim,
+           {"integrator", "dt", "normalize", "collisions", "iterations", "position_iterations", "max_steps", "max_bodies",
+            "max_entries"},
+           kSimRefusals, "sim");
+      if (const YAML::Node c = sim["collisions"]) {
+        s.collisions = named(c, "collisions", sim::core::collisionMethodFromName, sim::core::kCollisionMethodNames.list());
+        if (!sim::world3d::methodModel3d(s.collisions) && s.collisions != sim::core::CollisionMethod::Auto)
+          fail(c, "'" + c.Scalar() + "' is a 2D method; 3D scenes take 'auto', 'none', 'event' or 'sequential'");
+        s.collisionsLoc = place(c);
+      }
+      if (sim["iterations"]) s.velocityIterations = wholeNumber(sim["iterations"], "iterations", 1, 1000);
+      if (sim["position_iterations"])
+        s.positionIterations = wholeNumber(sim["position_iterations"], "position_iterations", 0, 1000);
       optional(sim, "max_steps", s.maxSteps, &Reader::positive);
       readSizeLimits(*this, sim, limits_);
       if (sim["integrator"])
@@ -93,7 +106,13 @@ class SceneReader3d : public Reader3d {
     const YAML::Node bodies = required(root, "bodies", "a scene");
     if (!bodies.IsSequence() || bodies.size() == 0) fail(bodies, "'bodies' must be a list of at least one body");
     checkBodyCount(*this, bodies, limits_);
-    for (const YAML::Node& b : bodies) s.bodies.push_back(readBody(b));
+    for (const YAML::Node& b : bodies) {
+      // an obstacle: {plane: {point, normal}} is a static half-space, apart from the bodies
+      if (b.IsMap() && b["shape"] && b["shape"].IsMap() && b["shape"]["plane"]) s.planes.push_back(readPlane(b));
+      else s.bodies.push_back(readBody(b));
+    }
+    if (s.bodies.empty()) fail(bodies, "a scene needs at least one body that moves; planes are obstacles only");
+    checkPairs(bodies, s);
     // forces and events are read alike in 2D and 3D (sim/yaml/force_reader.h) but for the vector
     size_t entries = 0;
     sim::yaml::readForcesAndEvents(
@@ -119,7 +138,7 @@ class SceneReader3d : public Reader3d {
     if (n.IsMap())
       for (const auto& [key, reason] : kShapeRefusals)
         if (n[key]) fail(n, reason);
-    checkKeys(n, {"box", "sphere", "ellipsoid"}, "shape");
+    checkKeys(n, {"box", "sphere", "ellipsoid", "plane"}, "shape");
     if (n.size() != 1)
       fail(n, "a shape is exactly one of {box: [a, b, c]} (sides), {sphere: r}, {ellipsoid: [a, b, c]} (semi-axes)");
     try {
@@ -131,19 +150,73 @@ class SceneReader3d : public Reader3d {
     }
   }
 
+  double restitution(const YAML::Node& n) {
+    const double c = number(n, "restitution");
+    if (!(c >= 0.0 && c <= 1.0)) fail(n, "'restitution' must be within [0, 1] (0: plastic, 1: elastic), got " + n.Scalar());
+    return c;
+  }
+
+  // a body's name, unique among bodies and planes
+  std::string uniqueName(const YAML::Node& n) {
+    std::string name = text(required(n, "name", "every body"), "name");
+    if (name.empty()) fail(n, "a body's name cannot be empty");
+    // by hash: a scan of the names before would make loading quadratic in the bodies
+    if (!bodyNames_.insert(name).second) fail(n["name"], "duplicate body name '" + name + "'; names must be unique");
+    return name;
+  }
+
+  PlaneDef readPlane(const YAML::Node& n) {
+    for (const char* key : {"density", "mass", "inertia", "position", "orientation", "velocity", "angular_velocity"})
+      if (n[key]) fail(n[key], std::string("a plane has no '") + key + "'; place it with its 'point' and 'normal'");
+    keys(n, with({"name", "shape", "restitution", "friction"}, others_.body), kBodyRefusals, "a plane");
+    PlaneDef p;
+    p.loc = place(n);
+    p.name = uniqueName(n);
+    const YAML::Node shape = n["shape"];
+    if (shape.size() != 1) fail(shape, "a shape is exactly one of {box}, {sphere}, {ellipsoid} or {plane: {point, normal}}");
+    const YAML::Node plane = shape["plane"];
+    checkKeys(plane, {"point", "normal"}, "plane");
+    optional(plane, "point", p.point, &Reader3d::vec3);
+    const YAML::Node normal = required(plane, "normal", "a plane");
+    p.normal = vec3(normal, "normal");
+    if (!(p.normal.norm() > 0.0))
+      fail(normal, "a plane's normal must not be zero; give the direction out of the solid, e.g. [0, 0, 1]");
+    p.normal.normalize();
+    if (n["restitution"]) p.restitution = restitution(n["restitution"]);
+    optional(n, "friction", p.friction, &Reader::nonNegative);
+    return p;
+  }
+
+  // contacts between bodies are modeled for two spheres alone: any other pair of bodies that could
+  // meet, in a scene with contacts, is refused at the second body rather than let pass through
+  void checkPairs(const YAML::Node& nodes, const SceneDef& s) {
+    if (s.collisions == sim::core::CollisionMethod::None) return;
+    if (s.planes.empty() && s.collisions == sim::core::CollisionMethod::Auto) return;
+    const BodyDef* other = nullptr;
+    for (const BodyDef& b : s.bodies) {
+      if (other && !(b.shape.kind == ShapeKind::Sphere && other->shape.kind == ShapeKind::Sphere)) {
+        for (const YAML::Node& n : nodes)
+          if (n.IsMap() && n["name"] && n["name"].Scalar() == b.name)
+            fail(n, "3D contacts between bodies are modeled for two spheres only, and '" + b.name + "' and '" + other->name +
+                        "' would pass through each other; make them spheres, keep one body, or set 'sim: {collisions: none}'");
+      }
+      if (!other || other->shape.kind == ShapeKind::Sphere) other = &b;
+    }
+  }
+
   BodyDef readBody(const YAML::Node& n) {
     if (!n.IsMap()) fail(n, "expected a map for a body, got " + describe(n));
     keys(n,
-         with({"name", "shape", "density", "mass", "inertia", "position", "orientation", "velocity", "angular_velocity"},
+         with({"name", "shape", "density", "mass", "inertia", "position", "orientation", "velocity", "angular_velocity",
+               "restitution", "friction"},
               others_.body),
          kBodyRefusals, "a body");
     BodyDef b;
     b.loc = b.massLoc = {n.Mark().line + 1, n.Mark().column + 1};
-    b.name = text(required(n, "name", "every body"), "name");
-    if (b.name.empty()) fail(n, "a body's name cannot be empty");
-    // by hash: a scan of the names before would make loading quadratic in the bodies
-    if (!bodyNames_.insert(b.name).second) fail(n["name"], "duplicate body name '" + b.name + "'; names must be unique");
+    b.name = uniqueName(n);
     b.shape = readShape(required(n, "shape", "body '" + b.name + "'"));
+    if (n["restitution"]) b.restitution = restitution(n["restitution"]);
+    optional(n, "friction", b.friction, &Reader::nonNegative);
     optional(n, "density", b.density, &Reader::positive);
     optional(n, "mass", b.mass, &Reader::positive);
     if (const YAML::Node i = n["inertia"]) b.inertia = inertia(i, "inertia");
@@ -165,13 +238,13 @@ class SceneReader3d : public Reader3d {
     keys(n,
          {"time", "body", "position", "orientation", "velocity", "angular_velocity", "quaternion_norm", "kinetic_energy",
           "potential_energy", "total_energy", "momentum", "angular_momentum", "cone_angle", "precession_rate",
-          "space_precession_rate", "flip_period", "tolerance", "source"},
+          "space_precession_rate", "flip_period", "energy_never_rises", "tolerance", "source"},
          kExpectRefusals, "an expect entry");
     ExpectDef e;
     e.loc = {n.Mark().line + 1, n.Mark().column + 1};
-    const YAML::Node t = required(n, "time", "an expect entry");
-    e.time = finite(t, "time");
-    checkTime(t, e.time, s.duration, "expect");
+    const sim::yaml::ExpectTime when = sim::yaml::readExpectTime(*this, n, s.duration);
+    e.time = when.time;
+    e.energyNeverRises = when.energyNeverRises;
     if (n["body"]) e.body = bodyRef(n, "body", s, "an expect entry");
     for (const char* key : {"position", "orientation", "velocity", "angular_velocity", "quaternion_norm", "cone_angle",
                             "precession_rate", "space_precession_rate", "flip_period"})

@@ -445,7 +445,8 @@ fi
 # ---- 3D scenes (dimensions: 3): check, simulate --json/--trace, snapshot, and their bad input ----
 
 TOP=$SCENES/lecture/13_symmetric_top.yaml
-expect "check of a 3D scene passes its closed forms and says it has no contacts" 0 out "contacts: none" check "$TOP"
+expect "check of a 3D scene passes its closed forms and says nothing collides" 0 out \
+  "collisions: none (auto: no two bodies can meet, so no collision model is needed)" check "$TOP"
 run simulate "$TOP" --variant oblate --until 0.5 --json --trace top.csv
 json_check "simulate --json of a 3D scene names each quantity as the issue does" \
   'sorted(b.keys()) == ["angular_momentum", "angular_velocity", "kinetic_energy", "name", "orientation", "position", "velocity"]' \
@@ -467,10 +468,11 @@ bodies:
     orientation: [1, 1, 0, 0]
 EOF
 expect "a quaternion far from unit length is bad input at FILE:LINE:COL" 2 err "far_quaternion.yaml:5:18" check far_quaternion.yaml
-expect "--collisions on a 3D scene exits 2: nothing collides in 3D" 2 err "no contacts" simulate "$TOP" --collisions event
-expect "--contact-hertz on a 3D scene exits 2: it has no contacts to solve" 2 err "no contacts to solve" simulate "$TOP" --contact-hertz 60
-expect "--precision on a 3D scene exits 2: it has no contacts to solve" 2 err "--precision: " simulate "$TOP" --precision float
-expect "snapshot --impacts of a 3D scene exits 2" 2 err "nothing collides in 3D" snapshot "$TOP" --impacts -o snap3
+expect "--collisions soft_step on a 3D scene exits 2 naming 3D's methods" 2 err \
+  "takes the collision methods auto, none, event and sequential" simulate "$TOP" --collisions soft_step
+expect "--contact-hertz on a 3D scene exits 2: 3D has no soft_step" 2 err "has no soft_step" simulate "$TOP" --contact-hertz 60
+expect "--precision on a 3D scene exits 2: 3D has no soft_step" 2 err "--precision: " simulate "$TOP" --precision float
+expect "snapshot --impacts of a 3D scene where nothing meets exits 2" 2 err "has no impacts" snapshot "$TOP" --impacts -o snap3
 expect "snapshot of a 3D scene writes its PNG" 0 out "13_symmetric_top-oblate-t0.5.png" snapshot "$TOP" --variant oblate --at 0.5 --size 160x90 -o snap3
 
 # ---- the GL library, loaded only to draw ---------------------------------------------------

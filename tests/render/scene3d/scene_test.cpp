@@ -94,5 +94,4 @@ TEST_CASE("3D render: faults at FILE:LINE:COL") {
   expectSceneError(kScene + "render: {camera: {direction: [0, 0, 1]}}\n", 5, 18, {"along 'up'"});
   expectSceneError(kScene + "render: {arrows: [{body: top, show: torque}]}\n", 5, 37, {"unknown show 'torque'", "omega_path"});
   expectSceneError(kScene + "render: {arrows: [{body: tip, show: omega}]}\n", 5, 26, {"no body named 'tip'"});
-  expectSceneError(kScene + "render: {panels: impacts}\nvariants: {a: {}, b: {}}\n", 5, 18, {"nothing collides in 3D", "[0, 2]"});
 }

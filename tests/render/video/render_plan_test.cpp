@@ -364,8 +364,9 @@ TEST_CASE("3D scenes are planned as 2D ones: the same names, one survey per vari
   CHECK(shots.paths() == std::vector<std::string>{"o/spin/spin-slow-t0.png", "o/spin/spin-slow-t0.5.png"});
   CHECK(usageError([] { render::video::planStills3d(spin(), {.file = "spin.yaml", .variant = "slow", .times = {0.75}}); }) ==
         "--at: 0.75 s is outside the scene's duration [0, 0.5]");
-  CHECK(usageError([] { render::video::planStills3d(spin(), {.file = "spin.yaml", .impacts = true}); }) ==
-        "--impacts: spin.yaml is a 3D scene, and nothing collides in 3D; give times with --at");
+  // a free spinning body meets nothing: no impacts to show
+  CHECK(usageError([] { render::video::planStills3d(spin(), {.file = "spin.yaml", .variant = "slow", .impacts = true}); }) ==
+        "--impacts: spin.yaml (variant slow) has no impacts in its 0.5 s; nothing collides there (use --at to choose times)");
   CHECK(usageError([] { render::video::planStills3d(spin(), {.file = "spin.yaml", .times = {0}, .strobe = 2}); }) ==
         "--strobe: earlier poses are ghosted in 2D frames only");
 }

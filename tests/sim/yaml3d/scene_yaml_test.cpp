@@ -138,10 +138,11 @@ TEST_CASE("variants deep-merge over a 3D scene as over a 2D one, and cannot chan
 }
 
 TEST_CASE("2D keys in a 3D scene say why 3D has none; 3D keys are checked where they are written") {
-  EXPECT_SCENE_ERROR(kOneBody + "world: {restitution: 1}\n", 5, 22, {"no contacts", "restitution"});
-  EXPECT_SCENE_ERROR(kOneBody + "sim: {collisions: event}\n", 5, 19, {"no contacts", "collisions"});
+  EXPECT_SCENE_ERROR(kOneBody + "sim: {collisions: soft_step}\n", 5, 19, {"2D method", "'sequential'"});
+  EXPECT_SCENE_ERROR(kOneBody + "sim: {substeps: 4}\n", 5, 17, {"no soft_step"});
+  EXPECT_SCENE_ERROR(kOneBody + "world: {restitution: 2}\n", 5, 22, {"within [0, 1]"});
   EXPECT_SCENE_ERROR(kOneBody + "    angle: 1\n", 5, 12, {"orientation"});
-  EXPECT_SCENE_ERROR(kOneBody + "    static: true\n", 5, 13, {"no contacts"});
+  EXPECT_SCENE_ERROR(kOneBody + "    static: true\n", 5, 13, {"no static bodies", "plane"});
   EXPECT_SCENE_ERROR("dimensions: 3\nbodies:\n  - {name: a, shape: {circle: 1}}\n", 3, 22, {"2D shape", "sphere"});
   EXPECT_SCENE_ERROR(kOneBody + "    velocity: [1, 0]\n", 5, 15, {"[x, y, z]", "2 values"});
   EXPECT_SCENE_ERROR(kOneBody + "    angular_velocty: [1, 0, 0]\n", 5, 5, {"unknown key", "'angular_velocity'"});
@@ -177,4 +178,47 @@ TEST_CASE("a 3D scene's name is one file name, and its run is bounded, as in 2D 
   const SceneDef allowed = sim::yaml3d::loadSceneText(kOneBody + "duration: 1\nsim: {dt: 1e-3, max_steps: 1000}\n", kFile, "");
   CHECK(allowed.maxSteps == 1000.0);
   EXPECT_SCENE_ERROR(kOneBody + "duration: 1\nsim: {dt: 1e-3, max_steps: 999}\n", 6, 11, {"1000 steps", "999"});
+}
+
+TEST_CASE("planes, restitution, friction and the collision methods of a 3D scene") {
+  const std::string scene =
+      "dimensions: 3\n"
+      "world: {gravity: [0, 0, -9.81], restitution: 0.3, friction: 0.4}\n"
+      "sim: {collisions: sequential, iterations: 12, position_iterations: 2}\n"
+      "bodies:\n"
+      "  - {name: floor, shape: {plane: {point: [0, 0, -1], normal: [0, 0, 2]}}, friction: 0.9}\n"
+      "  - {name: ball, shape: {sphere: 0.5}, restitution: 0.8}\n";
+  const sim::scene3d::SceneDef s = sim::yaml3d::loadSceneText(scene, kFile);
+  REQUIRE(s.planes.size() == 1);
+  REQUIRE(s.bodies.size() == 1);
+  CHECK(s.planes[0].name == "floor");
+  CHECK(s.planes[0].point == Vec3(0, 0, -1));
+  CHECK(s.planes[0].normal == Vec3(0, 0, 1));  // normalized
+  CHECK(*s.planes[0].friction == 0.9);
+  CHECK(*s.bodies[0].restitution == 0.8);
+  CHECK(s.restitution == 0.3);
+  CHECK(*s.friction == 0.4);
+  CHECK(s.collisions == sim::core::CollisionMethod::Sequential);
+  CHECK(s.velocityIterations == 12);
+  CHECK(s.positionIterations == 2);
+  // what a plane is not, and a body pair 3D does not collide
+  EXPECT_SCENE_ERROR(
+      "dimensions: 3\nbodies:\n  - {name: f, shape: {plane: {normal: [0, 0, 0]}}}\n  - {name: b, shape: {sphere: 1}}\n", 3, 39,
+      {"normal must not be zero"});
+  EXPECT_SCENE_ERROR(
+      "dimensions: 3\nbodies:\n  - {name: f, shape: {plane: {normal: [0, 0, 1]}}, position: [0, 0, 1]}\n  - {name: b, shape: "
+      "{sphere: 1}}\n",
+      3, 62, {"a plane has no 'position'", "'point'"});
+  EXPECT_SCENE_ERROR("dimensions: 3\nbodies:\n  - {name: f, shape: {plane: {normal: [0, 0, 1]}}}\n", 3, 3,
+                     {"at least one body that moves"});
+  EXPECT_SCENE_ERROR(
+      "dimensions: 3\nbodies:\n  - {name: f, shape: {plane: {normal: [0, 0, 1]}}}\n  - {name: a, shape: {box: [1, 1, 1]}}\n"
+      "  - {name: b, shape: {sphere: 1}, position: [3, 0, 0]}\n",
+      5, 5, {"two spheres only", "'b' and 'a'", "collisions: none"});
+  // without planes or a named method nothing collides, and boxes may share a scene as before
+  CHECK(
+      sim::yaml3d::loadSceneText("dimensions: 3\nbodies:\n  - {name: a, shape: {box: [1, 1, 1]}}\n  - {name: b, shape: {box: [1, "
+                                 "1, 1]}}\n",
+                                 kFile)
+          .bodies.size() == 2);
 }
