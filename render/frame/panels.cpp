@@ -56,24 +56,35 @@ PanelGrid panelGrid(size_t count, int width, int height, bool caption) {
   return g;
 }
 
+std::vector<SheetText> sheetTexts(const PanelGrid& g, size_t count, const std::vector<std::string>& titles,
+                                  const std::string& caption, TextRenderer& text) {
+  const auto widthAt = [&text](int size) { return [&text, size](const std::string& s) { return text.measure(s, size).width; }; };
+  std::vector<SheetText> out;
+  for (size_t i = 0; i < count && i < titles.size(); ++i) {
+    // a title too long for its panel ends in "…" rather than run into the next
+    const auto line = wrapLines(titles[i], g.frameWidth - g.textSize, 1, widthAt(g.textSize));
+    if (!line.empty())
+      out.push_back({line.front(),
+                     {g.frameX(i) + 0.5 * g.frameWidth,
+                      g.frameY(i) - g.titleStrip + 0.5 * (g.titleStrip - g.textSize) - 0.1 * g.textSize}});
+  }
+  // the caption once, under the grid, centered
+  if (!caption.empty() && g.captionBand > 0) {
+    double y = g.sheetHeight - g.captionBand + 0.25 * g.textSize;
+    for (const std::string& l : wrapLines(caption, g.sheetWidth - 2 * g.textSize, kCaptionLines, widthAt(g.textSize))) {
+      out.push_back({l, {0.5 * g.sheetWidth, y}});
+      y += 1.25 * g.textSize;
+    }
+  }
+  return out;
+}
+
 Image composePanels(const std::vector<Image>& frames, const PanelGrid& g, const std::vector<std::string>& titles,
                     const std::string& caption, const Style& style, TextRenderer& text) {
   Image out(g.sheetWidth, g.sheetHeight, style.background.withAlpha(1.0));
   const Color rule = style.background.mixed(style.role(Role::Label), 0.25);
   const Color& ink = style.role(Role::Label);
-  const auto widthAt = [&text](int size) { return [&text, size](const std::string& s) { return text.measure(s, size).width; }; };
-  for (size_t i = 0; i < frames.size(); ++i) {
-    const int x = g.frameX(i), y = g.frameY(i);
-    paste(frames[i], out, x, y);
-    if (i < titles.size()) {
-      // a title too long for its panel ends in "…" rather than run into the next
-      const auto line = wrapLines(titles[i], g.frameWidth - g.textSize, 1, widthAt(g.textSize));
-      if (!line.empty())
-        text.draw(out, line.front(), x + 0.5 * g.frameWidth,
-                  y - g.titleStrip + 0.5 * (g.titleStrip - g.textSize) - 0.1 * g.textSize, Anchor::TopCenter, g.textSize, ink,
-                  style.background, 0);
-    }
-  }
+  for (size_t i = 0; i < frames.size(); ++i) paste(frames[i], out, g.frameX(i), g.frameY(i));
   // rules between the columns and between the rows, in the gaps
   const int gridBottom = g.sheetHeight - g.captionBand;
   for (int c = 1; c < g.columns; ++c) {
@@ -86,16 +97,19 @@ Image composePanels(const std::vector<Image>& frames, const PanelGrid& g, const 
     for (int x = 0; x < g.sheetWidth; ++x)
       for (int dy = 0; dy < 2; ++dy) fill(out, x, ry + dy, rule);
   }
-  // the caption once, under the grid, centered
-  if (!caption.empty() && g.captionBand > 0) {
-    const auto lines = wrapLines(caption, g.sheetWidth - 2 * g.textSize, kCaptionLines, widthAt(g.textSize));
-    double y = gridBottom + 0.25 * g.textSize;
-    for (const std::string& l : lines) {
-      text.draw(out, l, 0.5 * g.sheetWidth, y, Anchor::TopCenter, g.textSize, ink, style.background, 0);
-      y += 1.25 * g.textSize;
-    }
-  }
+  for (const SheetText& t : sheetTexts(g, frames.size(), titles, caption, text))
+    text.draw(out, t.text, t.at.x(), t.at.y(), Anchor::TopCenter, g.textSize, ink, style.background, 0);
   return out;
+}
+
+PixelDrawList sheetDrawList(const std::vector<PixelDrawList>& cells, const PanelGrid& g, const std::vector<std::string>& titles,
+                            const std::string& caption, const Style& style, TextRenderer& text) {
+  PixelDrawList sheet{g.sheetWidth, g.sheetHeight, {}};
+  for (size_t i = 0; i < cells.size(); ++i) addMoved(sheet, cells[i], g.frameX(i), g.frameY(i));
+  const int line = text.measure("", g.textSize).ascent + text.measure("", g.textSize).descent;
+  for (const SheetText& t : sheetTexts(g, cells.size(), titles, caption, text))
+    addText(sheet, t.text, t.at, Anchor::TopCenter, text.measure(t.text, g.textSize).width, line, style.role(Role::Label));
+  return sheet;
 }
 
 }  // namespace render::frame

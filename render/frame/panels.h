@@ -16,6 +16,7 @@
 #include "render/draw/image.h"
 #include "render/draw/style.h"
 #include "render/draw/text.h"
+#include "render/frame/pixel_draw_list.h"
 
 namespace render::frame {
 using render::draw::Image;
@@ -48,6 +49,21 @@ PanelGrid panelGrid(size_t count, int width, int height, bool caption);
 // must be the grid's frame size
 Image composePanels(const std::vector<Image>& frames, const PanelGrid& grid, const std::vector<std::string>& titles,
                     const std::string& caption, const Style& style, TextRenderer& text);
+
+// a text the sheet writes itself, its top-center point in sheet pixels: the panels' titles, then the
+// caption's lines
+struct SheetText {
+  std::string text;
+  Vec2 at;
+};
+std::vector<SheetText> sheetTexts(const PanelGrid& grid, size_t count, const std::vector<std::string>& titles,
+                                  const std::string& caption, TextRenderer& text);
+
+// the sheet's draw list: each panel's (`cells`, in its frame's pixels) moved to its place in the grid,
+// then the titles and the caption as composePanels writes them
+PixelDrawList sheetDrawList(const std::vector<PixelDrawList>& cells, const PanelGrid& grid,
+                            const std::vector<std::string>& titles, const std::string& caption, const Style& style,
+                            TextRenderer& text);
 
 // "A", "B", …, "Z", "AA", … : the letter of the i-th panel (from 0)
 std::string panelLetter(size_t i);

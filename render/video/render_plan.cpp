@@ -8,6 +8,7 @@
 #include "render/frame/caption.h"
 #include "render/frame/panel_camera.h"
 #include "render/frame/panels.h"
+#include "render/frame/pixel_draw_list.h"
 #include "render/frame/title_card.h"
 #include "render/frame3d/energy3d.h"
 #include "render/jobs/exit_status.h"
@@ -127,6 +128,7 @@ struct StillSpec {
   std::string file;                // named in messages
   std::optional<FrameSize> sheet;  // of a panel sheet: 1920 × 1080 unless asked
   std::string baseTitle;           // the base scene's render: {title}: a variant's own differs from it
+  bool drawList = false;           // a draw list beside each still
 };
 
 // shot by shot, each variant at the same times, each inside every variant's duration
@@ -257,7 +259,7 @@ StillsOf<D> stillsOf(const RenderPlanOf<D>& plan, const StillSpec& spec) {
   for (const std::vector<double>& shot : instants) firsts.push_back(shot[0]);
   const std::vector<std::string> timeNames = timesForNames(firsts);
   for (size_t shot = 0; shot < instants.size(); ++shot) {
-    StillOutput out{.path = s.directory + "/", .instants = instants[shot], .titles = {}};
+    StillOutput out{.path = s.directory + "/", .instants = instants[shot], .titles = {}, .drawListPath = {}};
     const std::string impact = spec.impacts ? "-impact" + std::to_string(shot + 1) : "";
     const std::string at = "-t" + timeNames[shot];
     if (spec.panels) {
@@ -267,6 +269,7 @@ StillsOf<D> stillsOf(const RenderPlanOf<D>& plan, const StillSpec& spec) {
     } else {
       out.path += baseOf(first.model) + impact + at + strobeSuffix(strobe) + ".png";
     }
+    if (spec.drawList) out.drawListPath = drawListPathFor(out.path);
     // the plan checked before anything is drawn: one file a still
     for (const StillOutput& other : s.shots)
       if (other.path == out.path)
@@ -330,8 +333,8 @@ RenderPlanOf<D> planStillsOf(const LoadVariantOf<D>& load, const StillRequest& r
   }
   // --size is a single frame's, or with --panels the whole sheet's
   RenderPlanOf<D> plan = surveyed<D>(std::move(scenes), r.panels ? std::nullopt : r.size, std::nullopt, -1.0);
-  plan.stills =
-      stillsOf(plan, {r.times, r.impacts, r.panels, r.strobe, r.root, r.file, r.panels ? r.size : std::nullopt, baseTitle});
+  plan.stills = stillsOf(
+      plan, {r.times, r.impacts, r.panels, r.strobe, r.root, r.file, r.panels ? r.size : std::nullopt, baseTitle, r.drawList});
   return plan;
 }
 
@@ -363,7 +366,10 @@ std::vector<std::string> RenderPlanOf<D>::paths() const {
     if (!v.framesPath.empty()) all.push_back(v.framesPath);
   }
   if (stills)
-    for (const StillOutput& shot : stills->shots) all.push_back(shot.path);
+    for (const StillOutput& shot : stills->shots) {
+      all.push_back(shot.path);
+      if (!shot.drawListPath.empty()) all.push_back(shot.drawListPath);
+    }
   return all;
 }
 template struct RenderPlanOf<Planar>;
@@ -378,6 +384,8 @@ RenderPlan3d planVideos3d(const LoadVariant3d& load, const VideoRequest& r) { re
 RenderPlan3d planStills3d(const LoadVariant3d& load, const StillRequest& r) {
   if (r.impacts) throw UsageError("--impacts: " + r.file + " is a 3D scene, and nothing collides in 3D; give times with --at");
   if (r.strobe.value_or(0) > 0) throw UsageError("--strobe: earlier poses are ghosted in 2D frames only");
+  if (r.drawList)
+    throw UsageError("--draw-list: " + r.file + " is a 3D scene; draw lists in pixels are written for 2D scenes only");
   return planStillsOf<Spatial>(load, r);
 }
 
