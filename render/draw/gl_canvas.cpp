@@ -123,6 +123,8 @@ Color GlCanvas::fillColor(const Pen& s) const {
     case Role::RotationalBar: return style_.body(s.body).mixed(kWhite, 0.45);
     // a panel lets what is behind it show a little
     case Role::Panel: return style_.role(Role::Panel).withAlpha(0.85);
+    // a text's backing lets the hatching or body under it show faintly
+    case Role::Backing: return style_.role(Role::Backing).withAlpha(0.8);
     default: return strokeColor(s);
   }
 }

@@ -47,8 +47,10 @@ enum class Role {
   AngularMomentum,  // L = I ω from the center of mass: an arrow
   // another simulator's trajectory over ours (--overlay)
   Overlay,  // its bodies' outlines, dashed
+  // a text's backing where it stands over hatching or a body: the background, nearly opaque, filled
+  Backing,
 };
-inline constexpr size_t kRoleCount = static_cast<size_t>(Role::Overlay) + 1;
+inline constexpr size_t kRoleCount = static_cast<size_t>(Role::Backing) + 1;
 
 struct RoleInfo {
   Role role;
@@ -96,6 +98,7 @@ inline constexpr std::array<RoleInfo, kRoleCount> kRoles{{
     {Role::AngularMomentum, "AngularMomentum", "angular_momentum", "#6a3d9a", 1.5, false},
     // a magenta that no default role or palette colour is near
     {Role::Overlay, "Overlay", "overlay", "#e7298a", 1.25, false},
+    {Role::Backing, "Backing", "backing", "#ffffff", 1.0, true},
 }};
 
 constexpr const RoleInfo& info(Role role) { return kRoles[static_cast<size_t>(role)]; }

@@ -159,7 +159,7 @@ void FramePainter::paint(const sim::world::World& world, const History& history,
     const double inset = 0.5 * textSize / px;
     draw.text(camera_.toWorld({inset, inset}), timeText(world.time), {Role::Caption, -1, 1.0});
   }
-  if (r.overlays.energy || r.overlays.momentum) panel_.draw(world, draw);
+  if (r.overlays.energy || r.overlays.momentum) panel_.draw(world, draw, textWidth_);
   paintTimingText(world.time, draw);
   draw.finish();
   dropped_.report(draw.dropped(), world.time);

@@ -35,11 +35,12 @@ std::string panelLetter(size_t i) {
 int PanelGrid::frameX(size_t i) const { return static_cast<int>(i % columns) * (frameWidth + gap); }
 int PanelGrid::frameY(size_t i) const { return static_cast<int>(i / columns) * (titleStrip + frameHeight + gap) + titleStrip; }
 
-PanelGrid panelGrid(size_t count, int width, int height, bool caption) {
+PanelGrid panelGrid(size_t count, int width, int height, bool caption, int columns) {
   PanelGrid g;
   g.sheetWidth = width, g.sheetHeight = height;
   const int n = static_cast<int>(std::max<size_t>(1, count));
   g.columns = n <= 2 ? n : n <= 4 ? 2 : static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n))));
+  if (columns > 0) g.columns = std::min(columns, n);
   g.rows = (n + g.columns - 1) / g.columns;
   g.textSize = std::max(1, static_cast<int>(std::ceil(kTextShare * height)));
   g.titleStrip = static_cast<int>(std::ceil(1.6 * g.textSize));

@@ -40,9 +40,10 @@ struct PanelGrid {
   int frameY(size_t i) const;
 };
 
-// the grid of `count` panels on a `width` × `height` sheet, a caption band under it when `caption`.
-// Throws render::jobs::UsageError when a panel's frame would be under 16 px a side
-PanelGrid panelGrid(size_t count, int width, int height, bool caption);
+// the grid of `count` panels on a `width` × `height` sheet, a caption band under it when `caption`, in
+// `columns` columns (0: 2 side by side, 3-4 as 2 × 2, more in rows of ⌈√n⌉). Throws
+// render::jobs::UsageError when a panel's frame would be under 16 px a side
+PanelGrid panelGrid(size_t count, int width, int height, bool caption, int columns = 0);
 
 // the frames in the grid, each under its title, the caption under them all (wrapped to the sheet,
 // at most two lines), on the style's background with thin rules between the panels; every frame

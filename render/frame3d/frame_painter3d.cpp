@@ -66,6 +66,7 @@ FramePainter3d::FramePainter3d(const render::scene3d::Scene& def, const Camera3d
       momentumScale_(arrowScale(def.space.angularMomentumScale, survey.maxAngularMomentum, camera)),
       velocityScale_(arrowScale(def.space.velocityScale, survey.maxSpeed, camera)),
       em_(render::scene::fontSizeFor(def.render, camera.heightPx())),
+      lengthFloor_(render::frame::noiseFloor(survey.bounds.ball().radius + survey.bounds.ball().center.norm())),
       panel_(def, overlay_, survey) {
   for (const sim::scene3d::BodyDef& b : def.model.bodies) {
     const Mesh m = meshOf(b.shape, kLeastSegments);
@@ -134,7 +135,10 @@ void FramePainter3d::paintArrows(const World& world, const History3d& history, C
     const Body& b = world.bodies[a.body];
     const int color = a.color.empty() ? -1 : static_cast<int>(k);
     const std::string name = a.label.empty() ? defaultLabel(a.show) : a.label;
-    auto labeled = [&](const Vec3& v, const char* unit) { return a.value ? render::frame::vectorText(name, v, unit) : name; };
+    // a component below the vector's noise floor (round-off of a turned vector: 1.19 × 10⁻¹⁴ beside 2) is 0
+    auto labeled = [&](const Vec3& v, const char* unit) {
+      return a.value ? render::frame::vectorText(name, v, unit, render::frame::noiseFloor(v.norm())) : name;
+    };
     switch (a.show) {
       case Arrow3dDef::Show::Axes: {
         const Mat3 r = b.rotation();
@@ -179,13 +183,13 @@ void FramePainter3d::paintArrows(const World& world, const History3d& history, C
   }
 }
 
-std::vector<std::string> FramePainter3d::stateText(const Body& b) {
+std::vector<std::string> FramePainter3d::stateText(const Body& b, double lengthFloor) {
   char q[160], norm[64];
   std::snprintf(q, sizeof q, "q = [%s, %s, %s, %s]", render::frame::signedNumber(b.q.w(), 3).c_str(),
                 render::frame::signedNumber(b.q.x(), 3).c_str(), render::frame::signedNumber(b.q.y(), 3).c_str(),
                 render::frame::signedNumber(b.q.z(), 3).c_str());
   std::snprintf(norm, sizeof norm, "|q| = %.6f", b.q.norm());
-  return {render::frame::vectorText("x", b.x, "m"), q, norm};
+  return {render::frame::vectorText("x", b.x, "m", std::max(lengthFloor, render::frame::noiseFloor(b.x.norm()))), q, norm};
 }
 
 void FramePainter3d::paintText(const World& world, Canvas& draw) const {
@@ -201,7 +205,7 @@ void FramePainter3d::paintText(const World& world, Canvas& draw) const {
   if (!def_.render.slowMotion.empty()) row += 1.0;
   for (const Arrow3dDef& a : def_.space.arrows) {
     if (a.show != Arrow3dDef::Show::State) continue;
-    std::vector<std::string> lines = stateText(world.bodies[a.body]);
+    std::vector<std::string> lines = stateText(world.bodies[a.body], lengthFloor_);
     // several bodies: each block says whose
     if (world.bodies.size() > 1) {
       const std::string& label = def_.render.bodies[a.body].label;

@@ -38,7 +38,8 @@ class FramePainter3d {
   void showSlowMotion(std::function<double(double)> factorAt) { slowMotion_ = std::move(factorAt); }
 
   // "x = (1.00, −0.50, 0.20) m", "q = [0.924, 0.000, 0.383, 0.000]", "|q| = 1.000000"
-  static std::vector<std::string> stateText(const sim::world3d::Body& body);
+  // (positions below `lengthFloor` m, the noise floor of the run's extent, are 0)
+  static std::vector<std::string> stateText(const sim::world3d::Body& body, double lengthFloor = 0.0);
 
   double omegaScale() const { return omegaScale_; }
   double angularMomentumScale() const { return momentumScale_; }
@@ -63,6 +64,7 @@ class FramePainter3d {
   mutable std::map<std::pair<std::string, int>, Mesh> meshes_;
   double omegaScale_, momentumScale_, velocityScale_;  // m of arrow per rad/s, kg·m²/s, m/s
   double em_;                                          // text size, px
+  double lengthFloor_ = 0.0;                           // positions below it are round-off, m
   EnergyPanel3d panel_;
   std::vector<std::string> captionLines_;
   std::function<double(double)> slowMotion_;

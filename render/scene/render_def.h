@@ -139,6 +139,7 @@ struct TraceOverlayDef {
 struct PollDef {
   std::string question;     // top-level (or a variant's) `question:`; empty: the card shows the description
   std::string answer;       // `answer:`; never drawn but on the answer card, never on the page but folded
+  std::string title;        // a variant's `title:`: its panel's title on a poll sheet ("A: at the center")
   double answerCard = 0.0;  // s of a closing card with the answer (`render: {answer_card}`); 0: none
   double reveal = -1.0;     // s from which a panel is labelled "answer" (`render: {reveal}`); < 0: never
   // where the card's text is written (the question, else the description), for a card that cannot fit
@@ -146,6 +147,9 @@ struct PollDef {
   int line = 0, column = 0;
   int answerLine = 0, answerColumn = 0;  // where `answer:` is written
   bool revealed(double t) const { return reveal >= 0.0 && t >= reveal; }
+  // does a picture at time t tell the answer? In a poll (a scene with a question) everything after
+  // t = 0 does, unless `reveal` marks it a question time (before it); elsewhere only from `reveal` on
+  bool tellsAnswer(double t) const { return question.empty() || reveal >= 0.0 ? revealed(t) : t > 0.0; }
 };
 
 struct RenderDef {

@@ -1,5 +1,6 @@
 // What a slide promises (render/README.md, "A slide-ready frame"), checked on an image's draw list in
-// its pixels: no two texts overlap, every text lies in the image, no panel meets a body, no number
+// its pixels: no two texts overlap, every text lies in the image, no panel meets a body or runs into
+// a text that is not its own, no number
 // shows round-off (a power of ten below 10⁻⁸), no time more than 3 decimals, no title repeats its
 // letter ("A: A:"), no text cut ("…"). Each fault is one line naming the texts or calls.
 #pragma once
@@ -112,6 +113,16 @@ inline std::vector<std::string> faults(const PixelDrawList& list) {
   }
   for (const PixelCall* p : panels) {
     const std::vector<sim::core::Vec2> panel = pointsOf(*p);
+    // a text in the panel is one of its rows; one partly in it runs into it (the clock under it)
+    PixelBox area{1e300, 1e300, -1e300, -1e300};
+    for (const auto& v : panel)
+      area.left = std::min(area.left, v.x()), area.right = std::max(area.right, v.x()), area.top = std::min(area.top, v.y()),
+      area.bottom = std::max(area.bottom, v.y());
+    for (const PixelCall* t : texts) {
+      const PixelBox& b = *t->box;
+      const bool inside = b.left >= area.left && b.right <= area.right && b.top >= area.top && b.bottom <= area.bottom;
+      if (b.overlaps(area) && !inside) out.push_back("'" + t->text + "' runs into the panel");
+    }
     for (const PixelCall* body : bodies) {
       const bool meets = body->kind == "circle" ? discMeetsPolygon(pointsOf(*body).front(), body->numbers[2], panel)
                                                 : polygonsOverlap(panel, pointsOf(*body));

@@ -211,6 +211,26 @@ TEST_CASE("with an energy panel the automatic camera fits the bodies left of its
   CHECK(render::frame::cameraFor(plain, survey).toPixel({0, 0}).x() == doctest::Approx(320.0));
 }
 
+TEST_CASE("with an energy panel wider than the room beside it, the automatic camera fits the bodies under it") {
+  // a ball rolling 10 m along a line, in a frame too narrow for the bodies beside the panel
+  const std::string scene =
+      "duration: 1\n"
+      "bodies:\n"
+      "  - {name: ball, shape: {circle: 0.5}, velocity: [10, 0]}\n"
+      "render: {size: [320, 360], camera: {margin: 0}, energy: true}\n";
+  const render::scene::Scene def = drawn_scene::load(scene);
+  const render::frame::RunSurvey survey = render::frame::surveyRun(def);
+  const double band = render::frame::EnergyPanel::bandPx(def, survey, 360);
+  const double top = render::frame::EnergyPanel::topBandPx(def, survey, 320, 360);
+  REQUIRE(band > 160.0);
+  REQUIRE(top > 0.0);
+  const render::draw::Camera camera = render::frame::cameraFor(def, survey);
+  // the run's 11 m span the whole width, and the ball's top stays under the panel's band
+  CHECK(camera.worldWidth() == doctest::Approx(11.0).epsilon(1e-3));
+  CHECK(camera.toPixel({0, 0.5}).y() >= top - 1e-9);
+  CHECK(camera.toPixel({-0.5, 0}).x() == doctest::Approx(0.0).epsilon(1e-9));
+}
+
 namespace {
 
 // Box2D's pyramid (render/bench/stack_layouts.h): rows of 1 m boxes 1.125 m apart on a ground box,

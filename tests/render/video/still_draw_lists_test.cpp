@@ -1,17 +1,21 @@
-// The stills' draw lists in pixels (still_draw_lists.cpp, render/frame/pixel_draw_list.cpp): a frame's
-// calls in its pixels, a sheet's cells moved to their places with its titles and caption, each text
-// with its box; and the checks of what a slide promises, seeing each fault.
+// The stills' draw lists in pixels (still_draw_lists.cpp, render/frame/pixel_draw_list.cpp): a sheet's
+// cells moved to their places with its titles and caption, each text with its box; then what a slide
+// promises, held on them over the whole 2D lecture pack: frames at the start, the middle and the end of
+// every variant, and every poll sheet (the scene's `panels:` and at its impacts).
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <string>
 #include <vector>
 
 #include "render/video/render_plan.h"
 #include "render/video/still_draw_lists.h"
+#include "sim/yaml/scene_source.h"
 #include "support/drawn_scene.h"
 #include "support/slide_checks.h"
 
+namespace fs = std::filesystem;
 using render::frame::PixelCall;
 using render::frame::PixelDrawList;
 using render::video::RenderPlan;
@@ -97,6 +101,7 @@ TEST_CASE("a sheet's draw list holds each cell's calls moved to its place, then 
   const PixelCall* caption = find(sheet, "text", "Caption", "A ball and a wall.");
   REQUIRE(caption);
   CHECK(caption->box->top >= grid.frameY(0) + grid.frameHeight);
+  for (const std::string& fault : slide_checks::faults(sheet)) FAIL_CHECK(fault);
 }
 
 TEST_CASE("the slide checks see what a slide must not show") {
@@ -112,6 +117,8 @@ TEST_CASE("the slide checks see what a slide must not show") {
   list.calls.push_back({"text", "Caption", "#000000", "and…", {0, 80}, render::frame::PixelBox{0, 80, 20, 90}, caption});
   list.calls.push_back({"polygon", "Panel", "#f2f2f2", "", {60, 60, 90, 60, 90, 90, 60, 90}, {}, panel});
   list.calls.push_back({"circle", "Body#0", "#3b6ea5", "", {95, 95, 10}, {}, body});
+  list.calls.push_back({"text", "Caption", "#000000", "E = 2 J", {62, 62}, render::frame::PixelBox{62, 62, 88, 72}, caption});
+  list.calls.push_back({"text", "Caption", "#000000", "t = 1 s", {50, 75}, render::frame::PixelBox{50, 75, 70, 85}, caption});
   const std::vector<std::string> faults = slide_checks::faults(list);
   const auto has = [&](const std::string& part) {
     return std::any_of(faults.begin(), faults.end(), [&](const std::string& f) { return f.find(part) != std::string::npos; });
@@ -123,5 +130,67 @@ TEST_CASE("the slide checks see what a slide must not show") {
   CHECK(has("leaves the image"));
   CHECK(has("is cut"));
   CHECK(has("the panel meets Body#0"));
-  CHECK(faults.size() == 7);
+  // the panel's own row lies in it; the clock half under it runs into it
+  CHECK(has("'t = 1 s' runs into the panel"));
+  CHECK_FALSE(has("'E = 2 J' runs into"));
+  CHECK(faults.size() == 8);
+}
+
+namespace {
+
+std::vector<fs::path> packScenes2d() {
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(fs::path(RIGIDREEL_SOURCE_DIR) / "scenes" / "lecture"))
+    if (entry.path().extension() == ".yaml" && sim::yaml::readSceneSource(entry.path().string()).dimensions == 2)
+      files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+render::video::LoadVariant fileLoader(const std::string& file) {
+  return [file](const std::string& variant) { return drawn_scene::loadFile(file, variant); };
+}
+
+// every still of `plan` keeps a slide's promises; returns how many
+size_t checkStills(const RenderPlan& plan) {
+  size_t count = 0;
+  render::video::stillDrawLists(*plan.stills, [&](size_t k, const PixelDrawList& list) {
+    CAPTURE(plan.stills->shots[k].path);
+    for (const std::string& fault : slide_checks::faults(list)) FAIL_CHECK(fault);
+    ++count;
+  });
+  return count;
+}
+
+}  // namespace
+
+TEST_CASE("every frame of the 2D lecture pack keeps a slide's promises: at the start, the middle and the end of each variant") {
+  size_t stills = 0;
+  for (const fs::path& file : packScenes2d()) {
+    const render::scene::Scene base = drawn_scene::loadFile(file.string());
+    std::vector<std::string> variants = base.model.variantNames;
+    if (variants.empty()) variants.push_back("");
+    for (const std::string& variant : variants) {
+      const double d = drawn_scene::loadFile(file.string(), variant).model.duration;
+      stills += checkStills(render::video::planStills(fileLoader(file.string()),
+                                                      {.file = file.string(), .variant = variant, .times = {0, 0.5 * d, d}}));
+    }
+  }
+  CHECK(stills >= 3 * 12);
+}
+
+TEST_CASE("every poll sheet of the 2D lecture pack keeps a slide's promises: its panels' times and its impacts") {
+  size_t sheets = 0;
+  for (const fs::path& file : packScenes2d()) {
+    const render::video::LoadVariant load = fileLoader(file.string());
+    const render::scene::Scene base = load("");
+    if (base.model.variantNames.empty()) continue;
+    CAPTURE(file.string());
+    const RenderPlan lecture = render::video::planLecture(load, {.file = file.string()});
+    if (lecture.stills) sheets += checkStills(lecture);
+    bool impacts = true;
+    for (const render::video::PlannedVariant& v : lecture.variants) impacts = impacts && !v.survey.impactTimes.empty();
+    if (impacts) sheets += checkStills(render::video::planStills(load, {.file = file.string(), .impacts = true, .panels = true}));
+  }
+  CHECK(sheets >= 8);
 }
