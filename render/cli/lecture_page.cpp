@@ -5,6 +5,7 @@
 
 #include "render/cli/scene_order.h"
 #include "render/cli/output.h"
+#include "render/frame/quantity_text.h"
 #include "render/frame/caption.h"
 #include "render/page/page.h"
 #include "render/video/output_names.h"
@@ -50,7 +51,7 @@ render::page::SceneRecord recordOf(const Plan& plan, const render::scene::Render
       const double t = shot.instants.at(0);
       const bool answer = look.poll.tellsAnswer(t);
       if (look.panels.impacts) r.panels.push_back({name(shot.path), "impact " + std::to_string(i + 1), false, answer});
-      else r.panels.push_back({name(shot.path), "t = " + render::video::timeToMs(t) + " s", t == 0.0 && !answer, answer});
+      else r.panels.push_back({name(shot.path), "t = " + render::frame::timeToMs(t) + " s", t == 0.0 && !answer, answer});
     }
   return r;
 }

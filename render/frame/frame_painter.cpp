@@ -11,6 +11,7 @@
 #include "render/draw/style.h"
 #include "render/frame/impulse_beside.h"
 #include "render/frame/trace_overlay.h"
+#include "render/frame/upcoming_events.h"
 #include "render/scene/scene_style.h"
 #include "sim/collision/collide.h"
 #include "sim/debug/describe.h"
@@ -138,6 +139,10 @@ void FramePainter::paint(const sim::world::World& world, const History& history,
   } else {
     history.drawAfterimages(world.time, beside);
   }
+  // a poll's frames show the impulses still to come, dashed, so that its question can be asked from
+  // the picture (struck at the center, or at the end?)
+  if (!r.poll.question.empty() && r.impulses)
+    drawUpcomingEvents(world, impulseScale_, camera_, lineWidthFor(r, camera_.heightPx()), draw);
   const double textSize = fontSizeFor(r, camera_.heightPx()) * px;
   // the overlay of every polygon pair closer than a tenth of the view (so, as they approach), its
   // label a line of text out from the edge

@@ -15,6 +15,15 @@ std::string signedNumber(double x, int decimals) {
   return (x < 0.0 && !zero ? "\u2212" : "") + std::string(buf);
 }
 
+std::string timeToMs(double t) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.3f", t);
+  std::string s = buf;
+  while (s.back() == '0') s.pop_back();
+  if (s.back() == '.') s.pop_back();
+  return s == "-0" ? "0" : s;
+}
+
 std::string numberText(double x, double zeroBelow) { return sim::debug::numberText(x, 3, zeroBelow); }
 
 std::string quantityText(const std::string& name, double x, const std::string& unit, double zeroBelow) {

@@ -16,6 +16,9 @@ inline constexpr double kNoiseFloor = 1e-12;
 // the noise floor of a quantity whose largest magnitude in the run is `scale`
 inline double noiseFloor(double scale) { return kNoiseFloor * std::abs(scale); }
 
+// a time as a title, a label or the page writes it: to the millisecond, as the frame's clock, without
+// trailing zeros ("0", "2.5", "0.765")
+std::string timeToMs(double t);
 // x to `decimals` decimals, negative with "−"; −0.00 written 0.00
 std::string signedNumber(double x, int decimals = 2);
 // x to three significant digits (sim::debug::numberText), 0 below `zeroBelow`

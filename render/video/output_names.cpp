@@ -23,15 +23,6 @@ std::string timeWithDigits(double t, int digits) {
 
 std::string timeForName(double t) { return timeWithDigits(t, 6); }
 
-std::string timeToMs(double t) {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, "%.3f", t);
-  std::string s = buf;
-  while (s.back() == '0') s.pop_back();
-  if (s.back() == '.') s.pop_back();
-  return s == "-0" ? "0" : s;
-}
-
 std::vector<std::string> timesForNames(const std::vector<double>& times) {
   // 17 significant digits tell any two doubles apart
   for (int digits = 6;; ++digits) {

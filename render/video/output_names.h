@@ -19,9 +19,6 @@ std::string panelsFileName(const std::string& scene, const std::string& when, in
 std::string strobeSuffix(int strobe);
 // a time for a file name: shortest form, at most 6 significant digits ("0.5", "1.23457"); -0 is "0"
 std::string timeForName(double t);
-// a time as a title or the page writes it: to the millisecond, as the frame's clock, without trailing
-// zeros ("0", "2.5", "0.765")
-std::string timeToMs(double t);
 // the names of several times: 6 significant digits, or as many more as tell every two different
 // times apart (100.0001 and 100.0004 are "100.0001" and "100.0004", not both "100")
 std::vector<std::string> timesForNames(const std::vector<double>& times);

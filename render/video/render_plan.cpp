@@ -10,6 +10,7 @@
 #include "render/frame/panel_camera.h"
 #include "render/frame/panels.h"
 #include "render/frame/pixel_draw_list.h"
+#include "render/frame/quantity_text.h"
 #include "render/frame/title_card.h"
 #include "render/frame3d/energy3d.h"
 #include "render/jobs/exit_status.h"

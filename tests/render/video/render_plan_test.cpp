@@ -7,6 +7,7 @@
 #include <map>
 
 #include "render/frame/caption.h"
+#include "render/frame/quantity_text.h"
 #include "render/frame/scene_run.h"
 #include "render/jobs/exit_status.h"
 #include "render/scene/scene_style.h"
@@ -187,7 +188,7 @@ TEST_CASE("snapshot --impacts: shot i is each variant at its own i-th impact, or
     }
   }
   // "A" needs no name after its letter; the time of the impact follows
-  CHECK(shots[0].titles[0] == "A  (t = " + render::video::timeToMs(shots[0].instants[0]) + " s)");
+  CHECK(shots[0].titles[0] == "A  (t = " + render::frame::timeToMs(shots[0].instants[0]) + " s)");
 
   const RenderPlan one = render::video::planStills(Loader{kThree, {}}(), {.file = kThree, .variant = "B", .impacts = true});
   const double t = one.variants.front().survey.impactTimes.front();
@@ -327,10 +328,10 @@ TEST_CASE("panel titles: a variant's own title: first, never lettered twice; an 
   const RenderPlan impacts = render::video::planStills(load, {.file = "lesson.yaml", .impacts = true, .panels = true});
   // the fast ball meets the wall at (0.75 − 0.25) / 1.2345678 = 0.405000… s
   CHECK(impacts.stills->shots[0].titles[1] == "B: fast, c_r = 1  (t = 0.405 s)");
-  CHECK(render::video::timeToMs(0.5) == "0.5");
-  CHECK(render::video::timeToMs(0.7650771) == "0.765");
-  CHECK(render::video::timeToMs(-0.0001) == "0");
-  CHECK(render::video::timeToMs(2.0) == "2");
+  CHECK(render::frame::timeToMs(0.5) == "0.5");
+  CHECK(render::frame::timeToMs(0.7650771) == "0.765");
+  CHECK(render::frame::timeToMs(-0.0001) == "0");
+  CHECK(render::frame::timeToMs(2.0) == "2");
 }
 
 TEST_CASE("a sheet's grid shows the variants largest: a wide run stacked, a tall one side by side") {
