@@ -49,8 +49,11 @@ enum class Role {
   Overlay,  // its bodies' outlines, dashed
   // a text's backing where it stands over hatching or a body: the background, nearly opaque, filled
   Backing,
+  // a contact's forces on a body (arrows: show: normal_force, friction)
+  NormalForce,  // N n̂ at the pair's contact: an arrow
+  Friction,     // the friction force along the surface: an arrow
 };
-inline constexpr size_t kRoleCount = static_cast<size_t>(Role::Backing) + 1;
+inline constexpr size_t kRoleCount = static_cast<size_t>(Role::Friction) + 1;
 
 struct RoleInfo {
   Role role;
@@ -99,6 +102,9 @@ inline constexpr std::array<RoleInfo, kRoleCount> kRoles{{
     // a magenta that no default role or palette colour is near
     {Role::Overlay, "Overlay", "overlay", "#e7298a", 1.25, false},
     {Role::Backing, "Backing", "backing", "#ffffff", 1.0, true},
+    // Okabe and Ito's sky blue and reddish purple, apart from the impulse's blue and the force's orange
+    {Role::NormalForce, "NormalForce", "normal_force", "#56b4e9", 1.5, false},
+    {Role::Friction, "Friction", "friction", "#cc79a7", 1.5, false},
 }};
 
 constexpr const RoleInfo& info(Role role) { return kRoles[static_cast<size_t>(role)]; }

@@ -5,6 +5,7 @@
 
 #include "render/draw/style.h"
 #include "render/draw/text.h"
+#include "render/frame/overlay_key.h"
 #include "render/frame/quantity_text.h"
 #include "render/scene/scene_style.h"
 #include "sim/scene/scene_build.h"
@@ -160,6 +161,8 @@ double EnergyPanel::topPx(const render::scene::Scene& def, const RunSurvey& surv
   std::vector<std::string> corner;
   if (def.render.time) corner.push_back("t = 10.000 s");
   if (!def.render.slowMotion.empty()) corner.push_back("slow motion ×1/10");
+  // and the overlay key's rows, each with its sample before it
+  for (const std::string& row : possibleKeyRows(def.render, !survey.impactTimes.empty())) corner.push_back("MM " + row);
   return BarPanel::topPx(BarPanel::widthPx(widestBarTexts(def, survey), widestLines(def, survey), em), widthPx, em, corner);
 }
 

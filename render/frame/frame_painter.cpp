@@ -10,6 +10,7 @@
 
 #include "render/draw/style.h"
 #include "render/frame/impulse_beside.h"
+#include "render/frame/overlay_key.h"
 #include "render/frame/trace_overlay.h"
 #include "render/frame/upcoming_events.h"
 #include "render/scene/scene_style.h"
@@ -115,11 +116,13 @@ void FramePainter::paint(const sim::world::World& world, const History& history,
   RoleFilter moving(draw, [](Role role) { return role != Role::StaticBody; });
   PhysicsDraw movingPhysics(moving);
   sim::debug::describeBodies(world, movingPhysics);
-  PhysicsDraw physics(draw);
+  // what the overlays drew, for the key to those not labelled where they are
+  OverlaysSeen seen(draw);
+  PhysicsDraw physics(seen);
   // coils 2.5 line widths to each side: visible, and narrower than most bodies
   if (r.springs) sim::debug::describeSprings(world, 2.5 * lineWidthFor(def_.render, camera_.heightPx()) * px, physics);
   // impulses beside the normals they share a line with, so that both show
-  ImpulseBeside beside(draw, impulseOffsetPx(lineWidthFor(r, camera_.heightPx())) * px);
+  ImpulseBeside beside(seen, impulseOffsetPx(lineWidthFor(r, camera_.heightPx())) * px);
   // contacts: dots and normals while few are on screen, else (contacts: auto) dots alone, which
   // still show where bodies touch without a thicket of arrows over them
   // counted first, then drawn (a copy of tens of thousands of calls made a frame of a 5,050-box
@@ -165,6 +168,10 @@ void FramePainter::paint(const sim::world::World& world, const History& history,
     draw.text(camera_.toWorld({inset, inset}), timeText(world.time), {Role::Caption, -1, 1.0});
   }
   if (r.overlays.energy || r.overlays.momentum) panel_.draw(world, draw, textWidth_);
+  // the key under the clock (and the slow-motion note, and the overlay's legend)
+  if (r.key)
+    drawOverlayKey(overlayKeyRows(seen, r.overlays.impactValues), camera_, fontSizeFor(r, camera_.heightPx()), keyFirstRow(r),
+                   draw);
   paintTimingText(world.time, draw);
   draw.finish();
   dropped_.report(draw.dropped(), world.time);

@@ -341,9 +341,10 @@ void LabelPlacer::place(const Pending& p, size_t self) {
   const Vec2 preferred = p.fixed ? p.anchor : labelCenter(p.anchor, p.direction, halfWidth, halfHeight, gap);
   PlacedText out{p.text, p.pen, boxAt(preferred, p), p.fixed ? std::nullopt : std::optional<Vec2>(p.anchor), false};
   if (p.fixed) {
-    // text fixed to the frame moves for nothing; it only must not land on another
+    // text fixed to the frame moves for nothing; it only must not land on another (rows a line apart
+    // touch, and the round trip through world units leaves them a hair's breadth over: no overlap)
     for (const PlacedText& t : placed_)
-      if (out.box.overlaps(t.box)) {
+      if (out.box.grown(-1e-6).overlaps(t.box)) {
         dropped_.push_back(out);
         return;
       }

@@ -14,7 +14,6 @@ namespace {
 
 // the least share of a sheet's height a text takes: read from the back of a lecture hall
 constexpr double kTextShare = 1.0 / 40.0;
-constexpr int kCaptionLines = 2;
 
 int evenDown(double v) { return std::max(0, static_cast<int>(std::floor(v / 2.0)) * 2); }
 
@@ -35,7 +34,7 @@ std::string panelLetter(size_t i) {
 int PanelGrid::frameX(size_t i) const { return static_cast<int>(i % columns) * (frameWidth + gap); }
 int PanelGrid::frameY(size_t i) const { return static_cast<int>(i / columns) * (titleStrip + frameHeight + gap) + titleStrip; }
 
-PanelGrid panelGrid(size_t count, int width, int height, bool caption, int columns) {
+PanelGrid panelGrid(size_t count, int width, int height, bool caption, int columns, int captionLines) {
   PanelGrid g;
   g.sheetWidth = width, g.sheetHeight = height;
   const int n = static_cast<int>(std::max<size_t>(1, count));
@@ -45,7 +44,8 @@ PanelGrid panelGrid(size_t count, int width, int height, bool caption, int colum
   g.textSize = std::max(1, static_cast<int>(std::ceil(kTextShare * height)));
   g.titleStrip = static_cast<int>(std::ceil(1.6 * g.textSize));
   g.gap = std::max(2, width / 240) / 2 * 2;
-  g.captionBand = caption ? static_cast<int>(std::ceil((kCaptionLines * 1.25 + 0.5) * g.textSize)) : 0;
+  g.captionLines = std::clamp(captionLines, 1, kMostCaptionLines);
+  g.captionBand = caption ? static_cast<int>(std::ceil((g.captionLines * 1.25 + 0.5) * g.textSize)) : 0;
   g.frameWidth = evenDown((width - (g.columns - 1) * g.gap) / static_cast<double>(g.columns));
   g.frameHeight = evenDown((height - g.captionBand - (g.rows - 1) * g.gap) / static_cast<double>(g.rows) - g.titleStrip);
   if (g.frameWidth < render::scene::kMinFrameSide || g.frameHeight < render::scene::kMinFrameSide)
@@ -55,6 +55,14 @@ PanelGrid panelGrid(size_t count, int width, int height, bool caption, int colum
                                    std::to_string(g.frameHeight) + " px, under " + std::to_string(render::scene::kMinFrameSide) +
                                    "); give a larger --size (at most 8192 a side)");
   return g;
+}
+
+int sheetCaptionLines(const std::string& caption, int width, int height, TextRenderer& text) {
+  // the sheet's text size, as panelGrid sets it
+  const int size = std::max(1, static_cast<int>(std::ceil(kTextShare * height)));
+  const auto lines = wrapLines(caption, width - 2 * size, kMostCaptionLines,
+                               [&text, size](const std::string& s) { return text.measure(s, size).width; });
+  return std::max<int>(1, static_cast<int>(lines.size()));
 }
 
 std::vector<SheetText> sheetTexts(const PanelGrid& g, size_t count, const std::vector<std::string>& titles,
@@ -72,7 +80,7 @@ std::vector<SheetText> sheetTexts(const PanelGrid& g, size_t count, const std::v
   // the caption once, under the grid, centered
   if (!caption.empty() && g.captionBand > 0) {
     double y = g.sheetHeight - g.captionBand + 0.25 * g.textSize;
-    for (const std::string& l : wrapLines(caption, g.sheetWidth - 2 * g.textSize, kCaptionLines, widthAt(g.textSize))) {
+    for (const std::string& l : wrapLines(caption, g.sheetWidth - 2 * g.textSize, g.captionLines, widthAt(g.textSize))) {
       out.push_back({l, {0.5 * g.sheetWidth, y}});
       y += 1.25 * g.textSize;
     }

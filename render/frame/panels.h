@@ -35,15 +35,20 @@ struct PanelGrid {
   int titleStrip = 0;                   // the band above each frame holding its title
   int gap = 0;                          // between panels, with a rule in it
   int captionBand = 0;                  // under the grid (0 without a caption)
+  int captionLines = 2;                 // the caption's lines in it
   // the top-left corner of panel i's frame
   int frameX(size_t i) const;
   int frameY(size_t i) const;
 };
 
-// the grid of `count` panels on a `width` × `height` sheet, a caption band under it when `caption`, in
-// `columns` columns (0: 2 side by side, 3-4 as 2 × 2, more in rows of ⌈√n⌉). Throws
-// render::jobs::UsageError when a panel's frame would be under 16 px a side
-PanelGrid panelGrid(size_t count, int width, int height, bool caption, int columns = 0);
+// the grid of `count` panels on a `width` × `height` sheet, a caption band of `captionLines` lines
+// under it when `caption`, in `columns` columns (0: 2 side by side, 3-4 as 2 × 2, more in rows of
+// ⌈√n⌉). Throws render::jobs::UsageError when a panel's frame would be under 16 px a side
+PanelGrid panelGrid(size_t count, int width, int height, bool caption, int columns = 0, int captionLines = 2);
+// the lines a sheet `width` px wide needs for the whole of `caption` at its text size (at least 1, at
+// most kMostCaptionLines: a caption longer than that ends in "…")
+inline constexpr int kMostCaptionLines = 4;
+int sheetCaptionLines(const std::string& caption, int width, int height, TextRenderer& text);
 
 // the frames in the grid, each under its title, the caption under them all (wrapped to the sheet,
 // at most two lines), on the style's background with thin rules between the panels; every frame

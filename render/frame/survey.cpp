@@ -6,6 +6,7 @@
 
 #include "render/draw/style.h"
 #include "render/frame/caption.h"
+#include "render/frame/contact_forces.h"
 #include "render/frame/energy_panel.h"
 #include "render/frame/point_forces.h"
 #include "render/jobs/interrupt.h"
@@ -81,6 +82,11 @@ RunSurvey surveyRun(const render::scene::Scene& def, double until) {
 }
 
 void surveyOverlays(const render::scene::Scene& def, const sim::world::World& world, RunSurvey& out) {
+  // the contact forces of the bodies whose arrows show them
+  for (const render::scene::ArrowDef& a : def.render.overlays.arrows)
+    if (a.show == render::scene::ArrowDef::Show::NormalForce || a.show == render::scene::ArrowDef::Show::Friction)
+      for (const ContactForce& f : contactForcesOn(world, a.body))
+        out.maxContactForce = std::max({out.maxContactForce, f.normal.norm(), f.friction.norm()});
   for (size_t i = 0; i < world.bodies.size(); ++i) {
     const sim::core::Body& b = world.bodies[i];
     if (b.isStatic) continue;
@@ -169,6 +175,7 @@ void shareScales(const std::vector<RunSurvey*>& surveys) {
     all.maxImpulse = std::max(all.maxImpulse, s->maxImpulse);
     all.maxOmega = std::max(all.maxOmega, s->maxOmega);
     all.maxForce = std::max(all.maxForce, s->maxForce);
+    all.maxContactForce = std::max(all.maxContactForce, s->maxContactForce);
     all.maxTorque = std::max(all.maxTorque, s->maxTorque);
     all.maxMomentum = std::max(all.maxMomentum, s->maxMomentum);
     all.maxLinearMomentum = std::max(all.maxLinearMomentum, s->maxLinearMomentum);

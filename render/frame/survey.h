@@ -23,6 +23,7 @@ struct RunSurvey {
   // the lecture overlays' scales (render.overlays)
   double maxOmega = 0.0;                    // |ω| of any body, rad/s
   double maxForce = 0.0;                    // of any point force while it is on, N
+  double maxContactForce = 0.0;             // of any contact's normal or friction force (arrows that show them), N
   double maxTorque = 0.0;                   // |Σ r′ × f| of the point forces on any body, N·m
   double maxMomentum = 0.0;                 // |m v| of any moving body, kg·m/s
   double minEnergy = 0.0, maxEnergy = 0.0;  // of any bar of the energy panel (≤ 0, ≥ 0), J

@@ -14,6 +14,7 @@
 #include "render/draw/canvas.h"
 #include "render/draw3d/canvas3d.h"
 #include "render/frame/caption.h"
+#include "render/frame/label_place.h"
 #include "render/frame3d/energy3d.h"
 #include "render/frame3d/history3d.h"
 #include "render/frame3d/survey3d.h"
@@ -55,7 +56,9 @@ class FramePainter3d {
 
   const render::scene3d::Scene& def_;
   Camera3d camera_;
-  render::draw::Camera overlay_;  // pixels, y up
+  render::draw::Camera overlay_;                  // pixels, y up
+  render::frame::TextWidth textWidth_;            // of the frame's texts, px (empty: estimated)
+  mutable render::frame::DroppedLabels dropped_;  // labels with no free spot, said once each per run
   // body i's mesh: one per shape and level of detail (mesh.h: segmentsFor its size on screen),
   // shared by every body of that shape and size, so that memory does not grow with the bodies
   const Mesh& meshFor(size_t body, const sim::world3d::Body& b) const;

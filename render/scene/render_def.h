@@ -74,7 +74,7 @@ struct BodyLook {
 
 // a teaching vector drawn every frame: one entry of `arrows:`
 struct ArrowDef {
-  enum class Show { Velocity, Offset, Omega, Frame, Path, Force, Torque, Momentum };
+  enum class Show { Velocity, Offset, Omega, Frame, Path, Force, Torque, Momentum, NormalForce, Friction };
   Show show = Show::Velocity;
   int body = 0;            // index into SceneDef::bodies, resolved when read
   Vec2 at = Vec2::Zero();  // body coordinates as written (before the centroid shift)
@@ -84,7 +84,7 @@ struct ArrowDef {
 };
 
 // the `show:` names
-inline constexpr sim::core::EnumNames<ArrowDef::Show, 8> kShowNames{{{
+inline constexpr sim::core::EnumNames<ArrowDef::Show, 10> kShowNames{{{
     {ArrowDef::Show::Velocity, "velocity"},
     {ArrowDef::Show::Offset, "offset"},
     {ArrowDef::Show::Omega, "omega"},
@@ -93,6 +93,8 @@ inline constexpr sim::core::EnumNames<ArrowDef::Show, 8> kShowNames{{{
     {ArrowDef::Show::Force, "force"},
     {ArrowDef::Show::Torque, "torque"},
     {ArrowDef::Show::Momentum, "momentum"},
+    {ArrowDef::Show::NormalForce, "normal_force"},
+    {ArrowDef::Show::Friction, "friction"},
 }}};
 
 // the lecture overlays of a frame (scenes/README.md, render:), all off by default
@@ -180,6 +182,7 @@ struct RenderDef {
   // most 20 bodies, and leader lines only for the scene's own `label:`s; `labels: true`: all, always
   bool labelsAuto = true;
   bool time = true;  // the time in a corner
+  bool key = true;   // a key to the overlays not labelled where they are drawn (overlay_key.h)
   // video timing and text (section B of the lecture pack): the opening card, the caption, slow motion
   std::string title;                    // the title card's; empty: the scene's name with '_' as spaces
   double titleCard = 0.0;               // s the video opens with a title card; 0: none

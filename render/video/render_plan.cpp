@@ -242,8 +242,8 @@ Scene asPanel(Scene scene, const PanelGrid& grid) {
 // wide run is stacked and a tall one set side by side; the usual grid where it does as well. 3D: the
 // usual grid
 PanelGrid sheetGrid(const std::vector<Planar::Scene>& scenes, const std::vector<Planar::Survey>& surveys, int width, int height,
-                    bool caption) {
-  const PanelGrid usual = panelGrid(scenes.size(), width, height, caption);
+                    bool caption, int captionLines) {
+  const PanelGrid usual = panelGrid(scenes.size(), width, height, caption, 0, captionLines);
   Bounds bounds;
   for (const Planar::Survey& s : surveys) bounds.add(s.bounds);
   const auto pixelSize = [&](const PanelGrid& grid) {
@@ -257,7 +257,7 @@ PanelGrid sheetGrid(const std::vector<Planar::Scene>& scenes, const std::vector<
   for (int columns = 1; columns <= static_cast<int>(scenes.size()); ++columns) {
     if (columns == usual.columns) continue;
     try {
-      const PanelGrid grid = panelGrid(scenes.size(), width, height, caption, columns);
+      const PanelGrid grid = panelGrid(scenes.size(), width, height, caption, columns, captionLines);
       // clearly larger (a tenth), or the usual grid stays
       if (const double size = pixelSize(grid); size < 0.9 * bestSize) best = grid, bestSize = size;
     } catch (const UsageError&) {
@@ -267,8 +267,8 @@ PanelGrid sheetGrid(const std::vector<Planar::Scene>& scenes, const std::vector<
   return best;
 }
 PanelGrid sheetGrid(const std::vector<Spatial::Scene>& scenes, const std::vector<Spatial::Survey>&, int width, int height,
-                    bool caption) {
-  return panelGrid(scenes.size(), width, height, caption);
+                    bool caption, int captionLines) {
+  return panelGrid(scenes.size(), width, height, caption, 0, captionLines);
 }
 
 // the stills of every variant of the plan, at the times or impacts of `spec`
@@ -286,8 +286,11 @@ StillsOf<D> stillsOf(const RenderPlanOf<D>& plan, const StillSpec& spec) {
     for (typename D::Survey& survey : surveys) all.push_back(&survey);
     shareScales(all);
     caption = captionFor(first);
-    grid = sheetGrid(scenes, surveys, spec.sheet ? spec.sheet->width : kSheetWidth,
-                     spec.sheet ? spec.sheet->height : kSheetHeight, !caption.empty());
+    const int width = spec.sheet ? spec.sheet->width : kSheetWidth, height = spec.sheet ? spec.sheet->height : kSheetHeight;
+    // the whole caption under the grid, in as many lines as it needs (a few)
+    TextRenderer text;
+    const int lines = caption.empty() ? 0 : sheetCaptionLines(caption, width, height, text);
+    grid = sheetGrid(scenes, surveys, width, height, !caption.empty(), lines);
     for (typename D::Scene& scene : scenes) scene = asPanel(std::move(scene), grid);
   }
   const int strobe = spec.strobe.value_or(first.render.strobe);

@@ -105,7 +105,7 @@ TEST_CASE("the separating-axis overlay: reference edge, incident vertex and the 
       "bodies:\n"
       "  - {name: base, shape: {box: [2, 0.5]}, position: [0, 0.25], static: true}\n"
       "  - {name: box, shape: {box: [0.4, 0.4]}, position: [0, 0.8], angle: 0.3}\n"
-      "render: {sat: true, labels: false, time: false, size: [320, 180], camera: {center: [0, 0.5], height: 2}}\n";
+      "render: {sat: true, labels: false, time: false, key: false, size: [320, 180], camera: {center: [0, 0.5], height: 2}}\n";
   const auto lines = frameAt(pair, 0.0).lines();
   REQUIRE(lines.size() == 5);
   CHECK(lines[2] == "segment ReferenceEdge#0 (1,0.5) (-1,0.5)");

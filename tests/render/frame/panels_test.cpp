@@ -48,3 +48,22 @@ TEST_CASE("a sheet too small for its panels is refused, saying how to fix it") {
     CHECK(m.find("give a larger --size") != std::string::npos);
   }
 }
+
+TEST_CASE("the caption's band holds the whole caption, in as many lines as it needs, up to four") {
+  render::draw::TextRenderer text;
+  CHECK(render::frame::sheetCaptionLines("Which block moves fastest?", 1920, 1080, text) == 1);
+  const std::string long_ =
+      "The intermediate-axis theorem (the tennis racket, the Dzhanibekov effect): a box of 0.1 × 0.4 × 0.8 m and 1 kg spun "
+      "at 4 rad/s about one of its principal axes, nudged by 0.1 rad/s about the other two: about the axis of the smallest "
+      "moment (A), the middle one (B) and the largest (C).";
+  const int lines = render::frame::sheetCaptionLines(long_, 1920, 1080, text);
+  CHECK(lines == 3);
+  const render::frame::PanelGrid two = panelGrid(3, 1920, 1080, true, 0, 2), three = panelGrid(3, 1920, 1080, true, 0, lines);
+  CHECK(three.captionBand > two.captionBand);
+  CHECK(three.frameHeight < two.frameHeight);
+  // every line of it on the sheet, none cut
+  const std::vector<render::frame::SheetText> texts = render::frame::sheetTexts(three, 3, {"A", "B", "C"}, long_, text);
+  REQUIRE(texts.size() == 3 + 3);
+  for (size_t i = 3; i < texts.size(); ++i) CHECK(texts[i].text.find("…") == std::string::npos);
+  CHECK(texts.back().at.y() + text.measure(texts.back().text, three.textSize).ascent <= 1080);
+}
