@@ -39,6 +39,16 @@ class Surveyor : public sim::world::StepObserver {
       if (!(reach <= out_.farthest)) out_.farthest = reach, out_.farthestBody = static_cast<int>(i);
     }
     surveyOverlays(def_, world, out_);
+    // another run drawn over ours (--overlay): its bodies in the picture too, so that the automatic
+    // camera shows both runs (a student's bar that flies off is not lost while the legend names it)
+    if (const auto& overlay = def_.render.overlay)
+      for (size_t i = 0; i < world.bodies.size(); ++i) {
+        render::scene::TraceOverlayDef::Pose pose;
+        if (world.bodies[i].shape.kind == sim::core::ShapeKind::Plane || !overlay->poseAt(i, world.time, pose)) continue;
+        sim::core::Body theirs = world.bodies[i];
+        theirs.x = pose.x, theirs.angle = pose.angle;
+        out_.bounds.add(bodyBounds(theirs));
+      }
   }
   void afterEvent(const sim::world::World& world, const sim::world::ImpulseEvent&) override { afterStep(world); }
 

@@ -1,5 +1,6 @@
 #include "render/frame/trace_overlay.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -18,6 +19,8 @@ constexpr double kDash = 4.0, kGap = 3.0;
 constexpr int kCircleSides = 64;
 // the legend's sample line, in line heights
 constexpr double kSample = 1.5;
+// the arrow at the frame's edge toward a body of theirs out of it, and its inset, in 4 line widths
+constexpr double kEdgeArrow = 3.0;
 
 }  // namespace
 
@@ -32,6 +35,14 @@ void drawTraceOverlay(const render::scene::Scene& def, const render::scene::Trac
     const sim::core::Shape& shape = world.bodies[i].shape;
     if (shape.kind == sim::core::ShapeKind::Plane || !overlay.poseAt(i, world.time, p)) continue;
     const sim::core::Pose pose{p.x, sim::core::Rot::fromAngle(p.angle)};
+    // a body of theirs out of the frame (a fixed camera): an arrow at the frame's edge points to it
+    const Vec2 at = camera.toPixel(p.x);
+    const double edge = kEdgeArrow * lineWidth * 4.0;
+    const Vec2 inside(std::clamp(at.x(), edge, camera.widthPx() - edge), std::clamp(at.y(), edge, camera.heightPx() - edge));
+    if ((at - inside).norm() > edge) {
+      const Vec2 toward = (at - inside).normalized();
+      draw.arrow(camera.toWorld(inside - edge * toward), camera.toWorld(inside), pen);
+    }
     std::vector<Vec2> outline;
     if (shape.kind == sim::core::ShapeKind::Polygon) {
       for (const Vec2& v : shape.vertices) outline.push_back(pose.toWorld(v));
