@@ -89,6 +89,16 @@ void checkCards(const Scene& scene) {
   if (r.poll.answerCard > 0.0) sceneCard(r, scene.model.name, scene.model.description, true, r.width, r.height, text);
 }
 
+// the camera of variant `i`'s video: fitted over every variant the plan draws, so that a scene's
+// videos show its variants at one scale and in one place (10b's body passing through the wall and
+// bouncing off it, side by side on a slide), as its poll sheet does
+template <class D>
+typename D::Camera videoCamera(const RenderPlanOf<D>& plan, size_t i) {
+  std::remove_cvref_t<decltype(plan.variants[i].survey.bounds)> bounds;
+  for (const PlannedVariantOf<D>& v : plan.variants) bounds.add(v.survey.bounds);
+  return cameraFor(plan.variants[i].scene, plan.variants[i].survey, bounds);
+}
+
 // the video of variant `i` over `duration` s of simulation, and its poster: at the end, or at the
 // start where the scene asks a question (the poster stands beside the question on the page)
 template <class D>
@@ -117,7 +127,7 @@ VideoOutputOf<D> videoOf(const RenderPlanOf<D>& plan, size_t i, const std::strin
           .posterStrobe = r.strobe,
           .timeMap = std::move(map),
           .frameCount = count,
-          .camera = cameraFor(v.scene, v.survey)};
+          .camera = videoCamera(plan, i)};
 }
 
 // what the stills show: the times asked for, or each variant's impacts

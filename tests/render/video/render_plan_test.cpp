@@ -404,3 +404,20 @@ TEST_CASE("3D scenes are planned as 2D ones: the same names, one survey per vari
   CHECK(usageError([] { render::video::planStills3d(spin(), {.file = "spin.yaml", .times = {0}, .strobe = 2}); }) ==
         "--strobe: earlier poses are ghosted in 2D frames only");
 }
+
+TEST_CASE("a scene's videos share one camera, fitted over every variant's run, as its poll sheet does") {
+  // 10b's: the isolated method's body passes through the wall, the event method's bounces back
+  const std::string file = std::string(RIGIDREEL_SOURCE_DIR) + "/scenes/lecture/10b_tunneling.yaml";
+  const RenderPlan plan = render::video::planLecture(Loader{file, {}}(), {.file = file});
+  REQUIRE(plan.videos.size() == 2);
+  const render::draw::Camera &a = plan.videos[0].camera, &b = plan.videos[1].camera;
+  CHECK(a.center().x() == doctest::Approx(b.center().x()));
+  CHECK(a.center().y() == doctest::Approx(b.center().y()));
+  CHECK(a.worldHeight() == doctest::Approx(b.worldHeight()));
+  // both bodies' runs in it: through the wall to x = 2.92, back to x = −3.02
+  CHECK(a.view().min.x() < -3.02);
+  CHECK(a.view().max.x() > 2.92);
+  // one variant alone keeps its own
+  const RenderPlan one = render::video::planVideos(Loader{file, {}}(), {.variant = "event"});
+  CHECK(one.videos.front().camera.view().max.x() < 2.92);
+}
