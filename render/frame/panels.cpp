@@ -45,7 +45,9 @@ PanelGrid panelGrid(size_t count, int width, int height, bool caption, int colum
   g.titleStrip = static_cast<int>(std::ceil(1.6 * g.textSize));
   g.gap = std::max(2, width / 240) / 2 * 2;
   g.captionLines = std::clamp(captionLines, 1, kMostCaptionLines);
-  g.captionBand = caption ? static_cast<int>(std::ceil((g.captionLines * 1.25 + 0.5) * g.textSize)) : 0;
+  // a cell the variants leave empty holds the caption, rather than the sheet's height losing a band to it
+  g.captionInCell = caption && n < g.columns * g.rows;
+  g.captionBand = caption && !g.captionInCell ? static_cast<int>(std::ceil((g.captionLines * 1.25 + 0.5) * g.textSize)) : 0;
   g.frameWidth = evenDown((width - (g.columns - 1) * g.gap) / static_cast<double>(g.columns));
   g.frameHeight = evenDown((height - g.captionBand - (g.rows - 1) * g.gap) / static_cast<double>(g.rows) - g.titleStrip);
   if (g.frameWidth < render::scene::kMinFrameSide || g.frameHeight < render::scene::kMinFrameSide)
@@ -76,6 +78,18 @@ std::vector<SheetText> sheetTexts(const PanelGrid& g, size_t count, const std::v
       out.push_back({line.front(),
                      {g.frameX(i) + 0.5 * g.frameWidth,
                       g.frameY(i) - g.titleStrip + 0.5 * (g.titleStrip - g.textSize) - 0.1 * g.textSize}});
+  }
+  // the caption once, in the empty cell (its title strip and frame), centered both ways
+  if (!caption.empty() && g.captionInCell) {
+    const size_t cell = count;
+    const double top = g.frameY(cell) - g.titleStrip, height = g.titleStrip + g.frameHeight, line = 1.25 * g.textSize;
+    const int most = std::max(1, static_cast<int>(std::floor(height / line)));
+    const auto lines = wrapLines(caption, g.frameWidth - 2 * g.textSize, most, widthAt(g.textSize));
+    double y = top + 0.5 * (height - line * static_cast<double>(lines.size()));
+    for (const std::string& l : lines) {
+      out.push_back({l, {g.frameX(cell) + 0.5 * g.frameWidth, y}});
+      y += line;
+    }
   }
   // the caption once, under the grid, centered
   if (!caption.empty() && g.captionBand > 0) {

@@ -36,14 +36,15 @@ struct PanelGrid {
   int gap = 0;                          // between panels, with a rule in it
   int captionBand = 0;                  // under the grid (0 without a caption)
   int captionLines = 2;                 // the caption's lines in it
+  bool captionInCell = false;           // the caption in the grid's first empty cell instead (no band)
   // the top-left corner of panel i's frame
   int frameX(size_t i) const;
   int frameY(size_t i) const;
 };
 
-// the grid of `count` panels on a `width` × `height` sheet, a caption band of `captionLines` lines
-// under it when `caption`, in `columns` columns (0: 2 side by side, 3-4 as 2 × 2, more in rows of
-// ⌈√n⌉). Throws render::jobs::UsageError when a panel's frame would be under 16 px a side
+// the grid of `count` panels on a `width` × `height` sheet, with `caption` the caption in the grid's
+// first empty cell (three variants in 2 × 2) or else in a band of `captionLines` lines under it, in `columns` columns (0: 2 side
+// by side, 3-4 as 2 × 2, more in rows of ⌈√n⌉). Throws render::jobs::UsageError when a panel's frame would be under 16 px a side
 PanelGrid panelGrid(size_t count, int width, int height, bool caption, int columns = 0, int captionLines = 2);
 // the lines a sheet `width` px wide needs for the whole of `caption` at its text size (at least 1, at
 // most kMostCaptionLines: a caption longer than that ends in "…")
