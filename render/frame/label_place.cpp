@@ -22,6 +22,8 @@ constexpr double kNever = std::numeric_limits<double>::infinity();
 // over) less than a third of a line. So a text covers a body or crosses a line only where no spot
 // within reach is free
 constexpr double kBody = 12.0, kCovers = 8.0, kFaint = 0.3;
+// the least space between two labels, in em: a word's space
+constexpr double kWordSpace = 0.35;
 // how far a label may move (in lines), its steps (in lines), and from how far it gets a leader line
 constexpr double kMaxMove = 4.0, kStep = 0.5, kLeaderFrom = 1.0;
 // a contact point's dot and an arrow's head (10 px long, 9 wide: gl_canvas.cpp) as discs, px
@@ -299,12 +301,17 @@ double LabelPlacer::cost(const PixelBox& box, const Pending& p, size_t self) con
   // the caption, by half a line: a label beside a caption's line reads as part of it) and of the
   // other labels' anchors
   if (box.left < 0.0 || box.top < 0.0 || box.right > camera_.widthPx() || box.bottom > camera_.heightPx()) return kNever;
-  const PixelBox clear = box.grown(pad_), apart = box.grown(std::max(pad_, 0.5 * line_));
+  // two labels a word's space apart at least, so that "bar" and "v = 0 m/s" never read as one
+  const PixelBox clear = box.grown(pad_), spaced = box.grown(std::max(pad_, kWordSpace * fontPx_)),
+                 apart = box.grown(std::max(pad_, 0.5 * line_));
   for (size_t k : placedGrid_.near(apart))
-    if ((placed_[k].anchor ? clear : apart).overlaps(placed_[k].box)) return kNever;
-  // a label beyond its anchor never covers it either (one on its anchor does, by design)
+    if ((placed_[k].anchor ? spaced : apart).overlaps(placed_[k].box)) return kNever;
+  // a label beyond its anchor never covers it either (one on its anchor does, by design); an anchor
+  // it shares (a zero-length arrow at a body's center, labelled beyond it) is its own
   for (size_t i : anchorGrid_.near(clear))
-    if (!pending_[i].fixed && (i != self || !p.direction.isZero()) && clear.contains(pending_[i].anchor)) return kNever;
+    if (!pending_[i].fixed && (i != self || !p.direction.isZero()) && clear.contains(pending_[i].anchor) &&
+        (i == self || (pending_[i].anchor - p.anchor).norm() > 1.0))
+      return kNever;
   // what it covers, each polyline once (in the order drawn, as the pieces of a polyline come)
   double covered = 0.0;
   int lastGroup = -1;

@@ -89,12 +89,14 @@ size_t checkTextsApart(const render::scene::Scene& def, const std::vector<double
         INFO("'" << texts[i] << "' and '" << texts[j] << "' at t = " << t);
         CHECK_FALSE(boxes[i].overlaps(boxes[j]));
       }
-    // (text fixed to the frame, the clock and the caption, has no anchor and may lie over one)
+    // (text fixed to the frame, the clock and the caption, has no anchor and may lie over one; a body's
+    // name and a zero-length arrow's value at its center share theirs)
     for (size_t i = 0; i < placed.size(); ++i) {
       if (!placed[i].anchor) continue;
       for (size_t j = 0; j < boxes.size(); ++j) {
         INFO("'" << texts[j] << "' covers the anchor of '" << texts[i] << "' at t = " << t);
-        if (j != i && placed[j].anchor) CHECK_FALSE(boxes[j].contains(*placed[i].anchor));
+        if (j != i && placed[j].anchor && (*placed[j].anchor - *placed[i].anchor).norm() > 1.0)
+          CHECK_FALSE(boxes[j].contains(*placed[i].anchor));
       }
     }
     count += boxes.size();
