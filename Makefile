@@ -101,6 +101,7 @@ clean:
 golden: build-tests
 	RIGIDREEL_UPDATE_GOLDEN=1 ./$(BUILD)/tests/golden_test
 	RIGIDREEL_UPDATE_GOLDEN=1 ./$(BUILD)/tests/lecture_golden_test
+	RIGIDREEL_UPDATE_GOLDEN=1 ./$(BUILD)/tests/golden3d_test
 	RIGIDREEL_UPDATE_GOLDEN=1 ./$(BUILD)/tests/chart_test
 	RIGIDREEL_UPDATE_GOLDEN=1 ctest --test-dir $(BUILD) -R '^(lecture_parallel|page_browser)$$' --output-on-failure
 

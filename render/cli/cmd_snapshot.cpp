@@ -30,7 +30,8 @@ struct SnapshotCommand : SceneOptions, Verbosity {
   std::string output = "out";
   std::string size;
   std::string trace;
-  std::string overlay;  // another simulator's trace, drawn over ours
+  std::string overlay;    // another simulator's trace, drawn over ours
+  bool drawList = false;  // each PNG's draw list in its pixels beside it
 };
 
 // "0.5,1,2.25" → {0.5, 1, 2.25}; throws UsageError
@@ -56,7 +57,8 @@ StillRequest request(const SnapshotCommand& o) {
                  .impacts = o.impacts,
                  .panels = o.panels,
                  .strobe = o.strobe,
-                 .size = {}};
+                 .size = {},
+                 .drawList = o.drawList};
   if (!o.at.empty()) r.times = parseTimes(o.at);
   if (r.times.empty() == !o.impacts) throw UsageError("give the times with --at T1,T2,... or ask for --impacts (one of them)");
   if (o.panels && !o.variant.empty()) throw UsageError("--panels shows every variant side by side; leave out --variant");
@@ -111,6 +113,8 @@ void addSnapshotCommand(CLI::App& app, int& exitCode) {
   o->Verbosity::addTo(*cmd, "print nothing (not each file's path)", "also a progress bar and a summary, as render shows them");
   cmd->add_option("--trace", o->trace, "also write every step of the pictures' run to this CSV file (as simulate --trace)");
   cmd->add_option("--overlay", o->overlay, "another simulator's trace (CSV, as --trace writes): its bodies dashed over ours");
+  cmd->add_flag("--draw-list", o->drawList,
+                "beside each PNG, its draw list in pixels as JSON (<png name>.json): every call, each text's box, the panel");
   // Ctrl-C and SIGTERM end a snapshot as they end a render: exit 130, no half-written PNG
   cmd->callback([o, &exitCode] { exitCode = runInterruptible("snapshot " + o->scene, [&] { return snapshot(*o); }); });
 }

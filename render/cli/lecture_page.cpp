@@ -5,6 +5,7 @@
 
 #include "render/cli/scene_order.h"
 #include "render/cli/output.h"
+#include "render/frame/quantity_text.h"
 #include "render/frame/caption.h"
 #include "render/page/page.h"
 #include "render/video/output_names.h"
@@ -33,7 +34,8 @@ render::page::SceneRecord recordOf(const Plan& plan, const render::scene::Render
                                    const std::string& file, const std::string& path, double seconds) {
   render::page::SceneRecord r;
   r.scene = plan.scene;
-  r.file = file;
+  // the scene file as the pack names it, never a path of this machine
+  r.file = fs::path(file).filename().string();
   r.title = title;
   r.description = description;
   r.question = look.poll.question;
@@ -47,9 +49,9 @@ render::page::SceneRecord recordOf(const Plan& plan, const render::scene::Render
     for (size_t i = 0; i < plan.stills->shots.size(); ++i) {
       const render::video::StillOutput& shot = plan.stills->shots[i];
       const double t = shot.instants.at(0);
-      const bool answer = look.poll.revealed(t);
+      const bool answer = look.poll.tellsAnswer(t);
       if (look.panels.impacts) r.panels.push_back({name(shot.path), "impact " + std::to_string(i + 1), false, answer});
-      else r.panels.push_back({name(shot.path), "t = " + render::video::timeForName(t) + " s", t == 0.0 && !answer, answer});
+      else r.panels.push_back({name(shot.path), "t = " + render::frame::timeToMs(t) + " s", t == 0.0 && !answer, answer});
     }
   return r;
 }

@@ -102,4 +102,25 @@ class RoleFilter final : public Canvas {
   Keep keep_;
 };
 
+// every call into both `first` and `second` (a frame drawn and its draw list recorded at once)
+class BothCanvases final : public Canvas {
+ public:
+  BothCanvases(Canvas& first, Canvas& second) : first_(first), second_(second) {}
+  void polygon(const std::vector<Vec2>& v, const Pen& p) override { first_.polygon(v, p), second_.polygon(v, p); }
+  void circle(const Vec2& c, double r, const Pen& p) override { first_.circle(c, r, p), second_.circle(c, r, p); }
+  void halfPlane(const Vec2& q, const Vec2& n, const Pen& p) override { first_.halfPlane(q, n, p), second_.halfPlane(q, n, p); }
+  void segment(const Vec2& a, const Vec2& b, const Pen& p) override { first_.segment(a, b, p), second_.segment(a, b, p); }
+  void point(const Vec2& q, const Pen& p) override { first_.point(q, p), second_.point(q, p); }
+  void arrow(const Vec2& t, const Vec2& h, const Pen& p) override { first_.arrow(t, h, p), second_.arrow(t, h, p); }
+  void text(const Vec2& at, const std::string& t, const Pen& p) override { first_.text(at, t, p), second_.text(at, t, p); }
+  void label(const Vec2& a, const Vec2& d, const std::string& t, const Pen& p) override {
+    first_.label(a, d, t, p), second_.label(a, d, t, p);
+  }
+  void manyPoints(double dotRadiusPx) override { first_.manyPoints(dotRadiusPx), second_.manyPoints(dotRadiusPx); }
+
+ private:
+  Canvas& first_;
+  Canvas& second_;
+};
+
 }  // namespace render::draw

@@ -23,6 +23,13 @@ struct Color {
   Color withAlpha(double alpha) const { return {r, g, b, alpha}; }
   // an 8-bit component, rounded
   static uint8_t byte(double c) { return static_cast<uint8_t>(c <= 0.0 ? 0 : c >= 1.0 ? 255 : c * 255.0 + 0.5); }
+  // "#rrggbb", as a scene writes it (alpha left out)
+  std::string hex() const {
+    static const char* const kDigits = "0123456789abcdef";
+    std::string s = "#";
+    for (double c : {r, g, b}) s += kDigits[byte(c) >> 4], s += kDigits[byte(c) & 15];
+    return s;
+  }
 };
 
 }  // namespace render::draw

@@ -21,7 +21,9 @@ std::string coordinates(const Vec2& p) {
   return s;
 }
 
-std::string styleText(const Pen& s) {
+}  // namespace
+
+std::string penName(const Pen& s) {
   std::string out(info(s.role).name);
   if (s.body >= 0) out.append("#").append(std::to_string(s.body));
   if (s.opacity != 1.0) out.append("@").append(number(s.opacity));
@@ -29,7 +31,19 @@ std::string styleText(const Pen& s) {
   return out;
 }
 
-}  // namespace
+const char* DrawList::kindName(Kind k) {
+  switch (k) {
+    case Kind::Polygon: return "polygon";
+    case Kind::Circle: return "circle";
+    case Kind::HalfPlane: return "halfplane";
+    case Kind::Segment: return "segment";
+    case Kind::Point: return "point";
+    case Kind::Arrow: return "arrow";
+    case Kind::Text: return "text";
+    case Kind::Label: return "label";
+  }
+  return "?";
+}
 
 void DrawList::polygon(const std::vector<Vec2>& vertices, const Pen& style) {
   calls_.push_back({Kind::Polygon, CallPoints(vertices), 0.0, {}, style});
@@ -76,7 +90,7 @@ std::vector<std::string> DrawList::lines() const {
   std::vector<std::string> out;
   for (const Call& c : calls_) {
     std::string line;
-    const std::string style = styleText(c.style);
+    const std::string style = penName(c.style);
     switch (c.kind) {
       case Kind::Polygon:
         line.append("polygon ").append(style);

@@ -47,6 +47,10 @@ class CallPoints {
   std::vector<Vec2> vertices_;
 };
 
+// a pen as a draw-list line writes it: its role, then #body, @opacity and ~arrow colour where set,
+// e.g. "Velocity#0~2"
+std::string penName(const Pen& pen);
+
 class DrawList final : public Canvas {
  public:
   enum class Kind { Polygon, Circle, HalfPlane, Segment, Point, Arrow, Text, Label };
@@ -66,6 +70,9 @@ class DrawList final : public Canvas {
   void arrow(const Vec2& tail, const Vec2& head, const Pen& style) override;
   void text(const Vec2& at, const std::string& text, const Pen& style) override;
   void label(const Vec2& anchor, const Vec2& direction, const std::string& text, const Pen& style) override;
+
+  // "polygon", "circle", "halfplane", "segment", "point", "arrow", "text", "label"
+  static const char* kindName(Kind kind);
 
   const std::vector<Call>& calls() const { return calls_; }
   bool empty() const { return calls_.empty(); }

@@ -116,6 +116,31 @@ void GlCanvas::finish(Image& image) {
   texts_.clear();
 }
 
+namespace {
+
+// hue (degrees) and saturation of a colour (HSV)
+std::pair<double, double> hueAndSaturation(const Color& c) {
+  const double hi = std::max({c.r, c.g, c.b}), lo = std::min({c.r, c.g, c.b}), chroma = hi - lo;
+  if (!(chroma > 0.0)) return {0.0, 0.0};
+  double h = hi == c.r   ? std::fmod((c.g - c.b) / chroma, 6.0)
+             : hi == c.g ? (c.b - c.r) / chroma + 2.0
+                         : (c.r - c.g) / chroma + 4.0;
+  h *= 60.0;
+  if (h < 0.0) h += 360.0;
+  return {h, chroma / hi};
+}
+
+}  // namespace
+
+bool GlCanvas::alike(const Color& a, const Color& b) {
+  // hard to tell apart: two saturated colours within 40° of hue, or two close in every channel
+  const auto [ha, sa] = hueAndSaturation(a);
+  const auto [hb, sb] = hueAndSaturation(b);
+  const double hue = std::min(std::abs(ha - hb), 360.0 - std::abs(ha - hb));
+  const double distance = std::sqrt((a.r - b.r) * (a.r - b.r) + (a.g - b.g) * (a.g - b.g) + (a.b - b.b) * (a.b - b.b));
+  return (sa > 0.25 && sb > 0.25 && hue < 40.0) || distance < 0.25;
+}
+
 Color GlCanvas::fillColor(const Pen& s) const {
   switch (s.role) {
     case Role::Body: return style_.body(s.body).mixed(kWhite, 0.35);
@@ -123,6 +148,8 @@ Color GlCanvas::fillColor(const Pen& s) const {
     case Role::RotationalBar: return style_.body(s.body).mixed(kWhite, 0.45);
     // a panel lets what is behind it show a little
     case Role::Panel: return style_.role(Role::Panel).withAlpha(0.85);
+    // a text's backing lets the hatching or body under it show faintly
+    case Role::Backing: return style_.role(Role::Backing).withAlpha(0.8);
     default: return strokeColor(s);
   }
 }
@@ -250,6 +277,12 @@ void GlCanvas::point(const Vec2& p, const Pen& s) {
 
 void GlCanvas::arrow(const Vec2& tail, const Vec2& head, const Pen& s) {
   enter(s.role);
+  // an arrow on a body of its own hue (a blue impulse on a blue bar) is outlined in the background,
+  // so that the two are always told apart
+  if (s.body >= 0 && alike(strokeColor(s), style_.body(s.body))) {
+    beginPrimitive(style_.background, s.opacity);
+    strokeArrow(tail, head, strokeWidth(s.role), style_.lineWidth);
+  }
   beginPrimitive(strokeColor(s), s.opacity);
   strokeArrow(tail, head, strokeWidth(s.role));
 }
@@ -509,7 +542,7 @@ bool GlCanvas::fillOutlined(const std::vector<Vec2>& vertices, const Color& fill
   return true;
 }
 
-void GlCanvas::strokeArrow(const Vec2& tail, const Vec2& head, double width) {
+void GlCanvas::strokeArrow(const Vec2& tail, const Vec2& head, double width, double outline) {
   const Vec2 d = head - tail;
   const double length = d.norm();
   if (!(length > 1e-9 * px_)) return;
@@ -518,11 +551,14 @@ void GlCanvas::strokeArrow(const Vec2& tail, const Vec2& head, double width) {
   const double headLength = std::min(std::max(10.0, 5.0 * width) * px_, length / 1.5);
   const double headHalfWidth = 0.45 * headLength;
   const Vec2 base = head - u * headLength;
-  const double half = 0.5 * width * px_;
+  const double grow = outline * px_, half = 0.5 * width * px_ + grow;
   const Vec2 shaftEnd = head - u * (0.9 * headLength);
   fillConvex({tail - side * half, shaftEnd - side * half, shaftEnd + side * half, tail + side * half});
   fillDisc(tail, half);
-  fillConvex({head, base + side * headHalfWidth, base - side * headHalfWidth});
+  // the head grown by `grow` on every side: its tip moves out by grow / sin of its half angle
+  const double tip = grow * std::hypot(headLength, headHalfWidth) / headHalfWidth;
+  const double spread = headHalfWidth + grow * (headLength + std::hypot(headLength, headHalfWidth)) / headLength;
+  fillConvex({head + u * tip, base - u * grow + side * spread, base - u * grow - side * spread});
 }
 
 void GlCanvas::hatch(const Bounds& box, const Color& c, double opacity) {

@@ -26,6 +26,8 @@ namespace render::draw {
 
 class GlCanvas final : public Canvas {
  public:
+  // are two colours hard to tell apart (an arrow over a body of its hue: it is outlined then)?
+  static bool alike(const Color& a, const Color& b);
   GlCanvas(GlContext& gl, TextRenderer& text, const Style& style);
 
   // start a frame: clear to the background and look through `camera`
@@ -120,7 +122,8 @@ class GlCanvas final : public Canvas {
   int smallBodies_ = 0, largeBodies_ = 0;  // the moving bodies drawn this frame, by size
   // a moving body `extent` world units across counted as small or large
   void countBody(double extent);
-  void strokeArrow(const Vec2& tail, const Vec2& head, double width);
+  // `outline` px of the arrow's own shape added around it (0: the arrow itself)
+  void strokeArrow(const Vec2& tail, const Vec2& head, double width, double outline = 0.0);
   // diagonal lines over the pixels of the primitive just drawn, within `box` (its bounds) and the view
   void hatch(const Bounds& box, const Color& c, double opacity);
   // the segments of a disc of `radius`: chords within `tolerance` pixels of the circle

@@ -47,8 +47,13 @@ enum class Role {
   AngularMomentum,  // L = I ω from the center of mass: an arrow
   // another simulator's trajectory over ours (--overlay)
   Overlay,  // its bodies' outlines, dashed
+  // a text's backing where it stands over hatching or a body: the background, nearly opaque, filled
+  Backing,
+  // a contact's forces on a body (arrows: show: normal_force, friction)
+  NormalForce,  // N n̂ at the pair's contact: an arrow
+  Friction,     // the friction force along the surface: an arrow
 };
-inline constexpr size_t kRoleCount = static_cast<size_t>(Role::Overlay) + 1;
+inline constexpr size_t kRoleCount = static_cast<size_t>(Role::Friction) + 1;
 
 struct RoleInfo {
   Role role;
@@ -96,6 +101,10 @@ inline constexpr std::array<RoleInfo, kRoleCount> kRoles{{
     {Role::AngularMomentum, "AngularMomentum", "angular_momentum", "#6a3d9a", 1.5, false},
     // a magenta that no default role or palette colour is near
     {Role::Overlay, "Overlay", "overlay", "#e7298a", 1.25, false},
+    {Role::Backing, "Backing", "backing", "#ffffff", 1.0, true},
+    // Okabe and Ito's sky blue and reddish purple, apart from the impulse's blue and the force's orange
+    {Role::NormalForce, "NormalForce", "normal_force", "#56b4e9", 1.5, false},
+    {Role::Friction, "Friction", "friction", "#cc79a7", 1.5, false},
 }};
 
 constexpr const RoleInfo& info(Role role) { return kRoles[static_cast<size_t>(role)]; }

@@ -9,4 +9,12 @@ std::array<Color, kRoleCount> Style::defaultRoleColors() {
   return colors;
 }
 
+Color Style::penColor(const Pen& pen) const {
+  if (pen.color >= 0 && pen.color < static_cast<int>(arrows.size()) && arrows[pen.color].a > 0.0) return arrows[pen.color];
+  if (pen.role == Role::Body || pen.role == Role::StaticBody || pen.role == Role::BodyAxis || pen.role == Role::RotationalBar ||
+      pen.role == Role::Trail || info(pen.role).colorKey.empty())
+    return body(pen.body);
+  return role(pen.role);
+}
+
 }  // namespace render::draw

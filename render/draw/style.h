@@ -26,6 +26,9 @@ struct Style {
   }
   // the table's default color of every role
   static std::array<Color, kRoleCount> defaultRoleColors();
+  // a pen's base colour, before its opacity: a teaching arrow's own, a role's from the table, else
+  // its body's
+  Color penColor(const Pen& pen) const;
 };
 
 }  // namespace render::draw

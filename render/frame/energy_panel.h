@@ -4,6 +4,7 @@
 // frame to frame. With `momentum: true`, p and L about the origin as text below (or alone).
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -38,16 +39,27 @@ std::vector<EnergyBar> energyBars(const render::scene::Scene& def, const sim::wo
 // 3D frames alike.
 class BarPanel {
  public:
+  // `topPx`: the panel's top edge (by default half a line in, as the clock)
   BarPanel(const std::vector<std::string>& widestBarTexts, const std::vector<std::string>& widestLines, double lowest,
-           double highest, const Camera& camera, double em);
-  // the bars (each with its value in J after its name) and the lines under them
-  void draw(const std::vector<EnergyBar>& bars, const std::vector<std::string>& lines, Canvas& draw) const;
+           double highest, const Camera& camera, double em, double topPx = -1.0);
+  // the bars (each with its value in J after its name, 0 below the run's noise floor) and the lines
+  // under them; with `measure` (the frame's text widths, px) the panel widens to its widest line where
+  // the layout's estimate falls short, so that no number is cut
+  void draw(const std::vector<EnergyBar>& bars, const std::vector<std::string>& lines, Canvas& draw,
+            const std::function<int(const std::string&)>& measure = {}) const;
   // the panel's width at text size `em` px, insets excluded
   static double widthPx(const std::vector<std::string>& widestBarTexts, const std::vector<std::string>& widestLines, double em);
   // the right-hand band of the frame a panel of width `widthPx` takes, insets included, px
   static double bandPx(double widthPx, double em);
-  // a bar's text: "name = 1.50 J"
-  static std::string barText(const EnergyBar& bar);
+  // the top band of the frame a panel of `rows` rows (bars and lines) from `topPx` down takes, its
+  // inset below included, px
+  static double topBandPx(size_t rows, double em, double topPx);
+  // where a panel `widthPx` wide in a frame `frameWidth` wide starts, px from the top: half a line in,
+  // or under the texts of the top-left corner (`leftTexts`: the clock, the slow-motion note) where it
+  // would reach them
+  static double topPx(double widthPx, int frameWidth, double em, const std::vector<std::string>& leftTexts);
+  // a bar's text: "name = 1.50 J", 0 below `zeroBelow`
+  static std::string barText(const EnergyBar& bar, double zeroBelow = 0.0);
 
  private:
   // a pixel of the frame in world coordinates
@@ -55,18 +67,25 @@ class BarPanel {
 
   Camera camera_;
   double lowest_, span_;  // the bars' scale: the run's least value (≤ 0) and largest − least, J
+  double zeroBelow_;      // the bars' noise floor, J
   double em_;             // the text size, px
-  double left_, width_;   // the panel's left edge and width, px
-  double barLeft_, textLeft_;
+  double top_;            // the panel's top edge, px
+  double width_;          // the panel's width as laid out from the run's widest texts, px
 };
 
 class EnergyPanel {
  public:
   EnergyPanel(const render::scene::Scene& def, const Camera& camera, const RunSurvey& survey);
-  void draw(const sim::world::World& world, Canvas& draw) const;
+  // `measure`: the frame's text widths (px), or none (the panel's estimate)
+  void draw(const sim::world::World& world, Canvas& draw, const std::function<int(const std::string&)>& measure = {}) const;
   // the width of the frame's right-hand band the panel takes, insets included (0 without a panel),
   // px: the automatic camera keeps the bodies out of it
   static double bandPx(const render::scene::Scene& def, const RunSurvey& survey, int heightPx);
+  // the height of the frame's top band it takes, insets included (0 without a panel), px: the
+  // automatic camera keeps the bodies under it where that shows them larger than beside it
+  static double topBandPx(const render::scene::Scene& def, const RunSurvey& survey, int widthPx, int heightPx);
+  // the panel's top edge in a frame of that size, px (BarPanel::topPx)
+  static double topPx(const render::scene::Scene& def, const RunSurvey& survey, int widthPx, int heightPx);
 
  private:
   // the widest texts over the run: each bar's name with the run's largest magnitude, negative; p and
@@ -88,6 +107,7 @@ class EnergyPanel {
   BarPanel panel_;
   // E, p (x, y) and L shown with their first digits wherever the run conserves them
   ConservedTotal energyTotal_, momentumX_, momentumY_, angularTotal_;
+  double momentumFloor_, angularFloor_;  // p's and L's noise floors
 };
 
 }  // namespace render::frame

@@ -10,7 +10,9 @@
 
 #include "render/draw/style.h"
 #include "render/frame/impulse_beside.h"
+#include "render/frame/overlay_key.h"
 #include "render/frame/trace_overlay.h"
+#include "render/frame/upcoming_events.h"
 #include "render/scene/scene_style.h"
 #include "sim/collision/collide.h"
 #include "sim/debug/describe.h"
@@ -114,11 +116,13 @@ void FramePainter::paint(const sim::world::World& world, const History& history,
   RoleFilter moving(draw, [](Role role) { return role != Role::StaticBody; });
   PhysicsDraw movingPhysics(moving);
   sim::debug::describeBodies(world, movingPhysics);
-  PhysicsDraw physics(draw);
+  // what the overlays drew, for the key to those not labelled where they are
+  OverlaysSeen seen(draw);
+  PhysicsDraw physics(seen);
   // coils 2.5 line widths to each side: visible, and narrower than most bodies
   if (r.springs) sim::debug::describeSprings(world, 2.5 * lineWidthFor(def_.render, camera_.heightPx()) * px, physics);
   // impulses beside the normals they share a line with, so that both show
-  ImpulseBeside beside(draw, impulseOffsetPx(lineWidthFor(r, camera_.heightPx())) * px);
+  ImpulseBeside beside(seen, impulseOffsetPx(lineWidthFor(r, camera_.heightPx())) * px);
   // contacts: dots and normals while few are on screen, else (contacts: auto) dots alone, which
   // still show where bodies touch without a thicket of arrows over them
   // counted first, then drawn (a copy of tens of thousands of calls made a frame of a 5,050-box
@@ -138,6 +142,10 @@ void FramePainter::paint(const sim::world::World& world, const History& history,
   } else {
     history.drawAfterimages(world.time, beside);
   }
+  // a poll's frames show the impulses still to come, dashed, so that its question can be asked from
+  // the picture (struck at the center, or at the end?)
+  if (!r.poll.question.empty() && r.impulses)
+    drawUpcomingEvents(world, impulseScale_, camera_, lineWidthFor(r, camera_.heightPx()), draw);
   const double textSize = fontSizeFor(r, camera_.heightPx()) * px;
   // the overlay of every polygon pair closer than a tenth of the view (so, as they approach), its
   // label a line of text out from the edge
@@ -159,7 +167,11 @@ void FramePainter::paint(const sim::world::World& world, const History& history,
     const double inset = 0.5 * textSize / px;
     draw.text(camera_.toWorld({inset, inset}), timeText(world.time), {Role::Caption, -1, 1.0});
   }
-  if (r.overlays.energy || r.overlays.momentum) panel_.draw(world, draw);
+  if (r.overlays.energy || r.overlays.momentum) panel_.draw(world, draw, textWidth_);
+  // the key under the clock (and the slow-motion note, and the overlay's legend)
+  if (r.key)
+    drawOverlayKey(overlayKeyRows(seen, r.overlays.impactValues), camera_, fontSizeFor(r, camera_.heightPx()), keyFirstRow(r),
+                   draw);
   paintTimingText(world.time, draw);
   draw.finish();
   dropped_.report(draw.dropped(), world.time);

@@ -16,10 +16,14 @@ using namespace render::draw;
 namespace {
 
 constexpr double kNever = std::numeric_limits<double>::infinity();
-// what covering each thing costs, in lines of text: another body as much as moving three lines (text
-// across a body hides what the frame is about), a line, an arrow or a dot a line and a half, a static
-// body's hatching or a trail (which a halo reads over) less than a third of a line
-constexpr double kBody = 3.0, kCovers = 1.5, kFaint = 0.3;
+// what covering each thing costs, in lines of text: another body more than any move (text across a
+// body hides what the frame is about), a line, an arrow or a dot more than a move too (a text crossed
+// by an arrow reads as neither), a static body's hatching or a trail (which a backing or a halo reads
+// over) less than a third of a line. So a text covers a body or crosses a line only where no spot
+// within reach is free
+constexpr double kBody = 12.0, kCovers = 8.0, kFaint = 0.3;
+// the least space between two labels, in em: a word's space
+constexpr double kWordSpace = 0.35;
 // how far a label may move (in lines), its steps (in lines), and from how far it gets a leader line
 constexpr double kMaxMove = 4.0, kStep = 0.5, kLeaderFrom = 1.0;
 // a contact point's dot and an arrow's head (10 px long, 9 wide: gl_canvas.cpp) as discs, px
@@ -90,6 +94,7 @@ double weightOf(Role role, double opacity) {
     case Role::Trail:
     case Role::Path: w = kFaint; break;
     case Role::Panel: return kNever;  // the energy panel: its rows are its own
+    case Role::Backing: return 0.0;
     case Role::KineticBar:
     case Role::RotationalBar:
     case Role::PotentialBar:
@@ -98,6 +103,9 @@ double weightOf(Role role, double opacity) {
   }
   return w * std::clamp(opacity, 0.0, 1.0);
 }
+
+// a body's or an obstacle's area, drawn solid: a text over it gets a backing
+bool solidRole(const Pen& pen) { return (pen.role == Role::Body || pen.role == Role::StaticBody) && pen.opacity >= 0.5; }
 
 Vec2 rotated(const Vec2& v, double angle) {
   const double c = std::cos(angle), s = std::sin(angle);
@@ -181,14 +189,16 @@ void LabelPlacer::polygon(const std::vector<Vec2>& vertices, const Pen& pen) {
   std::vector<Vec2> px;
   for (const Vec2& v : vertices) px.push_back(camera_.toPixel(v));
   // the pixel frame flips y, which turns the polygon's winding but not its convexity
-  addObstacle({Obstacle::Shape::Polygon, px, 0.0, boundsOf(px, 0.0), pen.body, weightOf(pen.role, pen.opacity), true});
+  addObstacle({Obstacle::Shape::Polygon, px, 0.0, boundsOf(px, 0.0), pen.body, weightOf(pen.role, pen.opacity), true, -1,
+               solidRole(pen)});
 }
 
 void LabelPlacer::circle(const Vec2& center, double radius, const Pen& pen) {
   target_.circle(center, radius, pen);
   const Vec2 c = camera_.toPixel(center);
   const double r = radius / camera_.pixelSize();
-  addObstacle({Obstacle::Shape::Disc, {c}, r, boundsOf({c}, r), pen.body, weightOf(pen.role, pen.opacity), true});
+  addObstacle(
+      {Obstacle::Shape::Disc, {c}, r, boundsOf({c}, r), pen.body, weightOf(pen.role, pen.opacity), true, -1, solidRole(pen)});
 }
 
 void LabelPlacer::halfPlane(const Vec2& point, const Vec2& normal, const Pen& pen) {
@@ -196,7 +206,8 @@ void LabelPlacer::halfPlane(const Vec2& point, const Vec2& normal, const Pen& pe
   if (!(normal.norm() > 0.0)) return;
   const Vec2 p = camera_.toPixel(point), n = Vec2(normal.x(), -normal.y()).normalized();
   const PixelBox frame{0, 0, static_cast<double>(camera_.widthPx()), static_cast<double>(camera_.heightPx())};
-  addObstacle({Obstacle::Shape::HalfPlane, {p, n}, 0.0, frame, pen.body, weightOf(pen.role, pen.opacity), true});
+  addObstacle(
+      {Obstacle::Shape::HalfPlane, {p, n}, 0.0, frame, pen.body, weightOf(pen.role, pen.opacity), true, -1, solidRole(pen)});
   // its boundary is a line like any other
   const Vec2 along(-n.y(), n.x());
   const double reach = camera_.widthPx() + camera_.heightPx();
@@ -259,15 +270,48 @@ PixelBox LabelPlacer::boxAt(const Vec2& center, const Pending& p) const {
   return {center.x() - 0.5 * w, center.y() - 0.5 * line_, center.x() + 0.5 * w, center.y() + 0.5 * line_};
 }
 
+bool LabelPlacer::hits(const Obstacle& o, const PixelBox& box) {
+  switch (o.shape) {
+    case Obstacle::Shape::Polygon: return polygonOverlapsBox(o.points, box);
+    case Obstacle::Shape::Disc: return (closestInBox(box, o.points[0]) - o.points[0]).norm() < o.radius;
+    case Obstacle::Shape::Stroke: {
+      const Vec2 &a = o.points[0], &b = o.points[1];
+      if (segmentCrossesBox(a, b, box)) return true;
+      double d = std::min((closestInBox(box, a) - a).norm(), (closestInBox(box, b) - b).norm());
+      for (const Vec2& c :
+           {Vec2(box.left, box.top), Vec2(box.right, box.top), Vec2(box.right, box.bottom), Vec2(box.left, box.bottom)})
+        d = std::min(d, distanceToSegment(c, a, b));
+      return d < o.radius;
+    }
+    case Obstacle::Shape::HalfPlane: {
+      // the solid side is n·(r − p) ≤ 0
+      const Vec2 &q = o.points[0], &n = o.points[1];
+      double least = kNever;
+      for (const Vec2& c :
+           {Vec2(box.left, box.top), Vec2(box.right, box.top), Vec2(box.right, box.bottom), Vec2(box.left, box.bottom)})
+        least = std::min(least, n.dot(c - q));
+      return least <= 0.0;
+    }
+  }
+  return false;
+}
+
 double LabelPlacer::cost(const PixelBox& box, const Pending& p, size_t self) const {
-  // possible: inside the frame, clear of the texts placed and of the other labels' anchors
+  // possible: inside the frame, clear of the texts placed (of text fixed to the frame, the clock and
+  // the caption, by half a line: a label beside a caption's line reads as part of it) and of the
+  // other labels' anchors
   if (box.left < 0.0 || box.top < 0.0 || box.right > camera_.widthPx() || box.bottom > camera_.heightPx()) return kNever;
-  const PixelBox clear = box.grown(pad_);
-  for (size_t k : placedGrid_.near(clear))
-    if (clear.overlaps(placed_[k].box)) return kNever;
-  // a label beyond its anchor never covers it either (one on its anchor does, by design)
+  // two labels a word's space apart at least, so that "bar" and "v = 0 m/s" never read as one
+  const PixelBox clear = box.grown(pad_), spaced = box.grown(std::max(pad_, kWordSpace * fontPx_)),
+                 apart = box.grown(std::max(pad_, 0.5 * line_));
+  for (size_t k : placedGrid_.near(apart))
+    if ((placed_[k].anchor ? spaced : apart).overlaps(placed_[k].box)) return kNever;
+  // a label beyond its anchor never covers it either (one on its anchor does, by design); an anchor
+  // it shares (a zero-length arrow at a body's center, labelled beyond it) is its own
   for (size_t i : anchorGrid_.near(clear))
-    if (!pending_[i].fixed && (i != self || !p.direction.isZero()) && clear.contains(pending_[i].anchor)) return kNever;
+    if (!pending_[i].fixed && (i != self || !p.direction.isZero()) && clear.contains(pending_[i].anchor) &&
+        (i == self || (pending_[i].anchor - p.anchor).norm() > 1.0))
+      return kNever;
   // what it covers, each polyline once (in the order drawn, as the pieces of a polyline come)
   double covered = 0.0;
   int lastGroup = -1;
@@ -280,34 +324,7 @@ double LabelPlacer::cost(const PixelBox& box, const Pending& p, size_t self) con
     // to frame as arrows turn and fade: only areas move it
     if (o.body >= 0 && o.body == p.pen.body && o.area && o.weight < kNever) continue;
     if (p.direction.isZero() && !o.area) continue;
-    bool hit = false;
-    switch (o.shape) {
-      case Obstacle::Shape::Polygon: hit = polygonOverlapsBox(o.points, box); break;
-      case Obstacle::Shape::Disc: hit = (closestInBox(box, o.points[0]) - o.points[0]).norm() < o.radius; break;
-      case Obstacle::Shape::Stroke: {
-        const Vec2 &a = o.points[0], &b = o.points[1];
-        hit = segmentCrossesBox(a, b, box);
-        if (!hit) {
-          double d = std::min((closestInBox(box, a) - a).norm(), (closestInBox(box, b) - b).norm());
-          for (const Vec2& c :
-               {Vec2(box.left, box.top), Vec2(box.right, box.top), Vec2(box.right, box.bottom), Vec2(box.left, box.bottom)})
-            d = std::min(d, distanceToSegment(c, a, b));
-          hit = d < o.radius;
-        }
-        break;
-      }
-      case Obstacle::Shape::HalfPlane: {
-        // the solid side is n·(r − p) ≤ 0
-        const Vec2 &q = o.points[0], &n = o.points[1];
-        double least = kNever;
-        for (const Vec2& c :
-             {Vec2(box.left, box.top), Vec2(box.right, box.top), Vec2(box.right, box.bottom), Vec2(box.left, box.bottom)})
-          least = std::min(least, n.dot(c - q));
-        hit = least <= 0.0;
-        break;
-      }
-    }
-    if (hit) {
+    if (hits(o, box)) {
       if (o.weight == kNever) return kNever;
       covered += o.weight;
       lastGroup = o.group;
@@ -316,14 +333,25 @@ double LabelPlacer::cost(const PixelBox& box, const Pending& p, size_t self) con
   return covered * line_;
 }
 
+bool LabelPlacer::overSolid(const PlacedText& t) const {
+  for (size_t k : obstacleGrid_.near(t.box)) {
+    const Obstacle& o = obstacles_[k];
+    // a body's name on its own body reads with its halo over the body's light fill
+    if (!o.solid || (o.body >= 0 && o.body == t.pen.body && t.anchor)) continue;
+    if (o.bounds.overlaps(t.box) && hits(o, t.box)) return true;
+  }
+  return false;
+}
+
 void LabelPlacer::place(const Pending& p, size_t self) {
   const double halfWidth = 0.5 * p.width, halfHeight = 0.5 * line_, gap = fontPx_ / 3.0;
   const Vec2 preferred = p.fixed ? p.anchor : labelCenter(p.anchor, p.direction, halfWidth, halfHeight, gap);
   PlacedText out{p.text, p.pen, boxAt(preferred, p), p.fixed ? std::nullopt : std::optional<Vec2>(p.anchor), false};
   if (p.fixed) {
-    // text fixed to the frame moves for nothing; it only must not land on another
+    // text fixed to the frame moves for nothing; it only must not land on another (rows a line apart
+    // touch, and the round trip through world units leaves them a hair's breadth over: no overlap)
     for (const PlacedText& t : placed_)
-      if (out.box.overlaps(t.box)) {
+      if (out.box.grown(-1e-6).overlaps(t.box)) {
         dropped_.push_back(out);
         return;
       }
@@ -388,6 +416,14 @@ void LabelPlacer::finish() {
       if (group == pass) order.push_back(i);
     }
   for (size_t i : order) place(pending_[i], i);
+  // a backing under each text over hatching or another body, so that it reads from the back row
+  for (const PlacedText& t : placed_) {
+    if (!overSolid(t)) continue;
+    const PixelBox b = t.box.grown(pad_);
+    target_.polygon({camera_.toWorld({b.left, b.top}), camera_.toWorld({b.right, b.top}), camera_.toWorld({b.right, b.bottom}),
+                     camera_.toWorld({b.left, b.bottom})},
+                    {Role::Backing, -1, t.pen.opacity});
+  }
   // leader lines under the texts, then the texts where they were placed
   for (const PlacedText& t : placed_) {
     if (!t.leader) continue;

@@ -16,9 +16,10 @@
 // over lines with its halo, and stays put rather than hop as arrows turn and fade)
 //
 // and a spot is possible only inside the frame, clear of every text already placed (by the halo's
-// width), of every other label's anchor and of the energy panel. A label moved more than a line gets
-// a thin leader line back to its anchor; one with no possible spot within four lines is dropped
-// and reported, never drawn over another.
+// width; of text fixed to the frame by half a line), of every other label's anchor and of the energy
+// panel. A text placed over hatching or another body gets a backing of the background under it. A label moved more than a line
+// gets a thin leader line back to its anchor; one with no possible spot within four lines is dropped and reported, never drawn
+// over another.
 //
 //            ┌─────────┐  ← swung 45° when the first spot is taken
 //     ●──────▶ label   │  ← preferred: beyond the head, a third of a line clear
@@ -92,6 +93,7 @@ class LabelPlacer final : public Canvas {
     double weight = 0.0;       // what covering it costs, in lines; infinity: never
     bool area = false;         // a body's area rather than a mark drawn for it
     int group = -1;            // the pieces of one polyline (a trail, an arc) share one: covered once
+    bool solid = false;        // a body's or a static body's area: a text over it gets a backing
   };
   struct Pending {
     Vec2 anchor;     // px
@@ -124,6 +126,10 @@ class LabelPlacer final : public Canvas {
     mutable unsigned query_ = 0;
   };
   PixelBox boxAt(const Vec2& center, const Pending& p) const;
+  // does the obstacle's shape meet the box?
+  static bool hits(const Obstacle& o, const PixelBox& box);
+  // does a placed text stand over hatching or another body (and so need a backing)?
+  bool overSolid(const PlacedText& t) const;
   double cost(const PixelBox& box, const Pending& p, size_t self) const;  // infinity: not possible
   void place(const Pending& p, size_t self);
   void addObstacle(Obstacle o);

@@ -25,7 +25,8 @@ bool fixedToFrame(Role r) {
     case Role::RotationalBar:
     case Role::PotentialBar:
     case Role::TotalBar:
-    case Role::Panel: return true;
+    case Role::Panel:
+    case Role::Backing: return true;
     default: return false;
   }
 }

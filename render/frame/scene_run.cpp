@@ -123,9 +123,14 @@ void SceneRun::frameAt(double t, Image& frame) {
   paint(reach(t), {}, frame);
 }
 
-void SceneRun::paint(const State& state, const std::vector<DrawList>& ghosts, Image& frame) {
+void SceneRun::paint(const State& state, const std::vector<DrawList>& ghosts, Image& frame, DrawList* list) {
   canvas_->begin(camera_);
-  painter_.paint(state.world, state.history, ghosts, *canvas_);
+  if (list) {
+    BothCanvases both(*canvas_, *list);
+    painter_.paint(state.world, state.history, ghosts, both);
+  } else {
+    painter_.paint(state.world, state.history, ghosts, *canvas_);
+  }
   canvas_->finish(frame);
 }
 
@@ -155,6 +160,17 @@ void SceneRun::framesAt(const std::vector<double>& instants, int strobe, const s
     Image frame;
     paint(state, ghosts, frame);
     shot(i, std::move(frame));
+  });
+}
+
+void SceneRun::framesAndListsAt(const std::vector<double>& instants, int strobe,
+                                const std::function<void(size_t, Image, DrawList)>& shot) {
+  if (!canvas_) throw std::logic_error("SceneRun::framesAndListsAt needs a GL context");
+  picturesAt(instants, strobe, [&](size_t i, const State& state, const std::vector<DrawList>& ghosts) {
+    Image frame;
+    DrawList list;
+    paint(state, ghosts, frame, &list);
+    shot(i, std::move(frame), std::move(list));
   });
 }
 

@@ -54,6 +54,9 @@ class SceneRun {
   // earliest first: the run goes once through all of them and their ghosts (with ghosts it must be
   // fresh). Throws as frameAt.
   void framesAt(const std::vector<double>& instants, int strobe, const std::function<void(size_t, Image)>& shot);
+  // the same, each frame with its draw list (what `snapshot --draw-list` writes beside it)
+  void framesAndListsAt(const std::vector<double>& instants, int strobe,
+                        const std::function<void(size_t, Image, DrawList)>& shot);
   // the same as draw lists, without GL
   void drawListsAt(const std::vector<double>& instants, int strobe, const std::function<void(size_t, DrawList)>& shot);
   // what a golden record takes of an instant: the world there (its state hash and trace rows), and
@@ -101,8 +104,8 @@ class SceneRun {
   // the pictures at `instants`, each with its ghosts, from the one run, earliest first
   void picturesAt(const std::vector<double>& instants, int strobe,
                   const std::function<void(size_t, const State&, const std::vector<DrawList>&)>& picture);
-  // the frame of `state` through GL
-  void paint(const State& state, const std::vector<DrawList>& ghosts, Image& frame);
+  // the frame of `state` through GL (and recorded into `list`, when given)
+  void paint(const State& state, const std::vector<DrawList>& ghosts, Image& frame, DrawList* list = nullptr);
 
   const render::scene::Scene& def_;
   Camera camera_;

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "render/draw/style.h"
 #include "render/frame/caption.h"
+#include "render/frame/contact_forces.h"
 #include "render/frame/energy_panel.h"
 #include "render/frame/point_forces.h"
 #include "render/jobs/interrupt.h"
@@ -37,6 +39,16 @@ class Surveyor : public sim::world::StepObserver {
       if (!(reach <= out_.farthest)) out_.farthest = reach, out_.farthestBody = static_cast<int>(i);
     }
     surveyOverlays(def_, world, out_);
+    // another run drawn over ours (--overlay): its bodies in the picture too, so that the automatic
+    // camera shows both runs (a student's bar that flies off is not lost while the legend names it)
+    if (const auto& overlay = def_.render.overlay)
+      for (size_t i = 0; i < world.bodies.size(); ++i) {
+        render::scene::TraceOverlayDef::Pose pose;
+        if (world.bodies[i].shape.kind == sim::core::ShapeKind::Plane || !overlay->poseAt(i, world.time, pose)) continue;
+        sim::core::Body theirs = world.bodies[i];
+        theirs.x = pose.x, theirs.angle = pose.angle;
+        out_.bounds.add(bodyBounds(theirs));
+      }
   }
   void afterEvent(const sim::world::World& world, const sim::world::ImpulseEvent&) override { afterStep(world); }
 
@@ -80,6 +92,11 @@ RunSurvey surveyRun(const render::scene::Scene& def, double until) {
 }
 
 void surveyOverlays(const render::scene::Scene& def, const sim::world::World& world, RunSurvey& out) {
+  // the contact forces of the bodies whose arrows show them
+  for (const render::scene::ArrowDef& a : def.render.overlays.arrows)
+    if (a.show == render::scene::ArrowDef::Show::NormalForce || a.show == render::scene::ArrowDef::Show::Friction)
+      for (const ContactForce& f : contactForcesOn(world, a.body))
+        out.maxContactForce = std::max({out.maxContactForce, f.normal.norm(), f.friction.norm()});
   for (size_t i = 0; i < world.bodies.size(); ++i) {
     const sim::core::Body& b = world.bodies[i];
     if (b.isStatic) continue;
@@ -115,18 +132,29 @@ Camera cameraFor(const render::scene::Scene& def, const RunSurvey& survey) { ret
 Camera cameraFor(const render::scene::Scene& def, const RunSurvey& survey, const Bounds& bounds) {
   const render::scene::RenderDef& r = def.render;
   if (!r.camera.automatic) return Camera(r.camera.center, r.camera.height, r.width, r.height);
-  // with a caption the bodies are fitted above its band, and with an energy panel left of it, so
-  // that neither ever covers them
+  // with a caption the bodies are fitted above its band, and with an energy panel beside it or under
+  // it, whichever shows them larger, so that neither ever covers them
   const double band = captionOf(def).empty() ? 0.0 : captionLayout(fontSizeFor(r, r.height)).band();
   const int above = static_cast<int>(std::lround(r.height - band));
-  // (a panel wider than half a small frame is drawn over the bodies instead: they need the room more)
-  const double panel = EnergyPanel::bandPx(def, survey, r.height);
-  const int left = static_cast<int>(std::lround(panel <= 0.5 * r.width ? r.width - panel : r.width));
-  const Camera fitted = Camera::fit(bounds, r.camera.margin, left, above);
-  if (above == r.height && left == r.width) return fitted;
+  // the part of the frame left free for the bodies, px (y down): x in [0, right), y in [top, above)
+  int right = r.width, top = 0;
+  Camera fitted = Camera::fit(bounds, r.camera.margin, right, above);
+  if (const double panel = EnergyPanel::bandPx(def, survey, r.height); panel > 0.0) {
+    const int beside = static_cast<int>(std::lround(r.width - panel));
+    const int under = static_cast<int>(std::lround(EnergyPanel::topBandPx(def, survey, r.width, r.height)));
+    const auto fits = [](int w, int h) { return w >= kMinFrameSide && h >= kMinFrameSide; };
+    std::optional<Camera> besideIt, underIt;
+    if (fits(beside, above)) besideIt = Camera::fit(bounds, r.camera.margin, beside, above);
+    if (fits(r.width, above - under)) underIt = Camera::fit(bounds, r.camera.margin, r.width, above - under);
+    // beside it unless under it shows the bodies clearly larger (a tenth): a frame keeps its look
+    // where both do alike
+    if (underIt && (!besideIt || underIt->pixelSize() < 0.9 * besideIt->pixelSize())) fitted = *underIt, top = under;
+    else if (besideIt) fitted = *besideIt, right = beside;
+  }
+  if (right == r.width && top == 0 && above == r.height) return fitted;
   // the same scale over the whole frame, the fitted region's center moved to the middle of the free part
   const double px = fitted.pixelSize();
-  const Vec2 shift(0.5 * (r.width - left) * px, -0.5 * (r.height - above) * px);
+  const Vec2 shift((0.5 * r.width - 0.5 * right) * px, -(0.5 * r.height - 0.5 * (top + above)) * px);
   return Camera(fitted.center() + shift, px * r.height, r.width, r.height);
 }
 
@@ -157,16 +185,18 @@ void shareScales(const std::vector<RunSurvey*>& surveys) {
     all.maxImpulse = std::max(all.maxImpulse, s->maxImpulse);
     all.maxOmega = std::max(all.maxOmega, s->maxOmega);
     all.maxForce = std::max(all.maxForce, s->maxForce);
+    all.maxContactForce = std::max(all.maxContactForce, s->maxContactForce);
     all.maxTorque = std::max(all.maxTorque, s->maxTorque);
     all.maxMomentum = std::max(all.maxMomentum, s->maxMomentum);
-    all.minEnergy = std::min(all.minEnergy, s->minEnergy);
-    all.maxEnergy = std::max(all.maxEnergy, s->maxEnergy);
     all.maxLinearMomentum = std::max(all.maxLinearMomentum, s->maxLinearMomentum);
     all.maxAngularMomentum = std::max(all.maxAngularMomentum, s->maxAngularMomentum);
   }
   for (RunSurvey* s : surveys) {
     all.bounds = s->bounds;
     all.impactTimes = s->impactTimes;
+    // each panel's energy bars on its own run's scale: a 0.5 J variant's bars do not vanish beside a
+    // 200 J one (the values are written beside them)
+    all.minEnergy = s->minEnergy, all.maxEnergy = s->maxEnergy;
     *s = all;
   }
 }

@@ -23,6 +23,7 @@ struct RunSurvey {
   // the lecture overlays' scales (render.overlays)
   double maxOmega = 0.0;                    // |ω| of any body, rad/s
   double maxForce = 0.0;                    // of any point force while it is on, N
+  double maxContactForce = 0.0;             // of any contact's normal or friction force (arrows that show them), N
   double maxTorque = 0.0;                   // |Σ r′ × f| of the point forces on any body, N·m
   double maxMomentum = 0.0;                 // |m v| of any moving body, kg·m/s
   double minEnergy = 0.0, maxEnergy = 0.0;  // of any bar of the energy panel (≤ 0, ≥ 0), J
@@ -35,8 +36,9 @@ RunSurvey surveyRun(const render::scene::Scene& def, double until = -1.0);
 // the overlays' extremes of the world now, added into `out` (by surveyRun after every step)
 void surveyOverlays(const render::scene::Scene& def, const sim::world::World& world, RunSurvey& out);
 
-// every survey's arrow and bar scales (not its bounds or impacts) set to the extremes over all of
-// them, so that side-by-side pictures of variants compare at one scale
+// every survey's arrow scales and momenta (not its bounds, impacts or energy bars) set to the extremes
+// over all of them, so that side-by-side pictures of variants compare at one scale; each keeps its
+// energy bars' own scale, which its values are written beside
 void shareScales(const std::vector<RunSurvey*>& surveys);
 
 // the region a body's shape covers now (its position alone for shapes without an extent)

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "render/draw/style.h"
+#include "render/frame/contact_forces.h"
 #include "render/frame/label_place.h"
 #include "render/frame/point_forces.h"
 #include "render/frame/quantity_text.h"
@@ -37,6 +38,8 @@ Role roleOf(Show show) {
     case Show::Force: return Role::Force;
     case Show::Torque: return Role::Torque;
     case Show::Momentum: return Role::Momentum;
+    case Show::NormalForce: return Role::NormalForce;
+    case Show::Friction: return Role::Friction;
   }
   return Role::Velocity;
 }
@@ -52,10 +55,17 @@ TeachingArrows::TeachingArrows(const render::scene::Scene& def, const Camera& ca
     : px_(camera.pixelSize()),
       viewHeight_(camera.worldHeight()),
       velocityScale_(velocityScale),
-      forceScale_(arrowScale(def.render.overlays.forceScale, survey.maxForce, camera)),
+      // point and contact forces on one scale: a push beside the friction that holds against it
+      forceScale_(arrowScale(def.render.overlays.forceScale, std::max(survey.maxForce, survey.maxContactForce), camera)),
       momentumScale_(arrowScale(def.render.overlays.momentumScale, survey.maxMomentum, camera)),
       maxOmega_(survey.maxOmega),
-      maxTorque_(survey.maxTorque) {
+      maxTorque_(survey.maxTorque),
+      speedFloor_(noiseFloor(survey.maxSpeed + survey.maxOmega * camera.worldHeight())),
+      forceFloor_(noiseFloor(std::max(survey.maxForce, survey.maxContactForce))),
+      momentumFloor_(noiseFloor(survey.maxMomentum)),
+      omegaFloor_(noiseFloor(survey.maxOmega)),
+      torqueFloor_(noiseFloor(survey.maxTorque)),
+      lengthFloor_(noiseFloor(camera.worldHeight())) {
   int paths = 0;
   for (const render::scene::ArrowDef& a : def.render.overlays.arrows) {
     // `at` is written as a force's point: in the shape's coordinates, before the centroid shift
@@ -81,6 +91,8 @@ std::string TeachingArrows::defaultLabel(Show show) {
     case Show::Force: return "f";
     case Show::Torque: return "τ";
     case Show::Momentum: return "p";
+    case Show::NormalForce: return "N";
+    case Show::Friction: return "F_f";
   }
   return "";
 }
@@ -116,19 +128,24 @@ void TeachingArrows::drawOne(const Arrow& a, int index, const sim::world::World&
   const sim::core::Body& b = world.bodies[a.def.body];
   const Pen style{roleOf(a.def.show), a.def.body, 1.0, a.def.color.empty() ? -1 : index};
   const Vec2 point = b.pose().toWorld(a.local);
-  // the value after the label: " = 1.25 m/s"
-  const auto value = [](double x, const std::string& unit) { return quantityText("", x, unit); };
-  // a straight arrow from `tail` along `vector`, labeled past its head; none under a pixel long
+  // the value after the label: " = 1.25 m/s", 0 below its noise floor
+  const auto value = [](double x, const std::string& unit, double floor) { return quantityText("", x, unit, floor); };
+  // a straight arrow from `tail` along `vector`, labeled past its head; one under a pixel long is a
+  // dot with its label, out from the body's center (the rolling disk's "v = 0" at its contact)
   const auto straight = [&](const Vec2& tail, const Vec2& vector, const std::string& shown) {
-    if (!(vector.norm() > px_)) return;
-    draw.arrow(tail, tail + vector, style);
-    label(a, shown, tail + vector, vector.normalized(), draw);
+    if (vector.norm() > px_) {
+      draw.arrow(tail, tail + vector, style);
+      label(a, shown, tail + vector, vector.normalized(), draw);
+      return;
+    }
+    draw.point(tail, style);
+    label(a, shown, tail, directionOr(tail - b.x, Vec2::UnitY()), draw);
   };
   switch (a.def.show) {
     case Show::Velocity: {
       // the notes' velocity of a body point: v + ω × r′
       const Vec2 v = b.pointVelocity(point);
-      straight(point, velocityScale_ * v, value(v.norm(), "m/s"));
+      straight(point, velocityScale_ * v, value(v.norm(), "m/s", speedFloor_));
       break;
     }
     case Show::Offset: {
@@ -136,13 +153,23 @@ void TeachingArrows::drawOne(const Arrow& a, int index, const sim::world::World&
       if (!(r.norm() > px_)) break;
       draw.arrow(b.x, point, style);
       // beside its middle, to the left: its head is where a velocity arrow starts
-      label(a, value(r.norm(), "m"), 0.5 * (b.x + point), Vec2(-r.y(), r.x()).normalized(), draw);
+      label(a, value(r.norm(), "m", lengthFloor_), 0.5 * (b.x + point), Vec2(-r.y(), r.x()).normalized(), draw);
       break;
     }
-    case Show::Momentum: straight(b.x, momentumScale_ * b.mass * b.v, value(b.mass * b.v.norm(), "kg·m/s")); break;
+    case Show::Momentum:
+      straight(b.x, momentumScale_ * b.mass * b.v, value(b.mass * b.v.norm(), "kg·m/s", momentumFloor_));
+      break;
     case Show::Force:
       for (const AppliedForce& f : pointForcesOn(world, a.def.body))
-        straight(f.point, forceScale_ * f.force, value(f.force.norm(), "N"));
+        straight(f.point, forceScale_ * f.force, value(f.force.norm(), "N", forceFloor_));
+      break;
+    case Show::NormalForce:
+    case Show::Friction:
+      // at each pair the body touches, from where its normal impulses are centred
+      for (const ContactForce& f : contactForcesOn(world, a.def.body)) {
+        const Vec2 force = a.def.show == Show::NormalForce ? f.normal : f.friction;
+        straight(f.point, forceScale_ * force, value(force.norm(), "N", forceFloor_));
+      }
       break;
     case Show::Omega:
     case Show::Torque: {
@@ -154,7 +181,7 @@ void TeachingArrows::drawOne(const Arrow& a, int index, const sim::world::World&
       if (!(largest > 0.0) || amount == 0.0) break;
       curvedArrow(b.x, radius, middle, kMaxSweep * amount / largest, px_, style, draw);
       const Vec2 out(0.0, omega ? 1.0 : -1.0);
-      label(a, value(amount, omega ? "rad/s" : "N·m"), b.x + radius * out, out, draw);
+      label(a, value(amount, omega ? "rad/s" : "N·m", omega ? omegaFloor_ : torqueFloor_), b.x + radius * out, out, draw);
       break;
     }
     case Show::Frame: {
@@ -170,7 +197,7 @@ void TeachingArrows::drawOne(const Arrow& a, int index, const sim::world::World&
     case Show::Path: {
       History::drawPath(history.pointPath(a.path), 1.5 * px_, style, draw);
       draw.point(point, style);
-      label(a, vectorText("", point, "m"), point, directionOr(point - b.x, Vec2::UnitY()), draw);
+      label(a, vectorText("", point, "m", lengthFloor_), point, directionOr(point - b.x, Vec2::UnitY()), draw);
       break;
     }
   }

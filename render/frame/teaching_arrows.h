@@ -50,6 +50,8 @@ class TeachingArrows {
   double px_, viewHeight_;                             // world lengths of a pixel and of the view
   double velocityScale_, forceScale_, momentumScale_;  // m of arrow per m/s, N, kg·m/s
   double maxOmega_, maxTorque_;                        // the run's, for the curved arrows' sweeps
+  // the values' noise floors (quantity_text.h): speeds, forces, momenta, ω, τ and lengths below them are 0
+  double speedFloor_, forceFloor_, momentumFloor_, omegaFloor_, torqueFloor_, lengthFloor_;
 };
 
 }  // namespace render::frame

@@ -1,8 +1,10 @@
 #include "render/frame/trace_overlay.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
+#include "render/frame/dashed.h"
 #include "render/scene/scene_style.h"
 
 namespace render::frame {
@@ -17,26 +19,8 @@ constexpr double kDash = 4.0, kGap = 3.0;
 constexpr int kCircleSides = 64;
 // the legend's sample line, in line heights
 constexpr double kSample = 1.5;
-
-// the closed outline from `points`, dashed, continuing the pattern around the corners
-void dashedLoop(const std::vector<Vec2>& points, bool closed, double dash, double gap, const Pen& pen, Canvas& draw) {
-  if (!(dash > 0.0 && gap > 0.0)) return;
-  double phase = 0.0;  // along the pattern: [0, dash) drawn, [dash, dash + gap) not
-  const size_t n = points.size();
-  for (size_t i = 0; i + (closed ? 0 : 1) < n; ++i) {
-    const Vec2 a = points[i], b = points[(i + 1) % n];
-    const double length = (b - a).norm();
-    double at = 0.0;
-    while (at < length) {
-      const bool on = phase < dash;
-      const double step = std::min(length - at, on ? dash - phase : dash + gap - phase);
-      if (on && step > 0.0) draw.segment(a + (b - a) * (at / length), a + (b - a) * ((at + step) / length), pen);
-      at += step;
-      phase += step;
-      if (phase >= dash + gap) phase = 0.0;
-    }
-  }
-}
+// the arrow at the frame's edge toward a body of theirs out of it, and its inset, in 4 line widths
+constexpr double kEdgeArrow = 3.0;
 
 }  // namespace
 
@@ -51,6 +35,14 @@ void drawTraceOverlay(const render::scene::Scene& def, const render::scene::Trac
     const sim::core::Shape& shape = world.bodies[i].shape;
     if (shape.kind == sim::core::ShapeKind::Plane || !overlay.poseAt(i, world.time, p)) continue;
     const sim::core::Pose pose{p.x, sim::core::Rot::fromAngle(p.angle)};
+    // a body of theirs out of the frame (a fixed camera): an arrow at the frame's edge points to it
+    const Vec2 at = camera.toPixel(p.x);
+    const double edge = kEdgeArrow * lineWidth * 4.0;
+    const Vec2 inside(std::clamp(at.x(), edge, camera.widthPx() - edge), std::clamp(at.y(), edge, camera.heightPx() - edge));
+    if ((at - inside).norm() > edge) {
+      const Vec2 toward = (at - inside).normalized();
+      draw.arrow(camera.toWorld(inside - edge * toward), camera.toWorld(inside), pen);
+    }
     std::vector<Vec2> outline;
     if (shape.kind == sim::core::ShapeKind::Polygon) {
       for (const Vec2& v : shape.vertices) outline.push_back(pose.toWorld(v));
@@ -60,9 +52,9 @@ void drawTraceOverlay(const render::scene::Scene& def, const render::scene::Trac
         outline.push_back(pose.toWorld(shape.radius * Vec2(std::cos(a), std::sin(a))));
       }
       // its radius along the body's x axis, as our circles show their turn
-      dashedLoop({pose.x, pose.toWorld({shape.radius, 0.0})}, false, dash, gap, pen, draw);
+      dashedLine({pose.x, pose.toWorld({shape.radius, 0.0})}, false, dash, gap, pen, draw);
     }
-    dashedLoop(outline, true, dash, gap, pen, draw);
+    dashedLine(outline, true, dash, gap, pen, draw);
   }
   // the legend, under the clock and the slow-motion note: a solid sample for ours, a dashed one for theirs
   const int size = fontSizeFor(def.render, camera.heightPx());
@@ -74,7 +66,7 @@ void drawTraceOverlay(const render::scene::Scene& def, const render::scene::Trac
     const double middle = top + 0.5 * layout.line;
     const Vec2 a = camera.toWorld({layout.inset, middle}), b = camera.toWorld({layout.inset + sample, middle});
     if (row == 0) draw.segment(a, b, {Role::Caption, -1, 1.0});
-    else dashedLoop({a, b}, false, dash, gap, pen, draw);
+    else dashedLine({a, b}, false, dash, gap, pen, draw);
     draw.text(camera.toWorld({layout.inset + sample + 0.5 * layout.line, top}), row == 0 ? ours : theirs,
               {Role::Caption, -1, 1.0});
   }

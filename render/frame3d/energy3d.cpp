@@ -16,8 +16,10 @@ using sim::world3d::Vec3;
 
 namespace {
 
+// each component below its vector's noise floor written 0
 std::vector<std::string> momentumLines(const Vec3& p, const Vec3& l) {
-  return {render::frame::vectorText("p", p, "kg·m/s"), render::frame::vectorText("L", l, "kg·m²/s")};
+  return {render::frame::vectorText("p", p, "kg·m/s", render::frame::noiseFloor(p.norm())),
+          render::frame::vectorText("L", l, "kg·m²/s", render::frame::noiseFloor(l.norm()))};
 }
 
 }  // namespace

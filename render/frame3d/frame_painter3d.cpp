@@ -31,14 +31,6 @@ double arrowScale(double given, double largest, const Camera3d& camera) {
   return largest > 0.0 ? kArrowFraction * camera.viewHeight() / largest : 1.0;
 }
 
-// the center of `text`'s box (`em` its size, px) beyond `anchor` in the unit `direction`, a third of a
-// line clear of it: the half-extent of the box along the direction is its support distance
-Vec2 labelBeyond(const Vec2& anchor, const Vec2& direction, const std::string& text, double em) {
-  const double halfWidth = 0.5 * render::draw::approximateWidth(text, em), halfHeight = 0.5 * render::draw::kLineHeight * em;
-  const double reach = std::abs(direction.x()) * halfWidth + std::abs(direction.y()) * halfHeight;
-  return anchor + direction * (reach + em / 3.0);
-}
-
 // a unit vector along v, or `fallback` when v has no length
 Vec2 directionOr(const Vec2& v, const Vec2& fallback) {
   const double n = v.norm();
@@ -62,6 +54,7 @@ FramePainter3d::FramePainter3d(const render::scene3d::Scene& def, const Camera3d
     : def_(def),
       camera_(camera),
       overlay_(overlayCamera(camera.widthPx(), camera.heightPx())),
+      textWidth_(width),
       omegaScale_(arrowScale(def.space.omegaScale, survey.maxOmega, camera)),
       momentumScale_(arrowScale(def.space.angularMomentumScale, survey.maxAngularMomentum, camera)),
       velocityScale_(arrowScale(def.space.velocityScale, survey.maxSpeed, camera)),
@@ -70,6 +63,7 @@ FramePainter3d::FramePainter3d(const render::scene3d::Scene& def, const Camera3d
       planeMesh_(planeMesh(std::max(4.0 * survey.bounds.ball().radius, 1.0), 10)),
       planeCenter_(survey.bounds.ball().center),
       em_(render::scene::fontSizeFor(def.render, camera.heightPx())),
+      lengthFloor_(render::frame::noiseFloor(survey.bounds.ball().radius + survey.bounds.ball().center.norm())),
       panel_(def, overlay_, survey) {
   for (const sim::scene3d::BodyDef& b : def.model.bodies) {
     const Mesh m = meshOf(b.shape, kLeastSegments);
@@ -112,8 +106,8 @@ void FramePainter3d::arrow(const Vec3& tail, const Vec3& head, const Pen& pen, c
   if (!t || !h) return;
   // an arrow under a pixel long has nothing to show, not even its direction
   if ((*h - *t).norm() >= 1.0) draw.arrow(*t, *h, pen);
-  if (!label.empty())
-    draw.text(labelBeyond(*h, directionOr(*h - *t, Vec2::UnitY()), label, em_), label, {Role::Label, pen.body, 1.0});
+  // beyond its head, where the frame's placer finds room (L and ω side by side never overprint)
+  if (!label.empty()) draw.label(*h, directionOr(*h - *t, Vec2::UnitY()), label, {Role::Label, pen.body, 1.0});
 }
 
 void FramePainter3d::path(const std::vector<Vec3>& points, const Vec3& offset, const Pen& pen, Canvas& draw) const {
@@ -138,7 +132,10 @@ void FramePainter3d::paintArrows(const World& world, const History3d& history, C
     const Body& b = world.bodies[a.body];
     const int color = a.color.empty() ? -1 : static_cast<int>(k);
     const std::string name = a.label.empty() ? defaultLabel(a.show) : a.label;
-    auto labeled = [&](const Vec3& v, const char* unit) { return a.value ? render::frame::vectorText(name, v, unit) : name; };
+    // a component below the vector's noise floor (round-off of a turned vector: 1.19 × 10⁻¹⁴ beside 2) is 0
+    auto labeled = [&](const Vec3& v, const char* unit) {
+      return a.value ? render::frame::vectorText(name, v, unit, render::frame::noiseFloor(v.norm())) : name;
+    };
     switch (a.show) {
       case Arrow3dDef::Show::Axes: {
         const Mat3 r = b.rotation();
@@ -167,7 +164,7 @@ void FramePainter3d::paintArrows(const World& world, const History3d& history, C
         path(points, Vec3::Zero(), {Role::Path, a.body, 1.0, color}, draw);
         if (const std::optional<Vec2> p = screen(points.back())) {
           draw.point(*p, {Role::Path, a.body, 1.0, color});
-          if (!name.empty()) draw.text(labelBeyond(*p, Vec2::UnitY(), name, em_), name, {Role::Label, a.body, 1.0});
+          if (!name.empty()) draw.label(*p, Vec2::UnitY(), name, {Role::Label, a.body, 1.0});
         }
         break;
       }
@@ -183,13 +180,13 @@ void FramePainter3d::paintArrows(const World& world, const History3d& history, C
   }
 }
 
-std::vector<std::string> FramePainter3d::stateText(const Body& b) {
+std::vector<std::string> FramePainter3d::stateText(const Body& b, double lengthFloor) {
   char q[160], norm[64];
   std::snprintf(q, sizeof q, "q = [%s, %s, %s, %s]", render::frame::signedNumber(b.q.w(), 3).c_str(),
                 render::frame::signedNumber(b.q.x(), 3).c_str(), render::frame::signedNumber(b.q.y(), 3).c_str(),
                 render::frame::signedNumber(b.q.z(), 3).c_str());
   std::snprintf(norm, sizeof norm, "|q| = %.6f", b.q.norm());
-  return {render::frame::vectorText("x", b.x, "m"), q, norm};
+  return {render::frame::vectorText("x", b.x, "m", std::max(lengthFloor, render::frame::noiseFloor(b.x.norm()))), q, norm};
 }
 
 void FramePainter3d::paintText(const World& world, Canvas& draw) const {
@@ -205,7 +202,7 @@ void FramePainter3d::paintText(const World& world, Canvas& draw) const {
   if (!def_.render.slowMotion.empty()) row += 1.0;
   for (const Arrow3dDef& a : def_.space.arrows) {
     if (a.show != Arrow3dDef::Show::State) continue;
-    std::vector<std::string> lines = stateText(world.bodies[a.body]);
+    std::vector<std::string> lines = stateText(world.bodies[a.body], lengthFloor_);
     // several bodies: each block says whose
     if (world.bodies.size() > 1) {
       const std::string& label = def_.render.bodies[a.body].label;
@@ -285,7 +282,8 @@ void FramePainter3d::paint(const World& world, const History3d& history, Canvas3
     const Body& b = world.bodies[i];
     canvas.solid(meshFor(i, b), b.x, b.rotation(), {Role::Body, static_cast<int>(i), 1.0});
   }
-  Canvas& draw = canvas.overlay();
+  // every text through one placer, as a 2D frame's, so that no two overlap
+  render::frame::LabelPlacer draw(canvas.overlay(), overlay_, static_cast<int>(em_), textWidth_);
   paintContacts(world, draw);
   if (r.trails)
     for (size_t i = 0; i < world.bodies.size(); ++i)
@@ -308,11 +306,13 @@ void FramePainter3d::paint(const World& world, const History3d& history, Canvas3
       // below the body, clear of the arrows from its center
       const double radius = boundingRadius(b.shape) * camera_.pixelsPerMeter(c.z());
       const Vec2 below = overlayPoint(camera_.pixelOf(c), camera_.heightPx()) - Vec2(0.0, radius + 0.8 * em_);
-      draw.text(below, label, {Role::Label, static_cast<int>(i), 1.0});
+      draw.label(below, Vec2::Zero(), label, {Role::Label, static_cast<int>(i), 1.0});
     }
   if (def_.space.worldAxes) paintWorldAxes(draw);
   panel_.draw(world, draw);
   paintText(world, draw);
+  draw.finish();
+  dropped_.report(draw.dropped(), world.time);
 }
 
 }  // namespace render::frame3d

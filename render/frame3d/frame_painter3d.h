@@ -14,6 +14,7 @@
 #include "render/draw/canvas.h"
 #include "render/draw3d/canvas3d.h"
 #include "render/frame/caption.h"
+#include "render/frame/label_place.h"
 #include "render/frame3d/energy3d.h"
 #include "render/frame3d/history3d.h"
 #include "render/frame3d/survey3d.h"
@@ -38,7 +39,8 @@ class FramePainter3d {
   void showSlowMotion(std::function<double(double)> factorAt) { slowMotion_ = std::move(factorAt); }
 
   // "x = (1.00, −0.50, 0.20) m", "q = [0.924, 0.000, 0.383, 0.000]", "|q| = 1.000000"
-  static std::vector<std::string> stateText(const sim::world3d::Body& body);
+  // (positions below `lengthFloor` m, the noise floor of the run's extent, are 0)
+  static std::vector<std::string> stateText(const sim::world3d::Body& body, double lengthFloor = 0.0);
 
   double omegaScale() const { return omegaScale_; }
   double angularMomentumScale() const { return momentumScale_; }
@@ -59,7 +61,9 @@ class FramePainter3d {
 
   const render::scene3d::Scene& def_;
   Camera3d camera_;
-  render::draw::Camera overlay_;  // pixels, y up
+  render::draw::Camera overlay_;                  // pixels, y up
+  render::frame::TextWidth textWidth_;            // of the frame's texts, px (empty: estimated)
+  mutable render::frame::DroppedLabels dropped_;  // labels with no free spot, said once each per run
   // body i's mesh: one per shape and level of detail (mesh.h: segmentsFor its size on screen),
   // shared by every body of that shape and size, so that memory does not grow with the bodies
   const Mesh& meshFor(size_t body, const sim::world3d::Body& b) const;
@@ -71,6 +75,7 @@ class FramePainter3d {
   Mesh planeMesh_;                                     // every plane's patch, square around the run
   Vec3 planeCenter_;                                   // the center of the run's bounds, projected on each plane
   double em_;                                          // text size, px
+  double lengthFloor_ = 0.0;                           // positions below it are round-off, m
   EnergyPanel3d panel_;
   std::vector<std::string> captionLines_;
   std::function<double(double)> slowMotion_;

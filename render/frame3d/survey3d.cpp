@@ -82,8 +82,6 @@ void shareScales(const std::vector<RunSurvey3d*>& surveys) {
     all.maxSpeed = std::max(all.maxSpeed, s->maxSpeed);
     all.maxOmega = std::max(all.maxOmega, s->maxOmega);
     all.maxAngularMomentum = std::max(all.maxAngularMomentum, s->maxAngularMomentum);
-    all.minEnergy = std::min(all.minEnergy, s->minEnergy);
-    all.maxEnergy = std::max(all.maxEnergy, s->maxEnergy);
     all.maxLinearMomentum = std::max(all.maxLinearMomentum, s->maxLinearMomentum);
     all.maxWorldAngularMomentum = std::max(all.maxWorldAngularMomentum, s->maxWorldAngularMomentum);
     all.maxImpulse = std::max(all.maxImpulse, s->maxImpulse);
@@ -91,6 +89,8 @@ void shareScales(const std::vector<RunSurvey3d*>& surveys) {
   for (RunSurvey3d* s : surveys) {
     all.bounds = s->bounds;
     all.impactTimes = s->impactTimes;
+    // each panel's energy bars on its own run's scale (the values are written beside them)
+    all.minEnergy = s->minEnergy, all.maxEnergy = s->maxEnergy;
     *s = all;
   }
 }

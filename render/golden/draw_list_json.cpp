@@ -13,52 +13,10 @@ namespace render::golden {
 using namespace render::draw;
 using render::jobs::formatNumber;
 
-namespace {
-
-const char* kindName(DrawList::Kind k) {
-  switch (k) {
-    case DrawList::Kind::Polygon: return "polygon";
-    case DrawList::Kind::Circle: return "circle";
-    case DrawList::Kind::HalfPlane: return "halfplane";
-    case DrawList::Kind::Segment: return "segment";
-    case DrawList::Kind::Point: return "point";
-    case DrawList::Kind::Arrow: return "arrow";
-    case DrawList::Kind::Text: return "text";
-    case DrawList::Kind::Label: return "label";
-  }
-  return "?";
-}
-
-std::string hex(const Color& c) {
-  char s[16];
-  std::snprintf(s, sizeof s, "#%02x%02x%02x", Color::byte(c.r), Color::byte(c.g), Color::byte(c.b));
-  return s;
-}
-
-// the pen's base colour: a teaching arrow's own, a role's from the table, else its body's
-Color baseColor(const Style& style, const Pen& pen) {
-  if (pen.color >= 0 && pen.color < static_cast<int>(style.arrows.size()) && style.arrows[pen.color].a > 0.0)
-    return style.arrows[pen.color];
-  if (pen.role == Role::Body || pen.role == Role::StaticBody || pen.role == Role::BodyAxis || pen.role == Role::RotationalBar ||
-      pen.role == Role::Trail || info(pen.role).colorKey.empty())
-    return style.body(pen.body);
-  return style.role(pen.role);
-}
-
-// the pen as the draw-list line writes it: the word after the kind
-std::string penText(const DrawList::Call& call) {
-  DrawList one;
-  one.polygon({}, call.style);
-  const std::string line = one.lines().front();
-  return line.substr(line.find(' ') + 1);
-}
-
-}  // namespace
-
 DrawnFrame drawnFrame(const DrawList& list, const Style& style, const Camera& camera) {
   DrawnFrame f{camera.worldWidth(), camera.worldHeight(), {}};
   for (const DrawList::Call& c : list.calls()) {
-    DrawnCall d{kindName(c.kind), penText(c), hex(baseColor(style, c.style)), c.text, {}};
+    DrawnCall d{DrawList::kindName(c.kind), penName(c.style), style.penColor(c.style).hex(), c.text, {}};
     for (const Vec2& p : c.points) d.numbers.push_back(p.x()), d.numbers.push_back(p.y());
     if (c.kind == DrawList::Kind::Circle) d.numbers.push_back(c.radius);
     f.calls.push_back(std::move(d));

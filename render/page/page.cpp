@@ -32,11 +32,22 @@ std::string shown(double x, int digits = 4) {
   return buf;
 }
 
-std::string shownValues(const std::vector<double>& v) {
-  if (v.size() == 1) return shown(v[0], 6);
+// a value as the page shows it: 6 digits, and 0 below `zeroBelow` (round-off, not data)
+std::string shownValues(const std::vector<double>& v, double zeroBelow = 0.0) {
+  const auto one = [zeroBelow](double x) { return shown(std::abs(x) < zeroBelow ? 0.0 : x, 6); };
+  if (v.size() == 1) return one(v[0]);
   std::string s = "(";
-  for (size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + shown(v[i], 6);
+  for (size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + one(v[i]);
   return s + ")";
+}
+
+// a check's noise floor: 10⁻¹² of its largest value, at least of 1 (SI values of a lecture's scenes),
+// so that a simulated (8.9e-16, 2.2e-16) of a closed form (0, 0) reads (0, 0); its error says the rest
+double noiseFloorOf(const CheckRecord& c) {
+  double most = 1.0;
+  for (double x : c.expected) most = std::max(most, std::abs(x));
+  for (double x : c.actual) most = std::max(most, std::abs(x));
+  return 1e-12 * most;
 }
 
 // the scene file's own number, "10a" of 10a_energy_gain.yaml: its leading digits and the letters
@@ -143,8 +154,8 @@ void writeChecks(std::ostream& h, const std::vector<CheckRecord>& checks, bool e
   for (const CheckRecord* c : these)
     h << "<tr><td>" << escapeHtml(c->variant.empty() ? "—" : c->variant) << "</td><td class=\"number\">" << shown(c->time, 6)
       << "</td><td>" << escapeHtml(c->quantity) << "</td><td class=\"number\">" << shownValues(c->expected)
-      << "</td><td class=\"number\">" << shownValues(c->actual) << "</td><td class=\"number\">" << shown(c->error, 2)
-      << "</td><td class=\"number\">" << shown(c->tolerance, 2) << "</td><td class=\""
+      << "</td><td class=\"number\">" << shownValues(c->actual, noiseFloorOf(*c)) << "</td><td class=\"number\">"
+      << shown(c->error, 2) << "</td><td class=\"number\">" << shown(c->tolerance, 2) << "</td><td class=\""
       << (c->passed() ? "ok\">ok" : "failed\">FAILED") << "</td></tr>\n";
   h << "</tbody>\n" << kTableClose;
 }

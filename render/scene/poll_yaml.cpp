@@ -1,4 +1,5 @@
 // A poll's question apart from its answer: the top-level (or a variant's) `question:` and `answer:`,
+// a variant's `title:` (its panel's),
 // and the render: block's `answer_card` and `reveal`, read apart from the rest so that each stays small.
 #include "render/scene/render_yaml.h"
 
@@ -9,6 +10,7 @@ void readPoll(const YAML::Node& root, const YAML::Node& block, const Reader& rea
               PollDef& out) {
   reader.optional(root, "question", out.question, &Reader::text);
   reader.optional(root, "answer", out.answer, &Reader::text);
+  reader.optional(root, "title", out.title, &Reader::text);
   // the card shows the question, else the description (a scene written before `question:` existed)
   const YAML::Node shown = root["question"] ? root["question"] : root["description"];
   out.file = file;

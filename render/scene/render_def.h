@@ -74,7 +74,7 @@ struct BodyLook {
 
 // a teaching vector drawn every frame: one entry of `arrows:`
 struct ArrowDef {
-  enum class Show { Velocity, Offset, Omega, Frame, Path, Force, Torque, Momentum };
+  enum class Show { Velocity, Offset, Omega, Frame, Path, Force, Torque, Momentum, NormalForce, Friction };
   Show show = Show::Velocity;
   int body = 0;            // index into SceneDef::bodies, resolved when read
   Vec2 at = Vec2::Zero();  // body coordinates as written (before the centroid shift)
@@ -84,7 +84,7 @@ struct ArrowDef {
 };
 
 // the `show:` names
-inline constexpr sim::core::EnumNames<ArrowDef::Show, 8> kShowNames{{{
+inline constexpr sim::core::EnumNames<ArrowDef::Show, 10> kShowNames{{{
     {ArrowDef::Show::Velocity, "velocity"},
     {ArrowDef::Show::Offset, "offset"},
     {ArrowDef::Show::Omega, "omega"},
@@ -93,6 +93,8 @@ inline constexpr sim::core::EnumNames<ArrowDef::Show, 8> kShowNames{{{
     {ArrowDef::Show::Force, "force"},
     {ArrowDef::Show::Torque, "torque"},
     {ArrowDef::Show::Momentum, "momentum"},
+    {ArrowDef::Show::NormalForce, "normal_force"},
+    {ArrowDef::Show::Friction, "friction"},
 }}};
 
 // the lecture overlays of a frame (scenes/README.md, render:), all off by default
@@ -139,6 +141,7 @@ struct TraceOverlayDef {
 struct PollDef {
   std::string question;     // top-level (or a variant's) `question:`; empty: the card shows the description
   std::string answer;       // `answer:`; never drawn but on the answer card, never on the page but folded
+  std::string title;        // a variant's `title:`: its panel's title on a poll sheet ("A: at the center")
   double answerCard = 0.0;  // s of a closing card with the answer (`render: {answer_card}`); 0: none
   double reveal = -1.0;     // s from which a panel is labelled "answer" (`render: {reveal}`); < 0: never
   // where the card's text is written (the question, else the description), for a card that cannot fit
@@ -146,6 +149,9 @@ struct PollDef {
   int line = 0, column = 0;
   int answerLine = 0, answerColumn = 0;  // where `answer:` is written
   bool revealed(double t) const { return reveal >= 0.0 && t >= reveal; }
+  // does a picture at time t tell the answer? In a poll (a scene with a question) everything after
+  // t = 0 does, unless `reveal` marks it a question time (before it); elsewhere only from `reveal` on
+  bool tellsAnswer(double t) const { return question.empty() || reveal >= 0.0 ? revealed(t) : t > 0.0; }
 };
 
 struct RenderDef {
@@ -176,6 +182,7 @@ struct RenderDef {
   // most 20 bodies, and leader lines only for the scene's own `label:`s; `labels: true`: all, always
   bool labelsAuto = true;
   bool time = true;  // the time in a corner
+  bool key = true;   // a key to the overlays not labelled where they are drawn (overlay_key.h)
   // video timing and text (section B of the lecture pack): the opening card, the caption, slow motion
   std::string title;                    // the title card's; empty: the scene's name with '_' as spaces
   double titleCard = 0.0;               // s the video opens with a title card; 0: none

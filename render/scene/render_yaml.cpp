@@ -133,7 +133,7 @@ void readBlock(const YAML::Node& node, const Reader& reader, RenderDef& out) {
   reader.checkKeys(
       node,
       {"size", "fps", "background", "line_width", "font_size", "colors", "camera", "contacts", "contact_hold", "impulses",
-       "impulse_scale", "velocities", "velocity_scale", "trails", "sat", "strobe", "springs", "labels", "time", "panels",
+       "impulse_scale", "velocities", "velocity_scale", "trails", "sat", "strobe", "springs", "labels", "time", "key", "panels",
        // video timing and text
        "title", "title_card", "caption", "slow_motion", "answer_card", "reveal",
 
@@ -155,6 +155,7 @@ void readBlock(const YAML::Node& node, const Reader& reader, RenderDef& out) {
   reader.optional(node, "springs", out.springs, &Reader::boolean);
   readAuto(node, reader, "labels", out.labels, out.labelsAuto);
   reader.optional(node, "time", out.time, &Reader::boolean);
+  reader.optional(node, "key", out.key, &Reader::boolean);
   readTiming(node, reader, out);
 }
 

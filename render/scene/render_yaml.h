@@ -13,7 +13,7 @@ namespace render::scene {
 inline constexpr const char* kRenderKey = "render";
 inline const sim::yaml::Keys kBodyKeys = {"color", "label"};
 // the poll's texts at the top level (and in a variant), read here too (poll_yaml.cpp)
-inline const sim::yaml::Keys kPollKeys = {"question", "answer"};
+inline const sim::yaml::Keys kPollKeys = {"question", "answer", "title"};
 
 // the look of the scene in `source`, whose model (read before) is `model`
 RenderDef readRender(const sim::yaml::SceneSource& source, const sim::scene::SceneDef& model);

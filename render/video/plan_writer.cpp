@@ -18,6 +18,7 @@
 #include "render/scene3d/scene.h"
 #include "render/video/output_names.h"
 #include "render/video/recorder.h"
+#include "render/video/still_draw_lists.h"
 
 namespace render::video {
 using namespace render::jobs;
@@ -140,9 +141,11 @@ void writeStills(const RenderPlan& plan, const Stills& stills, const Wrote& wrot
   const render::scene::Scene& first = stills.scenes.front();
   GlContext gl(stills.width, stills.height);
   TextRenderer text;
+  const bool drawLists = !stills.shots.empty() && !stills.shots.front().drawListPath.empty();
   for (size_t from = 0; from < stills.shots.size(); from += kShotsPerRun) {
     const size_t count = std::min(kShotsPerRun, stills.shots.size() - from);
     std::vector<std::vector<Image>> frames(count, std::vector<Image>(plan.variants.size()));  // [shot][variant]
+    std::vector<std::vector<PixelDrawList>> lists(count, std::vector<PixelDrawList>(plan.variants.size()));
     for (size_t i = 0; i < plan.variants.size(); ++i) {
       const PlannedVariant& v = plan.variants[i];
       std::vector<double> instants;
@@ -151,7 +154,12 @@ void writeStills(const RenderPlan& plan, const Stills& stills, const Wrote& wrot
       TraceWriter* const traced = from == 0 && i == 0 ? trace : nullptr;
       follow(run, traced);
       drawing<Planar>(v, DrawStage::Stills, [&] {
-        run.framesAt(instants, stills.strobe, [&](size_t k, Image frame) { frames[k][i] = std::move(frame); });
+        if (drawLists)
+          run.framesAndListsAt(instants, stills.strobe, [&](size_t k, Image frame, DrawList list) {
+            frames[k][i] = std::move(frame);
+            lists[k][i] = frameDrawList(stills, i, list, text);
+          });
+        else run.framesAt(instants, stills.strobe, [&](size_t k, Image frame) { frames[k][i] = std::move(frame); });
         if (traced) run.finish();
       });
     }
@@ -162,6 +170,11 @@ void writeStills(const RenderPlan& plan, const Stills& stills, const Wrote& wrot
                  shot.path);
       else writePng(frames[k].front(), shot.path);
       wrote(shot.path);
+      if (!drawLists) continue;
+      AtomicFile json(shot.drawListPath);
+      writePixelDrawList(json.stream(), stillDrawList(stills, shot, lists[k], text));
+      json.commit();
+      wrote(shot.drawListPath);
     }
   }
 }

@@ -1,6 +1,7 @@
 #include "render/video/render_plan.h"
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <type_traits>
 
@@ -8,6 +9,8 @@
 #include "render/frame/caption.h"
 #include "render/frame/panel_camera.h"
 #include "render/frame/panels.h"
+#include "render/frame/pixel_draw_list.h"
+#include "render/frame/quantity_text.h"
 #include "render/frame/title_card.h"
 #include "render/frame3d/energy3d.h"
 #include "render/jobs/exit_status.h"
@@ -86,6 +89,16 @@ void checkCards(const Scene& scene) {
   if (r.poll.answerCard > 0.0) sceneCard(r, scene.model.name, scene.model.description, true, r.width, r.height, text);
 }
 
+// the camera of variant `i`'s video: fitted over every variant the plan draws, so that a scene's
+// videos show its variants at one scale and in one place (10b's body passing through the wall and
+// bouncing off it, side by side on a slide), as its poll sheet does
+template <class D>
+typename D::Camera videoCamera(const RenderPlanOf<D>& plan, size_t i) {
+  std::remove_cvref_t<decltype(plan.variants[i].survey.bounds)> bounds;
+  for (const PlannedVariantOf<D>& v : plan.variants) bounds.add(v.survey.bounds);
+  return cameraFor(plan.variants[i].scene, plan.variants[i].survey, bounds);
+}
+
 // the video of variant `i` over `duration` s of simulation, and its poster: at the end, or at the
 // start where the scene asks a question (the poster stands beside the question on the page)
 template <class D>
@@ -114,7 +127,7 @@ VideoOutputOf<D> videoOf(const RenderPlanOf<D>& plan, size_t i, const std::strin
           .posterStrobe = r.strobe,
           .timeMap = std::move(map),
           .frameCount = count,
-          .camera = cameraFor(v.scene, v.survey)};
+          .camera = videoCamera(plan, i)};
 }
 
 // what the stills show: the times asked for, or each variant's impacts
@@ -127,6 +140,8 @@ struct StillSpec {
   std::string file;                // named in messages
   std::optional<FrameSize> sheet;  // of a panel sheet: 1920 × 1080 unless asked
   std::string baseTitle;           // the base scene's render: {title}: a variant's own differs from it
+  std::string baseVariantTitle;    // the base scene's top-level `title:`: a variant's own differs from it
+  bool drawList = false;           // a draw list beside each still
 };
 
 // shot by shot, each variant at the same times, each inside every variant's duration
@@ -196,15 +211,26 @@ Spatial::Camera sharedCamera(const std::vector<Spatial::Scene>& scenes, const st
 std::string captionFor(const Planar::Scene& s) { return captionOf(s); }
 std::string captionFor(const Spatial::Scene& s) { return captionOf(s.render, s.model.description); }
 
-// "A: center", or just "A" for a variant named A; "A: Its title" for a variant that gives its own
-// `render: {title}`; at an impact, its time too
+// does `name` begin with the panel's `letter` as a word ("A", "A: center", "A (centre)"; not "Apple")?
+bool lettered(const std::string& name, const std::string& letter) {
+  if (name.compare(0, letter.size(), letter) != 0) return false;
+  return name.size() == letter.size() || !std::isalnum(static_cast<unsigned char>(name[letter.size()]));
+}
+
+// "A: center": the panel's letter and the variant's `title:` (one of its own, not the base scene's),
+// else its `render: {title}` where that differs from the base scene's, else its key; "A" alone for a
+// variant named A, and a title that starts with its letter ("A: at the center") is not lettered
+// again. At an impact, its time to the millisecond, as the frame's clock writes it
 template <class Scene>
-std::string panelTitle(size_t i, const Scene& variant, const std::string& baseTitle, bool impacts, double t) {
-  std::string title = panelLetter(i);
-  const std::string& own = variant.render.title;
-  if (!own.empty() && own != baseTitle) title += ": " + own;
-  else if (variant.model.variant != title) title += ": " + variant.model.variant;
-  if (impacts) title += "  (t = " + timeForName(t) + " s)";
+std::string panelTitle(size_t i, const Scene& variant, const StillSpec& spec, bool impacts, double t) {
+  const std::string letter = panelLetter(i);
+  const std::string& own = variant.render.poll.title;
+  const std::string& card = variant.render.title;
+  const std::string name = !own.empty() && own != spec.baseVariantTitle ? own
+                           : !card.empty() && card != spec.baseTitle    ? card
+                                                                        : variant.model.variant;
+  std::string title = lettered(name, letter) ? name : letter + ": " + name;
+  if (impacts) title += "  (t = " + timeToMs(t) + " s)";
   return title;
 }
 
@@ -219,6 +245,40 @@ Scene asPanel(Scene scene, const PanelGrid& grid) {
   scene.render.caption.clear();
   scene.render.captionFromDescription = false;
   return scene;
+}
+
+// the grid of a sheet: for 2D scenes the one whose frames show the variants largest (each count of
+// columns tried, the camera fitted over every variant's run beside the widest energy panel), so that a
+// wide run is stacked and a tall one set side by side; the usual grid where it does as well. 3D: the
+// usual grid
+PanelGrid sheetGrid(const std::vector<Planar::Scene>& scenes, const std::vector<Planar::Survey>& surveys, int width, int height,
+                    bool caption, int captionLines) {
+  const PanelGrid usual = panelGrid(scenes.size(), width, height, caption, 0, captionLines);
+  Bounds bounds;
+  for (const Planar::Survey& s : surveys) bounds.add(s.bounds);
+  const auto pixelSize = [&](const PanelGrid& grid) {
+    std::vector<Planar::Scene> panels;
+    for (const Planar::Scene& scene : scenes) panels.push_back(asPanel(scene, grid));
+    const size_t widest = widestPanel<Planar>(panels, surveys);
+    return cameraFor(panels[widest], surveys[widest], bounds).pixelSize();
+  };
+  PanelGrid best = usual;
+  double bestSize = pixelSize(usual);
+  for (int columns = 1; columns <= static_cast<int>(scenes.size()); ++columns) {
+    if (columns == usual.columns) continue;
+    try {
+      const PanelGrid grid = panelGrid(scenes.size(), width, height, caption, columns, captionLines);
+      // clearly larger (a tenth), or the usual grid stays
+      if (const double size = pixelSize(grid); size < 0.9 * bestSize) best = grid, bestSize = size;
+    } catch (const UsageError&) {
+      // frames too small that way
+    }
+  }
+  return best;
+}
+PanelGrid sheetGrid(const std::vector<Spatial::Scene>& scenes, const std::vector<Spatial::Survey>&, int width, int height,
+                    bool caption, int captionLines) {
+  return panelGrid(scenes.size(), width, height, caption, 0, captionLines);
 }
 
 // the stills of every variant of the plan, at the times or impacts of `spec`
@@ -236,8 +296,11 @@ StillsOf<D> stillsOf(const RenderPlanOf<D>& plan, const StillSpec& spec) {
     for (typename D::Survey& survey : surveys) all.push_back(&survey);
     shareScales(all);
     caption = captionFor(first);
-    grid = panelGrid(scenes.size(), spec.sheet ? spec.sheet->width : kSheetWidth, spec.sheet ? spec.sheet->height : kSheetHeight,
-                     !caption.empty());
+    const int width = spec.sheet ? spec.sheet->width : kSheetWidth, height = spec.sheet ? spec.sheet->height : kSheetHeight;
+    // the whole caption under the grid, in as many lines as it needs (a few)
+    TextRenderer text;
+    const int lines = caption.empty() ? 0 : sheetCaptionLines(caption, width, height, text);
+    grid = sheetGrid(scenes, surveys, width, height, !caption.empty(), lines);
     for (typename D::Scene& scene : scenes) scene = asPanel(std::move(scene), grid);
   }
   const int strobe = spec.strobe.value_or(first.render.strobe);
@@ -257,16 +320,17 @@ StillsOf<D> stillsOf(const RenderPlanOf<D>& plan, const StillSpec& spec) {
   for (const std::vector<double>& shot : instants) firsts.push_back(shot[0]);
   const std::vector<std::string> timeNames = timesForNames(firsts);
   for (size_t shot = 0; shot < instants.size(); ++shot) {
-    StillOutput out{.path = s.directory + "/", .instants = instants[shot], .titles = {}};
+    StillOutput out{.path = s.directory + "/", .instants = instants[shot], .titles = {}, .drawListPath = {}};
     const std::string impact = spec.impacts ? "-impact" + std::to_string(shot + 1) : "";
     const std::string at = "-t" + timeNames[shot];
     if (spec.panels) {
       out.path += panelsFileName(first.model.name, spec.impacts ? impact : at, strobe);
       for (size_t i = 0; i < plan.variants.size(); ++i)
-        out.titles.push_back(panelTitle(i, plan.variants[i].scene, spec.baseTitle, spec.impacts, instants[shot][i]));
+        out.titles.push_back(panelTitle(i, plan.variants[i].scene, spec, spec.impacts, instants[shot][i]));
     } else {
       out.path += baseOf(first.model) + impact + at + strobeSuffix(strobe) + ".png";
     }
+    if (spec.drawList) out.drawListPath = drawListPathFor(out.path);
     // the plan checked before anything is drawn: one file a still
     for (const StillOutput& other : s.shots)
       if (other.path == out.path)
@@ -318,20 +382,21 @@ RenderPlanOf<D> planVideosOf(const LoadVariantOf<D>& load, const VideoRequest& r
 template <class D>
 RenderPlanOf<D> planStillsOf(const LoadVariantOf<D>& load, const StillRequest& r) {
   std::vector<typename D::Scene> scenes;
-  std::string baseTitle;
+  std::string baseTitle, baseVariantTitle;
   if (r.panels) {
     const typename D::Scene base = load("");
     const std::vector<std::string> names = base.model.variantNames;
     if (names.empty()) throw UsageError("--panels: " + r.file + " has no variants to put side by side");
     baseTitle = base.render.title;
+    baseVariantTitle = base.render.poll.title;
     for (const std::string& name : names) scenes.push_back(load(name));
   } else {
     scenes.push_back(load(r.variant));
   }
   // --size is a single frame's, or with --panels the whole sheet's
   RenderPlanOf<D> plan = surveyed<D>(std::move(scenes), r.panels ? std::nullopt : r.size, std::nullopt, -1.0);
-  plan.stills =
-      stillsOf(plan, {r.times, r.impacts, r.panels, r.strobe, r.root, r.file, r.panels ? r.size : std::nullopt, baseTitle});
+  plan.stills = stillsOf(plan, {r.times, r.impacts, r.panels, r.strobe, r.root, r.file, r.panels ? r.size : std::nullopt,
+                                baseTitle, baseVariantTitle, r.drawList});
   return plan;
 }
 
@@ -348,7 +413,8 @@ RenderPlanOf<D> planLectureOf(const LoadVariantOf<D>& load, const LectureRequest
   // then the poll panels, as `snapshot --panels` draws them
   const render::scene::PanelsDef panels = lecturePanels(base, plan, r.file);
   if (!panels.times.empty() || panels.impacts)
-    plan.stills = stillsOf(plan, {panels.times, panels.impacts, true, std::nullopt, r.root, r.file, r.size, base.render.title});
+    plan.stills = stillsOf(plan, {panels.times, panels.impacts, true, std::nullopt, r.root, r.file, r.size, base.render.title,
+                                  base.render.poll.title});
   return plan;
 }
 
@@ -363,7 +429,10 @@ std::vector<std::string> RenderPlanOf<D>::paths() const {
     if (!v.framesPath.empty()) all.push_back(v.framesPath);
   }
   if (stills)
-    for (const StillOutput& shot : stills->shots) all.push_back(shot.path);
+    for (const StillOutput& shot : stills->shots) {
+      all.push_back(shot.path);
+      if (!shot.drawListPath.empty()) all.push_back(shot.drawListPath);
+    }
   return all;
 }
 template struct RenderPlanOf<Planar>;
@@ -377,6 +446,8 @@ RenderPlan3d planVideos3d(const LoadVariant3d& load, const VideoRequest& r) { re
 
 RenderPlan3d planStills3d(const LoadVariant3d& load, const StillRequest& r) {
   if (r.strobe.value_or(0) > 0) throw UsageError("--strobe: earlier poses are ghosted in 2D frames only");
+  if (r.drawList)
+    throw UsageError("--draw-list: " + r.file + " is a 3D scene; draw lists in pixels are written for 2D scenes only");
   return planStillsOf<Spatial>(load, r);
 }
 

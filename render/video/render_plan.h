@@ -94,6 +94,7 @@ struct StillOutput {
   std::string path;
   std::vector<double> instants;     // s, one per variant of the stills
   std::vector<std::string> titles;  // the panels' titles, "A: center", "B: Off center", … (empty for one variant)
+  std::string drawListPath;         // <path without .png>.json with --draw-list (pixel_draw_list.h), else empty
 };
 
 // still images of every variant of the plan, drawn alike: one camera, one strobe and (on a panel
@@ -120,6 +121,7 @@ struct RenderPlanOf {
   std::optional<StillsOf<D>> stills;
 
   // every path written, in the order written: each video, its poster (and frames), then each still
+  // (and its draw list)
   std::vector<std::string> paths() const;
 };
 
@@ -169,6 +171,7 @@ struct StillRequest {
   bool panels = false;
   std::optional<int> strobe = {};      // ghosts, instead of the scene's
   std::optional<FrameSize> size = {};  // of the frame; with `panels`, of the whole sheet (default 1920 × 1080)
+  bool drawList = false;               // each PNG's draw list in its pixels beside it (2D only)
 };
 
 // what `lecture` asks for a scene: every variant's video and poster, then its `panels:`

@@ -373,6 +373,7 @@ void World::step(double stop, double end) {
     }
   }
   ++steps;
+  lastStep = h;
   // the islands at rest long enough fall asleep
   if (sleeping()) sleep_.afterStep(bodies, contacts, forces, thisStep.midpoint(), h);
   // stop at the first non-finite state rather than carry NaN forward

@@ -106,6 +106,7 @@ class World {
 
   double time = 0.0;
   long steps = 0;
+  double lastStep = 0.0;               // the length of the last step taken, s: the contacts' impulses are over it
   std::vector<Contact> contacts;       // the touching pairs of the last step
   std::vector<ImpactRecord> impacts;   // every impulse the collision response applied
   std::vector<RestingRecord> resting;  // event method: contacts turned resting (Zeno)

@@ -193,4 +193,35 @@ expect "order.txt naming no scene file: exit 2 at its line" 2 "ordered/order.txt
 printf 'c_three.yaml\nc_three\n' >ordered/order.txt
 expect "order.txt naming a scene twice: exit 2 at its line" 2 "ordered/order.txt:2:1: 'c_three' is listed twice" check ordered
 
+# a poll keeps its answer: every panel after t = 0 folds under the Answer, unless `reveal` makes its
+# time a question time; a question sheet shows the impulses to come; the scene file is named as the
+# pack names it, never by a path of this machine (the job is given an absolute one)
+mkdir polls
+sed -e 's/^  panels: \[0, 2.5\]/  panels: [0, 1, 2.5]/' -e '/^  reveal: 2.5/d' "$SRC/scenes/lecture/05_impulses.yaml" >polls/p_fold.yaml
+sed -e 's/^  panels: \[0, 2.5\]/  panels: [0, 1, 2.5]/' -e 's/^  reveal: 2.5/  reveal: 2/' \
+  "$SRC/scenes/lecture/05_impulses.yaml" >polls/p_reveal.yaml
+run lecture "$WORK/polls/p_fold.yaml" "${SMALL[@]}" -o pp -j 1
+# the section up to its Answer fold
+above() { sed -n "/<section id=\"scene-$1\"/,/<\/section>/p" pp/index.html | sed '/<details class="poll-answer">/q'; }
+[ "$rc" -eq 0 ] && above p_fold | grep -q 'question</span> · t = 0 s' && ! above p_fold | grep -q 't = 1 s' &&
+  ! above p_fold | grep -q 't = 2.5 s' && grep -q 'answer</span> · t = 1 s' pp/index.html
+check "a poll's panels after t = 0 fold under the Answer" $? "$(above p_fold | grep -o 't = [0-9.]* s' | tr '\n' ' ')"
+! grep -q "$WORK" pp/index.html && ! grep -q "$WORK" pp/p_fold/page.json && grep -q '<code>p_fold.yaml</code>' pp/index.html
+check "the page names the scene file as the pack does, never by this machine's path" $?
+run lecture polls/p_reveal.yaml "${SMALL[@]}" -o pp -j 1
+above p_reveal | grep -q 't = 1 s' && ! above p_reveal | grep -q 't = 2.5 s'
+check "reveal keeps a time before it a question time, open above the fold" $?
+run snapshot polls/p_fold.yaml --panels --at 0 -o pp --size 640x360 --draw-list
+python3 - pp/p_fold/p_fold-panels-t0.json <<'PY'
+import json, sys
+calls = json.load(open(sys.argv[1]))["calls"]
+# each variant's impulse to come: dashes and its time, the two cells struck at different heights
+dashes = [c for c in calls if c["kind"] == "segment" and c["pen"].startswith("Impulse")]
+heads = [c for c in calls if c["kind"] == "arrow" and c["pen"].startswith("Impulse")]
+assert len(dashes) >= 6, len(dashes)
+assert sum(c.get("text") == "j at t = 0.5 s" for c in calls) == 2
+assert len(heads) == 2 and abs(heads[0]["numbers"][3] - heads[1]["numbers"][3]) > 20, heads
+PY
+check "a question sheet draws each variant's impulse to come, dashed, with its time" $?
+
 cli_finish

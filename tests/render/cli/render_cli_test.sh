@@ -71,6 +71,21 @@ check "snapshot --panels writes one image of every variant" $?
 run snapshot "$POLL" --variant end --at 2 --strobe 5 -o o --size 160x90
 [ "$rc" -eq 0 ] && [ -f o/poll_bar_impulse/poll_bar_impulse-end-t2-strobe5.png ]
 check "snapshot --strobe names the ghost count" $?
+# --draw-list: beside each PNG its draw list in the image's pixels, a sheet's with its titles' boxes
+run snapshot "$POLL" --panels --at 1.5 -o o --size 640x360 --draw-list
+python3 - o/poll_bar_impulse/poll_bar_impulse-panels-t1.5.json <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+assert (d["width"], d["height"]) == (640, 360), d["width"]
+texts = [c for c in d["calls"] if c["kind"] == "text"]
+assert any(c["text"] == "A: center" for c in texts), [c["text"] for c in texts]
+assert all(len(c["box"]) == 4 and 0 <= c["box"][0] < c["box"][2] <= 640 for c in texts)
+assert any(c["pen"].startswith("Body#") for c in d["calls"])
+PY
+check "snapshot --draw-list writes the sheet's draw list in pixels beside it" $?
+grep -q "poll_bar_impulse-panels-t1.5.json" out
+check "snapshot names the draw list it wrote" $?
+expect "--draw-list of a 3D scene" 2 "2D scenes only" snapshot "$SRC/scenes/lecture/11_state_in_3d.yaml" -o o --at 1 --draw-list
 
 # bad input: exit 2 with a message naming the fault, nothing written
 expect "odd size" 2 "even" render "$POLL" -o o --size 321x180

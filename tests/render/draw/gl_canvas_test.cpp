@@ -223,3 +223,17 @@ TEST_CASE("two samples a pixel: an edge through the middle of a pixel column is 
   // the samples at x + 0.25 and x + 0.75 of column 4 fall on either side of x = 4.5 px
   CHECK(near(i, 4, 4, fill.mixed(style.background, 0.5), 2));
 }
+
+TEST_CASE("an arrow on a body of its own hue is told apart: colours alike by hue, or close in every channel") {
+  using render::draw::Color;
+  using render::draw::GlCanvas;
+  // the impulse's blue on a blue bar, the ω arrow's cyan on it: alike
+  CHECK(GlCanvas::alike(Color::parse("#0072b2"), Color::parse("#3b6ea5")));
+  CHECK(GlCanvas::alike(Color::parse("#17becf"), Color::parse("#3b6ea5")));
+  // the velocity's green, the force's orange: apart
+  CHECK_FALSE(GlCanvas::alike(Color::parse("#009e73"), Color::parse("#3b6ea5")));
+  CHECK_FALSE(GlCanvas::alike(Color::parse("#e69f00"), Color::parse("#3b6ea5")));
+  // two greys, of no hue, close in every channel
+  CHECK(GlCanvas::alike(Color::parse("#7f7f7f"), Color::parse("#8c8c8c")));
+  CHECK_FALSE(GlCanvas::alike(Color::parse("#1f1f1f"), Color::parse("#d0d0d0")));
+}

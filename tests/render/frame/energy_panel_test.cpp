@@ -49,11 +49,17 @@ TEST_CASE("the panel: ½mv² and ½Iω² of each moving body, the total, then p 
     if (c.kind == DrawList::Kind::Text) texts.push_back(c.text);
   CHECK(texts == std::vector<std::string>{"ball ½mv² = 9.00 J", "ball ½Iω² = 2.00 J", "E = 11.0 J", "p = (6.00, 0) kg·m/s",
                                           "L = −4.00 kg·m²/s"});
-  // the panel first, its right edge half a line (5.5 px) in from the frame's
+  // the panel first, its right edge half a line (5.5 px) in from the frame's; in 320 px it would reach
+  // the clock, so it starts under it: half a line, the clock's line (1.25 × 11 px), half a line
   const auto& panel = list.calls()[0];
   CHECK(panel.style.role == Role::Panel);
   CHECK(camera.toPixel(panel.points[1]).x() == doctest::Approx(320 - 5.5));
-  CHECK(camera.toPixel(panel.points[0]).y() == doctest::Approx(5.5));
+  CHECK(camera.toPixel(panel.points[0]).y() == doctest::Approx(5.5 + 13.75 + 5.5));
+  // without the clock, half a line in from the top
+  std::string noClock = kScene;
+  noClock.replace(noClock.find("energy: true"), 12, "energy: true, time: false");
+  const DrawList alone = panelAt(noClock, &camera);
+  CHECK(camera.toPixel(alone.calls()[0].points[0]).y() == doctest::Approx(5.5));
   // bars on one scale: the largest value of the run (E = 11 J) fills the 88 px
   const auto& kinetic = list.calls()[1];
   CHECK(kinetic.style.role == Role::KineticBar);
@@ -95,4 +101,27 @@ TEST_CASE("momentum alone: a panel of two lines of text") {
   REQUIRE(list.calls().size() == 3);
   CHECK(list.calls()[1].text == "p = (6.00, 0) kg·m/s");
   CHECK(list.calls()[2].text == "L = −4.00 kg·m²/s");
+}
+
+TEST_CASE("a value below the run's noise floor is 0, and the panel is as wide as its widest line") {
+  const render::draw::Camera camera(Vec2::Zero(), 10.0, 640, 360);
+  // the run's largest energy 4 J: 7.19 × 10⁻³⁸ J is round-off of a ball's spin, 1.10 × 10⁻⁴ J is not
+  const render::frame::BarPanel panel({"ball ½Iω² = 4.00 J"}, {}, 0.0, 4.0, camera, 20.0);
+  const std::vector<render::frame::EnergyBar> bars = {{"ball ½Iω²", 7.19e-38, Role::RotationalBar, 0},
+                                                      {"bar ½Iω²", 1.10e-4, Role::RotationalBar, 1},
+                                                      {"E", 4.0, Role::TotalBar, -1}};
+  DrawList estimated, measured;
+  panel.draw(bars, {}, estimated);
+  std::vector<std::string> texts;
+  for (const auto& c : estimated.calls())
+    if (c.kind == DrawList::Kind::Text) texts.push_back(c.text);
+  CHECK(texts == std::vector<std::string>{"ball ½Iω² = 0 J", "bar ½Iω² = 1.10 × 10⁻⁴ J", "E = 4.00 J"});
+  // bars under half a pixel are not drawn: the panel, E's bar and the three texts
+  CHECK(estimated.calls().size() == 1 + 1 + 3);
+  // a frame whose text is wider than the estimate widens the panel to its widest line, leftwards
+  panel.draw(bars, {}, measured, [](const std::string& s) { return s.find("10⁻⁴") != std::string::npos ? 400 : 100; });
+  const double before = widthPx(estimated.calls()[0], camera), after = widthPx(measured.calls()[0], camera);
+  CHECK(after == doctest::Approx(400 + (8.0 + 0.5 + 0.8) * 20.0));
+  CHECK(after > before);
+  CHECK(camera.toPixel(measured.calls()[0].points[1]).x() == doctest::Approx(640 - 10.0));
 }

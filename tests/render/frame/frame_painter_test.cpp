@@ -105,7 +105,7 @@ TEST_CASE("the separating-axis overlay: reference edge, incident vertex and the 
       "bodies:\n"
       "  - {name: base, shape: {box: [2, 0.5]}, position: [0, 0.25], static: true}\n"
       "  - {name: box, shape: {box: [0.4, 0.4]}, position: [0, 0.8], angle: 0.3}\n"
-      "render: {sat: true, labels: false, time: false, size: [320, 180], camera: {center: [0, 0.5], height: 2}}\n";
+      "render: {sat: true, labels: false, time: false, key: false, size: [320, 180], camera: {center: [0, 0.5], height: 2}}\n";
   const auto lines = frameAt(pair, 0.0).lines();
   REQUIRE(lines.size() == 5);
   CHECK(lines[2] == "segment ReferenceEdge#0 (1,0.5) (-1,0.5)");
@@ -209,6 +209,26 @@ TEST_CASE("with an energy panel the automatic camera fits the bodies left of its
   render::scene::Scene plain = def;
   plain.render.overlays.energy = false;
   CHECK(render::frame::cameraFor(plain, survey).toPixel({0, 0}).x() == doctest::Approx(320.0));
+}
+
+TEST_CASE("with an energy panel wider than the room beside it, the automatic camera fits the bodies under it") {
+  // a ball rolling 10 m along a line, in a frame too narrow for the bodies beside the panel
+  const std::string scene =
+      "duration: 1\n"
+      "bodies:\n"
+      "  - {name: ball, shape: {circle: 0.5}, velocity: [10, 0]}\n"
+      "render: {size: [320, 360], camera: {margin: 0}, energy: true}\n";
+  const render::scene::Scene def = drawn_scene::load(scene);
+  const render::frame::RunSurvey survey = render::frame::surveyRun(def);
+  const double band = render::frame::EnergyPanel::bandPx(def, survey, 360);
+  const double top = render::frame::EnergyPanel::topBandPx(def, survey, 320, 360);
+  REQUIRE(band > 160.0);
+  REQUIRE(top > 0.0);
+  const render::draw::Camera camera = render::frame::cameraFor(def, survey);
+  // the run's 11 m span the whole width, and the ball's top stays under the panel's band
+  CHECK(camera.worldWidth() == doctest::Approx(11.0).epsilon(1e-3));
+  CHECK(camera.toPixel({0, 0.5}).y() >= top - 1e-9);
+  CHECK(camera.toPixel({-0.5, 0}).x() == doctest::Approx(0.0).epsilon(1e-9));
 }
 
 namespace {

@@ -3,7 +3,7 @@
 
 #include "render/frame/survey.h"
 
-TEST_CASE("shareScales gives every survey the extremes of all, and keeps each one's bounds and impacts") {
+TEST_CASE("shareScales gives every survey the extremes of all, and keeps each one's bounds, impacts and energy bars") {
   render::frame::RunSurvey a, b;
   a.maxSpeed = 1.0, b.maxSpeed = 3.0;
   a.maxImpulse = 2.0, b.maxImpulse = 0.5;
@@ -23,11 +23,14 @@ TEST_CASE("shareScales gives every survey the extremes of all, and keeps each on
     CHECK(s->maxForce == 4.0);
     CHECK(s->maxTorque == 5.0);
     CHECK(s->maxMomentum == 6.0);
-    CHECK(s->minEnergy == -2.0);
-    CHECK(s->maxEnergy == 5.41);
     CHECK(s->maxLinearMomentum == 1.0);
     CHECK(s->maxAngularMomentum == 7.0);
   }
+  // a 2 J variant's bars are not shrunk beside a 5.41 J one's
+  CHECK(a.minEnergy == -1.0);
+  CHECK(a.maxEnergy == 5.41);
+  CHECK(b.minEnergy == -2.0);
+  CHECK(b.maxEnergy == 2.0);
   CHECK(a.impactTimes == std::vector<double>{0.5});
   CHECK(b.impactTimes.empty());
   CHECK(a.bounds.max == sim::core::Vec2(0, 0));

@@ -2,6 +2,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "render/frame/quantity_text.h"
@@ -148,4 +149,21 @@ TEST_CASE("the path of a body point ends at the point now, with a dot there") {
   CHECK(calls[calls.size() - 2].kind == DrawList::Kind::Point);
   checkPoint(calls[calls.size() - 2].points[0], now);
   CHECK(calls.back().text == "r");
+}
+
+TEST_CASE("an arrow of no length is a dot with its label: the rolling contact's v = 0") {
+  // the point of the bar whose velocity is zero now: v + ω × r′ = 0 at r′ = ẑ × v / ω = (−0.25, 0.5)
+  // in the world, i.e. R(−0.5) of it in the bar's coordinates
+  const Vec2 r = sim::core::Rot::fromAngle(-0.5).apply(Vec2(-0.25, 0.5));
+  char at[96];
+  std::snprintf(at, sizeof at, "[%.17g, %.17g]", r.x(), r.y());
+  const Drawn d = arrowsAt("    - {body: bar, show: velocity, at: " + std::string(at) + ", value: true}\n");
+  REQUIRE(d.list.calls().size() == 2);
+  CHECK(d.list.calls()[0].kind == DrawList::Kind::Point);
+  CHECK(d.list.calls()[0].style.role == Role::Velocity);
+  CHECK(d.list.calls()[1].kind == DrawList::Kind::Label);
+  CHECK(d.list.calls()[1].text == "v = 0 m/s");
+  // labelled out from the center of mass, away from the body
+  const Vec2 out = d.list.calls()[1].points[1];
+  CHECK(out.dot(Vec2(-0.25, 0.5).normalized()) == doctest::Approx(1.0).epsilon(1e-5));
 }

@@ -106,3 +106,62 @@ TEST_CASE("with --overlay, a frame's calls are its calls without, plus dashed ou
   CHECK(differing > 100);
   CHECK(stray == 0);
 }
+
+namespace {
+
+// the other run's ball flies up to 6.9 m while ours rolls along the floor
+render::scene::Scene flyingAway(render::scene::Scene scene) {
+  auto overlay = std::make_shared<render::scene::TraceOverlayDef>();
+  overlay->name = "student.csv";
+  overlay->poseAt = [](size_t body, double t, render::scene::TraceOverlayDef::Pose& pose) {
+    pose = body == 0 ? render::scene::TraceOverlayDef::Pose{{t, 6.9 * t}, 0.0} : render::scene::TraceOverlayDef::Pose{{2, 0}, t};
+    return true;
+  };
+  scene.render.overlay = overlay;
+  return scene;
+}
+
+}  // namespace
+
+TEST_CASE("--overlay: the automatic camera fits both runs, theirs flying off as ours rolls on") {
+  const render::scene::Scene over = flyingAway(drawn_scene::load(kScene));
+  const render::frame::RunSurvey survey = render::frame::surveyRun(over);
+  const Camera camera = render::frame::cameraFor(over, survey);
+  const render::draw::Bounds view = camera.view();
+  for (double t : {0.0, 0.5, 1.0}) {
+    CAPTURE(t);
+    // their ball (radius 0.25) and ours, whole, inside the frame
+    for (const Vec2& c : {Vec2(t, 6.9 * t), Vec2(t, 0.0)}) {
+      CHECK(c.x() - 0.25 >= view.min.x());
+      CHECK(c.x() + 0.25 <= view.max.x());
+      CHECK(c.y() - 0.25 >= view.min.y());
+      CHECK(c.y() + 0.25 <= view.max.y());
+    }
+  }
+  // without the overlay, the camera fits ours alone: theirs at t = 1 would be out of it
+  const render::scene::Scene plain = drawn_scene::load(kScene);
+  CHECK(render::frame::cameraFor(plain, render::frame::surveyRun(plain)).view().max.y() < 6.9);
+}
+
+TEST_CASE("--overlay: a body of theirs out of a fixed camera's frame has an arrow at the edge pointing to it") {
+  std::string fixed = kScene;
+  fixed.replace(fixed.find("render: {size: [320, 180]}"), 26, "render: {size: [320, 180], camera: {center: [1, 0], height: 3}}");
+  const render::scene::Scene over = flyingAway(drawn_scene::load(fixed));
+  const render::frame::RunSurvey survey = render::frame::surveyRun(over);
+  const Camera camera = render::frame::cameraFor(over, survey);
+  SceneRun run(over, camera, survey);
+  const DrawList at1 = run.drawListAt(1.0);
+  const DrawList::Call* edge = nullptr;
+  for (const DrawList::Call& c : at1.calls())
+    if (c.kind == DrawList::Kind::Arrow && c.style.role == Role::Overlay) edge = &c;
+  REQUIRE(edge);
+  // at the top edge, pointing up toward (1, 6.9)
+  const Vec2 head = camera.toPixel(edge->points[1]), tail = camera.toPixel(edge->points[0]);
+  CHECK(head.y() < tail.y());
+  CHECK(head.y() > 0.0);
+  CHECK(head.y() < 40.0);
+  // in the frame at t = 0 both are in it: no arrow
+  SceneRun fresh(over, camera, survey);
+  for (const DrawList::Call& c : fresh.drawListAt(0.0).calls())
+    CHECK_FALSE((c.kind == DrawList::Kind::Arrow && c.style.role == Role::Overlay));
+}

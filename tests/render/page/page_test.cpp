@@ -386,3 +386,18 @@ TEST_CASE("jobs that end together never lose a scene from the page: one writer a
   for (const SceneRecord& r : records) CHECK(html.find("<section id=\"scene-" + r.scene + "\">") != std::string::npos);
   CHECK(html.find("<title>Lecture pack: 13 scenes</title>") != std::string::npos);
 }
+
+TEST_CASE("a check's simulated round-off reads 0, its error still says how far off it was") {
+  TempDir dir("roundoff");
+  SceneRecord r = impulses();
+  r.question.clear(), r.answer.clear();
+  r.checks = {{"", 1.5, "box.position", {0, 0}, {8.88178e-16, 2.22045e-16}, 9.2e-16, 1e-12},
+              {"", 3, "box.velocity", {2, 0}, {2.001, 3e-5}, 1e-3, 1e-2}};
+  writeScene(dir.path, r);
+  const std::string html = pageHtml(readPack(dir.path.string()));
+  CHECK(html.find("8.88178e-16") == std::string::npos);
+  CHECK(html.find("<td class=\"number\">(0, 0)</td><td class=\"number\">(0, 0)</td><td class=\"number\">9.2e-16</td>") !=
+        std::string::npos);
+  // a small value that is no round-off of its row is data: shown
+  CHECK(html.find("(2, 0)</td><td class=\"number\">(2.001, 3e-05)</td>") != std::string::npos);
+}

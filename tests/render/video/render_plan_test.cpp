@@ -7,6 +7,7 @@
 #include <map>
 
 #include "render/frame/caption.h"
+#include "render/frame/quantity_text.h"
 #include "render/frame/scene_run.h"
 #include "render/jobs/exit_status.h"
 #include "render/scene/scene_style.h"
@@ -187,7 +188,7 @@ TEST_CASE("snapshot --impacts: shot i is each variant at its own i-th impact, or
     }
   }
   // "A" needs no name after its letter; the time of the impact follows
-  CHECK(shots[0].titles[0] == "A  (t = " + render::video::timeForName(shots[0].instants[0]) + " s)");
+  CHECK(shots[0].titles[0] == "A  (t = " + render::frame::timeToMs(shots[0].instants[0]) + " s)");
 
   const RenderPlan one = render::video::planStills(Loader{kThree, {}}(), {.file = kThree, .variant = "B", .impacts = true});
   const double t = one.variants.front().survey.impactTimes.front();
@@ -315,6 +316,40 @@ TEST_CASE("panel titles: a variant's own render: {title}, else its key; never th
   CHECK(plan.stills->shots[0].titles == std::vector<std::string>{"A: Slowly", "B: fast"});
 }
 
+TEST_CASE("panel titles: a variant's own title: first, never lettered twice; an impact's time to the millisecond") {
+  const std::string yaml =
+      drawn_scene::bounce("1",
+                          "render: {title: Lesson}\n"
+                          "variants:\n  slow: {title: \"A: slowly\", render: {title: Slowly}}\n"
+                          "  fast: {title: \"fast, c_r = 1\", bodies: [{name: ball, velocity: [1.2345678, 0]}]}\n  C: {}\n");
+  const auto load = [&](const std::string& v) { return drawn_scene::load(yaml, v, "lesson.yaml"); };
+  const RenderPlan plan = render::video::planStills(load, {.file = "lesson.yaml", .times = {0.5}, .panels = true});
+  CHECK(plan.stills->shots[0].titles == std::vector<std::string>{"A: slowly", "B: fast, c_r = 1", "C"});
+  const RenderPlan impacts = render::video::planStills(load, {.file = "lesson.yaml", .impacts = true, .panels = true});
+  // the fast ball meets the wall at (0.75 − 0.25) / 1.2345678 = 0.405000… s
+  CHECK(impacts.stills->shots[0].titles[1] == "B: fast, c_r = 1  (t = 0.405 s)");
+  CHECK(render::frame::timeToMs(0.5) == "0.5");
+  CHECK(render::frame::timeToMs(0.7650771) == "0.765");
+  CHECK(render::frame::timeToMs(-0.0001) == "0");
+  CHECK(render::frame::timeToMs(2.0) == "2");
+}
+
+TEST_CASE("a sheet's grid shows the variants largest: a wide run stacked, a tall one side by side") {
+  const auto sheet = [](const std::string& velocity) {
+    const std::string yaml = "name: run\nduration: 1\nbodies:\n  - {name: ball, shape: {circle: 0.25}, velocity: " + velocity +
+                             "}\nvariants:\n  a: {}\n  b: {}\n  c: {}\n";
+    const auto load = [yaml](const std::string& v) { return drawn_scene::load(yaml, v, "run.yaml"); };
+    return render::video::planStills(load, {.file = "run.yaml", .times = {0.5}, .panels = true}).stills->grid;
+  };
+  // a ball flying 20 m to the right: three panels one above the other, not 2 × 2
+  CHECK(sheet("[20, 0]").columns == 1);
+  CHECK(sheet("[20, 0]").rows == 3);
+  // a ball falling 20 m: three side by side
+  CHECK(sheet("[0, -20]").columns == 3);
+  // a run half again as wide as tall keeps the usual 2 × 2
+  CHECK(sheet("[3, 2]").columns == 2);
+}
+
 TEST_CASE("lecture panels: the default at the shortest variant's duration; impacts where every variant has one") {
   const RenderPlan plan = render::video::planLecture(lesson(), {.file = "lesson.yaml"});
   CHECK(plan.paths().back() == "out/lecture/lesson/lesson-panels-t1.png");
@@ -369,4 +404,21 @@ TEST_CASE("3D scenes are planned as 2D ones: the same names, one survey per vari
         "--impacts: spin.yaml (variant slow) has no impacts in its 0.5 s; nothing collides there (use --at to choose times)");
   CHECK(usageError([] { render::video::planStills3d(spin(), {.file = "spin.yaml", .times = {0}, .strobe = 2}); }) ==
         "--strobe: earlier poses are ghosted in 2D frames only");
+}
+
+TEST_CASE("a scene's videos share one camera, fitted over every variant's run, as its poll sheet does") {
+  // 10b's: the isolated method's body passes through the wall, the event method's bounces back
+  const std::string file = std::string(RIGIDREEL_SOURCE_DIR) + "/scenes/lecture/10b_tunneling.yaml";
+  const RenderPlan plan = render::video::planLecture(Loader{file, {}}(), {.file = file});
+  REQUIRE(plan.videos.size() == 2);
+  const render::draw::Camera &a = plan.videos[0].camera, &b = plan.videos[1].camera;
+  CHECK(a.center().x() == doctest::Approx(b.center().x()));
+  CHECK(a.center().y() == doctest::Approx(b.center().y()));
+  CHECK(a.worldHeight() == doctest::Approx(b.worldHeight()));
+  // both bodies' runs in it: through the wall to x = 2.92, back to x = −3.02
+  CHECK(a.view().min.x() < -3.02);
+  CHECK(a.view().max.x() > 2.92);
+  // one variant alone keeps its own
+  const RenderPlan one = render::video::planVideos(Loader{file, {}}(), {.variant = "event"});
+  CHECK(one.videos.front().camera.view().max.x() < 2.92);
 }
