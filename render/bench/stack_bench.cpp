@@ -196,7 +196,7 @@ sim::scene::SceneDef sceneOf(const bench::StackLayout& layout, const bench::Stac
       for (const bench::Point& p : bench::offsetPolygon(outline, o.ourGrowth)) vertices.push_back({p[0], p[1]});
       b.shape = sim::core::makePolygon(vertices);
     }
-    b.density = s.density;
+    b.density = s.density * layout.boxes[i].density;
     b.position = {layout.boxes[i].x, layout.boxes[i].y};
     def.bodies.push_back(b);
   }
@@ -271,6 +271,7 @@ class Box2dRun : public StackRun {
       // a polygon of the layout's own (the arch's stones): its core, rounded by the skin
       b2PolygonShape outline;
       b2FixtureDef fixture = boxFixture;
+      fixture.density *= static_cast<float>(p.density);
       if (!p.polygon.empty()) {
         std::vector<b2Vec2> core;
         for (const bench::Point& v : bench::offsetPolygon(p.polygon, -skin))
@@ -333,6 +334,7 @@ std::optional<bench::StackLayout> parseLayout(const std::string& spec) {
     if (part.size() == 3 && part[0] == "pyramid" && (part[2] == "touching" || part[2] == "dropped" || part[2] == "packed"))
       return bench::pyramid(std::stoi(part[1]), part[2] == "dropped", part[2] == "packed");
     if (part.size() == 2 && part[0] == "stack") return bench::stack(std::stoi(part[1]));
+    if (part.size() == 3 && part[0] == "stack") return bench::stack(std::stoi(part[1]), std::stod(part[2]));
     if (part.size() == 1 && part[0] == "arch") return bench::arch();
   } catch (const std::exception&) {}
   return std::nullopt;
@@ -353,10 +355,9 @@ int main(int argc, char** argv) {
   std::string engine = "both", skin = "outer", csvPath, box2d3Dir;
   bench::StackSettings settings;
   RunOptions options;
-  app.add_option(
-      "--layout", layoutSpecs,
-      "pyramid:BASE:touching, pyramid:BASE:dropped, pyramid:BASE:packed (Box2D v3's large_pyramid), stack:HEIGHT or arch "
-      "(repeatable)");
+  app.add_option("--layout", layoutSpecs,
+                 "pyramid:BASE:touching, pyramid:BASE:dropped, pyramid:BASE:packed (Box2D v3's large_pyramid), stack:HEIGHT, "
+                 "stack:HEIGHT:RATIO (the top box RATIO times as dense) or arch (repeatable)");
   app.add_option("--method", methods, "rigidreel's collision method (repeatable): sequential, soft_step, ...");
   app.add_option("--engine", engine, "both, ours or box2d")->check(CLI::IsMember({"both", "ours", "box2d"}));
   app.add_option("--steps", options.steps, "timed steps of dt (600: 10 s)")->check(CLI::PositiveNumber);

@@ -26,6 +26,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <utility>
 #include <vector>
@@ -40,6 +41,7 @@ struct BoxPlacement {
   double x = 0.0, y = 0.0;          // center at the start, m
   double restX = 0.0, restY = 0.0;  // center when the stack holds, m (before any slop)
   std::vector<Point> polygon;       // counterclockwise about the center of mass; empty: a box of the layout's size
+  double density = 1.0;             // times the settings' density
 };
 
 // the numbers both engines are given: Box2D's benchmark settings unless changed
@@ -103,11 +105,17 @@ inline std::vector<Point> offsetPolygon(const std::vector<Point>& polygon, doubl
   return out;
 }
 
-// a column of `height` touching boxes
-inline StackLayout stack(int height) {
+// a column of `height` touching boxes, the top one `topDensity` times as dense as the others (a
+// heavy box on light ones: scenes/mass_ratio_stack.yaml)
+inline StackLayout stack(int height, double topDensity = 1.0) {
   StackLayout l;
   l.name = "stack" + std::to_string(height);
-  for (int k = 0; k < height; ++k) l.boxes.push_back({0.0, 0.5 + k, 0.0, 0.5 + k, {}});
+  if (topDensity != 1.0) {
+    char ratio[32];
+    std::snprintf(ratio, sizeof ratio, "%g", topDensity);
+    l.name += std::string("-top") + ratio;
+  }
+  for (int k = 0; k < height; ++k) l.boxes.push_back({0.0, 0.5 + k, 0.0, 0.5 + k, {}, k == height - 1 ? topDensity : 1.0});
   return l;
 }
 
