@@ -74,8 +74,8 @@ format:
 	@test -n "$(FORMAT_FILES)" || { echo "format: no C++ files from git ls-files (run it in a git clone)"; exit 1; }
 	$(CLANG_FORMAT) -i $(FORMAT_FILES)
 
-# timings (never asserted in tests): stacks against Box2D 2.4 in the same run (both pyramids, both
-# layouts, 600 steps; soft_step in doubles and in floats); check's start-up, the video pipeline's parts per frame and the whole render
+# timings (never asserted in tests): stacks against Box2D 2.4 in the same run (both pyramids, their
+# three layouts and Box2D's arch, 600 steps; soft_step in doubles and in floats); check's start-up, the video pipeline's parts per frame and the whole render
 # against ffmpeg alone at 720p and 1080p, the lecture pack's wall time;
 # BENCH_BASELINE=path/to/another/rigidreel times that build too, in the same run
 BENCH_BASELINE ?=

@@ -1,7 +1,7 @@
 // rigidreel_stack_bench (`make bench`): the same stack layouts (stack_layouts.h) run through
 // rigidreel's stack solvers (`--method`, repeatable) and, where Debian's libbox2d-dev was found at
 // build time, through Box2D 2.4 with the same settings, in one run, and measured the same way: the
-// top box's displacement, the bulge |x − rest x|, the fastest body at the end and the worst of both
+// top box's displacement and drop, the bulge |x − rest x|, the fastest body at the end and the worst of both
 // over the second half of the timed steps, and the wall and processor time per step. Timings are
 // never asserted; ratios are taken within one run, since the machines are shared and noisy.
 //
@@ -32,6 +32,10 @@
 //   cpu_ratio_to_box2d_v3                       cpu_ms_per_step over Box2D v3's (--box2d3, packed layouts)
 //   precision                                   ours: double, or float on soft_step:float's rows
 //                                               (--precision); empty on Box2D's
+//   top_drop_m                                  how far the top box sank, y_rest − y, at the end (the
+//                                               arch's sag)
+//   gravity                                     along y, m/s² (--gravity; -10 unless nudged)
+//   skin                                        Box2D's rows: --box2d-skin; ours: --ours-skin
 //
 // rigidreel is reached only through scene definitions and World's public members (bodies,
 // advanceTo), so the program does not depend on how World is organised inside.
@@ -40,6 +44,10 @@
 // 2 cm wider than 2h. `--box2d-skin outer` (the default) shrinks the core by that radius so the
 // rounded box is as wide as ours and the touching layout touches in both engines; `core` makes
 // the boxes as Box2D's testbed does (its touching layout then starts 2 cm deep at every contact).
+// The arch's stones are polygons of their own, inset the same way. `--ours-skin core` grows ours by
+// the same 1 cm, so that both engines run the outline of Box2D's testbed shapes (ours with sharp
+// corners); Box2D's arch sags much less with its own skin (sim/README.md: `sequential` beside Box2D
+// 2.4), so a comparison is made with the same skin on both sides.
 // Box2D's tolerances are compiled into the library; rigidreel's match them (sim/core/settings.h:
 // linear slop 0.5 cm, Baumgarte 0.2, largest correction 0.2 m, restitution threshold 1 m/s).
 #if RIGIDREEL_HAVE_BOX2D
@@ -65,6 +73,9 @@
 
 namespace {
 
+// Box2D 2.4's b2_polygonRadius (2 × b2_linearSlop), m: the rounding of every Box2D polygon
+constexpr double kBox2dPolygonRadius = 0.01;
+
 struct RunOptions {
   int steps = 600;               // timed steps
   double settleSeconds = 3.0;    // dropped layouts: simulated untimed before the timed steps
@@ -72,6 +83,7 @@ struct RunOptions {
   int sample = 10;               // over the second half, measure every this many steps (untimed)
   bool box2dOuterSkin = true;    // Box2D boxes as wide as ours (see the top of the file)
   bool box2dContinuous = false;  // Box2D's time of impact against static bodies (rigidreel has none)
+  double ourGrowth = 0.0;        // every shape of ours grown by this, m (--ours-skin core: Box2D's polygon radius)
   // rigidreel's soft_step: substeps per step and contact stiffness, as a scene's sim: {substeps,
   // contact_hertz} (the stiffness capped at a quarter of the substep rate)
   int substeps = sim::core::settings::kSubsteps;
@@ -135,8 +147,8 @@ RunResult run(StackRun& engine, const char* name, const bench::StackLayout& layo
       if (done >= half)
         r.worstTop = std::max(r.worstTop, m.topDisplacement), r.worstSpeed = std::max(r.worstSpeed, m.fastestSpeed);
       if (o.every > 0 && done % o.every == 0)
-        std::printf("  %-7s step %4d: top %.4f m, max |x - rest x| %.4f m, fastest %.4f m/s, moved %d\n", name,
-                    settleSteps + done, m.topDisplacement, m.maxOffRestX, m.fastestSpeed, m.moved);
+        std::printf("  %-7s step %4d: top %.4f m (dropped %.4f m), max |x - rest x| %.4f m, fastest %.4f m/s, moved %d\n", name,
+                    settleSteps + done, m.topDisplacement, m.topDrop, m.maxOffRestX, m.fastestSpeed, m.moved);
     }
   } catch (const std::exception&) {
     r.diverged = true;
@@ -169,15 +181,22 @@ sim::scene::SceneDef sceneOf(const bench::StackLayout& layout, const bench::Stac
   def.precision = precision;
   sim::scene::BodyDef ground;
   ground.name = "ground";
-  ground.shape = sim::core::makeBox(2.0 * layout.groundHalfWidth, 1.0);
+  ground.shape = sim::core::makeBox(2.0 * (layout.groundHalfWidth + o.ourGrowth), 1.0 + 2.0 * o.ourGrowth);
   ground.position = {layout.groundCenterX, -0.5};
   ground.isStatic = true;
   def.bodies.push_back(ground);
   for (size_t i = 0; i < layout.boxes.size(); ++i) {
     sim::scene::BodyDef b;
     b.name = "box" + std::to_string(i);
-    b.shape = sim::core::makeBox(layout.boxSize, layout.boxSize);
-    b.density = s.density;
+    const std::vector<bench::Point>& outline = layout.boxes[i].polygon;
+    if (outline.empty()) {
+      b.shape = sim::core::makeBox(layout.boxSize + 2.0 * o.ourGrowth, layout.boxSize + 2.0 * o.ourGrowth);
+    } else {
+      std::vector<sim::core::Vec2> vertices;
+      for (const bench::Point& p : bench::offsetPolygon(outline, o.ourGrowth)) vertices.push_back({p[0], p[1]});
+      b.shape = sim::core::makePolygon(vertices);
+    }
+    b.density = s.density * layout.boxes[i].density;
     b.position = {layout.boxes[i].x, layout.boxes[i].y};
     def.bodies.push_back(b);
   }
@@ -249,7 +268,18 @@ class Box2dRun : public StackRun {
       bd.type = b2_dynamicBody;
       bd.position.Set(static_cast<float>(p.x), static_cast<float>(p.y));
       b2Body* body = world_.CreateBody(&bd);
-      body->CreateFixture(&boxFixture);
+      // a polygon of the layout's own (the arch's stones): its core, rounded by the skin
+      b2PolygonShape outline;
+      b2FixtureDef fixture = boxFixture;
+      fixture.density *= static_cast<float>(p.density);
+      if (!p.polygon.empty()) {
+        std::vector<b2Vec2> core;
+        for (const bench::Point& v : bench::offsetPolygon(p.polygon, -skin))
+          core.emplace_back(static_cast<float>(v[0]), static_cast<float>(v[1]));
+        outline.Set(core.data(), static_cast<int32>(core.size()));
+        fixture.shape = &outline;
+      }
+      body->CreateFixture(&fixture);
       boxes_.push_back(body);
     }
   }
@@ -304,6 +334,8 @@ std::optional<bench::StackLayout> parseLayout(const std::string& spec) {
     if (part.size() == 3 && part[0] == "pyramid" && (part[2] == "touching" || part[2] == "dropped" || part[2] == "packed"))
       return bench::pyramid(std::stoi(part[1]), part[2] == "dropped", part[2] == "packed");
     if (part.size() == 2 && part[0] == "stack") return bench::stack(std::stoi(part[1]));
+    if (part.size() == 3 && part[0] == "stack") return bench::stack(std::stoi(part[1]), std::stod(part[2]));
+    if (part.size() == 1 && part[0] == "arch") return bench::arch();
   } catch (const std::exception&) {}
   return std::nullopt;
 }
@@ -312,21 +344,27 @@ std::optional<bench::StackLayout> parseLayout(const std::string& spec) {
 
 int main(int argc, char** argv) {
   CLI::App app{"rigidreel's stack solvers against Box2D 2.4 on the same stack layouts, at Box2D's benchmark settings"};
-  std::vector<std::string> layoutSpecs{"pyramid:20:touching",  "pyramid:20:dropped",  "pyramid:20:packed",
-                                       "pyramid:100:touching", "pyramid:100:dropped", "pyramid:100:packed"};
+  std::vector<std::string> layoutSpecs{"pyramid:20:touching",
+                                       "pyramid:20:dropped",
+                                       "pyramid:20:packed",
+                                       "pyramid:100:touching",
+                                       "pyramid:100:dropped",
+                                       "pyramid:100:packed",
+                                       "arch"};
   std::vector<std::string> methods{"sequential"};
   std::string engine = "both", skin = "outer", csvPath, box2d3Dir;
   bench::StackSettings settings;
   RunOptions options;
-  app.add_option(
-      "--layout", layoutSpecs,
-      "pyramid:BASE:touching, pyramid:BASE:dropped, pyramid:BASE:packed (Box2D v3's large_pyramid) or stack:HEIGHT (repeatable)");
+  app.add_option("--layout", layoutSpecs,
+                 "pyramid:BASE:touching, pyramid:BASE:dropped, pyramid:BASE:packed (Box2D v3's large_pyramid), stack:HEIGHT, "
+                 "stack:HEIGHT:RATIO (the top box RATIO times as dense) or arch (repeatable)");
   app.add_option("--method", methods, "rigidreel's collision method (repeatable): sequential, soft_step, ...");
   app.add_option("--engine", engine, "both, ours or box2d")->check(CLI::IsMember({"both", "ours", "box2d"}));
   app.add_option("--steps", options.steps, "timed steps of dt (600: 10 s)")->check(CLI::PositiveNumber);
   app.add_option("--settle", options.settleSeconds, "dropped layouts: seconds simulated untimed before the timed steps")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--dt", settings.dt, "time step, s");
+  app.add_option("--gravity", settings.gravity, "gravity along y, m/s² (Box2D's benchmark: -10)");
   app.add_option("--iterations", settings.velocityIterations, "velocity iterations")->check(CLI::Range(1, 1000));
   app.add_option("--position-iterations", settings.positionIterations, "position iterations")->check(CLI::Range(0, 1000));
   app.add_option("--friction", settings.friction, "Coulomb friction of every box and the ground");
@@ -352,6 +390,11 @@ int main(int argc, char** argv) {
   app.add_option("--every", options.every, "print the measures every N steps");
   app.add_option("--box2d-skin", skin, "outer: Box2D's rounded boxes as wide as ours; core: SetAsBox(0.5, 0.5)")
       ->check(CLI::IsMember({"outer", "core"}));
+  std::string ourSkin = "outer";
+  app.add_option("--ours-skin", ourSkin,
+                 "outer: ours as the layout gives them; core: grown by Box2D's polygon radius (1 cm), the outline of "
+                 "Box2D's testbed shapes (--box2d-skin core), corners sharp")
+      ->check(CLI::IsMember({"outer", "core"}));
   app.add_flag("--box2d-continuous", options.box2dContinuous, "Box2D's continuous collision on (off: as rigidreel)");
   app.add_option("--box2d3", box2d3Dir,
                  "a folder holding Box2D v3's b3_pyramid (../shared/peers/box2d-v3/build.sh DIR): its column on the "
@@ -359,6 +402,7 @@ int main(int argc, char** argv) {
   app.add_option("--csv", csvPath, "append one row per layout and engine to this file");
   CLI11_PARSE(app, argc, argv);
   options.box2dOuterSkin = skin == "outer";
+  options.ourGrowth = ourSkin == "core" ? kBox2dPolygonRadius : 0.0;
   std::vector<sim::world::CollisionMethod> ourMethods;
   for (const std::string& name : methods) {
     const std::optional<sim::world::CollisionMethod> m = sim::world::collisionMethodFromName(name);
@@ -386,7 +430,7 @@ int main(int argc, char** argv) {
       csv << "layout,engine,boxes,settle_steps,first_timed_step,last_timed_step,velocity_iterations,"
              "position_iterations,ms_per_step,cpu_ms_per_step,cpu_ratio_to_box2d,top_displacement_m,max_off_rest_x_m,"
              "fastest_m_per_s,fastest_rad_per_s,moved,worst_top_second_half_m,worst_fastest_second_half_m_per_s,"
-             "diverged,substeps,contact_hertz,cpu_ratio_to_box2d_v3,precision\n";
+             "diverged,substeps,contact_hertz,cpu_ratio_to_box2d_v3,precision,top_drop_m,gravity,skin\n";
   }
   std::printf("gravity %g, dt %.6g, %d velocity and %d position iterations, friction %g, restitution %g\n", settings.gravity,
               settings.dt, settings.velocityIterations, settings.positionIterations, settings.friction, settings.restitution);
@@ -400,9 +444,9 @@ int main(int argc, char** argv) {
       "steps %d-%d (after %d untimed steps, %g s, to settle); every engine over the same steps\n",
       options.steps, options.steps, dropSettle + 1, dropSettle + options.steps, dropSettle, options.settleSeconds);
   // at the end of the timed steps, and the worst over their second half, sampled every 10 steps
-  std::printf("%-22s %-15s %6s %11s %9s %9s %9s %13s %11s %9s %6s %12s %12s %9s %7s\n", "layout", "engine", "boxes",
-              "timed steps", "ms/step", "cpu ms", "top m", "|x-rest x| m", "fastest m/s", "|w| rad/s", "moved", "worst top m",
-              "worst m/s", "/box2d", "/v3");
+  std::printf("%-22s %-15s %6s %11s %9s %9s %9s %9s %13s %11s %9s %6s %12s %12s %9s %7s\n", "layout", "engine", "boxes",
+              "timed steps", "ms/step", "cpu ms", "top m", "drop m", "|x-rest x| m", "fastest m/s", "|w| rad/s", "moved",
+              "worst top m", "worst m/s", "/box2d", "/v3");
   int status = 0;
   for (const std::string& spec : layoutSpecs) {
     const std::optional<bench::StackLayout> layout = parseLayout(spec);
@@ -419,9 +463,9 @@ int main(int argc, char** argv) {
       if (peer && &r != &*peer) std::snprintf(ratio, sizeof ratio, "%.2f", r.cpuMsPerStep / peer->cpuMsPerStep);
       if (peer3 && &r != &*peer3) std::snprintf(ratio3, sizeof ratio3, "%.2f", r.cpuMsPerStep / peer3->cpuMsPerStep);
       std::snprintf(timed, sizeof timed, "%d-%d", r.settleSteps + 1, r.settleSteps + options.steps);
-      std::printf("%-22s %-15s %6zu %11s %9.3f %9.3f %9.4f %13.4f %11.4f %9.4f %6d %12.4f %12.4f %9s %7s%s\n",
+      std::printf("%-22s %-15s %6zu %11s %9.3f %9.3f %9.4f %9.4f %13.4f %11.4f %9.4f %6d %12.4f %12.4f %9s %7s%s\n",
                   layout->name.c_str(), name.c_str(), layout->boxes.size(), timed, r.msPerStep, r.cpuMsPerStep, m.topDisplacement,
-                  m.maxOffRestX, m.fastestSpeed, m.fastestSpin, m.moved, r.worstTop, r.worstSpeed, ratio, ratio3,
+                  m.topDrop, m.maxOffRestX, m.fastestSpeed, m.fastestSpin, m.moved, r.worstTop, r.worstSpeed, ratio, ratio3,
                   r.diverged ? "  DIVERGED" : "");
       if (csv.is_open())
         csv << layout->name << ',' << name << ',' << layout->boxes.size() << ',' << r.settleSteps << ',' << r.settleSteps + 1
@@ -433,7 +477,15 @@ int main(int argc, char** argv) {
       if (name.rfind("soft_step", 0) == 0) csv << options.substeps << ',' << options.contactHertz;
       else csv << ',';
       const bool ours = name.rfind("box2d", 0) != 0;
-      csv << ',' << ratio3 << ',' << (!ours ? "" : name.find(":float") != std::string::npos ? "float" : "double") << '\n';
+      csv << ',' << ratio3 << ','
+          << (!ours                                      ? ""
+              : name.find(":float") != std::string::npos ? "float"
+                                                         : "double")
+          << ',' << m.topDrop << ',' << settings.gravity << ','
+          << (name == "box2d" ? skin
+              : ours          ? ourSkin
+                              : "")
+          << '\n';
       std::fflush(stdout);
       status |= r.diverged;
     };

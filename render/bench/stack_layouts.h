@@ -17,19 +17,31 @@
 //           builds): the boxes of a row side by side, touching (1 m apart), each row 0.5 m right of
 //           the one below, x = 0.5 (r + 1) + j − 0.5 base, resting (y = 0.5 + r). Its rows also
 //           touch sideways, half as many contacts again as the touching layout's.
+// arch:     the Arch of Box2D's samples and Solver2D (Catto; scenes/arch.yaml): 16 trapezoids and a
+//           keystone, four 4 m × 1 m blocks on top, resting on the ground box; nothing holds it but
+//           friction and the normal forces through long chains of contacts with large mass ratios.
+//           The top block's drop is what the arch gave.
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace bench {
 
-// one box: where it starts and where it should end up
+// a point of a polygon, m
+using Point = std::array<double, 2>;
+
+// one body: where it starts and where it should end up
 struct BoxPlacement {
   double x = 0.0, y = 0.0;          // center at the start, m
   double restX = 0.0, restY = 0.0;  // center when the stack holds, m (before any slop)
+  std::vector<Point> polygon;       // counterclockwise about the center of mass; empty: a box of the layout's size
+  double density = 1.0;             // times the settings' density
 };
 
 // the numbers both engines are given: Box2D's benchmark settings unless changed
@@ -74,11 +86,85 @@ inline StackLayout pyramid(int base, bool dropped, bool packed = false) {
   return l;
 }
 
-// a column of `height` touching boxes
-inline StackLayout stack(int height) {
+// a convex counterclockwise polygon with every edge moved outward by `distance` (inward when it is
+// negative): each vertex moves by the m with m·n₁ = m·n₂ = distance, n₁ and n₂ its two edges'
+// outward normals, so a polygon inset by Box2D's skin is the core whose rounding is the polygon
+inline std::vector<Point> offsetPolygon(const std::vector<Point>& polygon, double distance) {
+  const size_t n = polygon.size();
+  auto normal = [&](size_t i) {
+    const Point &p = polygon[i], &q = polygon[(i + 1) % n];
+    const double dx = q[0] - p[0], dy = q[1] - p[1], length = std::hypot(dx, dy);
+    return Point{dy / length, -dx / length};
+  };
+  std::vector<Point> out;
+  for (size_t i = 0; i < n; ++i) {
+    const Point n1 = normal((i + n - 1) % n), n2 = normal(i);
+    const double scale = distance / (1.0 + n1[0] * n2[0] + n1[1] * n2[1]);
+    out.push_back({polygon[i][0] + scale * (n1[0] + n2[0]), polygon[i][1] + scale * (n1[1] + n2[1])});
+  }
+  return out;
+}
+
+// a column of `height` touching boxes, the top one `topDensity` times as dense as the others (a
+// heavy box on light ones: scenes/mass_ratio_stack.yaml)
+inline StackLayout stack(int height, double topDensity = 1.0) {
   StackLayout l;
   l.name = "stack" + std::to_string(height);
-  for (int k = 0; k < height; ++k) l.boxes.push_back({0.0, 0.5 + k, 0.0, 0.5 + k});
+  if (topDensity != 1.0) {
+    char ratio[32];
+    std::snprintf(ratio, sizeof ratio, "%g", topDensity);
+    l.name += std::string("-top") + ratio;
+  }
+  for (int k = 0; k < height; ++k) l.boxes.push_back({0.0, 0.5 + k, 0.0, 0.5 + k, {}, k == height - 1 ? topDensity : 1.0});
+  return l;
+}
+
+// the Arch of Box2D's samples (Box2D v3's samples/sample_stacking.cpp, Solver2D's Arch): the inner
+// and outer outlines of its right leg at a quarter of the sample's numbers, mirrored for the left
+inline StackLayout arch() {
+  const Point inner[9] = {{16.0, 0.0},
+                          {14.93803712795643, 5.133601056842984},
+                          {13.79871746027416, 10.24928069555078},
+                          {12.56252963284711, 15.34107019122473},
+                          {11.20040987372525, 20.39856541571217},
+                          {9.66521217819836, 25.40369899225096},
+                          {7.87179930638133, 30.3179337000085},
+                          {5.635199558196225, 35.03820717801641},
+                          {2.405937953536585, 39.09554102558315}};
+  const Point outer[9] = {{24.0, 0.0},
+                          {22.33619528222415, 6.02299846205841},
+                          {20.54936888969905, 12.00964361211476},
+                          {18.60854610798073, 17.9470321677465},
+                          {16.46769273811807, 23.81367936585418},
+                          {14.05325025774858, 29.57079353071012},
+                          {11.23551045834022, 35.13775818285372},
+                          {7.752568160730571, 40.30450679009583},
+                          {3.016931552701656, 44.28891593799322}};
+  auto scaled = [](Point p, double sx) { return Point{0.25 * sx * p[0], 0.25 * p[1]}; };
+  StackLayout l;
+  l.name = "arch";
+  // a body from its outline in world coordinates, counterclockwise: placed at its centroid
+  auto add = [&l](std::vector<Point> world) {
+    double area = 0.0, cx = 0.0, cy = 0.0;
+    for (size_t i = 0; i < world.size(); ++i) {
+      const Point &p = world[i], &q = world[(i + 1) % world.size()];
+      const double a = p[0] * q[1] - q[0] * p[1];
+      area += 0.5 * a, cx += (p[0] + q[0]) * a / 6.0, cy += (p[1] + q[1]) * a / 6.0;
+    }
+    cx /= area, cy /= area;
+    BoxPlacement b{cx, cy, cx, cy, {}};
+    for (const Point& p : world) b.polygon.push_back({p[0] - cx, p[1] - cy});
+    l.boxes.push_back(b);
+  };
+  for (int i = 0; i < 8; ++i) add({scaled(inner[i], 1), scaled(outer[i], 1), scaled(outer[i + 1], 1), scaled(inner[i + 1], 1)});
+  for (int i = 0; i < 8; ++i)
+    add({scaled(outer[i], -1), scaled(inner[i], -1), scaled(inner[i + 1], -1), scaled(outer[i + 1], -1)});
+  add({scaled(inner[8], 1), scaled(outer[8], 1), scaled(outer[8], -1), scaled(inner[8], -1)});
+  // the four blocks on the keystone, the top one last
+  for (int i = 0; i < 4; ++i) {
+    const double y = 0.5 + 0.25 * outer[8][1] + i;
+    l.boxes.push_back({0.0, y, 0.0, y, {{-2.0, -0.5}, {2.0, -0.5}, {2.0, 0.5}, {-2.0, 0.5}}});
+  }
   return l;
 }
 
@@ -90,6 +176,7 @@ struct BodyEnd {
 // how well a stack held, from the boxes' final states (same order as layout.boxes)
 struct StackMetrics {
   double topDisplacement = 0.0;  // |p − p_rest| of the top box, m (the start, when touching)
+  double topDrop = 0.0;          // y_rest − y of the top box, m: how far it sank (the arch's sag)
   double maxOffRestX = 0.0;      // max over boxes of |x − rest x|, m: the bulge
   double fastestSpeed = 0.0;     // max over boxes of |v|, m/s
   double fastestSpin = 0.0;      // max over boxes of |ω|, rad/s
@@ -110,6 +197,7 @@ inline StackMetrics measure(const StackLayout& layout, const std::vector<BodyEnd
   if (!end.empty()) {
     const BoxPlacement& top = layout.boxes.back();
     m.topDisplacement = std::hypot(end.back().x - top.restX, end.back().y - top.restY);
+    m.topDrop = top.restY - end.back().y;
   }
   return m;
 }

@@ -91,12 +91,13 @@ struct ClipPoint {
 
 // the points of a polygon pair with the reference edge on A (refA) or on B: the incident edge
 // (the one most anti-parallel to the reference normal) clipped to the reference edge's side
-// planes (Box2D-Lite's clipping), keeping the points within the margin of the reference face
+// planes (Box2D-Lite's clipping) moved out by the side slack (Box2D 2.4's b2CollidePolygons moves
+// them by the skin), keeping the points within the margin of the reference face
 // (kSize > 0: both polygons have that many vertices, so that the loop unrolls and the next vertex
 // is found without a division)
 template <size_t kSize>
 void clipToReference(const WorldPolygon& A, const WorldPolygon& B, const EdgeSeparation& ea, const EdgeSeparation& eb, bool refA,
-                     double margin, Manifold& m) {
+                     double margin, double sideSlack, Manifold& m) {
   const WorldPolygon& ref = refA ? A : B;
   const WorldPolygon& inc = refA ? B : A;
   const int edge = refA ? ea.edge : eb.edge;
@@ -116,8 +117,8 @@ void clipToReference(const WorldPolygon& A, const WorldPolygon& B, const EdgeSep
   const Vec2 v1 = ref.v[edge], v2 = ref.v[refNext];
   const Vec2 t = (v2 - v1).normalized();
   ClipPoint once[3], twice[3];
-  if (clipSegment(incident, once, -t, -t.dot(v1), edge) < 2) return;
-  if (clipSegment(once, twice, t, t.dot(v2), refNext) < 2) return;
+  if (clipSegment(incident, once, -t, -t.dot(v1) + sideSlack, edge) < 2) return;
+  if (clipSegment(once, twice, t, t.dot(v2) + sideSlack, refNext) < 2) return;
   for (int k = 0; k < 2; ++k) {
     const double sep = nRef.dot(twice[k].p - v1);
     if (sep > margin) continue;
@@ -132,7 +133,7 @@ void clipToReference(const WorldPolygon& A, const WorldPolygon& B, const EdgeSep
 // polygon against polygon: SAT picks the reference edge, the incident edge is clipped to its sides
 // (kSize as clipToReference's: 4 for two boxes, the common case, whose loops unroll)
 template <size_t kSize>
-Manifold polygonsOf(const WorldPolygon& A, const WorldPolygon& B, double margin) {
+Manifold polygonsOf(const WorldPolygon& A, const WorldPolygon& B, double margin, double sideSlack) {
   const EdgeSeparation ea = maxSeparationOf<kSize>(A, B), eb = maxSeparationOf<kSize>(B, A);
   Manifold m;
   // the notes' separation(P, Q) and its features, exactly as on the slide
@@ -142,10 +143,10 @@ Manifold polygonsOf(const WorldPolygon& A, const WorldPolygon& B, double margin)
   // for the manifold, keep A's edge unless B's is clearly better, so the choice does not flip
   // from step to step on near ties (Box2D's b2CollidePolygons does the same)
   const bool refA = !(eb.separation > ea.separation + settings::kReferenceEdgeHysteresis);
-  clipToReference<kSize>(A, B, ea, eb, refA, margin, m);
+  clipToReference<kSize>(A, B, ea, eb, refA, margin, sideSlack, m);
   if (m.separation > margin) return m;
   // the kept edge's sides can miss the incident edge near a corner: then use the best edge
-  if (m.count == 0 && refA != bestA) clipToReference<kSize>(A, B, ea, eb, bestA, margin, m);
+  if (m.count == 0 && refA != bestA) clipToReference<kSize>(A, B, ea, eb, bestA, margin, sideSlack, m);
   // corner against corner: no edge's sides hold the other's edge; the incident vertex touches
   // the reference edge's end, so the contact runs between the closest points of the two
   if (m.count == 0) {
@@ -168,9 +169,9 @@ Manifold polygonsOf(const WorldPolygon& A, const WorldPolygon& B, double margin)
   return m;
 }
 
-Manifold polygons(const PlacedShape& a, const PlacedShape& b, double margin) {
+Manifold polygons(const PlacedShape& a, const PlacedShape& b, double margin, double sideSlack) {
   const WorldPolygon A(a), B(b);
-  return A.size() == 4 && B.size() == 4 ? polygonsOf<4>(A, B, margin) : polygonsOf<0>(A, B, margin);
+  return A.size() == 4 && B.size() == 4 ? polygonsOf<4>(A, B, margin, sideSlack) : polygonsOf<0>(A, B, margin, sideSlack);
 }
 
 // a contact whose normal points out of the first shape toward the second
@@ -278,17 +279,17 @@ SatFeatures sat(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb) 
   return {true, onA ? ea.separation : eb.separation, onA, onA ? ea.edge : eb.edge, onA ? ea.vertex : eb.vertex};
 }
 
-Manifold collide(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, double margin) {
+Manifold collide(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, double margin, double sideSlack) {
   place(a, pa, scratchA);
   place(b, pb, scratchB);
-  return collide(scratchA, scratchB, margin);
+  return collide(scratchA, scratchB, margin, sideSlack);
 }
 
-Manifold collide(const PlacedShape& pa, const PlacedShape& pb, double margin) {
+Manifold collide(const PlacedShape& pa, const PlacedShape& pb, double margin, double sideSlack) {
   using K = ShapeKind;
   const Shape &a = *pa.shape, &b = *pb.shape;
   // each pair function's normal points out of its first shape; ours points out of B
-  if (a.kind == K::Polygon && b.kind == K::Polygon) return polygons(pa, pb, margin);
+  if (a.kind == K::Polygon && b.kind == K::Polygon) return polygons(pa, pb, margin, sideSlack);
   if (a.kind == K::Circle && b.kind == K::Circle) return circles(pa, pb, margin);
   if (b.kind == K::Plane && a.kind != K::Plane) return planeShape(pb, pa, margin);
   if (a.kind == K::Plane && b.kind != K::Plane) return flipped(planeShape(pa, pb, margin));

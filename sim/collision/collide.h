@@ -64,10 +64,13 @@ struct PlacedShape {
 // `shape` at `pose`, into `out` (its storage reused)
 void place(const Shape& shape, const Pose& pose, PlacedShape& out);
 
-// the contact manifold of two shapes; points are kept while their separation is at most `margin`
-Manifold collide(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, double margin);
+// the contact manifold of two shapes; points are kept while their separation is at most `margin`;
+// a polygon pair clips its incident edge to the reference edge's side planes moved out by
+// `sideSlack` (0: the edge's own ends; Box2D's skin, settings::kClipSideSlack, for the sequential
+// solver), so a point may lie that far past the reference edge's end
+Manifold collide(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, double margin, double sideSlack = 0.0);
 // the same of two placed shapes (the same numbers: the shapes are placed the same way)
-Manifold collide(const PlacedShape& a, const PlacedShape& b, double margin);
+Manifold collide(const PlacedShape& a, const PlacedShape& b, double margin, double sideSlack = 0.0);
 
 // axis-aligned bounds of a shape in a pose (a plane is unbounded)
 struct Aabb {

@@ -36,6 +36,6 @@ struct Output {
 };
 
 // the four lanes; `hysteresis` is settings::kReferenceEdgeHysteresis
-void collideLanes(const Input& in, double margin, double hysteresis, Output& out);
+void collideLanes(const Input& in, double margin, double hysteresis, double sideSlack, Output& out);
 
 }  // namespace sim::collision::quad

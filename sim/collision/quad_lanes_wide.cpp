@@ -109,7 +109,7 @@ I featureId(I referenceOnA, I reference, I incident) {
 
 }  // namespace
 
-void collideLanes(const Input& in, double margin, double hysteresis, Output& out) {
+void collideLanes(const Input& in, double margin, double hysteresis, double sideSlack, Output& out) {
   Polygon A, B;
   loadPoints(in.av, A.vx, A.vy);
   loadPoints(in.an, A.nx, A.ny);
@@ -158,8 +158,8 @@ void collideLanes(const Input& in, double margin, double hysteresis, Output& out
   const V tx = select(positive, dx / root, dx), ty = select(positive, dy / root, dy);
   ClipPoint once[2], twice[2];
   I kept = splatI(-1);
-  clipSegment(incident, once, -tx, -ty, -(tx * v1x + ty * v1y), edge, kept);
-  clipSegment(once, twice, tx, ty, tx * v2x + ty * v2y, refNext, kept);
+  clipSegment(incident, once, -tx, -ty, -(tx * v1x + ty * v1y) + splat(sideSlack), edge, kept);
+  clipSegment(once, twice, tx, ty, tx * v2x + ty * v2y + splat(sideSlack), refNext, kept);
   V sep[2], px[2], py[2];
   I keep[2], id[2];
   for (int k = 0; k < 2; ++k) {

@@ -7,11 +7,11 @@
 namespace sim::collision {
 
 void collideQuadPairs(const PlacedShape* const a[kQuadLanes], const PlacedShape* const b[kQuadLanes], double margin,
-                      Manifold out[kQuadLanes]) {
+                      Manifold out[kQuadLanes], double sideSlack) {
   static_assert(kQuadLanes == quad::kLanes, "one lane a pair");
   // (without AVX2 here, one pair at a time)
   if (!sim::core::avx2Available()) {
-    for (int k = 0; k < kQuadLanes; ++k) out[k] = collide(*a[k], *b[k], margin);
+    for (int k = 0; k < kQuadLanes; ++k) out[k] = collide(*a[k], *b[k], margin, sideSlack);
     return;
   }
   quad::Input in;
@@ -21,10 +21,10 @@ void collideQuadPairs(const PlacedShape* const a[kQuadLanes], const PlacedShape*
     in.bv[k] = b[k]->vertices.front().data(), in.bn[k] = b[k]->normals.front().data();
   }
   quad::Output lanes;
-  quad::collideLanes(in, margin, sim::core::settings::kReferenceEdgeHysteresis, lanes);
+  quad::collideLanes(in, margin, sim::core::settings::kReferenceEdgeHysteresis, sideSlack, lanes);
   for (int k = 0; k < kQuadLanes; ++k) {
     if (lanes.again[k]) {
-      out[k] = collide(*a[k], *b[k], margin);
+      out[k] = collide(*a[k], *b[k], margin, sideSlack);
       continue;
     }
     Manifold& m = out[k];

@@ -18,8 +18,8 @@ inline bool isQuadPair(const PlacedShape& a, const PlacedShape& b) {
          b.shape->kind == sim::core::ShapeKind::Polygon;
 }
 
-// collide(*a[k], *b[k], margin) for k = 0 to 3, every pair a quad pair
+// collide(*a[k], *b[k], margin, sideSlack) for k = 0 to 3, every pair a quad pair
 void collideQuadPairs(const PlacedShape* const a[kQuadLanes], const PlacedShape* const b[kQuadLanes], double margin,
-                      Manifold out[kQuadLanes]);
+                      Manifold out[kQuadLanes], double sideSlack = 0.0);
 
 }  // namespace sim::collision

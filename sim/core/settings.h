@@ -69,6 +69,15 @@ inline constexpr double kBroadPhaseExtension = 0.1;
 // b2CollidePolygons: 0.1 × linear slop, 0.5 mm)
 inline constexpr double kReferenceEdgeHysteresis = 0.05 * kContactMargin;
 
+// the sequential solver's polygon pairs clip the incident edge to the reference edge's side planes
+// moved out by this, m, so that an incident vertex a hair past the reference edge's end (a box on
+// one as wide, turned by round-off) stays the point it was, with its feature id and so its warm
+// start, instead of becoming a new point cut at the edge's end that starts cold on one side only
+// (issue 36: a column of four boxes whose top weighs 30 times each of the others held in place of
+// collapsing, the arch's top sag 0.505 → 0.34 m). Box2D 2.4's b2CollidePolygons moves them out
+// by the polygons' skin, b2_polygonRadius each: 1 cm past the rounded outline, 2 × linear slop
+inline constexpr double kClipSideSlack = 0.01;
+
 // penetration the sequential solver leaves uncorrected, m (Box2D's b2_linearSlop: 0.5 cm), so
 // resting contacts do not jitter
 inline constexpr double kLinearSlop = 0.005;

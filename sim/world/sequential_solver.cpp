@@ -244,8 +244,9 @@ class SequentialSolver final : public Method {
   // iterations, positions, position iterations
   void step(World& world, const TimeStep& step) override {
     // the contacts where the bodies are now, carrying over last step's impulses (warm starting),
-    // prepared for the loops
-    world.findContacts(settings::kContactMargin, fresh_);
+    // prepared for the loops; polygon pairs clipped with Box2D 2.4's side slack, so that a point
+    // keeps its features (and its warm start) when a box turns by a hair on one as wide
+    world.findContacts(settings::kContactMargin, fresh_, nullptr, settings::kClipSideSlack);
     std::swap(world.contacts, fresh_);
     prepareContacts(world, step.h, poses_, constraints_, anchors_, vnBefore_);
     // move freely, remembering where the free motion ends

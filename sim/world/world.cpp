@@ -64,7 +64,7 @@ std::vector<Contact> World::findContacts(double margin) const {
   return found;
 }
 
-void World::findContacts(double margin, std::vector<Contact>& found, WorkerPool* threads) {
+void World::findContacts(double margin, std::vector<Contact>& found, WorkerPool* threads, double sideSlack) {
   assert(&found != &contacts && "findContacts writes over `contacts`: give it another list");
   const bool skip = sleeping() && sleep_.sleepingBodies() > 0;
   // when every body that can move sleeps, nothing touches anything awake: not even the broad phase
@@ -75,16 +75,16 @@ void World::findContacts(double margin, std::vector<Contact>& found, WorkerPool*
   }
   // (with nothing asleep, the contacts that stay are written over last step's: wakeTouched reads
   // last step's list whole)
-  contactPairsKept_ = collectContacts(margin, found, skip, true, threads, skip ? nullptr : &contacts);
+  contactPairsKept_ = collectContacts(margin, found, skip, true, threads, skip ? nullptr : &contacts, sideSlack);
   // sleeping islands that an awake body touches wake before the solve (Box2D v3 wakes a solver set
   // when a contact begins touching it), and their own contacts are found with them (and may touch
   // another island)
   while (skip && sleep_.wakeTouched(found, contacts))
-    (void)collectContacts(margin, found, sleep_.sleepingBodies() > 0, true, threads);
+    (void)collectContacts(margin, found, sleep_.sleepingBodies() > 0, true, threads, nullptr, sideSlack);
 }
 
 bool World::collectContacts(double margin, std::vector<Contact>& found, bool awakeOnly, bool warmStart, WorkerPool* threads,
-                            std::vector<Contact>* lastStep) const {
+                            std::vector<Contact>* lastStep, double sideSlack) const {
   const int n = static_cast<int>(bodies.size());
   const bool shared = threads && threads->size() > 1;
   // each body placed once (one sine and cosine, its vertices in the world), for its bounds and
@@ -119,7 +119,7 @@ bool World::collectContacts(double margin, std::vector<Contact>& found, bool awa
     return awakeOnly && (bodies[i].isStatic || sleep_.asleep(i)) && (bodies[j].isStatic || sleep_.asleep(j));
   };
   auto collidePair = [&](int k) {
-    return skipped(k) ? Manifold{} : collide(placed_[pairs_[k].first], placed_[pairs_[k].second], margin);
+    return skipped(k) ? Manifold{} : collide(placed_[pairs_[k].first], placed_[pairs_[k].second], margin, sideSlack);
   };
   // pairs_[k, k + 4) into out[0, 4): four box pairs at once (quad_pairs.h: collide()'s manifolds to
   // the bit), else one at a time
@@ -131,7 +131,7 @@ bool World::collectContacts(double margin, std::vector<Contact>& found, bool awa
       a[q] = &placed_[pairs_[k + q].first], b[q] = &placed_[pairs_[k + q].second];
       quads = quads && !skipped(k + q) && isQuadPair(*a[q], *b[q]);
     }
-    if (quads) return collideQuadPairs(a, b, margin, out);
+    if (quads) return collideQuadPairs(a, b, margin, out, sideSlack);
     for (int q = 0; q < kQuadLanes; ++q) out[q] = collidePair(k + q);
   };
   // the manifolds of pairs_[first, last) into out[0, last − first)

@@ -142,7 +142,8 @@ class World {
   // the same). With nothing asleep the contacts are written over `contacts` where they can be and
   // the two lists' storage swapped: `contacts` is then `found`'s old storage, to be swapped back
   // (as the solvers do: `std::swap(world.contacts, found)`); `found` must be another list.
-  void findContacts(double margin, std::vector<Contact>& found, WorkerPool* threads = nullptr);
+  // `sideSlack`: the polygon pairs' clipping slack (collide()).
+  void findContacts(double margin, std::vector<Contact>& found, WorkerPool* threads = nullptr, double sideSlack = 0.0);
   // the last findContacts(margin, found) found the pairs of the list before it, in the same order
   // (then a solver's arrangement of them still holds); false when it cannot tell
   bool contactPairsKept() const { return contactPairsKept_; }
@@ -170,9 +171,9 @@ class World {
   // `awakeOnly`, warm started from `contacts` when `warmStart`; the placing and the narrow phase
   // split between `threads` when there are two or more. `lastStep` (`contacts`, or none): a list
   // the contacts may be written over while its pairs are theirs (then its storage and found's swap)
-  // Returns whether the pairs were lastStep's, each written over its own.
+  // Returns whether the pairs were lastStep's, each written over its own. `sideSlack` as collide()'s.
   bool collectContacts(double margin, std::vector<Contact>& found, bool awakeOnly, bool warmStart, WorkerPool* threads = nullptr,
-                       std::vector<Contact>* lastStep = nullptr) const;
+                       std::vector<Contact>* lastStep = nullptr, double sideSlack = 0.0) const;
 
   bool started_ = false;
   bool contactPairsKept_ = false;

@@ -87,10 +87,13 @@ void checkQuads(const sim::core::Shape& a, const sim::core::Pose& pa, const sim:
   if (!sim::collision::isQuadPair(A, B)) return;
   const sim::collision::PlacedShape* first[sim::collision::kQuadLanes] = {&A, &B, &A, &B};
   const sim::collision::PlacedShape* second[sim::collision::kQuadLanes] = {&B, &A, &B, &A};
-  sim::collision::Manifold lanes[sim::collision::kQuadLanes];
-  sim::collision::collideQuadPairs(first, second, margin, lanes);
-  for (int k = 0; k < sim::collision::kQuadLanes; ++k)
-    if (!same(lanes[k], sim::collision::collide(*first[k], *second[k], margin))) std::abort();
+  // with and without the sequential solver's side slack
+  for (double slack : {0.0, sim::core::settings::kClipSideSlack}) {
+    sim::collision::Manifold lanes[sim::collision::kQuadLanes];
+    sim::collision::collideQuadPairs(first, second, margin, lanes, slack);
+    for (int k = 0; k < sim::collision::kQuadLanes; ++k)
+      if (!same(lanes[k], sim::collision::collide(*first[k], *second[k], margin, slack))) std::abort();
+  }
 }
 
 }  // namespace

@@ -108,11 +108,12 @@ TEST_CASE("a stack sweep: more iterations or substeps leave a 10-box column's to
     CHECK(r.maxDisplacement >= r.topDisplacement);
     return r.topDisplacement;
   };
-  // two sequential iterations let the column fall; eight hold it within its slop
+  // two sequential iterations let the column sink 7.8 cm (it fell before the side slack of issue
+  // 36 kept each box's contact points as the box turns by round-off); eight hold it within its slop
   const double two = run(CollisionMethod::Sequential, 2, 0), eight = run(CollisionMethod::Sequential, 8, 0);
   CHECK(eight < two);
   CHECK(eight < 0.05);
-  CHECK(two > 1.0);
+  CHECK(two > 0.05);
   // one soft substep lets it fall; four hold it
   const double one = run(CollisionMethod::SoftStep, 8, 1), four = run(CollisionMethod::SoftStep, 8, 4);
   CHECK(four < one);

@@ -442,6 +442,33 @@ TEST_CASE("two equal boxes as in a pyramid: the ids stay when the reference edge
   CHECK(leftmost(onB).id != rightmost(onB).id);
 }
 
+TEST_CASE("a box on one as wide, turned by a hair: with the side slack both points keep their ids") {
+  // A rests on B, 5 mm deep, turned by round-off. A's bottom edge is the reference (the two edges'
+  // separations tie), and its side planes turn with it: one of B's top corners falls a hair outside
+  // them. Clipped at the edge's end, that point becomes A's corner on B's edge, a new id, and starts
+  // cold in the stack solver on one side only; with the side planes moved out by the slack (Box2D
+  // 2.4's skin) B's corner stays the point it was, a hair past the reference edge's end
+  const sim::core::Shape box = sim::core::makeBox(1.0, 1.0);
+  const double depth = 0.005, slack = sim::core::settings::kClipSideSlack;
+  auto ids = [&](double turn, double sideSlack) {
+    const sim::collision::Manifold m =
+        sim::collision::collide(box, pose(0, 1.0 - depth, turn), box, pose(0, 0), kMargin, sideSlack);
+    REQUIRE(m.count == 2);
+    return std::make_pair(leftmost(m).id, rightmost(m).id);
+  };
+  const auto level = ids(0.0, 0.0);
+  CHECK(ids(0.0, slack) == level);
+  for (double turn : {1e-9, -1e-9, 1e-6, -1e-6, 1e-3, -1e-3}) {
+    CAPTURE(turn);
+    CHECK(ids(turn, slack) == level);
+    CHECK(ids(turn, 0.0) != level);
+  }
+  // a point past the reference edge's end is where B's corner is (A's is 0.5 mm in)
+  const sim::collision::Manifold m = sim::collision::collide(box, pose(0, 1.0 - depth, 1e-3), box, pose(0, 0), kMargin, slack);
+  CHECK(leftmost(m).point.x() == doctest::Approx(-0.5).epsilon(1e-4));
+  CHECK(rightmost(m).point.x() == doctest::Approx(0.5).epsilon(1e-4));
+}
+
 TEST_CASE("a wide box on a narrow one: the points are at the narrow box's corners") {
   const sim::core::Shape wide = sim::core::makeBox(3.0, 0.5), narrow = sim::core::makeBox(1.0, 1.0);
   const sim::collision::Manifold m = sim::collision::collide(wide, pose(0.2, 0.5 + 0.25 - 0.004), narrow, pose(0, 0), kMargin);

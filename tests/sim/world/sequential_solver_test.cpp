@@ -2,6 +2,7 @@
 // friction and position correction (Box2D 2.4): stacks stand, fast thin bodies tunnel.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -35,10 +36,11 @@ std::string boxStack() {
 
 // pyramid.yaml: a ground box 80 × 1 centered at (0, −0.5); rows r = 0 … 19 of 20 − r boxes resting
 // on each other, box j of row r at (−7 + 0.5625 r + 1.125 j, 0.5 + r); 210 boxes. Dropped: Box2D's
-// testbed layout, each row starting 0.25 m above the one below (y = 0.75 + 1.25 r)
-std::string pyramid(bool dropped = false, int positionIterations = 3) {
+// testbed layout, each row starting 0.25 m above the one below (y = 0.75 + 1.25 r); under gravity g
+std::string pyramid(bool dropped = false, int positionIterations = 3, double g = 10.0) {
   std::string s = std::string(kSolverSettings) + "  - {name: ground, shape: {box: [80, 1]}, static: true, position: [0, -0.5]}\n";
   s.replace(s.find("position_iterations: 3"), 22, "position_iterations: " + std::to_string(positionIterations));
+  s.replace(s.find("gravity: [0, -10]"), 17, "gravity: " + vec(0, -g));
   for (int r = 0; r < 20; ++r)
     for (int j = 0; j < 20 - r; ++j)
       s += "  - {name: b" + std::to_string(r + 1) + "_" + std::to_string(j + 1) +
@@ -105,10 +107,33 @@ void checkStands(const std::string& yaml, const char* name, size_t bodies) {
 
 TEST_CASE("sequential: the 10-box stack stands for 10 s") { checkStands(boxStack(), "box stack", 11); }
 
+// mass_ratio_stack.yaml at 50 : 1, a box of 50 kg on three of 1 kg: it holds because each box turned
+// by round-off on the one under it keeps its contact points and their warm start (the side slack,
+// settings::kClipSideSlack); with the clipping at the edges' ends it fell at 27 : 1 (`rigidreel
+// stability scenes/mass_ratio_stack.yaml`: 5.36 times the scene's 5 : 1, now 18.6). Box2D 2.4 holds
+// such a column to 60 : 1 (rigidreel_stack_bench, a ground box). The light boxes give 3 cm under
+// the load at first, so the criterion is the scene's: every box within 5 cm and at rest at the end
+TEST_CASE("sequential: a box 50 times heavier than each of the three under it stands for 10 s") {
+  std::string s = std::string(kSolverSettings) + "  - {name: ground, shape: {plane: {point: [0, 0], normal: [0, 1]}}}\n";
+  for (int i = 0; i < 4; ++i)
+    s += "  - {name: box" + std::to_string(i + 1) + ", shape: {box: [1, 1]}, density: " + (i == 3 ? "50" : "1") +
+         ", position: " + vec(0, 0.5 + i) + "}\n";
+  sim::world::World w = build(s);
+  w.advanceTo(10.0);
+  for (int i = 1; i <= 4; ++i) {
+    CAPTURE(i);
+    MESSAGE("box " << i << " ends " << (w.bodies[i].x - sim::core::Vec2(0, i - 0.5)).norm() << " m from its start, at "
+                   << w.bodies[i].v.norm() << " m/s");
+    CHECK((w.bodies[i].x - sim::core::Vec2(0, i - 0.5)).norm() < 0.05);
+    CHECK(w.bodies[i].v.norm() < 0.01);
+    CHECK(std::abs(w.bodies[i].omega) < 0.01);
+  }
+}
+
 // Measured: the top box dips 0.0552 m in the first 0.15 s (the rows start exactly touching, and
 // 8 Gauss–Seidel sweeps per step cannot pass the load of 20 rows down at once, so the upper rows
 // fall a little until the accumulated, warm-started impulses hold them), rebounds, and settles
-// 0.0365 m from its start (0.0353 m lower, as each of the 20 contact layers sinks into its slop).
+// 0.0356 m from its start (0.0343 m lower, as each of the 20 contact layers sinks into its slop).
 // The criterion is therefore the position after the 10 s (5 %), with the transient dip bounded
 // by 10 %.
 TEST_CASE("sequential: the 20-base pyramid (210 boxes) stands for 10 s") { checkStands(pyramid(), "pyramid", 211); }
@@ -121,8 +146,8 @@ struct Settled {
   double offRestX = 0.0, fastest = 0.0;
 };
 
-Settled dropPyramid(int positionIterations) {
-  sim::world::World w = build(pyramid(true, positionIterations));
+Settled dropPyramid(int positionIterations, double g) {
+  sim::world::World w = build(pyramid(true, positionIterations, g));
   std::vector<double> restX;
   for (const sim::core::Body& b : w.bodies) restX.push_back(b.x.x());
   w.advanceTo(10.0);
@@ -134,23 +159,39 @@ Settled dropPyramid(int positionIterations) {
   return s;
 }
 
+// the median of five values
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
 }  // namespace
 
-// Box2D's testbed pyramid drops into place. Measured (issue 14): 0.0577 m and 0.0001 m/s with 3
-// position passes, 0.0563 m with 10; Box2D 2.4 in the same run 0.068 m (rigidreel_stack_bench).
-// Before the flip-invariant feature ids it bulged 0.36 m and crept at 0.02 m/s.
-TEST_CASE("sequential: the dropped 20-base pyramid settles in place; 10 position passes do no worse than 3") {
-  const Settled three = dropPyramid(3), ten = dropPyramid(10);
-  MESSAGE("dropped pyramid, max |x - rest x| / fastest point speed: 3 passes "
-          << three.offRestX << " m / " << three.fastest << " m/s; 10 passes " << ten.offRestX << " m / " << ten.fastest
-          << " m/s");
-  // every box within 0.1 m of its rest x, and at rest (its corners slower than 1 cm/s)
-  CHECK(three.offRestX < 0.1);
-  CHECK(three.fastest < 0.01);
-  CHECK(ten.offRestX < 0.1);
-  CHECK(ten.fastest < 0.01);
-  // more position passes never make it worse (1 mm for round-off in what is a chaotic settling)
-  CHECK(ten.offRestX <= three.offRestX + 1e-3);
+// Box2D's testbed pyramid drops into place. Where each box lands is chaotic: a thousandth more or
+// less gravity moves the bulge by centimetres (`rigidreel_stack_bench --layout pyramid:20:dropped
+// --gravity -G --position-iterations P`, G = 9.98 … 10.02: 3 passes 0.033, 0.058, 0.058, 0.057,
+// 0.057 m; 10 passes 0.088, 0.091, 0.072, 0.063, 0.060 m), so it is judged on the median of five
+// runs at gravity nudged by 0.1 % steps. More passes bulge it more since the polygon pairs clip
+// with Box2D's side slack (issue 36; before, 0.058 and 0.060 m at the median), as they do in Box2D
+// 2.4 itself (the same bench: 0.068 and 0.098 m). Before the flip-invariant feature ids it bulged
+// 0.36 m and crept at 0.02 m/s.
+TEST_CASE("sequential: the dropped 20-base pyramid settles in place, with 3 position passes and with 10") {
+  std::vector<double> three, ten;
+  for (double g : {9.98, 9.99, 10.0, 10.01, 10.02})
+    for (int passes : {3, 10}) {
+      CAPTURE(g);
+      CAPTURE(passes);
+      const Settled s = dropPyramid(passes, g);
+      MESSAGE("dropped pyramid, g = " << g << ", " << passes << " position passes: max |x - rest x| " << s.offRestX
+                                      << " m, fastest point speed " << s.fastest << " m/s");
+      // at rest (every box's corners slower than 1 cm/s), and no box more than 0.2 m off
+      CHECK(s.fastest < 0.01);
+      CHECK(s.offRestX < 0.2);
+      (passes == 3 ? three : ten).push_back(s.offRestX);
+    }
+  // every box within 0.1 m of its rest x
+  CHECK(median(three) < 0.1);
+  CHECK(median(ten) < 0.1);
 }
 
 TEST_CASE("sequential: warm starting carries the accumulated impulses from step to step") {

@@ -219,7 +219,7 @@ forces:
 
 TEST_CASE("pinned state hashes after N steps: a stack (sequential), impacts (event), isolated, forces (rk4)") {
   const Pinned pinned[] = {
-      {"stack", kStack, 300, 18150377844414245553ull},
+      {"stack", kStack, 300, 5430927149025592321ull},
       {"collisions", kCollisions, 300, 4991025036088471707ull},
       {"isolated", kIsolated, 400, 7426225104588946998ull},
       {"forces", kForces, 150, 17502462243100700567ull},
