@@ -107,7 +107,8 @@ TEST_CASE("a byte order mark before the header is ignored; a quote left open is 
   };
   const std::string header = "t,body,x,y,angle,vx,vy,omega\n";
   scene_errors::expectSceneError(load, "theirs.csv", header + "0,\"a,0,0,0,1,0,0\n", 2, 3, {"no closing quote"});
-  scene_errors::expectSceneError(load, "theirs.csv", header + "0,\"a\"x,0,0,0,1,0,0\n", 2, 6, {"expected a comma after the closing quote"});
+  scene_errors::expectSceneError(load, "theirs.csv", header + "0,\"a\"x,0,0,0,1,0,0\n", 2, 6,
+                                 {"expected a comma after the closing quote"});
   // a control character of a name not in the scene is shown escaped, never sent to the terminal
   scene_errors::expectSceneError(load, "theirs.csv", header + "0,\x1b[31m,0,0,0,1,0,0\n", 2, 3, {"no body named '\\x1b[31m'"});
 }
