@@ -126,10 +126,16 @@ sanitize: clang-deps
 # finds is written to $(FUZZ_BUILD)/<target>-crash-* (see tests/README.md: Sanitizers and fuzzing)
 fuzz: clang-deps
 	@cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ -DRIGIDREEL_FUZZ=ON >/dev/null
-	@cmake --build $(FUZZ_BUILD) -j $(JOBS) --target scene_loader_fuzz collide_fuzz
-	@mkdir -p $(FUZZ_BUILD)/corpus/scene_loader $(FUZZ_BUILD)/corpus/collide
+	@cmake --build $(FUZZ_BUILD) -j $(JOBS) --target scene_loader_fuzz collide_fuzz trace_reader_fuzz manifest_reader_fuzz
+	@mkdir -p $(FUZZ_BUILD)/corpus/scene_loader $(FUZZ_BUILD)/corpus/collide $(FUZZ_BUILD)/corpus/trace_reader \
+	  $(FUZZ_BUILD)/corpus/manifest_reader
 	$(FUZZ_BUILD)/tests/scene_loader_fuzz -max_total_time=$(FUZZ_SECONDS) -timeout=10 -rss_limit_mb=2048 \
 	  -max_len=4096 -dict=tests/fuzz/scene.dict -artifact_prefix=$(FUZZ_BUILD)/scene_loader- \
 	  $(FUZZ_BUILD)/corpus/scene_loader tests/fuzz/scene_loader scenes
 	$(FUZZ_BUILD)/tests/collide_fuzz -max_total_time=$(FUZZ_SECONDS) -timeout=10 \
 	  -artifact_prefix=$(FUZZ_BUILD)/collide- $(FUZZ_BUILD)/corpus/collide tests/fuzz/collide
+	$(FUZZ_BUILD)/tests/trace_reader_fuzz -max_total_time=$(FUZZ_SECONDS) -timeout=10 -rss_limit_mb=2048 \
+	  -max_len=4096 -artifact_prefix=$(FUZZ_BUILD)/trace_reader- $(FUZZ_BUILD)/corpus/trace_reader tests/fuzz/trace_reader
+	$(FUZZ_BUILD)/tests/manifest_reader_fuzz -max_total_time=$(FUZZ_SECONDS) -timeout=10 -rss_limit_mb=2048 \
+	  -max_len=4096 -artifact_prefix=$(FUZZ_BUILD)/manifest_reader- $(FUZZ_BUILD)/corpus/manifest_reader \
+	  tests/fuzz/manifest_reader

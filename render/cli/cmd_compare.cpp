@@ -13,6 +13,8 @@
 #include "render/jobs/json_writer.h"
 #include "render/video/output_names.h"
 #include "render/video/plan_writer.h"
+#include "sim/yaml/path_name.h"
+#include "sim/yaml/scene_error.h"
 
 namespace render::cli {
 using namespace render::golden;
@@ -73,6 +75,16 @@ int compare(const CompareCommand& o) {
   const Trace theirs = readTrace(o.trace, def);
   sim::world::World world = startWorld(def, o.scene);
   const std::vector<BodyComparison> bodies = compareTrace(def, world, theirs, tolerance);
+  // rows that meet none of our instants compare nothing: "ok (t = 0 to 0)" passed a trace of t = 5 to 6
+  for (size_t i = 0; i < bodies.size(); ++i)
+    if (bodies[i].compared && bodies[i].positionErrors.empty()) {
+      const std::vector<TraceSample>& rows = theirs.bodies[i];
+      throw sim::yaml::SceneError(o.trace, rows.front().line, 1,
+                                  "no row of '" + sim::yaml::shownName(def.bodies[i].name) + "' meets the run (t = 0 to " +
+                                      formatNumber(def.duration) + " s, a step every " + formatNumber(def.dt) +
+                                      " s): its rows run from t = " + formatNumber(rows.front().t) + " to " +
+                                      formatNumber(rows.back().t) + "; give rows within the run");
+    }
   const std::string base = render::video::outputBase(def);
   std::cout << base << " against " << o.trace << " (" << theirs.rows << " rows), tolerances: position "
             << formatNumber(tolerance.position) << " m, angle " << formatNumber(tolerance.angle) << " rad, velocity "

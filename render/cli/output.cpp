@@ -5,6 +5,7 @@
 #include <regex>
 
 #include "render/cli/commands.h"
+#include "render/jobs/interrupt.h"
 #include "render/jobs/json_writer.h"
 #include "render/scene/render_def.h"
 #include "render/video/output_names.h"
@@ -37,6 +38,8 @@ void checkFps(double fps, const std::string& option) {
 render::jobs::AtomicFile openOutput(const std::string& path, const std::string& option) {
   try {
     return render::jobs::AtomicFile(path);
+  } catch (const Interrupted&) {
+    throw;
   } catch (const std::runtime_error& e) {
     throw UsageError(option + ": " + e.what());
   }
@@ -59,13 +62,19 @@ std::string videoDiverged(const std::string& file, const render::video::VariantD
          ") or another integrator (--integrator rk4)\n";
 }
 
-std::unique_ptr<render::jobs::AtomicFile> openTrace(const std::string& path) {
-  if (namesStandardOutput(path)) return nullptr;
+std::unique_ptr<render::jobs::AtomicFile> openStaged(const std::string& path, const std::string& option) {
   try {
     return std::make_unique<render::jobs::AtomicFile>(path);
+  } catch (const Interrupted&) {
+    throw;
   } catch (const std::runtime_error& e) {
-    throw UsageError(std::string("--trace: ") + e.what());
+    throw UsageError(option + ": " + e.what());
   }
+}
+
+std::unique_ptr<render::jobs::AtomicFile> openTrace(const std::string& path) {
+  if (namesStandardOutput(path)) return nullptr;
+  return openStaged(path, "--trace");
 }
 
 std::ostream& traceStream(const std::unique_ptr<render::jobs::AtomicFile>& file) {

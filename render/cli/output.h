@@ -21,6 +21,9 @@ void checkFps(double fps, const std::string& option = "--fps");
 // fails at once: throws UsageError naming the option
 render::jobs::AtomicFile openOutput(const std::string& path, const std::string& option = "-o");
 
+// the same, owned: for an output opened only when asked for (--junit FILE)
+std::unique_ptr<render::jobs::AtomicFile> openStaged(const std::string& path, const std::string& option);
+
 // /dev/stdout (or /dev/fd/1, /proc/self/fd/1): written to standard output itself, in order with
 // what else is printed there (opened again, a regular file behind it would be written from its start)
 bool namesStandardOutput(const std::string& path);

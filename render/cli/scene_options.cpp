@@ -7,6 +7,7 @@
 #include <mutex>
 #include <set>
 #include <sstream>
+#include <thread>
 
 #include "render/cli/commands.h"
 #include "render/jobs/json_writer.h"
@@ -133,7 +134,11 @@ render::video::LoadVariant SceneOptions::variantLoader() const {
   return [options = *this](const std::string& variant) {
     SceneOptions one = options;
     one.variant = variant;
-    return one.load().scene;
+    render::scene::Scene scene = one.load().scene;
+    // each video's world started as check and lecture start it: overlapping bodies are bad input at
+    // their line (exit 2), not a failed render (the base scene of variants is never drawn)
+    if (!variant.empty() || scene.model.variantNames.empty()) (void)startWorld(scene.model, one.scene);
+    return scene;
   };
 }
 
@@ -154,6 +159,17 @@ void warnOfModel(const sim::scene::SceneDef& def, const std::string& file) {
     const std::string where = w.loc.line > 0 ? file + ":" + std::to_string(w.loc.line) + ":" + std::to_string(w.loc.column)
                                              : file + ": --" + w.setting + " " + w.value;
     const std::string line = where + ": warning: " + (w.loc.line > 0 ? "'" + w.setting + ": " + w.value + "': " : "") + w.message;
+    const std::lock_guard<std::mutex> hold(lock);
+    if (said.insert(line).second) std::cerr << line << '\n';
+  }
+  // more threads than cores take turns on them, and every step waits for the last: 64 threads on 2
+  // cores ran 65 times slower than one
+  const unsigned cores = std::thread::hardware_concurrency();
+  if (def.collisions == sim::world::CollisionMethod::SoftStep && cores > 0 && def.threads > static_cast<int>(cores)) {
+    const std::string line = file + ": warning: soft_step runs " + std::to_string(def.threads) + " threads on " +
+                             std::to_string(cores) + (cores == 1 ? " core" : " cores") +
+                             ", taking turns, and each step waits for all of them (slower than one thread); give at most " +
+                             std::to_string(cores) + " (sim: threads, --threads)";
     const std::lock_guard<std::mutex> hold(lock);
     if (said.insert(line).second) std::cerr << line << '\n';
   }

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
+#include <sstream>
 
+#include "render/jobs/bounded_read.h"
+#include "render/jobs/read_limits.h"
 #include "sim/yaml/scene_error.h"
 
 namespace render::cli {
@@ -19,7 +21,10 @@ struct Entry {
 // order.txt's entries, in order; none when there is no order.txt
 std::vector<Entry> readOrder(const fs::path& path) {
   std::vector<Entry> entries;
-  std::ifstream in(path);
+  std::error_code error;
+  if (!fs::exists(fs::symlink_status(path, error))) return entries;
+  std::istringstream in(std::string(render::jobs::withoutBom(render::jobs::readBounded(
+      path.string(), render::jobs::kMaxListFileBytes, "scene order", "make it a text file of scene names, one a line"))));
   std::string text;
   for (int line = 1; std::getline(in, text); ++line) {
     text = text.substr(0, text.find('#'));

@@ -3,6 +3,7 @@
 #include <fstream>
 
 #include "render/jobs/exit_status.h"
+#include "render/jobs/interrupt.h"
 
 namespace render::cli {
 
@@ -37,6 +38,8 @@ OutputFile::OutputFile(const std::string& path) {
   if (path.empty()) return;
   try {
     file_ = std::make_unique<render::jobs::AtomicFile>(path);
+  } catch (const render::jobs::Interrupted&) {
+    throw;
   } catch (const std::runtime_error& e) {
     throw render::jobs::UsageError(std::string("-o: ") + e.what());
   }

@@ -84,12 +84,27 @@ GlContext::GlContext(int width, int height, Antialiasing aa) : width_(width), he
   glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, w, h);
   glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[1]);
   glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, w, h);
+  // under a memory limit llvmpipe leaves a buffer without storage (width 0) and says nothing: the
+  // frame size, already within what the renderer draws, was never at fault
+  bool outOfMemory = false;
+  for (const GLuint buffer : renderbuffers_) {
+    GLint made = 0;
+    glBindRenderbuffer(GL_RENDERBUFFER, buffer);
+    glGetRenderbufferParameteriv(GL_RENDERBUFFER, GL_RENDERBUFFER_WIDTH, &made);
+    outOfMemory = outOfMemory || made != w;
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, renderbuffers_[0]);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, renderbuffers_[1]);
   if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
     OSMesaDestroyContext(context_);
-    throw std::runtime_error("OSMesa cannot draw frames of " + std::to_string(w) + "×" + std::to_string(h));
+    const std::string size = std::to_string(w) + "×" + std::to_string(h);
+    if (outOfMemory)
+      throw std::runtime_error(
+          "OSMesa could not get the memory for frames of " + size + " (" +
+          std::to_string(static_cast<long long>(w) * h * 8 >> 20) +
+          " MB of colour and depth); give the process more memory (ulimit -v) or draw smaller frames (--size)");
+    throw std::runtime_error("OSMesa cannot draw frames of " + size);
   }
   lists_[0] = glGenLists(2);
   lists_[1] = lists_[0] + 1;

@@ -75,6 +75,8 @@ RIGIDREEL_GL(OSMESAproc, OSMesaGetProcAddress, (const char* n), (n))
 
 // what the context reports of itself (a golden record's manifest names its renderer)
 RIGIDREEL_GL(const GLubyte*, glGetString, (GLenum n), (n))
+// whether the frame's buffers could be made (not under a memory limit)
+RIGIDREEL_GL(void, glGetRenderbufferParameteriv, (GLenum t, GLenum p, GLint* v), (t, p, v))
 RIGIDREEL_GL(void, glBegin, (GLenum m), (m))
 RIGIDREEL_GL(void, glEnd, (), ())
 RIGIDREEL_GL(void, glVertex2d, (GLdouble x, GLdouble y), (x, y))

@@ -7,6 +7,8 @@
 #include <stdexcept>
 
 #include "render/jobs/atomic_file.h"
+#include "render/jobs/bounded_read.h"
+#include "render/jobs/read_limits.h"
 
 namespace render::draw {
 using namespace render::jobs;
@@ -82,12 +84,29 @@ void writePng(const Image& image, const std::string& path, const PngSettings& se
   file.commit();
 }
 
-Image readPng(const std::string& path) {
-  // libpng's simplified API converts any PNG to RGBA8 and reports errors without longjmp
+namespace {
+
+// libpng's simplified API converts any PNG to RGBA8 and reports errors without longjmp; the header
+// read alone, nothing decoded yet
+png_image beginRead(const std::string& bytes, const std::string& path) {
   png_image info{};
   info.version = PNG_IMAGE_VERSION;
-  if (!png_image_begin_read_from_file(&info, path.c_str()))
+  if (!png_image_begin_read_from_memory(&info, bytes.data(), bytes.size()))
     throw std::runtime_error(path + ": cannot read PNG (" + info.message + ")");
+  return info;
+}
+
+}  // namespace
+
+PngSize pngSize(const std::string& bytes, const std::string& path) {
+  png_image info = beginRead(bytes, path);
+  const PngSize size{static_cast<long>(info.width), static_cast<long>(info.height)};
+  png_image_free(&info);
+  return size;
+}
+
+Image decodePng(const std::string& bytes, const std::string& path) {
+  png_image info = beginRead(bytes, path);
   info.format = PNG_FORMAT_RGBA;
   Image image;
   image.width = static_cast<int>(info.width);
@@ -100,5 +119,7 @@ Image readPng(const std::string& path) {
   }
   return image;
 }
+
+Image readPng(const std::string& path) { return decodePng(readBounded(path, kMaxPngBytes, "PNG", "give a PNG image"), path); }
 
 }  // namespace render::draw

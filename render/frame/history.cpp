@@ -1,7 +1,5 @@
 #include "render/frame/history.h"
 
-#include <algorithm>
-
 #include "render/jobs/interrupt.h"
 #include "sim/debug/describe.h"
 
@@ -43,7 +41,22 @@ void History::afterEvent(const sim::world::World& world, const sim::world::Impul
   PhysicsDraw physics(m.calls);
   const sim::debug::Arrow arrow = sim::debug::describeEventImpulse(world, e, options_.impulseScale, physics);
   if (options_.labels) options_.labels->event(e, arrow.tail, arrow.head, m.calls);
-  moments_.push_back(std::move(m));
+  begin(std::move(m));
+}
+
+long History::begin(Moment moment) {
+  const long id = next_++;
+  byTime_.emplace(moment.time, id);
+  if (moment.kind == Moment::Kind::Impact) impactOfPair_[moment.pair] = id;
+  moments_.emplace(id, std::move(moment));
+  return id;
+}
+
+void History::retime(long id, double time) {
+  Moment& m = moments_.at(id);
+  byTime_.erase({m.time, id});
+  m.time = time;
+  byTime_.emplace(time, id);
 }
 
 void History::observeImpacts(const sim::world::World& world) {
@@ -57,16 +70,18 @@ void History::observeImpacts(const sim::world::World& world) {
     // before, so that a pair hitting again and again (a jittering stack, a ball's last bounces)
     // shows one set of arrows and not a pile of fading ones
     const std::pair<int, int> pair(r.a, r.b);
-    auto m = std::find_if(moments_.rbegin(), moments_.rend(),
-                          [&](const Moment& k) { return k.kind == Moment::Kind::Impact && k.pair == pair; });
-    if (m == moments_.rend()) {
-      moments_.push_back({r.t, {}, Moment::Kind::Impact, pair});
-      m = moments_.rbegin();
-    } else if (m->time != r.t) {
-      m->time = r.t;
-      m->calls.clear();
+    const auto held = impactOfPair_.find(pair);
+    long id = 0;
+    if (held == impactOfPair_.end()) {
+      id = begin({r.t, {}, Moment::Kind::Impact, pair});
+    } else {
+      id = held->second;
+      if (moments_.at(id).time != r.t) {
+        retime(id, r.t);
+        moments_.at(id).calls.clear();
+      }
     }
-    DrawList& d = m->calls;
+    DrawList& d = moments_.at(id).calls;
     const bool first = d.empty();
     PhysicsDraw physics(d);
     sim::debug::describeImpact(world, r, options_.impulseScale, options_.normalLength, physics);
@@ -87,28 +102,23 @@ void History::observeContacts(const sim::world::World& world) {
   // contacts that go on touching step after step are one moment, kept up to date; a new touch
   // after a separation is a new moment, so that the last one fades while the next one shows
   if (touching_ >= 0) {
-    moments_[touching_].time = world.time;
-    std::swap(moments_[touching_].calls, now);
+    retime(touching_, world.time);
+    std::swap(moments_.at(touching_).calls, now);
   } else {
-    moments_.push_back({world.time, std::move(now), Moment::Kind::Contact, {-1, -1}});
-    touching_ = static_cast<long>(moments_.size()) - 1;
+    touching_ = begin({world.time, std::move(now), Moment::Kind::Contact, {-1, -1}});
   }
 }
 
 void History::forgetOld(double now) {
-  const double hold = options_.hold;
-  const auto keep = [&](const Moment& m) { return now - m.time <= hold; };
-  if (std::all_of(moments_.begin(), moments_.end(), keep)) return;
-  const Moment* touching = touching_ >= 0 ? &moments_[touching_] : nullptr;
-  std::vector<Moment> kept;
-  long index = -1;
-  for (const Moment& m : moments_) {
-    if (!keep(m)) continue;
-    if (&m == touching) index = static_cast<long>(kept.size());
-    kept.push_back(m);
+  // the oldest first, up to the first still held
+  while (!byTime_.empty() && now - byTime_.begin()->first > options_.hold) {
+    const long id = byTime_.begin()->second;
+    byTime_.erase(byTime_.begin());
+    const auto m = moments_.find(id);
+    if (m->second.kind == Moment::Kind::Impact) impactOfPair_.erase(m->second.pair);
+    moments_.erase(m);
+    if (id == touching_) touching_ = -1;
   }
-  moments_ = std::move(kept);
-  touching_ = index;
 }
 
 void History::drawTrails(Canvas& draw, double spacing) const {
@@ -128,7 +138,7 @@ void History::drawPath(const std::vector<Vec2>& path, double spacing, const Pen&
 
 void History::drawAfterimages(double t, Canvas& draw) const {
   const double hold = options_.hold;
-  for (const Moment& m : moments_) {
+  for (const auto& [id, m] : moments_) {
     const double age = t - m.time;
     if (age < 0.0 || age > hold) continue;
     m.calls.replay(draw, hold > 0.0 ? 1.0 - age / hold : 1.0);

@@ -6,7 +6,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include "render/jobs/bounded_read.h"
 #include "render/jobs/json_writer.h"
+#include "render/jobs/read_limits.h"
 #include "sim/yaml/scene_error.h"
 
 namespace render::golden {
@@ -44,7 +46,8 @@ void writeDrawnFrame(std::ostream& out, const DrawnFrame& frame) {
 
 DrawnFrame readDrawnFrame(const std::string& path) {
   try {
-    const YAML::Node root = YAML::LoadFile(path);
+    const YAML::Node root = YAML::Load(render::jobs::readBounded(path, render::jobs::kMaxRecordFileBytes, "golden draw list",
+                                                                 "record it again (rigidreel golden record)"));
     DrawnFrame f;
     f.viewWidth = root["view"]["width"].as<double>();
     f.viewHeight = root["view"]["height"].as<double>();

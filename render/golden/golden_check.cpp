@@ -6,7 +6,9 @@
 
 #include "render/draw/image_compare.h"
 #include "render/draw/png_io.h"
+#include "render/jobs/bounded_read.h"
 #include "render/jobs/json_writer.h"
+#include "render/jobs/read_limits.h"
 
 namespace render::golden {
 using render::jobs::formatNumber;
@@ -74,7 +76,8 @@ LevelResult drawListLevel(const GoldenRun& run, const GoldenRecord& record) {
   std::vector<std::string> failures;
   for (size_t i = 0; i < run.frames.size(); ++i) {
     const GoldenFrame& f = run.frames[i];
-    const std::string path = (fs::path(record.folder) / (f.name + ".json")).string();
+    // (the run is made at the record's frame times, so its i-th frame is the record's)
+    const std::string path = (fs::path(record.folder) / (record.frameNames.at(i) + ".json")).string();
     const std::string difference = compareDrawnFrames(readDrawnFrame(path), f.drawn);
     if (!difference.empty()) failures.push_back(f.name + ": " + difference);
   }
@@ -100,13 +103,23 @@ LevelResult pixelLevel(const GoldenRun& run, const GoldenRecord& record, bool st
   }
   const render::draw::PixelTolerance tolerance{record.golden.pixelTolerance, record.golden.pixelFraction};
   long worst = 0;
-  for (const GoldenFrame& f : run.frames) {
-    const std::string png = (fs::path(record.folder) / (f.name + ".png")).string();
-    render::draw::ImageComparison c = render::draw::compareImages(render::draw::readPng(png), f.image, tolerance);
+  for (size_t i = 0; i < run.frames.size(); ++i) {
+    const GoldenFrame& f = run.frames[i];
+    const std::string png = (fs::path(record.folder) / (record.frameNames.at(i) + ".png")).string();
+    const std::string bytes =
+        render::jobs::readBounded(png, render::jobs::kMaxPngBytes, "baseline PNG", "record it again (rigidreel golden record)");
+    // the size its header claims, before anything is decoded: a frame of another size is a
+    // difference to report, not 3.6 GB of pixels to allocate
+    const render::draw::PngSize size = render::draw::pngSize(bytes, png);
+    const bool sameSize = size.width == f.image.width && size.height == f.image.height;
+    render::draw::ImageComparison c;
+    if (sameSize) c = render::draw::compareImages(render::draw::decodePng(bytes, png), f.image, tolerance);
+    else c.sameSize = false;
     worst = std::max(worst, c.differing);
     if (c.passed()) continue;
     std::ostringstream m;
-    if (!c.sameSize) m << f.name << ": " << f.image.width << "x" << f.image.height << ", recorded at another size";
+    if (!c.sameSize)
+      m << f.name << ": " << f.image.width << "x" << f.image.height << ", recorded at " << size.width << "x" << size.height;
     else
       m << f.name << ": " << c.differing << " pixels differ by more than " << tolerance.channel << "/255 (at most " << c.allowed
         << " may; largest difference " << c.largest << "/255)";

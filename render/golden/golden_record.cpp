@@ -1,7 +1,6 @@
 #include "render/golden/golden_record.h"
 
-#include <yaml-cpp/yaml.h>
-
+#include <charconv>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -9,7 +8,13 @@
 
 #include "render/draw/png_io.h"
 #include "render/jobs/atomic_file.h"
+#include "render/jobs/bounded_read.h"
+#include "render/jobs/csv_field.h"
+#include "render/jobs/exit_status.h"
 #include "render/jobs/json_writer.h"
+#include "render/jobs/read_limits.h"
+#include "render/jobs/regular_file.h"
+#include "sim/yaml/path_name.h"
 #include "sim/yaml/scene_error.h"
 
 #ifndef RIGIDREEL_VERSION
@@ -18,7 +23,6 @@
 
 namespace render::golden {
 using render::jobs::formatNumber;
-using render::jobs::JsonWriter;
 
 namespace fs = std::filesystem;
 
@@ -36,30 +40,8 @@ void writeText(const fs::path& path, const std::string& text) {
   if (!out.flush()) throw std::runtime_error("cannot write " + path.string());
 }
 
-std::string manifest(const GoldenRun& run, const RecordInfo& info) {
-  std::ostringstream s;
-  JsonWriter j(s);
-  const GoldenDef& g = info.golden;
-  j.beginObject();
-  j.field("rigidreel_version", rigidreelVersion()).field("name", run.name);
-  j.field("scene_file", info.sceneFile).field("scene_sha256", info.sceneSha256);
-  j.field("renderer", run.renderer).field("renderer_version", run.rendererVersion);
-  j.key("size").beginArray().value(static_cast<long>(g.width)).value(static_cast<long>(g.height)).endArray();
-  j.key("tolerance").beginObject().field("position", g.tolerance.position).field("angle", g.tolerance.angle);
-  j.field("velocity", g.tolerance.velocity)
-      .field("draw_list", 1e-6)
-      .field("pixel_tolerance", static_cast<long>(g.pixelTolerance));
-  j.field("pixel_fraction", g.pixelFraction).endObject();
-  j.key("checkpoints").beginArray();
-  for (const Checkpoint& c : run.checkpoints) j.value(c.t);
-  j.endArray();
-  j.key("frames").beginArray();
-  for (const GoldenFrame& f : run.frames)
-    j.beginObject().field("t", f.t).field("png", f.name + ".png").field("draw_list", f.name + ".json").endObject();
-  j.endArray().endObject();
-  s << '\n';
-  return s.str();
-}
+// what every file of a record says when it cannot be read back
+constexpr const char* kRecordAgain = "record it again (rigidreel golden record)";
 
 }  // namespace
 
@@ -69,7 +51,7 @@ void writeRecord(const GoldenRun& run, const RecordInfo& info, const std::string
   fs::create_directories(dir);
   render::jobs::StagedDirectory folder((fs::path(dir) / run.name).string());
   const fs::path to = folder.path();
-  writeText(to / "manifest.json", manifest(run, info));
+  writeText(to / "manifest.json", manifestJson(run, info));
   std::ostringstream states;
   states << "t,state_hash\n";
   for (const Checkpoint& c : run.checkpoints) states << formatNumber(c.t) << ',' << hexHash(c.hash) << '\n';
@@ -79,9 +61,9 @@ void writeRecord(const GoldenRun& run, const RecordInfo& info, const std::string
   for (const Checkpoint& c : run.checkpoints)
     for (size_t b = 0; b < c.bodies.size(); ++b) {
       const TraceSample& s = c.bodies[b];
-      trace << formatNumber(c.t) << ',' << run.bodies[b] << ',' << formatNumber(s.x) << ',' << formatNumber(s.y) << ','
-            << formatNumber(s.angle) << ',' << formatNumber(s.vx) << ',' << formatNumber(s.vy) << ',' << formatNumber(s.omega)
-            << ',' << formatNumber(s.kineticEnergy) << '\n';
+      trace << formatNumber(c.t) << ',' << render::jobs::csvField(run.bodies[b]) << ',' << formatNumber(s.x) << ','
+            << formatNumber(s.y) << ',' << formatNumber(s.angle) << ',' << formatNumber(s.vx) << ',' << formatNumber(s.vy) << ','
+            << formatNumber(s.omega) << ',' << formatNumber(s.kineticEnergy) << '\n';
     }
   writeText(to / "trace.csv", trace.str());
   for (const GoldenFrame& f : run.frames) {
@@ -94,50 +76,65 @@ void writeRecord(const GoldenRun& run, const RecordInfo& info, const std::string
 }
 
 GoldenRecord readRecord(const std::string& folder, const sim::scene::SceneDef& def) {
+  using render::jobs::kMaxRecordFileBytes;
+  using render::jobs::readBounded;
+  const auto path = [&](const std::string& file) { return (fs::path(folder) / file).string(); };
   GoldenRecord r;
+  const std::string manifestPath = path("manifest.json");
+  static_cast<RecordManifest&>(r) =
+      manifestText(readBounded(manifestPath, kMaxRecordFileBytes, "golden manifest", kRecordAgain), manifestPath, def.duration);
   r.folder = folder;
-  const std::string manifestPath = (fs::path(folder) / "manifest.json").string();
-  try {
-    const YAML::Node m = YAML::LoadFile(manifestPath);
-    r.version = m["rigidreel_version"].as<std::string>();
-    r.sceneFile = m["scene_file"].as<std::string>();
-    r.sceneSha256 = m["scene_sha256"].as<std::string>();
-    r.renderer = m["renderer"].as<std::string>();
-    r.rendererVersion = m["renderer_version"].as<std::string>();
-    r.golden.width = m["size"][0].as<int>();
-    r.golden.height = m["size"][1].as<int>();
-    const YAML::Node t = m["tolerance"];
-    r.golden.tolerance = {t["position"].as<double>(), t["angle"].as<double>(), t["velocity"].as<double>()};
-    r.golden.pixelTolerance = t["pixel_tolerance"].as<int>();
-    r.golden.pixelFraction = t["pixel_fraction"].as<double>();
-    for (const YAML::Node& c : m["checkpoints"]) r.times.checkpoints.push_back(c.as<double>());
-    for (const YAML::Node& f : m["frames"]) {
-      r.times.frames.push_back(f["t"].as<double>());
-      r.frameNames.push_back(frameName(r.times.frames.back()));
-    }
-  } catch (const YAML::Exception& e) {
-    throw sim::yaml::SceneError(manifestPath, e.mark.line + 1, e.mark.column + 1,
-                                "not a manifest that `rigidreel golden record` wrote (" + e.msg + "); record it again");
-  }
-  // the hashes, one line per checkpoint
-  const std::string statesPath = (fs::path(folder) / "states.csv").string();
-  std::ifstream states(statesPath);
+  // the hashes, one line per checkpoint, at its time
+  const std::string statesPath = path("states.csv");
+  const std::string states = readBounded(statesPath, kMaxRecordFileBytes, "golden states file", kRecordAgain);
+  std::istringstream lines(states);
   std::string line;
   int number = 0;
-  while (std::getline(states, line)) {
+  while (std::getline(lines, line)) {
     if (++number == 1 || line.empty()) continue;
+    const auto fail = [&](const std::string& message) {
+      throw sim::yaml::SceneError(statesPath, number, 1, message + "; " + kRecordAgain);
+    };
     const size_t comma = line.find(',');
-    try {
-      r.hashes.push_back(std::stoull(line.substr(comma + 1), nullptr, 16));
-    } catch (const std::exception&) {
-      throw sim::yaml::SceneError(statesPath, number, 1, "expected t,state_hash; record it again");
-    }
+    if (comma == std::string::npos || line.size() - comma - 1 != 16 ||
+        line.find_first_not_of("0123456789abcdef", comma + 1) != std::string::npos)
+      fail("expected t,state_hash (16 hex digits)");
+    const size_t i = r.hashes.size();
+    double t = 0.0;
+    const auto [end, error] = std::from_chars(line.data(), line.data() + comma, t);
+    if (i >= r.times.checkpoints.size() || error != std::errc() || end != line.data() + comma || t != r.times.checkpoints[i])
+      fail("expected the hash at the manifest's checkpoint " + std::to_string(i + 1) +
+           (i < r.times.checkpoints.size() ? " (t = " + formatNumber(r.times.checkpoints[i]) + ")" : " (there are no more)"));
+    r.hashes.push_back(std::stoull(line.substr(comma + 1), nullptr, 16));
   }
   if (r.hashes.size() != r.times.checkpoints.size())
     throw sim::yaml::SceneError(statesPath, number, 1,
                                 "has " + std::to_string(r.hashes.size()) + " hashes for " +
-                                    std::to_string(r.times.checkpoints.size()) + " checkpoints; record it again");
-  r.trace = readTrace((fs::path(folder) / "trace.csv").string(), def).bodies;
+                                    std::to_string(r.times.checkpoints.size()) + " checkpoints; " + kRecordAgain);
+  // every body's row at every checkpoint: the state level compares them all
+  const std::string tracePath = path("trace.csv");
+  const Trace trace = readTrace(tracePath, def);
+  for (size_t b = 0; b < trace.bodies.size(); ++b) {
+    const std::vector<TraceSample>& samples = trace.bodies[b];
+    for (size_t i = 0; i < r.times.checkpoints.size(); ++i)
+      if (i >= samples.size() || samples[i].t != r.times.checkpoints[i])
+        throw sim::yaml::SceneError(tracePath, i < samples.size() ? samples[i].line : 0, 1,
+                                    "has no row of body '" + sim::yaml::shownName(def.bodies[b].name) +
+                                        "' at checkpoint t = " + formatNumber(r.times.checkpoints[i]) + "; " + kRecordAgain);
+    if (samples.size() > r.times.checkpoints.size())
+      throw sim::yaml::SceneError(
+          tracePath, samples[r.times.checkpoints.size()].line, 1,
+          "has more rows of body '" + sim::yaml::shownName(def.bodies[b].name) + "' than checkpoints; " + kRecordAgain);
+  }
+  r.trace = trace.bodies;
+  // each frame's files, there before anything runs
+  for (const std::string& name : r.frameNames)
+    for (const char* ending : {".json", ".png"}) {
+      const std::string file = path(name + ending);
+      if (const std::string kind = render::jobs::notRegularFile(file); !kind.empty() || !fs::exists(file))
+        throw render::jobs::UsageError(file + ": " + (kind.empty() ? "missing" : kind) + " (" + manifestPath + " names it); " +
+                                       kRecordAgain);
+    }
   return r;
 }
 

@@ -15,34 +15,27 @@
 
 #include "render/golden/golden_def.h"
 #include "render/golden/golden_run.h"
+#include "render/golden/record_manifest.h"
 
 namespace render::golden {
 
 // rigidreel's version as the build names it
 std::string rigidreelVersion();
 
-// what a manifest says beside the run
-struct RecordInfo {
-  std::string sceneFile;  // as given
-  std::string sceneSha256;
-  GoldenDef golden;  // size and tolerances
-};
-
 // `run` written as DIR/<run.name>/, replacing what was there in one step; throws std::runtime_error
 void writeRecord(const GoldenRun& run, const RecordInfo& info, const std::string& dir);
 
-// a record read back (its PNGs are read when compared)
-struct GoldenRecord {
+// a record read back (its draw lists and PNGs are read when compared): its manifest, and
+struct GoldenRecord : RecordManifest {
   std::string folder;
-  std::string version, sceneFile, sceneSha256, renderer, rendererVersion;
-  GoldenDef golden;
-  GoldenTimes times;
   std::vector<unsigned long long> hashes;       // by checkpoint
   std::vector<std::vector<TraceSample>> trace;  // by the scene's body index, one sample per checkpoint
-  std::vector<std::string> frameNames;          // by frame
 };
 
-// the record in `folder` for the scene `def`; throws sim::yaml::SceneError naming the file at fault
+// the record in `folder` for the scene `def`, each file read through render/jobs/bounded_read.h: its
+// manifest checked (record_manifest.h), a hash and every body's trace row at each checkpoint (a state
+// level passed on missing rows would compare nothing), and each frame's draw list and PNG there.
+// Throws sim::yaml::SceneError or render::jobs::UsageError naming the file at fault
 GoldenRecord readRecord(const std::string& folder, const sim::scene::SceneDef& def);
 
 }  // namespace render::golden

@@ -2,12 +2,20 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
+#include <charconv>
 #include <cmath>
-#include <fstream>
+#include <cstdlib>
+#include <deque>
 #include <map>
-#include <sstream>
+#include <optional>
+#include <string_view>
 
+#include "render/jobs/bounded_read.h"
+#include "render/jobs/interrupt.h"
 #include "render/jobs/json_writer.h"
+#include "render/jobs/read_limits.h"
+#include "sim/yaml/path_name.h"
 #include "sim/yaml/scene_error.h"
 
 namespace render::golden {
@@ -17,21 +25,112 @@ namespace {
 
 // the columns a trace must have, in the order TraceSample holds them after t and body
 const std::array<std::string, 8> kRequired = {"t", "body", "x", "y", "angle", "vx", "vy", "omega"};
+// rows read between two looks at the interrupt flag
+constexpr size_t kRowsPerCheck = 65536;
 
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> fields;
-  std::string field;
-  std::istringstream in(line);
-  while (std::getline(in, field, ',')) fields.push_back(field);
-  if (!line.empty() && line.back() == ',') fields.emplace_back();
-  return fields;
+bool blank(char c) { return c == ' ' || c == '\t'; }
+
+std::string_view trimmed(std::string_view s) {
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
+  return s;
 }
 
-std::string trimmed(std::string s) {
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.pop_back();
-  size_t i = 0;
-  while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i]))) ++i;
-  return s.substr(i);
+// one field of a row: its text (a quoted field's without its quotes) and the column where it starts
+struct Field {
+  std::string_view text;
+  int column = 1;
+};
+
+// The records of a CSV text as RFC 4180 writes them (csv_field.h, python's csv module): a field in
+// double quotes may hold commas, line breaks and quotes (doubled); other fields are taken as they
+// are, blanks around them trimmed.
+class CsvRecords {
+ public:
+  CsvRecords(std::string_view text, const std::string& file) : text_(text), file_(file) {}
+
+  // the next record's fields, and the line it starts on; false at the end of the text
+  bool next(std::vector<Field>& fields, int& line) {
+    fields.clear();
+    unquoted_.clear();
+    if (at_ >= text_.size()) return false;
+    line = ++line_;
+    lineStart_ = at_;
+    for (;;) {
+      size_t p = at_;
+      while (p < text_.size() && blank(text_[p])) ++p;
+      const int column = static_cast<int>(p - lineStart_) + 1;
+      if (p < text_.size() && text_[p] == '"') {
+        fields.push_back({quoted(p + 1), column});
+      } else {
+        const size_t end = std::min(text_.find_first_of(",\n", at_), text_.size());
+        fields.push_back({trimmed(text_.substr(at_, end - at_)), column});
+        at_ = end;
+      }
+      // at a comma, a line end or the text's end
+      if (at_ < text_.size() && text_[at_] == ',') {
+        ++at_;
+        continue;
+      }
+      if (at_ < text_.size()) ++at_;  // the '\n'
+      // (a "\r\n" line end: the '\r' trimmed with the last field's blanks)
+      return true;
+    }
+  }
+
+ private:
+  // the field whose opening quote is before `from`: up to its closing quote, quotes undoubled
+  std::string_view quoted(size_t from) {
+    const int line = line_;
+    const int column = static_cast<int>(from - lineStart_);
+    std::string text;
+    for (size_t p = from;;) {
+      const size_t q = text_.find('"', p);
+      if (q == std::string_view::npos)
+        throw sim::yaml::SceneError(file_, line, column, "this quoted field has no closing quote (\"); close it");
+      // the line breaks inside count as lines of the file
+      line_ += static_cast<int>(std::count(text_.begin() + p, text_.begin() + q, '\n'));
+      text.append(text_.substr(p, q - p));
+      if (q + 1 < text_.size() && text_[q + 1] == '"') {
+        text += '"';
+        p = q + 2;
+        continue;
+      }
+      p = q + 1;
+      while (p < text_.size() && (blank(text_[p]) || text_[p] == '\r')) ++p;
+      if (p < text_.size() && text_[p] != ',' && text_[p] != '\n')
+        throw sim::yaml::SceneError(file_, line_, static_cast<int>(p - text_.rfind('\n', p)),
+                                    "expected a comma after the closing quote of a field; double a quote inside one (\"\")");
+      at_ = p;
+      break;
+    }
+    unquoted_.push_back(std::move(text));
+    return unquoted_.back();
+  }
+
+  std::string_view text_;
+  const std::string& file_;
+  size_t at_ = 0, lineStart_ = 0;
+  int line_ = 0;
+  std::deque<std::string> unquoted_;  // this record's quoted fields (a deque: views into them stay valid)
+};
+
+// the field as a finite number: what simulate --trace writes (shortest round trip, subnormals too)
+// and what other simulators write (a leading '+'); nullopt when it is not one
+std::optional<double> finiteNumber(std::string_view s) {
+  if (s.starts_with('+')) s.remove_prefix(1);
+  if (s.empty() || s.front() == '+' || (s.front() == '-' && s.size() > 1 && s[1] == '+')) return std::nullopt;
+  double v = 0.0;
+  const auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (end != s.data() + s.size()) return std::nullopt;
+  if (error == std::errc::result_out_of_range) {
+    // below the smallest subnormal: strtod rounds to 0; past the largest double: refused
+    v = std::strtod(std::string(s).c_str(), nullptr);
+  } else if (error != std::errc()) {
+    return std::nullopt;
+  }
+  if (!std::isfinite(v)) return std::nullopt;
+  return v;
 }
 
 }  // namespace
@@ -41,77 +140,67 @@ Trace traceText(const std::string& text, const std::string& file, const sim::sce
     throw sim::yaml::SceneError(file, line, column, message);
   };
   Trace trace{file, std::vector<std::vector<TraceSample>>(def.bodies.size()), 0};
-  std::istringstream in(text);
-  std::string line;
+  CsvRecords records(render::jobs::withoutBom(text), file);
+  std::vector<Field> fields;
   int number = 0;
-  std::map<std::string, size_t> column;  // name → field index
+  std::map<std::string, size_t, std::less<>> column;  // name → field index
   size_t fieldCount = 0;
-  while (std::getline(in, line)) {
-    ++number;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (trimmed(line).empty()) continue;
-    const std::vector<std::string> fields = split(line);
+  size_t indices[7] = {};                                   // of t, x, y, angle, vx, vy, omega
+  size_t bodyColumn = 0, energyColumn = std::string::npos;  // kinetic_energy's, when there is one
+  while (records.next(fields, number)) {
+    if (fields.size() == 1 && fields[0].text.empty()) continue;  // a blank line
     if (column.empty()) {
       for (size_t i = 0; i < fields.size(); ++i) {
-        const std::string name = trimmed(fields[i]);
-        if (column.count(name)) fail(number, 1, "the column '" + name + "' appears twice in the header");
+        const std::string name(fields[i].text);
+        if (column.count(name)) fail(number, fields[i].column, "the column '" + name + "' appears twice in the header");
         column[name] = i;
       }
       for (const std::string& name : kRequired)
         if (!column.count(name))
           fail(number, 1, "the header has no column '" + name + "'; a trace starts with the line " + std::string(kTraceHeader));
+      for (size_t k = 0; k < 7; ++k) indices[k] = column[kRequired[k == 0 ? 0 : k + 1]];
+      bodyColumn = column["body"];
+      if (const auto ke = column.find("kinetic_energy"); ke != column.end()) energyColumn = ke->second;
       fieldCount = fields.size();
       continue;
     }
-    // the column (1-based) where field i starts, for messages
-    const auto columnOf = [&](size_t i) {
-      size_t at = 1;
-      for (size_t k = 0; k < i && k < fields.size(); ++k) at += fields[k].size() + 1;
-      return static_cast<int>(at);
-    };
+    if (trace.rows % kRowsPerCheck == 0) render::jobs::checkInterrupted();
     if (fields.size() != fieldCount)
       fail(number, 1,
            "expected " + std::to_string(fieldCount) + " comma-separated values as in the header, got " +
                std::to_string(fields.size()));
-    const std::string body = trimmed(fields[column["body"]]);
+    const std::string body(fields[bodyColumn].text);
     const int index = def.bodyIndex(body);
     if (index < 0) {
       std::string known;
-      for (const auto& b : def.bodies) known += (known.empty() ? "" : ", ") + b.name;
-      fail(number, columnOf(column["body"]), "the scene has no body named '" + body + "' (its bodies: " + known + ")");
+      for (const auto& b : def.bodies) known += (known.empty() ? "" : ", ") + sim::yaml::shownName(b.name);
+      fail(number, fields[bodyColumn].column,
+           "the scene has no body named '" + sim::yaml::shownName(body) + "' (its bodies: " + known + ")");
     }
     double values[7];
     for (size_t k = 0; k < 7; ++k) {
-      const size_t i = column[kRequired[k == 0 ? 0 : k + 1]];
-      const std::string field = trimmed(fields[i]);
-      size_t used = 0;
-      double v = 0.0;
-      try {
-        v = std::stod(field, &used);
-      } catch (const std::exception&) {
-        used = 0;
-      }
-      if (field.empty() || used != field.size() || !std::isfinite(v))
-        fail(number, columnOf(i), "expected a finite number for '" + kRequired[k == 0 ? 0 : k + 1] + "', got '" + field + "'");
-      values[k] = v;
+      const Field& f = fields[indices[k]];
+      const std::optional<double> v = finiteNumber(f.text);
+      if (!v)
+        fail(number, f.column,
+             "expected a finite number for '" + kRequired[k == 0 ? 0 : k + 1] + "', got '" + sim::yaml::shownName(f.text) + "'");
+      values[k] = *v;
     }
     double kinetic = 0.0;
-    if (const auto ke = column.find("kinetic_energy"); ke != column.end() && !trimmed(fields[ke->second]).empty()) {
-      const std::string field = trimmed(fields[ke->second]);
-      size_t used = 0;
-      try {
-        kinetic = std::stod(field, &used);
-      } catch (const std::exception&) {
-        used = 0;
-      }
-      if (used != field.size() || !std::isfinite(kinetic))
-        fail(number, columnOf(ke->second), "expected a finite number (or nothing) for 'kinetic_energy', got '" + field + "'");
+    if (energyColumn != std::string::npos && !fields[energyColumn].text.empty()) {
+      const Field& f = fields[energyColumn];
+      const std::optional<double> v = finiteNumber(f.text);
+      if (!v)
+        fail(number, f.column,
+             "expected a finite number (or nothing) for 'kinetic_energy', got '" + sim::yaml::shownName(f.text) + "'");
+      kinetic = *v;
     }
     std::vector<TraceSample>& samples = trace.bodies[index];
     if (!samples.empty() && values[0] < samples.back().t)
-      fail(number, columnOf(column["t"]),
-           "time goes back for '" + body + "': " + formatNumber(values[0]) + " after " + formatNumber(samples.back().t) +
-               " on line " + std::to_string(samples.back().line) + "; list each body's rows in time order");
+      fail(number, fields[indices[0]].column,
+           "time goes back for '" + sim::yaml::shownName(body) + "': " + formatNumber(values[0]) + " after " +
+               formatNumber(samples.back().t) + " on line " + std::to_string(samples.back().line) +
+               "; list each body's rows in time order");
     samples.push_back({values[0], values[1], values[2], values[3], values[4], values[5], values[6], kinetic, number});
     ++trace.rows;
   }
@@ -121,11 +210,9 @@ Trace traceText(const std::string& text, const std::string& file, const sim::sce
 }
 
 Trace readTrace(const std::string& path, const sim::scene::SceneDef& def) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw sim::yaml::SceneError(path, 0, 0, "cannot read the trace");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return traceText(text.str(), path, def);
+  return traceText(render::jobs::readBounded(path, render::jobs::kMaxTraceBytes, "trace",
+                                             "give the trace CSV (`rigidreel simulate --trace` writes one)"),
+                   path, def);
 }
 
 bool sampleAt(const std::vector<TraceSample>& samples, double t, TraceSample& out, bool before) {

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "render/jobs/interrupt.h"
 #include "render/jobs/stale_parts.h"
 
 namespace render::jobs {
@@ -48,7 +49,12 @@ AtomicFile::AtomicFile(std::string path)
     removeStaleParts(path_);
     out_.open(temporary_, std::ios::binary | std::ios::trunc);
   }
-  if (!out_) throw std::runtime_error(path + ": cannot write here (" + std::strerror(errno) + "); choose a writable path");
+  if (!out_) {
+    const int error = errno;
+    // Ctrl-C while a FIFO waits for its reader: open(2) fails with EINTR, and the run is interrupted
+    checkInterrupted();
+    throw std::runtime_error(path + ": cannot write here (" + std::strerror(error) + "); choose a writable path");
+  }
 }
 
 AtomicFile::~AtomicFile() {

@@ -1,5 +1,7 @@
 #include "render/jobs/interrupt.h"
 
+#include <sys/wait.h>
+
 #include <csignal>
 #include <iostream>
 
@@ -23,6 +25,11 @@ void catchInterrupts() {
 
 void checkInterrupted() {
   if (interruptedFlag) throw Interrupted();
+}
+
+void checkChildInterrupted(int waitStatus) {
+  checkInterrupted();
+  if (WIFSIGNALED(waitStatus) && (WTERMSIG(waitStatus) == SIGINT || WTERMSIG(waitStatus) == SIGTERM)) throw Interrupted();
 }
 
 int runInterruptible(const std::string& what, const std::function<int()>& command) {

@@ -17,6 +17,11 @@ void catchInterrupts();
 // throws Interrupted when the flag is up
 void checkInterrupted();
 
+// after a child ended (its raw wait status): throws Interrupted when the flag is up or the child was
+// stopped by SIGINT or SIGTERM, as Ctrl-C at a terminal stops every process of the group, ffmpeg
+// included, and its death is then this run's interruption, not a failure of the tool
+void checkChildInterrupted(int waitStatus);
+
 // the exit status of a process stopped by SIGINT, as shells report it
 inline constexpr int kExitInterrupted = 130;
 

@@ -12,6 +12,8 @@
 #include <cstring>
 #include <thread>
 
+#include "render/jobs/interrupt.h"
+
 extern char** environ;
 
 namespace render::jobs {
@@ -25,6 +27,8 @@ void closeAll(std::initializer_list<int> fds) {
 }
 
 }  // namespace
+
+bool SpawnError::missing() const { return error == ENOENT || error == EACCES || error == ENOEXEC || error == ENOTDIR; }
 
 Child spawnChild(const std::vector<std::string>& argv, Stream input, Stream output, Stream errors) {
   // pipes[i] for the child's fd i: [0] the read end, [1] the write end
@@ -40,7 +44,7 @@ Child spawnChild(const std::vector<std::string>& argv, Stream input, Stream outp
         const int error = errno;
         posix_spawn_file_actions_destroy(&actions);
         for (auto& p : pipes) closeAll({p[0], p[1]});
-        throw SpawnError(std::string("cannot make a pipe: ") + std::strerror(error));
+        throw SpawnError(std::string("cannot make a pipe: ") + std::strerror(error), error);
       }
       // the child's end: the read end of its input, the write end of its outputs
       posix_spawn_file_actions_adddup2(&actions, pipes[fd][fd == 0 ? 0 : 1], fd);
@@ -55,7 +59,7 @@ Child spawnChild(const std::vector<std::string>& argv, Stream input, Stream outp
   closeAll({pipes[0][0], pipes[1][1], pipes[2][1]});
   if (spawned != 0) {
     closeAll({pipes[0][1], pipes[1][0], pipes[2][0]});
-    throw SpawnError("cannot run '" + argv[0] + "' (" + std::strerror(spawned) + ")");
+    throw SpawnError("cannot run '" + argv[0] + "' (" + std::strerror(spawned) + ")", spawned);
   }
   child.input = pipes[0][1];
   child.output = pipes[1][0];
@@ -96,7 +100,7 @@ ProcessResult runProgram(const std::vector<std::string>& argv, const std::string
   try {
     child = spawnChild(argv, Stream::Pipe, Stream::Null, Stream::Pipe);
   } catch (const SpawnError& e) {
-    throw std::runtime_error(std::string(e.what()) + "; is it installed?");
+    throw std::runtime_error(std::string(e.what()) + (e.missing() ? "; is it installed?" : ""));
   }
   // read its standard error while we write, so that neither side blocks on a full pipe
   ProcessResult result;
@@ -118,6 +122,7 @@ ProcessResult runProgram(const std::vector<std::string>& argv, const std::string
   ::sigaction(SIGPIPE, &previous, nullptr);
   const int status = waitChild(child.pid);
   reader.join();
+  checkChildInterrupted(status);
   result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
 }

@@ -25,7 +25,10 @@ struct Child {
 
 // "cannot run 'ffmpeg' (No such file or directory)": the caller adds what to do about it
 struct SpawnError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+  SpawnError(const std::string& message, int error) : std::runtime_error(message), error(error) {}
+  int error;  // errno: ENOENT or EACCES say the program is missing; EMFILE, ENOMEM, EAGAIN that the
+              // machine is out of descriptors, memory or processes, where installing it would not help
+  bool missing() const;
 };
 
 // starts argv[0] (looked up on PATH when it has no '/'); throws SpawnError

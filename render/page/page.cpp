@@ -9,12 +9,13 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <sstream>
 
 #include "render/jobs/atomic_file.h"
+#include "render/jobs/bounded_read.h"
 #include "render/jobs/exit_status.h"
+#include "render/jobs/read_limits.h"
 #include "render/jobs/regular_file.h"
 
 namespace render::page {
@@ -341,9 +342,12 @@ std::string pageHtml(const std::vector<PageScene>& scenes, const std::string& ti
 }
 
 std::string packTitle(const std::string& dir) {
-  std::ifstream in(fs::path(dir) / kTitleName);
-  std::string title;
-  std::getline(in, title);
+  const fs::path path = fs::path(dir) / kTitleName;
+  std::error_code error;
+  if (!fs::exists(fs::symlink_status(path, error))) return kDefaultTitle;
+  const std::string text(withoutBom(readBounded(path.string(), kMaxListFileBytes, "page title",
+                                                "write it again with `rigidreel lecture --page DIR --title TEXT`")));
+  const std::string title = text.substr(0, text.find_first_of("\r\n"));
   return title.empty() ? kDefaultTitle : title;
 }
 

@@ -6,6 +6,7 @@
 
 #include "render/jobs/exit_status.h"
 #include "render/jobs/json_writer.h"
+#include "sim/core/step_limit.h"
 
 namespace render::video {
 using namespace render::scene;
@@ -37,9 +38,10 @@ long TimeMap::frameCount(double fps) const {
   const double frames = std::ceil(length_ * fps - 1e-9);
   // bounded before the conversion: a count past a long's range is undefined behavior
   if (!(frames <= kMaxFrames)) {
+    const auto [count, limit] = sim::core::distinctCounts(frames, kMaxFrames);
     std::ostringstream m;
-    m << "the video would have " << frames << " frames (" << length_ << " s at " << fps << " fps), more than the limit of "
-      << kMaxFrames << "; shorten the scene's duration, title_card or slow_motion (or --duration), or lower --fps";
+    m << "the video would have " << count << " frames (" << length_ << " s at " << fps << " fps), more than the limit of "
+      << limit << "; shorten the scene's duration, title_card, answer_card or slow_motion (or --duration), or lower --fps";
     throw render::jobs::UsageError(m.str());
   }
   // fewer frames than one a video length: ffmpeg fails, or writes one frame shown for hours

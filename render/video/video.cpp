@@ -106,7 +106,8 @@ VideoWriter::VideoWriter(const std::string& path, VideoFormat format, int width,
   try {
     child = spawnChild(args, Stream::Pipe, Stream::Null, Stream::Pipe);
   } catch (const SpawnError& e) {
-    throw std::runtime_error(std::string(e.what()) + "; install it, e.g. apt-get install ffmpeg");
+    throw std::runtime_error(std::string(e.what()) +
+                             (e.missing() ? "; install it, e.g. apt-get install ffmpeg" : "; free some and run again"));
   }
   pid_ = child.pid;
   input_ = child.input;
@@ -167,6 +168,7 @@ void VideoWriter::fail(const std::string& what) {
   input_ = -1;
   const int status = wait();
   std::remove(temporary_.c_str());
+  checkChildInterrupted(status);
   throw std::runtime_error(what + diagnosis(status));
 }
 
@@ -195,6 +197,7 @@ void VideoWriter::finish() {
   const int status = wait();
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
     std::remove(temporary_.c_str());
+    checkChildInterrupted(status);
     throw std::runtime_error(path_ + ": ffmpeg could not encode the video" + diagnosis(status));
   }
   // ffmpeg 5.1 exits 0 after "Error writing trailer of …: No space left on device": at -loglevel

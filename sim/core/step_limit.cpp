@@ -7,11 +7,23 @@ namespace sim::core {
 
 double stepCount(double dt, double until) { return std::ceil(until / dt); }
 
+std::pair<std::string, std::string> distinctCounts(double count, double limit) {
+  std::string a, b;
+  for (int digits = 6; digits <= 17 && a == b; ++digits) {
+    std::ostringstream x, y;
+    x.precision(digits), y.precision(digits);
+    x << count, y << limit;
+    a = x.str(), b = y.str();
+  }
+  return {a, b};
+}
+
 std::string stepsOverLimit(double dt, double maxSteps, double until) {
   const double steps = stepCount(dt, until);
   if (steps <= maxSteps) return "";
+  const auto [count, limit] = distinctCounts(steps, maxSteps);
   std::ostringstream m;
-  m << "the run needs " << steps << " steps (" << until << " s at dt = " << dt << " s), more than the limit of " << maxSteps;
+  m << "the run needs " << count << " steps (" << until << " s at dt = " << dt << " s), more than the limit of " << limit;
   return m.str();
 }
 

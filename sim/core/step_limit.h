@@ -3,11 +3,16 @@
 #pragma once
 
 #include <string>
+#include <utility>
 
 namespace sim::core {
 
 // the steps of a run from 0 to `until` at `dt` (rounded up)
 double stepCount(double dt, double until);
+
+// `count` and `limit` as text, each to 6 significant digits or as many more as tell them apart: a
+// run of 100000001 steps read "needs 1e+08 steps, more than the limit of 1e+08"
+std::pair<std::string, std::string> distinctCounts(double count, double limit);
 
 // "the run needs 1e+18 steps (1e+06 s at dt = 1e-12 s), more than the limit of 1e+08" when a
 // run to `until` at `dt` exceeds `maxSteps`, "" when it does not

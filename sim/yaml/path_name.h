@@ -15,4 +15,8 @@ inline constexpr size_t kMaxNameBytes = 100;
 // why `name` cannot be a file name ("" when it can), e.g. "contains '/'"
 std::string pathNameFault(std::string_view name);
 
+// `name` as a message quotes it: each control character as \xNN, so that a refused name cannot send
+// an escape sequence to the terminal that shows the message
+std::string shownName(std::string_view name);
+
 }  // namespace sim::yaml

@@ -151,8 +151,8 @@ void listVariants(const Reader& r, SceneDocument& s) {
       if (!kv.second.IsMap() && !kv.second.IsNull())
         r.fail(kv.second, "variant '" + kv.first.Scalar() + "' must be a map of changes, got " + describe(kv.second));
       if (const std::string fault = pathNameFault(kv.first.Scalar()); !fault.empty())
-        r.fail(kv.first,
-               "variant name '" + kv.first.Scalar() + "' names output files but " + fault + "; use letters, digits, '-' or '_'");
+        r.fail(kv.first, "variant name '" + shownName(kv.first.Scalar()) + "' names output files but " + fault +
+                             "; use letters, digits, '-' or '_'");
       // a name given twice: the second would be dropped and the first run twice
       if (std::find(s.variantNames.begin(), s.variantNames.end(), kv.first.Scalar()) != s.variantNames.end())
         r.fail(kv.first, "variant '" + kv.first.Scalar() + "' is defined twice; give each variant once, or rename one");

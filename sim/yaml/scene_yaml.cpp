@@ -42,8 +42,8 @@ class SceneReader : public Reader {
       fail(root["dimensions"], "this reads 2D scenes, and this one is 3D (dimensions: 3); read it with sim::yaml3d::readModel");
     s.name = root["name"] ? text(root["name"], "name") : source.stem;
     if (const std::string fault = pathNameFault(s.name); !fault.empty())
-      fail(root["name"] ? root["name"] : root, "the scene's name '" + s.name + "' names its output files but " + fault +
-                                                   "; give 'name:' letters, digits, '-' or '_'");
+      fail(root["name"] ? root["name"] : root, "the scene's name '" + shownName(s.name) + "' names its output files but " +
+                                                   fault + "; give 'name:' letters, digits, '-' or '_'");
     optional(root, "description", s.description, &Reader::text);
     optional(root, "duration", s.duration, &Reader::positive);
     if (const YAML::Node w = root["world"]) {

@@ -59,7 +59,8 @@ class SceneReader3d : public Reader3d {
     if (source.dimensions != 3) fail(root, "this reads 3D scenes, which say 'dimensions: 3'");
     s.name = root["name"] ? text(root["name"], "name") : source.stem;
     if (const std::string fault = sim::yaml::pathNameFault(s.name); !fault.empty())
-      fail(root["name"] ? root["name"] : root, "the scene's name '" + s.name + "' names its output files but " + fault +
+      fail(root["name"] ? root["name"] : root, "the scene's name '" + sim::yaml::shownName(s.name) +
+                                                   "' names its output files but " + fault +
                                                    "; give 'name:' letters, digits, '-' or '_'");
     optional(root, "description", s.description, &Reader::text);
     optional(root, "duration", s.duration, &Reader::positive);

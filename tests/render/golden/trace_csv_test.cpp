@@ -76,3 +76,39 @@ TEST_CASE("a malformed trace is refused at its line and column") {
   scene_errors::expectSceneError(load, "theirs.csv", "t,body,x,y,angle,vx,vy\n0,a,0,0,0,1,0\n", 1, 1, {"no column 'omega'"});
   scene_errors::expectSceneError(load, "theirs.csv", header, 1, 1, {"no rows"});
 }
+
+TEST_CASE("what the trace writer writes of names with commas, quotes and line breaks reads back") {
+  const sim::scene::SceneDef scene = sim::yaml::loadSceneText(R"(
+bodies:
+  - {name: "a,b", shape: {circle: 0.5}, velocity: [1, 0]}
+  - {name: "say \"hi\"\nnow", shape: {circle: 0.5}, position: [3, 0]}
+  - {name: "Stoß", shape: {circle: 0.5}, position: [1.0e-310, 6]}
+)",
+                                                              "names.yaml");
+  sim::world::World world = sim::scene::buildWorld(scene);
+  std::ostringstream out;
+  render::video::TraceWriter writer(out, scene);
+  writer.rows(world);
+  world.advanceTo(0.01, &writer);
+  const Trace t = traceText(out.str(), "names.csv", scene);
+  REQUIRE(t.bodies.size() == 3);
+  CHECK(t.bodies[0].size() == t.bodies[1].size());
+  CHECK(t.bodies[1].size() == t.bodies[2].size());
+  CHECK(t.bodies[0].back().x == world.bodies[0].x.x());
+  // a subnormal reads back as itself
+  CHECK(t.bodies[2].front().x == 1.0e-310);
+}
+
+TEST_CASE("a byte order mark before the header is ignored; a quote left open is refused where it opens") {
+  const Trace t = read("\xEF\xBB\xBFt,body,x,y,angle,vx,vy,omega\n0,\"a\",0,0,0,1,0,0\n");
+  CHECK(t.bodies[0].size() == 1);
+  const auto load = [](const std::string& text, const std::string& file, const std::string&) {
+    return traceText(text, file, kScene);
+  };
+  const std::string header = "t,body,x,y,angle,vx,vy,omega\n";
+  scene_errors::expectSceneError(load, "theirs.csv", header + "0,\"a,0,0,0,1,0,0\n", 2, 3, {"no closing quote"});
+  scene_errors::expectSceneError(load, "theirs.csv", header + "0,\"a\"x,0,0,0,1,0,0\n", 2, 6,
+                                 {"expected a comma after the closing quote"});
+  // a control character of a name not in the scene is shown escaped, never sent to the terminal
+  scene_errors::expectSceneError(load, "theirs.csv", header + "0,\x1b[31m,0,0,0,1,0,0\n", 2, 3, {"no body named '\\x1b[31m'"});
+}

@@ -13,25 +13,13 @@
 #include <fstream>
 #include <string>
 
+#include "support/scratch_folder.h"
+
 namespace fs = std::filesystem;
 using render::jobs::notRegularFile;
 
-namespace {
-
-struct Folder {
-  fs::path dir = fs::temp_directory_path() / ("rigidreel_regular_file_test_" + std::to_string(::getpid()));
-  Folder() {
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-  }
-  ~Folder() { fs::remove_all(dir); }
-  std::string at(const std::string& name) const { return (dir / name).string(); }
-};
-
-}  // namespace
-
 TEST_CASE("a regular file, a symlink to one and a missing path are not refused") {
-  const Folder f;
+  const support::ScratchFolder f("regular_file_test");
   std::ofstream(f.at("scene.yaml")) << "name: a\n";
   fs::create_symlink(f.at("scene.yaml"), f.at("link.yaml"));
   CHECK(notRegularFile(f.at("scene.yaml")) == "");
@@ -40,7 +28,7 @@ TEST_CASE("a regular file, a symlink to one and a missing path are not refused")
 }
 
 TEST_CASE("a FIFO, a folder, a device and a socket are each named for what they are") {
-  const Folder f;
+  const support::ScratchFolder f("regular_file_test");
   REQUIRE(::mkfifo(f.at("pipe.yaml").c_str(), 0600) == 0);
   CHECK(notRegularFile(f.at("pipe.yaml")) == "is a FIFO (named pipe), not a regular file");
   CHECK(notRegularFile(f.dir.string()) == "is a directory, not a regular file");
