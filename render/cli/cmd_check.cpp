@@ -6,6 +6,7 @@
 #include <optional>
 #include <sstream>
 
+#include "render/cli/check_tally.h"
 #include "render/cli/commands.h"
 #include "render/cli/energy_report.h"
 #include "sim/world/energy_ledger.h"
@@ -66,18 +67,19 @@ std::string formatValues(const std::vector<double>& v) {
   return s + ")";
 }
 
-// each comparison with its error; false when one failed. With --quiet, the failed ones alone, each
-// after the file and variant (`quietLabel`), since nothing else names them
-bool report(const std::vector<sim::core::CheckResult>& results, const std::string& quietLabel = "") {
-  bool ok = true;
+// each comparison with its error; the failed ones returned (for JUnit). With --quiet, the failed
+// ones alone, each after the file and variant (`quietLabel`), since nothing else names them
+std::vector<std::string> report(const std::vector<sim::core::CheckResult>& results, const std::string& quietLabel = "") {
+  std::vector<std::string> failed;
   for (const sim::core::CheckResult& r : results) {
-    ok = ok && r.passed();
+    const std::string line = "t = " + formatNumber(r.time) + "  " + r.quantity + " = " + formatValues(r.actual) + ", expected " +
+                             formatValues(r.expected) + ", error " + formatNumber(r.error) + " (tolerance " +
+                             formatNumber(r.tolerance) + ")";
+    if (!r.passed()) failed.push_back(line);
     if (!quietLabel.empty() && r.passed()) continue;
-    std::cout << quietLabel << (r.passed() ? "  ok    " : "  FAIL  ") << "t = " << formatNumber(r.time) << "  " << r.quantity
-              << " = " << formatValues(r.actual) << ", expected " << formatValues(r.expected) << ", error "
-              << formatNumber(r.error) << " (tolerance " << formatNumber(r.tolerance) << ")\n";
+    std::cout << quietLabel << (r.passed() ? "  ok    " : "  FAIL  ") << line << '\n';
   }
-  return ok;
+  return failed;
 }
 
 // say where the event method found impacts piling up and made the contact resting: once per pair
@@ -123,9 +125,10 @@ std::string runFailure(const sim::scene::SceneDef& def, const sim::world::Diverg
 }
 
 // one scene, one variant ("" for the base), run to its duration as `simulate` runs it; returns
-// false when an expect fails or the run stops before its end; `threads` (--threads) in place of
-// the scene's sim: threads when given
-bool checkCase(const OpenScene& scene, const std::string& variant, const Verbosity& say, std::optional<int> threads) {
+// what failed (an expect entry, the run stopping before its end), nothing when it passed;
+// `threads` (--threads) in place of the scene's sim: threads when given
+std::vector<std::string> checkCase(const OpenScene& scene, const std::string& variant, const Verbosity& say,
+                                   std::optional<int> threads) {
   const std::string& file = scene.path();
   sim::scene::SceneDef def = scene.read(variant).model();
   if (threads) def.threads = *threads;
@@ -151,7 +154,7 @@ bool checkCase(const OpenScene& scene, const std::string& variant, const Verbosi
     failure = e.what();
   }
   progress.finish();
-  const bool ok = report(results, say.quiet ? label + ":" : "");
+  std::vector<std::string> failures = report(results, say.quiet ? label + ":" : "");
   if (failure.empty()) {
     out << "  ran to t = " << formatNumber(def.duration) << (def.expects.empty() ? " (no expect entries)" : "");
     if (!w.impacts.empty()) out << ", " << w.impacts.size() << " impulses";
@@ -167,7 +170,8 @@ bool checkCase(const OpenScene& scene, const std::string& variant, const Verbosi
   out << "  " << describeLedger(accountsOf(ledger), namesOf(def)) << '\n';
   reportSleep(w, out);
   reportPrecision(w, out);
-  return ok && failure.empty();
+  if (!failure.empty()) failures.push_back(failure);
+  return failures;
 }
 
 // what a 3D scene models: its bodies and planes, their forces and events, the integrator and whether
@@ -183,9 +187,9 @@ std::string describeModel3d(const sim::scene3d::SceneDef& d) {
   return o.str();
 }
 
-// one variant of a 3D scene ("" for the base), run to its duration; false when an expect fails or
-// the run diverges before its end
-bool checkCase3d(const OpenScene& scene, const std::string& variant, const Verbosity& say) {
+// one variant of a 3D scene ("" for the base), run to its duration; what failed (an expect entry,
+// the run diverging before its end), nothing when it passed
+std::vector<std::string> checkCase3d(const OpenScene& scene, const std::string& variant, const Verbosity& say) {
   const std::string& file = scene.path();
   const sim::scene3d::SceneDef def = scene.read3d(variant).model();
   const std::string label = file + (variant.empty() ? "" : " [" + variant + "]");
@@ -207,7 +211,7 @@ bool checkCase3d(const OpenScene& scene, const std::string& variant, const Verbo
     failure = contactPersistsMessage(def, p);
   }
   progress.finish();
-  const bool ok = report(results, say.quiet ? label + ":" : "");
+  std::vector<std::string> failures = report(results, say.quiet ? label + ":" : "");
   if (failure.empty()) {
     out << "  ran to t = " << formatNumber(def.duration) << (def.expects.empty() ? " (no expect entries)" : "");
     if (!w.impacts.empty()) out << ", " << w.impacts.size() << " impulses";
@@ -218,7 +222,8 @@ bool checkCase3d(const OpenScene& scene, const std::string& variant, const Verbo
   }
   if (w.methodSwitch) out << "  switched: " << describeMethodSwitch(def, w) << '\n';
   out << "  " << describeLedger(accountsOf(ledger), namesOf(def)) << '\n';
-  return ok && failure.empty();
+  if (!failure.empty()) failures.push_back(failure);
+  return failures;
 }
 
 // `--render`: every output the lecture pack makes of the scene planned as `lecture` plans it (each
@@ -264,63 +269,78 @@ std::vector<std::string> sceneFiles(const std::vector<std::string>& arguments) {
   return files;
 }
 
-int check(const std::vector<std::string>& arguments, const Verbosity& say, bool render, std::optional<int> threads) {
+// the options of a check beside its files
+struct CheckOptions {
+  bool render = false;
+  std::optional<int> threads;
+  std::string junit;
+};
+
+// the scene's failure that ends its file (bad input, a run that stopped), said on standard error and
+// tallied; `code` the exit status it makes
+void failScene(CheckTally& tally, const std::string& file, const std::string& message, int code, int& exitCode) {
+  std::cerr << message << '\n';
+  tally.failScene(file, message);
+  if (code == kExitBadInput || exitCode == kExitOk) exitCode = code;
+}
+
+int check(const std::vector<std::string>& arguments, const Verbosity& say, const CheckOptions& o) {
   int code = kExitOk;
+  CheckTally tally;
   for (const std::string& file : sceneFiles(arguments)) {
+    tally.addScene();
     try {
-      bool ok = true;
       const OpenScene scene(file);
       if (scene.is3d()) {
-        ok = check3d(scene, say);
+        check3d(scene, say, tally);
       } else {
         // (the base scene read whole, as each variant is: a fault in it is reported though variants replace it)
         (void)scene.read();
         std::vector<std::string> cases = scene.variantNames();
         if (cases.empty()) cases.push_back("");
-        for (const std::string& v : cases) ok = checkCase(scene, v, say, threads) && ok;
+        for (const std::string& v : cases) tally.add(file, v, checkCase(scene, v, say, o.threads));
       }
-      if (render) ok = planRender(scene) && ok;
-      if (!ok && code == kExitOk) code = kExitFailure;
+      if (o.render && !planRender(scene)) tally.failLast("render: the simulation diverged while planning its outputs");
+      if (tally.failed(file) && code == kExitOk) code = kExitFailure;
     } catch (const UsageError& e) {
-      std::cerr << file << ": " << e.what() << '\n';
-      code = kExitBadInput;
+      failScene(tally, file, file + ": " + e.what(), kExitBadInput, code);
     } catch (const sim::yaml::SceneError& e) {
-      std::cerr << e.what() << '\n';
-      code = kExitBadInput;
+      failScene(tally, file, e.what(), kExitBadInput, code);
     } catch (const sim::world::Diverged& d) {
-      std::cerr << file << ": the simulation diverged at t = " << formatNumber(d.time) << " (body #" << d.body
-                << "); use a smaller dt or another integrator\n";
-      if (code == kExitOk) code = kExitFailure;
+      failScene(tally, file,
+                file + ": the simulation diverged at t = " + formatNumber(d.time) + " (body #" + std::to_string(d.body) +
+                    "); use a smaller dt or another integrator",
+                kExitFailure, code);
     } catch (const sim::world3d::Diverged& d) {
-      std::cerr << file << ": the simulation diverged at t = " << formatNumber(d.time) << " (body #" << d.body
-                << "); use a smaller dt or another integrator\n";
-      if (code == kExitOk) code = kExitFailure;
+      failScene(tally, file,
+                file + ": the simulation diverged at t = " + formatNumber(d.time) + " (body #" + std::to_string(d.body) +
+                    "); use a smaller dt or another integrator",
+                kExitFailure, code);
     } catch (const Interrupted&) {
       throw;
     } catch (const std::runtime_error& e) {
-      std::cerr << file << ": " << e.what() << '\n';
-      if (code == kExitOk) code = kExitFailure;
+      failScene(tally, file, file + ": " + e.what(), kExitFailure, code);
     }
   }
+  // the line a CI log ends with (under --quiet, only when something failed: a quiet pass prints nothing)
+  if (!say.quiet || code != kExitOk) std::cout << tally.summary() << '\n';
+  if (!o.junit.empty()) tally.writeJunit(o.junit);
   return code;
 }
 
 }  // namespace
 
-bool check3d(const OpenScene& scene, const Verbosity& say) {
+void check3d(const OpenScene& scene, const Verbosity& say, CheckTally& tally) {
   std::vector<std::string> cases = scene.read3d().model().variantNames;
   if (cases.empty()) cases.push_back("");
-  bool ok = true;
-  for (const std::string& v : cases) ok = checkCase3d(scene, v, say) && ok;
-  return ok;
+  for (const std::string& v : cases) tally.add(scene.path(), v, checkCase3d(scene, v, say));
 }
 
 void addCheckCommand(CLI::App& app, int& exitCode) {
   auto files = std::make_shared<std::vector<std::string>>();
   auto say = std::make_shared<Verbosity>();
   auto output = std::make_shared<std::string>();
-  auto render = std::make_shared<bool>(false);
-  auto threads = std::make_shared<std::optional<int>>();
+  auto o = std::make_shared<CheckOptions>();
   CLI::App* cmd = app.add_subcommand("check", "validate scenes, run every variant to its duration and verify its expect entries");
   cmd->add_option("scenes", *files, "scene files (YAML) and directories of them (every *.yaml, sorted)")->required();
   cmd->add_option("-o,--output", *output,
@@ -329,13 +349,14 @@ void addCheckCommand(CLI::App& app, int& exitCode) {
              "also every impulse the collision response applied, and every resting and staying-in-contact record, not one line "
              "per pair");
   cmd->add_option(
-         "--threads", *threads,
+         "--threads", o->threads,
          "soft_step: threads sharing each set of contacts, 1 to 64 (each scene's sim: threads; the same result with any)")
       ->check(CLI::Range(1, sim::core::settings::kMaxThreads));
-  cmd->add_flag("--render", *render, "also plan every output the scene asks for (videos, posters, panels), drawing nothing");
-  cmd->callback([files, say, output, render, threads, &exitCode] {
+  cmd->add_option("--junit", o->junit, "also write a JUnit XML file: one testcase per scene variant, its failures its message");
+  cmd->add_flag("--render", o->render, "also plan every output the scene asks for (videos, posters, panels), drawing nothing");
+  cmd->callback([files, say, output, o, &exitCode] {
     OutputFile report(*output);
-    exitCode = runInterruptible("check", [&] { return check(*files, *say, *render, *threads); });
+    exitCode = runInterruptible("check", [&] { return check(*files, *say, *o); });
     // an interrupted check publishes no report
     if (exitCode != render::jobs::kExitInterrupted) report.commit();
   });

@@ -1,13 +1,16 @@
-// `rigidreel compare`: another simulator's trajectory (a trace CSV on any time grid) against the
-// scene's run, per body the largest error of position, angle and velocity and when each first
-// exceeds its tolerance; with --plot an error-against-time chart.
+// `rigidreel compare`: another simulator's trajectory (a trace CSV on any time grid, the 3D columns
+// for a 3D scene) against the scene's run, per body the largest error of position, angle and
+// velocity and when each first exceeds its tolerance; with --plot an error-against-time chart.
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <memory>
 
 #include "render/analysis/chart.h"
 #include "render/cli/commands.h"
 #include "render/cli/scene_options.h"
+#include "render/cli/space3d.h"
+#include "render/cli/verbosity.h"
 #include "render/golden/trace_compare.h"
 #include "render/jobs/interrupt.h"
 #include "render/jobs/json_writer.h"
@@ -24,7 +27,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CompareCommand : SceneOptions {
+struct CompareCommand : SceneOptions, Verbosity {
   std::string trace;
   std::string tolerance;
   std::string plot;
@@ -37,6 +40,15 @@ std::string over(const ErrorTrack& e, double tolerance) {
   if (e.largest > 0.0) s += " at t = " + timeForName(e.largestAt);
   if (e.firstOver >= 0.0) s += ", over " + formatNumber(tolerance) + " from t = " + timeForName(e.firstOver);
   return s;
+}
+
+// -v: each body's errors at every instant compared, one line each, as the chart draws them
+void printErrors(const std::vector<BodyComparison>& bodies) {
+  for (const BodyComparison& b : bodies)
+    for (size_t k = 0; b.compared && k < b.positionErrors.size(); ++k)
+      std::cout << "  " << b.name << " t = " << render::video::timeForName(b.positionErrors[k].first) << ": position "
+                << formatNumber(b.positionErrors[k].second) << ", angle " << formatNumber(b.angleErrors[k].second)
+                << ", velocity " << formatNumber(b.velocityErrors[k].second) << '\n';
 }
 
 // errors against time, one line per body and quantity, on a log scale (zero errors drawn at 1e-16)
@@ -61,19 +73,20 @@ void plot(const std::vector<BodyComparison>& bodies, const std::string& dir, con
   std::cout << "chart: " << path << '\n';
 }
 
-int compare(const CompareCommand& o) {
-  if (o.is3d()) throw UsageError(o.scene + ": a 3D scene; compare takes 2D scenes for now");
+// the scene `def` (2D or 3D), its world started by `start`, against their trace: the trace read
+// and compared by the overloads for its dimension
+template <class Def, class World>
+int compareWith(const CompareCommand& o, const Def& def, const std::function<World()>& start) {
   CompareTolerance tolerance;
   try {
     if (!o.tolerance.empty()) tolerance = parseCompareTolerance(o.tolerance);
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("--tolerance: ") + e.what());
   }
-  const sim::scene::SceneDef def = o.load().model();
   // a chart's folder that cannot be made is bad input, said before the run
   if (!o.plot.empty()) render::video::createOutputDirectory(o.plot, "--plot");
   const Trace theirs = readTrace(o.trace, def);
-  sim::world::World world = startWorld(def, o.scene);
+  World world = start();
   const std::vector<BodyComparison> bodies = compareTrace(def, world, theirs, tolerance);
   // rows that meet none of our instants compare nothing: "ok (t = 0 to 0)" passed a trace of t = 5 to 6
   for (size_t i = 0; i < bodies.size(); ++i)
@@ -85,28 +98,42 @@ int compare(const CompareCommand& o) {
                                       " s): its rows run from t = " + formatNumber(rows.front().t) + " to " +
                                       formatNumber(rows.back().t) + "; give rows within the run");
     }
-  const std::string base = render::video::outputBase(def);
-  std::cout << base << " against " << o.trace << " (" << theirs.rows << " rows), tolerances: position "
-            << formatNumber(tolerance.position) << " m, angle " << formatNumber(tolerance.angle) << " rad, velocity "
-            << formatNumber(tolerance.velocity) << '\n';
+  const std::string base = render::video::outputBase(def.name, def.variant);
+  // --quiet: the failed bodies alone
+  std::ostream& out = o.quiet ? nowhere() : std::cout;
+  out << base << " against " << o.trace << " (" << theirs.rows << " rows), tolerances: position "
+      << formatNumber(tolerance.position) << " m, angle " << formatNumber(tolerance.angle) << " rad, velocity "
+      << formatNumber(tolerance.velocity) << '\n';
   bool failed = false, any = false;
   for (size_t i = 0; i < bodies.size(); ++i) {
     const BodyComparison& b = bodies[i];
     if (!b.compared) {
-      if (!def.bodies[i].isStatic) std::cout << "  " << b.name << ": no rows in the trace, not compared\n";
+      if (!isStaticBody(def.bodies[i])) out << "  " << b.name << ": no rows in the trace, not compared\n";
       continue;
     }
     any = true;
     failed = failed || b.exceeded();
-    std::cout << (b.exceeded() ? "  FAIL  " : "  ok    ") << b.name << " (t = " << render::video::timeForName(b.from) << " to "
-              << render::video::timeForName(b.to) << "): position " << over(b.position, tolerance.position) << "; angle "
-              << over(b.angle, tolerance.angle) << "; velocity " << over(b.velocity, tolerance.velocity)
-              << "; kinetic energy at t = " << render::video::timeForName(b.to) << ": ours " << formatNumber(b.oursEnergy)
-              << " J, theirs " << formatNumber(b.theirsEnergy) << " J\n";
+    (b.exceeded() ? std::cout : out) << (b.exceeded() ? "  FAIL  " : "  ok    ") << b.name
+                                     << " (t = " << render::video::timeForName(b.from) << " to "
+                                     << render::video::timeForName(b.to) << "): position " << over(b.position, tolerance.position)
+                                     << "; angle " << over(b.angle, tolerance.angle) << "; velocity "
+                                     << over(b.velocity, tolerance.velocity)
+                                     << "; kinetic energy at t = " << render::video::timeForName(b.to) << ": ours "
+                                     << formatNumber(b.oursEnergy) << " J, theirs " << formatNumber(b.theirsEnergy) << " J\n";
   }
   if (!any) throw UsageError(o.trace + ": no rows for any body of the scene");
-  if (!o.plot.empty()) plot(bodies, o.plot, base, o.trace);
+  if (o.verbose) printErrors(bodies);
+  if (!o.plot.empty()) {
+    const SilencedOutput quiet(o.quiet);
+    plot(bodies, o.plot, base, o.trace);
+  }
   return failed ? kExitFailure : kExitOk;
+}
+
+int compare(const CompareCommand& o) {
+  if (o.is3d()) throw UsageError(o.scene + ": a 3D scene; compare takes 2D scenes for now");
+  const sim::scene::SceneDef def = o.load().model();
+  return compareWith<sim::scene::SceneDef, sim::world::World>(o, def, [&] { return startWorld(def, o.scene); });
 }
 
 }  // namespace
@@ -115,7 +142,9 @@ void addCompareCommand(CLI::App& app, int& exitCode) {
   auto o = std::make_shared<CompareCommand>();
   CLI::App* cmd = app.add_subcommand("compare", "compare another simulator's trace (CSV) with the scene's run");
   cmd->add_option("scene", o->scene, "the scene file (YAML)")->required();
-  o->addTo(*cmd);
+  o->SceneOptions::addTo(*cmd);
+  o->Verbosity::addTo(*cmd, "only the bodies that fail (the chart is still written); errors still on standard error",
+                      "also each body's position, angle and velocity errors at every instant compared");
   cmd->add_option("--trace", o->trace, "their trajectory, in the --trace CSV format (scenes/README.md)")->required();
   cmd->add_option("--tolerance", o->tolerance, "position=1e-3,angle=1e-3,velocity=1e-2 (the defaults)");
   cmd->add_option("--plot", o->plot, "write an error-against-time chart into this directory");

@@ -2,6 +2,7 @@
 // per scene variant, and the scenes checked against them level by level, with an HTML report and
 // JUnit XML for CI.
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -9,11 +10,14 @@
 #include "render/cli/commands.h"
 #include "render/cli/lecture_files.h"
 #include "render/cli/scene_options.h"
+#include "render/cli/verbosity.h"
 #include "render/golden/golden_check.h"
 #include "render/golden/golden_record.h"
 #include "render/golden/golden_report.h"
+#include "render/golden/record_restamp.h"
 #include "render/golden/sha256.h"
 #include "render/jobs/interrupt.h"
+#include "render/jobs/json_writer.h"
 #include "render/video/output_names.h"
 
 namespace render::cli {
@@ -24,12 +28,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct RecordCommand {
+struct RecordCommand : Verbosity {
   std::vector<std::string> scenes;
   std::string output = "golden";
 };
 
-struct CheckCommand {
+struct CheckCommand : Verbosity {
   std::vector<std::string> scenes;
   std::string golden = "golden";
   std::string report;
@@ -86,9 +90,25 @@ std::string describeRecord(const GoldenRun& run, const std::string& dir) {
          count(run.frames.size(), "frame") + " (" + run.renderer + ")";
 }
 
+// -v: each checkpoint's state hash and each frame's files, as the record holds them
+void describeContents(const GoldenRun& run) {
+  for (const Checkpoint& c : run.checkpoints) {
+    char hash[17];
+    std::snprintf(hash, sizeof hash, "%016llx", c.hash);
+    std::cout << "  checkpoint t = " << formatNumber(c.t) << ": state hash " << hash << '\n';
+  }
+  for (const GoldenFrame& f : run.frames)
+    std::cout << "  " << f.name << ".json" << (f.image.rgba.empty() ? "" : ", " + f.name + ".png") << '\n';
+}
+
 int recordAll(const RecordCommand& o) {
   const std::vector<Case> cases = casesOf(o.scenes);
-  for (const Case& c : cases) std::cout << describeRecord(record(c, o.output), o.output) << '\n';
+  const SilencedOutput quiet(o.quiet);
+  for (const Case& c : cases) {
+    const GoldenRun run = record(c, o.output);
+    std::cout << describeRecord(run, o.output) << '\n';
+    if (o.verbose) describeContents(run);
+  }
   return kExitOk;
 }
 
@@ -119,19 +139,31 @@ int checkAll(const CheckCommand& o) {
     record.golden.pixelTolerance = c.scene.golden.pixelTolerance;
     record.golden.pixelFraction = c.scene.golden.pixelFraction;
     CaseResult result = checkRun(run, record, o.strict);
-    if (fileSha256(c.file) != record.sceneSha256) result.warnings.push_back(c.file + " changed since it was recorded");
+    const std::string sha = fileSha256(c.file);
+    // --update: a variant that passes though its file changed keeps its record, stamped with the new sha256
+    if (sha != record.sceneSha256 && o.update && !result.failed()) {
+      restampRecord(record, {c.file, sha, record.golden});
+      std::cout << "restamped " << record.folder << ": " << c.file << " changed, this variant's run did not\n";
+    } else if (sha != record.sceneSha256) {
+      result.warnings.push_back(c.file + " changed since it was recorded");
+    }
+    if (o.verbose)
+      std::cout << result.name << ": against " << record.folder << " (rigidreel " << record.version << ", " << record.renderer
+                << ")\n";
+    // --quiet: the failed levels alone
     for (const LevelResult& l : result.levels)
-      std::cout << result.name << "  " << levelName(l.level) << "  " << (l.failed() ? "FAIL  " : "") << l.message << '\n';
+      if (!o.quiet || l.failed())
+        std::cout << result.name << "  " << levelName(l.level) << "  " << (l.failed() ? "FAIL  " : "") << l.message << '\n';
     for (const std::string& w : result.warnings) std::cerr << result.name << ": warning: " << w << '\n';
     results.push_back(std::move(result));
   }
   if (!o.report.empty()) {
     writeReport(results, o.report);
-    std::cout << "report: " << (fs::path(o.report) / "index.html").string() << '\n';
+    if (!o.quiet) std::cout << "report: " << (fs::path(o.report) / "index.html").string() << '\n';
   }
   if (!o.junit.empty()) {
     writeJunit(results, o.junit);
-    std::cout << "junit: " << o.junit << '\n';
+    if (!o.quiet) std::cout << "junit: " << o.junit << '\n';
   }
   bool failed = false;
   for (size_t i = 0; i < cases.size(); ++i) {
@@ -161,6 +193,8 @@ void addGoldenCommand(CLI::App& app, int& exitCode) {
       "record", "record each scene variant's states, trace, draw lists and frames into DIR/<scene>[-<variant>]/");
   rec->add_option("scenes", r->scenes, "scene files (YAML) or directories of them")->required();
   rec->add_option("-o,--output", r->output, "the golden directory (default: golden)");
+  r->addTo(*rec, "print nothing (the records are still written); errors still on standard error",
+           "also each checkpoint's state hash and each frame's files");
   rec->callback([r, &exitCode] { exitCode = runInterruptible("golden record", [&] { return recordAll(*r); }); });
 
   auto c = std::make_shared<CheckCommand>();
@@ -171,6 +205,8 @@ void addGoldenCommand(CLI::App& app, int& exitCode) {
   chk->add_option("--junit", c->junit, "write a JUnit XML file: one testcase per scene and level");
   chk->add_flag("--update", c->update, "record anew each scene variant that differs, saying what it replaced");
   chk->add_flag("--strict", c->strict, "compare pixels even when the record's renderer is another one");
+  c->addTo(*chk, "only the failed levels (and what --update replaced); warnings and errors still on standard error",
+           "also the record each variant is checked against: its folder, rigidreel version and renderer");
   chk->callback([c, &exitCode] { exitCode = runInterruptible("golden check", [&] { return checkAll(*c); }); });
 }
 

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "render/cli/check_tally.h"
 #include "render/cli/method_lists.h"
 #include "render/cli/output.h"
 #include "render/cli/scene_options.h"
@@ -17,9 +18,9 @@ namespace render::cli {
 // `simulate`: the state at `until` (the duration by default) as text or JSON, every step to a CSV
 // trace; kExitOk, or kExitFailure when the simulation diverged
 int simulate3d(const SceneOptions& options, std::optional<double> until, bool json, const std::string& trace);
-// `check` of one file: every variant's model described and its expect entries compared; false when
-// one fails. Throws sim::yaml::SceneError, sim::world3d::Diverged
-bool check3d(const OpenScene& scene, const Verbosity& say);
+// `check` of one file: every variant's model described and its expect entries compared, each
+// variant tallied with what failed in it. Throws sim::yaml::SceneError, sim::world3d::Diverged
+void check3d(const OpenScene& scene, const Verbosity& say, CheckTally& tally);
 // `sweep` and `stability`
 // (`verbose`: the CSV printed after the table)
 int sweep3d(const SceneOptions& scene, const MethodLists& methods, const std::string& dt, int repeat, const std::string& outDir,
@@ -27,6 +28,10 @@ int sweep3d(const SceneOptions& scene, const MethodLists& methods, const std::st
 int stability3d(const SceneOptions& scene, const MethodLists& methods, const std::string& outDir, bool verbose);
 // (`render`, `snapshot` and `lecture` make a 3D scene's plan with render_plan.h and write it with
 // plan_writer.h, as for 2D)
+
+// whether a body of a 2D or a 3D scene is static (a 3D scene's static surfaces are its planes, not bodies)
+inline bool isStaticBody(const sim::scene::BodyDef& b) { return b.isStatic; }
+inline bool isStaticBody(const sim::scene3d::BodyDef&) { return false; }
 
 // "the simulation diverged at t = …: body '…' has a non-finite state; try …", for standard error
 std::string divergedMessage(const std::string& file, const sim::scene3d::SceneDef& def, const sim::world3d::Diverged& d);

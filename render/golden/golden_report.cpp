@@ -81,32 +81,37 @@ void writeReport(const std::vector<CaseResult>& results, const std::string& dir)
 }
 
 void writeJunit(const std::vector<CaseResult>& results, const std::string& path) {
+  std::vector<JunitCase> cases;
+  for (const CaseResult& c : results)
+    for (const LevelResult& l : c.levels) cases.push_back({c.name, levelName(l.level), c.file, l.status, l.message});
+  writeJunit(cases, "rigidreel golden check", path);
+}
+
+void writeJunit(const std::vector<JunitCase>& cases, const std::string& suite, const std::string& path) {
   render::jobs::AtomicFile file(path);
   std::ostream& out = file.stream();
   size_t tests = 0, failures = 0, skipped = 0;
-  for (const CaseResult& c : results)
-    for (const LevelResult& l : c.levels) {
-      ++tests;
-      failures += l.status == LevelResult::Status::Failed;
-      skipped += l.status == LevelResult::Status::Skipped;
-    }
-  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"rigidreel golden\" tests=\"" << tests << "\" failures=\""
-      << failures << "\" skipped=\"" << skipped << "\">\n<testsuite name=\"rigidreel golden check\" tests=\"" << tests
+  for (const JunitCase& l : cases) {
+    ++tests;
+    failures += l.status == LevelResult::Status::Failed;
+    skipped += l.status == LevelResult::Status::Skipped;
+  }
+  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"rigidreel\" tests=\"" << tests << "\" failures=\""
+      << failures << "\" skipped=\"" << skipped << "\">\n<testsuite name=\"" << escapeXml(suite) << "\" tests=\"" << tests
       << "\" failures=\"" << failures << "\" errors=\"0\" skipped=\"" << skipped << "\">\n";
-  for (const CaseResult& c : results)
-    for (const LevelResult& l : c.levels) {
-      out << "  <testcase classname=\"" << escapeXml(c.name) << "\" name=\"" << levelName(l.level) << "\" file=\""
-          << escapeXml(c.file) << "\"";
-      if (l.status == LevelResult::Status::Ok) {
-        out << "/>\n";
-        continue;
-      }
-      out << ">\n";
-      if (l.status == LevelResult::Status::Failed)
-        out << "    <failure message=\"" << escapeXml(l.message) << "\">" << escapeXml(l.message) << "</failure>\n";
-      else out << "    <skipped message=\"" << escapeXml(l.message) << "\"/>\n";
-      out << "  </testcase>\n";
+  for (const JunitCase& l : cases) {
+    out << "  <testcase classname=\"" << escapeXml(l.classname) << "\" name=\"" << escapeXml(l.name) << "\" file=\""
+        << escapeXml(l.file) << "\"";
+    if (l.status == LevelResult::Status::Ok) {
+      out << "/>\n";
+      continue;
     }
+    out << ">\n";
+    if (l.status == LevelResult::Status::Failed)
+      out << "    <failure message=\"" << escapeXml(l.message) << "\">" << escapeXml(l.message) << "</failure>\n";
+    else out << "    <skipped message=\"" << escapeXml(l.message) << "\"/>\n";
+    out << "  </testcase>\n";
+  }
   out << "</testsuite>\n</testsuites>\n";
   file.commit();
 }

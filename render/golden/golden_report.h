@@ -16,4 +16,13 @@ void writeReport(const std::vector<CaseResult>& results, const std::string& dir)
 // the JUnit XML, written under a temporary name and renamed; throws std::runtime_error
 void writeJunit(const std::vector<CaseResult>& results, const std::string& path);
 
+// one JUnit testcase of any command (`check` writes one per scene variant)
+struct JunitCase {
+  std::string classname, name, file;
+  LevelResult::Status status = LevelResult::Status::Ok;
+  std::string message;  // the failure's or the skip's
+};
+// the same XML of `cases`, its suite named `suite` ("rigidreel check"); throws std::runtime_error
+void writeJunit(const std::vector<JunitCase>& cases, const std::string& suite, const std::string& path);
+
 }  // namespace render::golden
