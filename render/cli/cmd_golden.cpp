@@ -1,19 +1,23 @@
-// `rigidreel golden record | check`: golden records of anyone's scenes (render/golden), one folder
-// per scene variant, and the scenes checked against them level by level, with an HTML report and
-// JUnit XML for CI.
+// `rigidreel golden record | check`: golden records of anyone's scenes, 2D and 3D (render/golden),
+// one folder per scene variant, and the scenes checked against them level by level, with an HTML
+// report and JUnit XML for CI.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <memory>
+#include <variant>
 
 #include "render/cli/commands.h"
 #include "render/cli/lecture_files.h"
 #include "render/cli/scene_options.h"
+#include "render/cli/space3d.h"
 #include "render/cli/verbosity.h"
 #include "render/golden/golden_check.h"
 #include "render/golden/golden_record.h"
 #include "render/golden/golden_report.h"
+#include "render/golden/golden_run3d.h"
 #include "render/golden/record_restamp.h"
 #include "render/golden/sha256.h"
 #include "render/jobs/interrupt.h"
@@ -42,43 +46,64 @@ struct CheckCommand : Verbosity {
   bool strict = false;
 };
 
-// one scene variant as golden reads it: the file's, with its golden: block
+// one scene variant as golden reads it: the file's, 2D or 3D, with its golden: block. What differs
+// between the two is overloaded (goldenTimes, runGolden, readRecord), so each use is one visit
 struct Case {
   std::string file;
-  SceneFile scene;
+  std::variant<SceneFile, SceneFile3d> scene;
+
+  const GoldenDef& golden() const {
+    return std::visit([](const auto& f) -> const GoldenDef& { return f.golden; }, scene);
+  }
+  // "<scene>[-<variant>]", the record's folder
+  std::string name() const {
+    return std::visit([](const auto& f) { return render::video::outputBase(f.model().name, f.model().variant); }, scene);
+  }
+  // the run at `times` (the golden: block's own when none), frames at `golden`'s size
+  GoldenRun run(const GoldenDef& golden, const GoldenTimes* times = nullptr) const {
+    return std::visit(
+        [&](const auto& f) { return runGolden(f.scene, golden, times ? *times : goldenTimes(f.scene, golden), true); }, scene);
+  }
+  GoldenRecord recordIn(const std::string& folder) const {
+    return std::visit([&](const auto& f) { return readRecord(folder, f.model()); }, scene);
+  }
 };
 
-// every variant of every file (the base scene when it has none), each read and its world started
-// (bad input is exit 2 before anything runs); a 3D scene of a directory is skipped, said on stderr
+// the variants of one file (the base scene when it has none), each read and its world started
+template <class File>
+void addCases(std::vector<Case>& cases, const std::string& file, const std::vector<std::string>& variantNames,
+              const std::function<File(const std::string&)>& read, const std::function<void(const File&)>& start) {
+  (void)read("");  // the base scene read whole, as each variant is
+  std::vector<std::string> variants = variantNames;
+  if (variants.empty()) variants.push_back("");
+  for (const std::string& v : variants) {
+    File scene = read(v);
+    start(scene);
+    cases.push_back({file, std::move(scene)});
+  }
+}
+
+// every variant of every file, 2D and 3D (bad input is exit 2 before anything runs)
 std::vector<Case> casesOf(const std::vector<std::string>& arguments) {
   std::vector<Case> cases;
-  std::vector<std::string> named;  // the files named themselves, not found in a directory
-  for (const std::string& a : arguments)
-    if (!fs::is_directory(a)) named.push_back(a);
   for (const std::string& file : lectureSceneFiles(arguments)) {
     const OpenScene opened(file);
-    if (opened.is3d()) {
-      if (std::find(named.begin(), named.end(), file) != named.end())
-        throw UsageError(file + ": a 3D scene; golden records are of 2D scenes for now");
-      std::cerr << file << ": skipped: a 3D scene, and golden records are of 2D scenes for now\n";
-      continue;
-    }
-    (void)opened.read();  // the base scene read whole, as each variant is
-    std::vector<std::string> variants = opened.variantNames();
-    if (variants.empty()) variants.push_back("");
-    for (const std::string& v : variants) {
-      SceneFile scene = opened.read(v);
-      (void)startWorld(scene.model(), file);
-      cases.push_back({file, std::move(scene)});
-    }
+    if (opened.is3d())
+      addCases<SceneFile3d>(
+          cases, file, opened.read3d().model().variantNames, [&](const std::string& v) { return opened.read3d(v); },
+          [&](const SceneFile3d& f) { (void)startWorld3d(f.model(), file); });
+    else
+      addCases<SceneFile>(
+          cases, file, opened.variantNames(), [&](const std::string& v) { return opened.read(v); },
+          [&](const SceneFile& f) { (void)startWorld(f.model(), file); });
   }
   return cases;
 }
 
 // the scene variant recorded as golden wants it into `dir`
 GoldenRun record(const Case& c, const std::string& dir) {
-  const GoldenRun run = runGolden(c.scene.scene, c.scene.golden, goldenTimes(c.scene.scene, c.scene.golden), true);
-  writeRecord(run, {c.file, fileSha256(c.file), c.scene.golden}, dir);
+  const GoldenRun run = c.run(c.golden());
+  writeRecord(run, {c.file, fileSha256(c.file), c.golden()}, dir);
   return run;
 }
 
@@ -122,22 +147,22 @@ int checkAll(const CheckCommand& o) {
   // every record there before anything runs
   std::vector<GoldenRecord> records;
   for (const Case& c : cases) {
-    const std::string folder = (fs::path(o.golden) / render::video::outputBase(c.scene.model())).string();
+    const std::string folder = (fs::path(o.golden) / c.name()).string();
     if (!fs::exists(fs::path(folder) / "manifest.json"))
       throw UsageError(c.file + ": no golden record in " + folder + "; record it first: " + recordCommand(c, o.golden));
-    records.push_back(readRecord(folder, c.scene.model()));
+    records.push_back(c.recordIn(folder));
   }
   std::vector<CaseResult> results;
   for (size_t i = 0; i < cases.size(); ++i) {
     const Case& c = cases[i];
     // the run at the record's times, its tolerances the scene's own
-    GoldenDef golden = c.scene.golden;
+    GoldenDef golden = c.golden();
     golden.width = records[i].golden.width, golden.height = records[i].golden.height;
-    const GoldenRun run = runGolden(c.scene.scene, golden, records[i].times, true);
+    const GoldenRun run = c.run(golden, &records[i].times);
     GoldenRecord& record = records[i];
-    record.golden.tolerance = c.scene.golden.tolerance;
-    record.golden.pixelTolerance = c.scene.golden.pixelTolerance;
-    record.golden.pixelFraction = c.scene.golden.pixelFraction;
+    record.golden.tolerance = c.golden().tolerance;
+    record.golden.pixelTolerance = c.golden().pixelTolerance;
+    record.golden.pixelFraction = c.golden().pixelFraction;
     CaseResult result = checkRun(run, record, o.strict);
     const std::string sha = fileSha256(c.file);
     // --update: a variant that passes though its file changed keeps its record, stamped with the new sha256

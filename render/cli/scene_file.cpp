@@ -31,8 +31,7 @@ SceneFile3d OpenScene::read3d(const std::string& variant) const {
   SceneFile3d f;
   f.scene = render::scene3d::readScene(source, {{render::analysis::kStabilityKey, render::golden::kGoldenKey}, {}});
   f.stability = render::analysis::readStability3d(source);
-  // (3D scenes have no golden records yet; their golden: block is still checked)
-  (void)render::golden::readGolden(source, f.scene.model.duration);
+  f.golden = render::golden::readGolden(source, f.scene.model.duration);
   return f;
 }
 

@@ -31,11 +31,12 @@ SceneFile readSceneFile(const std::string& path, const std::string& variant = ""
 // the same from text; `file` names it in messages
 SceneFile sceneFileText(const std::string& text, const std::string& file, const std::string& variant = "");
 
-// a 3D scene file (`dimensions: 3`), read the same way: its model and look (render/scene3d) and its
-// stability: block (dt only)
+// a 3D scene file (`dimensions: 3`), read the same way: its model and look (render/scene3d), its
+// stability: block (dt only) and its golden: block
 struct SceneFile3d {
   render::scene3d::Scene scene;
   render::analysis::StabilityDef stability;
+  render::golden::GoldenDef golden;
 
   const sim::scene3d::SceneDef& model() const { return scene.model; }
   sim::scene3d::SceneDef& model() { return scene.model; }

@@ -39,9 +39,18 @@ class DrawList3d final : public Canvas3d {
   std::vector<std::string> lines() const;
   std::string toText() const;
   const render::draw::DrawList& overlayCalls() const { return overlay_; }
+  // each solid's call as made (a golden record's draw list compares their numbers)
+  struct Solid {
+    std::string mesh;
+    Pen pen;
+    Vec3 x;
+    Mat3 rotation;
+  };
+  const std::vector<Solid>& solids() const { return solidCalls_; }
 
  private:
   std::vector<std::string> solids_;
+  std::vector<Solid> solidCalls_;
   render::draw::DrawList overlay_;
 };
 

@@ -28,6 +28,7 @@ std::string numbers(std::initializer_list<double> values) {
 void DrawList3d::solid(const Mesh& mesh, const Vec3& x, const Mat3& rotation, const Pen& pen) {
   // R by its rows, as it stands: a drifted q's matrix is no rotation, and the list says so
   const Mat3& r = rotation;
+  solidCalls_.push_back({mesh.name, pen, x, rotation});
   solids_.push_back("solid " + std::string(render::draw::info(pen.role).name) + "#" + std::to_string(pen.body) + " " + mesh.name +
                     " x=" + numbers({x.x(), x.y(), x.z()}) + " R=" + numbers({r(0, 0), r(0, 1), r(0, 2)}) +
                     numbers({r(1, 0), r(1, 1), r(1, 2)}) + numbers({r(2, 0), r(2, 1), r(2, 2)}));

@@ -6,6 +6,7 @@
 
 #include "render/draw/image_compare.h"
 #include "render/draw/png_io.h"
+#include "render/golden/sample3d.h"
 #include "render/jobs/bounded_read.h"
 #include "render/jobs/json_writer.h"
 #include "render/jobs/read_limits.h"
@@ -47,6 +48,14 @@ LevelResult stateLevel(const GoldenRun& run, const GoldenRecord& record) {
       const TraceSample& a = run.checkpoints[i].bodies[b];
       if (b >= record.trace.size() || i >= record.trace[b].size()) continue;
       const TraceSample& e = record.trace[b][i];
+      if (run.threeD) {
+        position.add(std::hypot(a.x - e.x, a.y - e.y, a.z - e.z), a.t, run.bodies[b]);
+        angle.add(rotationBetween(a, e), a.t, run.bodies[b]);
+        velocity.add(
+            std::max(std::hypot(a.vx - e.vx, a.vy - e.vy, a.vz - e.vz), std::hypot(a.wx - e.wx, a.wy - e.wy, a.omega - e.omega)),
+            a.t, run.bodies[b]);
+        continue;
+      }
       position.add(std::hypot(a.x - e.x, a.y - e.y), a.t, run.bodies[b]);
       angle.add(std::abs(a.angle - e.angle), a.t, run.bodies[b]);
       velocity.add(std::max(std::hypot(a.vx - e.vx, a.vy - e.vy), std::abs(a.omega - e.omega)), a.t, run.bodies[b]);

@@ -57,13 +57,17 @@ void writeRecord(const GoldenRun& run, const RecordInfo& info, const std::string
   for (const Checkpoint& c : run.checkpoints) states << formatNumber(c.t) << ',' << hexHash(c.hash) << '\n';
   writeText(to / "states.csv", states.str());
   std::ostringstream trace;
-  trace << kTraceHeader << '\n';
+  trace << (run.threeD ? kTraceHeader3d : kTraceHeader) << '\n';
   for (const Checkpoint& c : run.checkpoints)
     for (size_t b = 0; b < c.bodies.size(); ++b) {
       const TraceSample& s = c.bodies[b];
-      trace << formatNumber(c.t) << ',' << render::jobs::csvField(run.bodies[b]) << ',' << formatNumber(s.x) << ','
-            << formatNumber(s.y) << ',' << formatNumber(s.angle) << ',' << formatNumber(s.vx) << ',' << formatNumber(s.vy) << ','
-            << formatNumber(s.omega) << ',' << formatNumber(s.kineticEnergy) << '\n';
+      trace << formatNumber(c.t) << ',' << render::jobs::csvField(run.bodies[b]);
+      // the columns of simulate --trace, 2D or 3D
+      const std::vector<double> columns =
+          run.threeD ? std::vector<double>{s.x, s.y, s.z, s.qw, s.qx, s.qy, s.qz, s.vx, s.vy, s.vz, s.wx, s.wy, s.omega}
+                     : std::vector<double>{s.x, s.y, s.angle, s.vx, s.vy, s.omega};
+      for (double x : columns) trace << ',' << formatNumber(x);
+      trace << ',' << formatNumber(s.kineticEnergy) << '\n';
     }
   writeText(to / "trace.csv", trace.str());
   for (const GoldenFrame& f : run.frames) {
@@ -75,7 +79,11 @@ void writeRecord(const GoldenRun& run, const RecordInfo& info, const std::string
   folder.commit();
 }
 
-GoldenRecord readRecord(const std::string& folder, const sim::scene::SceneDef& def) {
+namespace {
+
+// the record of a 2D or a 3D scene (readTrace reads its columns)
+template <class Def>
+GoldenRecord readRecordOf(const std::string& folder, const Def& def) {
   using render::jobs::kMaxRecordFileBytes;
   using render::jobs::readBounded;
   const auto path = [&](const std::string& file) { return (fs::path(folder) / file).string(); };
@@ -137,5 +145,10 @@ GoldenRecord readRecord(const std::string& folder, const sim::scene::SceneDef& d
     }
   return r;
 }
+
+}  // namespace
+
+GoldenRecord readRecord(const std::string& folder, const sim::scene::SceneDef& def) { return readRecordOf(folder, def); }
+GoldenRecord readRecord(const std::string& folder, const sim::scene3d::SceneDef& def) { return readRecordOf(folder, def); }
 
 }  // namespace render::golden

@@ -37,5 +37,7 @@ struct GoldenRecord : RecordManifest {
 // level passed on missing rows would compare nothing), and each frame's draw list and PNG there.
 // Throws sim::yaml::SceneError or render::jobs::UsageError naming the file at fault
 GoldenRecord readRecord(const std::string& folder, const sim::scene::SceneDef& def);
+// the same of a 3D scene's record, its trace in the 3D columns
+GoldenRecord readRecord(const std::string& folder, const sim::scene3d::SceneDef& def);
 
 }  // namespace render::golden

@@ -39,6 +39,7 @@ struct GoldenRun {
   std::vector<Checkpoint> checkpoints;
   std::vector<GoldenFrame> frames;
   std::string renderer, rendererVersion;  // as GL reports them ("" without pixels)
+  bool threeD = false;                    // a 3D scene's: its trace has the 3D columns
 };
 
 // the times the scene's golden: block asks for: frames at `at` (else the end) and its impacts (up to

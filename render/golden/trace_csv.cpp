@@ -23,8 +23,10 @@ using render::jobs::formatNumber;
 
 namespace {
 
-// the columns a trace must have, in the order TraceSample holds them after t and body
-const std::array<std::string, 8> kRequired = {"t", "body", "x", "y", "angle", "vx", "vy", "omega"};
+// the columns a trace must have: t, body, then the numbers a sample is made of (makeSample's order)
+const std::vector<std::string> kRequired = {"t", "body", "x", "y", "angle", "vx", "vy", "omega"};
+const std::vector<std::string> kRequired3d = {"t",  "body", "x",  "y",  "z",  "qw", "qx", "qy",
+                                              "qz", "vx",   "vy", "vz", "wx", "wy", "wz"};
 // rows read between two looks at the interrupt flag
 constexpr size_t kRowsPerCheck = 65536;
 
@@ -133,9 +135,20 @@ std::optional<double> finiteNumber(std::string_view s) {
   return v;
 }
 
-}  // namespace
+// the sample of a row's numbers (t first, then the columns after body in kRequired's order)
+TraceSample makeSample(const std::vector<double>& v, double kinetic, int line) {
+  return {v[0], v[1], v[2], v[3], v[4], v[5], v[6], kinetic, line};
+}
+TraceSample makeSample3d(const std::vector<double>& v, double kinetic, int line) {
+  TraceSample s{v[0], v[1], v[2], 0.0, v[8], v[9], v[13], kinetic, line};
+  s.z = v[3], s.qw = v[4], s.qx = v[5], s.qy = v[6], s.qz = v[7], s.vz = v[10], s.wx = v[11], s.wy = v[12];
+  return s;
+}
 
-Trace traceText(const std::string& text, const std::string& file, const sim::scene::SceneDef& def) {
+// a 2D or a 3D scene's trace: `required` its columns, `header` the line that has them, `make` a sample of a row
+template <class Def>
+Trace parseTrace(const std::string& text, const std::string& file, const Def& def, const std::vector<std::string>& required,
+                 const std::string& header, TraceSample (*make)(const std::vector<double>&, double, int)) {
   const auto fail = [&](int line, int column, const std::string& message) {
     throw sim::yaml::SceneError(file, line, column, message);
   };
@@ -145,7 +158,8 @@ Trace traceText(const std::string& text, const std::string& file, const sim::sce
   int number = 0;
   std::map<std::string, size_t, std::less<>> column;  // name → field index
   size_t fieldCount = 0;
-  size_t indices[7] = {};                                   // of t, x, y, angle, vx, vy, omega
+  const size_t count = required.size() - 1;                 // the numbers: every column but body
+  std::vector<size_t> indices(count);                       // of t and the numbers after body
   size_t bodyColumn = 0, energyColumn = std::string::npos;  // kinetic_energy's, when there is one
   while (records.next(fields, number)) {
     if (fields.size() == 1 && fields[0].text.empty()) continue;  // a blank line
@@ -155,10 +169,10 @@ Trace traceText(const std::string& text, const std::string& file, const sim::sce
         if (column.count(name)) fail(number, fields[i].column, "the column '" + name + "' appears twice in the header");
         column[name] = i;
       }
-      for (const std::string& name : kRequired)
+      for (const std::string& name : required)
         if (!column.count(name))
-          fail(number, 1, "the header has no column '" + name + "'; a trace starts with the line " + std::string(kTraceHeader));
-      for (size_t k = 0; k < 7; ++k) indices[k] = column[kRequired[k == 0 ? 0 : k + 1]];
+          fail(number, 1, "the header has no column '" + name + "'; a trace starts with the line " + header);
+      for (size_t k = 0; k < count; ++k) indices[k] = column[required[k == 0 ? 0 : k + 1]];
       bodyColumn = column["body"];
       if (const auto ke = column.find("kinetic_energy"); ke != column.end()) energyColumn = ke->second;
       fieldCount = fields.size();
@@ -177,13 +191,13 @@ Trace traceText(const std::string& text, const std::string& file, const sim::sce
       fail(number, fields[bodyColumn].column,
            "the scene has no body named '" + sim::yaml::shownName(body) + "' (its bodies: " + known + ")");
     }
-    double values[7];
-    for (size_t k = 0; k < 7; ++k) {
+    std::vector<double> values(count);
+    for (size_t k = 0; k < count; ++k) {
       const Field& f = fields[indices[k]];
       const std::optional<double> v = finiteNumber(f.text);
       if (!v)
         fail(number, f.column,
-             "expected a finite number for '" + kRequired[k == 0 ? 0 : k + 1] + "', got '" + sim::yaml::shownName(f.text) + "'");
+             "expected a finite number for '" + required[k == 0 ? 0 : k + 1] + "', got '" + sim::yaml::shownName(f.text) + "'");
       values[k] = *v;
     }
     double kinetic = 0.0;
@@ -201,19 +215,30 @@ Trace traceText(const std::string& text, const std::string& file, const sim::sce
            "time goes back for '" + sim::yaml::shownName(body) + "': " + formatNumber(values[0]) + " after " +
                formatNumber(samples.back().t) + " on line " + std::to_string(samples.back().line) +
                "; list each body's rows in time order");
-    samples.push_back({values[0], values[1], values[2], values[3], values[4], values[5], values[6], kinetic, number});
+    samples.push_back(make(values, kinetic, number));
     ++trace.rows;
   }
-  if (column.empty()) fail(0, 0, "the trace is empty; it starts with the line " + std::string(kTraceHeader));
+  if (column.empty()) fail(0, 0, "the trace is empty; it starts with the line " + header);
   if (trace.rows == 0) fail(number, 1, "the trace has a header but no rows");
   return trace;
 }
 
-Trace readTrace(const std::string& path, const sim::scene::SceneDef& def) {
-  return traceText(render::jobs::readBounded(path, render::jobs::kMaxTraceBytes, "trace",
-                                             "give the trace CSV (`rigidreel simulate --trace` writes one)"),
-                   path, def);
+std::string traceFile(const std::string& path) {
+  return render::jobs::readBounded(path, render::jobs::kMaxTraceBytes, "trace",
+                                   "give the trace CSV (`rigidreel simulate --trace` writes one)");
 }
+
+}  // namespace
+
+Trace traceText(const std::string& text, const std::string& file, const sim::scene::SceneDef& def) {
+  return parseTrace(text, file, def, kRequired, kTraceHeader, makeSample);
+}
+Trace traceText(const std::string& text, const std::string& file, const sim::scene3d::SceneDef& def) {
+  return parseTrace(text, file, def, kRequired3d, kTraceHeader3d, makeSample3d);
+}
+
+Trace readTrace(const std::string& path, const sim::scene::SceneDef& def) { return traceText(traceFile(path), path, def); }
+Trace readTrace(const std::string& path, const sim::scene3d::SceneDef& def) { return traceText(traceFile(path), path, def); }
 
 bool sampleAt(const std::vector<TraceSample>& samples, double t, TraceSample& out, bool before) {
   if (samples.empty() || t < samples.front().t || t > samples.back().t) return false;
@@ -242,6 +267,13 @@ bool sampleAt(const std::vector<TraceSample>& samples, double t, TraceSample& ou
          mix(a.omega, b.omega),
          mix(a.kineticEnergy, b.kineticEnergy),
          b.line};
+  out.z = mix(a.z, b.z), out.vz = mix(a.vz, b.vz), out.wx = mix(a.wx, b.wx), out.wy = mix(a.wy, b.wy);
+  // q and −q are one rotation: b's taken with the sign nearer a's, the mix normalized
+  const double sign = a.qw * b.qw + a.qx * b.qx + a.qy * b.qy + a.qz * b.qz < 0.0 ? -1.0 : 1.0;
+  out.qw = mix(a.qw, sign * b.qw), out.qx = mix(a.qx, sign * b.qx), out.qy = mix(a.qy, sign * b.qy);
+  out.qz = mix(a.qz, sign * b.qz);
+  const double n = std::sqrt(out.qw * out.qw + out.qx * out.qx + out.qy * out.qy + out.qz * out.qz);
+  if (n > 0.0) out.qw /= n, out.qx /= n, out.qy /= n, out.qz /= n;
   return true;
 }
 

@@ -1,0 +1,93 @@
+#include "render/golden/golden_run3d.h"
+
+#include <algorithm>
+#include <cstring>
+#include <memory>
+
+#include "render/draw/text.h"
+#include "render/frame3d/scene_run3d.h"
+#include "render/frame3d/survey3d.h"
+#include "render/golden/drawn_frame3d.h"
+#include "render/golden/sample3d.h"
+#include "render/video/output_names.h"
+
+namespace render::golden {
+
+namespace {
+
+void sortUnique(std::vector<double>& v) {
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+}
+
+}  // namespace
+
+unsigned long long stateHash3d(const sim::world3d::World& world) {
+  unsigned long long h = 1469598103934665603ull;
+  auto mix = [&h](double value) {
+    unsigned long long bits;
+    std::memcpy(&bits, &value, sizeof bits);
+    for (int k = 0; k < 8; ++k) {
+      h ^= (bits >> (8 * k)) & 0xffu;
+      h *= 1099511628211ull;
+    }
+  };
+  for (const sim::world3d::Body& b : world.bodies)
+    for (double x : {b.x.x(), b.x.y(), b.x.z(), b.q.w(), b.q.x(), b.q.y(), b.q.z(), b.v.x(), b.v.y(), b.v.z(), b.omega.x(),
+                     b.omega.y(), b.omega.z()})
+      mix(x);
+  return h;
+}
+
+GoldenTimes goldenTimes(const render::scene3d::Scene& scene, const GoldenDef& golden) {
+  GoldenTimes times;
+  times.frames = golden.at.empty() ? std::vector<double>{scene.model.duration} : golden.at;
+  if (golden.impacts) {
+    const render::frame3d::RunSurvey3d survey = render::frame3d::surveyRun(scene);
+    const size_t n = std::min(kMaxImpactFrames, survey.impactTimes.size());
+    times.frames.insert(times.frames.end(), survey.impactTimes.begin(), survey.impactTimes.begin() + n);
+  }
+  sortUnique(times.frames);
+  times.checkpoints = times.frames;
+  for (const sim::scene3d::ExpectDef& e : scene.model.expects) times.checkpoints.push_back(e.time);
+  times.checkpoints.push_back(scene.model.duration);
+  sortUnique(times.checkpoints);
+  return times;
+}
+
+GoldenRun runGolden(const render::scene3d::Scene& original, const GoldenDef& golden, const GoldenTimes& times, bool pixels) {
+  render::scene3d::Scene scene = original;
+  scene.render.width = golden.width;
+  scene.render.height = golden.height;
+  GoldenRun run;
+  run.threeD = true;
+  run.name = render::video::outputBase(scene.model.name, scene.model.variant);
+  for (const auto& b : scene.model.bodies) run.bodies.push_back(b.name);
+  const render::frame3d::RunSurvey3d survey = render::frame3d::surveyRun(scene);
+  const render::draw3d::Camera3d camera = render::frame3d::cameraFor(scene, survey);
+  const render::draw::Style style = render::scene3d::makeStyle(scene, golden.height);
+  std::unique_ptr<render::draw::GlContext> gl;
+  // text is measured alike with and without pixels: labels are placed by their widths
+  render::draw::TextRenderer text;
+  if (pixels) {
+    gl = std::make_unique<render::draw::GlContext>(golden.width, golden.height);
+    run.renderer = gl->renderer();
+    run.rendererVersion = gl->version();
+  }
+  render::frame3d::SceneRun3d sceneRun(scene, camera, survey, gl.get(), &text);
+  // every instant once, in time order: a frame's time is also a checkpoint
+  for (double t : times.checkpoints) {
+    const render::draw3d::DrawList3d list = sceneRun.drawListAt(t);
+    const sim::world3d::World& world = sceneRun.world();
+    Checkpoint c{t, stateHash3d(world), {}};
+    for (const sim::world3d::Body& b : world.bodies) c.bodies.push_back(sampleOf(b, world.time));
+    run.checkpoints.push_back(std::move(c));
+    if (!std::binary_search(times.frames.begin(), times.frames.end(), t)) continue;
+    GoldenFrame f{t, frameName(t), drawnFrame3d(list, style, golden.width, golden.height), {}};
+    if (pixels) f.image = sceneRun.frameAt(t);
+    run.frames.push_back(std::move(f));
+  }
+  return run;
+}
+
+}  // namespace render::golden

@@ -1,0 +1,22 @@
+// One run of a 3D scene variant for a golden record, as golden_run.h is for 2D: the world advanced
+// once, at each checkpoint its state hash and trace rows (the 3D columns), at each golden time its
+// draw list (drawn_frame3d.h) and frame.
+#pragma once
+
+#include "render/golden/golden_run.h"
+#include "render/scene3d/scene.h"
+#include "sim/world3d/world.h"
+
+namespace render::golden {
+
+// the times the 3D scene's golden: block asks for, as for 2D (an overload of golden_run.h's). Throws
+// sim::world3d::Diverged.
+GoldenTimes goldenTimes(const render::scene3d::Scene& scene, const GoldenDef& golden);
+// the run at `times`, frames at the golden size; without `pixels` no GL is loaded. Throws
+// sim::world3d::Diverged, std::runtime_error (GL).
+GoldenRun runGolden(const render::scene3d::Scene& scene, const GoldenDef& golden, const GoldenTimes& times, bool pixels);
+
+// FNV-1a over the raw bits of every body's x, q, v and ω (sim::world::stateHash's, in 3D)
+unsigned long long stateHash3d(const sim::world3d::World& world);
+
+}  // namespace render::golden
