@@ -131,7 +131,10 @@ int compareWith(const CompareCommand& o, const Def& def, const std::function<Wor
 }
 
 int compare(const CompareCommand& o) {
-  if (o.is3d()) throw UsageError(o.scene + ": a 3D scene; compare takes 2D scenes for now");
+  if (o.is3d()) {
+    const sim::scene3d::SceneDef def = o.load3d().model();
+    return compareWith<sim::scene3d::SceneDef, sim::world3d::World>(o, def, [&] { return startWorld3d(def, o.scene); });
+  }
   const sim::scene::SceneDef def = o.load().model();
   return compareWith<sim::scene::SceneDef, sim::world::World>(o, def, [&] { return startWorld(def, o.scene); });
 }

@@ -14,6 +14,7 @@
 #include "render/cli/verbosity.h"
 #include "render/jobs/json_writer.h"
 #include "sim/scene/expect.h"
+#include "sim/scene3d/expect.h"
 
 namespace render::cli {
 using namespace render::jobs;
@@ -106,10 +107,29 @@ int expect2d(const ExpectCommand& o) {
       });
 }
 
-int expect(const ExpectCommand& o) {
-  if (o.is3d()) throw UsageError(o.scene + ": a 3D scene; expect takes 2D scenes for now");
-  return expect2d(o);
+int expect3d(const ExpectCommand& o) {
+  using sim::scene3d::ExpectDef;
+  using sim::scene3d::SceneDef;
+  using sim::world3d::Vec3;
+  return printEntries<SceneDef, ExpectDef>(
+      o, o.load3d().model(), {"position", "orientation", "velocity", "angular_velocity"},
+      [](double t, const std::string& body) {
+        ExpectDef e;
+        e.time = t, e.body = body;
+        e.position = Vec3::Zero(), e.orientation = sim::world3d::Quat::Identity(), e.velocity = Vec3::Zero();
+        e.angularVelocity = Vec3::Zero();
+        return e;
+      },
+      [&](SceneDef& def, std::string& how) {
+        sim::world3d::World world = startWorld3d(def, o.scene);
+        how = "integrator " + std::string(sim::world3d::kIntegratorNames.name(def.integrator)) + ", dt " + formatNumber(def.dt) +
+              " s, collisions " + describeCollisionMethod(def, world);
+        render::analysis::InterruptCheck3d interrupt;
+        return sim::scene3d::runExpects(def, world, &interrupt);
+      });
 }
+
+int expect(const ExpectCommand& o) { return o.is3d() ? expect3d(o) : expect2d(o); }
 
 }  // namespace
 

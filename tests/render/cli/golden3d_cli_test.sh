@@ -84,4 +84,33 @@ run golden check pack --golden packgold --junit pack.xml
   python3 -c 'import sys, xml.etree.ElementTree as ET; names = {c.get("classname") for c in ET.parse(sys.argv[1]).iter("testcase")}; assert names == {"drop", "fall"}, names' pack.xml
 check "golden check DIR: the 3D and the 2D scene each 3 testcases" $? "junit $(junit pack.xml)"
 
+# ---- compare: a 3D trace ------------------------------------------------------------------------
+scene "#c8553d" 0.8 >drop.yaml
+run simulate drop.yaml --trace ours.csv
+run compare drop.yaml --trace ours.csv
+[ "$rc" -eq 0 ] && grep -q "^  ok    ball " out
+check "compare of a 3D scene against its own simulate --trace passes" $? "$(cat out) $(cat err)"
+awk -F, -v OFMT=%.17g -v CONVFMT=%.17g 'BEGIN { OFS = "," } NR > 1 && $1 > 1 { $5 = $5 + 0.01 } { print }' ours.csv >moved.csv
+run compare drop.yaml --trace moved.csv
+[ "$rc" -eq 1 ] && grep -Eq "^  FAIL  ball .*position 0.01 at t = 1.00[0-9]*, over 0.001 from t = 1.00" out
+check "the ball's z moved by 0.01 after t = 1 fails, naming when" $? "$(cat out)"
+# a quarter turn about x in their trace: the angle error is π/2
+awk -F, -v OFMT=%.17g -v CONVFMT=%.17g 'BEGIN { OFS = "," } NR > 1 { $6 = sqrt(0.5); $7 = sqrt(0.5) } { print }' ours.csv >turned.csv
+run compare drop.yaml --trace turned.csv
+[ "$rc" -eq 1 ] && grep -q "angle 1.5708 at t = 0" out
+check "an orientation a quarter turn off is an angle error of pi/2" $? "$(cat out)"
+
+# ---- expect: a 3D scene's entries, pasted back --------------------------------------------------
+run expect drop.yaml --at 0.3,1.2 --tolerance 1e-12
+[ "$rc" -eq 0 ] && [ "$(grep -c '^  - {time: .*, body: ball, position: \[.*\], orientation: \[.*\], velocity: \[.*\], angular_velocity: \[.*\], tolerance: 1e-12, source: earlier_run}$' out)" -eq 2 ]
+check "expect of a 3D scene: position, orientation, velocity and angular_velocity of the ball" $? "$(cat out)"
+{ cat drop.yaml; cat out; } >pasted.yaml
+run check pasted.yaml
+[ "$rc" -eq 0 ] && [ "$(grep -c '^  ok ' out)" -eq 8 ]
+check "the pasted 3D entries pass check (8 comparisons)" $? "$(cat out)"
+sed -i '0,/velocity: \[0, 0, /s//velocity: [0.001, 0, /' pasted.yaml
+run check pasted.yaml
+[ "$rc" -eq 1 ]
+check "one value altered fails it" $? "$(grep FAIL out)"
+
 cli_finish
