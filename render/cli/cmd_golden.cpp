@@ -168,7 +168,7 @@ int checkAll(const CheckCommand& o) {
     // --update: a variant that passes though its file changed keeps its record, stamped with the new sha256
     if (sha != record.sceneSha256 && o.update && !result.failed()) {
       restampRecord(record, {c.file, sha, record.golden});
-      std::cout << "restamped " << record.folder << ": " << c.file << " changed, this variant's run did not\n";
+      if (!o.quiet) std::cout << "restamped " << record.folder << ": " << c.file << " changed, this variant's run did not\n";
     } else if (sha != record.sceneSha256) {
       result.warnings.push_back(c.file + " changed since it was recorded");
     }
