@@ -86,6 +86,20 @@ check "expect marks every entry source: earlier_run" $? "$(cat out)"
 run check pasted.yaml
 [ "$rc" -eq 0 ] && [ "$(grep -c '^  ok ' out)" -eq 8 ]
 check "the pasted entries are read back and pass check (8 comparisons)" $? "$(cat out)"
+# the lecture page lists the pasted entries apart from the scene's closed form (expect -q's entries
+# appended under it): 4 rows a time
+run expect pack/a_drop.yaml --at 0.25,1 -q
+{ sed '/^variants:/,$d' pack/a_drop.yaml; cat out; } >mixed.yaml
+run lecture mixed.yaml -o lect --size 160x90 --fps 10 -j 1 -q
+python3 -c '
+import re, sys
+html = open(sys.argv[1]).read()
+closed = html.split("<h3>Closed forms, checked</h3>")[1].split("</table>")[0]
+earlier = html.split("<h3>Checked against an earlier run</h3>")[1].split("</table>")[0]
+rows = lambda part: re.findall(r"<tr><td>[^<]*</td><td class=\"number\">([^<]*)</td><td>([^<]*)</td>", part)
+assert rows(closed) == [("0.5", "ball.position")], rows(closed)
+assert len(rows(earlier)) == 8 and ("0.25", "ball.angular_velocity") in rows(earlier), rows(earlier)' lect/index.html
+check "the lecture page lists them under 'Checked against an earlier run', the scene's own under closed forms" $? "exit $rc"
 run expect pack/a_drop.yaml -q
 [ "$rc" -eq 0 ] && [ "$(wc -l <out)" -eq 1 ] && grep -q '^  - {time: 1, body: ball' out
 check "expect -q prints the entries alone, to append under a scene's expect:" $? "$(cat out)"
