@@ -161,13 +161,17 @@ class EventStepper3 final : public Method3 {
     if (span <= 0.0) return std::nullopt;
     const double touch = core_settings::kTouchingTolerance * world.sceneSize();
     const double tolerance = core_settings::kImpactTolerance * world.sceneSize();
-    const States end = motion(world, from, start, h, span);
     std::optional<double> first;
     double horizon = span;
+    // the states at the earliest impact found so far, moved once each time it moves: the test below
+    // of every pair against them stays a distance, not a motion of every body
+    States atHorizon = motion(world, from, start, h, span);
+    double movedTo = span;
     for (const auto& [a, b] : candidatePairs(world)) {
       const auto g = [&](double tau) { return gap(world, a, b, motion(world, from, start, h, tau)); };
+      if (movedTo != horizon) atHorizon = motion(world, from, start, h, horizon), movedTo = horizon;
       // only a pair that overlaps by the earliest impact found so far meets before it
-      const double ghorizon = horizon == span ? gap(world, a, b, end) : g(horizon);
+      const double ghorizon = gap(world, a, b, atHorizon);
       if (!(ghorizon < 0.0)) continue;
       // out of a touching contact first: a look-ahead doubled until the pair is clear of the band
       double lo = 0.0, glo = gap(world, a, b, from);
@@ -216,6 +220,8 @@ class EventStepper3 final : public Method3 {
       }
       if (!any) break;
     }
+    // a step of free motion from here, once for every contact below
+    const States ahead = motion(world, world.states(), start, h, world.dt);
     for (const Contact3& c : touching) {
       double fastest = 0.0;
       for (int k = 0; k < c.count; ++k)
@@ -223,7 +229,7 @@ class EventStepper3 final : public Method3 {
             std::max(fastest, std::abs(c.normal.dot(relativeVelocity(world.bodies[c.a], bodyB(world, c), c.points[k].point))));
       if (fastest > core_settings::kRestingSpeed) continue;
       // pressed: a step of free motion would make them overlap
-      if (gap(world, c.a, c.b, motion(world, world.states(), start, h, world.dt)) >= -touch) continue;
+      if (gap(world, c.a, c.b, ahead) >= -touch) continue;
       throw ContactPersists(t, c.a, c.b, "a contact too slow to part persists (it would come to rest)");
     }
   }
