@@ -14,6 +14,7 @@
 #include "sim/core/step_limit.h"
 #include "sim/scene/model_warnings.h"
 #include "sim/scene/scene_build.h"
+#include "sim/scene3d/contact_pairs.h"
 #include "sim/world3d/method_models3d.h"
 #include "sim/scene/step_limit.h"
 #include "sim/yaml/scene_yaml.h"
@@ -120,6 +121,10 @@ SceneFile3d SceneOptions::load3d() const {
                        "and sequential; '" + collisions + "' is not one of them");
     def.collisions = *method;
     def.collisionsLoc = {};
+    // the reader refused an unmodeled pair under the scene's own method; under this one, here
+    if (const auto pair = sim::scene3d::unmodeledPair(def))
+      throw UsageError("--collisions " + collisions + ": " + scene + ": " +
+                       sim::scene3d::unmodeledPairMessage(def.bodies[pair->first].name, def.bodies[pair->second].name));
   }
   if (substeps || contactHertz || !precision.empty())
     throw UsageError(std::string(substeps       ? "--substeps"

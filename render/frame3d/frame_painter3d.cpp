@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "render/frame/frame_painter.h"
+#include "render/frame3d/occlusion.h"
 #include "render/draw/text.h"
 #include "render/frame/quantity_text.h"
 #include "render/scene/scene_style.h"
@@ -25,6 +26,8 @@ constexpr double kArrowFraction = 1.0 / 4.0;
 constexpr double kAxesLength = 1.3;
 // paths are drawn with points at least this many pixels apart: smooth, and a few hundred segments
 constexpr double kPathSpacingPx = 1.5;
+// a contact point hidden behind a body is drawn at this share of its opacity: there, but behind
+constexpr double kBehindOpacity = 0.3;
 
 double arrowScale(double given, double largest, const Camera3d& camera) {
   if (given > 0.0) return given;
@@ -259,6 +262,8 @@ void FramePainter3d::paintContacts(const World& world, Canvas& draw) const {
   const auto normalArrow = [&](const Vec3& point, const Vec3& normal, double opacity) {
     const std::optional<Vec2> p = screen(point), q = screen(point + 0.01 * normal);
     if (!p) return;
+    // a point behind a body (a box's far corners on the floor) drawn faint, not as if in front
+    if (hiddenByBodies(camera_.eye(), point, world.bodies, 2.0 * sim::core::settings::kLinearSlop)) opacity *= kBehindOpacity;
     draw.point(*p, {Role::ContactPoint, -1, opacity});
     if (q && (*q - *p).norm() > 1e-9) draw.arrow(*p, *p + normalPx * (*q - *p).normalized(), {Role::ContactNormal, -1, opacity});
   };

@@ -95,21 +95,35 @@ bool resolveTogether(World& world, const Contact3& c, ImpactRecord3 rec[], int c
   return true;
 }
 
-// whether the approaching points slide along the contact (friction then acts point by point)
-bool sliding(World& world, const Contact3& c, const ImpactRecord3 rec[], int count) {
-  for (int i = 0; i < count; ++i) {
-    const Vec3 v = relativeVelocity(world.bodies[c.a], bodyB(world, c), rec[i].point);
-    if ((v - c.normal.dot(v) * c.normal).norm() > core_settings::kApproachFloor) return true;
-  }
-  return false;
+// the friction of points struck together: one impulse at their γ-weighted centre, against the
+// sliding there, within μ Σγ (the cone of the whole patch), so that a box landing flat while it
+// slides is stopped alike at every corner, whatever order the corners are listed in
+void frictionTogether(World& world, const Contact3& c, ImpactRecord3 rec[], int count) {
+  double total = 0.0;
+  Vec3 centre = Vec3::Zero();
+  for (int i = 0; i < count; ++i) total += rec[i].impulse, centre += rec[i].impulse * rec[i].point;
+  if (c.friction <= 0.0 || total <= 0.0) return;
+  centre /= total;
+  Body& a = world.bodies[c.a];
+  Body* b = bodyB(world, c);
+  const Vec3 v = relativeVelocity(a, b, centre);
+  const Vec3 slide = v - c.normal.dot(v) * c.normal;
+  const double speed = slide.norm();
+  if (speed == 0.0) return;
+  const Vec3 t = slide / speed;
+  const double stop = speed / inverseEffectiveMass(a, b, pairInverses(a, b), centre, t);
+  const Vec3 j = -std::min(stop, c.friction * total) * t;
+  applyImpulsePair(a, b, centre, j);
+  // logged and drawn at the points, each its share
+  for (int i = 0; i < count; ++i) rec[i].tangentImpulse = rec[i].impulse / total * j;
 }
 
 // the notes' impulse at a contact's approaching points, logged
 void resolveContact(World& world, const Contact3& c, ImpactRecord3 rec[], int count) {
   Body& a = world.bodies[c.a];
   Body* b = bodyB(world, c);
-  const bool together =
-      count >= 2 && (c.friction == 0.0 || !sliding(world, c, rec, count)) && resolveTogether(world, c, rec, count);
+  const bool together = count >= 2 && resolveTogether(world, c, rec, count);
+  if (together) frictionTogether(world, c, rec, count);
   if (!together) {
     // one point: the one approaching fastest
     int fastest = 0;
@@ -161,25 +175,46 @@ class EventStepper3 final : public Method3 {
     if (span <= 0.0) return std::nullopt;
     const double touch = core_settings::kTouchingTolerance * world.sceneSize();
     const double tolerance = core_settings::kImpactTolerance * world.sceneSize();
-    const States end = motion(world, from, start, h, span);
     std::optional<double> first;
     double horizon = span;
+    // the states at the earliest impact found so far, moved once each time it moves: the test below
+    // of every pair against them stays a distance, not a motion of every body
+    States atHorizon = motion(world, from, start, h, span);
+    double movedTo = span;
     for (const auto& [a, b] : candidatePairs(world)) {
       const auto g = [&](double tau) { return gap(world, a, b, motion(world, from, start, h, tau)); };
+      if (movedTo != horizon) atHorizon = motion(world, from, start, h, horizon), movedTo = horizon;
       // only a pair that overlaps by the earliest impact found so far meets before it
-      const double ghorizon = horizon == span ? gap(world, a, b, end) : g(horizon);
+      const double ghorizon = gap(world, a, b, atHorizon);
       if (!(ghorizon < 0.0)) continue;
-      // out of a touching contact first: a look-ahead doubled until the pair is clear of the band
+      // out of a touching contact first, as 2D's leaveTouching: a look-ahead doubled until the pair
+      // clears the band (then the crossing lies beyond), comes back in past the tolerance (then it
+      // lies since the last probe: a pair touching and approaching strikes at once), or stays in the
+      // band to the horizon (no impact: it is resting, not striking)
       double lo = 0.0, glo = gap(world, a, b, from);
-      for (double ahead = core_settings::kLookAheadStart * span; glo <= touch && ahead < horizon; ahead *= 2.0)
-        lo = ahead, glo = g(ahead);
-      if (glo <= touch) {
-        // it never clears the band before it overlaps: an impact now
-        first = horizon = lo;
-        continue;
-      }
-      // the crossing of zero in (lo, horizon]: regula falsi, Illinois variant, kept on the near side
       double hi = horizon, ghi = ghorizon;
+      if (glo <= touch) {
+        bool inBand = true;
+        for (double ahead = core_settings::kLookAheadStart * span, last = 0.0, glast = std::max(glo, 0.0);; ahead *= 2.0) {
+          ahead = std::min(ahead, horizon);
+          const double gahead = g(ahead);
+          if (gahead < -tolerance) {
+            lo = last, glo = glast, hi = ahead, ghi = gahead;
+            break;
+          }
+          if (gahead > touch) {
+            lo = ahead, glo = gahead;
+            break;
+          }
+          if (ahead >= horizon) {
+            inBand = false;
+            break;
+          }
+          last = ahead, glast = std::max(gahead, 0.0);
+        }
+        if (!inBand) continue;
+      }
+      // the crossing of zero in (lo, hi]: regula falsi, Illinois variant, kept on the near side
       int side = 0;
       for (int it = 0; it < core_settings::kMaxRefineIterations && glo > tolerance && hi - lo > core_settings::kImpactBracket * h;
            ++it) {
@@ -216,6 +251,8 @@ class EventStepper3 final : public Method3 {
       }
       if (!any) break;
     }
+    // a step of free motion from here, once for every contact below
+    const States ahead = motion(world, world.states(), start, h, world.dt);
     for (const Contact3& c : touching) {
       double fastest = 0.0;
       for (int k = 0; k < c.count; ++k)
@@ -223,7 +260,7 @@ class EventStepper3 final : public Method3 {
             std::max(fastest, std::abs(c.normal.dot(relativeVelocity(world.bodies[c.a], bodyB(world, c), c.points[k].point))));
       if (fastest > core_settings::kRestingSpeed) continue;
       // pressed: a step of free motion would make them overlap
-      if (gap(world, c.a, c.b, motion(world, world.states(), start, h, world.dt)) >= -touch) continue;
+      if (gap(world, c.a, c.b, ahead) >= -touch) continue;
       throw ContactPersists(t, c.a, c.b, "a contact too slow to part persists (it would come to rest)");
     }
   }

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "sim/core/step_limit.h"
+#include "sim/scene3d/contact_pairs.h"
 #include "sim/scene3d/scene_build.h"
 #include "sim/yaml/expect_time.h"
 #include "sim/yaml/force_reader.h"
@@ -180,29 +181,23 @@ class SceneReader3d : public Reader3d {
     optional(plane, "point", p.point, &Reader3d::vec3);
     const YAML::Node normal = required(plane, "normal", "a plane");
     p.normal = vec3(normal, "normal");
-    if (!(p.normal.norm() > 0.0))
-      fail(normal, "a plane's normal must not be zero; give the direction out of the solid, e.g. [0, 0, 1]");
-    p.normal.normalize();
+    // scaled by its largest component first, so that [1e200, 0, 0] or [1e-160, 0, 0] come out unit
+    const double largest = p.normal.cwiseAbs().maxCoeff();
+    if (!(largest > 0.0)) fail(normal, "a plane's normal must not be zero; give the direction out of the solid, e.g. [0, 0, 1]");
+    p.normal = (p.normal / largest).normalized();
     if (n["restitution"]) p.restitution = restitution(n["restitution"]);
     optional(n, "friction", p.friction, &Reader::nonNegative);
     return p;
   }
 
-  // contacts between bodies are modeled for two spheres alone: any other pair of bodies that could
-  // meet, in a scene with contacts, is refused at the second body rather than let pass through
+  // a body pair without a contact model, in a scene whose contacts act on bodies: refused at the
+  // second body rather than let pass through
   void checkPairs(const YAML::Node& nodes, const SceneDef& s) {
-    if (s.collisions == sim::core::CollisionMethod::None) return;
-    if (s.planes.empty() && s.collisions == sim::core::CollisionMethod::Auto) return;
-    const BodyDef* other = nullptr;
-    for (const BodyDef& b : s.bodies) {
-      if (other && !(b.shape.kind == ShapeKind::Sphere && other->shape.kind == ShapeKind::Sphere)) {
-        for (const YAML::Node& n : nodes)
-          if (n.IsMap() && n["name"] && n["name"].Scalar() == b.name)
-            fail(n, "3D contacts between bodies are modeled for two spheres only, and '" + b.name + "' and '" + other->name +
-                        "' would pass through each other; make them spheres, keep one body, or set 'sim: {collisions: none}'");
-      }
-      if (!other || other->shape.kind == ShapeKind::Sphere) other = &b;
-    }
+    const auto pair = unmodeledPair(s);
+    if (!pair) return;
+    const BodyDef &b = s.bodies[pair->second], &other = s.bodies[pair->first];
+    for (const YAML::Node& n : nodes)
+      if (n.IsMap() && n["name"] && n["name"].Scalar() == b.name) fail(n, unmodeledPairMessage(other.name, b.name));
   }
 
   BodyDef readBody(const YAML::Node& n) {

@@ -470,6 +470,16 @@ EOF
 expect "a quaternion far from unit length is bad input at FILE:LINE:COL" 2 err "far_quaternion.yaml:5:18" check far_quaternion.yaml
 expect "--collisions soft_step on a 3D scene exits 2 naming 3D's methods" 2 err \
   "takes the collision methods auto, none, event and sequential" simulate "$TOP" --collisions soft_step
+cat >box_ball.yaml <<'EOF'
+dimensions: 3
+sim: {collisions: none}
+bodies:
+  - {name: floor, shape: {plane: {normal: [0, 0, 1]}}}
+  - {name: box, shape: {box: [1, 1, 1]}, position: [0, 0, 2]}
+  - {name: ball, shape: {sphere: 0.5}, position: [3, 0, 2]}
+EOF
+expect "--collisions that would let a box pass through a ball exits 2 naming the pair" 2 err \
+  "'ball' and 'box' would pass through each other" simulate box_ball.yaml --collisions sequential
 expect "--contact-hertz on a 3D scene exits 2: 3D has no soft_step" 2 err "has no soft_step" simulate "$TOP" --contact-hertz 60
 expect "--precision on a 3D scene exits 2: 3D has no soft_step" 2 err "--precision: " simulate "$TOP" --precision float
 expect "snapshot --impacts of a 3D scene where nothing meets exits 2" 2 err "has no impacts" snapshot "$TOP" --impacts -o snap3

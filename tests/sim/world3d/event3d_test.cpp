@@ -107,3 +107,50 @@ TEST_CASE("event named stops where a contact persists; under auto, sequential ta
   CHECK(automatic.bodies[0].v.norm() <= 1e-9);
   CHECK(automatic.bodies[0].x.z() == doctest::Approx(0.1).epsilon(sim::core::settings::kLinearSlop));
 }
+
+TEST_CASE("a pair touching and approaching strikes at once; one resting under gravity persists, never jitters") {
+  // no gravity: a ball on the floor moving into it bounces at t = 0, not 0.5 mm into the floor
+  World w = onFloor(CollisionMethod::Event, 1.0);
+  w.forces.gravity = Vec3::Zero();
+  Body ball = makeBody(makeSphere(0.1), 100.0);
+  ball.restitution = 1.0;
+  ball.x = Vec3(0, 0, 0.1), ball.v = Vec3(0, 0, -1);
+  w.bodies.push_back(ball);
+  w.advanceTo(0.01);
+  REQUIRE(w.impacts.size() == 1);
+  CHECK(w.impacts[0].t <= 1e-12);
+  CHECK(w.bodies[0].v.z() == doctest::Approx(1.0).epsilon(1e-12));
+  CHECK(w.bodies[0].x.z() == doctest::Approx(0.1 + 0.01).epsilon(1e-12));
+  // under gravity at rest on the floor: named event stops there, at the first step
+  World resting = onFloor(CollisionMethod::Event, 0.5);
+  Body still = makeBody(makeSphere(0.1), 100.0);
+  still.x = Vec3(0, 0, 0.1);
+  resting.bodies.push_back(still);
+  try {
+    resting.advanceTo(1.0);
+    FAIL("a ball at rest on the floor under event should persist");
+  } catch (const ContactPersists& e) {
+    CHECK(e.time <= resting.dt);
+  }
+}
+
+TEST_CASE("a box landing flat while it slides is stopped alike at every corner: no roll about its sliding axis") {
+  World w = onFloor(CollisionMethod::Event, 0.7, 0.05);
+  Body box = makeBody(makeBox(Vec3(0.4, 0.3, 0.2)), 50.0);
+  box.restitution = 0.7, box.friction = 0.05;
+  box.x = Vec3(0, 0, 0.6), box.v = Vec3(1, 0, 0);
+  w.bodies.push_back(box);
+  EnergyLedger3d ledger(w);
+  w.advanceTo(0.35, &ledger);
+  REQUIRE(w.impacts.size() == 4);
+  // friction against +x at the face's centre turns it about y alone
+  CHECK(std::abs(w.bodies[0].omega.x()) <= 1e-12);
+  CHECK(std::abs(w.bodies[0].omega.z()) <= 1e-12);
+  CHECK(std::abs(w.bodies[0].v.y()) <= 1e-12);
+  // the whole patch's cone: Σ|j_t| ≤ μ Σγ, and on so light a friction it slid on, so equal
+  double normal = 0.0, tangent = 0.0;
+  for (const ImpactRecord3& r : w.impacts) normal += r.impulse, tangent += r.tangentImpulse.norm();
+  CHECK(tangent == doctest::Approx(0.05 * normal).epsilon(1e-12));
+  CHECK(w.bodies[0].v.x() == doctest::Approx(1.0 - 0.05 * normal / w.bodies[0].mass).epsilon(1e-12));
+  CHECK(ledger.largestRise().amount <= 1e-12);
+}

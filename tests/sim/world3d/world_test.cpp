@@ -113,3 +113,31 @@ TEST_CASE("a step that is not positive is refused when the run starts") {
   World w = fixtures3d::freeBox(Integrator::Rk4, 0.0);
   CHECK_THROWS_AS(w.advanceTo(1.0), std::invalid_argument);
 }
+
+TEST_CASE("the grid finds every pair of spheres within the margin that testing every pair finds, in the same order") {
+  World w;
+  // 300 spheres of three sizes in a 2 m cube: crowded enough that many touch, some far apart
+  unsigned seed = 12345;
+  const auto uniform = [&seed] { return (seed = seed * 1103515245u + 12345u) % 100000 / 100000.0; };
+  for (int i = 0; i < 300; ++i) {
+    Body b = makeBody(makeSphere(0.05 + 0.05 * (i % 3)), 1.0);
+    b.x = Vec3(2 * uniform(), 2 * uniform(), 2 * uniform());
+    w.bodies.push_back(b);
+  }
+  // the grid, then every pair again once a sphere far away is past the reach of its keys
+  Body far = makeBody(makeSphere(0.1), 1.0);
+  far.x = Vec3(1e9, 0, 0);
+  for (const double margin : {0.0, 0.02, 0.01}) {
+    if (margin == 0.01) w.bodies.push_back(far);
+    std::vector<std::pair<int, int>> expected;
+    for (size_t i = 0; i < w.bodies.size(); ++i)
+      for (size_t j = i + 1; j < w.bodies.size(); ++j)
+        if ((w.bodies[i].x - w.bodies[j].x).norm() - w.bodies[i].shape.radius - w.bodies[j].shape.radius <= margin)
+          expected.emplace_back(static_cast<int>(i), static_cast<int>(j));
+    std::vector<std::pair<int, int>> found;
+    for (const Contact3& c : w.findContacts(margin)) found.emplace_back(c.a, c.b);
+    CAPTURE(margin);
+    REQUIRE(expected.size() > 100);
+    CHECK(found == expected);
+  }
+}

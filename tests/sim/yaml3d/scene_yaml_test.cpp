@@ -221,4 +221,19 @@ TEST_CASE("planes, restitution, friction and the collision methods of a 3D scene
                                  "1, 1]}}\n",
                                  kFile)
           .bodies.size() == 2);
+  // but two spheres may meet under auto without a plane, so a box beside them is refused too
+  EXPECT_SCENE_ERROR(
+      "dimensions: 3\nbodies:\n  - {name: a, shape: {sphere: 1}}\n  - {name: b, shape: {sphere: 1}, position: [3, 0, 0]}\n"
+      "  - {name: c, shape: {box: [1, 1, 1]}, position: [6, 0, 0]}\n",
+      5, 5, {"two spheres only", "'c' and 'b'"});
+  // a normal far from unit length in either direction comes out unit
+  for (const char* normal : {"[1e200, 0, 0]", "[1e-160, 0, 0]", "[3, 0, 4]"}) {
+    CAPTURE(normal);
+    const sim::scene3d::SceneDef s =
+        sim::yaml3d::loadSceneText(std::string("dimensions: 3\nbodies:\n  - {name: f, shape: {plane: {normal: ") + normal +
+                                       "}}}\n  - {name: b, shape: {sphere: 1}, position: [5, 0, 0]}\n",
+                                   kFile);
+    CHECK(s.planes[0].normal.norm() == doctest::Approx(1.0).epsilon(1e-15));
+    CHECK(s.planes[0].normal.x() > 0.5);
+  }
 }
