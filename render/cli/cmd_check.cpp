@@ -11,6 +11,7 @@
 #include "sim/world/energy_ledger.h"
 #include "sim/world3d/energy_ledger3d.h"
 #include "render/cli/lecture_files.h"
+#include "render/cli/output.h"
 #include "render/cli/run_progress.h"
 #include "render/cli/scene_options.h"
 #include "render/cli/space3d.h"
@@ -334,6 +335,7 @@ void addCheckCommand(CLI::App& app, int& exitCode) {
       ->check(CLI::Range(1, sim::core::settings::kMaxThreads));
   cmd->add_flag("--render", *render, "also plan every output the scene asks for (videos, posters, panels), drawing nothing");
   cmd->callback([files, say, output, render, threads, &exitCode] {
+    refusePrintedOutputs(*output, "", false, *files);
     OutputFile report(*output);
     exitCode = runInterruptible("check", [&] { return check(*files, *say, *render, *threads); });
     // an interrupted check publishes no report

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "render/cli/commands.h"
+#include "render/cli/golden_outputs.h"
 #include "render/cli/lecture_files.h"
 #include "render/cli/scene_options.h"
 #include "render/golden/golden_check.h"
@@ -71,6 +72,13 @@ std::vector<Case> casesOf(const std::vector<std::string>& arguments) {
   return cases;
 }
 
+// how the outputs name each case
+std::vector<GoldenCase> namesOf(const std::vector<Case>& cases) {
+  std::vector<GoldenCase> names;
+  for (const Case& c : cases) names.push_back({c.file, c.scene.model().variant, render::video::outputBase(c.scene.model())});
+  return names;
+}
+
 // the scene variant recorded as golden wants it into `dir`
 GoldenRun record(const Case& c, const std::string& dir) {
   const GoldenRun run = runGolden(c.scene.scene, c.scene.golden, goldenTimes(c.scene.scene, c.scene.golden), true);
@@ -88,6 +96,7 @@ std::string describeRecord(const GoldenRun& run, const std::string& dir) {
 
 int recordAll(const RecordCommand& o) {
   const std::vector<Case> cases = casesOf(o.scenes);
+  refuseRecordOutputs(namesOf(cases), o.output);
   for (const Case& c : cases) std::cout << describeRecord(record(c, o.output), o.output) << '\n';
   return kExitOk;
 }
@@ -99,6 +108,7 @@ std::string recordCommand(const Case& c, const std::string& dir) {
 
 int checkAll(const CheckCommand& o) {
   const std::vector<Case> cases = casesOf(o.scenes);
+  refuseCheckOutputs(namesOf(cases), o.golden, o.report, o.junit, o.update);
   // every record there before anything runs
   std::vector<GoldenRecord> records;
   for (const Case& c : cases) {

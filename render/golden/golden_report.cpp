@@ -17,7 +17,7 @@ namespace fs = std::filesystem;
 const auto escapeXml = render::page::escapeHtml;
 
 void writeReport(const std::vector<CaseResult>& results, const std::string& dir) {
-  render::jobs::StagedDirectory folder(dir);
+  render::jobs::StagedDirectory folder(dir, "golden report");
   const fs::path to = folder.path();
   std::ofstream html(to / "index.html");
   size_t failed = 0;
