@@ -1,5 +1,6 @@
 // `rigidreel expect`: `expect` entries from a run, ready to paste into the scene: the position,
 // angle and velocity (with ω) of each moving body at each time, the values as `check` will see them.
+#include <cmath>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -8,6 +9,7 @@
 #include "render/cli/commands.h"
 #include "render/cli/decimal_text.h"
 #include "render/cli/scene_options.h"
+#include "render/cli/yaml_scalar.h"
 #include "render/jobs/json_writer.h"
 #include "sim/scene/expect.h"
 
@@ -41,7 +43,8 @@ std::string pair(const std::vector<double>& v) { return "[" + formatNumber(v[0])
 
 int expect(const ExpectCommand& o) {
   if (o.is3d()) throw UsageError(o.scene + ": a 3D scene; expect takes 2D scenes for now");
-  if (!(o.tolerance >= 0.0)) throw UsageError("--tolerance: give zero or a positive number");
+  if (!(o.tolerance >= 0.0) || !std::isfinite(o.tolerance))
+    throw UsageError("--tolerance: give zero or a positive finite number, got " + formatNumber(o.tolerance));
   sim::scene::SceneDef def = o.load().model();
   const std::vector<double> at = o.at.empty() ? std::vector<double>{def.duration} : times(o.at, def.duration);
   // measured as `check` will run the scene with them pasted in: the scene's own entries stay, since
@@ -72,7 +75,7 @@ int expect(const ExpectCommand& o) {
         if (r.time == e.time && r.quantity == quantity) return r;
       throw std::logic_error("no result for " + quantity);
     };
-    std::cout << "  - {time: " << formatNumber(e.time) << ", body: " << e.body
+    std::cout << "  - {time: " << formatNumber(e.time) << ", body: " << yamlScalar(e.body)
               << ", position: " << pair(find(e.body + ".position").actual)
               << ", angle: " << formatNumber(find(e.body + ".angle").actual[0])
               << ", velocity: " << pair(find(e.body + ".velocity").actual)
