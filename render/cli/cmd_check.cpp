@@ -12,6 +12,7 @@
 #include "sim/world/energy_ledger.h"
 #include "sim/world3d/energy_ledger3d.h"
 #include "render/cli/lecture_files.h"
+#include "render/cli/output.h"
 #include "render/cli/run_progress.h"
 #include "render/cli/scene_options.h"
 #include "render/cli/space3d.h"
@@ -355,6 +356,7 @@ void addCheckCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--junit", o->junit, "also write a JUnit XML file: one testcase per scene variant, its failures its message");
   cmd->add_flag("--render", o->render, "also plan every output the scene asks for (videos, posters, panels), drawing nothing");
   cmd->callback([files, say, output, o, &exitCode] {
+    refusePrintedOutputs(*output, "", false, *files, o->junit);
     OutputFile report(*output);
     exitCode = runInterruptible("check", [&] { return check(*files, *say, *o); });
     // an interrupted check publishes no report

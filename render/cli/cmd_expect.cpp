@@ -1,6 +1,7 @@
 // `rigidreel expect`: `expect` entries from a run, ready to paste into the scene: the position,
 // angle (in 3D the orientation) and velocity (with ω) of each moving body at each time, the values
 // as `check` will see them, each marked `source: earlier_run`.
+#include <cmath>
 #include <functional>
 #include <iostream>
 #include <memory>
@@ -12,6 +13,7 @@
 #include "render/cli/scene_options.h"
 #include "render/cli/space3d.h"
 #include "render/cli/verbosity.h"
+#include "render/cli/yaml_scalar.h"
 #include "render/jobs/json_writer.h"
 #include "sim/scene/expect.h"
 #include "sim/scene3d/expect.h"
@@ -57,7 +59,8 @@ template <class Def, class Entry>
 int printEntries(const ExpectCommand& o, Def def, const std::vector<std::string>& keys,
                  const std::function<Entry(double, const std::string&)>& state,
                  const std::function<std::vector<sim::core::CheckResult>(Def&, std::string& how)>& run) {
-  if (!(o.tolerance >= 0.0)) throw UsageError("--tolerance: give zero or a positive number");
+  if (!(o.tolerance >= 0.0) || !std::isfinite(o.tolerance))
+    throw UsageError("--tolerance: give zero or a positive finite number, got " + formatNumber(o.tolerance));
   const std::vector<double> at = o.at.empty() ? std::vector<double>{def.duration} : times(o.at, def.duration);
   // measured as `check` will run the scene with them pasted in: the scene's own entries stay, since
   // the run stops at each entry's time
@@ -79,7 +82,7 @@ int printEntries(const ExpectCommand& o, Def def, const std::vector<std::string>
         if (r.time == e.time && r.quantity == quantity) return r;
       throw std::logic_error("no result for " + quantity);
     };
-    std::cout << "  - {time: " << formatNumber(e.time) << ", body: " << e.body;
+    std::cout << "  - {time: " << formatNumber(e.time) << ", body: " << yamlScalar(e.body);
     for (const std::string& key : keys) std::cout << ", " << key << ": " << shown(find(e.body + "." + key).actual);
     // a run's values, not closed forms: the lecture page lists them apart
     std::cout << ", tolerance: " << formatNumber(o.tolerance) << ", source: earlier_run}\n";

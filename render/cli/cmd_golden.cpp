@@ -10,6 +10,7 @@
 #include <variant>
 
 #include "render/cli/commands.h"
+#include "render/cli/golden_outputs.h"
 #include "render/cli/lecture_files.h"
 #include "render/cli/scene_options.h"
 #include "render/cli/space3d.h"
@@ -100,6 +101,14 @@ std::vector<Case> casesOf(const std::vector<std::string>& arguments) {
   return cases;
 }
 
+// how the outputs name each case
+std::vector<GoldenCase> namesOf(const std::vector<Case>& cases) {
+  std::vector<GoldenCase> names;
+  for (const Case& c : cases)
+    names.push_back({c.file, std::visit([](const auto& f) { return f.model().variant; }, c.scene), c.name()});
+  return names;
+}
+
 // the scene variant recorded as golden wants it into `dir`
 GoldenRun record(const Case& c, const std::string& dir) {
   const GoldenRun run = c.run(c.golden());
@@ -128,6 +137,7 @@ void describeContents(const GoldenRun& run) {
 
 int recordAll(const RecordCommand& o) {
   const std::vector<Case> cases = casesOf(o.scenes);
+  refuseRecordOutputs(namesOf(cases), o.output);
   const SilencedOutput quiet(o.quiet);
   for (const Case& c : cases) {
     const GoldenRun run = record(c, o.output);
@@ -144,6 +154,7 @@ std::string recordCommand(const Case& c, const std::string& dir) {
 
 int checkAll(const CheckCommand& o) {
   const std::vector<Case> cases = casesOf(o.scenes);
+  refuseCheckOutputs(namesOf(cases), o.golden, o.report, o.junit, o.update);
   // every record there before anything runs
   std::vector<GoldenRecord> records;
   for (const Case& c : cases) {

@@ -153,6 +153,7 @@ void printText(const sim::scene::SceneDef& def, const sim::world::World& w, cons
 }
 
 int simulate(const SimulateOptions& o) {
+  refusePrintedOutputs(o.output, o.trace, o.quiet, {o.scene});
   const SilencedOutput silenced(o.quiet);
   OutputFile output(o.output);
   if (o.is3d()) {

@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "render/cli/commands.h"
+#include "sim/yaml/path_name.h"
 #include "sim/yaml/scene_yaml.h"
 
 namespace {
@@ -21,6 +22,16 @@ std::string subcommandList(const CLI::App& app) {
   std::string list;
   for (const CLI::App* sub : subcommandsOf(app)) list += (list.empty() ? "" : ", ") + sub->get_name();
   return list;
+}
+
+// an error as the terminal shows it: each control character of a name the user gave (an ESC in
+// --variant) as \xNN, not sent raw; its line breaks kept
+std::string shown(const std::string& message) {
+  std::string out;
+  size_t start = 0;
+  for (size_t end; (end = message.find('\n', start)) != std::string::npos; start = end + 1)
+    out += sim::yaml::shownName(std::string_view(message).substr(start, end - start)) + '\n';
+  return out + sim::yaml::shownName(std::string_view(message).substr(start));
 }
 
 }  // namespace
@@ -59,13 +70,13 @@ int main(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? 0 : render::jobs::kExitBadInput;
   } catch (const sim::yaml::SceneError& e) {
-    std::cerr << e.what() << '\n';
+    std::cerr << shown(e.what()) << '\n';
     return render::jobs::kExitBadInput;
   } catch (const render::jobs::UsageError& e) {
-    std::cerr << "rigidreel: " << e.what() << '\n';
+    std::cerr << "rigidreel: " << shown(e.what()) << '\n';
     return render::jobs::kExitBadInput;
   } catch (const std::exception& e) {
-    std::cerr << "rigidreel: " << e.what() << '\n';
+    std::cerr << "rigidreel: " << shown(e.what()) << '\n';
     return render::jobs::kExitFailure;
   }
   // what was printed reaches its file only now, for the most part: a full disk (/dev/full), a

@@ -1,5 +1,8 @@
 #include "render/cli/output.h"
 
+#include <ext/stdio_sync_filebuf.h>
+
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <regex>
@@ -7,6 +10,7 @@
 #include "render/cli/commands.h"
 #include "render/jobs/interrupt.h"
 #include "render/jobs/json_writer.h"
+#include "render/jobs/output_rules.h"
 #include "render/scene/render_def.h"
 #include "render/video/output_names.h"
 
@@ -51,9 +55,20 @@ bool namesStandardOutput(const std::string& path) {
 
 void refuseInputAsOutput(const std::string& output, const std::string& input, const std::string& option,
                          const std::string& what) {
-  std::error_code error;
-  if (!output.empty() && !input.empty() && std::filesystem::equivalent(output, input, error))
-    throw UsageError(option + ": " + output + " is " + what + " this run reads; choose another path to write");
+  refuseOutputs({{output, option}}, {{input, what}});
+}
+
+void refusePrintedOutputs(const std::string& output, const std::string& trace, bool quiet,
+                          const std::vector<std::string>& scenes, const std::string& junit) {
+  std::vector<PlannedOutput> outputs;
+  // what standard output is redirected to (> FILE) is written too: not the trace, not a scene
+  if (output.empty() && !quiet) outputs.push_back({"/dev/stdout", "standard output"});
+  outputs.push_back({output, "-o"});
+  if (!namesStandardOutput(trace)) outputs.push_back({trace, "--trace"});
+  outputs.push_back({junit, "--junit"});
+  std::vector<RunInput> inputs;
+  for (const std::string& s : scenes) inputs.push_back({s});
+  refuseOutputs(outputs, inputs);
 }
 
 std::string videoDiverged(const std::string& file, const render::video::VariantDiverged& d) {
@@ -79,7 +94,11 @@ std::unique_ptr<render::jobs::AtomicFile> openTrace(const std::string& path) {
 
 std::ostream& traceStream(const std::unique_ptr<render::jobs::AtomicFile>& file) {
   if (file) return file->stream();
-  return std::cout;
+  // standard output itself, not std::cout, which -q silences and -o sends to a file; unbuffered
+  // through C's stdout, as std::cout is, so what both print stays in order
+  static __gnu_cxx::stdio_sync_filebuf<char> buffer(stdout);
+  static std::ostream standardOutput(&buffer);
+  return standardOutput;
 }
 
 }  // namespace render::cli

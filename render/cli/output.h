@@ -4,6 +4,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "render/jobs/atomic_file.h"
 #include "render/jobs/exit_status.h"
@@ -32,6 +33,12 @@ bool namesStandardOutput(const std::string& path);
 // run: throws UsageError naming the option and what the input is ("the scene file")
 void refuseInputAsOutput(const std::string& output, const std::string& input, const std::string& option,
                          const std::string& what = "the scene file");
+
+// the one rule (render/jobs/output_rules.h) for the commands that print (simulate, check): -o,
+// --trace and check's --junit neither a scene nor each other nor where standard output is
+// redirected; throws UsageError
+void refusePrintedOutputs(const std::string& output, const std::string& trace, bool quiet,
+                          const std::vector<std::string>& scenes, const std::string& junit = {});
 
 // "<file>: the simulation diverged at t = …: body '…' has a non-finite state; try a smaller step
 // (--dt …) or another integrator (--integrator rk4)", a line, as `render` says it

@@ -49,7 +49,7 @@ std::string rigidreelVersion() { return RIGIDREEL_VERSION; }
 
 void writeRecord(const GoldenRun& run, const RecordInfo& info, const std::string& dir) {
   fs::create_directories(dir);
-  render::jobs::StagedDirectory folder((fs::path(dir) / run.name).string());
+  render::jobs::StagedDirectory folder((fs::path(dir) / run.name).string(), "golden record");
   const fs::path to = folder.path();
   writeText(to / "manifest.json", manifestJson(run, info));
   std::ostringstream states;

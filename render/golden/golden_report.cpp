@@ -7,17 +7,21 @@
 #include "render/draw/png_io.h"
 #include "render/jobs/atomic_file.h"
 #include "render/jobs/json_writer.h"
+#include "render/jobs/xml_text.h"
 #include "render/page/page.h"
 
 namespace render::golden {
 
 namespace fs = std::filesystem;
 
-// (&#39; for ' is XML's too)
-const auto escapeXml = render::page::escapeHtml;
+using render::jobs::escapeXml;
+namespace {
+// a path in the report as an attribute takes it: URL-encoded ('#', '?', '%'), then escaped
+std::string srcOf(const std::string& path) { return escapeXml(render::page::urlOf(path)); }
+}  // namespace
 
 void writeReport(const std::vector<CaseResult>& results, const std::string& dir) {
-  render::jobs::StagedDirectory folder(dir);
+  render::jobs::StagedDirectory folder(dir, "golden report");
   const fs::path to = folder.path();
   std::ofstream html(to / "index.html");
   size_t failed = 0;
@@ -48,7 +52,7 @@ void writeReport(const std::vector<CaseResult>& results, const std::string& dir)
       const char* cls = l.status == LevelResult::Status::Failed    ? "failed"
                         : l.status == LevelResult::Status::Skipped ? "skipped"
                                                                    : "ok";
-      html << "<tr><td><a href=\"#" << escapeXml(c.name) << "\">" << escapeXml(c.name) << "</a></td><td>" << levelName(l.level)
+      html << "<tr><td><a href=\"#" << srcOf(c.name) << "\">" << escapeXml(c.name) << "</a></td><td>" << levelName(l.level)
            << "</td><td class=\"" << cls << "\">" << escapeXml(l.message) << "</td></tr>\n";
     }
   html << "</table>\n";
@@ -66,7 +70,7 @@ void writeReport(const std::vector<CaseResult>& results, const std::string& dir)
         html << "<h3>" << escapeXml(f.name) << " (t = " << render::jobs::formatNumber(f.t) << " s)</h3>\n<p>"
              << escapeXml(f.message) << "</p>\n<div class=\"frames\">\n";
         for (const char* kind : {"expected", "actual", "diff"})
-          html << "<figure><img src=\"" << escapeXml(c.name + "/" + f.name + "-" + kind + ".png") << "\" alt=\"" << kind
+          html << "<figure><img src=\"" << srcOf(c.name + "/" + f.name + "-" + kind + ".png") << "\" alt=\"" << kind
                << " frame of " << escapeXml(c.name) << " at t = " << render::jobs::formatNumber(f.t) << "\"><figcaption>" << kind
                << (std::string(kind) == "diff" ? ": pixels off by more than the tolerance in red" : "")
                << "</figcaption></figure>\n";

@@ -76,6 +76,8 @@ GoldenRun runGolden(const render::scene::Scene& original, const GoldenDef& golde
     pictured[i] = std::binary_search(times.frames.begin(), times.frames.end(), instants[i]);
   run.checkpoints.resize(instants.size());
   std::vector<std::optional<GoldenFrame>> frames(instants.size());
+  // frames named with as many digits as tell every two apart (0.5 and 0.5000004 are two files)
+  const std::vector<std::string> names = render::video::timesForNames(times.frames);
   render::frame::SceneRun sceneRun(scene, camera, survey, gl.get(), &text);
   sceneRun.shotsAt(instants, pictured, [&](size_t i, const render::frame::SceneRun::Shot& shot) {
     Checkpoint& c = run.checkpoints[i];
@@ -83,7 +85,10 @@ GoldenRun runGolden(const render::scene::Scene& original, const GoldenDef& golde
     c.hash = sim::world::stateHash(shot.world);
     for (size_t b = 0; b < shot.world.bodies.size(); ++b) c.bodies.push_back(sampleOf(shot.world, b));
     if (pictured[i])
-      frames[i] = GoldenFrame{instants[i], frameName(instants[i]), drawnFrame(shot.drawList, style, camera), shot.frame};
+      frames[i] = GoldenFrame{
+          instants[i],
+          "frame-t" + names[std::lower_bound(times.frames.begin(), times.frames.end(), instants[i]) - times.frames.begin()],
+          drawnFrame(shot.drawList, style, camera), shot.frame};
   });
   for (std::optional<GoldenFrame>& f : frames)
     if (f) run.frames.push_back(std::move(*f));

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "render/jobs/interrupt.h"
+#include "render/jobs/output_rules.h"
 #include "render/jobs/stale_parts.h"
 
 namespace render::jobs {
@@ -78,17 +79,19 @@ void AtomicFile::commit() {
   committed_ = true;
 }
 
-StagedDirectory::StagedDirectory(const std::string& final) : final_(final) {
-  const fs::path path(final);
+StagedDirectory::StagedDirectory(const std::string& final, const std::string& writer)
+    : final_(finalTarget(withoutTrailingSlash(final))) {
+  const fs::path path(final_);
   // ".<name>.part-<pid>", appended piece by piece: g++ 12 warns of overlapping copies in "." + name
   std::string name = ".";
-  name += path.filename().string();
+  name += partPrefix(path.filename().string());
   name += ".part-" + std::to_string(::getpid());
   staging_ = (path.parent_path() / name).string();
   // the folders of runs killed outright (SIGKILL) before they could remove them
-  removeStaleParts(final);
+  removeStaleParts(final_);
   fs::remove_all(staging_);
   fs::create_directories(staging_);
+  if (!writer.empty()) std::ofstream(fs::path(staging_) / kFolderMarker) << writer << '\n';
 }
 
 StagedDirectory::~StagedDirectory() {

@@ -38,10 +38,11 @@ bool writtenThrough(const std::string& path);
 
 // a directory filled under a temporary name (".<name>.part-<pid>" beside it) and swapped with the
 // old one when complete, atomically, so that two runs publishing the same folder at once both
-// succeed and it is always one run's whole folder (video frames as PNG)
+// succeed and it is always one run's whole folder (video frames as PNG). A symlink's target is the
+// folder replaced (the link kept); with a `writer`, the folder carries its marker (output_rules.h)
 class StagedDirectory {
  public:
-  explicit StagedDirectory(const std::string& final);
+  explicit StagedDirectory(const std::string& final, const std::string& writer = "");
   ~StagedDirectory();
   StagedDirectory(const StagedDirectory&) = delete;
   StagedDirectory& operator=(const StagedDirectory&) = delete;

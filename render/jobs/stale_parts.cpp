@@ -29,7 +29,16 @@ bool ended(pid_t pid) { return pid != ::getpid() && ::kill(pid, 0) != 0 && errno
 
 }  // namespace
 
-std::string partName(const std::string& path) { return path + ".part-" + std::to_string(::getpid()); }
+std::string partPrefix(const std::string& name) {
+  // 255 bytes a component, less a leading ".", ".part-" and a process id of up to 10 digits
+  constexpr size_t kMaxPrefix = 255 - 1 - 6 - 10;
+  return name.substr(0, kMaxPrefix);
+}
+
+std::string partName(const std::string& path) {
+  const fs::path p(path);
+  return (p.parent_path() / partPrefix(p.filename().string())).string() + ".part-" + std::to_string(::getpid());
+}
 
 void removeStaleParts(const std::string& path) {
   const fs::path p(path);
@@ -41,8 +50,8 @@ void removeStaleParts(const std::string& path) {
     const std::string file = it->path().filename().string();
     std::string_view entry = file;
     if (entry.starts_with('.')) entry.remove_prefix(1);
-    pid_t owner = partOwner(entry, name);
-    if (!owner) owner = partOwner(entry, stem);
+    pid_t owner = partOwner(entry, partPrefix(name));
+    if (!owner) owner = partOwner(entry, partPrefix(stem));
     if (owner > 0 && ended(owner)) stale.push_back(it->path());
   }
   // best effort: a file another run removes first, or one we may not remove, is left to it

@@ -17,6 +17,7 @@
 #include "render/jobs/exit_status.h"
 #include "render/jobs/read_limits.h"
 #include "render/jobs/regular_file.h"
+#include "render/jobs/xml_text.h"
 
 namespace render::page {
 using namespace render::jobs;
@@ -63,10 +64,19 @@ std::string fileNumber(const std::string& file) {
   return stem.substr(0, end);
 }
 
-// an id for a scene's section: letters, digits, '-' and '_' (HTML ids have no spaces)
+// an id for a scene's section, one per name: ASCII letters, digits, '-' and '_' as they are, every
+// other byte as ".XX" (HTML ids have no spaces; "Stoß" and "Stoä" differ)
 std::string sectionId(const std::string& scene) {
   std::string id = "scene-";
-  for (unsigned char c : scene) id += std::isalnum(c) || c == '-' || c == '_' ? static_cast<char>(c) : '-';
+  for (unsigned char c : scene) {
+    if (std::isalnum(c) || c == '-' || c == '_') {
+      id += static_cast<char>(c);
+      continue;
+    }
+    char hex[4];
+    std::snprintf(hex, sizeof hex, ".%02X", c);
+    id += hex;
+  }
   return id;
 }
 
@@ -228,18 +238,7 @@ void writeSection(std::ostream& h, const PageScene& s) {
 
 }  // namespace
 
-std::string escapeHtml(const std::string& text) {
-  std::string out;
-  for (char c : text) switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c;
-    }
-  return out;
-}
+std::string escapeHtml(const std::string& text) { return render::jobs::escapeXml(text); }
 
 std::string urlOf(const std::string& path) {
   std::string out;

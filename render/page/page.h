@@ -48,7 +48,8 @@ void writePackTitle(const std::string& dir, const std::string& title);
 // holds no scenes
 size_t writePage(const std::string& dir);
 
-// text for HTML: & < > " ' escaped
+// text for HTML: & < > " ' escaped, control characters and bytes that are not UTF-8 replaced
+// (render/jobs/xml_text.h)
 std::string escapeHtml(const std::string& text);
 // a relative URL of a path: each byte outside [A-Za-z0-9-._~/] percent-encoded
 std::string urlOf(const std::string& path);
