@@ -58,8 +58,8 @@ void refuseInputAsOutput(const std::string& output, const std::string& input, co
   refuseOutputs({{output, option}}, {{input, what}});
 }
 
-void refusePrintedOutputs(const std::string& output, const std::string& trace, bool quiet,
-                          const std::vector<std::string>& scenes, const std::string& junit) {
+void refusePrintedOutputs(const std::string& output, const std::string& trace, bool quiet, const std::vector<std::string>& scenes,
+                          const std::string& junit) {
   std::vector<PlannedOutput> outputs;
   // what standard output is redirected to (> FILE) is written too: not the trace, not a scene
   if (output.empty() && !quiet) outputs.push_back({"/dev/stdout", "standard output"});

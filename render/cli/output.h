@@ -37,8 +37,8 @@ void refuseInputAsOutput(const std::string& output, const std::string& input, co
 // the one rule (render/jobs/output_rules.h) for the commands that print (simulate, check): -o,
 // --trace and check's --junit neither a scene nor each other nor where standard output is
 // redirected; throws UsageError
-void refusePrintedOutputs(const std::string& output, const std::string& trace, bool quiet,
-                          const std::vector<std::string>& scenes, const std::string& junit = {});
+void refusePrintedOutputs(const std::string& output, const std::string& trace, bool quiet, const std::vector<std::string>& scenes,
+                          const std::string& junit = {});
 
 // "<file>: the simulation diverged at t = …: body '…' has a non-finite state; try a smaller step
 // (--dt …) or another integrator (--integrator rk4)", a line, as `render` says it
