@@ -181,7 +181,9 @@ class EventStepper3 final : public Method3 {
     // of every pair against them stays a distance, not a motion of every body
     States atHorizon = motion(world, from, start, h, span);
     double movedTo = span;
-    for (const auto& [a, b] : candidatePairs(world)) {
+    for (const std::pair<int, int>& pair : candidatePairs(world)) {
+      // (named, not bound: a lambda may not capture a structured binding before C++20's clang 16)
+      const int a = pair.first, b = pair.second;
       const auto g = [&](double tau) { return gap(world, a, b, motion(world, from, start, h, tau)); };
       if (movedTo != horizon) atHorizon = motion(world, from, start, h, horizon), movedTo = horizon;
       // only a pair that overlaps by the earliest impact found so far meets before it
