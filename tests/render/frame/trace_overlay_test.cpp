@@ -162,6 +162,8 @@ TEST_CASE("--overlay: a body of theirs out of a fixed camera's frame has an arro
   CHECK(head.y() < 40.0);
   // in the frame at t = 0 both are in it: no arrow
   SceneRun fresh(over, camera, survey);
-  for (const DrawList::Call& c : fresh.drawListAt(0.0).calls())
+  // (the list kept: a range-for over a temporary's calls() would read it after its end)
+  const DrawList at0 = fresh.drawListAt(0.0);
+  for (const DrawList::Call& c : at0.calls())
     CHECK_FALSE((c.kind == DrawList::Kind::Arrow && c.style.role == Role::Overlay));
 }
