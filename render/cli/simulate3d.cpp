@@ -116,7 +116,8 @@ void printText(const sim::scene3d::SceneDef& def, const World& w, const EnergyLe
 std::string divergedMessage(const std::string& file, const sim::scene3d::SceneDef& def, const Diverged& d) {
   return file + ": the simulation diverged at t = " + formatNumber(d.time) + ": body '" + def.bodies[d.body].name +
          "' has a non-finite state; try a smaller step (--dt " + formatNumber(def.dt / 4) +
-         ") or another integrator (--integrator splitting)";
+         ") or another integrator (--integrator " +
+         (def.integrator == sim::world3d::Integrator::Splitting ? "rk4" : "splitting") + ")";
 }
 
 std::string contactPersistsMessage(const sim::scene3d::SceneDef& def, const ContactPersists& p) {

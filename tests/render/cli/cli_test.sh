@@ -480,6 +480,14 @@ bodies:
 EOF
 expect "--collisions that would let a box pass through a ball exits 2 naming the pair" 2 err \
   "'ball' and 'box' would pass through each other" simulate box_ball.yaml --collisions sequential
+cat >diverging3d.yaml <<'EOF'
+dimensions: 3
+duration: 1
+bodies:
+  - {name: b, shape: {sphere: 1}, mass: 1e300, velocity: [0, 0, -1e200], angular_velocity: [1e200, 1e200, 0]}
+EOF
+expect "a 3D run that diverges under the splitting suggests another integrator than the one it ran" 1 out \
+  "another integrator (--integrator rk4)" check diverging3d.yaml
 expect "--contact-hertz on a 3D scene exits 2: 3D has no soft_step" 2 err "has no soft_step" simulate "$TOP" --contact-hertz 60
 expect "--precision on a 3D scene exits 2: 3D has no soft_step" 2 err "--precision: " simulate "$TOP" --precision float
 expect "snapshot --impacts of a 3D scene where nothing meets exits 2" 2 err "has no impacts" snapshot "$TOP" --impacts -o snap3
