@@ -164,6 +164,5 @@ TEST_CASE("--overlay: a body of theirs out of a fixed camera's frame has an arro
   SceneRun fresh(over, camera, survey);
   // (the list kept: a range-for over a temporary's calls() would read it after its end)
   const DrawList at0 = fresh.drawListAt(0.0);
-  for (const DrawList::Call& c : at0.calls())
-    CHECK_FALSE((c.kind == DrawList::Kind::Arrow && c.style.role == Role::Overlay));
+  for (const DrawList::Call& c : at0.calls()) CHECK_FALSE((c.kind == DrawList::Kind::Arrow && c.style.role == Role::Overlay));
 }
