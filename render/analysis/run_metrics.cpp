@@ -13,16 +13,21 @@ using namespace sim::world;
 namespace {
 
 // the extent of a shape along a direction: [min, max] of d·r over its points
-std::pair<double, double> extent(const Body& b, const Vec2& d) {
-  const Pose p = b.pose();
-  if (b.shape.kind == ShapeKind::Circle) return {d.dot(b.x) - b.shape.radius, d.dot(b.x) + b.shape.radius};
+std::pair<double, double> extent(const Shape& shape, const Pose& p, const Vec2& d) {
+  if (shape.kind == ShapeKind::Circle) return {d.dot(p.x) - shape.radius, d.dot(p.x) + shape.radius};
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  for (const Vec2& v : b.shape.vertices) {
+  for (const Vec2& v : shape.vertices) {
     const double s = d.dot(p.toWorld(v));
     lo = std::min(lo, s), hi = std::max(hi, s);
   }
+  // a body of parts: its parts' together
+  for (const ShapePart& part : shape.parts) {
+    const auto [partLo, partHi] = extent(part.shape, p.then(part.pose), d);
+    lo = std::min(lo, partLo), hi = std::max(hi, partHi);
+  }
   return {lo, hi};
 }
+std::pair<double, double> extent(const Body& b, const Vec2& d) { return extent(b.shape, b.pose(), d); }
 
 // a pair of bodies apart at the start, and the axis that separated them (from b toward a)
 struct Watched {

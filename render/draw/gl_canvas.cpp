@@ -143,7 +143,8 @@ bool GlCanvas::alike(const Color& a, const Color& b) {
 
 Color GlCanvas::fillColor(const Pen& s) const {
   switch (s.role) {
-    case Role::Body: return style_.body(s.body).mixed(kWhite, 0.35);
+    case Role::Body:
+    case Role::BodyPart: return style_.body(s.body).mixed(kWhite, 0.35);
     case Role::StaticBody: return style_.body(s.body).mixed(kWhite, 0.6);
     case Role::RotationalBar: return style_.body(s.body).mixed(kWhite, 0.45);
     // a panel lets what is behind it show a little
@@ -160,6 +161,7 @@ Color GlCanvas::strokeColor(const Pen& s) const {
     return style_.arrows[s.color];
   switch (s.role) {
     case Role::Body:
+    case Role::BodyEdge:
     case Role::BodyAxis: return style_.body(s.body).mixed(kBlack, 0.35);
     case Role::StaticBody: return style_.body(s.body).mixed(kBlack, 0.25);
     // a trail is its body's color (the trail color's for none), as the bars are
@@ -175,6 +177,11 @@ void GlCanvas::polygon(const std::vector<Vec2>& vertices, const Pen& s) {
   enter(s.role);
   // bars and panels are areas without an outline
   if (info(s.role).area) {
+    if (s.role == Role::BodyPart) {
+      Bounds extent;
+      for (const Vec2& v : vertices) extent.add(v);
+      countBody(extent.size().maxCoeff());
+    }
     beginPrimitive(fillColor(s), s.opacity, false, false);
     fillConvex(vertices);
     return;
@@ -203,6 +210,13 @@ void GlCanvas::polygon(const std::vector<Vec2>& vertices, const Pen& s) {
 
 void GlCanvas::circle(const Vec2& center, double radius, const Pen& s) {
   enter(s.role);
+  // a part of a body made of parts: filled; its outline comes in pieces (Role::BodyEdge)
+  if (s.role == Role::BodyPart) {
+    countBody(2.0 * radius);
+    beginPrimitive(fillColor(s), s.opacity, false, false);
+    fillDisc(center, radius);
+    return;
+  }
   const bool solid = s.role == Role::Body || s.role == Role::StaticBody;
   if (s.role == Role::Body) countBody(2.0 * radius);
   if (solid) {
@@ -253,6 +267,24 @@ void GlCanvas::point(const Vec2& p, const Pen& s) {
   const bool many = manyDotRadius_ > 0.0;
   const double tolerance = many ? 0.25 : 0.05;
   switch (s.role) {
+    case Role::CenterOfMass: {
+      // the quartered disc: two opposite quarters in the role's color, two in the background
+      const double r = 5.0 * w * px_;
+      beginPrimitive(style_.background, s.opacity, false, false);
+      fillDisc(p, r, tolerance);
+      beginPrimitive(strokeColor(s), s.opacity, false, false);
+      for (int quarter : {0, 2}) {
+        std::vector<Vec2> fan{p};
+        for (int k = 0; k <= 8; ++k) {
+          const double a = 0.5 * std::numbers::pi * (quarter + k / 8.0);
+          fan.push_back(p + r * Vec2(std::cos(a), std::sin(a)));
+        }
+        fillConvex(fan);
+      }
+      beginPrimitive(strokeColor(s), s.opacity);
+      ring(p, r, w);
+      break;
+    }
     case Role::IncidentVertex:
       // a ring, so the vertex itself stays visible inside it
       beginPrimitive(strokeColor(s), s.opacity);

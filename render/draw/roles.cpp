@@ -27,6 +27,8 @@ Role fromPhysics(sim::debug_draw::DrawRole role) {
     case DrawRole::ReferenceEdge: return Role::ReferenceEdge;
     case DrawRole::IncidentVertex: return Role::IncidentVertex;
     case DrawRole::Label: return Role::Label;
+    case DrawRole::BodyPart: return Role::BodyPart;
+    case DrawRole::BodyEdge: return Role::BodyEdge;
   }
   return Role::Label;
 }

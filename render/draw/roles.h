@@ -52,8 +52,13 @@ enum class Role {
   // a contact's forces on a body (arrows: show: normal_force, friction)
   NormalForce,  // N n̂ at the pair's contact: an arrow
   Friction,     // the friction force along the surface: an arrow
+  // a body made of parts (sim::debug_draw::DrawRole): its parts filled, its outline in pieces
+  BodyPart,
+  BodyEdge,
+  // a body's center of mass: the quartered disc (render: {centers: true})
+  CenterOfMass,
 };
-inline constexpr size_t kRoleCount = static_cast<size_t>(Role::Friction) + 1;
+inline constexpr size_t kRoleCount = static_cast<size_t>(Role::CenterOfMass) + 1;
 
 struct RoleInfo {
   Role role;
@@ -105,6 +110,9 @@ inline constexpr std::array<RoleInfo, kRoleCount> kRoles{{
     // Okabe and Ito's sky blue and reddish purple, apart from the impulse's blue and the force's orange
     {Role::NormalForce, "NormalForce", "normal_force", "#56b4e9", 1.5, false},
     {Role::Friction, "Friction", "friction", "#cc79a7", 1.5, false},
+    {Role::BodyPart, "BodyPart", "", "", 1.0, true},
+    {Role::BodyEdge, "BodyEdge", "", "", 1.0, false},
+    {Role::CenterOfMass, "CenterOfMass", "center", "#1f1f1f", 1.0, false},
 }};
 
 constexpr const RoleInfo& info(Role role) { return kRoles[static_cast<size_t>(role)]; }

@@ -158,6 +158,10 @@ void FramePainter::paint(const sim::world::World& world, const History& history,
       // a velocity shorter than a pixel has no arrow to show
       if (!b.isStatic && arrow.norm() > px) draw.arrow(b.x, b.x + arrow, {Role::Velocity, static_cast<int>(i), 1.0});
     }
+  // the centers of mass, over the bodies and their arrows' tails
+  if (r.centers)
+    for (size_t i = 0; i < world.bodies.size(); ++i)
+      if (!world.bodies[i].isStatic) draw.point(world.bodies[i].x, {Role::CenterOfMass, static_cast<int>(i), 1.0});
   arrows_.draw(world, history, draw);
   // another run's bodies over ours, past the placer: the labels go where they would without them
   if (r.overlay) drawTraceOverlay(def_, *r.overlay, world, camera_, target);
@@ -206,6 +210,41 @@ double FramePainter::manyDotRadiusPx(const sim::world::World& world) const {
   return std::min(usual, kManyDotFraction * widths[widths.size() / 2] / camera_.pixelSize());
 }
 
+namespace {
+
+// whether a point in a convex shape's own coordinates lies inside it, whichever way its vertices wind
+bool insideConvex(const sim::core::Shape& shape, const Vec2& local) {
+  if (shape.kind == sim::core::ShapeKind::Circle) return local.norm() <= shape.radius;
+  const std::vector<Vec2>& v = shape.vertices;
+  double winding = 0.0;
+  for (size_t k = 0; k < v.size(); ++k) winding += v[k].x() * v[(k + 1) % v.size()].y() - v[(k + 1) % v.size()].x() * v[k].y();
+  for (size_t k = 0; k < v.size(); ++k) {
+    const Vec2 e = v[(k + 1) % v.size()] - v[k];
+    if (winding * (e.x() * (local.y() - v[k].y()) - e.y() * (local.x() - v[k].x())) < 0.0) return false;
+  }
+  return true;
+}
+
+// whether a point in a body's coordinates lies inside its shape (a body of parts: inside one of them)
+bool insideShape(const sim::core::Shape& shape, const Vec2& local) {
+  if (shape.kind != sim::core::ShapeKind::Compound) return insideConvex(shape, local);
+  for (const sim::core::ShapePart& part : shape.parts)
+    if (insideConvex(part.shape, part.pose.toBody(local))) return true;
+  return false;
+}
+
+Vec2 labelAnchor(const sim::core::Body& b) {
+  if (b.shape.kind != sim::core::ShapeKind::Compound) return b.x;
+  // a body of parts: the middle of its largest part (its center of mass may lie off the body, as an
+  // L-shaped block's does, or under its center-of-mass mark)
+  const sim::core::ShapePart* largest = &b.shape.parts.front();
+  for (const sim::core::ShapePart& part : b.shape.parts)
+    if (sim::core::areaProperties(part.shape).area > sim::core::areaProperties(largest->shape).area) largest = &part;
+  return b.pose().toWorld(largest->pose.x);
+}
+
+}  // namespace
+
 bool FramePainter::labelFits(const sim::core::Body& b, const std::string& label) const {
   // the label's box, centered on the body, in world units, at the frame's font size
   const int size = fontSizeFor(def_.render, camera_.heightPx());
@@ -214,22 +253,8 @@ bool FramePainter::labelFits(const sim::core::Body& b, const std::string& label)
   const double halfHeight = 0.5 * lineHeightPx(size) * px;
   const sim::core::Pose pose = b.pose();
   for (const Vec2& corner :
-       {Vec2(-halfWidth, -halfHeight), Vec2(halfWidth, -halfHeight), Vec2(halfWidth, halfHeight), Vec2(-halfWidth, halfHeight)}) {
-    const Vec2 at = b.x + corner;
-    if (b.shape.kind == sim::core::ShapeKind::Circle) {
-      if ((at - b.x).norm() > b.shape.radius) return false;
-      continue;
-    }
-    // inside a convex polygon: on the inner side of every edge, whichever way its vertices wind
-    const std::vector<Vec2>& v = b.shape.vertices;
-    const Vec2 local = pose.toBody(at);
-    double winding = 0.0;
-    for (size_t k = 0; k < v.size(); ++k) winding += v[k].x() * v[(k + 1) % v.size()].y() - v[(k + 1) % v.size()].x() * v[k].y();
-    for (size_t k = 0; k < v.size(); ++k) {
-      const Vec2 e = v[(k + 1) % v.size()] - v[k];
-      if (winding * (e.x() * (local.y() - v[k].y()) - e.y() * (local.x() - v[k].x())) < 0.0) return false;
-    }
-  }
+       {Vec2(-halfWidth, -halfHeight), Vec2(halfWidth, -halfHeight), Vec2(halfWidth, halfHeight), Vec2(-halfWidth, halfHeight)})
+    if (!insideShape(b.shape, pose.toBody(labelAnchor(b) + corner))) return false;
   return true;
 }
 
@@ -243,14 +268,14 @@ void FramePainter::paintLabels(const sim::world::World& world, LabelPlacer& draw
     const sim::core::Body& b = world.bodies[i];
     const render::scene::BodyLook& look = r.bodies[i];
     // a half-plane has no middle to write on
-    const bool bounded = b.shape.kind == sim::core::ShapeKind::Polygon || b.shape.kind == sim::core::ShapeKind::Circle;
+    const bool bounded = b.shape.kind != sim::core::ShapeKind::Plane;
     if (look.label.empty() || !bounded) continue;
     const Pen pen{Role::Label, static_cast<int>(i), 1.0};
     if (!r.labelsAuto) {
-      draw.label(b.x, Vec2::Zero(), look.label, pen);
+      draw.label(labelAnchor(b), Vec2::Zero(), look.label, pen);
     } else if (few || labelFits(b, look.label)) {
-      if (look.named) draw.label(b.x, Vec2::Zero(), look.label, pen);
-      else draw.labelNearby(b.x, Vec2::Zero(), look.label, pen);
+      if (look.named) draw.label(labelAnchor(b), Vec2::Zero(), look.label, pen);
+      else draw.labelNearby(labelAnchor(b), Vec2::Zero(), look.label, pen);
     } else {
       ++unfit;
     }

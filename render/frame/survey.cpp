@@ -8,6 +8,7 @@
 #include "render/frame/caption.h"
 #include "render/frame/contact_forces.h"
 #include "render/frame/energy_panel.h"
+#include "sim/collision/collide.h"
 #include "render/frame/point_forces.h"
 #include "render/jobs/interrupt.h"
 #include "render/jobs/json_writer.h"
@@ -69,6 +70,12 @@ Bounds bodyBounds(const sim::core::Body& b) {
       box.add(b.x - Vec2(b.shape.radius, b.shape.radius));
       box.add(b.x + Vec2(b.shape.radius, b.shape.radius));
       break;
+    case sim::core::ShapeKind::Compound: {
+      const sim::collision::Aabb parts = sim::collision::bounds(b.shape, b.pose());
+      box.add(parts.lower);
+      box.add(parts.upper);
+      break;
+    }
     default:
       // unbounded shapes (a half-plane): the point that anchors them should be in view
       box.add(b.x);

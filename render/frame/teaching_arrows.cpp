@@ -40,6 +40,7 @@ Role roleOf(Show show) {
     case Show::Momentum: return Role::Momentum;
     case Show::NormalForce: return Role::NormalForce;
     case Show::Friction: return Role::Friction;
+    case Show::Center: return Role::CenterOfMass;
   }
   return Role::Velocity;
 }
@@ -93,6 +94,7 @@ std::string TeachingArrows::defaultLabel(Show show) {
     case Show::Momentum: return "p";
     case Show::NormalForce: return "N";
     case Show::Friction: return "F_f";
+    case Show::Center: return "c";
   }
   return "";
 }
@@ -194,6 +196,11 @@ void TeachingArrows::drawOne(const Arrow& a, int index, const sim::world::World&
       draw.label(b.x + length * y, y, "y_b", text);
       break;
     }
+    case Show::Center:
+      // the center of mass, wherever `at` is: the quartered disc, labeled out from it
+      draw.point(b.x, style);
+      label(a, vectorText("", b.x, "m", lengthFloor_), b.x, Vec2(1.0, 1.0).normalized(), draw);
+      break;
     case Show::Path: {
       History::drawPath(history.pointPath(a.path), 1.5 * px_, style, draw);
       draw.point(point, style);

@@ -43,18 +43,24 @@ void drawTraceOverlay(const render::scene::Scene& def, const render::scene::Trac
       const Vec2 toward = (at - inside).normalized();
       draw.arrow(camera.toWorld(inside - edge * toward), camera.toWorld(inside), pen);
     }
-    std::vector<Vec2> outline;
-    if (shape.kind == sim::core::ShapeKind::Polygon) {
-      for (const Vec2& v : shape.vertices) outline.push_back(pose.toWorld(v));
-    } else {
-      for (int k = 0; k < kCircleSides; ++k) {
-        const double a = 2.0 * std::numbers::pi * k / kCircleSides;
-        outline.push_back(pose.toWorld(shape.radius * Vec2(std::cos(a), std::sin(a))));
+    // each convex part's outline (a body of parts: every part's, seams and all, as their run gives no more)
+    const int parts = shape.kind == sim::core::ShapeKind::Compound ? static_cast<int>(shape.parts.size()) : 1;
+    for (int k = 0; k < parts; ++k) {
+      const sim::core::Shape& part = shape.kind == sim::core::ShapeKind::Compound ? shape.parts[k].shape : shape;
+      const sim::core::Pose at = shape.kind == sim::core::ShapeKind::Compound ? pose.then(shape.parts[k].pose) : pose;
+      std::vector<Vec2> outline;
+      if (part.kind == sim::core::ShapeKind::Polygon) {
+        for (const Vec2& v : part.vertices) outline.push_back(at.toWorld(v));
+      } else {
+        for (int c = 0; c < kCircleSides; ++c) {
+          const double a = 2.0 * std::numbers::pi * c / kCircleSides;
+          outline.push_back(at.toWorld(part.radius * Vec2(std::cos(a), std::sin(a))));
+        }
+        // its radius along the body's x axis, as our circles show their turn
+        dashedLine({at.x, at.toWorld({part.radius, 0.0})}, false, dash, gap, pen, draw);
       }
-      // its radius along the body's x axis, as our circles show their turn
-      dashedLine({pose.x, pose.toWorld({shape.radius, 0.0})}, false, dash, gap, pen, draw);
+      dashedLine(outline, true, dash, gap, pen, draw);
     }
-    dashedLine(outline, true, dash, gap, pen, draw);
   }
   // the legend, under the clock and the slow-motion note: a solid sample for ours, a dashed one for theirs
   const int size = fontSizeFor(def.render, camera.heightPx());

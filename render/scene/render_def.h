@@ -74,7 +74,7 @@ struct BodyLook {
 
 // a teaching vector drawn every frame: one entry of `arrows:`
 struct ArrowDef {
-  enum class Show { Velocity, Offset, Omega, Frame, Path, Force, Torque, Momentum, NormalForce, Friction };
+  enum class Show { Velocity, Offset, Omega, Frame, Path, Force, Torque, Momentum, NormalForce, Friction, Center };
   Show show = Show::Velocity;
   int body = 0;            // index into SceneDef::bodies, resolved when read
   Vec2 at = Vec2::Zero();  // body coordinates as written (before the centroid shift)
@@ -84,7 +84,7 @@ struct ArrowDef {
 };
 
 // the `show:` names
-inline constexpr sim::core::EnumNames<ArrowDef::Show, 10> kShowNames{{{
+inline constexpr sim::core::EnumNames<ArrowDef::Show, 11> kShowNames{{{
     {ArrowDef::Show::Velocity, "velocity"},
     {ArrowDef::Show::Offset, "offset"},
     {ArrowDef::Show::Omega, "omega"},
@@ -95,6 +95,7 @@ inline constexpr sim::core::EnumNames<ArrowDef::Show, 10> kShowNames{{{
     {ArrowDef::Show::Momentum, "momentum"},
     {ArrowDef::Show::NormalForce, "normal_force"},
     {ArrowDef::Show::Friction, "friction"},
+    {ArrowDef::Show::Center, "center"},
 }}};
 
 // the lecture overlays of a frame (scenes/README.md, render:), all off by default
@@ -174,6 +175,7 @@ struct RenderDef {
   bool velocities = false;     // velocity arrows at the centers of mass
   double velocityScale = 0.0;  // m per m/s (s); 0: the fastest body's arrow is 1/6 of the view
   bool trails = false;         // the path of every center of mass so far
+  bool centers = false;        // every moving body's center of mass marked with the quartered disc
   bool sat = false;            // the separating-axis overlay: reference edge, incident vertex
   int strobe = 0;              // snapshots and the poster: this many ghosted earlier poses
   bool springs = true;         // springs as zigzags, world anchors as dots

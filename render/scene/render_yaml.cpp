@@ -130,16 +130,16 @@ void readAuto(const YAML::Node& node, const Reader& reader, const std::string& k
 
 // the block's own keys, but for the overlays and panels read after it
 void readBlock(const YAML::Node& node, const Reader& reader, RenderDef& out) {
-  reader.checkKeys(
-      node,
-      {"size", "fps", "background", "line_width", "font_size", "colors", "camera", "contacts", "contact_hold", "impulses",
-       "impulse_scale", "velocities", "velocity_scale", "trails", "sat", "strobe", "springs", "labels", "time", "key", "panels",
-       // video timing and text
-       "title", "title_card", "caption", "slow_motion", "answer_card", "reveal",
+  reader.checkKeys(node,
+                   {"size", "fps", "background", "line_width", "font_size", "colors", "camera", "contacts", "contact_hold",
+                    "impulses", "impulse_scale", "velocities", "velocity_scale", "trails", "centers", "sat", "strobe", "springs",
+                    "labels", "time", "key", "panels",
+                    // video timing and text
+                    "title", "title_card", "caption", "slow_motion", "answer_card", "reveal",
 
-       // the lecture overlays, read by readOverlays
-       "arrows", "force_scale", "momentum_scale", "impact_values", "energy", "momentum", "sat_axes"},
-      "render");
+                    // the lecture overlays, read by readOverlays
+                    "arrows", "force_scale", "momentum_scale", "impact_values", "energy", "momentum", "sat_axes"},
+                   "render");
   const RenderReader r(reader);
   readFrame(node, reader, out);
   if (node["camera"]) r.camera(node["camera"], out.camera);
@@ -150,6 +150,7 @@ void readBlock(const YAML::Node& node, const Reader& reader, RenderDef& out) {
   reader.optional(node, "velocities", out.velocities, &Reader::boolean);
   reader.optional(node, "velocity_scale", out.velocityScale, &Reader::positive);
   reader.optional(node, "trails", out.trails, &Reader::boolean);
+  reader.optional(node, "centers", out.centers, &Reader::boolean);
   reader.optional(node, "sat", out.sat, &Reader::boolean);
   if (node["strobe"]) out.strobe = reader.wholeNumber(node["strobe"], "strobe", 0, 100);
   reader.optional(node, "springs", out.springs, &Reader::boolean);

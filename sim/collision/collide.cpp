@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "sim/collision/compound.h"
 #include "sim/core/settings.h"
 
 namespace sim::collision {
@@ -280,6 +281,7 @@ SatFeatures sat(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb) 
 }
 
 Manifold collide(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, double margin, double sideSlack) {
+  if (a.kind == ShapeKind::Compound || b.kind == ShapeKind::Compound) return closestParts(a, pa, b, pb, margin, sideSlack);
   place(a, pa, scratchA);
   place(b, pb, scratchB);
   return collide(scratchA, scratchB, margin, sideSlack);
@@ -288,6 +290,7 @@ Manifold collide(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb,
 Manifold collide(const PlacedShape& pa, const PlacedShape& pb, double margin, double sideSlack) {
   using K = ShapeKind;
   const Shape &a = *pa.shape, &b = *pb.shape;
+  if (a.kind == K::Compound || b.kind == K::Compound) return closestParts(a, pa.pose, b, pb.pose, margin, sideSlack);
   // each pair function's normal points out of its first shape; ours points out of B
   if (a.kind == K::Polygon && b.kind == K::Polygon) return polygons(pa, pb, margin, sideSlack);
   if (a.kind == K::Circle && b.kind == K::Circle) return circles(pa, pb, margin);
@@ -301,6 +304,7 @@ Manifold collide(const PlacedShape& pa, const PlacedShape& pb, double margin, do
 }
 
 Aabb bounds(const Shape& shape, const Pose& pose) {
+  if (shape.kind == ShapeKind::Compound) return compoundBounds(shape, pose);
   place(shape, pose, scratchA);
   return bounds(scratchA);
 }
@@ -318,6 +322,7 @@ Aabb bounds(const PlacedShape& placed) {
       }
       return box;
     }
+    case ShapeKind::Compound: return compoundBounds(shape, pose);
     case ShapeKind::Plane: {
       // unbounded, but an axis-aligned floor or wall is bounded on one side
       const Vec2 n = pose.q.apply(shape.planeNormal);

@@ -18,6 +18,8 @@ struct Rot {
   Vec2 apply(const Vec2& r) const { return {c * r.x() - s * r.y(), s * r.x() + c * r.y()}; }
   // Rᵀ r: world to body
   Vec2 applyInverse(const Vec2& r) const { return {c * r.x() + s * r.y(), -s * r.x() + c * r.y()}; }
+  // this rotation after `inner`: R R_inner
+  Rot then(const Rot& inner) const { return {c * inner.c - s * inner.s, s * inner.c + c * inner.s}; }
 };
 
 // the scalar 2D cross product a × b (the z part of the 3D one)
@@ -36,6 +38,8 @@ struct Pose {
   // r = x + R r_b
   Vec2 toWorld(const Vec2& rb) const { return x + q.apply(rb); }
   Vec2 toBody(const Vec2& r) const { return q.applyInverse(r - x); }
+  // a frame given in this one's coordinates (a body's part), in the world
+  Pose then(const Pose& inner) const { return {toWorld(inner.x), q.then(inner.q)}; }
 };
 
 inline bool isFinite(const Vec2& v) { return std::isfinite(v.x()) && std::isfinite(v.y()); }

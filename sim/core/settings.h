@@ -27,6 +27,11 @@ inline constexpr int kDefaultMaxBodies = 100000;
 // other), and 1024 sides stay within 5·10⁻⁶ of the radius of their circle (the sagitta
 // r·(1 − cos π/n)): more is a generated outline that meant a circle
 inline constexpr int kDefaultMaxVertices = 1024;
+// the most parts one body may have (sim: {max_parts: N}): each pair of parts is checked for overlap
+// when the scene is read
+inline constexpr int kDefaultMaxParts = 256;
+// m per m of a body's size: parts of one body may overlap this much (round-off where they touch)
+inline constexpr double kPartOverlapTolerance = 1e-9;
 
 // default bound on a scene's forces, events and expect entries together (sim: max_entries): each is
 // a few hundred bytes of definition and is looked up once per step or event; a million is far past

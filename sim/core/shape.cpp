@@ -96,8 +96,57 @@ Shape makePolygon(std::vector<Vec2> v) {
   return s;
 }
 
+namespace {
+
+// a part centred on its own centroid, its pose moved so that it stays where it was
+ShapePart centred(ShapePart part) {
+  if (part.shape.kind != ShapeKind::Polygon) return part;
+  const Vec2 c = areaProperties(part.shape).centroid;
+  for (Vec2& v : part.shape.vertices) v -= c;
+  part.pose.x = part.pose.toWorld(c);
+  return part;
+}
+
+}  // namespace
+
+Shape makeCompound(std::vector<ShapePart> parts) {
+  if (parts.size() < 2)
+    throw std::invalid_argument("a body of parts needs at least two; give one shape as the body's 'shape' itself");
+  for (ShapePart& part : parts) {
+    if (part.shape.kind != ShapeKind::Circle && part.shape.kind != ShapeKind::Polygon)
+      throw std::invalid_argument("each part is a box, polygon or circle");
+    part = centred(std::move(part));
+  }
+  Shape s;
+  s.kind = ShapeKind::Compound;
+  s.parts = std::move(parts);
+  return s;
+}
+
+Shape makePlaced(Shape shape, const Pose& pose) {
+  Shape s;
+  s.kind = ShapeKind::Compound;
+  s.parts.push_back(centred({std::move(shape), pose}));
+  return s;
+}
+
 AreaProperties areaProperties(const Shape& shape) {
   AreaProperties p;
+  if (shape.kind == ShapeKind::Compound) {
+    // the parts' areas summed, their centroids averaged by area, their moments moved to the
+    // common centroid (parallel-axis theorem)
+    for (const ShapePart& part : shape.parts) {
+      const AreaProperties a = areaProperties(part.shape);
+      p.area += a.area;
+      p.centroid += a.area * part.pose.toWorld(a.centroid);
+    }
+    p.centroid /= p.area;
+    for (const ShapePart& part : shape.parts) {
+      const AreaProperties a = areaProperties(part.shape);
+      p.secondMoment += a.secondMoment + a.area * (part.pose.toWorld(a.centroid) - p.centroid).squaredNorm();
+    }
+    return p;
+  }
   if (shape.kind == ShapeKind::Circle) {
     const double r2 = shape.radius * shape.radius;
     p.area = std::numbers::pi * r2;
@@ -134,12 +183,18 @@ AreaProperties areaProperties(const Shape& shape) {
 Shape shifted(const Shape& shape, const Vec2& origin) {
   Shape s = shape;
   for (Vec2& p : s.vertices) p -= origin;
+  for (ShapePart& part : s.parts) part.pose.x -= origin;
   return s;
 }
 
 double boundingRadius(const Shape& shape) {
   if (shape.kind == ShapeKind::Circle) return shape.radius;
   if (shape.kind == ShapeKind::Plane) return std::numeric_limits<double>::infinity();
+  if (shape.kind == ShapeKind::Compound) {
+    double r = 0.0;
+    for (const ShapePart& part : shape.parts) r = std::max(r, part.pose.x.norm() + boundingRadius(part.shape));
+    return r;
+  }
   double r2 = 0.0;
   for (const Vec2& p : shape.vertices) r2 = std::max(r2, p.squaredNorm());
   return std::sqrt(r2);

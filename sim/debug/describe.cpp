@@ -1,5 +1,8 @@
 #include "sim/debug/describe.h"
 
+#include "sim/collision/compound.h"
+#include "sim/debug/part_outline.h"
+
 namespace sim::debug {
 using namespace sim::world;
 using namespace sim::collision;
@@ -35,6 +38,29 @@ void describeSpring(const Vec2& a, const Vec2& b, double amplitude, DebugDraw& d
 // the normal as the notes draw it, from B into A; turned into B when A does not move (a floor)
 Vec2 shownNormal(const World& world, int a, const Vec2& normal) { return world.bodies[a].isStatic ? Vec2(-normal) : normal; }
 
+// a body made of parts as one body: its parts filled, then its outline, with no seam between parts
+// that touch; a circle part's radius shows its turning
+void describeParts(const Body& b, int index, double opacity, DebugDraw& draw) {
+  const Pose pose = b.pose();
+  for (const ShapePart& part : b.shape.parts) {
+    const Pose p = sim::collision::partPose(pose, part);
+    if (part.shape.kind == ShapeKind::Circle) {
+      draw.circle(p.x, part.shape.radius, {DrawRole::BodyPart, index, opacity});
+      continue;
+    }
+    std::vector<Vec2> v;
+    for (const Vec2& q : part.shape.vertices) v.push_back(p.toWorld(q));
+    draw.polygon(v, {DrawRole::BodyPart, index, opacity});
+  }
+  for (const OutlineSegment& s : partOutline(b.shape))
+    draw.segment(pose.toWorld(s.a), pose.toWorld(s.b), {DrawRole::BodyEdge, index, opacity});
+  for (const ShapePart& part : b.shape.parts)
+    if (part.shape.kind == ShapeKind::Circle) {
+      const Pose p = sim::collision::partPose(pose, part);
+      draw.segment(p.x, p.toWorld({part.shape.radius, 0.0}), {DrawRole::BodyAxis, index, opacity});
+    }
+}
+
 }  // namespace
 
 void describeBodies(const World& world, DebugDraw& draw, double opacity) {
@@ -55,6 +81,7 @@ void describeBodies(const World& world, DebugDraw& draw, double opacity) {
         draw.segment(b.x, pose.toWorld({b.shape.radius, 0.0}), {DrawRole::BodyAxis, static_cast<int>(i), opacity});
         break;
       case ShapeKind::Plane: draw.halfPlane(b.x, b.q().apply(b.shape.planeNormal), style); break;
+      case ShapeKind::Compound: describeParts(b, static_cast<int>(i), opacity, draw); break;
     }
   }
 }

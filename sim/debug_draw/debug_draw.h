@@ -24,6 +24,8 @@ enum class DrawRole {
   ReferenceEdge,   // the separating-axis reference edge
   IncidentVertex,  // the separating-axis incident vertex
   Label,           // a value written beside what it belongs to (a separation)
+  BodyPart,        // a part of a dynamic body made of parts: filled, not outlined
+  BodyEdge,        // a piece of the outline of a body made of parts (none where two parts touch)
 };
 
 struct DrawStyle {

@@ -19,17 +19,70 @@ std::unordered_map<std::string, int> SceneDef::bodyIndices() const {
   return out;
 }
 
-MassProperties massProperties(const BodyDef& def) {
-  if (def.shape.kind == ShapeKind::Plane) return {};
-  const AreaProperties a = areaProperties(def.shape);
-  const double density = def.density.value_or(settings::kDefaultDensity);
+namespace {
+
+// a body of parts as the notes define its mass properties: M = Σ mᵢ, the center of mass
+// c = Σ mᵢ cᵢ / M, and I = Σ (Iᵢ + mᵢ |cᵢ − c|²) about it (the parallel-axis theorem), each part of
+// its own density or the body's
+MassProperties partsMassProperties(const BodyDef& def, double density) {
   MassProperties m;
-  m.centroid = a.centroid;
-  m.mass = def.mass.value_or(density * a.area);
-  // a given mass spreads uniformly over the shape unless the inertia is given too
-  m.inertia = def.inertia.value_or(m.mass / a.area * a.secondMoment);
+  std::vector<double> masses;
+  std::vector<Vec2> centroids;
+  for (size_t k = 0; k < def.shape.parts.size(); ++k) {
+    const ShapePart& part = def.shape.parts[k];
+    const AreaProperties a = areaProperties(part.shape);
+    const double rho = k < def.partDensities.size() && def.partDensities[k] ? *def.partDensities[k] : density;
+    masses.push_back(rho * a.area);
+    centroids.push_back(part.pose.toWorld(a.centroid));
+    m.mass += masses.back();
+    m.centroid += masses.back() * centroids.back();
+    m.inertia += rho * a.secondMoment;
+  }
+  m.centroid /= m.mass;
+  for (size_t k = 0; k < masses.size(); ++k) m.inertia += masses[k] * (centroids[k] - m.centroid).squaredNorm();
   return m;
 }
+
+}  // namespace
+
+MassProperties massProperties(const BodyDef& def) {
+  if (def.shape.kind == ShapeKind::Plane) return {};
+  const double density = def.density.value_or(settings::kDefaultDensity);
+  MassProperties m;
+  if (def.shape.kind == ShapeKind::Compound) {
+    m = partsMassProperties(def, density);
+  } else {
+    const AreaProperties a = areaProperties(def.shape);
+    m.centroid = a.centroid;
+    m.mass = def.mass.value_or(density * a.area);
+    // a given mass spreads uniformly over the shape unless the inertia is given too
+    m.inertia = m.mass / a.area * a.secondMoment;
+  }
+  if (def.shape.kind == ShapeKind::Compound && def.mass) {
+    // a given mass spreads as the parts' densities do: the center stays, the inertia scales with it
+    m.inertia *= *def.mass / m.mass;
+    m.mass = *def.mass;
+  }
+  if (def.centerOfMass) {
+    // the center of mass where the scene puts it; without an inertia about it, the shape's about its
+    // centroid moved there (parallel-axis theorem)
+    m.inertia += m.mass * (*def.centerOfMass - m.centroid).squaredNorm();
+    m.centroid = *def.centerOfMass;
+  }
+  if (def.inertia) m.inertia = *def.inertia;
+  return m;
+}
+
+namespace {
+
+// the body's shape in coordinates about its center of mass `center` (a circle off its center of
+// mass becomes a part placed in the body: a compound of one)
+Shape bodyShape(const BodyDef& def, const Vec2& center) {
+  if (def.shape.kind == ShapeKind::Circle && center != Vec2::Zero()) return shifted(makePlaced(def.shape, Pose{}), center);
+  return shifted(def.shape, center);
+}
+
+}  // namespace
 
 World buildWorld(const SceneDef& def) {
   World w;
@@ -51,12 +104,15 @@ World buildWorld(const SceneDef& def) {
     const MassProperties mp = massProperties(bd);
     centroid.push_back(mp.centroid);
     Body b;
-    b.shape = shifted(bd.shape, mp.centroid);
+    b.shape = bodyShape(bd, mp.centroid);
     b.mass = mp.mass;
     b.invMass = 1.0 / mp.mass;
     b.inertia = mp.inertia;
     b.invInertia = 1.0 / mp.inertia;
-    b.setState({bd.position, bd.angle, bd.velocity, bd.angularVelocity});
+    // a body of parts, or with its center of mass given, is placed by its own frame
+    const bool framed = bd.shape.kind == ShapeKind::Compound || bd.centerOfMass.has_value();
+    const Vec2 x = framed ? Vec2(bd.position + Rot::fromAngle(bd.angle).apply(mp.centroid)) : bd.position;
+    b.setState({x, bd.angle, bd.velocity, bd.angularVelocity});
     b.restitution = bd.restitution.value_or(def.restitution);
     b.friction = bd.friction.value_or(def.friction.value_or(settings::kDefaultFriction));
     b.frictionNamed = bd.friction.has_value() || def.friction.has_value();

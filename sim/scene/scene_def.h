@@ -31,9 +31,14 @@ struct BodyDef {
   std::string name;
   Shape shape;                    // as written: body coordinates before the centroid shift
   std::optional<double> density;  // kg/m²
+  // a compound shape's part densities, kg/m², one per part (none: the body's density)
+  std::vector<std::optional<double>> partDensities;
+  // where the center of mass is in the body's own frame, when the scene says (else the centroid)
+  std::optional<Vec2> centerOfMass;
   std::optional<double> mass;     // kg
   std::optional<double> inertia;  // kg·m², about the center of mass
-  Vec2 position = Vec2::Zero();   // of the center of mass
+  // of the center of mass; of the body's own frame for a body of parts or with centerOfMass
+  Vec2 position = Vec2::Zero();
   double angle = 0.0;
   Vec2 velocity = Vec2::Zero();
   double angularVelocity = 0.0;

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <optional>
 #include <string_view>
+#include <tuple>
 #include <vector>
 
 #include "sim/collision/collide.h"
@@ -47,7 +48,8 @@ struct ContactPointState {
 inline Vec2 tangentOf(const Vec2& n) { return {-n.y(), n.x()}; }
 
 struct Contact {
-  int a = 0, b = 0;  // body indices, a < b
+  int a = 0, b = 0;          // body indices, a < b
+  int partA = 0, partB = 0;  // which part of each body touches (0 for a body of one shape)
   Manifold manifold;
   double restitution = 0.0;
   double friction = 0.0;
@@ -73,6 +75,9 @@ struct RestingRecord {
   // contact rather than coming to rest
   bool moving = false;
 };
+
+// a contact's pair of parts, the order the contact lists are sorted in: by body, then by part
+inline std::tuple<int, int, int, int> pairKey(const Contact& c) { return {c.a, c.partA, c.b, c.partB}; }
 
 // what a contact's points carry to the same pair's contact next step: their features and impulses
 struct CarriedPoints {

@@ -20,6 +20,7 @@
 #include <string>
 
 #include "sim/collision/broad_phase.h"
+#include "sim/collision/compound.h"
 #include "sim/collision/impulse.h"
 #include "sim/collision/time_of_impact.h"
 #include "sim/world/methods.h"
@@ -287,20 +288,23 @@ class EventStepper final : public Method {
     const double touch = settings::kTouchingTolerance * world.sceneSize();
     std::erase_if(restingPairs_, [&](const std::pair<int, int>& p) {
       Body &a = world.bodies[p.first], &b = world.bodies[p.second];
-      const Manifold m = collide(a.shape, a.pose(), b.shape, b.pose(), settings::kRestingReach * touch);
-      if (m.count == 0) return true;  // they came apart
+      // (each pair of parts that touches, for bodies made of parts)
+      collideParts(a.shape, a.pose(), b.shape, b.pose(), settings::kRestingReach * touch, parts_);
+      if (parts_.empty()) return true;  // they came apart
       bool separating = true;
-      for (int k = 0; k < m.count; ++k) {
-        const Vec2 r = m.points[k].point;
-        // no sinking in: remove round-off overlap and approach without restitution
-        if (m.points[k].separation < 0.0) {
-          const double share = a.invMass + b.invMass;
-          a.x -= (m.points[k].separation * a.invMass / share) * m.normal;
-          b.x += (m.points[k].separation * b.invMass / share) * m.normal;
+      for (const PartManifold& pm : parts_)
+        for (int k = 0; k < pm.manifold.count; ++k) {
+          const Manifold& m = pm.manifold;
+          const Vec2 r = m.points[k].point;
+          // no sinking in: remove round-off overlap and approach without restitution
+          if (m.points[k].separation < 0.0) {
+            const double share = a.invMass + b.invMass;
+            a.x -= (m.points[k].separation * a.invMass / share) * m.normal;
+            b.x += (m.points[k].separation * b.invMass / share) * m.normal;
+          }
+          if (m.normal.dot(relativeVelocity(a, b, r)) < 0.0) resolveImpact(a, b, r, m.normal, 0.0, 0.0);
+          if (m.normal.dot(relativeVelocity(a, b, r)) <= settings::kRestingSpeed) separating = false;
         }
-        if (m.normal.dot(relativeVelocity(a, b, r)) < 0.0) resolveImpact(a, b, r, m.normal, 0.0, 0.0);
-        if (m.normal.dot(relativeVelocity(a, b, r)) <= settings::kRestingSpeed) separating = false;
-      }
       return separating;
     });
   }
@@ -309,13 +313,15 @@ class EventStepper final : public Method {
   std::vector<RestingRow> restingRows(const World& world, const States& y) const {
     std::vector<RestingRow> rows;
     for (const auto& [i, j] : restingPairs_) {
-      const Manifold m = collide(world.bodies[i].shape, y[i].pose(), world.bodies[j].shape, y[j].pose(),
-                                 settings::kRestingReach * settings::kTouchingTolerance * world.sceneSize());
-      for (int k = 0; k < m.count; ++k) {
-        Body a = world.bodies[i], b = world.bodies[j];
-        a.x = y[i].x, b.x = y[j].x;
-        rows.push_back({i, j, m.points[k].point, m.normal, inverseEffectiveMass(a, b, m.points[k].point, m.normal)});
-      }
+      collideParts(world.bodies[i].shape, y[i].pose(), world.bodies[j].shape, y[j].pose(),
+                   settings::kRestingReach * settings::kTouchingTolerance * world.sceneSize(), parts_);
+      for (const PartManifold& pm : parts_)
+        for (int k = 0; k < pm.manifold.count; ++k) {
+          const Manifold& m = pm.manifold;
+          Body a = world.bodies[i], b = world.bodies[j];
+          a.x = y[i].x, b.x = y[j].x;
+          rows.push_back({i, j, m.points[k].point, m.normal, inverseEffectiveMass(a, b, m.points[k].point, m.normal)});
+        }
     }
     return rows;
   }
@@ -354,6 +360,7 @@ class EventStepper final : public Method {
 
   bool gravityOnly_ = true;                        // bodies move on exact parabolas
   std::vector<std::pair<int, int>> restingPairs_;  // contacts held at rest (Zeno)
+  mutable std::vector<PartManifold> parts_;        // scratch: a resting pair's touching parts
 };
 
 }  // namespace

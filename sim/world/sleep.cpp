@@ -12,8 +12,8 @@ using namespace sim::core;
 
 namespace {
 
-bool byPair(const Contact& x, const Contact& y) { return std::make_pair(x.a, x.b) < std::make_pair(y.a, y.b); }
-bool samePair(const Contact& x, const Contact& y) { return x.a == y.a && x.b == y.b; }
+bool byPair(const Contact& x, const Contact& y) { return pairKey(x) < pairKey(y); }
+bool samePair(const Contact& x, const Contact& y) { return pairKey(x) == pairKey(y); }
 
 bool pushing(const PointForce& f, double t) { return f.from <= t && t < f.until && f.force != Vec2::Zero(); }
 

@@ -6,6 +6,7 @@
 #include <limits>
 #include <string>
 
+#include "sim/collision/compound.h"
 #include "sim/collision/quad_pairs.h"
 #include "sim/world/method_models.h"
 #include "sim/world/worker_pool.h"
@@ -83,18 +84,34 @@ void World::findContacts(double margin, std::vector<Contact>& found, WorkerPool*
     (void)collectContacts(margin, found, sleep_.sleepingBodies() > 0, true, threads, nullptr, sideSlack);
 }
 
+void World::makeProxies() const {
+  proxies_.clear();
+  proxiesFor_ = bodies.size();
+  const bool parts = std::any_of(bodies.begin(), bodies.end(), [](const Body& b) { return b.shape.kind == ShapeKind::Compound; });
+  if (!parts) return;
+  for (int i = 0; i < static_cast<int>(bodies.size()); ++i)
+    for (int k = 0; k < partCount(bodies[i].shape); ++k) proxies_.push_back({i, k});
+}
+
 bool World::collectContacts(double margin, std::vector<Contact>& found, bool awakeOnly, bool warmStart, WorkerPool* threads,
                             std::vector<Contact>* lastStep, double sideSlack) const {
-  const int n = static_cast<int>(bodies.size());
+  // (a body's shape is fixed from its making: only bodies added since ask for new proxies)
+  if (proxiesFor_ != bodies.size()) makeProxies();
+  const bool hasParts = !proxies_.empty();
+  const int n = hasParts ? static_cast<int>(proxies_.size()) : static_cast<int>(bodies.size());
+  // a proxy's body and part (while every body is one shape, proxy i is body i, part 0)
+  auto bodyOf = [&](int i) { return hasParts ? proxies_[i].body : i; };
+  auto partOf = [&](int i) { return hasParts ? proxies_[i].part : 0; };
   const bool shared = threads && threads->size() > 1;
-  // each body placed once (one sine and cosine, its vertices in the world), for its bounds and
+  // each proxy placed once (one sine and cosine, its vertices in the world), for its bounds and
   // every pair it is in
   placed_.resize(n);
   boxes_.resize(n);
   auto placeBodies = [&](int first, int last) {
     for (int i = first; i < last; ++i) {
-      const Body& b = bodies[i];
-      place(b.shape, b.pose(), placed_[i]);
+      const Body& b = bodies[bodyOf(i)];
+      const Shape& shape = partShape(b.shape, partOf(i));
+      place(shape, partPoseOf(b.shape, partOf(i), b.pose()), placed_[i]);
       Aabb box = bounds(placed_[i]);
       box.lower -= Vec2::Constant(margin);
       box.upper += Vec2::Constant(margin);
@@ -110,12 +127,18 @@ bool World::collectContacts(double margin, std::vector<Contact>& found, bool awa
     placeBodies(0, n);
   }
   fixed_.resize(n);
-  for (int i = 0; i < n; ++i) fixed_[i] = bodies[i].isStatic;
+  for (int i = 0; i < n; ++i) fixed_[i] = bodies[bodyOf(i)].isStatic;
   pairCache_.find(boxes_, fixed_, pairs_);
+  // the parts of one body never collide with each other
+  if (hasParts) std::erase_if(pairs_, [&](const std::pair<int, int>& p) { return bodyOf(p.first) == bodyOf(p.second); });
+  // a proxy pair as a contact's pairKey
+  auto keyOf = [&](const std::pair<int, int>& p) {
+    return std::tuple<int, int, int, int>{bodyOf(p.first), partOf(p.first), bodyOf(p.second), partOf(p.second)};
+  };
   // the manifold of pairs_[k], or none for a pair of a sleeping pile (its pairs are not tested:
   // they are kept as they were when it fell asleep)
   auto skipped = [&](int k) {
-    const auto [i, j] = pairs_[k];
+    const int i = bodyOf(pairs_[k].first), j = bodyOf(pairs_[k].second);
     return awakeOnly && (bodies[i].isStatic || sleep_.asleep(i)) && (bodies[j].isStatic || sleep_.asleep(j));
   };
   auto collidePair = [&](int k) {
@@ -143,15 +166,22 @@ bool World::collectContacts(double margin, std::vector<Contact>& found, bool awa
   // a contact written whole, its impulses those of last step's contact of the same pair (`old`
   // walks `contacts`, sorted by pair as the pairs are, from `from`), matched while it is at hand
   auto fill = [&](Contact& c, const std::pair<int, int>& pair, const Manifold& m, size_t& old) {
-    const auto [i, j] = pair;
+    const int i = bodyOf(pair.first), j = bodyOf(pair.second);
     c.a = i, c.b = j;
+    c.partA = partOf(pair.first), c.partB = partOf(pair.second);
     c.manifold = m;
     c.restitution = combinedRestitution(bodies[i].restitution, bodies[j].restitution);
     c.friction = combinedFriction(bodies[i], bodies[j]);
     c.state[0] = c.state[1] = ContactPointState{};
     if (!warmStart) return;
-    while (old < contacts.size() && std::make_pair(contacts[old].a, contacts[old].b) < pair) ++old;
-    if (old < contacts.size() && contacts[old].a == i && contacts[old].b == j) carryImpulses(contacts[old], c);
+    const auto key = keyOf(pair);
+    while (old < contacts.size() && pairKey(contacts[old]) < key) ++old;
+    if (old < contacts.size() && pairKey(contacts[old]) == key) carryImpulses(contacts[old], c);
+  };
+  // whether a contact is of the proxy pair `pair`
+  auto samePair = [&](const Contact& c, const std::pair<int, int>& pair) {
+    return c.a == bodyOf(pair.first) && c.b == bodyOf(pair.second) && c.partA == partOf(pair.first) &&
+           c.partB == partOf(pair.second);
   };
   // the same pair's contact last step, written over with its new manifold and warm started from
   // itself (its bodies, so its restitution and friction, are the ones it had: a body's coefficients
@@ -165,8 +195,8 @@ bool World::collectContacts(double margin, std::vector<Contact>& found, bool awa
   // where last step's contacts reach a pair
   auto from = [&](const std::pair<int, int>& pair) {
     return static_cast<size_t>(
-        std::lower_bound(contacts.begin(), contacts.end(), pair,
-                         [](const Contact& c, const std::pair<int, int>& p) { return std::make_pair(c.a, c.b) < p; }) -
+        std::lower_bound(contacts.begin(), contacts.end(), keyOf(pair),
+                         [](const Contact& c, const std::tuple<int, int, int, int>& key) { return pairKey(c) < key; }) -
         contacts.begin());
   };
   const int pairCount = static_cast<int>(pairs_.size());
@@ -193,7 +223,7 @@ bool World::collectContacts(double margin, std::vector<Contact>& found, bool awa
           if (next + 8 < lastStep->size())
             for (size_t line = 0; line < sizeof(Contact); line += 64)
               __builtin_prefetch(reinterpret_cast<const char*>(&(*lastStep)[next + 8]) + line, 1);
-          if (c && c->a == pairs_[k].first && c->b == pairs_[k].second) {
+          if (c && samePair(*c, pairs_[k])) {
             overwrite(*c, chunk[k - first]);
             ++next;
             continue;
@@ -235,7 +265,7 @@ bool World::collectContacts(double margin, std::vector<Contact>& found, bool awa
       for (int k = first; k < last && !differs_[t]; ++k)
         if (manifolds_[k].count > 0) {
           const Contact& c = (*lastStep)[next++];
-          differs_[t] = c.a != pairs_[k].first || c.b != pairs_[k].second;
+          differs_[t] = !samePair(c, pairs_[k]);
         }
     });
     if (std::find(differs_.begin(), differs_.end(), 1) == differs_.end()) {

@@ -187,11 +187,19 @@ class World {
   bool mayStackUp_ = false;
   ContactWatch watch_;
   States stepStart_;  // the states where the step began, to redo it on a switch
+  // the collision proxies, one per convex shape, body by body (a body of parts has one per part):
+  // empty while every body is one shape, when proxy i is body i
+  struct Proxy {
+    int body = 0, part = 0;
+  };
+  void makeProxies() const;
+  mutable std::vector<Proxy> proxies_;
+  mutable size_t proxiesFor_ = 0;  // the body count they were made for
   // the broad phase's candidate pairs, kept from one findContacts to the next (the pairs found
   // do not depend on them)
   mutable PairCache pairCache_;
-  mutable std::vector<std::pair<int, int>> pairs_;  // scratch of findContacts: the pairs,
-  mutable std::vector<PlacedShape> placed_;         // and the bodies' shapes where they are,
+  mutable std::vector<std::pair<int, int>> pairs_;  // scratch of findContacts: the proxies' pairs,
+  mutable std::vector<PlacedShape> placed_;         // and the proxies' shapes where they are,
   mutable std::vector<Aabb> boxes_;                 // their bounds with the margin,
   mutable std::vector<bool> fixed_;                 // which are static,
   mutable std::vector<Manifold> manifolds_;         // and each pair's manifold, when threads share them,

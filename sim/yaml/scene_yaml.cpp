@@ -5,6 +5,7 @@
 #include <sstream>
 #include <unordered_set>
 
+#include "sim/collision/compound.h"
 #include "sim/core/step_limit.h"
 #include "sim/scene/scene_build.h"
 #include "sim/scene/step_limit.h"
@@ -18,6 +19,7 @@ namespace sim::yaml {
 using namespace sim::core;
 using namespace sim::world;
 using namespace sim::scene;
+using sim::collision::overlappingPart;
 
 namespace {
 
@@ -55,7 +57,7 @@ class SceneReader : public Reader {
     if (const YAML::Node sim = root["sim"]) {
       checkKeys(sim,
                 {"integrator", "dt", "collisions", "iterations", "position_iterations", "substeps", "contact_hertz", "threads",
-                 "precision", "sleep", "max_steps", "max_bodies", "max_vertices", "max_entries"},
+                 "precision", "sleep", "max_steps", "max_bodies", "max_vertices", "max_entries", "max_parts"},
                 "sim");
       optional(sim, "max_steps", s.maxSteps, &Reader::positive);
       readSizeLimits(*this, sim, limits_);
@@ -107,17 +109,14 @@ class SceneReader : public Reader {
   }
 
  private:
-  Shape readShape(const YAML::Node& n) {
-    checkKeys(n, {"box", "polygon", "circle", "plane"}, "shape");
+  Shape readShape(const YAML::Node& n, BodyDef& body) {
+    checkKeys(n, {"box", "polygon", "circle", "plane", "compound"}, "shape");
     if (n.size() != 1)
-      fail(n, "a shape is exactly one of {box: [w, h]}, {polygon: [[x, y], ...]}, {circle: r}, {plane: {point, normal}}");
+      fail(n,
+           "a shape is exactly one of {box: [w, h]}, {polygon: [[x, y], ...]}, {circle: r}, {plane: {point, normal}}, "
+           "{compound: [PART, ...]}");
+    if (const YAML::Node parts = n["compound"]) return readCompound(parts, body);
     try {
-      if (const YAML::Node box = n["box"]) {
-        const Vec2 size = vec2(box, "box");
-        if (!(size.x() > 0.0) || !(size.y() > 0.0)) fail(box, "box width and height must be positive");
-        return makeBox(size.x(), size.y());
-      }
-      if (const YAML::Node circle = n["circle"]) return makeCircle(positive(circle, "circle"));
       if (const YAML::Node plane = n["plane"]) {
         checkKeys(plane, {"point", "normal"}, "plane");
         const YAML::Node normal = required(plane, "normal", "a plane");
@@ -127,21 +126,73 @@ class SceneReader : public Reader {
           fail(normal, e.what());
         }
       }
-      const YAML::Node poly = n["polygon"];
-      if (!poly.IsSequence()) fail(poly, "expected a list of [x, y] vertices for 'polygon', got " + describe(poly));
-      checkVertexCount(*this, poly, limits_);
-      std::vector<Vec2> vertices;
-      for (const YAML::Node& v : poly) vertices.push_back(vec2(v, "polygon vertex"));
-      return makePolygon(std::move(vertices));
+      return readConvex(n);
     } catch (const std::invalid_argument& e) {
       fail(n, e.what());
     }
   }
 
+  // the box, circle or polygon a map names (a body's shape, or a part of one)
+  Shape readConvex(const YAML::Node& n) {
+    if (const YAML::Node box = n["box"]) {
+      const Vec2 size = vec2(box, "box");
+      if (!(size.x() > 0.0) || !(size.y() > 0.0)) fail(box, "box width and height must be positive");
+      return makeBox(size.x(), size.y());
+    }
+    if (const YAML::Node circle = n["circle"]) return makeCircle(positive(circle, "circle"));
+    const YAML::Node poly = n["polygon"];
+    if (!poly.IsSequence()) fail(poly, "expected a list of [x, y] vertices for 'polygon', got " + describe(poly));
+    checkVertexCount(*this, poly, limits_);
+    std::vector<Vec2> vertices;
+    for (const YAML::Node& v : poly) vertices.push_back(vec2(v, "polygon vertex"));
+    return makePolygon(std::move(vertices));
+  }
+
+  // {compound: [PART, ...]}: each part a box, polygon or circle with its position and angle in the
+  // body's own frame and, optionally, its own density; parts may touch but not overlap
+  Shape readCompound(const YAML::Node& list, BodyDef& body) {
+    if (!list.IsSequence())
+      fail(list, "expected a list of parts for 'compound', e.g. [{box: [1, 0.2]}, {circle: 0.3, position: [0.5, 0]}]");
+    if (list.size() < 2)
+      fail(list,
+           "a body of parts needs at least two; for one shape give it as the body's 'shape' itself (and "
+           "'center_of_mass' to move its center of mass)");
+    checkPartCount(*this, list, limits_);
+    std::vector<ShapePart> parts;
+    for (const YAML::Node& p : list) {
+      if (!p.IsMap())
+        fail(p, "a part is a map such as {box: [w, h], position: [x, y], angle: a, density: d}, got " + describe(p));
+      checkKeys(p, {"box", "polygon", "circle", "position", "angle", "density"}, "a part");
+      const int shapes = (p["box"] ? 1 : 0) + (p["polygon"] ? 1 : 0) + (p["circle"] ? 1 : 0);
+      if (shapes != 1) fail(p, "a part is exactly one of box, polygon or circle, with its position, angle and density");
+      ShapePart part;
+      try {
+        part.shape = readConvex(p);
+      } catch (const std::invalid_argument& e) {
+        fail(p, e.what());
+      }
+      Vec2 position = Vec2::Zero();
+      double angle = 0.0;
+      optional(p, "position", position, &Reader::vec2);
+      optional(p, "angle", angle, &Reader::finite);
+      part.pose = {position, Rot::fromAngle(angle)};
+      std::optional<double> density;
+      optional(p, "density", density, &Reader::positive);
+      body.partDensities.push_back(density);
+      parts.push_back(std::move(part));
+    }
+    const Shape shape = makeCompound(std::move(parts));
+    if (const std::optional<int> k = overlappingPart(shape, settings::kPartOverlapTolerance * boundingRadius(shape)))
+      fail(list[*k],
+           "this part overlaps an earlier part of the same body; parts may touch but not overlap: move it or "
+           "make the two one polygon");
+    return shape;
+  }
+
   BodyDef readBody(const YAML::Node& n) {
     checkKeys(n,
-              with({"name", "shape", "density", "mass", "inertia", "position", "angle", "velocity", "angular_velocity", "static",
-                    "restitution", "friction"},
+              with({"name", "shape", "density", "mass", "inertia", "center_of_mass", "position", "angle", "velocity",
+                    "angular_velocity", "static", "restitution", "friction"},
                    others_.body),
               "a body");
     BodyDef b;
@@ -150,8 +201,9 @@ class SceneReader : public Reader {
     if (b.name.empty()) fail(n, "a body's name cannot be empty");
     // by hash: a scan of the names before would make loading quadratic in the bodies
     if (!bodyNames_.insert(b.name).second) fail(n["name"], "duplicate body name '" + b.name + "'; names must be unique");
-    b.shape = readShape(required(n, "shape", "body '" + b.name + "'"));
+    b.shape = readShape(required(n, "shape", "body '" + b.name + "'"), b);
     optional(n, "density", b.density, &Reader::positive);
+    optional(n, "center_of_mass", b.centerOfMass, &Reader::vec2);
     optional(n, "mass", b.mass, &Reader::positive);
     optional(n, "inertia", b.inertia, &Reader::positive);
     optional(n, "position", b.position, &Reader::vec2);
@@ -164,12 +216,16 @@ class SceneReader : public Reader {
     if (b.shape.kind == ShapeKind::Plane) {
       // a half-plane is an obstacle: static, placed by its point
       if (n["static"] && !b.isStatic) fail(n["static"], "a plane is always static");
-      for (const char* key : {"position", "angle", "density", "mass", "inertia"})
+      for (const char* key : {"position", "angle", "density", "mass", "inertia", "center_of_mass"})
         if (n[key]) fail(n[key], std::string("a plane has no '") + key + "'; place it with its 'point' and 'normal'");
       b.isStatic = true;
       const YAML::Node plane = n["shape"]["plane"];
       optional(plane, "point", b.position, &Reader::vec2);
     }
+    if (b.isStatic && b.shape.kind == ShapeKind::Compound)
+      fail(n["static"],
+           "a static body cannot be made of parts yet; give each part as a static body of its own (static bodies "
+           "never move, so nothing is lost)");
     if (b.isStatic && (b.velocity != Vec2::Zero() || b.angularVelocity != 0.0))
       fail(n, "static body '" + b.name + "' cannot move; remove its velocity or make it dynamic");
     // what the numbers make must be numbers too: a mass of 1e308 spread over a shape overflows its

@@ -16,6 +16,7 @@ struct SizeLimits {
   int maxBodies = sim::core::settings::kDefaultMaxBodies;      // sim: {max_bodies: N}
   int maxVertices = sim::core::settings::kDefaultMaxVertices;  // sim: {max_vertices: N}
   int maxEntries = sim::core::settings::kDefaultMaxEntries;    // sim: {max_entries: N}
+  int maxParts = sim::core::settings::kDefaultMaxParts;        // sim: {max_parts: N}
 };
 
 // the overrides in the scene's `sim:` map
@@ -24,6 +25,7 @@ inline void readSizeLimits(const Reader& r, const YAML::Node& sim, SizeLimits& l
   if (sim["max_bodies"]) limits.maxBodies = r.wholeNumber(sim["max_bodies"], "max_bodies", 1, most);
   if (sim["max_vertices"]) limits.maxVertices = r.wholeNumber(sim["max_vertices"], "max_vertices", 3, most);
   if (sim["max_entries"]) limits.maxEntries = r.wholeNumber(sim["max_entries"], "max_entries", 1, most);
+  if (sim["max_parts"]) limits.maxParts = r.wholeNumber(sim["max_parts"], "max_parts", 2, most);
 }
 
 // the list `list` holds at most `limit` entries, else "<what> N <entries>, more than the limit of
@@ -46,6 +48,11 @@ inline void checkBodyCount(const Reader& r, const YAML::Node& bodies, const Size
 inline void checkVertexCount(const Reader& r, const YAML::Node& polygon, const SizeLimits& limits) {
   checkCount(r, polygon, limits.maxVertices, "a polygon of ", "vertices", "max_vertices",
              "a round outline needs far fewer (or is a circle), or ");
+}
+
+// the list `compound` holds at most limits.maxParts parts
+inline void checkPartCount(const Reader& r, const YAML::Node& compound, const SizeLimits& limits) {
+  checkCount(r, compound, limits.maxParts, "a body of ", "parts", "max_parts", "");
 }
 
 // forces, events and expect entries together hold at most limits.maxEntries: `seen` counts those

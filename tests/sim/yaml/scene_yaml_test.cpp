@@ -822,3 +822,62 @@ TEST_CASE("a duplicate body name among many is found at its line (by hash, not b
   text += "  - {name: b1234, shape: {circle: 0.1}}\n";
   expectSceneError(text, 2002, 0, {"duplicate body name 'b1234'"});
 }
+
+// ---------------------------------------------------------------------------------------------
+// bodies made of parts
+
+TEST_CASE("a body of parts: too few parts, overlapping parts, a static one and unknown keys are refused at their line") {
+  EXPECT_SCENE_ERROR(
+      "bodies:\n"
+      "  - name: a\n"
+      "    shape: {compound: [{box: [1, 1]}]}\n",
+      3, 0, {"at least two", "center_of_mass"});
+  EXPECT_SCENE_ERROR(
+      "bodies:\n"
+      "  - name: a\n"
+      "    shape:\n"
+      "      compound:\n"
+      "        - {box: [1, 1]}\n"
+      "        - {box: [1, 1], position: [2, 0]}\n"
+      "        - {circle: 0.5, position: [0.9, 0]}\n",
+      7, 11, {"overlaps an earlier part", "may touch"});
+  EXPECT_SCENE_ERROR(
+      "bodies:\n"
+      "  - name: a\n"
+      "    shape: {compound: [{box: [1, 1]}, {box: [1, 1], position: [1, 0]}]}\n"
+      "    static: true\n",
+      4, 0, {"static body cannot be made of parts"});
+  EXPECT_SCENE_ERROR(
+      "bodies:\n"
+      "  - name: a\n"
+      "    shape: {compound: [{box: [1, 1], mass: 2}, {box: [1, 1], position: [1, 0]}]}\n",
+      3, 0, {"mass"});
+  EXPECT_SCENE_ERROR(
+      "bodies:\n"
+      "  - name: a\n"
+      "    shape: {compound: [{box: [1, 1], circle: 1}, {box: [1, 1], position: [1, 0]}]}\n",
+      3, 0, {"exactly one of box, polygon or circle"});
+  EXPECT_SCENE_ERROR(
+      "sim: {max_parts: 2}\n"
+      "bodies:\n"
+      "  - name: a\n"
+      "    shape: {compound: [{box: [1, 1]}, {box: [1, 1], position: [1, 0]}, {box: [1, 1], position: [2, 0]}]}\n",
+      4, 0, {"3 parts", "max_parts"});
+  // parts that touch are one body
+  CHECK(load("bodies:\n"
+             "  - name: a\n"
+             "    shape: {compound: [{box: [1, 1]}, {box: [1, 1], position: [1, 0]}]}\n")
+            .bodies[0]
+            .shape.parts.size() == 2);
+}
+
+TEST_CASE("center_of_mass is a point [x, y], and a plane has none") {
+  EXPECT_SCENE_ERROR(kOneBody + "    center_of_mass: 3\n", 4, 0, {"center_of_mass"});
+  EXPECT_SCENE_ERROR(
+      "bodies:\n"
+      "  - name: f\n"
+      "    shape: {plane: {point: [0, 0], normal: [0, 1]}}\n"
+      "    center_of_mass: [0, 1]\n",
+      4, 0, {"a plane has no 'center_of_mass'"});
+  CHECK(load(kOneBody + "    center_of_mass: [0.5, 0]\n").bodies[0].centerOfMass == sim::core::Vec2(0.5, 0));
+}

@@ -1,0 +1,21 @@
+// The outline of a body made of parts, drawn as one body: each part's boundary less what lies
+// inside (or along) another part, so that no seam shows where two parts touch.
+#pragma once
+
+#include <vector>
+
+#include "sim/core/shape.h"
+
+namespace sim::debug {
+using sim::core::Shape;
+using sim::core::Vec2;
+
+struct OutlineSegment {
+  Vec2 a, b;
+};
+
+// the outline of compound `shape` in its body's coordinates (a circle part as a polygon of
+// `circleSegments` chords), a piece per maximal run of a part's edge on the outside
+std::vector<OutlineSegment> partOutline(const Shape& shape, int circleSegments = 96);
+
+}  // namespace sim::debug
