@@ -164,7 +164,7 @@ RunResult run(StackRun& engine, const char* name, const bench::StackLayout& layo
 // --- rigidreel, through a scene definition and World's public members ---
 
 sim::scene::SceneDef sceneOf(const bench::StackLayout& layout, const bench::StackSettings& s, const RunOptions& o,
-                             sim::world::CollisionMethod method, sim::world::Precision precision) {
+                             sim::world::CollisionMethod method, sim::world::Precision precision, double recycle) {
   sim::scene::SceneDef def;
   def.name = layout.name;
   def.gravity = {0.0, s.gravity};
@@ -179,6 +179,7 @@ sim::scene::SceneDef sceneOf(const bench::StackLayout& layout, const bench::Stac
   def.contactHertz = o.contactHertz;
   def.threads = o.threads;
   def.precision = precision;
+  def.recycleDistance = recycle;
   sim::scene::BodyDef ground;
   ground.name = "ground";
   ground.shape = sim::core::makeBox(2.0 * (layout.groundHalfWidth + o.ourGrowth), 1.0 + 2.0 * o.ourGrowth);
@@ -206,8 +207,8 @@ sim::scene::SceneDef sceneOf(const bench::StackLayout& layout, const bench::Stac
 class OurRun : public StackRun {
  public:
   OurRun(const bench::StackLayout& layout, const bench::StackSettings& s, const RunOptions& o, sim::world::CollisionMethod method,
-         sim::world::Precision precision)
-      : world_(sim::scene::buildWorld(sceneOf(layout, s, o, method, precision))), dt_(s.dt) {
+         sim::world::Precision precision, double recycle = 0.0)
+      : world_(sim::scene::buildWorld(sceneOf(layout, s, o, method, precision, recycle))), dt_(s.dt) {
     world_.simdWidth = o.simdWidth;
     world_.start();
   }
@@ -222,6 +223,15 @@ class OurRun : public StackRun {
       end.push_back({b.x.x(), b.x.y(), b.v.x(), b.v.y(), b.omega});
     }
     return end;
+  }
+  const sim::world::World& world() const { return world_; }
+  // the deepest overlap of any two bodies now, m, from a fresh collision of every pair (recycled
+  // manifolds carry their separations; this measures where the bodies are)
+  double deepestOverlap() const {
+    double deepest = 0.0;
+    for (const sim::world::Contact& c : world_.findContacts(sim::core::settings::kContactMargin))
+      for (int k = 0; k < c.manifold.count; ++k) deepest = std::min(deepest, c.manifold.points[k].separation);
+    return -deepest;
   }
 
  private:
@@ -376,6 +386,9 @@ int main(int argc, char** argv) {
          "--simd-width", options.simdWidth,
          "rigidreel's soft_step: the widest SIMD, 8 AVX-512, 4 AVX2 or 1 none (the widest the processor has, at most this)")
       ->check(CLI::IsMember({1, 4, 8}));
+  std::vector<std::string> recycles{"off"};
+  app.add_option("--recycle", recycles, "soft_step's contact recycling (repeatable): off, on (sim: {recycle: true})")
+      ->check(CLI::IsMember({"off", "on"}));
   std::vector<std::string> precisions{"double"};
   app.add_option("--precision", precisions,
                  "rigidreel's soft_step: double or float, the numbers of its contact solve (repeatable: a row each; "
@@ -430,7 +443,7 @@ int main(int argc, char** argv) {
       csv << "layout,engine,boxes,settle_steps,first_timed_step,last_timed_step,velocity_iterations,"
              "position_iterations,ms_per_step,cpu_ms_per_step,cpu_ratio_to_box2d,top_displacement_m,max_off_rest_x_m,"
              "fastest_m_per_s,fastest_rad_per_s,moved,worst_top_second_half_m,worst_fastest_second_half_m_per_s,"
-             "diverged,substeps,contact_hertz,cpu_ratio_to_box2d_v3,precision,top_drop_m,gravity,skin\n";
+             "diverged,substeps,contact_hertz,cpu_ratio_to_box2d_v3,precision,top_drop_m,gravity,skin,recycle\n";
   }
   std::printf("gravity %g, dt %.6g, %d velocity and %d position iterations, friction %g, restitution %g\n", settings.gravity,
               settings.dt, settings.velocityIterations, settings.positionIterations, settings.friction, settings.restitution);
@@ -485,6 +498,10 @@ int main(int argc, char** argv) {
           << (name == "box2d" ? skin
               : ours          ? ourSkin
                               : "")
+          << ','
+          << (name.find(":recycle") != std::string::npos ? "on"
+              : name.rfind("soft_step", 0) == 0          ? "off"
+                                                         : "")
           << '\n';
       std::fflush(stdout);
       status |= r.diverged;
@@ -503,17 +520,24 @@ int main(int argc, char** argv) {
       if (peer3) row("box2d-v3", *peer3);
       else std::fprintf(stderr, "--box2d3: %s/b3_pyramid did not run\n", box2d3Dir.c_str());
     }
-    // soft_step once per --precision, the others in doubles
+    // soft_step once per --precision and --recycle, the others in doubles
     for (sim::world::CollisionMethod method : ourMethods)
-      for (const std::string& precision : precisions) {
-        const bool soft = method == sim::world::CollisionMethod::SoftStep;
-        if (!soft && precision != precisions.front()) continue;
-        const sim::world::Precision p = soft ? *sim::world::precisionFromName(precision) : sim::world::Precision::Double;
-        const std::string name =
-            std::string(sim::world::collisionMethodName(method)) + (p == sim::world::Precision::Float ? ":float" : "");
-        OurRun e(*layout, settings, options, method, p);
-        row(name, run(e, name.c_str(), *layout, settleSteps, options));
-      }
+      for (const std::string& precision : precisions)
+        for (const std::string& recycle : recycles) {
+          const bool soft = method == sim::world::CollisionMethod::SoftStep;
+          if (!soft && (precision != precisions.front() || recycle != recycles.front())) continue;
+          const sim::world::Precision p = soft ? *sim::world::precisionFromName(precision) : sim::world::Precision::Double;
+          const bool recycled = soft && recycle == "on";
+          const std::string name = std::string(sim::world::collisionMethodName(method)) +
+                                   (p == sim::world::Precision::Float ? ":float" : "") + (recycled ? ":recycle" : "");
+          OurRun e(*layout, settings, options, method, p, recycled ? sim::core::settings::kRecycleDistance : 0.0);
+          row(name, run(e, name.c_str(), *layout, settleSteps, options));
+          // what recycling kept (the touching pairs of the last step that were not collided again), and
+          // the deepest overlap at the end beside the run without it
+          if (soft && recycles.size() > 1)
+            std::printf("%-22s %-15s deepest overlap %.5f m at the end; recycled %ld of %zu contacts in the last step\n", "", "",
+                        e.deepestOverlap(), e.world().recycledContacts(), e.world().contacts.size());
+        }
   }
   std::printf("/box2d: processor time per step against Box2D 2.4's in this run; /v3: against Box2D v3's (--box2d3)\n");
   return status;

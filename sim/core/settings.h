@@ -105,6 +105,11 @@ inline constexpr int kPositionIterations = 3;
 // the position pass stops when the deepest point is within this, m (Box2D 2.4's
 // b2ContactSolver::SolvePositionConstraints: 3 × linear slop)
 inline constexpr double kPositionSolvedDepth = 3.0 * kLinearSlop;
+// soft_step's contact recycling (sim: {recycle: true}): a pair keeps its manifold while B moved
+// relative to A by less than this, m (Box2D v3's B2_CONTACT_RECYCLE_DISTANCE: 10 linear slops)
+inline constexpr double kRecycleDistance = 10.0 * kLinearSlop;
+// and neither body turned by more than acos of this since it was made (v3's 0.98: 11.5°)
+inline constexpr double kRecycleCos = 0.98;
 
 // the sequential solver solves a two-point manifold's normal impulses together (the 2×2 block)
 // only while its condition number, estimated as K₁₁²/det K, is below this; nearer one point the

@@ -97,6 +97,7 @@ World buildWorld(const SceneDef& def) {
   w.sleep = def.sleep;
   w.threads = def.threads;
   w.precision = def.precision;
+  w.recycleDistance = def.recycleDistance;
 
   // body points are written in the shape's coordinates; the body origin moves to the centroid
   std::vector<Vec2> centroid;

@@ -99,6 +99,7 @@ struct SceneDef {
   bool sleep = false;                             // sequential and soft_step: islands at rest fall asleep (sim/world/sleep.h)
   int threads = 1;  // soft_step: threads sharing each set of contacts (sim: threads; the same state with any)
   Precision precision = Precision::Double;  // soft_step: the numbers of its contact solve (sim: precision)
+  double recycleDistance = 0.0;             // soft_step: contact recycling's distance, m (sim: recycle); 0: off
   std::vector<BodyDef> bodies;
   std::vector<PointForceDef> pointForces;
   std::vector<SpringDef> springs;

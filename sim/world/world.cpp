@@ -157,8 +157,78 @@ bool World::collectContacts(double margin, std::vector<Contact>& found, bool awa
     if (quads) return collideQuadPairs(a, b, margin, out, sideSlack);
     for (int q = 0; q < kQuadLanes; ++q) out[q] = collidePair(k + q);
   };
+  // soft_step's contact recycling (contact_recycle.h): each pair's manifold as made, kept by pair;
+  // while the candidate pairs are last call's (a pile at rest), in place, else merged by pair into a
+  // list for this call's pairs
+  auto keyBits = [](const std::pair<int, int>& p) {
+    return static_cast<std::uint64_t>(p.first) << 32 | static_cast<std::uint32_t>(p.second);
+  };
+  if (recycleReady_) {
+    std::swap(recycle_, recycleNext_);
+    recycleReady_ = false;
+  }
+  const bool recycling = recycleDistance > 0.0 && collisions == CollisionMethod::SoftStep && warmStart;
+  bool inPlace = false;
+  if (recycling) {
+    recycledNow_.assign(pairs_.size(), 0);
+    // (each proxy's reach, once: its shape is fixed)
+    if (extent_.size() != static_cast<size_t>(n)) {
+      extent_.resize(n);
+      for (int i = 0; i < n; ++i) extent_[i] = fixed_[i] ? 0.0 : boundingRadius(*placed_[i].shape);
+    }
+    keysNow_.resize(pairs_.size());
+    for (size_t k = 0; k < pairs_.size(); ++k) keysNow_[k] = keyBits(pairs_[k]);
+    inPlace = keysNow_ == recycleKeys_ && recycle_.size() == pairs_.size();
+    if (!inPlace) {
+      recycleNext_.resize(pairs_.size());
+      recycleReady_ = true;
+      std::swap(recycleKeys_, keysNow_);
+    }
+  } else {
+    recycledNow_.clear();
+  }
+  // pairs_[first, last) into out[0, last − first), each pair that touched keeping its manifold while
+  // it moved little, the others collided
+  auto recycleRange = [&](int first, int last, Manifold* out) {
+    // (merging: last call's entries walked alongside, both sorted by pair)
+    size_t old =
+        !inPlace && first < last
+            ? static_cast<size_t>(std::lower_bound(recycle_.begin(), recycle_.end(), keyBits(pairs_[first]),
+                                                   [](const RecycleEntry& e, std::uint64_t key) { return e.key < key; }) -
+                                  recycle_.begin())
+            : 0;
+    for (int k = first; k < last; ++k) {
+      const std::uint64_t key = keyBits(pairs_[k]);
+      const RecycleEntry* before = nullptr;
+      if (inPlace) {
+        before = &recycle_[k];
+      } else {
+        while (old < recycle_.size() && recycle_[old].key < key) ++old;
+        if (old < recycle_.size() && recycle_[old].key == key) before = &recycle_[old];
+      }
+      RecycleEntry& entry = inPlace ? recycle_[k] : recycleNext_[k];
+      const PlacedShape &a = placed_[pairs_[k].first], &b = placed_[pairs_[k].second];
+      if (skipped(k)) {
+        out[k - first] = Manifold{};
+        entry = RecycleEntry{key};
+        continue;
+      }
+      if (before) {
+        const double extent = std::max(extent_[pairs_[k].first], extent_[pairs_[k].second]);
+        if (const std::optional<Manifold> m = recycledManifold(*before, a.pose, b.pose, extent, recycleDistance)) {
+          out[k - first] = *m;
+          if (!inPlace) entry = *before;
+          recycledNow_[k] = 1;
+          continue;
+        }
+      }
+      out[k - first] = collide(a, b, margin, sideSlack);
+      entry = recycleEntry(key, a.pose, b.pose, out[k - first]);
+    }
+  };
   // the manifolds of pairs_[first, last) into out[0, last − first)
   auto collideRange = [&](int first, int last, Manifold* out) {
+    if (recycling) return recycleRange(first, last, out);
     int k = first;
     for (; k + kQuadLanes <= last; k += kQuadLanes) collideFour(k, out + (k - first));
     for (; k < last; ++k) out[k - first] = collidePair(k);
@@ -290,6 +360,8 @@ bool World::collectContacts(double margin, std::vector<Contact>& found, bool awa
   });
   return false;
 }
+
+long World::recycledContacts() const { return std::count(recycledNow_.begin(), recycledNow_.end(), 1); }
 
 void World::start() {
   if (started_) return;

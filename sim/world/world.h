@@ -16,6 +16,7 @@
 #include "sim/core/settings.h"
 #include "sim/core/step_grid.h"
 #include "sim/world/contact.h"
+#include "sim/world/contact_recycle.h"
 #include "sim/world/contact_watch.h"
 #include "sim/world/methods.h"
 #include "sim/world/sleep.h"
@@ -103,6 +104,9 @@ class World {
   bool sleep = false;
   // soft_step: threads that share each set of contacts (the same state with any number)
   int threads = 1;
+  // soft_step: a touching pair keeps its manifold, carried with the bodies, while it moved less than
+  // this relative to the step it was made in, m (contact_recycle.h); 0: every pair collided every step
+  double recycleDistance = 0.0;
 
   double time = 0.0;
   long steps = 0;
@@ -147,6 +151,8 @@ class World {
   // the last findContacts(margin, found) found the pairs of the list before it, in the same order
   // (then a solver's arrangement of them still holds); false when it cannot tell
   bool contactPairsKept() const { return contactPairsKept_; }
+  // how many of the last findContacts' touching pairs kept their manifold (recycleDistance)
+  long recycledContacts() const;
 
   // sleeping (sleep.h): whether a body sleeps now, and how many do
   bool asleep(int body) const { return sleep_.asleep(body); }
@@ -198,6 +204,14 @@ class World {
   // the broad phase's candidate pairs, kept from one findContacts to the next (the pairs found
   // do not depend on them)
   mutable PairCache pairCache_;
+  // soft_step's contact recycling: each candidate pair's manifold as made, by the index of its pair
+  // (recycle_, for the pairs recycleKeys_), and the list of this call's pairs when they are others
+  // (recycleNext_, swapped in at the next call); which pairs kept theirs; each proxy's reach
+  mutable std::vector<RecycleEntry> recycle_, recycleNext_;
+  mutable std::vector<std::uint64_t> recycleKeys_, keysNow_;
+  mutable std::vector<char> recycledNow_;
+  mutable std::vector<double> extent_;
+  mutable bool recycleReady_ = false;
   mutable std::vector<std::pair<int, int>> pairs_;  // scratch of findContacts: the proxies' pairs,
   mutable std::vector<PlacedShape> placed_;         // and the proxies' shapes where they are,
   mutable std::vector<Aabb> boxes_;                 // their bounds with the margin,

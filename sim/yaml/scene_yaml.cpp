@@ -57,7 +57,7 @@ class SceneReader : public Reader {
     if (const YAML::Node sim = root["sim"]) {
       checkKeys(sim,
                 {"integrator", "dt", "collisions", "iterations", "position_iterations", "substeps", "contact_hertz", "threads",
-                 "precision", "sleep", "max_steps", "max_bodies", "max_vertices", "max_entries", "max_parts"},
+                 "precision", "sleep", "recycle", "max_steps", "max_bodies", "max_vertices", "max_entries", "max_parts"},
                 "sim");
       optional(sim, "max_steps", s.maxSteps, &Reader::positive);
       readSizeLimits(*this, sim, limits_);
@@ -76,6 +76,19 @@ class SceneReader : public Reader {
         fail(sim["sleep"], "'sleep: true' puts resting islands of the stack solvers to sleep, and 'collisions: " +
                                std::string(collisionMethodName(s.collisions)) +
                                "' has none; use 'collisions: sequential', 'soft_step' or 'auto', or drop 'sleep'");
+      if (const YAML::Node recycle = sim["recycle"]) {
+        // on or off, or on with its distance: {distance: m}
+        if (recycle.IsMap()) {
+          checkKeys(recycle, {"distance"}, "recycle");
+          s.recycleDistance = positive(required(recycle, "distance", "'recycle'"), "distance");
+        } else {
+          s.recycleDistance = boolean(recycle, "recycle") ? sim::core::settings::kRecycleDistance : 0.0;
+        }
+        if (s.recycleDistance > 0.0 && s.collisions != CollisionMethod::SoftStep)
+          fail(recycle, "'recycle' keeps the manifolds of soft_step's resting pairs, and 'collisions: " +
+                            std::string(collisionMethodName(s.collisions)) +
+                            "' is not soft_step; use 'collisions: soft_step' or drop 'recycle'");
+      }
       if (sim["threads"]) s.threads = wholeNumber(sim["threads"], "threads", 1, sim::core::settings::kMaxThreads);
       if (sim["precision"]) s.precision = named(sim["precision"], "precision", precisionFromName, kPrecisionNames.list());
       if (sim["integrator"]) {

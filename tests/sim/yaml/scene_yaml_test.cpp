@@ -881,3 +881,14 @@ TEST_CASE("center_of_mass is a point [x, y], and a plane has none") {
       4, 0, {"a plane has no 'center_of_mass'"});
   CHECK(load(kOneBody + "    center_of_mass: [0.5, 0]\n").bodies[0].centerOfMass == sim::core::Vec2(0.5, 0));
 }
+
+TEST_CASE("sim: recycle is soft_step's, on, off or with its distance") {
+  EXPECT_SCENE_ERROR("sim: {recycle: true}\n" + kOneBody, 1, 16, {"'recycle'", "soft_step", "'collisions: auto'"});
+  EXPECT_SCENE_ERROR("sim: {collisions: sequential, recycle: true}\n" + kOneBody, 1, 40, {"'collisions: sequential'"});
+  EXPECT_SCENE_ERROR("sim: {collisions: soft_step, recycle: {distance: -1}}\n" + kOneBody, 1, 0, {"distance"});
+  EXPECT_SCENE_ERROR("sim: {collisions: soft_step, recycle: {angle: 3}}\n" + kOneBody, 1, 0, {"angle"});
+  CHECK(load("sim: {collisions: soft_step, recycle: true}\n" + kOneBody).recycleDistance ==
+        sim::core::settings::kRecycleDistance);
+  CHECK(load("sim: {collisions: soft_step, recycle: {distance: 0.01}}\n" + kOneBody).recycleDistance == 0.01);
+  CHECK(load("sim: {collisions: sequential, recycle: false}\n" + kOneBody).recycleDistance == 0.0);
+}

@@ -1,0 +1,64 @@
+#include "sim/world/contact_recycle.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "sim/core/settings.h"
+
+namespace sim::world {
+using namespace sim::core;
+
+namespace {
+
+// B's pose in A's frame
+Pose relativePose(const Pose& a, const Pose& b) {
+  const Rot inverse{a.q.c, -a.q.s};
+  return {a.toBody(b.x), inverse.then(b.q)};
+}
+
+// cos of the angle turned from `then` to `now`
+double turnedCos(const Rot& now, const Rot& then) { return now.c * then.c + now.s * then.s; }
+
+// `now` after `then`⁻¹: the turn since
+Rot turnSince(const Rot& now, const Rot& then) { return now.then({then.c, -then.s}); }
+
+}  // namespace
+
+RecycleEntry recycleEntry(std::uint64_t key, const Pose& a, const Pose& b, const Manifold& m) {
+  RecycleEntry e;
+  e.key = key;
+  e.valid = m.count > 0;
+  e.qA = a.q, e.qB = b.q;
+  e.relative = relativePose(a, b);
+  for (int k = 0; k < m.count; ++k) {
+    e.anchorA[k] = m.points[k].point - a.x;
+    e.anchorB[k] = m.points[k].point - b.x;
+    e.baseSeparation[k] = m.points[k].separation;
+  }
+  e.manifold = m;
+  return e;
+}
+
+std::optional<Manifold> recycledManifold(const RecycleEntry& e, const Pose& a, const Pose& b, double extent, double distance) {
+  if (!e.valid) return std::nullopt;
+  if (std::min(turnedCos(a.q, e.qA), turnedCos(b.q, e.qB)) <= settings::kRecycleCos) return std::nullopt;
+  // how far any point of B moved relative to A: the shift of its origin, and its turn about it
+  // (sin θ ≈ θ for the small turns that pass)
+  const Pose now = relativePose(a, b);
+  const double turned = std::abs(turnSince(now.q, e.relative.q).s);
+  if (!((now.x - e.relative.x).norm() + extent * turned < distance)) return std::nullopt;
+  Manifold m = e.manifold;
+  const Rot dqA = turnSince(a.q, e.qA), dqB = turnSince(b.q, e.qB);
+  m.separation = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < m.count; ++k) {
+    const Vec2 onA = a.x + dqA.apply(e.anchorA[k]), onB = b.x + dqB.apply(e.anchorB[k]);
+    // the normal points from B to A: B's point moving along −n opens the gap
+    m.points[k].separation = e.baseSeparation[k] - (onB - onA).dot(m.normal);
+    m.points[k].point = 0.5 * (onA + onB);
+    m.separation = std::min(m.separation, m.points[k].separation);
+  }
+  return m;
+}
+
+}  // namespace sim::world

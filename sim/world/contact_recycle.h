@@ -1,0 +1,40 @@
+// Contact recycling for `soft_step` (sim: {recycle: ...}), the idea of Box2D v3's contact
+// recycling (physics_world.c, after the persistent manifolds of PhysX), written anew: a touching
+// pair whose relative pose moved less than a distance since its manifold was made keeps that
+// manifold, its points carried with the two bodies and their separations updated from that motion,
+// instead of being collided again. A resting pile then costs no narrow phase; what it gives up is
+// a manifold made where the bodies are (measured in sim/README.md: soft_step's contact recycling).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+#include "sim/collision/collide.h"
+
+namespace sim::world {
+using sim::collision::Manifold;
+using sim::core::Pose;
+using sim::core::Rot;
+using sim::core::Vec2;
+
+// a manifold as it was made, with what carrying it needs
+struct RecycleEntry {
+  std::uint64_t key = ~std::uint64_t{0};  // the proxy pair (first << 32 | second)
+  bool valid = false;                     // a manifold with points was made
+  Rot qA, qB;                             // the two shapes' rotations then
+  Pose relative;                          // B's shape in A's frame then
+  Vec2 anchorA[2], anchorB[2];            // each point from each shape's origin then, in the world
+  double baseSeparation[2] = {0.0, 0.0};
+  Manifold manifold;
+};
+
+// the entry of manifold `m` made with the shapes at `a` and `b`
+RecycleEntry recycleEntry(std::uint64_t key, const Pose& a, const Pose& b, const Manifold& m);
+
+// `entry`'s manifold carried to the shapes at `a` and `b`: each point's anchors turned with its
+// shape, its separation changed by how far the two material points moved apart along the normal;
+// none when either shape turned more than acos(kRecycleCos) since, or B moved relative to A (its
+// farthest point `extent` from its origin) by `distance` or more
+std::optional<Manifold> recycledManifold(const RecycleEntry& entry, const Pose& a, const Pose& b, double extent, double distance);
+
+}  // namespace sim::world
