@@ -199,7 +199,7 @@ void TeachingArrows::drawOne(const Arrow& a, int index, const sim::world::World&
     case Show::Center:
       // the center of mass, wherever `at` is: the quartered disc, labeled out from it
       draw.point(b.x, style);
-      label(a, vectorText("", b.x, "m", lengthFloor_), b.x, Vec2(1.0, 1.0).normalized(), draw);
+      label(a, vectorText("", b.x, "m", lengthFloor_), b.x, Vec2(-1.0, 0.0), draw);
       break;
     case Show::Path: {
       History::drawPath(history.pointPath(a.path), 1.5 * px_, style, draw);
