@@ -89,7 +89,7 @@ bench: build
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
 	@cmake --build $(BUILD) -j $(JOBS) --target rigidreel_bench rigidreel_stack_bench
 	@mkdir -p out/bench && rm -f out/bench/stacks.csv
-	./$(BUILD)/rigidreel_stack_bench --method sequential --method soft_step --precision double --precision float --recycle off --recycle on --csv out/bench/stacks.csv $(if $(BOX2D3),--box2d3 $(BOX2D3))
+	./$(BUILD)/rigidreel_stack_bench --method sequential --method soft_step --precision double --precision float --recycle off --recycle on --threads 1 --threads 2 --csv out/bench/stacks.csv $(if $(BOX2D3),--box2d3 $(BOX2D3))
 	./$(BUILD)/rigidreel_bench ./$(BUILD)/rigidreel scenes/three_collisions_poll.yaml $(BENCH_BASELINE) $(BENCH_FLAGS)
 
 clean:

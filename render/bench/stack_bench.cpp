@@ -108,6 +108,7 @@ struct RunResult {
   double cpuMsPerStep = 0.0;    // this thread's processor time: what a busy shared machine changes least
   int settleSteps = 0;          // untimed steps before the timed ones
   bool diverged = false;
+  int threads = 1;  // ours: soft_step's threads
 };
 
 // untimed steps before the timing: a dropped layout settles first, a touching one stands already
@@ -379,8 +380,10 @@ int main(int argc, char** argv) {
   app.add_option("--position-iterations", settings.positionIterations, "position iterations")->check(CLI::Range(0, 1000));
   app.add_option("--friction", settings.friction, "Coulomb friction of every box and the ground");
   app.add_option("--substeps", options.substeps, "rigidreel's soft_step: substeps per step")->check(CLI::Range(1, 1000));
-  app.add_option("--threads", options.threads,
-                 "rigidreel's soft_step: threads sharing each set of contacts (processor time counts them all)")
+  std::vector<int> threadCounts{1};
+  app.add_option("--threads", threadCounts,
+                 "rigidreel's soft_step: threads sharing each set of contacts (repeatable: a row each; compare their "
+                 "ms/step, wall time)")
       ->check(CLI::Range(1, sim::core::settings::kMaxThreads));
   app.add_option(
          "--simd-width", options.simdWidth,
@@ -443,14 +446,17 @@ int main(int argc, char** argv) {
       csv << "layout,engine,boxes,settle_steps,first_timed_step,last_timed_step,velocity_iterations,"
              "position_iterations,ms_per_step,cpu_ms_per_step,cpu_ratio_to_box2d,top_displacement_m,max_off_rest_x_m,"
              "fastest_m_per_s,fastest_rad_per_s,moved,worst_top_second_half_m,worst_fastest_second_half_m_per_s,"
-             "diverged,substeps,contact_hertz,cpu_ratio_to_box2d_v3,precision,top_drop_m,gravity,skin,recycle\n";
+             "diverged,substeps,contact_hertz,cpu_ratio_to_box2d_v3,precision,top_drop_m,gravity,skin,recycle,threads,"
+             "wall_ratio_to_box2d_v3\n";
   }
+  const int mostThreads = *std::max_element(threadCounts.begin(), threadCounts.end());
   std::printf("gravity %g, dt %.6g, %d velocity and %d position iterations, friction %g, restitution %g\n", settings.gravity,
               settings.dt, settings.velocityIterations, settings.positionIterations, settings.friction, settings.restitution);
-  std::printf("soft_step: %d substeps, contacts at %g Hz (at most a quarter of the substep rate), %d thread%s\n",
-              options.substeps, options.contactHertz, options.threads, options.threads == 1 ? "" : "s");
+  std::printf("soft_step: %d substeps, contacts at %g Hz (at most a quarter of the substep rate)\n", options.substeps,
+              options.contactHertz);
   // the stepping thread's processor time includes its waits for the others at each set
-  if (options.threads > 1) std::printf("with --threads, compare ms/step (wall): cpu ms is the stepping thread's alone\n");
+  if (mostThreads > 1)
+    std::printf("rows :Nt ran on N threads: compare their ms/step (wall), not cpu ms (the stepping thread's alone)\n");
   const int dropSettle = static_cast<int>(std::lround(options.settleSeconds / settings.dt));
   std::printf(
       "timed: %d steps after building; touching layouts steps 1-%d (standing from the start), dropped ones "
@@ -474,7 +480,10 @@ int main(int argc, char** argv) {
       const bench::StackMetrics& m = r.metrics;
       char ratio[32] = "", ratio3[32] = "", timed[32];
       if (peer && &r != &*peer) std::snprintf(ratio, sizeof ratio, "%.2f", r.cpuMsPerStep / peer->cpuMsPerStep);
-      if (peer3 && &r != &*peer3) std::snprintf(ratio3, sizeof ratio3, "%.2f", r.cpuMsPerStep / peer3->cpuMsPerStep);
+      // (on several threads, wall time against v3's one: the stepping thread's processor time leaves the others out)
+      if (peer3 && &r != &*peer3)
+        std::snprintf(ratio3, sizeof ratio3, r.threads > 1 ? "%.2fw" : "%.2f",
+                      r.threads > 1 ? r.msPerStep / peer3->cpuMsPerStep : r.cpuMsPerStep / peer3->cpuMsPerStep);
       std::snprintf(timed, sizeof timed, "%d-%d", r.settleSteps + 1, r.settleSteps + options.steps);
       std::printf("%-22s %-15s %6zu %11s %9.3f %9.3f %9.4f %9.4f %13.4f %11.4f %9.4f %6d %12.4f %12.4f %9s %7s%s\n",
                   layout->name.c_str(), name.c_str(), layout->boxes.size(), timed, r.msPerStep, r.cpuMsPerStep, m.topDisplacement,
@@ -502,7 +511,10 @@ int main(int argc, char** argv) {
           << (name.find(":recycle") != std::string::npos ? "on"
               : name.rfind("soft_step", 0) == 0          ? "off"
                                                          : "")
-          << '\n';
+          << ',' << (ours ? std::to_string(r.threads) : "") << ',';
+      // wall time against v3's one thread (its processor time: one thread, nothing to wait for)
+      if (peer3 && &r != &*peer3) csv << r.msPerStep / peer3->cpuMsPerStep;
+      csv << '\n';
       std::fflush(stdout);
       status |= r.diverged;
     };
@@ -523,22 +535,31 @@ int main(int argc, char** argv) {
     // soft_step once per --precision and --recycle, the others in doubles
     for (sim::world::CollisionMethod method : ourMethods)
       for (const std::string& precision : precisions)
-        for (const std::string& recycle : recycles) {
-          const bool soft = method == sim::world::CollisionMethod::SoftStep;
-          if (!soft && (precision != precisions.front() || recycle != recycles.front())) continue;
-          const sim::world::Precision p = soft ? *sim::world::precisionFromName(precision) : sim::world::Precision::Double;
-          const bool recycled = soft && recycle == "on";
-          const std::string name = std::string(sim::world::collisionMethodName(method)) +
-                                   (p == sim::world::Precision::Float ? ":float" : "") + (recycled ? ":recycle" : "");
-          OurRun e(*layout, settings, options, method, p, recycled ? sim::core::settings::kRecycleDistance : 0.0);
-          row(name, run(e, name.c_str(), *layout, settleSteps, options));
-          // what recycling kept (the touching pairs of the last step that were not collided again), and
-          // the deepest overlap at the end beside the run without it
-          if (soft && recycles.size() > 1)
-            std::printf("%-22s %-15s deepest overlap %.5f m at the end; recycled %ld of %zu contacts in the last step\n", "", "",
-                        e.deepestOverlap(), e.world().recycledContacts(), e.world().contacts.size());
-        }
+        for (const std::string& recycle : recycles)
+          for (int threads : threadCounts) {
+            const bool soft = method == sim::world::CollisionMethod::SoftStep;
+            if (!soft && (precision != precisions.front() || recycle != recycles.front() || threads != threadCounts.front()))
+              continue;
+            RunOptions withThreads = options;
+            withThreads.threads = soft ? threads : 1;
+            const sim::world::Precision p = soft ? *sim::world::precisionFromName(precision) : sim::world::Precision::Double;
+            const bool recycled = soft && recycle == "on";
+            const std::string name = std::string(sim::world::collisionMethodName(method)) +
+                                     (p == sim::world::Precision::Float ? ":float" : "") + (recycled ? ":recycle" : "") +
+                                     (withThreads.threads > 1 ? ":" + std::to_string(withThreads.threads) + "t" : "");
+            OurRun e(*layout, settings, withThreads, method, p, recycled ? sim::core::settings::kRecycleDistance : 0.0);
+            RunResult result = run(e, name.c_str(), *layout, settleSteps, withThreads);
+            result.threads = withThreads.threads;
+            row(name, result);
+            // what recycling kept (the touching pairs of the last step that were not collided again), and
+            // the deepest overlap at the end beside the run without it
+            if (soft && recycles.size() > 1)
+              std::printf("%-22s %-15s deepest overlap %.5f m at the end; recycled %ld of %zu contacts in the last step\n", "",
+                          "", e.deepestOverlap(), e.world().recycledContacts(), e.world().contacts.size());
+          }
   }
-  std::printf("/box2d: processor time per step against Box2D 2.4's in this run; /v3: against Box2D v3's (--box2d3)\n");
+  std::printf(
+      "/box2d: processor time per step against Box2D 2.4's in this run; /v3: against Box2D v3's (--box2d3), \"w\": our wall "
+      "time on several threads against v3's one\n");
   return status;
 }
