@@ -89,7 +89,8 @@ bool polygonOverlapsBox(const std::vector<Vec2>& polygon, const PixelBox& box) {
 double weightOf(Role role, double opacity) {
   double w = kCovers;
   switch (role) {
-    case Role::Body: w = kBody; break;
+    case Role::Body:
+    case Role::BodyPart: w = kBody; break;
     case Role::StaticBody:
     case Role::Trail:
     case Role::Path: w = kFaint; break;
@@ -105,7 +106,9 @@ double weightOf(Role role, double opacity) {
 }
 
 // a body's or an obstacle's area, drawn solid: a text over it gets a backing
-bool solidRole(const Pen& pen) { return (pen.role == Role::Body || pen.role == Role::StaticBody) && pen.opacity >= 0.5; }
+bool solidRole(const Pen& pen) {
+  return (pen.role == Role::Body || pen.role == Role::BodyPart || pen.role == Role::StaticBody) && pen.opacity >= 0.5;
+}
 
 Vec2 rotated(const Vec2& v, double angle) {
   const double c = std::cos(angle), s = std::sin(angle);

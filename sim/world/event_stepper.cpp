@@ -129,6 +129,14 @@ void sweepImpacts(World& world, const std::vector<Contact>& touching, double t) 
   }
 }
 
+// a pair of parts at rest on each other (a body of one shape is its own part 0): a body made of
+// parts may rest on one part and strike with another
+struct RestingPair {
+  int a = 0, partA = 0, b = 0, partB = 0;
+  bool operator==(const RestingPair&) const = default;
+};
+RestingPair restingPairOf(const Contact& c) { return {c.a, c.partA, c.b, c.partB}; }
+
 // a row of the resting contacts' forces: one point, its normal, m_eff⁻¹ and the push λ
 struct RestingRow {
   int a, b;
@@ -184,8 +192,14 @@ class EventStepper final : public Method {
   }
 
  private:
-  bool isResting(int a, int b) const {
-    return std::find(restingPairs_.begin(), restingPairs_.end(), std::make_pair(a, b)) != restingPairs_.end();
+  bool isResting(const RestingPair& p) const {
+    return std::find(restingPairs_.begin(), restingPairs_.end(), p) != restingPairs_.end();
+  }
+
+  // a resting pair's manifold with its two parts where their bodies are at `pa` and `pb`
+  static Manifold collideResting(const World& world, const RestingPair& p, const Pose& pa, const Pose& pb, double margin) {
+    const Shape &a = world.bodies[p.a].shape, &b = world.bodies[p.b].shape;
+    return collide(partShape(a, p.partA), partPoseOf(a, p.partA, pa), partShape(b, p.partB), partPoseOf(b, p.partB, pb), margin);
   }
 
   // where the bodies are after τ of motion from `from`
@@ -223,21 +237,30 @@ class EventStepper final : public Method {
       // plain ints, not structured bindings: the motion lambda captures them, which C++20 allows
       // and clang 14 does not
       const int i = pair.first, j = pair.second;
-      if (isResting(i, j)) continue;
-      const Shape &a = world.bodies[i].shape, &b = world.bodies[j].shape;
-      ToiInput in;
-      in.a = &a, in.b = &b;
-      in.motion = [&](double tau) -> PosePair {
-        if (gravityOnly_)
-          return {uniformlyAccelerated(from[i], k0[i], tau).pose(), uniformlyAccelerated(from[j], k0[j], tau).pose()};
-        const States y = motion(world, step, from, tau);
-        return {y[i].pose(), y[j].pose()};
-      };
+      const Shape &bodyA = world.bodies[i].shape, &bodyB = world.bodies[j].shape;
+      // no point of either body approaches faster than this (the whole body's reach: a part turns
+      // about its body's center of mass)
       const double margin = gravityOnly_ ? 1.0 : settings::kApproachBoundMargin;
-      in.approachBound = margin * std::max(approachBound(a, from[i], b, from[j]), approachBound(a, end[i], b, end[j]));
-      in.horizon = horizon, in.span = span, in.tolerance = tol, in.touching = touch;
-      // a later pair searches only up to the earliest impact found so far
-      if (const std::optional<double> tau = timeOfImpact(in)) first = horizon = *tau;
+      const double bound =
+          margin * std::max(approachBound(bodyA, from[i], bodyB, from[j]), approachBound(bodyA, end[i], bodyB, end[j]));
+      // each pair of parts not at rest on each other (a body of one shape is its own part)
+      for (int pa = 0; pa < partCount(bodyA); ++pa)
+        for (int pb = 0; pb < partCount(bodyB); ++pb) {
+          if (isResting({i, pa, j, pb})) continue;
+          ToiInput in;
+          in.a = &partShape(bodyA, pa), in.b = &partShape(bodyB, pb);
+          in.motion = [&, i, j, pa, pb](double tau) -> PosePair {
+            if (gravityOnly_)
+              return {partPoseOf(bodyA, pa, uniformlyAccelerated(from[i], k0[i], tau).pose()),
+                      partPoseOf(bodyB, pb, uniformlyAccelerated(from[j], k0[j], tau).pose())};
+            const States y = motion(world, step, from, tau);
+            return {partPoseOf(bodyA, pa, y[i].pose()), partPoseOf(bodyB, pb, y[j].pose())};
+          };
+          in.approachBound = bound;
+          in.horizon = horizon, in.span = span, in.tolerance = tol, in.touching = touch;
+          // a later pair searches only up to the earliest impact found so far
+          if (const std::optional<double> tau = timeOfImpact(in)) first = horizon = *tau;
+        }
     }
     return first;
   }
@@ -246,7 +269,7 @@ class EventStepper final : public Method {
   void resolveImpactsAt(World& world, const TimeStep& step, double t) {
     const double touch = settings::kTouchingTolerance * world.sceneSize();
     std::vector<Contact> touching = world.findContacts(touch);
-    std::erase_if(touching, [&](const Contact& c) { return isResting(c.a, c.b); });
+    std::erase_if(touching, [&](const Contact& c) { return isResting(restingPairOf(c)); });
     sweepImpacts(world, touching, t);
     restSlowContacts(world, step, touching, t);
   }
@@ -258,7 +281,7 @@ class EventStepper final : public Method {
   void restSlowContacts(World& world, const TimeStep& step, const std::vector<Contact>& touching, double t) {
     const double touch = settings::kTouchingTolerance * world.sceneSize();
     for (const Contact& c : touching) {
-      if (isResting(c.a, c.b)) continue;
+      if (isResting(restingPairOf(c))) continue;
       Body &a = world.bodies[c.a], &b = world.bodies[c.b];
       const Vec2 n = c.manifold.normal;
       double fastest = 0.0;
@@ -266,7 +289,7 @@ class EventStepper final : public Method {
         fastest = std::max(fastest, std::abs(n.dot(relativeVelocity(a, b, c.manifold.points[k].point))));
       if (fastest > settings::kRestingSpeed) continue;
       const States ahead = motion(world, step, world.states(), world.dt);
-      const double gap = collide(a.shape, ahead[c.a].pose(), b.shape, ahead[c.b].pose(), 0.0).separation;
+      const double gap = collideResting(world, restingPairOf(c), ahead[c.a].pose(), ahead[c.b].pose(), 0.0).separation;
       if (gap >= -touch) continue;
       // the rest of the geometric series of bounces is below kRestingSpeed: end it here
       for (int k = 0; k < c.manifold.count; ++k) {
@@ -274,7 +297,7 @@ class EventStepper final : public Method {
         const double vn = n.dot(relativeVelocity(a, b, r));
         if (vn != 0.0) applyImpulsePair(a, b, r, (-vn / inverseEffectiveMass(a, b, r, n)) * n);
       }
-      restingPairs_.emplace_back(c.a, c.b);
+      restingPairs_.push_back(restingPairOf(c));
       // still moving: any point of either body faster than the resting speed
       const auto moves = [](const Body& body) {
         return !body.isStatic && body.v.norm() + std::abs(body.omega) * boundingRadius(body.shape) > settings::kRestingSpeed;
@@ -286,25 +309,22 @@ class EventStepper final : public Method {
   // resting contacts neither sink in nor approach; the pairs that came apart are released
   void holdRestingContacts(World& world) {
     const double touch = settings::kTouchingTolerance * world.sceneSize();
-    std::erase_if(restingPairs_, [&](const std::pair<int, int>& p) {
-      Body &a = world.bodies[p.first], &b = world.bodies[p.second];
-      // (each pair of parts that touches, for bodies made of parts)
-      collideParts(a.shape, a.pose(), b.shape, b.pose(), settings::kRestingReach * touch, parts_);
-      if (parts_.empty()) return true;  // they came apart
+    std::erase_if(restingPairs_, [&](const RestingPair& p) {
+      Body &a = world.bodies[p.a], &b = world.bodies[p.b];
+      const Manifold m = collideResting(world, p, a.pose(), b.pose(), settings::kRestingReach * touch);
+      if (m.count == 0) return true;  // they came apart
       bool separating = true;
-      for (const PartManifold& pm : parts_)
-        for (int k = 0; k < pm.manifold.count; ++k) {
-          const Manifold& m = pm.manifold;
-          const Vec2 r = m.points[k].point;
-          // no sinking in: remove round-off overlap and approach without restitution
-          if (m.points[k].separation < 0.0) {
-            const double share = a.invMass + b.invMass;
-            a.x -= (m.points[k].separation * a.invMass / share) * m.normal;
-            b.x += (m.points[k].separation * b.invMass / share) * m.normal;
-          }
-          if (m.normal.dot(relativeVelocity(a, b, r)) < 0.0) resolveImpact(a, b, r, m.normal, 0.0, 0.0);
-          if (m.normal.dot(relativeVelocity(a, b, r)) <= settings::kRestingSpeed) separating = false;
+      for (int k = 0; k < m.count; ++k) {
+        const Vec2 r = m.points[k].point;
+        // no sinking in: remove round-off overlap and approach without restitution
+        if (m.points[k].separation < 0.0) {
+          const double share = a.invMass + b.invMass;
+          a.x -= (m.points[k].separation * a.invMass / share) * m.normal;
+          b.x += (m.points[k].separation * b.invMass / share) * m.normal;
         }
+        if (m.normal.dot(relativeVelocity(a, b, r)) < 0.0) resolveImpact(a, b, r, m.normal, 0.0, 0.0);
+        if (m.normal.dot(relativeVelocity(a, b, r)) <= settings::kRestingSpeed) separating = false;
+      }
       return separating;
     });
   }
@@ -312,16 +332,15 @@ class EventStepper final : public Method {
   // one row per point of every resting pair at state y
   std::vector<RestingRow> restingRows(const World& world, const States& y) const {
     std::vector<RestingRow> rows;
-    for (const auto& [i, j] : restingPairs_) {
-      collideParts(world.bodies[i].shape, y[i].pose(), world.bodies[j].shape, y[j].pose(),
-                   settings::kRestingReach * settings::kTouchingTolerance * world.sceneSize(), parts_);
-      for (const PartManifold& pm : parts_)
-        for (int k = 0; k < pm.manifold.count; ++k) {
-          const Manifold& m = pm.manifold;
-          Body a = world.bodies[i], b = world.bodies[j];
-          a.x = y[i].x, b.x = y[j].x;
-          rows.push_back({i, j, m.points[k].point, m.normal, inverseEffectiveMass(a, b, m.points[k].point, m.normal)});
-        }
+    for (const RestingPair& p : restingPairs_) {
+      const int i = p.a, j = p.b;
+      const Manifold m = collideResting(world, p, y[i].pose(), y[j].pose(),
+                                        settings::kRestingReach * settings::kTouchingTolerance * world.sceneSize());
+      for (int k = 0; k < m.count; ++k) {
+        Body a = world.bodies[i], b = world.bodies[j];
+        a.x = y[i].x, b.x = y[j].x;
+        rows.push_back({i, j, m.points[k].point, m.normal, inverseEffectiveMass(a, b, m.points[k].point, m.normal)});
+      }
     }
     return rows;
   }
@@ -358,9 +377,8 @@ class EventStepper final : public Method {
       }
   }
 
-  bool gravityOnly_ = true;                        // bodies move on exact parabolas
-  std::vector<std::pair<int, int>> restingPairs_;  // contacts held at rest (Zeno)
-  mutable std::vector<PartManifold> parts_;        // scratch: a resting pair's touching parts
+  bool gravityOnly_ = true;                // bodies move on exact parabolas
+  std::vector<RestingPair> restingPairs_;  // contacts held at rest (Zeno), pair of parts by pair of parts
 };
 
 }  // namespace

@@ -235,6 +235,8 @@ class SceneReader : public Reader {
       const YAML::Node plane = n["shape"]["plane"];
       optional(plane, "point", b.position, &Reader::vec2);
     }
+    if (b.isStatic && b.centerOfMass)
+      fail(n["center_of_mass"], "a static body never moves, so where its mass is does not matter; drop 'center_of_mass'");
     if (b.isStatic && b.shape.kind == ShapeKind::Compound)
       fail(n["static"],
            "a static body cannot be made of parts yet; give each part as a static body of its own (static bodies "

@@ -892,3 +892,7 @@ TEST_CASE("sim: recycle is soft_step's, on, off or with its distance") {
   CHECK(load("sim: {collisions: soft_step, recycle: {distance: 0.01}}\n" + kOneBody).recycleDistance == 0.01);
   CHECK(load("sim: {collisions: sequential, recycle: false}\n" + kOneBody).recycleDistance == 0.0);
 }
+
+TEST_CASE("a static body has no center_of_mass to move") {
+  EXPECT_SCENE_ERROR(kOneBody + "    static: true\n    center_of_mass: [0.5, 0]\n", 5, 0, {"static body", "center_of_mass"});
+}
