@@ -184,7 +184,9 @@ bool World::collectContacts(double margin, std::vector<Contact>& found, bool awa
       recycleReady_ = true;
       std::swap(recycleKeys_, keysNow_);
     }
-  } else {
+  } else if (warmStart) {
+    // (a solver's call without recycling; a look at the contacts, findContacts(margin), leaves the
+    // count of the solver's last call as it was)
     recycledNow_.clear();
   }
   // pairs_[first, last) into out[0, last − first), each pair that touched keeping its manifold while

@@ -151,7 +151,7 @@ class World {
   // the last findContacts(margin, found) found the pairs of the list before it, in the same order
   // (then a solver's arrangement of them still holds); false when it cannot tell
   bool contactPairsKept() const { return contactPairsKept_; }
-  // how many of the last findContacts' touching pairs kept their manifold (recycleDistance)
+  // how many of the solver's last findContacts' touching pairs kept their manifold (recycleDistance)
   long recycledContacts() const;
 
   // sleeping (sleep.h): whether a body sleeps now, and how many do
