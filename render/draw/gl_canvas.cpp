@@ -22,7 +22,8 @@ Vec2 perpendicular(const Vec2& d) { return {-d.y(), d.x()}; }
 
 }  // namespace
 
-GlCanvas::GlCanvas(GlContext& gl, TextRenderer& text, const Style& style) : gl_(gl), textRenderer_(text), style_(style) {}
+GlCanvas::GlCanvas(GlContext& gl, TextRenderer& text, const Style& style)
+    : gl_(gl), textRenderer_(text), style_(style), batch_(gl.triangleStore()) {}
 
 void GlCanvas::begin(const Camera& camera) { start(camera, true); }
 
@@ -54,7 +55,7 @@ void GlCanvas::start(const Camera& camera, bool clear) {
   glEnable(GL_STENCIL_TEST);
   glStencilMask(0xff);
   stencil_ = glStencil_ = -1;  // unknown: the first primitive sets the stencil state
-  batch_.clear();
+  batchFirst_ = batch_.size();
   batching_ = false;
   drawCalls_ = 0;
   // the color only (an overlay keeps what is drawn): each primitive's stencil value is one no pixel
@@ -410,22 +411,16 @@ void GlCanvas::endShape() {
 }
 
 void GlCanvas::flush() {
-  if (batch_.empty()) return;
+  if (batch_.size() == batchFirst_) return;
   // opaque: no stencil test, nothing marked
   if (glStencil_ != 0) {
     glStencilFunc(GL_ALWAYS, 0, 0xff);
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
     glStencil_ = 0;
   }
-  glEnableClientState(GL_VERTEX_ARRAY);
-  glEnableClientState(GL_COLOR_ARRAY);
-  glVertexPointer(2, GL_FLOAT, sizeof(BatchVertex), &batch_[0].x);
-  glColorPointer(4, GL_FLOAT, sizeof(BatchVertex), &batch_[0].r);
-  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(batch_.size()));
-  glDisableClientState(GL_COLOR_ARRAY);
-  glDisableClientState(GL_VERTEX_ARRAY);
+  gl_.drawTriangles(batchFirst_);
   ++drawCalls_;
-  batch_.clear();
+  batchFirst_ = batch_.size();
 }
 
 void GlCanvas::fillConvex(const std::vector<Vec2>& vertices) {
@@ -456,9 +451,10 @@ int GlCanvas::discSegments(double radius, double tolerance) const {
 
 void GlCanvas::fillDisc(const Vec2& center, double radius, double tolerance) {
   const std::vector<Vec2>& circle = unitCircle(discSegments(radius, tolerance));
+  // a fan from its first rim point: n − 2 triangles, not the n a fan from the center makes, and the
+  // same samples (the same outline, each sample inside it covered once by either)
   shape(GL_TRIANGLE_FAN);
-  vertex(center);
-  for (const Vec2& u : circle) vertex(center + radius * u);
+  for (size_t i = 0; i + 1 < circle.size(); ++i) vertex(center + radius * circle[i]);
   endShape();
 }
 

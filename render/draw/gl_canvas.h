@@ -137,11 +137,11 @@ class GlCanvas final : public Canvas {
   double px_ = 1.0;     // world length of one output pixel
   int stencil_ = -1;    // the stencil value of the primitive being drawn, 0 for none
   int glStencil_ = -1;  // the stencil value GL's stencil test is set to (-1: unknown)
-  // the batch: opaque triangles and translucent ones that cover no pixel twice, each vertex with its color, as GL takes them
-  struct BatchVertex {
-    float x, y, r, g, b, a;
-  };
-  std::vector<BatchVertex> batch_;
+  // the batch: opaque triangles and translucent ones that cover no pixel twice, each vertex with its
+  // color, as GL takes them, in the context's store from batchFirst_ on
+  using BatchVertex = TriangleVertex;
+  std::vector<BatchVertex>& batch_;
+  size_t batchFirst_ = 0;
   bool batching_ = false;         // the primitive being drawn goes into the batch
   std::array<float, 4> color_{};  // its color
   unsigned shapeMode_ = 0;        // its fan or strip, and its vertices so far

@@ -31,6 +31,11 @@ struct ReadCost {
   double resolve = 0.0;   // the samples averaged into the frame
 };
 
+// a vertex of a batch of triangles as GL takes it: position (relative to the camera center) and color
+struct TriangleVertex {
+  float x, y, r, g, b, a;
+};
+
 // the anti-aliasing frames are drawn with (chosen by measurement, see gl_context.cpp)
 Antialiasing defaultAntialiasing();
 
@@ -53,9 +58,16 @@ class GlContext {
   std::string version();
   // make this context current (after another one was)
   void makeCurrent();
-  // a frame begins: the GL calls until read() are recorded (a display list), to be drawn once per
-  // sample; a canvas calls this before its first GL call of a frame
+  // a frame begins: the GL calls until read() are recorded (display lists, and the triangles given to
+  // drawTriangles), to be drawn once per sample; a canvas calls this before its first GL call of a frame
   void beginFrame();
+  // the frame's store of triangles: a canvas appends a batch's vertices here, then drawTriangles()
+  std::vector<TriangleVertex>& triangleStore() { return triangles_; }
+  // the store's vertices from `first` on drawn as GL_TRIANGLES, in order with the GL calls around
+  // them: within a frame they stay in the store, sent to GL once and drawn at each sample position
+  // from there (not compiled into a display list: see gl_context.cpp); outside one, drawn at once
+  // and taken out of the store
+  void drawTriangles(size_t first);
   // the frame starts cleared to `background` (with `depth`, its depth and stencil too): cleared by
   // read() before each drawing, never under a scissor (see gl_context.cpp)
   void clearFrame(const Color& background, bool depth);
@@ -92,9 +104,19 @@ class GlContext {
   osmesa_context* context_ = nullptr;
   std::vector<uint8_t> buffer_;  // OSMesa's own color buffer, never drawn into (the framebuffer object is)
   unsigned framebuffer_ = 0, renderbuffers_[2] = {0, 0};
-  // the display lists of the frame being drawn: its static part, then the rest
-  unsigned lists_[2] = {0, 0};
-  int part_ = 0;                        // the list being recorded
+  // the frame being drawn, in order: each step a display list, then the store's triangles from
+  // `first` (`count` of them, maybe none), in the static part (0) or the rest (1)
+  struct Step {
+    int part = 0;
+    unsigned list = 0;
+    size_t first = 0, count = 0;
+  };
+  std::vector<Step> steps_;
+  std::vector<unsigned> lists_;            // display lists made so far, reused from frame to frame
+  std::vector<TriangleVertex> triangles_;  // the frame's triangles (drawTriangles)
+  unsigned vertexBuffer_ = 0;              // the GL buffer they are sent to for drawing, and its size
+  size_t bufferBytes_ = 0;
+  int part_ = 0;                        // the part being recorded
   bool recording_ = false;              // between beginFrame() and read()
   std::optional<Bounds> drawnWithin_;   // what drawnWithin() said of the frame being drawn
   std::optional<Bounds> movingWithin_;  // what movingWithin() said of it
@@ -122,6 +144,15 @@ class GlContext {
   };
   // the region of the frame that output pixels `b` may touch at any sample position
   Region regionOf(const Bounds& b) const;
+  // the display list steps_.size() records into, begun
+  void beginList();
+  // the list being recorded ended, a step with the triangles from `first` on (none: `first` is the
+  // store's size)
+  void endStep(size_t first);
+  // the frame's triangles sent to GL's buffer, for drawSteps()
+  void sendTriangles();
+  // the recorded steps of parts below `parts` drawn once (at one sample position)
+  void drawSteps(int parts);
   // the recorded lists up to `parts` drawn at the sample positions and resolved into `frame`
   // (top row first) within `region`; with `firstWhole`, the first drawing is the whole frame and
   // read into `frame` (outside the region every sample is alike), else only the region is drawn

@@ -87,6 +87,12 @@ RIGIDREEL_GL(void, glDisableClientState, (GLenum a), (a))
 RIGIDREEL_GL(void, glVertexPointer, (GLint n, GLenum t, GLsizei s, const GLvoid* p), (n, t, s, p))
 RIGIDREEL_GL(void, glColorPointer, (GLint n, GLenum t, GLsizei s, const GLvoid* p), (n, t, s, p))
 RIGIDREEL_GL(void, glDrawArrays, (GLenum m, GLint first, GLsizei count), (m, first, count))
+// a recorded frame's batches, kept in a buffer object across its sample positions (gl_context.cpp)
+RIGIDREEL_GL(void, glGenBuffers, (GLsizei n, GLuint* b), (n, b))
+RIGIDREEL_GL(void, glDeleteBuffers, (GLsizei n, const GLuint* b), (n, b))
+RIGIDREEL_GL(void, glBindBuffer, (GLenum t, GLuint b), (t, b))
+RIGIDREEL_GL(void, glBufferData, (GLenum t, GLsizeiptr n, const void* d, GLenum u), (t, n, d, u))
+RIGIDREEL_GL(void, glBufferSubData, (GLenum t, GLintptr o, GLsizeiptr n, const void* d), (t, o, n, d))
 // the 3D canvas (render/draw3d): solids with a depth buffer, outlines offset in depth
 RIGIDREEL_GL(void, glVertex4d, (GLdouble x, GLdouble y, GLdouble z, GLdouble w), (x, y, z, w))
 RIGIDREEL_GL(void, glColor3d, (GLdouble r, GLdouble g, GLdouble b), (r, g, b))
@@ -123,7 +129,7 @@ RIGIDREEL_GL(void, glRenderbufferStorageMultisample, (GLenum t, GLsizei s, GLenu
 RIGIDREEL_GL(void, glBlitFramebuffer,
              (GLint a, GLint b, GLint c, GLint d, GLint e, GLint f, GLint g, GLint h, GLbitfield m, GLenum filter),
              (a, b, c, d, e, f, g, h, m, filter))
-// frames drawn once per sample position (gl_context.cpp): a display list replayed with the viewport
+// frames drawn once per sample position (gl_context.cpp): display lists replayed with the viewport
 // shifted, read back top row first
 RIGIDREEL_GL(GLuint, glGenLists, (GLsizei n), (n))
 RIGIDREEL_GL(void, glDeleteLists, (GLuint l, GLsizei n), (l, n))
