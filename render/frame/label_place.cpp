@@ -6,6 +6,7 @@
 #include <iostream>
 #include <limits>
 #include <numbers>
+#include <span>
 
 #include "render/draw/text.h"
 #include "render/jobs/interrupt.h"
@@ -29,7 +30,7 @@ constexpr double kMaxMove = 4.0, kStep = 0.5, kLeaderFrom = 1.0;
 // a contact point's dot and an arrow's head (10 px long, 9 wide: gl_canvas.cpp) as discs, px
 constexpr double kDotPx = 4.0, kHeadPx = 5.0;
 
-PixelBox boundsOf(const std::vector<Vec2>& points, double grow) {
+PixelBox boundsOf(std::span<const Vec2> points, double grow) {
   PixelBox b{kNever, kNever, -kNever, -kNever};
   for (const Vec2& p : points) {
     b.left = std::min(b.left, p.x()), b.right = std::max(b.right, p.x());
@@ -37,6 +38,8 @@ PixelBox boundsOf(const std::vector<Vec2>& points, double grow) {
   }
   return b.grown(grow);
 }
+
+PixelBox boundsOf(const Vec2& p, double grow) { return boundsOf(std::span<const Vec2>(&p, 1), grow); }
 
 Vec2 closestInBox(const PixelBox& b, const Vec2& p) {
   return {std::clamp(p.x(), b.left, b.right), std::clamp(p.y(), b.top, b.bottom)};
@@ -192,7 +195,16 @@ void LabelPlacer::polygon(const std::vector<Vec2>& vertices, const Pen& pen) {
   std::vector<Vec2> px;
   for (const Vec2& v : vertices) px.push_back(camera_.toPixel(v));
   // the pixel frame flips y, which turns the polygon's winding but not its convexity
-  addObstacle({Obstacle::Shape::Polygon, px, 0.0, boundsOf(px, 0.0), pen.body, weightOf(pen.role, pen.opacity), true, -1,
+  const PixelBox bounds = boundsOf(px, 0.0);
+  addObstacle({Obstacle::Shape::Polygon,
+               {},
+               std::move(px),
+               0.0,
+               bounds,
+               pen.body,
+               weightOf(pen.role, pen.opacity),
+               true,
+               -1,
                solidRole(pen)});
 }
 
@@ -200,8 +212,16 @@ void LabelPlacer::circle(const Vec2& center, double radius, const Pen& pen) {
   target_.circle(center, radius, pen);
   const Vec2 c = camera_.toPixel(center);
   const double r = radius / camera_.pixelSize();
-  addObstacle(
-      {Obstacle::Shape::Disc, {c}, r, boundsOf({c}, r), pen.body, weightOf(pen.role, pen.opacity), true, -1, solidRole(pen)});
+  addObstacle({Obstacle::Shape::Disc,
+               {c, c},
+               {},
+               r,
+               boundsOf(c, r),
+               pen.body,
+               weightOf(pen.role, pen.opacity),
+               true,
+               -1,
+               solidRole(pen)});
 }
 
 void LabelPlacer::halfPlane(const Vec2& point, const Vec2& normal, const Pen& pen) {
@@ -210,41 +230,41 @@ void LabelPlacer::halfPlane(const Vec2& point, const Vec2& normal, const Pen& pe
   const Vec2 p = camera_.toPixel(point), n = Vec2(normal.x(), -normal.y()).normalized();
   const PixelBox frame{0, 0, static_cast<double>(camera_.widthPx()), static_cast<double>(camera_.heightPx())};
   addObstacle(
-      {Obstacle::Shape::HalfPlane, {p, n}, 0.0, frame, pen.body, weightOf(pen.role, pen.opacity), true, -1, solidRole(pen)});
+      {Obstacle::Shape::HalfPlane, {p, n}, {}, 0.0, frame, pen.body, weightOf(pen.role, pen.opacity), true, -1, solidRole(pen)});
   // its boundary is a line like any other
   const Vec2 along(-n.y(), n.x());
   const double reach = camera_.widthPx() + camera_.heightPx();
-  const std::vector<Vec2> ends = {p - reach * along, p + reach * along};
-  addObstacle({Obstacle::Shape::Stroke, ends, 1.0, boundsOf(ends, 1.0), -1, kCovers * std::clamp(pen.opacity, 0.0, 1.0)});
+  const std::array<Vec2, 2> ends = {p - reach * along, p + reach * along};
+  addObstacle({Obstacle::Shape::Stroke, ends, {}, 1.0, boundsOf(ends, 1.0), -1, kCovers * std::clamp(pen.opacity, 0.0, 1.0)});
 }
 
 void LabelPlacer::segment(const Vec2& a, const Vec2& b, const Pen& pen) {
   target_.segment(a, b, pen);
-  const std::vector<Vec2> ends = {camera_.toPixel(a), camera_.toPixel(b)};
+  const std::array<Vec2, 2> ends = {camera_.toPixel(a), camera_.toPixel(b)};
   const bool continues = lastSegment_ && lastSegment_->role == pen.role && lastSegment_->body == pen.body &&
                          lastSegment_->opacity == pen.opacity && lastSegment_->color == pen.color;
   if (!continues) ++groups_;
   addObstacle(
-      {Obstacle::Shape::Stroke, ends, 1.5, boundsOf(ends, 1.5), pen.body, weightOf(pen.role, pen.opacity), false, groups_});
+      {Obstacle::Shape::Stroke, ends, {}, 1.5, boundsOf(ends, 1.5), pen.body, weightOf(pen.role, pen.opacity), false, groups_});
   lastSegment_ = pen;
 }
 
 void LabelPlacer::point(const Vec2& p, const Pen& pen) {
   target_.point(p, pen);
   const Vec2 c = camera_.toPixel(p);
-  addObstacle({Obstacle::Shape::Disc, {c}, kDotPx, boundsOf({c}, kDotPx), -1, weightOf(pen.role, pen.opacity)});
+  addObstacle({Obstacle::Shape::Disc, {c, c}, {}, kDotPx, boundsOf(c, kDotPx), -1, weightOf(pen.role, pen.opacity)});
 }
 
 void LabelPlacer::arrow(const Vec2& tail, const Vec2& head, const Pen& pen) {
   target_.arrow(tail, head, pen);
-  const std::vector<Vec2> ends = {camera_.toPixel(tail), camera_.toPixel(head)};
+  const std::array<Vec2, 2> ends = {camera_.toPixel(tail), camera_.toPixel(head)};
   const double w = weightOf(pen.role, pen.opacity);
-  addObstacle({Obstacle::Shape::Stroke, ends, 1.5, boundsOf(ends, 1.5), pen.body, w});
+  addObstacle({Obstacle::Shape::Stroke, ends, {}, 1.5, boundsOf(ends, 1.5), pen.body, w});
   // the head: a disc over its barbs, behind the tip
   const Vec2 d = ends[1] - ends[0];
   if (d.norm() > kHeadPx) {
     const Vec2 barbs = ends[1] - (kHeadPx / d.norm()) * d;
-    addObstacle({Obstacle::Shape::Disc, {barbs}, kHeadPx, boundsOf({barbs}, kHeadPx), pen.body, w});
+    addObstacle({Obstacle::Shape::Disc, {barbs, barbs}, {}, kHeadPx, boundsOf(barbs, kHeadPx), pen.body, w});
   }
 }
 
@@ -275,10 +295,10 @@ PixelBox LabelPlacer::boxAt(const Vec2& center, const Pending& p) const {
 
 bool LabelPlacer::hits(const Obstacle& o, const PixelBox& box) {
   switch (o.shape) {
-    case Obstacle::Shape::Polygon: return polygonOverlapsBox(o.points, box);
-    case Obstacle::Shape::Disc: return (closestInBox(box, o.points[0]) - o.points[0]).norm() < o.radius;
+    case Obstacle::Shape::Polygon: return polygonOverlapsBox(o.vertices, box);
+    case Obstacle::Shape::Disc: return (closestInBox(box, o.at[0]) - o.at[0]).norm() < o.radius;
     case Obstacle::Shape::Stroke: {
-      const Vec2 &a = o.points[0], &b = o.points[1];
+      const Vec2 &a = o.at[0], &b = o.at[1];
       if (segmentCrossesBox(a, b, box)) return true;
       double d = std::min((closestInBox(box, a) - a).norm(), (closestInBox(box, b) - b).norm());
       for (const Vec2& c :
@@ -288,7 +308,7 @@ bool LabelPlacer::hits(const Obstacle& o, const PixelBox& box) {
     }
     case Obstacle::Shape::HalfPlane: {
       // the solid side is n·(r − p) ≤ 0
-      const Vec2 &q = o.points[0], &n = o.points[1];
+      const Vec2 &q = o.at[0], &n = o.at[1];
       double least = kNever;
       for (const Vec2& c :
            {Vec2(box.left, box.top), Vec2(box.right, box.top), Vec2(box.right, box.bottom), Vec2(box.left, box.bottom)})

@@ -26,6 +26,7 @@
 //  anchor    └─────────┘     then further out along the direction, half a line at a time
 #pragma once
 
+#include <array>
 #include <functional>
 #include <optional>
 #include <string>
@@ -86,14 +87,17 @@ class LabelPlacer final : public Canvas {
   // something on screen a label should not cover, in pixels
   struct Obstacle {
     enum class Shape { Polygon, Disc, Stroke, HalfPlane } shape;
-    std::vector<Vec2> points;  // the vertices; the center; the ends; a point on the boundary and the outward normal
-    double radius = 0.0;       // a disc's radius, a stroke's half width
-    PixelBox bounds;           // around it all (the whole frame for a half-plane)
-    int body = -1;             // whose it is: a body's area is free to its labels, its marks to its name
-    double weight = 0.0;       // what covering it costs, in lines; infinity: never
-    bool area = false;         // a body's area rather than a mark drawn for it
-    int group = -1;            // the pieces of one polyline (a trail, an arc) share one: covered once
-    bool solid = false;        // a body's or a static body's area: a text over it gets a backing
+    // a disc's center (first); a stroke's ends; a point on a half-plane's boundary and its outward
+    // normal: kept in place, so that a frame's thousands of contact dots allocate nothing
+    std::array<Vec2, 2> at;
+    std::vector<Vec2> vertices;  // a polygon's
+    double radius = 0.0;         // a disc's radius, a stroke's half width
+    PixelBox bounds;             // around it all (the whole frame for a half-plane)
+    int body = -1;               // whose it is: a body's area is free to its labels, its marks to its name
+    double weight = 0.0;         // what covering it costs, in lines; infinity: never
+    bool area = false;           // a body's area rather than a mark drawn for it
+    int group = -1;              // the pieces of one polyline (a trail, an arc) share one: covered once
+    bool solid = false;          // a body's or a static body's area: a text over it gets a backing
   };
   struct Pending {
     Vec2 anchor;     // px
