@@ -103,7 +103,8 @@ class GlCanvas final : public Canvas {
   // the unit circle's n + 1 points (the last is the first), shared by every disc of n segments
   const std::vector<Vec2>& unitCircle(int n);
   void fillConvex(const std::vector<Vec2>& vertices);
-  void fillDisc(const Vec2& center, double radius, double tolerance = 0.05);
+  // a disc of at least `least` segments (chords within `tolerance` pixels)
+  void fillDisc(const Vec2& center, double radius, double tolerance = 0.05, int least = 8);
   void ring(const Vec2& center, double radius, double width);
   void strokeSegment(const Vec2& a, const Vec2& b, double width);
   void strokeClosed(const std::vector<Vec2>& vertices, double width);
@@ -119,6 +120,8 @@ class GlCanvas final : public Canvas {
   // a frame of at least this many moving bodies, every one under kSmallOutlinePx across, is dense:
   // drawn at two samples a pixel, not four (GlContext::fewerSamples; the look measured alike there)
   static constexpr int kDenseBodies = 200;
+  // the fewest chords of a dot among many (manyPoints): a dot under about 1.5 px across is a square
+  static constexpr int kLeastManyDotSegments = 4;
   int smallBodies_ = 0, largeBodies_ = 0;  // the moving bodies drawn this frame, by size
   // a moving body `extent` world units across counted as small or large
   void countBody(double extent);
@@ -127,7 +130,7 @@ class GlCanvas final : public Canvas {
   // diagonal lines over the pixels of the primitive just drawn, within `box` (its bounds) and the view
   void hatch(const Bounds& box, const Color& c, double opacity);
   // the segments of a disc of `radius`: chords within `tolerance` pixels of the circle
-  int discSegments(double radius, double tolerance = 0.05) const;
+  int discSegments(double radius, double tolerance = 0.05, int least = 8) const;
   double manyDotRadius_ = 0.0;  // px; 0: points drawn as usual
 
   GlContext& gl_;
