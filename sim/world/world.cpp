@@ -217,8 +217,7 @@ bool World::collectContacts(double margin, std::vector<Contact>& found, bool awa
       }
       if (before) {
         const double extent = std::max(extent_[pairs_[k].first], extent_[pairs_[k].second]);
-        if (const std::optional<Manifold> m = recycledManifold(*before, a.pose, b.pose, extent, recycleDistance)) {
-          out[k - first] = *m;
+        if (recycledManifold(*before, a.pose, b.pose, extent, recycleDistance, out[k - first])) {
           if (!inPlace) entry = *before;
           recycledNow_[k] = 1;
           continue;
