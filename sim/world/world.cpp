@@ -189,6 +189,8 @@ bool World::collectContacts(double margin, std::vector<Contact>& found, bool awa
     // count of the solver's last call as it was)
     recycledNow_.clear();
   }
+  // how many entries ahead recycleRange brings in
+  constexpr size_t kRecycleAhead = 4;
   // pairs_[first, last) into out[0, last − first), each pair that touched keeping its manifold while
   // it moved little, the others collided
   auto recycleRange = [&](int first, int last, Manifold* out) {
@@ -204,6 +206,11 @@ bool World::collectContacts(double margin, std::vector<Contact>& found, bool awa
       const RecycleEntry* before = nullptr;
       if (inPlace) {
         before = &recycle_[k];
+        // (the entries a few ahead brought in while this one is read: 304 bytes each, 4.5 MB on the
+        // 5,050-box pyramid, and their first read was the hot spot of recycledManifold)
+        if (static_cast<size_t>(k) + kRecycleAhead < recycle_.size())
+          for (size_t line = 0; line < sizeof(RecycleEntry); line += 64)
+            __builtin_prefetch(reinterpret_cast<const char*>(&recycle_[k + kRecycleAhead]) + line);
       } else {
         while (old < recycle_.size() && recycle_[old].key < key) ++old;
         if (old < recycle_.size() && recycle_[old].key == key) before = &recycle_[old];
