@@ -336,6 +336,7 @@ bool World::collectContacts(double margin, std::vector<Contact>& found, bool awa
   // as many touching pairs as last step: when each is the pair last step's list holds at its place
   // (each thread checks its share), every contact is written over its own, as on one thread
   if (lastStep && warmStart && static_cast<size_t>(touching_[parts]) == lastStep->size()) {
+    // (one task: the threads meet after checking, and all read the same verdict)
     differs_.assign(parts, 0);
     threads->run([&](int t) {
       const auto [first, last] = Share{t, parts}.of(0, pairCount);
@@ -345,14 +346,13 @@ bool World::collectContacts(double margin, std::vector<Contact>& found, bool awa
           const Contact& c = (*lastStep)[next++];
           differs_[t] = !samePair(c, pairs_[k]);
         }
+      threads->sync();
+      if (std::find(differs_.begin(), differs_.end(), 1) != differs_.end()) return;
+      next = touching_[t];
+      for (int k = first; k < last; ++k)
+        if (manifolds_[k].count > 0) overwrite((*lastStep)[next++], manifolds_[k]);
     });
     if (std::find(differs_.begin(), differs_.end(), 1) == differs_.end()) {
-      threads->run([&](int t) {
-        const auto [first, last] = Share{t, parts}.of(0, pairCount);
-        int next = touching_[t];
-        for (int k = first; k < last; ++k)
-          if (manifolds_[k].count > 0) overwrite((*lastStep)[next++], manifolds_[k]);
-      });
       std::swap(found, *lastStep);
       return true;
     }
