@@ -65,11 +65,15 @@ void PairCache::find(const std::vector<Aabb>& boxes, const std::vector<bool>& fi
   }
   // the candidates that overlap now, each pair once (at its lower index) and in order (each box's
   // candidates kept sorted: they change only when a box is placed anew)
+  // (a box's higher candidates found by bisection: a pile at rest holds about eight per box, half
+  // of them lower)
   pairs.clear();
   for (size_t ii = 0; ii < n; ++ii) {
     const int i = static_cast<int>(ii);
-    for (int j : partners_[i])
-      if (j > i && !(fixed[i] && fixed[j]) && boxes[i].overlaps(boxes[j])) pairs.emplace_back(i, j);
+    const bool fixedI = fixed[i];
+    const std::vector<int>& partners = partners_[i];
+    for (auto j = std::upper_bound(partners.begin(), partners.end(), i); j != partners.end(); ++j)
+      if (!(fixedI && fixed[*j]) && boxes[i].overlaps(boxes[*j])) pairs.emplace_back(i, *j);
   }
 }
 

@@ -40,15 +40,16 @@ RecycleEntry recycleEntry(std::uint64_t key, const Pose& a, const Pose& b, const
   return e;
 }
 
-std::optional<Manifold> recycledManifold(const RecycleEntry& e, const Pose& a, const Pose& b, double extent, double distance) {
-  if (!e.valid) return std::nullopt;
-  if (std::min(turnedCos(a.q, e.qA), turnedCos(b.q, e.qB)) <= settings::kRecycleCos) return std::nullopt;
+bool recycledManifold(const RecycleEntry& e, const Pose& a, const Pose& b, double extent, double distance, Manifold& out) {
+  if (!e.valid) return false;
+  if (std::min(turnedCos(a.q, e.qA), turnedCos(b.q, e.qB)) <= settings::kRecycleCos) return false;
   // how far any point of B moved relative to A: the shift of its origin, and its turn about it
   // (sin θ ≈ θ for the small turns that pass)
   const Pose now = relativePose(a, b);
   const double turned = std::abs(turnSince(now.q, e.relative.q).s);
-  if (!((now.x - e.relative.x).norm() + extent * turned < distance)) return std::nullopt;
-  Manifold m = e.manifold;
+  if (!((now.x - e.relative.x).norm() + extent * turned < distance)) return false;
+  Manifold& m = out;
+  m = e.manifold;
   const Rot dqA = turnSince(a.q, e.qA), dqB = turnSince(b.q, e.qB);
   m.separation = std::numeric_limits<double>::infinity();
   for (int k = 0; k < m.count; ++k) {
@@ -58,7 +59,7 @@ std::optional<Manifold> recycledManifold(const RecycleEntry& e, const Pose& a, c
     m.points[k].point = 0.5 * (onA + onB);
     m.separation = std::min(m.separation, m.points[k].separation);
   }
-  return m;
+  return true;
 }
 
 }  // namespace sim::world

@@ -103,23 +103,32 @@ class SoftStepSolver final : public Method {
   // substep the velocities, warm start, the soft solve, the positions and the relax pass;
   // restitution once after them all; the impulses kept for the next step
   void step(World& world, const TimeStep& step) override {
-    // the contacts where the bodies are now, carrying over last step's impulses, prepared once
+    // the contacts where the bodies are now, carrying over last step's impulses
     WorkerPool& threads = pool(world.threads);
     world.findContacts(speculativeMargin(world, step.h), fresh_, &threads);
     std::swap(world.contacts, fresh_);
-    prepare(world, step.h / world.substeps);
-    // the substeps; with sim: threads, every stage split between the threads, which meet after
-    // each stage and each set of contacts
+    const double h = step.h / world.substeps;
+    const bool kept = beginStep(world, h);
+    // one task from the preparation to the impulses kept, the threads meeting between its stages:
+    // a task of its own for each woke the other threads three times a step instead of once. The
+    // substeps split every stage between the threads, which meet after each stage and each set of
+    // contacts; restitution, when a contact has it, changes impulses before they are kept
     threads.run([&](int t) {
       const Share share{t, threads.size()};
+      prepare(world, h, kept, share, threads);
+      threads.sync();
       substeps(world, step, share, threads);
       threads.sync();
       storeBodies(world, share);
+      if (!bouncy_) storeImpulses(world, share);
     });
     // restitution once, from the velocity before the substeps; the impulses kept, the impacts
     // recorded
-    applyRestitution(world);
-    store(world, step.end());
+    if (bouncy_) {
+      applyRestitution(world);
+      threads.run([&](int t) { storeImpulses(world, Share{t, threads.size()}); });
+    }
+    recordImpacts(world, step.end());
   }
 
  private:
@@ -190,11 +199,12 @@ class SoftStepSolver final : public Method {
   // AVX2's, or one
   static int laneWidth(int allowed) { return allowed >= 8 && avx512Available() ? 8 : allowed >= 4 && avx2Available() ? 4 : 1; }
 
-  void prepare(World& world, double h) {
+  // the blocks and the bodies' arrays sized for this step (on one thread, before the task)
+  // Returns whether each lane keeps last step's pair, masses, friction and softness.
+  bool beginStep(World& world, double h) {
     const bool arranged = arrange(world);
     width_ = laneWidth(world.simdWidth);
-    const std::vector<Body>& bodies = world.bodies;
-    const int dummy = static_cast<int>(bodies.size());  // the static bodies' shared record
+    const int dummy = static_cast<int>(world.bodies.size());  // the static bodies' shared record
     // Box2D v3: contactHertz = min(contactHertz, 0.25 × substep rate); static contacts twice as stiff
     const double hertz = std::min(world.contactHertz, settings::kContactHertzPerSubstepRate / h);
     const Softness soft = makeSoft(hertz, settings::kContactDampingRatio, h);
@@ -205,25 +215,27 @@ class SoftStepSolver final : public Method {
     soft_ = soft, staticSoft_ = staticSoft, dummy_ = dummy;
     blocks_.resize(blockCount_);
     vnBefore_.resize(2 * world.contacts.size());
-    WorkerPool& threads = pool(world.threads);
-    approaching_.assign(threads.size(), 0);
-    // each thread its share of the padded blocks cleared (the lanes no contact fills touch only
-    // the static record, with zero masses), then its share of the contacts, each of which writes
-    // every number of its own lane
+    points_.resize(world.contacts.size());
+    approaching_.assign(pool(world.threads).size(), 0);
     sizeBodies(world);
-    threads.run([&](int t) {
-      const Share share{t, threads.size()};
-      loadBodies(world, h, share);
-      const auto [firstPadded, lastPadded] = share.of(0, kept ? 0 : static_cast<int>(padded_.size()));
-      for (int k = firstPadded; k < lastPadded; ++k) {
-        ContactBlock& blk = blocks_[padded_[k]];
-        blk = ContactBlock{};
-        for (int l = 0; l < soft::kLanes; ++l) blk.a[l] = blk.b[l] = dummy;
-      }
-      threads.sync();
-      const auto [first, last] = share.of(0, static_cast<int>(world.contacts.size()));
-      for (int i = first; i < last; ++i) prepareContact(world, i, soft, staticSoft, !kept, t);
-    });
+    return kept;
+  }
+
+  // each thread its share of the padded blocks cleared (the lanes no contact fills touch only
+  // the static record, with zero masses), then its share of the contacts, each of which writes
+  // every number of its own lane
+  void prepare(const World& world, double h, bool kept, const Share& share, WorkerPool& threads) {
+    const int dummy = static_cast<int>(world.bodies.size());
+    loadBodies(world, h, share);
+    const auto [firstPadded, lastPadded] = share.of(0, kept ? 0 : static_cast<int>(padded_.size()));
+    for (int k = firstPadded; k < lastPadded; ++k) {
+      ContactBlock& blk = blocks_[padded_[k]];
+      blk = ContactBlock{};
+      for (int l = 0; l < soft::kLanes; ++l) blk.a[l] = blk.b[l] = dummy;
+    }
+    threads.sync();
+    const auto [first, last] = share.of(0, static_cast<int>(world.contacts.size()));
+    for (int i = first; i < last; ++i) prepareContact(world, i, soft_, staticSoft_, !kept, share.t);
   }
 
   // one contact into its lane: normal, masses, softness, and each point's anchors and impulses
@@ -244,6 +256,7 @@ class SoftStepSolver final : public Method {
       blk.biasRate.l[l] = s.biasRate, blk.massScale.l[l] = s.massScale, blk.impulseScale.l[l] = s.impulseScale;
     }
     blk.nx.l[l] = n.x(), blk.ny.l[l] = n.y();
+    points_[i] = static_cast<char>(c.manifold.count);
     for (int k = 0; k < c.manifold.count; ++k) {
       soft::PointLanesOf<T>& p = blk.p[k];
       const ManifoldPoint& m = c.manifold.points[k];
@@ -461,24 +474,26 @@ class SoftStepSolver final : public Method {
     }
   }
 
-  // the impulses kept for the next step's warm start, and the impacts of the step recorded
-  void store(World& world, double t) {
-    // the impulses back into the contacts, each thread its share
-    WorkerPool& threads = pool(world.threads);
-    threads.run([&](int th) {
-      const auto [first, last] = Share{th, threads.size()}.of(0, static_cast<int>(world.contacts.size()));
-      for (int i = first; i < last; ++i) {
-        Contact& c = world.contacts[i];
-        const ContactBlock& blk = blocks_[slots_[i].block];
-        const int l = slots_[i].lane;
-        for (int k = 0; k < c.manifold.count; ++k) {
-          c.state[k].normalImpulse = blk.p[k].normalImpulse.l[l];
-          c.state[k].tangentImpulse = blk.p[k].tangentImpulse.l[l];
-        }
+  // the impulses kept for the next step's warm start: the thread's share of the contacts (their
+  // counts of points read from points_: the contacts are 3 MB on the 5,050-box pyramid, and each
+  // one's count sits a cache line apart from its impulses)
+  void storeImpulses(World& world, const Share& share) const {
+    const auto [first, last] = share.of(0, static_cast<int>(world.contacts.size()));
+    for (int i = first; i < last; ++i) {
+      Contact& c = world.contacts[i];
+      const ContactBlock& blk = blocks_[slots_[i].block];
+      const int l = slots_[i].lane;
+      for (int k = 0; k < points_[i]; ++k) {
+        c.state[k].normalImpulse = blk.p[k].normalImpulse.l[l];
+        c.state[k].tangentImpulse = blk.p[k].tangentImpulse.l[l];
       }
-    });
-    // the impacts, in the contacts' order (the approach speeds read first: a pile at rest has
-    // none, and its contacts are not touched again; nor its speeds, when prepare saw none)
+    }
+  }
+
+  // the impacts of the step recorded, in the contacts' order (the approach speeds read first: a
+  // pile at rest has none, and its contacts are not touched again; nor its speeds, when prepare
+  // saw none)
+  void recordImpacts(World& world, double t) const {
     if (std::find(approaching_.begin(), approaching_.end(), 1) == approaching_.end()) return;
     for (size_t i = 0; i < world.contacts.size(); ++i) {
       for (int k = 0; k < 2; ++k) {
@@ -513,6 +528,7 @@ class SoftStepSolver final : public Method {
   Softness soft_, staticSoft_;  // what the blocks' lanes hold (prepare), with the static record's index
   int dummy_ = -1;
   std::vector<double> vnBefore_;   // each point's normal velocity before the step (restitution)
+  std::vector<char> points_;       // each contact's count of points
   std::vector<char> approaching_;  // per thread: one of its points comes faster than restitution's threshold
   std::vector<BodyState> states_;  // the bodies during the substeps, then the static record
   std::vector<Vec2> x_;            // positions and angles during the substeps
