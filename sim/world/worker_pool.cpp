@@ -13,8 +13,8 @@ namespace {
 // waits for)
 constexpr int kSpinsBeforeYield = 64;
 // between tasks: this many pauses (0.7 ms on this machine's Zen 4) before the worker sleeps on the futex.
-// A step runs six tasks back to back; waking a sleeping worker for each cost more than the
-// spinning (the 5,050-box pyramid on two threads: 4.9-6.6 ms a step without it, 3.8-5.0 with)
+// A step runs four tasks back to back (three finding contacts, one solving); waking a sleeping
+// worker for each cost more than the spinning (the 5,050-box pyramid on two threads: 4.9-6.6 ms a step without it, 3.8-5.0 with)
 constexpr int kSpinsBeforeSleep = 20000;
 
 void pauseOnce() {
