@@ -183,8 +183,10 @@ sim::scene::SceneDef sceneOf(const bench::StackLayout& layout, const bench::Stac
   def.recycleDistance = recycle;
   sim::scene::BodyDef ground;
   ground.name = "ground";
-  ground.shape = sim::core::makeBox(2.0 * (layout.groundHalfWidth + o.ourGrowth), 1.0 + 2.0 * o.ourGrowth);
-  ground.position = {layout.groundCenterX, -0.5};
+  ground.shape = layout.halfPlane ? sim::core::makePlane({0.0, 1.0})
+                                  : sim::core::makeBox(2.0 * (layout.groundHalfWidth + o.ourGrowth), 1.0 + 2.0 * o.ourGrowth);
+  ground.position =
+      layout.halfPlane ? sim::core::Vec2(layout.groundCenterX, o.ourGrowth) : sim::core::Vec2(layout.groundCenterX, -0.5);
   ground.isStatic = true;
   def.bodies.push_back(ground);
   for (size_t i = 0; i < layout.boxes.size(); ++i) {
@@ -336,14 +338,21 @@ std::optional<RunResult> runBox2d3(const std::string& dir, int base, const RunOp
   return r;
 }
 
-// "pyramid:100:touching", "pyramid:20:dropped", "pyramid:100:packed", "stack:10"
+// "pyramid:100:touching", "pyramid:20:dropped", "pyramid:100:packed", "pyramid:100:packed:plane" (ours
+// on a half-plane), "stack:10"
 std::optional<bench::StackLayout> parseLayout(const std::string& spec) {
   std::vector<std::string> part;
   std::stringstream in(spec);
   for (std::string p; std::getline(in, p, ':');) part.push_back(p);
   try {
-    if (part.size() == 3 && part[0] == "pyramid" && (part[2] == "touching" || part[2] == "dropped" || part[2] == "packed"))
-      return bench::pyramid(std::stoi(part[1]), part[2] == "dropped", part[2] == "packed");
+    const bool onPlane = part.size() == 4 && part[3] == "plane";
+    if ((part.size() == 3 || onPlane) && part[0] == "pyramid" &&
+        (part[2] == "touching" || part[2] == "dropped" || part[2] == "packed")) {
+      bench::StackLayout l = bench::pyramid(std::stoi(part[1]), part[2] == "dropped", part[2] == "packed");
+      l.halfPlane = onPlane;
+      if (onPlane) l.name += "-plane";
+      return l;
+    }
     if (part.size() == 2 && part[0] == "stack") return bench::stack(std::stoi(part[1]));
     if (part.size() == 3 && part[0] == "stack") return bench::stack(std::stoi(part[1]), std::stod(part[2]));
     if (part.size() == 1 && part[0] == "arch") return bench::arch();
@@ -355,19 +364,16 @@ std::optional<bench::StackLayout> parseLayout(const std::string& spec) {
 
 int main(int argc, char** argv) {
   CLI::App app{"rigidreel's stack solvers against Box2D 2.4 on the same stack layouts, at Box2D's benchmark settings"};
-  std::vector<std::string> layoutSpecs{"pyramid:20:touching",
-                                       "pyramid:20:dropped",
-                                       "pyramid:20:packed",
-                                       "pyramid:100:touching",
-                                       "pyramid:100:dropped",
-                                       "pyramid:100:packed",
-                                       "arch"};
+  std::vector<std::string> layoutSpecs{
+      "pyramid:20:touching", "pyramid:20:dropped", "pyramid:20:packed",        "pyramid:100:touching",
+      "pyramid:100:dropped", "pyramid:100:packed", "pyramid:100:packed:plane", "arch"};
   std::vector<std::string> methods{"sequential"};
   std::string engine = "both", skin = "outer", csvPath, box2d3Dir;
   bench::StackSettings settings;
   RunOptions options;
   app.add_option("--layout", layoutSpecs,
-                 "pyramid:BASE:touching, pyramid:BASE:dropped, pyramid:BASE:packed (Box2D v3's large_pyramid), stack:HEIGHT, "
+                 "pyramid:BASE:touching, pyramid:BASE:dropped, pyramid:BASE:packed (Box2D v3's large_pyramid), any of them with "
+                 ":plane (ours on a half-plane floor, the peers on their ground box), stack:HEIGHT, "
                  "stack:HEIGHT:RATIO (the top box RATIO times as dense) or arch (repeatable)");
   app.add_option("--method", methods, "rigidreel's collision method (repeatable): sequential, soft_step, ...");
   app.add_option("--engine", engine, "both, ours or box2d")->check(CLI::IsMember({"both", "ours", "box2d"}));

@@ -62,6 +62,9 @@ struct StackLayout {
   double groundCenterX = 0.0;       // with its top at y = 0
   std::vector<BoxPlacement> boxes;  // bottom row first, the top box last
   bool dropped = false;             // rows start apart: judge by |x − rest x|, not by the top box
+  // ours stands on a half-plane (y ≥ 0) instead of the ground box, as users write a floor; the peers
+  // keep their ground box (Box2D v3's b3_pyramid has no other)
+  bool halfPlane = false;
 };
 
 // Box2D's pyramid of `base` boxes on the bottom row (base (base + 1) / 2 boxes in all)
