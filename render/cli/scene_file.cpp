@@ -16,14 +16,6 @@ SceneFile readSource(const sim::yaml::SceneSource& source) {
 
 }  // namespace
 
-SceneFile readSceneFile(const std::string& path, const std::string& variant) { return OpenScene(path).read(variant); }
-
-SceneFile sceneFileText(const std::string& text, const std::string& file, const std::string& variant) {
-  return OpenScene(text, file).read(variant);
-}
-
-SceneFile3d readSceneFile3d(const std::string& path, const std::string& variant) { return OpenScene(path).read3d(variant); }
-
 SceneFile OpenScene::read(const std::string& variant) const { return readSource(sim::yaml::sceneSource(document_, variant)); }
 
 SceneFile3d OpenScene::read3d(const std::string& variant) const {

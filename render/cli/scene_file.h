@@ -25,12 +25,6 @@ struct SceneFile {
   render::analysis::Study study() const { return {scene.model, stability}; }
 };
 
-// the scene in `path` with the named variant merged in ("" for the base scene); throws
-// sim::yaml::SceneError at the fault's FILE:LINE:COL
-SceneFile readSceneFile(const std::string& path, const std::string& variant = "");
-// the same from text; `file` names it in messages
-SceneFile sceneFileText(const std::string& text, const std::string& file, const std::string& variant = "");
-
 // a 3D scene file (`dimensions: 3`), read the same way: its model and look (render/scene3d), its
 // stability: block (dt only) and its golden: block
 struct SceneFile3d {
@@ -41,8 +35,6 @@ struct SceneFile3d {
   const sim::scene3d::SceneDef& model() const { return scene.model; }
   sim::scene3d::SceneDef& model() { return scene.model; }
 };
-
-SceneFile3d readSceneFile3d(const std::string& path, const std::string& variant = "");
 
 // A scene file read and parsed once: its `dimensions` says which path each subcommand takes, and
 // every variant, 2D or 3D, is merged and read from the one parse. A copy shares the parse.

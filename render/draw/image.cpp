@@ -40,16 +40,4 @@ void paste(const Image& source, Image& target, int x, int y) {
     std::memcpy(target.pixel(x0, row), source.pixel(x0 - x, row - y), static_cast<size_t>(x1 - x0) * 4);
 }
 
-void flipRows(Image& image) {
-  const size_t stride = static_cast<size_t>(image.width) * 4;
-  std::vector<uint8_t> tmp(stride);
-  for (int y = 0; y < image.height / 2; ++y) {
-    uint8_t* a = image.pixel(0, y);
-    uint8_t* b = image.pixel(0, image.height - 1 - y);
-    std::memcpy(tmp.data(), a, stride);
-    std::memcpy(a, b, stride);
-    std::memcpy(b, tmp.data(), stride);
-  }
-}
-
 }  // namespace render::draw

@@ -26,7 +26,4 @@ Image downsample(const Image& image, int factor);
 // `source` copied into `target` with its top-left corner at (x, y), clipped to `target`
 void paste(const Image& source, Image& target, int x, int y);
 
-// reverse the row order in place (GL reads the bottom row first)
-void flipRows(Image& image);
-
 }  // namespace render::draw

@@ -42,15 +42,6 @@ TEST_CASE("pasting is clipped to the target") {
   render::draw::paste(red, target, 10, 10);  // wholly outside: nothing
 }
 
-TEST_CASE("flipping reverses the rows") {
-  Image i(1, 3, {0.0, 0.0, 0.0, 1.0});
-  i.pixel(0, 0)[0] = 1;
-  i.pixel(0, 2)[0] = 3;
-  render::draw::flipRows(i);
-  CHECK(i.pixel(0, 0)[0] == 3);
-  CHECK(i.pixel(0, 2)[0] == 1);
-}
-
 TEST_CASE("colors parse from #rrggbb and mix") {
   const Color c = Color::parse("#ff8000");
   CHECK(c.r == 1.0);
