@@ -85,7 +85,13 @@ std::vector<BodyDef> pyramidOfBase(const std::vector<BodyDef>& bodies, const Pyr
   for (int row = 0; row < base; ++row)
     for (int k = 0; k < base - row; ++k) {
       BodyDef b = box;
-      b.name = "b" + std::to_string(row + 1) + "_" + std::to_string(k + 1);
+      // appended piece by piece into a new string: g++ 12 warns of overlapping copies in
+      // "b" + std::to_string(...) and in assigning "b" (GCC bug 105329, a false positive)
+      std::string name(1, 'b');
+      name += std::to_string(row + 1);
+      name += '_';
+      name += std::to_string(k + 1);
+      b.name = std::move(name);
       b.position = start + row * rows.up + k * rows.along;
       out.push_back(b);
     }

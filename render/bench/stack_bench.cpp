@@ -550,9 +550,12 @@ int main(int argc, char** argv) {
             withThreads.threads = soft ? threads : 1;
             const sim::world::Precision p = soft ? *sim::world::precisionFromName(precision) : sim::world::Precision::Double;
             const bool recycled = soft && recycle == "on";
-            const std::string name = std::string(sim::world::collisionMethodName(method)) +
-                                     (p == sim::world::Precision::Float ? ":float" : "") + (recycled ? ":recycle" : "") +
-                                     (withThreads.threads > 1 ? ":" + std::to_string(withThreads.threads) + "t" : "");
+            // appended piece by piece: g++ 12 warns of overlapping copies in ":" + std::to_string(...)
+            // (GCC bug 105329, a false positive)
+            std::string name(sim::world::collisionMethodName(method));
+            if (p == sim::world::Precision::Float) name += ":float";
+            if (recycled) name += ":recycle";
+            if (withThreads.threads > 1) name += ':' + std::to_string(withThreads.threads) + 't';
             OurRun e(*layout, settings, withThreads, method, p, recycled ? sim::core::settings::kRecycleDistance : 0.0);
             RunResult result = run(e, name.c_str(), *layout, settleSteps, withThreads);
             result.threads = withThreads.threads;

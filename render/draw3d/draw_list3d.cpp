@@ -18,7 +18,10 @@ std::string numbers(std::initializer_list<double> values) {
   for (double x : values) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.6g", std::abs(x) < 1e-12 ? 0.0 : x);
-    s += (s.size() > 1 ? "," : "") + std::string(buf);
+    // appended piece by piece: g++ 12 warns of overlapping copies in ("," or "") + std::string(buf)
+    // (GCC bug 105329, a false positive)
+    if (s.size() > 1) s += ',';
+    s += buf;
   }
   return s + ")";
 }

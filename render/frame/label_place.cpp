@@ -491,7 +491,7 @@ void DroppedLabels::report(const std::vector<PlacedText>& dropped, double t) {
     // and a power of ten's superscript digits ("× 10⁻¹⁶"), so that round-off is one label too
     for (const char* digit : {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹", "⁻"})
       for (size_t at = shape.find(digit); at != std::string::npos; at = shape.find(digit, at + 1))
-        shape.replace(at, std::string(digit).size(), "#");
+        shape.replace(at, std::string(digit).size(), 1, '#');
     if (std::find(seen_.begin(), seen_.end(), shape) != seen_.end()) continue;
     seen_.push_back(shape);
     if (told_ == kNamed) sink_("more labels dropped; not named");

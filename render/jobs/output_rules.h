@@ -21,8 +21,8 @@ struct PlannedOutput {
   std::string path;
   std::string option;  // "-o", "--report"
   Kind kind = Kind::File;
-  std::string writer;  // Folder: the command whose marker it may carry ("golden record")
-  std::string what;    // what is written there, for two outputs that collide ("the record of x.yaml")
+  std::string writer = {};  // Folder: the command whose marker it may carry ("golden record")
+  std::string what = {};    // what is written there, for two outputs that collide ("the record of x.yaml")
 };
 
 // a file or folder the run reads

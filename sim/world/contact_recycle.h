@@ -22,7 +22,8 @@ struct RecycleEntry {
   bool valid = false;                     // a manifold with points was made
   Rot qA, qB;                             // the two shapes' rotations then
   Pose relative;                          // B's shape in A's frame then
-  Vec2 anchorA[2], anchorB[2];            // each point from each shape's origin then, in the world
+  // each point from each shape's origin then, in the world
+  Vec2 anchorA[2] = {Vec2::Zero(), Vec2::Zero()}, anchorB[2] = {Vec2::Zero(), Vec2::Zero()};
   double baseSeparation[2] = {0.0, 0.0};
   Manifold manifold;
 };

@@ -219,7 +219,8 @@ bool World::collectContacts(double margin, std::vector<Contact>& found, bool awa
       const PlacedShape &a = placed_[pairs_[k].first], &b = placed_[pairs_[k].second];
       if (skipped(k)) {
         out[k - first] = Manifold{};
-        entry = RecycleEntry{key};
+        entry = RecycleEntry{};
+        entry.key = key;
         continue;
       }
       if (before) {
