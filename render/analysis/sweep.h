@@ -32,7 +32,7 @@ struct SweepRow {
   double maxPenetration = 0.0;
   bool finite = true;
   // processor time of the timed runs per step, median, s: what a stack sweep charts, as it is less
-  // disturbed than wall time on a shared machine (the research notes of issue 14)
+  // disturbed than wall time on a shared machine (a busy neighbour stretches wall time, not processor time)
   double secondsPerStep = 0.0;
   // the stack measures at the end (RunMetrics): the top body's and the farthest body's distance
   // from where they started, m, and the fastest body's speed, m/s

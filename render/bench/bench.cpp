@@ -385,7 +385,7 @@ int main(int argc, char** argv) {
   for (const auto& [w, h] : {std::pair{1280, 720}, std::pair{1920, 1080}})
     if (w == 1280 || !rendersOnly) pipeline(scene, w, h, "2");
   // Box2D's pyramid (stack_layouts.h), resting, soft_step, 0.5 s at 720p: base 20 (210 boxes) and
-  // base 100 (5,050 boxes), how the cost grows with the bodies (issue 23's targets: 1.3 and 1.5 x).
+  // base 100 (5,050 boxes), how the cost grows with the bodies.
   // Each on the bench's 1 m box ground and on a half-plane floor, as users write a floor: the box
   // ground bounds the automatic camera's view at its own width (the boxes a few pixels across),
   // the half-plane leaves it to the pile (the boxes as large as the frame allows), which costs more

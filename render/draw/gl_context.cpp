@@ -18,7 +18,7 @@
 
 namespace render::draw {
 
-// 4× multisampling. Measured by build/rigidreel_frame_bench (render/frame_bench.cpp) on a 1280×720
+// 4× multisampling. Measured by build/rigidreel_frame_bench (render/bench/frame_bench.cpp) on a 1280×720
 // frame of bodies, arrows, text and a hatched plane (llvmpipe, 2 cores): milliseconds per frame, and
 // the mean error on edge pixels (0-255) against a 4×4-supersampled, 4×-multisampled reference:
 //   none 10.6 ms, 14.0 | 4× MSAA 23.2 ms, 5.2 | 2×2 supersampling 27.3 ms, 5.8 |

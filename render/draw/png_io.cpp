@@ -60,7 +60,7 @@ bool encodeRaw(const Image& image, const PngSettings& s, std::vector<uint8_t>* o
 
 }  // namespace
 
-// zlib level 3, no row filter. Measured by build/rigidreel_frame_bench (render/frame_bench.cpp) on a
+// zlib level 3, no row filter. Measured by build/rigidreel_frame_bench (render/bench/frame_bench.cpp) on a
 // 1280×720 frame, milliseconds and bytes per encoding:
 //   libpng's default (level 6, all filters, Z_FILTERED) 30.9 ms 22.0 kB | level 9, none 33.9 ms 15.9 kB
 //   level 6, none 15.8 ms 20.1 kB | level 3, none 5.6 ms 33.0 kB | level 1, none 5.6 ms 36.7 kB

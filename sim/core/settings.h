@@ -78,7 +78,7 @@ inline constexpr double kReferenceEdgeHysteresis = 0.05 * kContactMargin;
 // moved out by this, m, so that an incident vertex a hair past the reference edge's end (a box on
 // one as wide, turned by round-off) stays the point it was, with its feature id and so its warm
 // start, instead of becoming a new point cut at the edge's end that starts cold on one side only
-// (issue 36: a column of four boxes whose top weighs 30 times each of the others held in place of
+// (a column of four boxes whose top weighs 30 times each of the others held in place of
 // collapsing, the arch's top sag 0.505 → 0.34 m). Box2D 2.4's b2CollidePolygons moves them out
 // by the polygons' skin, b2_polygonRadius each: 1 cm past the rounded outline, 2 × linear slop
 inline constexpr double kClipSideSlack = 0.01;
@@ -144,7 +144,7 @@ inline constexpr int kRelaxIterations = 1;
 
 // a body slower than both of these counts as at rest, m/s and rad/s: Box2D's 1 cm/s and 2°/s, a
 // hundredth of the speed a box reaches falling 5 cm (0.99 m/s) and above the creep of a settled pile
-// under the stack solvers (issue 24: soft_step's fastest body in the 5,050-box pyramid, 0.005 m/s)
+// under the stack solvers (soft_step's fastest body in the 5,050-box pyramid, 0.005 m/s)
 inline constexpr double kSleepLinearSpeed = 0.01;
 inline constexpr double kSleepAngularSpeed = 2.0 * 3.14159265358979323846 / 180.0;
 

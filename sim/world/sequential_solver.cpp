@@ -19,7 +19,7 @@ namespace {
 // load last step, or the gap is wider than the slop. A loaded point within the slop counts as
 // touching (Box2D 2.4's points only exist touching): in a tall pile the position pass opens such
 // gaps every step, and letting them close at s/h turned its pushes into approach speed, so the
-// pile breathed (issue 14; base-100 pyramid's fastest body 1.68 → 1.39 m/s, Box2D 1.40)
+// pile breathed (base-100 pyramid's fastest body 1.68 → 1.39 m/s, Box2D 1.40)
 bool gapMayClose(double warmNormalImpulse, double separation) {
   return warmNormalImpulse == 0.0 || separation > settings::kLinearSlop;
 }

@@ -6,7 +6,7 @@
 // two halves in AVX2's four; in floats (precision: float, as Box2D v3 solves) one AVX2 register of
 // eight. The scalar path solves the same blocks lane by lane in the same order with the same
 // operations: since the contacts of a block touch disjoint bodies, both give the same state to the
-// bit (tests/world/soft_contacts_test.cpp).
+// bit (tests/sim/world/soft_contacts_test.cpp).
 //
 // No Eigen and no standard library templates here: the wide path is compiled with -mavx2 and must
 // share no inline function with the rest of the program.

@@ -58,8 +58,8 @@ T effectiveMass(const Bd& a, const Bd& b, const Vec2& rA, const Vec2& rB, const 
 // Contacts are found once per step, so a point the step will close must be found at its start: the
 // margin reaches as far as the fastest body travels in the step (a speculative contact closes its
 // gap and no more). With the fixed 1 cm margin, rows of Box2D's dropped pyramid landing at 2.2 m/s
-// sank 2.7 cm before they were seen and the pile bulged 0.28 m; with this margin 0.041 m (issue 14,
-// rigidreel_stack_bench --method soft_step --layout pyramid:20:dropped).
+// sank 2.7 cm before they were seen and the pile bulged 0.28 m; with this margin 0.041 m
+// (rigidreel_stack_bench --method soft_step --layout pyramid:20:dropped).
 double speculativeMargin(const World& world, double h) {
   // (the largest squared speed, then one square root: the same number, a root a body fewer)
   double fastest = 0.0;

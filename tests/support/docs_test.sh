@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# The docs stay true: every repository path a Markdown file names exists, every flag it shows
-# after `rigidreel SUBCOMMAND` is in that subcommand's --help, and every whole scene it shows (a
-# ```yaml block with `bodies:`) passes `rigidreel check`.
+# The docs stay true: every repository path a Markdown file or a code comment names exists, every
+# flag a Markdown file shows after `rigidreel SUBCOMMAND` is in that subcommand's --help, and every
+# whole scene it shows (a ```yaml block with `bodies:`) passes `rigidreel check`.
 # usage: docs_test.sh RIGIDREEL SOURCE_DIR
 set -u
 bin=$1 src=$2
@@ -30,6 +30,17 @@ for doc in "${docs[@]}"; do
     [ $found = 1 ] || fail "$doc:$line names \`$token\`, which does not exist"
   done < <(grep -noE "(\`|\]\()$roots[A-Za-z0-9_./*-]*" "$doc" | sed -E 's/:(`|\]\()/:/')
 done
+
+# 1c. the same paths named in the code's comments (C++, shell, CMake, the Makefile, CI): from the
+# repository's root; a module named without its extension (`sim/yaml/first_document`) is its .h
+while IFS=: read -r file line token; do
+  token=${token%%[),.:;]}
+  token=${token%.}
+  case $token in *'<'*|*'>'*|*'{'*|*'$'*|*'*'*) continue ;; esac
+  [ -e "$token" ] || [ -e "$token.h" ] || fail "$file:$line names \`$token\` in a comment, which does not exist"
+done < <(git ls-files '*.cpp' '*.h' '*.sh' 'CMakeLists.txt' '*/CMakeLists.txt' Makefile .ci/run 2>/dev/null |
+  xargs grep -HnoE "(//|# ).*" 2>/dev/null |
+  sed -nE "s/^([^:]*):([0-9]+):.*[^A-Za-z0-9_\/.]((sim|render|scenes|tests|\.ci)\/[A-Za-z0-9_.\/-]*).*/\1:\2:\3/p")
 
 # 1b. links as a browser follows them: a relative target from the Markdown file's own folder, and
 # a `#fragment` naming a heading of its target (GitHub's anchors: lower case, punctuation dropped,

@@ -2,7 +2,7 @@
 # The command line end to end: exit codes (0 ok, 1 failure/divergence, 2 bad input), messages,
 # the JSON state and the CSV trace, and that a failed run never leaves or clobbers a trace file.
 #
-# usage: bash tests/cli_test.sh <path-to-rigidreel> <project-source-dir>
+# usage: bash tests/render/cli/cli_test.sh <path-to-rigidreel> <project-source-dir>
 # prints one "ok - ..." / "not ok - ..." line per case and "N passed, M failed"; exits 1 on any failure.
 set -u
 

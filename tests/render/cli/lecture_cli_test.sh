@@ -4,7 +4,7 @@
 # the errors: a missing or empty directory, a bad scene file (exit 2 before anything renders),
 # a scene failing mid-render while the others finish (exit 1, its message, the others' outputs).
 #
-# usage: bash tests/lecture_cli_test.sh <path-to-rigidreel> <project-source-dir>
+# usage: bash tests/render/cli/lecture_cli_test.sh <path-to-rigidreel> <project-source-dir>
 set -u
 
 source "$(dirname "$0")/cli_harness.sh"

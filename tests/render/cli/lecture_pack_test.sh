@@ -5,7 +5,7 @@
 # every PNG a PNG, every record JSON, and the page valid HTML by Debian's tidy in its strict mode,
 # with a section per scene. A missing or empty pack fails: a test that cannot fail is no test.
 #
-# usage: bash tests/lecture_pack_test.sh <path-to-rigidreel> <pack-dir> <work-dir>
+# usage: bash tests/render/cli/lecture_pack_test.sh <path-to-rigidreel> <pack-dir> <work-dir>
 set -u
 
 if [ $# -ne 3 ]; then

@@ -6,7 +6,7 @@
 # `--list` plans, and the page is valid HTML (tidy, strict). The pack it leaves is the browser
 # test's (page_browser).
 #
-# usage: bash tests/lecture_parallel_test.sh <path-to-rigidreel> <project-source-dir> <out-dir>
+# usage: bash tests/render/cli/lecture_parallel_test.sh <path-to-rigidreel> <project-source-dir> <out-dir>
 set -u
 
 if [ $# -ne 3 ]; then

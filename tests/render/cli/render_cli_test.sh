@@ -4,7 +4,7 @@
 # (exit 2), a missing or failing ffmpeg (exit 1) and Ctrl-C (exit 130) that leave no half file and
 # keep the previous video.
 #
-# usage: bash tests/render_cli_test.sh <path-to-rigidreel> <project-source-dir>
+# usage: bash tests/render/cli/render_cli_test.sh <path-to-rigidreel> <project-source-dir>
 set -u
 
 source "$(dirname "$0")/cli_harness.sh"

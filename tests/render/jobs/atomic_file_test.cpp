@@ -1,5 +1,5 @@
 // Outputs written under a temporary name and put in place whole: a file, and a folder that several
-// processes publish at once (two renders of one scene into one -o, issue 13 item 8).
+// processes publish at once (two renders of one scene into one -o).
 #include "render/jobs/atomic_file.h"
 
 #include <doctest/doctest.h>

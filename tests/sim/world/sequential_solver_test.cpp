@@ -172,7 +172,7 @@ double median(std::vector<double> v) {
 // --gravity -G --position-iterations P`, G = 9.98 … 10.02: 3 passes 0.033, 0.058, 0.058, 0.057,
 // 0.057 m; 10 passes 0.088, 0.091, 0.072, 0.063, 0.060 m), so it is judged on the median of five
 // runs at gravity nudged by 0.1 % steps. More passes bulge it more since the polygon pairs clip
-// with Box2D's side slack (issue 36; before, 0.058 and 0.060 m at the median), as they do in Box2D
+// with Box2D's side slack (before, 0.058 and 0.060 m at the median), as they do in Box2D
 // 2.4 itself (the same bench: 0.068 and 0.098 m). Before the flip-invariant feature ids it bulged
 // 0.36 m and crept at 0.02 m/s.
 TEST_CASE("sequential: the dropped 20-base pyramid settles in place, with 3 position passes and with 10") {

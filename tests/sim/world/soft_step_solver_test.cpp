@@ -76,7 +76,7 @@ Held runPile(const std::string& yaml, const std::vector<sim::core::Vec2>& rest, 
 
 }  // namespace
 
-// Measured (issue 14): touching 0.034 m, dropped 0.045 m off the rest pose (the soft contacts give:
+// Measured: touching 0.034 m, dropped 0.045 m off the rest pose (the soft contacts give:
 // 20 layers each a little under the load), at rest; Box2D 2.4 on the dropped one: 0.068 m in x.
 TEST_CASE("soft_step: Box2D's 20-base pyramid stands, touching or dropped: every box within 5 cm of its rest pose, at rest") {
   for (const std::string precision : kPrecisions)

@@ -170,7 +170,7 @@ TEST_CASE("dimensions: 2 or 3, read once for every reader; the 2D reader refuses
   EXPECT_SCENE_ERROR("bodies: [{name: a, shape: {box: [1, 1, 1]}}]\n", 1, 1, {"dimensions: 3"});
 }
 
-TEST_CASE("a 3D scene's name is one file name, and its run is bounded, as in 2D (issue 13)") {
+TEST_CASE("a 3D scene's name is one file name, and its run is bounded, as in 2D") {
   EXPECT_SCENE_ERROR("name: ../escaped\n" + kOneBody, 1, 7, {"'../escaped'", "names its output files"});
   EXPECT_SCENE_ERROR("name: \"\"\n" + kOneBody, 1, 7, {"names its output files"});
   // 1e-12 for 1e-2: 1e15 steps, refused at the dt that asks for them, naming the way to allow them
