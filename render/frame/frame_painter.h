@@ -41,6 +41,7 @@ class FramePainter {
   // "slow motion ×1/4" under the time while it is above 1 (empty: never)
   using SlowFactor = std::function<double(double t)>;
   void showSlowMotion(SlowFactor factorAt) { slowMotion_ = std::move(factorAt); }
+  const SlowFactor& slowMotion() const { return slowMotion_; }
   static std::string slowMotionText(double factor);
 
   double impulseScale() const { return impulseScale_; }

@@ -65,6 +65,7 @@ const SceneRun::State& SceneRun::reach(double t) {
 }
 
 void SceneRun::finish() {
+  takeAlong(end_);
   observers_.history = &run_.history;
   run_.world.advanceTo(end_, &observers_);
   shown_ = &run_;
@@ -82,15 +83,7 @@ DrawList SceneRun::ghostOf(const State& state, int i, int strobe) {
   return moving;
 }
 
-void SceneRun::picturesAt(const std::vector<double>& instants, int strobe,
-                          const std::function<void(size_t, const State&, const std::vector<DrawList>&)>& picture) {
-  if (strobe > 0 && run_.world.time > 0.0) throw std::logic_error("a strobe image needs a fresh run");
-  // every time the pictures need, earliest first: instant k's ghosts at t·i/strobe, then instant k
-  struct Need {
-    double time;
-    size_t instant;
-    int ghost;  // -1: the picture itself
-  };
+std::vector<SceneRun::Need> SceneRun::needsOf(const std::vector<double>& instants, int strobe) {
   std::vector<Need> needs;
   for (size_t k = 0; k < instants.size(); ++k) {
     for (int i = 0; i < strobe; ++i) needs.push_back({instants[k] * i / strobe, k, i});
@@ -99,8 +92,14 @@ void SceneRun::picturesAt(const std::vector<double>& instants, int strobe,
   std::stable_sort(needs.begin(), needs.end(), [](const Need& a, const Need& b) {
     return a.time < b.time || (a.time == b.time && a.ghost >= 0 && b.ghost < 0);
   });
+  return needs;
+}
+
+void SceneRun::picturesAt(const std::vector<double>& instants, int strobe,
+                          const std::function<void(size_t, const State&, const std::vector<DrawList>&)>& picture) {
+  if (strobe > 0 && run_.world.time > 0.0) throw std::logic_error("a strobe image needs a fresh run");
   std::vector<std::vector<DrawList>> ghosts(instants.size(), std::vector<DrawList>(strobe));
-  for (const Need& n : needs) {
+  for (const Need& n : needsOf(instants, strobe)) {
     const State& state = reach(n.time);
     if (n.ghost >= 0) {
       ghosts[n.instant][n.ghost] = ghostOf(state, n.ghost, strobe);
@@ -108,6 +107,37 @@ void SceneRun::picturesAt(const std::vector<double>& instants, int strobe,
     }
     picture(n.instant, state, ghosts[n.instant]);
     ghosts[n.instant].clear();
+  }
+}
+
+void SceneRun::pictureAlong(double t, int strobe, std::function<void(Image)> shot) {
+  if (!canvas_) throw std::logic_error("SceneRun::pictureAlong needs a GL context");
+  if (run_.world.time > 0.0 || shown_) throw std::logic_error("pictures along a run are asked before its first frame");
+  along_.push_back({needsOf({t}, strobe), 0, strobe, std::vector<DrawList>(strobe), std::move(shot)});
+}
+
+void SceneRun::takeAlong(double upTo) {
+  // the earliest need of all the pictures first: the run only goes forward
+  for (;;) {
+    Along* a = nullptr;
+    for (Along& b : along_)
+      if (b.next < b.needs.size() && b.needs[b.next].time <= upTo && (!a || b.needs[b.next].time < a->needs[a->next].time))
+        a = &b;
+    if (!a) return;
+    const Need& n = a->needs[a->next++];
+    const State& state = reach(n.time);
+    if (n.ghost >= 0) {
+      a->ghosts[n.ghost] = ghostOf(state, n.ghost, a->strobe);
+      continue;
+    }
+    // a still, as a fresh run's frameAt paints it: without the video's slow-motion note
+    FramePainter::SlowFactor slow = painter_.slowMotion();
+    painter_.showSlowMotion({});
+    Image picture;
+    paint(state, a->ghosts, picture);
+    painter_.showSlowMotion(std::move(slow));
+    a->ghosts.clear();
+    a->shot(std::move(picture));
   }
 }
 
@@ -120,6 +150,7 @@ Image SceneRun::frameAt(double t, int strobe) {
 
 void SceneRun::frameAt(double t, Image& frame) {
   if (!canvas_) throw std::logic_error("SceneRun::frameAt needs a GL context");
+  takeAlong(t);
   paint(reach(t), {}, frame);
 }
 

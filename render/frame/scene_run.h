@@ -36,8 +36,14 @@ class SceneRun {
   // `observer` (e.g. a trace) is told of every step and event of the run itself, never of the
   // copies drawn between steps; set it before the first frame
   void follow(sim::world::StepObserver* observer) { observers_.follower = observer; }
-  // the run taken on to its end (what a trace needs after the last picture). Throws as frameAt.
+  // the run taken on to its end (what a trace needs after the last picture), the pictures along it
+  // not yet taken taken on the way. Throws as frameAt.
   void finish();
+  // a picture taken as the run passes instant t, with `strobe` ghosts: exactly what a fresh run's
+  // frameAt(t, strobe) paints, without a video's slow-motion note. A video's poster is drawn so from
+  // the video's own run, and the scene is stepped once for both. Set before the first frame; `shot`
+  // is told the picture by the first frameAt(t′, frame) with t′ ≥ t, or else by finish().
+  void pictureAlong(double t, int strobe, std::function<void(Image)> shot);
 
   // the frame at time t, which must not be earlier than the last one; with `strobe` > 0, that many
   // earlier poses at t·i/strobe (i = 0 … strobe − 1) drawn fading behind the present one, which
@@ -99,6 +105,23 @@ class SceneRun {
   static State startState(const sim::scene::SceneDef& model, History::Options options);
   // the state at time t: the run by its own steps, or a copy of it advanced to t (between_steps.h)
   const State& reach(double t);
+  // a time a picture needs: instant `instant` itself (ghost −1), or its ghost i at t·i/strobe
+  struct Need {
+    double time;
+    size_t instant;
+    int ghost;
+  };
+  // every time the pictures at `instants` need, earliest first, a picture after its ghosts
+  static std::vector<Need> needsOf(const std::vector<double>& instants, int strobe);
+  // the pictures along the run (pictureAlong) whose times are at most `upTo`
+  void takeAlong(double upTo);
+  struct Along {
+    std::vector<Need> needs;
+    size_t next = 0;  // the first need not yet reached
+    int strobe = 0;
+    std::vector<DrawList> ghosts;
+    std::function<void(Image)> shot;
+  };
   // ghost i of `strobe`: the moving bodies of a state, fading
   static DrawList ghostOf(const State& state, int i, int strobe);
   // the pictures at `instants`, each with its ghosts, from the one run, earliest first
@@ -116,6 +139,7 @@ class SceneRun {
   double end_;
   std::unique_ptr<State> between_;  // the copy drawn between steps (kept for its storage)
   const State* shown_ = nullptr;    // the state of the last picture
+  std::vector<Along> along_;        // the pictures taken along the run, in the order asked
   std::unique_ptr<GlCanvas> canvas_;
   TextRenderer* text_;
 };

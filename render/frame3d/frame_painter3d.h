@@ -37,6 +37,7 @@ class FramePainter3d {
   History3d::Options historyOptions() const;
   void paint(const sim::world3d::World& world, const History3d& history, Canvas3d& canvas) const;
   void showSlowMotion(std::function<double(double)> factorAt) { slowMotion_ = std::move(factorAt); }
+  const std::function<double(double)>& slowMotion() const { return slowMotion_; }
 
   // "x = (1.00, −0.50, 0.20) m", "q = [0.924, 0.000, 0.383, 0.000]", "|q| = 1.000000"
   // (positions below `lengthFloor` m, the noise floor of the run's extent, are 0)

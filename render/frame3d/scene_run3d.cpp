@@ -1,5 +1,6 @@
 #include "render/frame3d/scene_run3d.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "render/frame/between_steps.h"
@@ -52,7 +53,31 @@ const SceneRun3d::State& SceneRun3d::reach(double t) {
   return state;
 }
 
+void SceneRun3d::pictureAlong(double t, std::function<void(render::draw::Image)> shot) {
+  if (!canvas_) throw std::logic_error("SceneRun3d::pictureAlong needs a GL context");
+  if (run_.world.time > 0.0 || shown_) throw std::logic_error("pictures along a run are asked before its first frame");
+  along_.push_back({t, std::move(shot)});
+}
+
+void SceneRun3d::takeAlong(double upTo) {
+  // the earliest first: the run only goes forward
+  for (;;) {
+    auto a = std::min_element(along_.begin(), along_.end(), [](const Along& x, const Along& y) { return x.time < y.time; });
+    if (a == along_.end() || a->time > upTo) return;
+    const Along picked = std::move(*a);
+    along_.erase(a);
+    // a still, as a fresh run's frameAt paints it: without the video's slow-motion note
+    std::function<double(double)> slow = painter_.slowMotion();
+    painter_.showSlowMotion({});
+    render::draw::Image picture;
+    paint(reach(picked.time), picture);
+    painter_.showSlowMotion(std::move(slow));
+    picked.shot(std::move(picture));
+  }
+}
+
 void SceneRun3d::finish() {
+  takeAlong(end_);
   observers_.history = &run_.history;
   run_.world.advanceTo(end_, &observers_);
   shown_ = &run_;
@@ -66,7 +91,11 @@ render::draw::Image SceneRun3d::frameAt(double t) {
 
 void SceneRun3d::frameAt(double t, render::draw::Image& frame) {
   if (!canvas_) throw std::logic_error("SceneRun3d::frameAt needs a GL context");
-  const State& state = reach(t);
+  takeAlong(t);
+  paint(reach(t), frame);
+}
+
+void SceneRun3d::paint(const State& state, render::draw::Image& frame) {
   canvas_->begin(camera_);
   painter_.paint(state.world, state.history, *canvas_);
   canvas_->finish(frame);

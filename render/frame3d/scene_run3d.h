@@ -4,7 +4,9 @@
 // perspective with GL, or recorded as a draw list.
 #pragma once
 
+#include <functional>
 #include <memory>
+#include <vector>
 
 #include "render/draw3d/gl_canvas3d.h"
 #include "render/frame/frame_source.h"
@@ -27,8 +29,13 @@ class SceneRun3d final : public render::frame::FrameSource {
   // `observer` (e.g. a trace) is told of every step and event of the run itself, never of the
   // copies drawn between steps; set it before the first frame
   void follow(sim::world3d::StepObserver* observer) { observers_.follower = observer; }
-  // the run taken on to its end (what a trace needs after the last picture). Throws as frameAt.
+  // the run taken on to its end (what a trace needs after the last picture), the pictures along it
+  // not yet taken taken on the way. Throws as frameAt.
   void finish();
+  // a picture taken as the run passes instant t: exactly what a fresh run's frameAt(t) paints,
+  // without a video's slow-motion note (a video's poster from the video's own run, as SceneRun's).
+  // Set before the first frame; `shot` is told it by the first frameAt(t′, frame) with t′ ≥ t, or by finish().
+  void pictureAlong(double t, std::function<void(render::draw::Image)> shot);
 
   // the frame at time t, not earlier than the last one. Throws sim::world3d::Diverged.
   render::draw::Image frameAt(double t) override;
@@ -60,6 +67,14 @@ class SceneRun3d final : public render::frame::FrameSource {
   };
   // the state at time t: the run by its own steps, or a copy of it advanced to t (between_steps.h)
   const State& reach(double t);
+  // the state at t painted into `frame`
+  void paint(const State& state, render::draw::Image& frame);
+  // the pictures along the run whose times are at most `upTo`, taken
+  void takeAlong(double upTo);
+  struct Along {
+    double time;
+    std::function<void(render::draw::Image)> shot;
+  };
 
   const render::scene3d::Scene& def_;
   Camera3d camera_;
@@ -70,6 +85,7 @@ class SceneRun3d final : public render::frame::FrameSource {
   double end_;
   std::unique_ptr<State> between_;  // the copy drawn between steps (kept for its storage)
   const State* shown_ = nullptr;    // the state of the last picture
+  std::vector<Along> along_;        // the pictures along the run not yet taken, in the order asked
   std::unique_ptr<GlCanvas3d> canvas_;
   render::draw::TextRenderer* text_;
 };

@@ -42,15 +42,19 @@ struct Drawing<Planar> {
   using Run = SceneRun;
   using Trace = TraceWriter;
   static constexpr const char* kView = "";
-  // the poster's instant, with the scene's strobe ghosts when it asks for them
-  static Image poster(SceneRun& run, const VideoOutput& out) { return run.frameAt(out.posterTime, out.posterStrobe); }
+  // the poster's instant, with the scene's strobe ghosts when it asks for them, taken along the run
+  static void poster(SceneRun& run, const VideoOutput& out, std::function<void(Image)> shot) {
+    run.pictureAlong(out.posterTime, out.posterStrobe, std::move(shot));
+  }
 };
 template <>
 struct Drawing<Spatial> {
   using Run = render::frame3d::SceneRun3d;
   using Trace = TraceWriter3d;
   static constexpr const char* kView = "in perspective, ";
-  static Image poster(render::frame3d::SceneRun3d& run, const VideoOutput3d& out) { return run.frameAt(out.posterTime); }
+  static void poster(render::frame3d::SceneRun3d& run, const VideoOutput3d& out, std::function<void(Image)> shot) {
+    run.pictureAlong(out.posterTime, std::move(shot));
+  }
 };
 
 // `draw()`, a divergence of the simulation naming the variant and what was being drawn
@@ -90,6 +94,10 @@ void writeVideo(const PlannedVariantOf<D>& v, const VideoOutputOf<D>& out, bool 
   Run run(v.scene, out.camera, v.survey, &gl, &text);
   run.endAt(out.duration);
   follow(run, trace);
+  // the poster from the video's own run (at its end, or at the start for a question), so that the
+  // scene is stepped once for both
+  Image poster;
+  Drawing<D>::poster(run, out, [&poster](Image picture) { poster = std::move(picture); });
 
   VideoWriter video(out.path, out.format, out.width, out.height, out.fps);
   VideoSink videoSink(video);
@@ -104,21 +112,13 @@ void writeVideo(const PlannedVariantOf<D>& v, const VideoOutputOf<D>& out, bool 
   }
   Progress progress(outputBase(v.scene.model.name, v.scene.model.variant), out.frameCount, !quiet);
   record(run, out.timeMap, out.fps, sinks, [&](long done) { progress.update(done); });
+  run.finish();
   progress.finish();
   video.finish();
   if (framesDir) framesDir->commit();
   const double seconds = progress.elapsed();
 
-  // the poster at the end of the video's own run; its strobe ghosts, or an earlier instant, need a
-  // run from the start
-  if (out.posterStrobe > 0 || out.posterTime < out.duration) {
-    Run posterRun(v.scene, out.camera, v.survey, &gl, &text);
-    posterRun.endAt(out.duration);
-    writePng(Drawing<D>::poster(posterRun, out), out.posterPath);
-    if (trace) run.finish();
-  } else {
-    writePng(run.frameAt(out.duration), out.posterPath);
-  }
+  writePng(poster, out.posterPath);
   wrote(out.path);
   wrote(out.posterPath);
   if (framesDir) wrote(out.framesPath);

@@ -4,6 +4,7 @@
 // those of the scene's grid whatever the pictures' times, as `simulate` takes them.
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <map>
 
@@ -164,4 +165,81 @@ TEST_CASE("a run asked for an instant before its own time refuses") {
   (void)run.drawListAt(0.5);
   CHECK_THROWS_AS(run.drawListsAt({0.25}, 0, [](size_t, DrawList) {}), std::logic_error);
   CHECK_THROWS_AS(run.drawListsAt({1.0}, 2, [](size_t, DrawList) {}), std::logic_error);
+}
+
+namespace {
+
+// frame k of a video at 1/60 s into `frame` from `run`, up to (not including) `until`
+void drawVideo(SceneRun& run, double until) {
+  render::draw::Image frame;
+  for (int k = 0; k / 60.0 < until; ++k) run.frameAt(k / 60.0, frame);
+}
+
+}  // namespace
+
+TEST_CASE("a picture taken along a video's run is the fresh run's frame, byte for byte") {
+  render::draw::GlContext gl(320, 180);
+  render::draw::TextRenderer text;
+  struct Case {
+    const char* file;
+    const char* variant;
+    double at;
+    int strobe;
+  };
+  // a poll's poster at the start, one mid-run with ghosts, one at the end, one between grid points
+  for (const Case& c :
+       {Case{"scenes/three_collisions_poll.yaml", "C", 0.0, 0}, Case{"scenes/poll_bar_impulse.yaml", "end", 1.3, 4},
+        Case{"scenes/three_collisions_poll.yaml", "C", -1.0, 0}, Case{"scenes/poll_bar_impulse.yaml", "end", 0.5 + 1e-7, 0}}) {
+    CAPTURE(c.file);
+    CAPTURE(c.at);
+    Variant v = variant(c.file, c.variant);
+    v.def.render.width = 320, v.def.render.height = 180;
+    v.camera = render::frame::cameraFor(v.def, v.survey);
+    const double at = c.at < 0.0 ? v.def.model.duration : c.at;
+    SceneRun fresh(v.def, v.camera, v.survey, &gl, &text);
+    const render::draw::Image want = fresh.frameAt(at, c.strobe);
+    // (the note would show: a fresh run told of slow motion draws another picture)
+    SceneRun slowed(v.def, v.camera, v.survey, &gl, &text);
+    slowed.showSlowMotion([](double) { return 4.0; });
+    CHECK(slowed.frameAt(at, c.strobe).rgba != want.rgba);
+
+    // the video's frames say "slow motion", the poster taken among them must not
+    SceneRun run(v.def, v.camera, v.survey, &gl, &text);
+    run.showSlowMotion([](double) { return 4.0; });
+    render::draw::Image got;
+    int taken = 0;
+    run.pictureAlong(at, c.strobe, [&](render::draw::Image picture) {
+      got = std::move(picture);
+      ++taken;
+    });
+    drawVideo(run, v.def.model.duration);
+    run.finish();
+    CHECK(taken == 1);
+    REQUIRE(got.width == want.width);
+    CHECK(got.rgba == want.rgba);
+    // and the video's own last frame is what a run without the poster draws
+    const double last = std::floor(v.def.model.duration * 60.0 - 1e-9) / 60.0;
+    SceneRun plain(v.def, v.camera, v.survey, &gl, &text);
+    plain.showSlowMotion([](double) { return 4.0; });
+    render::draw::Image plainFrame, alongFrame;
+    plain.frameAt(last, plainFrame);
+    SceneRun again(v.def, v.camera, v.survey, &gl, &text);
+    again.showSlowMotion([](double) { return 4.0; });
+    again.pictureAlong(at, c.strobe, [](render::draw::Image) {});
+    drawVideo(again, last);
+    again.frameAt(last, alongFrame);
+    CHECK(alongFrame.rgba == plainFrame.rgba);
+  }
+}
+
+TEST_CASE("a picture along a run is asked before its first frame") {
+  render::draw::GlContext gl(320, 180);
+  render::draw::TextRenderer text;
+  const Variant v = variant("scenes/poll_bar_impulse.yaml", "end");
+  SceneRun run(v.def, v.camera, v.survey, &gl, &text);
+  render::draw::Image frame;
+  run.frameAt(0.25, frame);
+  CHECK_THROWS_AS(run.pictureAlong(1.0, 0, [](render::draw::Image) {}), std::logic_error);
+  SceneRun listsOnly(v.def, v.camera, v.survey);
+  CHECK_THROWS_AS(listsOnly.pictureAlong(1.0, 0, [](render::draw::Image) {}), std::logic_error);
 }
