@@ -48,7 +48,7 @@ struct CheckCommand : Verbosity {
 };
 
 // one scene variant as golden reads it: the file's, 2D or 3D, with its golden: block. What differs
-// between the two is overloaded (goldenTimes, runGolden, readRecord), so each use is one visit
+// between the two is overloaded (runGolden, readRecord), so each use is one visit
 struct Case {
   std::string file;
   std::variant<SceneFile, SceneFile3d> scene;
@@ -62,8 +62,7 @@ struct Case {
   }
   // the run at `times` (the golden: block's own when none), frames at `golden`'s size
   GoldenRun run(const GoldenDef& golden, const GoldenTimes* times = nullptr) const {
-    return std::visit(
-        [&](const auto& f) { return runGolden(f.scene, golden, times ? *times : goldenTimes(f.scene, golden), true); }, scene);
+    return std::visit([&](const auto& f) { return runGolden(f.scene, golden, times, true); }, scene);
   }
   GoldenRecord recordIn(const std::string& folder) const {
     return std::visit([&](const auto& f) { return readRecord(folder, f.model()); }, scene);

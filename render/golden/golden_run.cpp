@@ -15,11 +15,6 @@ namespace render::golden {
 
 namespace {
 
-void sortUnique(std::vector<double>& v) {
-  std::sort(v.begin(), v.end());
-  v.erase(std::unique(v.begin(), v.end()), v.end());
-}
-
 // the scene drawn at the golden size
 render::scene::Scene atGoldenSize(render::scene::Scene scene, const GoldenDef& golden) {
   scene.render.width = golden.width;
@@ -36,28 +31,13 @@ TraceSample sampleOf(const sim::world::World& w, size_t i) {
 
 std::string frameName(double t) { return "frame-t" + render::video::timeForName(t); }
 
-GoldenTimes goldenTimes(const render::scene::Scene& scene, const GoldenDef& golden) {
-  GoldenTimes times;
-  times.frames = golden.at.empty() ? std::vector<double>{scene.model.duration} : golden.at;
-  if (golden.impacts) {
-    const render::frame::RunSurvey survey = render::frame::surveyRun(scene);
-    const size_t n = std::min(kMaxImpactFrames, survey.impactTimes.size());
-    times.frames.insert(times.frames.end(), survey.impactTimes.begin(), survey.impactTimes.begin() + n);
-  }
-  sortUnique(times.frames);
-  times.checkpoints = times.frames;
-  for (const sim::scene::ExpectDef& e : scene.model.expects) times.checkpoints.push_back(e.time);
-  times.checkpoints.push_back(scene.model.duration);
-  sortUnique(times.checkpoints);
-  return times;
-}
-
-GoldenRun runGolden(const render::scene::Scene& original, const GoldenDef& golden, const GoldenTimes& times, bool pixels) {
+GoldenRun runGolden(const render::scene::Scene& original, const GoldenDef& golden, const GoldenTimes* asked, bool pixels) {
   const render::scene::Scene scene = atGoldenSize(original, golden);
   GoldenRun run;
   run.name = render::video::outputBase(scene.model);
   for (const auto& b : scene.model.bodies) run.bodies.push_back(b.name);
   const render::frame::RunSurvey survey = render::frame::surveyRun(scene);
+  const GoldenTimes times = asked ? *asked : goldenTimes(scene.model, golden, survey.impactTimes);
   const render::draw::Camera camera = render::frame::cameraFor(scene, survey);
   const render::draw::Style style = render::scene::makeStyle(scene, golden.height);
 

@@ -3,6 +3,8 @@
 // its draw list and frame; each instant reached as a fresh run reaches it (SceneRun::shotsAt).
 #pragma once
 
+#include <algorithm>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -42,13 +44,32 @@ struct GoldenRun {
   bool threeD = false;                    // a 3D scene's: its trace has the 3D columns
 };
 
-// the times the scene's golden: block asks for: frames at `at` (else the end) and its impacts (up to
-// kMaxImpactFrames) unless `impacts: false`; checkpoints at those, every expect time and the end.
-// Runs the scene once to find its impacts. Throws sim::world::Diverged.
-GoldenTimes goldenTimes(const render::scene::Scene& scene, const GoldenDef& golden);
-// the run at `times`, frames at the golden size; without `pixels` no GL is loaded and the frames
-// are draw lists alone. Throws sim::world::Diverged, std::runtime_error (GL).
-GoldenRun runGolden(const render::scene::Scene& scene, const GoldenDef& golden, const GoldenTimes& times, bool pixels);
+// the times a scene's golden: block asks for, given its run's impacts (ascending, each once): frames
+// at `at` (else the end) and those impacts (up to kMaxImpactFrames) unless `impacts: false`;
+// checkpoints at those, every expect time and the end. 2D and 3D models alike.
+template <class Model>
+GoldenTimes goldenTimes(const Model& model, const GoldenDef& golden, const std::vector<double>& impactTimes) {
+  const auto sortUnique = [](std::vector<double>& v) {
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+  };
+  GoldenTimes times;
+  times.frames = golden.at.empty() ? std::vector<double>{model.duration} : golden.at;
+  if (golden.impacts)
+    times.frames.insert(times.frames.end(), impactTimes.begin(),
+                        impactTimes.begin() + static_cast<std::ptrdiff_t>(std::min(kMaxImpactFrames, impactTimes.size())));
+  sortUnique(times.frames);
+  times.checkpoints = times.frames;
+  for (const auto& e : model.expects) times.checkpoints.push_back(e.time);
+  times.checkpoints.push_back(model.duration);
+  sortUnique(times.checkpoints);
+  return times;
+}
+// the run at `times`, or (null) at those its golden: block asks for, the impacts taken from the
+// survey the drawing needs anyway (the scene is stepped twice, never three times); frames at the
+// golden size; without `pixels` no GL is loaded and the frames are draw lists alone. Throws
+// sim::world::Diverged, std::runtime_error (GL).
+GoldenRun runGolden(const render::scene::Scene& scene, const GoldenDef& golden, const GoldenTimes* times, bool pixels);
 
 // "frame-t1.5"
 std::string frameName(double t);

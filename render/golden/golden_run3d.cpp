@@ -13,15 +13,6 @@
 
 namespace render::golden {
 
-namespace {
-
-void sortUnique(std::vector<double>& v) {
-  std::sort(v.begin(), v.end());
-  v.erase(std::unique(v.begin(), v.end()), v.end());
-}
-
-}  // namespace
-
 unsigned long long stateHash3d(const sim::world3d::World& world) {
   unsigned long long h = 1469598103934665603ull;
   auto mix = [&h](double value) {
@@ -39,23 +30,7 @@ unsigned long long stateHash3d(const sim::world3d::World& world) {
   return h;
 }
 
-GoldenTimes goldenTimes(const render::scene3d::Scene& scene, const GoldenDef& golden) {
-  GoldenTimes times;
-  times.frames = golden.at.empty() ? std::vector<double>{scene.model.duration} : golden.at;
-  if (golden.impacts) {
-    const render::frame3d::RunSurvey3d survey = render::frame3d::surveyRun(scene);
-    const size_t n = std::min(kMaxImpactFrames, survey.impactTimes.size());
-    times.frames.insert(times.frames.end(), survey.impactTimes.begin(), survey.impactTimes.begin() + n);
-  }
-  sortUnique(times.frames);
-  times.checkpoints = times.frames;
-  for (const sim::scene3d::ExpectDef& e : scene.model.expects) times.checkpoints.push_back(e.time);
-  times.checkpoints.push_back(scene.model.duration);
-  sortUnique(times.checkpoints);
-  return times;
-}
-
-GoldenRun runGolden(const render::scene3d::Scene& original, const GoldenDef& golden, const GoldenTimes& times, bool pixels) {
+GoldenRun runGolden(const render::scene3d::Scene& original, const GoldenDef& golden, const GoldenTimes* asked, bool pixels) {
   render::scene3d::Scene scene = original;
   scene.render.width = golden.width;
   scene.render.height = golden.height;
@@ -64,6 +39,7 @@ GoldenRun runGolden(const render::scene3d::Scene& original, const GoldenDef& gol
   run.name = render::video::outputBase(scene.model.name, scene.model.variant);
   for (const auto& b : scene.model.bodies) run.bodies.push_back(b.name);
   const render::frame3d::RunSurvey3d survey = render::frame3d::surveyRun(scene);
+  const GoldenTimes times = asked ? *asked : goldenTimes(scene.model, golden, survey.impactTimes);
   const render::draw3d::Camera3d camera = render::frame3d::cameraFor(scene, survey);
   const render::draw::Style style = render::scene3d::makeStyle(scene, golden.height);
   std::unique_ptr<render::draw::GlContext> gl;

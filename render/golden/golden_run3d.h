@@ -9,12 +9,10 @@
 
 namespace render::golden {
 
-// the times the 3D scene's golden: block asks for, as for 2D (an overload of golden_run.h's). Throws
-// sim::world3d::Diverged.
-GoldenTimes goldenTimes(const render::scene3d::Scene& scene, const GoldenDef& golden);
-// the run at `times`, frames at the golden size; without `pixels` no GL is loaded. Throws
+// the run at `times`, or (null) at those its golden: block asks for (goldenTimes, from the survey the
+// drawing needs anyway), frames at the golden size; without `pixels` no GL is loaded. Throws
 // sim::world3d::Diverged, std::runtime_error (GL).
-GoldenRun runGolden(const render::scene3d::Scene& scene, const GoldenDef& golden, const GoldenTimes& times, bool pixels);
+GoldenRun runGolden(const render::scene3d::Scene& scene, const GoldenDef& golden, const GoldenTimes* times, bool pixels);
 
 // FNV-1a over the raw bits of every body's x, q, v and ω (sim::world::stateHash's, in 3D)
 unsigned long long stateHash3d(const sim::world3d::World& world);
