@@ -4,7 +4,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "render/frame/between_steps.h"
 #include "render/frame/title_card.h"
 #include "render/scene/scene_style.h"
 #include "sim/debug/describe.h"
@@ -35,40 +34,20 @@ SceneRun::State SceneRun::startState(const sim::scene::SceneDef& model, History:
   return {std::move(world), std::move(history)};
 }
 
-void SceneRun::Observers::afterStep(const sim::world::World& w) {
-  history->afterStep(w);
-  if (follower) follower->afterStep(w);
-}
-
-void SceneRun::Observers::afterEvent(const sim::world::World& w, const sim::world::ImpulseEvent& e) {
-  history->afterEvent(w, e);
-  if (follower) follower->afterEvent(w, e);
-}
-
 SceneRun::SceneRun(const render::scene::Scene& def, const Camera& camera, const RunSurvey& survey, GlContext* gl,
                    TextRenderer* text)
     : def_(def),
       camera_(camera),
       style_(makeStyle(def, camera.heightPx())),
       painter_(def, camera, survey, textWidth(text, style_.fontSize)),
-      run_(startState(def.model, painter_.historyOptions())),
-      end_(def.model.duration),
+      run_(startState(def.model, painter_.historyOptions()), def.model.duration),
       text_(text) {
   if (gl && text) canvas_ = std::make_unique<GlCanvas>(*gl, *text, style_);
 }
 
-const SceneRun::State& SceneRun::reach(double t) {
-  observers_.history = &run_.history;
-  const State& state = reachBetween(run_, between_, t, end_, &observers_);
-  shown_ = &state;
-  return state;
-}
-
 void SceneRun::finish() {
-  takeAlong(end_);
-  observers_.history = &run_.history;
-  run_.world.advanceTo(end_, &observers_);
-  shown_ = &run_;
+  takeAlong(run_.end());
+  run_.finish();
 }
 
 DrawList SceneRun::ghostOf(const State& state, int i, int strobe) {
@@ -97,10 +76,10 @@ std::vector<SceneRun::Need> SceneRun::needsOf(const std::vector<double>& instant
 
 void SceneRun::picturesAt(const std::vector<double>& instants, int strobe,
                           const std::function<void(size_t, const State&, const std::vector<DrawList>&)>& picture) {
-  if (strobe > 0 && run_.world.time > 0.0) throw std::logic_error("a strobe image needs a fresh run");
+  if (strobe > 0 && run_.runWorld().time > 0.0) throw std::logic_error("a strobe image needs a fresh run");
   std::vector<std::vector<DrawList>> ghosts(instants.size(), std::vector<DrawList>(strobe));
   for (const Need& n : needsOf(instants, strobe)) {
-    const State& state = reach(n.time);
+    const State& state = run_.reach(n.time);
     if (n.ghost >= 0) {
       ghosts[n.instant][n.ghost] = ghostOf(state, n.ghost, strobe);
       continue;
@@ -112,7 +91,7 @@ void SceneRun::picturesAt(const std::vector<double>& instants, int strobe,
 
 void SceneRun::pictureAlong(double t, int strobe, std::function<void(Image)> shot) {
   if (!canvas_) throw std::logic_error("SceneRun::pictureAlong needs a GL context");
-  if (run_.world.time > 0.0 || shown_) throw std::logic_error("pictures along a run are asked before its first frame");
+  if (!run_.fresh()) throw std::logic_error("pictures along a run are asked before its first frame");
   along_.push_back({needsOf({t}, strobe), 0, strobe, std::vector<DrawList>(strobe), std::move(shot)});
 }
 
@@ -125,7 +104,7 @@ void SceneRun::takeAlong(double upTo) {
         a = &b;
     if (!a) return;
     const Need& n = a->needs[a->next++];
-    const State& state = reach(n.time);
+    const State& state = run_.reach(n.time);
     if (n.ghost >= 0) {
       a->ghosts[n.ghost] = ghostOf(state, n.ghost, a->strobe);
       continue;
@@ -151,7 +130,7 @@ Image SceneRun::frameAt(double t, int strobe) {
 void SceneRun::frameAt(double t, Image& frame) {
   if (!canvas_) throw std::logic_error("SceneRun::frameAt needs a GL context");
   takeAlong(t);
-  paint(reach(t), {}, frame);
+  paint(run_.reach(t), {}, frame);
 }
 
 void SceneRun::paint(const State& state, const std::vector<DrawList>& ghosts, Image& frame, DrawList* list) {

@@ -12,6 +12,7 @@
 #include "render/draw/style.h"
 #include "render/frame/frame_painter.h"
 #include "render/frame/history.h"
+#include "render/frame/stepped_run.h"
 #include "sim/world/world.h"
 
 namespace render::frame {
@@ -32,10 +33,10 @@ class SceneRun {
 
   // where the run ends, its last step cut there: the scene's duration unless set (before the first
   // frame) to a video's --duration
-  void endAt(double end) { end_ = end; }
+  void endAt(double end) { run_.endAt(end); }
   // `observer` (e.g. a trace) is told of every step and event of the run itself, never of the
   // copies drawn between steps; set it before the first frame
-  void follow(sim::world::StepObserver* observer) { observers_.follower = observer; }
+  void follow(sim::world::StepObserver* observer) { run_.follow(observer); }
   // the run taken on to its end (what a trace needs after the last picture), the pictures along it
   // not yet taken taken on the way. Throws as frameAt.
   void finish();
@@ -84,27 +85,15 @@ class SceneRun {
   void showSlowMotion(FramePainter::SlowFactor factorAt) { painter_.showSlowMotion(std::move(factorAt)); }
 
   // the world the last picture was drawn from: the run's own, or its copy between two steps
-  const sim::world::World& world() const { return shown_ ? shown_->world : run_.world; }
+  const sim::world::World& world() const { return run_.world(); }
   // the run's own world, at its last step
-  const sim::world::World& runWorld() const { return run_.world; }
+  const sim::world::World& runWorld() const { return run_.runWorld(); }
 
  private:
-  // the world and what its history holds, at one moment of a run (copied to draw between steps)
-  struct State {
-    sim::world::World world;
-    History history;
-  };
-  // what the run's own steps are told: its history, and the follower
-  struct Observers : sim::world::StepObserver {
-    History* history = nullptr;
-    sim::world::StepObserver* follower = nullptr;
-    void afterStep(const sim::world::World& w) override;
-    void afterEvent(const sim::world::World& w, const sim::world::ImpulseEvent& e) override;
-  };
+  using Run = SteppedRun<sim::world::World, History, sim::world::StepObserver, sim::world::ImpulseEvent>;
+  using State = Run::State;
   // the world built and its history started
   static State startState(const sim::scene::SceneDef& model, History::Options options);
-  // the state at time t: the run by its own steps, or a copy of it advanced to t (between_steps.h)
-  const State& reach(double t);
   // a time a picture needs: instant `instant` itself (ghost −1), or its ghost i at t·i/strobe
   struct Need {
     double time;
@@ -134,12 +123,8 @@ class SceneRun {
   Camera camera_;
   Style style_;
   FramePainter painter_;
-  State run_;
-  Observers observers_;
-  double end_;
-  std::unique_ptr<State> between_;  // the copy drawn between steps (kept for its storage)
-  const State* shown_ = nullptr;    // the state of the last picture
-  std::vector<Along> along_;        // the pictures taken along the run, in the order asked
+  Run run_;
+  std::vector<Along> along_;  // the pictures taken along the run, in the order asked
   std::unique_ptr<GlCanvas> canvas_;
   TextRenderer* text_;
 };

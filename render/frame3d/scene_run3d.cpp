@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "render/frame/between_steps.h"
 #include "render/frame/title_card.h"
 #include "sim/scene3d/scene_build.h"
 
@@ -26,36 +25,20 @@ SceneRun3d::SceneRun3d(const render::scene3d::Scene& def, const Camera3d& camera
       camera_(camera),
       style_(render::scene3d::makeStyle(def, camera.heightPx())),
       painter_(def, camera, survey, textWidth(text, style_.fontSize)),
-      run_([&] {
-        sim::world3d::World world = sim::scene3d::buildWorld(def.model);
-        History3d history(world, painter_.historyOptions());
-        return State{std::move(world), std::move(history)};
-      }()),
-      end_(def.model.duration),
+      run_(
+          [&] {
+            sim::world3d::World world = sim::scene3d::buildWorld(def.model);
+            History3d history(world, painter_.historyOptions());
+            return State{std::move(world), std::move(history)};
+          }(),
+          def.model.duration),
       text_(text) {
   if (gl && text) canvas_ = std::make_unique<GlCanvas3d>(*gl, *text, style_);
 }
 
-void SceneRun3d::Observers::afterStep(const sim::world3d::World& w) {
-  history->afterStep(w);
-  if (follower) follower->afterStep(w);
-}
-
-void SceneRun3d::Observers::afterEvent(const sim::world3d::World& w, const sim::world3d::ImpulseEvent& e) {
-  history->afterEvent(w, e);
-  if (follower) follower->afterEvent(w, e);
-}
-
-const SceneRun3d::State& SceneRun3d::reach(double t) {
-  observers_.history = &run_.history;
-  const State& state = render::frame::reachBetween(run_, between_, t, end_, &observers_);
-  shown_ = &state;
-  return state;
-}
-
 void SceneRun3d::pictureAlong(double t, std::function<void(render::draw::Image)> shot) {
   if (!canvas_) throw std::logic_error("SceneRun3d::pictureAlong needs a GL context");
-  if (run_.world.time > 0.0 || shown_) throw std::logic_error("pictures along a run are asked before its first frame");
+  if (!run_.fresh()) throw std::logic_error("pictures along a run are asked before its first frame");
   along_.push_back({t, std::move(shot)});
 }
 
@@ -70,17 +53,15 @@ void SceneRun3d::takeAlong(double upTo) {
     std::function<double(double)> slow = painter_.slowMotion();
     painter_.showSlowMotion({});
     render::draw::Image picture;
-    paint(reach(picked.time), picture);
+    paint(run_.reach(picked.time), picture);
     painter_.showSlowMotion(std::move(slow));
     picked.shot(std::move(picture));
   }
 }
 
 void SceneRun3d::finish() {
-  takeAlong(end_);
-  observers_.history = &run_.history;
-  run_.world.advanceTo(end_, &observers_);
-  shown_ = &run_;
+  takeAlong(run_.end());
+  run_.finish();
 }
 
 render::draw::Image SceneRun3d::frameAt(double t) {
@@ -92,7 +73,7 @@ render::draw::Image SceneRun3d::frameAt(double t) {
 void SceneRun3d::frameAt(double t, render::draw::Image& frame) {
   if (!canvas_) throw std::logic_error("SceneRun3d::frameAt needs a GL context");
   takeAlong(t);
-  paint(reach(t), frame);
+  paint(run_.reach(t), frame);
 }
 
 void SceneRun3d::paint(const State& state, render::draw::Image& frame) {
@@ -114,7 +95,7 @@ render::draw::Image SceneRun3d::answerCard() {
 }
 
 DrawList3d SceneRun3d::drawListAt(double t) {
-  const State& state = reach(t);
+  const State& state = run_.reach(t);
   DrawList3d list;
   painter_.paint(state.world, state.history, list);
   return list;

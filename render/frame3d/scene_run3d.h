@@ -10,6 +10,7 @@
 
 #include "render/draw3d/gl_canvas3d.h"
 #include "render/frame/frame_source.h"
+#include "render/frame/stepped_run.h"
 #include "render/frame3d/frame_painter3d.h"
 
 namespace render::frame3d {
@@ -25,10 +26,10 @@ class SceneRun3d final : public render::frame::FrameSource {
              render::draw::GlContext* gl = nullptr, render::draw::TextRenderer* text = nullptr);
 
   // where the run ends, its last step cut there: the scene's duration unless set before the first frame
-  void endAt(double end) { end_ = end; }
+  void endAt(double end) { run_.endAt(end); }
   // `observer` (e.g. a trace) is told of every step and event of the run itself, never of the
   // copies drawn between steps; set it before the first frame
-  void follow(sim::world3d::StepObserver* observer) { observers_.follower = observer; }
+  void follow(sim::world3d::StepObserver* observer) { run_.follow(observer); }
   // the run taken on to its end (what a trace needs after the last picture), the pictures along it
   // not yet taken taken on the way. Throws as frameAt.
   void finish();
@@ -48,25 +49,13 @@ class SceneRun3d final : public render::frame::FrameSource {
   DrawList3d drawListAt(double t);
 
   // the world the last picture was drawn from: the run's own, or its copy between two steps
-  const sim::world3d::World& world() const { return shown_ ? shown_->world : run_.world; }
+  const sim::world3d::World& world() const { return run_.world(); }
   // the run's own world, at its last step
-  const sim::world3d::World& runWorld() const { return run_.world; }
+  const sim::world3d::World& runWorld() const { return run_.runWorld(); }
 
  private:
-  // the world and its history at one moment of the run (copied to draw between steps)
-  struct State {
-    sim::world3d::World world;
-    History3d history;
-  };
-  // what the run's own steps are told: its history, and the follower
-  struct Observers : sim::world3d::StepObserver {
-    History3d* history = nullptr;
-    sim::world3d::StepObserver* follower = nullptr;
-    void afterStep(const sim::world3d::World& w) override;
-    void afterEvent(const sim::world3d::World& w, const sim::world3d::ImpulseEvent& e) override;
-  };
-  // the state at time t: the run by its own steps, or a copy of it advanced to t (between_steps.h)
-  const State& reach(double t);
+  using Run = render::frame::SteppedRun<sim::world3d::World, History3d, sim::world3d::StepObserver, sim::world3d::ImpulseEvent>;
+  using State = Run::State;
   // the state at t painted into `frame`
   void paint(const State& state, render::draw::Image& frame);
   // the pictures along the run whose times are at most `upTo`, taken
@@ -80,12 +69,8 @@ class SceneRun3d final : public render::frame::FrameSource {
   Camera3d camera_;
   render::draw::Style style_;
   FramePainter3d painter_;
-  State run_;
-  Observers observers_;
-  double end_;
-  std::unique_ptr<State> between_;  // the copy drawn between steps (kept for its storage)
-  const State* shown_ = nullptr;    // the state of the last picture
-  std::vector<Along> along_;        // the pictures along the run not yet taken, in the order asked
+  Run run_;
+  std::vector<Along> along_;  // the pictures along the run not yet taken, in the order asked
   std::unique_ptr<GlCanvas3d> canvas_;
   render::draw::TextRenderer* text_;
 };

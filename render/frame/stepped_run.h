@@ -1,0 +1,95 @@
+// A run of a scene as the renderer draws it (2D SceneRun and 3D SceneRun3d alike): its world and
+// history stepped on the scene's own grid, a follower (a trace) told of each of its steps, and a
+// picture at any time without splitting the run's steps: the run advanced by its steps that end by
+// t, then, when t falls between two of them, a copy of the run (its history too, so that an impact
+// inside the part step shows) advanced to t. The run's trajectory is then the scene's own whatever
+// the pictures' times.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+
+#include "sim/core/settings.h"
+
+namespace render::frame {
+
+// over the dimension: sim::world::World or sim::world3d::World, its History, StepObserver and
+// ImpulseEvent
+template <class World, class History, class StepObserver, class ImpulseEvent>
+class SteppedRun {
+ public:
+  // the world and what its history holds, at one moment of a run (copied to draw between steps)
+  struct State {
+    World world;
+    History history;
+  };
+
+  SteppedRun(State start, double end) : run_(std::move(start)), end_(end) {}
+
+  // where the run ends, its last step cut there
+  void endAt(double end) { end_ = end; }
+  double end() const { return end_; }
+  // told of every step and event of the run itself, never of the copies drawn between steps
+  void follow(StepObserver* observer) { observers_.follower = observer; }
+  // nothing drawn and no step taken yet
+  bool fresh() const { return run_.world.time <= 0.0 && !shown_; }
+
+  // the state to draw at t: the run itself advanced toward the end as far as t allows, or a copy
+  // (reused) advanced to t. A copy's part step that fails where the run does not (impacts piling
+  // up in a step cut short) gives the run: the run meets its own failures in its own steps. Throws
+  // std::logic_error for t before the run's time, and what the world's steps throw.
+  const State& reach(double t) {
+    observers_.history = &run_.history;
+    World& world = run_.world;
+    const double snap = sim::core::settings::kTimeSnap * world.dt;
+    if (t < world.time - snap) throw std::logic_error("a picture earlier than the run's time");
+    world.advanceWithin(t, std::max(t, end_), &observers_);
+    shown_ = &run_;
+    if (std::abs(world.time - t) <= snap) return run_;
+    if (!between_) between_ = std::make_unique<State>(run_);
+    else *between_ = run_;
+    try {
+      between_->world.advanceTo(t, &between_->history);
+    } catch (const std::runtime_error&) {
+      return run_;
+    }
+    shown_ = between_.get();
+    return *between_;
+  }
+  // the run taken on to its end
+  void finish() {
+    observers_.history = &run_.history;
+    run_.world.advanceTo(end_, &observers_);
+    shown_ = &run_;
+  }
+
+  // the world the last picture was drawn from: the run's own, or its copy between two steps
+  const World& world() const { return shown_ ? shown_->world : run_.world; }
+  // the run's own world, at its last step
+  const World& runWorld() const { return run_.world; }
+
+ private:
+  // what the run's own steps are told: its history, and the follower
+  struct Observers : StepObserver {
+    History* history = nullptr;
+    StepObserver* follower = nullptr;
+    void afterStep(const World& w) override {
+      history->afterStep(w);
+      if (follower) follower->afterStep(w);
+    }
+    void afterEvent(const World& w, const ImpulseEvent& e) override {
+      history->afterEvent(w, e);
+      if (follower) follower->afterEvent(w, e);
+    }
+  };
+
+  State run_;
+  Observers observers_;
+  double end_;
+  std::unique_ptr<State> between_;  // the copy drawn between steps (kept for its storage)
+  const State* shown_ = nullptr;    // the state of the last picture
+};
+
+}  // namespace render::frame
