@@ -1,5 +1,6 @@
 #include "render/frame/survey.h"
 
+#include "render/frame/shared_scales.h"
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -8,6 +9,7 @@
 #include "render/frame/caption.h"
 #include "render/frame/contact_forces.h"
 #include "render/frame/energy_panel.h"
+#include "render/frame/shared_scales.h"
 #include "sim/collision/collide.h"
 #include "render/frame/point_forces.h"
 #include "render/jobs/interrupt.h"
@@ -185,27 +187,11 @@ void checkView(const render::scene::Scene& def, const RunSurvey& survey, const C
 }
 
 void shareScales(const std::vector<RunSurvey*>& surveys) {
-  if (surveys.empty()) return;
-  RunSurvey all = *surveys.front();
-  for (const RunSurvey* s : surveys) {
-    all.maxSpeed = std::max(all.maxSpeed, s->maxSpeed);
-    all.maxImpulse = std::max(all.maxImpulse, s->maxImpulse);
-    all.maxOmega = std::max(all.maxOmega, s->maxOmega);
-    all.maxForce = std::max(all.maxForce, s->maxForce);
-    all.maxContactForce = std::max(all.maxContactForce, s->maxContactForce);
-    all.maxTorque = std::max(all.maxTorque, s->maxTorque);
-    all.maxMomentum = std::max(all.maxMomentum, s->maxMomentum);
-    all.maxLinearMomentum = std::max(all.maxLinearMomentum, s->maxLinearMomentum);
-    all.maxAngularMomentum = std::max(all.maxAngularMomentum, s->maxAngularMomentum);
-  }
-  for (RunSurvey* s : surveys) {
-    all.bounds = s->bounds;
-    all.impactTimes = s->impactTimes;
-    // each panel's energy bars on its own run's scale: a 0.5 J variant's bars do not vanish beside a
-    // 200 J one (the values are written beside them)
-    all.minEnergy = s->minEnergy, all.maxEnergy = s->maxEnergy;
-    *s = all;
-  }
+  // (not the bounds, impacts or energy bars: each panel's bars on its own run's scale, so that a
+  // 0.5 J variant's bars do not vanish beside a 200 J one; the values are written beside them)
+  shareLargest(surveys, &RunSurvey::maxSpeed, &RunSurvey::maxImpulse, &RunSurvey::maxOmega, &RunSurvey::maxForce,
+               &RunSurvey::maxContactForce, &RunSurvey::maxTorque, &RunSurvey::maxMomentum, &RunSurvey::maxLinearMomentum,
+               &RunSurvey::maxAngularMomentum);
 }
 
 std::vector<double> impactTimes(const sim::world::World& world) {

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "render/frame/caption.h"
+#include "render/frame/shared_scales.h"
 #include "render/frame3d/energy3d.h"
 #include "render/scene/scene_style.h"
 #include "sim/scene3d/scene_build.h"
@@ -76,23 +77,9 @@ RunSurvey3d surveyRun(const render::scene3d::Scene& def, double until) {
 }
 
 void shareScales(const std::vector<RunSurvey3d*>& surveys) {
-  if (surveys.empty()) return;
-  RunSurvey3d all = *surveys.front();
-  for (const RunSurvey3d* s : surveys) {
-    all.maxSpeed = std::max(all.maxSpeed, s->maxSpeed);
-    all.maxOmega = std::max(all.maxOmega, s->maxOmega);
-    all.maxAngularMomentum = std::max(all.maxAngularMomentum, s->maxAngularMomentum);
-    all.maxLinearMomentum = std::max(all.maxLinearMomentum, s->maxLinearMomentum);
-    all.maxWorldAngularMomentum = std::max(all.maxWorldAngularMomentum, s->maxWorldAngularMomentum);
-    all.maxImpulse = std::max(all.maxImpulse, s->maxImpulse);
-  }
-  for (RunSurvey3d* s : surveys) {
-    all.bounds = s->bounds;
-    all.impactTimes = s->impactTimes;
-    // each panel's energy bars on its own run's scale (the values are written beside them)
-    all.minEnergy = s->minEnergy, all.maxEnergy = s->maxEnergy;
-    *s = all;
-  }
+  // (each panel's energy bars on its own run's scale: the values are written beside them)
+  render::frame::shareLargest(surveys, &RunSurvey3d::maxSpeed, &RunSurvey3d::maxOmega, &RunSurvey3d::maxAngularMomentum,
+                              &RunSurvey3d::maxLinearMomentum, &RunSurvey3d::maxWorldAngularMomentum, &RunSurvey3d::maxImpulse);
 }
 
 Camera3d cameraFor(const render::scene3d::Scene& def, const RunSurvey3d& survey) { return cameraFor(def, survey, survey.bounds); }
