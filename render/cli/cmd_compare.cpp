@@ -20,6 +20,7 @@
 #include "sim/yaml/scene_error.h"
 
 namespace render::cli {
+using namespace render::trace;
 using namespace render::golden;
 using namespace render::jobs;
 

@@ -14,6 +14,7 @@
 #include "render/video/plan_writer.h"
 
 namespace render::cli {
+using namespace render::trace;
 using namespace render::jobs;
 using namespace render::video;
 

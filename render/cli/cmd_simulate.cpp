@@ -17,7 +17,7 @@
 #include "render/jobs/atomic_file.h"
 #include "render/jobs/interrupt.h"
 #include "render/jobs/json_writer.h"
-#include "render/video/trace_writer.h"
+#include "render/trace/trace_writer.h"
 #include "sim/scene/scene_build.h"
 #include "sim/scene/step_limit.h"
 #include "sim/world/diagnostics.h"
@@ -170,11 +170,11 @@ int simulate(const SimulateOptions& o) {
   sim::world::World world = startWorld(def, o.scene);
 
   std::unique_ptr<AtomicFile> traceFile;
-  std::unique_ptr<render::video::TraceWriter> trace;
+  std::unique_ptr<render::trace::TraceWriter> trace;
   if (!o.trace.empty()) {
     refuseInputAsOutput(o.trace, o.scene, "--trace");
     traceFile = openTrace(o.trace);
-    trace = std::make_unique<render::video::TraceWriter>(traceStream(traceFile), def);
+    trace = std::make_unique<render::trace::TraceWriter>(traceStream(traceFile), def);
     trace->rows(world);
   }
   // where the run's energy goes, step by step

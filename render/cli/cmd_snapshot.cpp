@@ -17,6 +17,7 @@
 #include "render/video/plan_writer.h"
 
 namespace render::cli {
+using namespace render::trace;
 using namespace render::video;
 using namespace render::jobs;
 

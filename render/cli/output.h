@@ -9,7 +9,7 @@
 #include "render/jobs/atomic_file.h"
 #include "render/jobs/exit_status.h"
 #include "render/video/render_plan.h"
-#include "render/video/trace_writer.h"
+#include "render/trace/trace_writer.h"
 
 namespace render::cli {
 

@@ -13,7 +13,7 @@
 #include "render/cli/space3d.h"
 #include "render/jobs/atomic_file.h"
 #include "render/jobs/json_writer.h"
-#include "render/video/trace_writer.h"
+#include "render/trace/trace_writer.h"
 #include "sim/core/step_limit.h"
 #include "sim/scene3d/scene_build.h"
 #include "sim/world3d/diagnostics.h"
@@ -149,11 +149,11 @@ int simulate3d(const SceneOptions& o, std::optional<double> until, bool json, co
     throw UsageError("--until: " + over + "; choose an earlier end, or raise the scene's 'sim: {max_steps: N}'");
   World world = startWorld3d(def, o.scene);
   std::unique_ptr<AtomicFile> traceFile;
-  std::unique_ptr<render::video::TraceWriter3d> trace;
+  std::unique_ptr<render::trace::TraceWriter3d> trace;
   if (!tracePath.empty()) {
     refuseInputAsOutput(tracePath, o.scene, "--trace");
     traceFile = openTrace(tracePath);
-    trace = std::make_unique<render::video::TraceWriter3d>(traceStream(traceFile), def);
+    trace = std::make_unique<render::trace::TraceWriter3d>(traceStream(traceFile), def);
     trace->rows(world);
   }
   // where the run's energy goes, step by step

@@ -12,6 +12,7 @@
 #include "render/jobs/read_limits.h"
 
 namespace render::golden {
+using namespace render::trace;
 using render::jobs::formatNumber;
 
 namespace fs = std::filesystem;

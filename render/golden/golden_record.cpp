@@ -22,6 +22,7 @@
 #endif
 
 namespace render::golden {
+using namespace render::trace;
 using render::jobs::formatNumber;
 
 namespace fs = std::filesystem;

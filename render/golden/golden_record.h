@@ -28,8 +28,8 @@ void writeRecord(const GoldenRun& run, const RecordInfo& info, const std::string
 // a record read back (its draw lists and PNGs are read when compared): its manifest, and
 struct GoldenRecord : RecordManifest {
   std::string folder;
-  std::vector<unsigned long long> hashes;       // by checkpoint
-  std::vector<std::vector<TraceSample>> trace;  // by the scene's body index, one sample per checkpoint
+  std::vector<unsigned long long> hashes;                      // by checkpoint
+  std::vector<std::vector<render::trace::TraceSample>> trace;  // by the scene's body index, one sample per checkpoint
 };
 
 // the record in `folder` for the scene `def`, each file read through render/jobs/bounded_read.h: its

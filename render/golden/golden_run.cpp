@@ -12,6 +12,7 @@
 #include "sim/world/diagnostics.h"
 
 namespace render::golden {
+using namespace render::trace;
 
 namespace {
 

@@ -11,15 +11,15 @@
 #include "render/draw/image.h"
 #include "render/golden/draw_list_json.h"
 #include "render/golden/golden_def.h"
-#include "render/golden/trace_csv.h"
+#include "render/trace/trace_csv.h"
 #include "render/scene/scene.h"
 
 namespace render::golden {
 
 struct Checkpoint {
   double t = 0.0;
-  unsigned long long hash = 0;      // sim::world::stateHash
-  std::vector<TraceSample> bodies;  // by the scene's body index
+  unsigned long long hash = 0;                     // sim::world::stateHash
+  std::vector<render::trace::TraceSample> bodies;  // by the scene's body index
 };
 
 struct GoldenFrame {

@@ -5,6 +5,7 @@
 #include "sim/world3d/diagnostics.h"
 
 namespace render::golden {
+using namespace render::trace;
 
 TraceSample sampleOf(const sim::world3d::Body& b, double t) {
   TraceSample s{t, b.x.x(), b.x.y(), 0.0, b.v.x(), b.v.y(), b.omega.z(), sim::world3d::kineticEnergy(b).total(), 0};

@@ -10,6 +10,7 @@
 #include "sim/world3d/diagnostics.h"
 
 namespace render::golden {
+using namespace render::trace;
 
 namespace {
 

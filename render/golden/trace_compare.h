@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "render/golden/trace_csv.h"
+#include "render/trace/trace_csv.h"
 #include "sim/scene/scene_def.h"
 #include "sim/world/world.h"
 #include "sim/world3d/world.h"
@@ -44,11 +44,11 @@ struct BodyComparison {
 
 // the run of `world` (fresh, built from `def`) to the scene's duration against `theirs`; throws
 // sim::world::Diverged
-std::vector<BodyComparison> compareTrace(const sim::scene::SceneDef& def, sim::world::World& world, const Trace& theirs,
-                                         const CompareTolerance& tolerance);
+std::vector<BodyComparison> compareTrace(const sim::scene::SceneDef& def, sim::world::World& world,
+                                         const render::trace::Trace& theirs, const CompareTolerance& tolerance);
 // the same of a 3D scene: position and velocity (with ω) in 3D, the angle the rotation between the
 // orientations; throws sim::world3d::Diverged
-std::vector<BodyComparison> compareTrace(const sim::scene3d::SceneDef& def, sim::world3d::World& world, const Trace& theirs,
-                                         const CompareTolerance& tolerance);
+std::vector<BodyComparison> compareTrace(const sim::scene3d::SceneDef& def, sim::world3d::World& world,
+                                         const render::trace::Trace& theirs, const CompareTolerance& tolerance);
 
 }  // namespace render::golden

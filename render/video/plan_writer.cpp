@@ -21,6 +21,7 @@
 #include "render/video/still_draw_lists.h"
 
 namespace render::video {
+using namespace render::trace;
 using namespace render::jobs;
 using namespace render::draw;
 using namespace render::frame;

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "render/video/render_plan.h"
-#include "render/video/trace_writer.h"
+#include "render/trace/trace_writer.h"
 
 namespace render::video {
 
@@ -25,8 +25,8 @@ void createOutputDirectory(const std::string& dir, const std::string& option = "
 // Interrupted (between frames). `trace` (when given) is told every step of the run the plan's one
 // variant is drawn from (its video's, else its first still's), taken on to the variant's end: what
 // `simulate --trace` writes of the same run
-void writePlan(const RenderPlan& plan, bool quiet, const Wrote& wrote, TraceWriter* trace = nullptr);
+void writePlan(const RenderPlan& plan, bool quiet, const Wrote& wrote, render::trace::TraceWriter* trace = nullptr);
 // the same for a 3D scene's plan, with VariantDiverged3d for a divergence
-void writePlan3d(const RenderPlan3d& plan, bool quiet, const Wrote& wrote, TraceWriter3d* trace = nullptr);
+void writePlan3d(const RenderPlan3d& plan, bool quiet, const Wrote& wrote, render::trace::TraceWriter3d* trace = nullptr);
 
 }  // namespace render::video

@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "render/golden/trace_csv.h"
+#include "render/trace/trace_csv.h"
 #include "sim/yaml/scene_error.h"
 #include "sim/yaml/scene_yaml.h"
 
@@ -30,7 +30,7 @@ bodies:
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
   try {
-    const render::golden::Trace trace = render::golden::traceText(text, "fuzz.csv", scene());
+    const render::trace::Trace trace = render::trace::traceText(text, "fuzz.csv", scene());
     for (const auto& samples : trace.bodies)
       for (size_t i = 0; i < samples.size(); ++i)
         if (!std::isfinite(samples[i].t) || !std::isfinite(samples[i].x) || (i > 0 && samples[i].t < samples[i - 1].t))

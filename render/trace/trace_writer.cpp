@@ -1,11 +1,11 @@
-#include "render/video/trace_writer.h"
+#include "render/trace/trace_writer.h"
 
 #include "render/jobs/csv_field.h"
 #include "render/jobs/json_writer.h"
 #include "sim/world/diagnostics.h"
 #include "sim/world3d/diagnostics.h"
 
-namespace render::video {
+namespace render::trace {
 using render::jobs::csvField;
 using render::jobs::formatNumber;
 
@@ -37,4 +37,4 @@ void TraceWriter3d::rows(const sim::world3d::World& w) {
   }
 }
 
-}  // namespace render::video
+}  // namespace render::trace

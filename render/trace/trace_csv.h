@@ -1,6 +1,6 @@
 // The trace CSV (`simulate --trace`, a golden record's trace.csv, `compare --trace`'s input): a
 // header `t,body,x,y,angle,vx,vy,omega,kinetic_energy`, then one row per body per instant, as
-// render/video/trace_writer.h writes it, read back (another simulator's trajectory: any time grid,
+// render/trace/trace_writer.h writes it, read back (another simulator's trajectory: any time grid,
 // interpolated).
 #pragma once
 
@@ -11,10 +11,10 @@
 #include "sim/scene3d/scene_def.h"
 #include "sim/world/world.h"
 
-namespace render::golden {
+namespace render::trace {
 
 inline constexpr const char* kTraceHeader = "t,body,x,y,angle,vx,vy,omega,kinetic_energy";
-// a 3D scene's (render/video/trace_writer.h)
+// a 3D scene's (render/trace/trace_writer.h)
 inline constexpr const char* kTraceHeader3d = "t,body,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,kinetic_energy";
 
 // one body's state at one time, as a row gives it
@@ -52,4 +52,4 @@ Trace traceText(const std::string& text, const std::string& file, const sim::sce
 // times
 bool sampleAt(const std::vector<TraceSample>& samples, double t, TraceSample& out, bool before = false);
 
-}  // namespace render::golden
+}  // namespace render::trace

@@ -10,7 +10,7 @@
 #include "sim/world/world.h"
 #include "sim/world3d/world.h"
 
-namespace render::video {
+namespace render::trace {
 
 // a 2D run: t,body,x,y,angle,vx,vy,omega,kinetic_energy
 class TraceWriter : public sim::world::StepObserver {
@@ -40,4 +40,4 @@ class TraceWriter3d : public sim::world3d::StepObserver {
   const sim::scene3d::SceneDef& def_;
 };
 
-}  // namespace render::video
+}  // namespace render::trace

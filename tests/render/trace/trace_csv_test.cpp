@@ -4,13 +4,13 @@
 
 #include <sstream>
 
-#include "render/golden/trace_csv.h"
-#include "render/video/trace_writer.h"
+#include "render/trace/trace_csv.h"
+#include "render/trace/trace_writer.h"
 #include "sim/scene/scene_build.h"
 #include "sim/yaml/scene_yaml.h"
 #include "support/scene_error_check.h"
 
-using namespace render::golden;
+using namespace render::trace;
 
 namespace {
 
@@ -28,7 +28,7 @@ Trace read(const std::string& text) { return traceText(text, "theirs.csv", kScen
 TEST_CASE("what simulate --trace writes reads back, row for row") {
   sim::world::World world = sim::scene::buildWorld(kScene);
   std::ostringstream out;
-  render::video::TraceWriter writer(out, kScene);
+  render::trace::TraceWriter writer(out, kScene);
   writer.rows(world);
   world.advanceTo(0.1, &writer);
   const Trace t = read(out.str());
@@ -87,7 +87,7 @@ bodies:
                                                               "names.yaml");
   sim::world::World world = sim::scene::buildWorld(scene);
   std::ostringstream out;
-  render::video::TraceWriter writer(out, scene);
+  render::trace::TraceWriter writer(out, scene);
   writer.rows(world);
   world.advanceTo(0.01, &writer);
   const Trace t = traceText(out.str(), "names.csv", scene);

@@ -1,4 +1,4 @@
-#include "render/golden/trace_csv.h"
+#include "render/trace/trace_csv.h"
 
 #include <algorithm>
 #include <array>
@@ -18,7 +18,7 @@
 #include "sim/yaml/path_name.h"
 #include "sim/yaml/scene_error.h"
 
-namespace render::golden {
+namespace render::trace {
 using render::jobs::formatNumber;
 
 namespace {
@@ -277,4 +277,4 @@ bool sampleAt(const std::vector<TraceSample>& samples, double t, TraceSample& ou
   return true;
 }
 
-}  // namespace render::golden
+}  // namespace render::trace
