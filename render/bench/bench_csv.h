@@ -15,20 +15,37 @@
 #include <iostream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "render/jobs/atomic_file.h"
 
 namespace bench {
 
-// the first line of a command's output, without its newline ("" when it fails)
-inline std::string commandLine(const char* command) {
-  std::string text;
+// the lines of a command's output, without their newlines (none when it fails)
+inline std::vector<std::string> commandLines(const char* command) {
+  std::vector<std::string> lines;
   if (FILE* pipe = ::popen(command, "r")) {
-    std::array<char, 256> buffer{};
-    if (std::fgets(buffer.data(), static_cast<int>(buffer.size()), pipe)) text = buffer.data();
+    std::array<char, 512> buffer{};
+    while (std::fgets(buffer.data(), static_cast<int>(buffer.size()), pipe)) {
+      std::string line = buffer.data();
+      while (!line.empty() && (line.back() == '\n' || line.back() == '\r')) line.pop_back();
+      lines.push_back(line);
+    }
     ::pclose(pipe);
   }
-  while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
+  return lines;
+}
+
+// the commit checked out, and the tracked files changed since, if any, by name: a change to the
+// docs alone does not change what was measured, and a reader can tell
+inline std::string commitText() {
+  const std::vector<std::string> head = commandLines("git rev-parse --short=12 HEAD 2>/dev/null");
+  if (head.empty()) return "unknown (not a git checkout)";
+  std::string text = head.front();
+  const std::vector<std::string> changed = commandLines("git status --porcelain --untracked-files=no 2>/dev/null");
+  for (size_t i = 0; i < changed.size() && i < 8; ++i)
+    text += (i == 0 ? " with uncommitted changes to " : ", ") + (changed[i].size() > 3 ? changed[i].substr(3) : changed[i]);
+  if (changed.size() > 8) text += " and " + std::to_string(changed.size() - 8) + " more";
   return text;
 }
 
@@ -62,16 +79,13 @@ inline std::string csvPreamble(int argc, char** argv) {
   ::gmtime_r(&now, &utc);
   char date[64];
   std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", &utc);
-  std::string commit = commandLine("git rev-parse --short=12 HEAD 2>/dev/null");
-  if (commit.empty()) commit = "unknown (not a git checkout)";
-  else if (!commandLine("git status --porcelain --untracked-files=no 2>/dev/null").empty()) commit += " with uncommitted changes";
   double load[1] = {0.0};
   const bool haveLoad = ::getloadavg(load, 1) == 1;
   char loadText[32] = "unknown";
   if (haveLoad) std::snprintf(loadText, sizeof loadText, "%.2f", load[0]);
   return "# command: " + command + "\n# machine: " + fileValue("/proc/cpuinfo", "model name", ':') + ", " +
          std::to_string(cores) + " cores, " + fileValue("/etc/os-release", "PRETTY_NAME", '=') + "\n# date: " + date +
-         "\n# commit: " + commit + "\n# load: " + loadText + " (1-minute load average as the bench started)\n";
+         "\n# commit: " + commitText() + "\n# load: " + loadText + " (1-minute load average as the bench started)\n";
 }
 
 // `text` written to `path` whole, its folder made if missing: under a temporary name, then renamed
