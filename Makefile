@@ -83,9 +83,12 @@ format:
 	@test -n "$(FORMAT_FILES)" || { echo "format: no C++ files from git ls-files (run it in a git clone)"; exit 1; }
 	$(CLANG_FORMAT) -i $(FORMAT_FILES)
 
-# timings (never asserted in tests): stacks against Box2D 2.4 in the same run (both pyramids, their
-# three layouts and Box2D's arch, 600 steps; soft_step in doubles and in floats); check's start-up, the video pipeline's parts per frame and the whole render
-# against ffmpeg alone at 720p and 1080p, the lecture pack's wall time;
+# timings (never asserted in tests), written as data beside the bench: render/bench/results/stacks.csv
+# (stacks against Box2D 2.4, and Box2D v3 with BOX2D3, in the same run: both pyramids, their three
+# layouts and Box2D's arch, 600 steps; soft_step in doubles and floats, recycling off and on, one
+# and two threads) and render/bench/results/renders.csv (check's start-up, the video pipeline's parts
+# per frame and the whole render against ffmpeg alone at 720p and 1080p, the lecture pack's wall
+# time); each opens with the command, the machine, the date and the commit (render/bench/README.md).
 # BENCH_BASELINE=path/to/another/rigidreel times that build too, in the same run
 BENCH_BASELINE ?=
 # BOX2D3=DIR: Box2D v3's column in the stack table, from DIR/b3_pyramid (built by
@@ -93,13 +96,15 @@ BENCH_BASELINE ?=
 BOX2D3 ?=
 # BENCH_FLAGS=--renders-only: the 720p render rows alone (the poll and both pyramids), a few minutes
 BENCH_FLAGS ?=
+# where the CSVs go (committed: the runs the docs link to)
+BENCH_RESULTS ?= render/bench/results
 bench: build
 	@$(MAKE) --no-print-directory deps PACKAGES="$(BENCH_PACKAGES)"
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
 	@cmake --build $(BUILD) -j $(JOBS) --target rigidreel_bench rigidreel_stack_bench
-	@mkdir -p out/bench && rm -f out/bench/stacks.csv
-	./$(BUILD)/rigidreel_stack_bench --method sequential --method soft_step --precision double --precision float --recycle off --recycle on --threads 1 --threads 2 --csv out/bench/stacks.csv $(if $(BOX2D3),--box2d3 $(BOX2D3))
-	./$(BUILD)/rigidreel_bench ./$(BUILD)/rigidreel scenes/three_collisions_poll.yaml $(BENCH_BASELINE) $(BENCH_FLAGS)
+	@mkdir -p out/bench $(BENCH_RESULTS)
+	./$(BUILD)/rigidreel_stack_bench --method sequential --method soft_step --precision double --precision float --recycle off --recycle on --threads 1 --threads 2 --csv $(BENCH_RESULTS)/stacks.csv $(if $(BOX2D3),--box2d3 $(BOX2D3))
+	./$(BUILD)/rigidreel_bench ./$(BUILD)/rigidreel scenes/three_collisions_poll.yaml $(BENCH_BASELINE) --csv $(BENCH_RESULTS)/renders.csv $(BENCH_FLAGS)
 
 clean:
 	rm -rf $(BUILD) $(SANITIZE_BUILD) $(FUZZ_BUILD)

@@ -3,14 +3,17 @@
 // video pipeline's parts per frame at 720p and 1080p (drawing, read-back, handing over, encoding)
 // and the whole render against ffmpeg alone encoding the same frames; the lecture pack's wall time.
 // Given a second rigidreel (a baseline build), the start-up, renders and lecture pack are timed for
-// it too, in the same run. Results go to out/bench/*.csv and a summary on stdout; ratios are
-// measured in one run, since these machines are noisy.
+// it too, in the same run. A table goes to stdout, and with `--csv FILE` a row per measure to FILE
+// (`make bench` writes render/bench/results/renders.csv; its columns: render/bench/README.md),
+// after comment lines naming the command, machine, date and commit, written whole when the run
+// ends. Ratios are measured in one run, since these machines are noisy.
 //
-// usage: rigidreel_bench RIGIDREEL SCENE [BASELINE_RIGIDREEL] [--renders-only | --antialiasing]
+// usage: rigidreel_bench RIGIDREEL SCENE [BASELINE_RIGIDREEL] [--csv FILE] [--renders-only | --antialiasing]
 // (--renders-only: the 720p renders alone, the poll and the pyramids on a box ground and on a half-plane;
 // no start-up, 1080p or lecture pack;
 // --antialiasing: the poll's and the pyramids' 720p frames at 1, 2 and 4 samples a pixel, their cost
-// split and their difference from the 4-sample frames, with frames to look at in out/bench/antialiasing)
+// split and their difference from the 4-sample frames, with frames to look at in out/bench/antialiasing;
+// no CSV)
 #include <sys/resource.h>
 #include <time.h>
 #include <unistd.h>
@@ -28,6 +31,7 @@
 #include <sstream>
 #include <string>
 
+#include "bench_csv.h"
 #include "render/draw/gl_canvas.h"
 #include "render/draw/png_io.h"
 #include "render/frame/frame_painter.h"
@@ -270,9 +274,26 @@ void compareAntialiasing(const render::video::PlannedVariant& v, const render::v
 }  // namespace
 
 int main(int argc, char** argv) {
+  const std::string preamble = bench::csvPreamble(argc, argv);
   std::vector<std::string> args(argv + 1, argv + argc);
   const bool antialiasing = std::erase(args, std::string("--antialiasing")) > 0;
   const bool rendersOnly = antialiasing || std::erase(args, std::string("--renders-only")) > 0;
+  std::string csvPath;
+  for (size_t i = 0; i < args.size();) {
+    if (args[i] == "--csv" && i + 1 < args.size()) {
+      csvPath = args[i + 1];
+      args.erase(args.begin() + static_cast<long>(i), args.begin() + static_cast<long>(i) + 2);
+    } else if (args[i].rfind("--csv=", 0) == 0) {
+      csvPath = args[i].substr(6);
+      args.erase(args.begin() + static_cast<long>(i));
+    } else if (args[i] == "--csv") {
+      std::cerr << "--csv needs a file\n";
+      return 2;
+    } else {
+      ++i;
+    }
+  }
+  if (antialiasing) csvPath.clear();
   const std::string rigidreel = args.size() > 0 ? args[0] : "build/rigidreel";
   const std::string scene = args.size() > 1 ? args[1] : "scenes/three_collisions_poll.yaml";
   const std::string baseline = args.size() > 2 ? args[2] : "";
@@ -280,14 +301,27 @@ int main(int argc, char** argv) {
   // each line as it comes: the lecture packs take minutes
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
 
-  // every timing of the pipeline, a row each: what, the program timed, the frame size, seconds, ms per frame
-  std::ofstream csv(antialiasing ? "/dev/null" : "out/bench/pipeline.csv");
-  csv << "what,program,size,frames,seconds,ms_per_frame,cpu_seconds\n";
-  auto row = [&](const std::string& what, const std::string& program, const std::string& size, long frames, double seconds,
-                 double cpu = -1.0) {
-    csv << what << ',' << program << ',' << size << ',' << frames << ',' << render::jobs::formatNumber(seconds) << ','
-        << (frames > 0 ? render::jobs::formatNumber(1000.0 * seconds / frames) : "") << ','
-        << (cpu >= 0.0 ? render::jobs::formatNumber(cpu) : "") << '\n';
+  // every timing, a row each (render/bench/README.md), kept until the run ends and written whole
+  std::ostringstream csv;
+  csv << "measure,scene,bodies,size,fps,frames,program,wall_s,cpu_s,wall_ms_per_frame,cpu_ms_per_frame,"
+         "ratio_wall_to_ffmpeg_alone,ratio_cpu_to_ffmpeg_alone,peak_mb\n";
+  // (a negative number: not measured, an empty cell)
+  struct Row {
+    std::string measure{}, scene{};
+    long bodies = -1;
+    std::string size{};
+    double fps = -1.0;
+    long frames = 0;
+    std::string program{};
+    double wall = -1.0, cpu = -1.0, ratioWall = -1.0, ratioCpu = -1.0, peakMb = -1.0;
+  };
+  auto number = [](double x) { return x >= 0.0 ? render::jobs::formatNumber(x) : std::string(); };
+  auto row = [&](const Row& r) {
+    csv << r.measure << ',' << r.scene << ',' << (r.bodies >= 0 ? std::to_string(r.bodies) : "") << ',' << r.size << ','
+        << number(r.fps) << ',' << (r.frames > 0 ? std::to_string(r.frames) : "") << ',' << r.program << ',' << number(r.wall)
+        << ',' << number(r.cpu) << ',' << (r.frames > 0 ? number(r.wall >= 0.0 ? 1000.0 * r.wall / r.frames : -1.0) : "") << ','
+        << (r.frames > 0 ? number(r.cpu >= 0.0 ? 1000.0 * r.cpu / r.frames : -1.0) : "") << ',' << number(r.ratioWall) << ','
+        << number(r.ratioCpu) << ',' << number(r.peakMb) << '\n';
   };
   std::vector<std::pair<std::string, std::string>> programs = {{"rigidreel", rigidreel}};
   if (!baseline.empty()) programs.push_back({"baseline", baseline});
@@ -297,7 +331,7 @@ int main(int argc, char** argv) {
   for (const auto& [name, program] : programs) {
     if (rendersOnly) break;
     const double s = medianTime({program, "check", checked}, 21);
-    row("check start-up", name, "", 0, s);
+    row({.measure = "check_startup", .scene = fs::path(checked).stem().string(), .program = name, .wall = s});
     std::printf("%-9s check %s: %6.1f ms (median of 21)\n", name.c_str(), checked.c_str(), 1000.0 * s);
   }
 
@@ -356,13 +390,24 @@ int main(int argc, char** argv) {
     }
     fs::remove(raw);
 
-    const std::string what = stem + " ";
-    row(what + "simulation", "rigidreel", size, frames, parts.simulation * frames / 1000.0);
-    row(what + "drawing", "rigidreel", size, frames, parts.drawing * frames / 1000.0);
-    row(what + "readback", "rigidreel", size, frames, parts.readback * frames / 1000.0);
-    row(what + "handover", "rigidreel", size, frames, parts.handover * frames / 1000.0);
-    row(what + "render into a discarding reader", "rigidreel", size, frames, side.seconds, side.cpu);
-    row(what + "encoding (ffmpeg alone)", "ffmpeg", size, frames, ffmpeg.seconds, ffmpeg.cpu);
+    const long bodies = static_cast<long>(plan.variants[out.variant].scene.model.bodies.size());
+    auto part = [&](const char* measure, const std::string& program, double wall, double cpu = -1.0) {
+      row({.measure = measure,
+           .scene = stem,
+           .bodies = bodies,
+           .size = size,
+           .fps = fps,
+           .frames = frames,
+           .program = program,
+           .wall = wall,
+           .cpu = cpu});
+    };
+    part("simulation", "rigidreel", parts.simulation * frames / 1000.0);
+    part("drawing", "rigidreel", parts.drawing * frames / 1000.0);
+    part("readback", "rigidreel", parts.readback * frames / 1000.0);
+    part("handover", "rigidreel", parts.handover * frames / 1000.0);
+    part("render_into_discarding_reader", "rigidreel", side.seconds, side.cpu);
+    part("ffmpeg_alone", "ffmpeg", ffmpeg.seconds, ffmpeg.cpu);
     const double perFrame = 1000.0 / frames;
     std::printf("\n%s, %ld frames of %s (%zu bodies), ms per frame:\n", size.c_str(), frames, stem.c_str(),
                 plan.variants[out.variant].scene.model.bodies.size());
@@ -370,14 +415,21 @@ int main(int argc, char** argv) {
                 parts.simulation, parts.drawing, parts.readback, parts.handover, ffmpeg.seconds * perFrame);
     std::printf("  rigidreel's side into a discarding reader: %6.2f (CPU %.2f)\n", side.seconds * perFrame, side.cpu * perFrame);
     for (const Whole& whole : wholes) {
-      row(what + "whole render", whole.name, size, frames, whole.timed.seconds, whole.timed.cpu);
+      row({.measure = "whole_render",
+           .scene = stem,
+           .bodies = bodies,
+           .size = size,
+           .fps = fps,
+           .frames = frames,
+           .program = whole.name,
+           .wall = whole.timed.seconds,
+           .cpu = whole.timed.cpu,
+           .ratioWall = whole.timed.seconds / ffmpeg.seconds,
+           .ratioCpu = whole.timed.cpu / ffmpeg.cpu,
+           .peakMb = whole.peakMb});
       std::printf("  %-9s whole render %6.2f (%5.1f frames/s, peak %6.1f MB), %.2f x ffmpeg alone (CPU time: %.2f x)\n",
                   whole.name.c_str(), whole.timed.seconds * perFrame, frames / whole.timed.seconds, whole.peakMb,
                   whole.timed.seconds / ffmpeg.seconds, whole.timed.cpu / ffmpeg.cpu);
-      csv << "ratio whole render to ffmpeg alone " << stem << ',' << whole.name << ',' << size << ",,"
-          << render::jobs::formatNumber(whole.timed.seconds / ffmpeg.seconds) << ",\n";
-      csv << "peak resident MB " << stem << ',' << whole.name << ',' << size << ",," << render::jobs::formatNumber(whole.peakMb)
-          << ",\n";
     }
     std::printf("  rigidreel's video is ffmpeg alone's, byte for byte: %s\n", same ? "yes" : "NO");
   };
@@ -415,9 +467,9 @@ int main(int argc, char** argv) {
     const std::string dir = "out/bench/lecture-" + name;
     fs::remove_all(dir);
     const Timed t = timeProgram({program, "lecture", "scenes/lecture", "-o", dir, "--quiet"});
-    row("lecture pack", name, "", 0, t.seconds, t.cpu);
+    row({.measure = "lecture_pack", .scene = "scenes/lecture", .program = name, .wall = t.seconds, .cpu = t.cpu});
     std::printf("%-9s lecture pack: %6.1f s (CPU time %6.1f s)\n", name.c_str(), t.seconds, t.cpu);
   }
-  if (!antialiasing) std::printf("wrote out/bench/pipeline.csv\n");
+  if (!csvPath.empty() && !bench::writeCsv(csvPath, preamble + csv.str())) return 1;
   return 0;
 }

@@ -12,30 +12,10 @@
 // the end of the timed steps. The output's `timed steps` column and the CSV's first_timed_step and
 // last_timed_step say which (steps counted from 1 at the start of the simulation).
 //
-// CSV (`--csv`, one row per layout and engine, appended; `make bench` writes out/bench/stacks.csv):
-//   layout, engine, boxes                       what ran
-//   settle_steps                                untimed steps before the timed ones
-//   first_timed_step, last_timed_step           the timed steps, counted from 1
-//   velocity_iterations, position_iterations    the solver settings (Box2D's benchmark: 8 and 3)
-//   ms_per_step, cpu_ms_per_step                wall and stepping-thread processor time per timed step
-//   cpu_ratio_to_box2d                          cpu_ms_per_step over Box2D's in this run (empty for Box2D
-//                                               itself, or without it)
-//   top_displacement_m                          the top box's distance from its rest pose, at the end
-//   max_off_rest_x_m                            the largest |x - rest x| (the bulge), at the end
-//   fastest_m_per_s, fastest_rad_per_s          the fastest body's |v| and |w|, at the end
-//   moved                                       boxes > 0.1 m off their rest x or 0.5 m below rest y
-//   worst_top_second_half_m,                    the largest top displacement and body speed over the
-//   worst_fastest_second_half_m_per_s           second half of the timed steps, every 10 steps
-//   diverged                                    1 when a state stopped being finite
-//   substeps, contact_hertz                     soft_step's rows: its settings (--substeps,
-//                                               --contact-hertz); empty on the others
-//   cpu_ratio_to_box2d_v3                       cpu_ms_per_step over Box2D v3's (--box2d3, packed layouts)
-//   precision                                   ours: double, or float on soft_step:float's rows
-//                                               (--precision); empty on Box2D's
-//   top_drop_m                                  how far the top box sank, y_rest − y, at the end (the
-//                                               arch's sag)
-//   gravity                                     along y, m/s² (--gravity; -10 unless nudged)
-//   skin                                        Box2D's rows: --box2d-skin; ours: --ours-skin
+// CSV (`--csv FILE`, written whole when the run ends, under a temporary name then renamed; `make
+// bench` writes render/bench/results/stacks.csv): `#` lines naming the command, the machine, the date
+// and the commit (bench_csv.h), a header row, then one row per layout and engine. The columns are
+// described in render/bench/README.md.
 //
 // rigidreel is reached only through scene definitions and World's public members (bodies,
 // advanceTo), so the program does not depend on how World is organised inside.
@@ -46,8 +26,9 @@
 // the boxes as Box2D's testbed does (its touching layout then starts 2 cm deep at every contact).
 // The arch's stones are polygons of their own, inset the same way. `--ours-skin core` grows ours by
 // the same 1 cm, so that both engines run the outline of Box2D's testbed shapes (ours with sharp
-// corners); Box2D's arch sags much less with its own skin (sim/README.md: `sequential` beside Box2D
-// 2.4), so a comparison is made with the same skin on both sides.
+// corners); Box2D's arch sags much less with its own skin (about 0.37 m against 0.46 m with stones
+// as large as ours, medians over nudged gravity), so a comparison is made with the same skin on
+// both sides.
 // Box2D's tolerances are compiled into the library; rigidreel's match them (sim/core/settings.h:
 // linear slop 0.5 cm, Baumgarte 0.2, largest correction 0.2 m, restitution threshold 1 m/s).
 #if RIGIDREEL_HAVE_BOX2D
@@ -67,6 +48,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_csv.h"
 #include "stack_layouts.h"
 #include "sim/core/settings.h"
 #include "sim/scene/scene_build.h"
@@ -331,11 +313,23 @@ std::optional<RunResult> runBox2d3(const std::string& dir, int base, const RunOp
   if (pclose(pipe) != 0 || read != 3) return std::nullopt;
   const double nan = std::nan("");
   RunResult r;
-  r.metrics = {top, nan, fastest, nan, -1};
+  // what b3_pyramid prints: the top box's displacement and the fastest body; the rest unmeasured
+  r.metrics.topDisplacement = top;
+  r.metrics.topDrop = r.metrics.maxOffRestX = r.metrics.fastestSpin = nan;
+  r.metrics.fastestSpeed = fastest;
+  r.metrics.moved = -1;
   r.worstTop = r.worstSpeed = nan;
   r.msPerStep = nan;
   r.cpuMsPerStep = ms;
   return r;
+}
+
+// a CSV cell: empty where the engine does not measure it (NaN; b3_pyramid's unmeasured values)
+std::string cell(double x) {
+  if (!std::isfinite(x)) return "";
+  std::ostringstream s;
+  s << x;
+  return s.str();
 }
 
 // "pyramid:100:touching", "pyramid:20:dropped", "pyramid:100:packed", "pyramid:100:packed:plane" (ours
@@ -421,7 +415,9 @@ int main(int argc, char** argv) {
   app.add_option("--box2d3", box2d3Dir,
                  "a folder holding Box2D v3's b3_pyramid (../shared/peers/box2d-v3/build.sh DIR): its column on the "
                  "packed pyramids, the scene it builds");
-  app.add_option("--csv", csvPath, "append one row per layout and engine to this file");
+  app.add_option("--csv", csvPath,
+                 "write one row per layout and engine to this file, after comment lines naming the command, machine, "
+                 "date and commit (written whole when the run ends)");
   CLI11_PARSE(app, argc, argv);
   options.box2dOuterSkin = skin == "outer";
   options.ourGrowth = ourSkin == "core" ? kBox2dPolygonRadius : 0.0;
@@ -444,17 +440,13 @@ int main(int argc, char** argv) {
 #endif
   if (engine == "box2d") ourMethods.clear();
 
-  std::ofstream csv;
-  if (!csvPath.empty()) {
-    const bool fresh = !std::ifstream(csvPath).good();
-    csv.open(csvPath, std::ios::app);
-    if (fresh)
-      csv << "layout,engine,boxes,settle_steps,first_timed_step,last_timed_step,velocity_iterations,"
-             "position_iterations,ms_per_step,cpu_ms_per_step,cpu_ratio_to_box2d,top_displacement_m,max_off_rest_x_m,"
-             "fastest_m_per_s,fastest_rad_per_s,moved,worst_top_second_half_m,worst_fastest_second_half_m_per_s,"
-             "diverged,substeps,contact_hertz,cpu_ratio_to_box2d_v3,precision,top_drop_m,gravity,skin,recycle,threads,"
-             "wall_ratio_to_box2d_v3\n";
-  }
+  // the CSV's rows, kept until the run ends and then written whole
+  const std::string preamble = bench::csvPreamble(argc, argv);
+  std::ostringstream csv;
+  csv << "layout,boxes,engine,method,precision,recycle,threads,substeps,contact_hertz,velocity_iterations,"
+         "position_iterations,gravity,skin,settle_steps,first_timed_step,last_timed_step,ms_per_step,cpu_ms_per_step,"
+         "cpu_ratio_to_box2d,cpu_ratio_to_box2d_v3,wall_ratio_to_box2d_v3,top_displacement_m,top_drop_m,max_off_rest_x_m,"
+         "fastest_m_per_s,fastest_rad_per_s,moved,worst_top_second_half_m,worst_fastest_second_half_m_per_s,diverged\n";
   const int mostThreads = *std::max_element(threadCounts.begin(), threadCounts.end());
   std::printf("gravity %g, dt %.6g, %d velocity and %d position iterations, friction %g, restitution %g\n", settings.gravity,
               settings.dt, settings.velocityIterations, settings.positionIterations, settings.friction, settings.restitution);
@@ -495,32 +487,46 @@ int main(int argc, char** argv) {
                   layout->name.c_str(), name.c_str(), layout->boxes.size(), timed, r.msPerStep, r.cpuMsPerStep, m.topDisplacement,
                   m.topDrop, m.maxOffRestX, m.fastestSpeed, m.fastestSpin, m.moved, r.worstTop, r.worstSpeed, ratio, ratio3,
                   r.diverged ? "  DIVERGED" : "");
-      if (csv.is_open())
-        csv << layout->name << ',' << name << ',' << layout->boxes.size() << ',' << r.settleSteps << ',' << r.settleSteps + 1
-            << ',' << r.settleSteps + options.steps << ',' << settings.velocityIterations << ',' << settings.positionIterations
-            << ',' << r.msPerStep << ',' << r.cpuMsPerStep << ',' << ratio << ',' << m.topDisplacement << ',' << m.maxOffRestX
-            << ',' << m.fastestSpeed << ',' << m.fastestSpin << ',' << m.moved << ',' << r.worstTop << ',' << r.worstSpeed << ','
-            << r.diverged << ',';
-      // the soft_step settings on soft_step's rows only
-      if (name.rfind("soft_step", 0) == 0) csv << options.substeps << ',' << options.contactHertz;
-      else csv << ',';
+      // the CSV's row: what ran, at which settings, which steps were timed, then the measures
       const bool ours = name.rfind("box2d", 0) != 0;
-      csv << ',' << ratio3 << ','
+      const bool soft = name.rfind("soft_step", 0) == 0;
+      csv << layout->name << ',' << layout->boxes.size() << ','
+          << (name == "box2d" ? "box2d-2.4"
+              : ours          ? "rigidreel"
+                              : name)
+          << ',' << (ours ? name.substr(0, name.find(':')) : "") << ','
           << (!ours                                      ? ""
               : name.find(":float") != std::string::npos ? "float"
                                                          : "double")
-          << ',' << m.topDrop << ',' << settings.gravity << ','
+          << ','
+          << (name.find(":recycle") != std::string::npos ? "on"
+              : soft                                     ? "off"
+                                                         : "")
+          << ',' << (ours ? std::to_string(r.threads) : "") << ',';
+      // the soft_step settings on soft_step's rows (and v3's substeps); the iterations on sequential's
+      // and Box2D 2.4's
+      const bool v3 = name == "box2d-v3";
+      if (soft || v3) csv << options.substeps;
+      csv << ',';
+      if (soft) csv << options.contactHertz;
+      csv << ',';
+      if (!v3 && !soft) csv << settings.velocityIterations << ',' << settings.positionIterations;
+      else csv << ',';
+      csv << ',' << settings.gravity << ','
           << (name == "box2d" ? skin
               : ours          ? ourSkin
                               : "")
-          << ','
-          << (name.find(":recycle") != std::string::npos ? "on"
-              : name.rfind("soft_step", 0) == 0          ? "off"
-                                                         : "")
-          << ',' << (ours ? std::to_string(r.threads) : "") << ',';
+          << ',' << r.settleSteps << ',' << r.settleSteps + 1 << ',' << r.settleSteps + options.steps << ',' << cell(r.msPerStep)
+          << ',' << cell(r.cpuMsPerStep) << ',';
+      if (peer && &r != &*peer) csv << r.cpuMsPerStep / peer->cpuMsPerStep;
+      csv << ',';
+      if (peer3 && &r != &*peer3) csv << r.cpuMsPerStep / peer3->cpuMsPerStep;
+      csv << ',';
       // wall time against v3's one thread (its processor time: one thread, nothing to wait for)
       if (peer3 && &r != &*peer3) csv << r.msPerStep / peer3->cpuMsPerStep;
-      csv << '\n';
+      csv << ',' << cell(m.topDisplacement) << ',' << cell(m.topDrop) << ',' << cell(m.maxOffRestX) << ',' << cell(m.fastestSpeed)
+          << ',' << cell(m.fastestSpin) << ',' << (m.moved >= 0 ? std::to_string(m.moved) : "") << ',' << cell(r.worstTop) << ','
+          << cell(r.worstSpeed) << ',' << r.diverged << '\n';
       std::fflush(stdout);
       status |= r.diverged;
     };
@@ -570,5 +576,6 @@ int main(int argc, char** argv) {
   std::printf(
       "/box2d: processor time per step against Box2D 2.4's in this run; /v3: against Box2D v3's (--box2d3), \"w\": our wall "
       "time on several threads against v3's one\n");
+  if (!csvPath.empty() && !bench::writeCsv(csvPath, preamble + csv.str())) return 1;
   return status;
 }
