@@ -7,6 +7,7 @@
 #include "sim/world/diagnostics.h"
 
 namespace render::analysis {
+using sim::world::World;
 using namespace sim::core;
 using namespace sim::world;
 

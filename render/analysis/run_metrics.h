@@ -9,7 +9,6 @@
 #include "sim/world/world.h"
 
 namespace render::analysis {
-using sim::world::World;
 
 struct RunMetrics {
   bool finite = true;
@@ -55,7 +54,7 @@ void summarizeEnergies(const std::vector<double>& energies, RunMetrics& metrics)
 
 // runs the world to `until` (it must not have started), recording the metrics step by step;
 // a divergence ends the run and is recorded, not thrown
-RunMetrics measureRun(World& world, double until, const MetricsOptions& options);
+RunMetrics measureRun(sim::world::World& world, double until, const MetricsOptions& options);
 
 // the stability criteria: finite; energy trend ≤ 10 %; no tunneling; top of a stack drifting less
 // than 5 % of its size; every body within `within` of its start and at rest (when asked);

@@ -2,6 +2,7 @@
 
 namespace render::draw {
 
+using sim::core::Vec2;
 Camera::Camera(const Vec2& center, double worldHeight, int widthPx, int heightPx)
     : center_(center), worldHeight_(worldHeight), widthPx_(widthPx), heightPx_(heightPx) {}
 

@@ -5,6 +5,7 @@
 
 namespace render::draw {
 
+using sim::core::Vec2;
 namespace {
 
 // 6 significant digits: what a picture can show, and stable under last-digit round-off; round-off

@@ -13,38 +13,38 @@
 
 namespace render::draw {
 
-using sim::core::Vec2;
-
 // a call's points: one or two held in place (a point, an arrow: no allocation, so that recording a
 // pile's 20,000 contacts a step costs no malloc each), a polygon's vertices in a vector
 class CallPoints {
  public:
-  CallPoints(std::initializer_list<Vec2> points) : count_(points.size()) {
+  CallPoints(std::initializer_list<sim::core::Vec2> points) : count_(points.size()) {
     if (count_ > 2) {
       vertices_.assign(points.begin(), points.end());
       return;
     }
     std::copy(points.begin(), points.end(), held_);
   }
-  explicit CallPoints(const std::vector<Vec2>& vertices) : count_(vertices.size()), vertices_(vertices) { polygon_ = true; }
+  explicit CallPoints(const std::vector<sim::core::Vec2>& vertices) : count_(vertices.size()), vertices_(vertices) {
+    polygon_ = true;
+  }
   size_t size() const { return count_; }
   bool empty() const { return count_ == 0; }
-  const Vec2* begin() const { return stored() ? vertices_.data() : held_; }
-  const Vec2* end() const { return begin() + count_; }
-  const Vec2& operator[](size_t i) const { return begin()[i]; }
-  const Vec2& at(size_t i) const {
+  const sim::core::Vec2* begin() const { return stored() ? vertices_.data() : held_; }
+  const sim::core::Vec2* end() const { return begin() + count_; }
+  const sim::core::Vec2& operator[](size_t i) const { return begin()[i]; }
+  const sim::core::Vec2& at(size_t i) const {
     if (i >= count_) throw std::out_of_range("CallPoints::at");
     return begin()[i];
   }
   // a polygon's vertices, as Canvas::polygon takes them
-  const std::vector<Vec2>& vertices() const { return vertices_; }
+  const std::vector<sim::core::Vec2>& vertices() const { return vertices_; }
 
  private:
   bool stored() const { return polygon_ || count_ > 2; }
   size_t count_ = 0;
   bool polygon_ = false;
-  Vec2 held_[2];
-  std::vector<Vec2> vertices_;
+  sim::core::Vec2 held_[2];
+  std::vector<sim::core::Vec2> vertices_;
 };
 
 // a pen as a draw-list line writes it: its role, then #body, @opacity and ~arrow colour where set,
@@ -62,14 +62,14 @@ class DrawList final : public Canvas {
     Pen style;
   };
 
-  void polygon(const std::vector<Vec2>& vertices, const Pen& style) override;
-  void circle(const Vec2& center, double radius, const Pen& style) override;
-  void halfPlane(const Vec2& point, const Vec2& normal, const Pen& style) override;
-  void segment(const Vec2& a, const Vec2& b, const Pen& style) override;
-  void point(const Vec2& p, const Pen& style) override;
-  void arrow(const Vec2& tail, const Vec2& head, const Pen& style) override;
-  void text(const Vec2& at, const std::string& text, const Pen& style) override;
-  void label(const Vec2& anchor, const Vec2& direction, const std::string& text, const Pen& style) override;
+  void polygon(const std::vector<sim::core::Vec2>& vertices, const Pen& style) override;
+  void circle(const sim::core::Vec2& center, double radius, const Pen& style) override;
+  void halfPlane(const sim::core::Vec2& point, const sim::core::Vec2& normal, const Pen& style) override;
+  void segment(const sim::core::Vec2& a, const sim::core::Vec2& b, const Pen& style) override;
+  void point(const sim::core::Vec2& p, const Pen& style) override;
+  void arrow(const sim::core::Vec2& tail, const sim::core::Vec2& head, const Pen& style) override;
+  void text(const sim::core::Vec2& at, const std::string& text, const Pen& style) override;
+  void label(const sim::core::Vec2& anchor, const sim::core::Vec2& direction, const std::string& text, const Pen& style) override;
 
   // "polygon", "circle", "halfplane", "segment", "point", "arrow", "text", "label"
   static const char* kindName(Kind kind);

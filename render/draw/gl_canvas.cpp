@@ -12,6 +12,7 @@
 
 namespace render::draw {
 
+using sim::core::Vec2;
 namespace {
 
 const Color kWhite{1.0, 1.0, 1.0, 1.0};

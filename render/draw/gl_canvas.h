@@ -42,15 +42,15 @@ class GlCanvas final : public Canvas {
   // the same into `frame`, whose storage is reused when it has the frame's size already
   void finish(Image& frame);
 
-  void polygon(const std::vector<Vec2>& vertices, const Pen& style) override;
-  void circle(const Vec2& center, double radius, const Pen& style) override;
-  void halfPlane(const Vec2& point, const Vec2& normal, const Pen& style) override;
-  void segment(const Vec2& a, const Vec2& b, const Pen& style) override;
-  void point(const Vec2& p, const Pen& style) override;
-  void arrow(const Vec2& tail, const Vec2& head, const Pen& style) override;
-  void text(const Vec2& at, const std::string& text, const Pen& style) override;
+  void polygon(const std::vector<sim::core::Vec2>& vertices, const Pen& style) override;
+  void circle(const sim::core::Vec2& center, double radius, const Pen& style) override;
+  void halfPlane(const sim::core::Vec2& point, const sim::core::Vec2& normal, const Pen& style) override;
+  void segment(const sim::core::Vec2& a, const sim::core::Vec2& b, const Pen& style) override;
+  void point(const sim::core::Vec2& p, const Pen& style) override;
+  void arrow(const sim::core::Vec2& tail, const sim::core::Vec2& head, const Pen& style) override;
+  void text(const sim::core::Vec2& at, const std::string& text, const Pen& style) override;
   // where it prefers, measured: a frame's labels reach here placed, as text
-  void label(const Vec2& anchor, const Vec2& direction, const std::string& text, const Pen& style) override;
+  void label(const sim::core::Vec2& anchor, const sim::core::Vec2& direction, const std::string& text, const Pen& style) override;
   // many points: their discs with chords within a quarter pixel, not a twentieth (a 720p frame of
   // 800 contact dots drew 10 triangles a dot instead of 21: its drawing took half the time)
   void manyPoints(double dotRadiusPx) override { manyDotRadius_ = dotRadiusPx; }
@@ -64,7 +64,7 @@ class GlCanvas final : public Canvas {
 
  private:
   struct QueuedText {
-    Vec2 pixel;
+    sim::core::Vec2 pixel;
     std::string text;
     Anchor anchor;
     Color color;
@@ -95,26 +95,26 @@ class GlCanvas final : public Canvas {
   // that `marks` its pixels (for hatching), or a translucent one whose pieces may `overlap` (a
   // stroke's quads and round joins), under a fresh stencil value, so that no pixel blends twice
   void beginPrimitive(const Color& c, double opacity, bool marks = false, bool overlaps = true);
-  void vertex(const Vec2& world);
+  void vertex(const sim::core::Vec2& world);
   // glBegin(mode), the mode in the static part's key; endShape() is its glEnd. An opaque
   // primitive's fans and strips go into the batch instead, as the triangles GL would make of them
   void shape(unsigned mode);
   void endShape();
   // the unit circle's n + 1 points (the last is the first), shared by every disc of n segments
-  const std::vector<Vec2>& unitCircle(int n);
-  void fillConvex(const std::vector<Vec2>& vertices);
+  const std::vector<sim::core::Vec2>& unitCircle(int n);
+  void fillConvex(const std::vector<sim::core::Vec2>& vertices);
   // a disc of at least `least` segments (chords within `tolerance` pixels)
-  void fillDisc(const Vec2& center, double radius, double tolerance = 0.05, int least = 8);
-  void ring(const Vec2& center, double radius, double width);
-  void strokeSegment(const Vec2& a, const Vec2& b, double width);
-  void strokeClosed(const std::vector<Vec2>& vertices, double width);
+  void fillDisc(const sim::core::Vec2& center, double radius, double tolerance = 0.05, int least = 8);
+  void ring(const sim::core::Vec2& center, double radius, double width);
+  void strokeSegment(const sim::core::Vec2& a, const sim::core::Vec2& b, double width);
+  void strokeClosed(const std::vector<sim::core::Vec2>& vertices, double width);
   // a closed convex outline with mitred corners, `half` its half width in world units
-  void strokeMitred(const std::vector<Vec2>& vertices, double half);
+  void strokeMitred(const std::vector<sim::core::Vec2>& vertices, double half);
   // each vertex's move to its mitred outline's outer corner, `half` the outline's width away
-  static std::vector<Vec2> mitres(const std::vector<Vec2>& vertices, double half);
+  static std::vector<sim::core::Vec2> mitres(const std::vector<sim::core::Vec2>& vertices, double half);
   // a small opaque polygon filled and outlined (mitred) as two fills; false (nothing drawn) when
   // it is too large or narrower than its outline
-  bool fillOutlined(const std::vector<Vec2>& vertices, const Color& fill, const Color& stroke, double width);
+  bool fillOutlined(const std::vector<sim::core::Vec2>& vertices, const Color& fill, const Color& stroke, double width);
   // polygons under this many pixels across are outlined mitred (strokeMitred), as one strip
   static constexpr double kSmallOutlinePx = 16.0;
   // a frame of at least this many moving bodies, every one under kSmallOutlinePx across, is dense:
@@ -126,7 +126,7 @@ class GlCanvas final : public Canvas {
   // a moving body `extent` world units across counted as small or large
   void countBody(double extent);
   // `outline` px of the arrow's own shape added around it (0: the arrow itself)
-  void strokeArrow(const Vec2& tail, const Vec2& head, double width, double outline = 0.0);
+  void strokeArrow(const sim::core::Vec2& tail, const sim::core::Vec2& head, double width, double outline = 0.0);
   // diagonal lines over the pixels of the primitive just drawn, within `box` (its bounds) and the view
   void hatch(const Bounds& box, const Color& c, double opacity);
   // the segments of a disc of `radius`: chords within `tolerance` pixels of the circle
@@ -136,7 +136,7 @@ class GlCanvas final : public Canvas {
   GlContext& gl_;
   TextRenderer& textRenderer_;
   const Style& style_;
-  Camera camera_{Vec2::Zero(), 1.0, 1, 1};
+  Camera camera_{sim::core::Vec2::Zero(), 1.0, 1, 1};
   double px_ = 1.0;     // world length of one output pixel
   int stencil_ = -1;    // the stencil value of the primitive being drawn, 0 for none
   int glStencil_ = -1;  // the stencil value GL's stencil test is set to (-1: unknown)
@@ -151,7 +151,7 @@ class GlCanvas final : public Canvas {
   int shapeCount_ = 0;
   BatchVertex shapeFirst_{}, shapePrevious_{};
   int drawCalls_ = 0;
-  std::map<int, std::vector<Vec2>> unitCircles_;
+  std::map<int, std::vector<sim::core::Vec2>> unitCircles_;
   std::vector<QueuedText> texts_;
 };
 

@@ -6,6 +6,8 @@
 
 namespace render::draw3d {
 
+using sim::core::Vec2;
+using sim::world3d::Vec3;
 namespace {
 
 // the depth range a ball needs, seen from `distance` away: a little more than the ball on each

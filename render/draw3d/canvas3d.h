@@ -11,29 +11,29 @@
 #include "render/draw3d/mesh.h"
 
 namespace render::draw3d {
-using render::draw::Canvas;
-using render::draw::Pen;
 
 class Canvas3d {
  public:
   virtual ~Canvas3d() = default;
   // `mesh` (body coordinates) at the pose r = x + R r_b, shaded in its body's color (pen.body), with
   // a depth buffer, its creases, silhouette and curves outlined
-  virtual void solid(const Mesh& mesh, const Vec3& x, const Mat3& rotation, const Pen& pen) = 0;
+  virtual void solid(const Mesh& mesh, const sim::world3d::Vec3& x, const sim::world3d::Mat3& rotation,
+                     const render::draw::Pen& pen) = 0;
   // the canvas over the solids: pixels, x to the right and y up from the bottom-left corner
-  virtual Canvas& overlay() = 0;
+  virtual render::draw::Canvas& overlay() = 0;
 };
 
 // a pixel (y down from the top, as Camera3d gives it) in the overlay's coordinates (y up)
-inline Vec2 overlayPoint(const Vec2& pixel, int heightPx) { return {pixel.x(), heightPx - pixel.y()}; }
+inline sim::core::Vec2 overlayPoint(const sim::core::Vec2& pixel, int heightPx) { return {pixel.x(), heightPx - pixel.y()}; }
 // the 2D camera whose world is the overlay's: one unit a pixel, y up
 render::draw::Camera overlayCamera(int widthPx, int heightPx);
 
 // the calls as text lines: a solid per line, then the overlay's lines (DrawList::lines)
 class DrawList3d final : public Canvas3d {
  public:
-  void solid(const Mesh& mesh, const Vec3& x, const Mat3& rotation, const Pen& pen) override;
-  Canvas& overlay() override { return overlay_; }
+  void solid(const Mesh& mesh, const sim::world3d::Vec3& x, const sim::world3d::Mat3& rotation,
+             const render::draw::Pen& pen) override;
+  render::draw::Canvas& overlay() override { return overlay_; }
 
   // e.g. "solid Body#0 box 0.1 0.4 0.8 x=(0,0,0) R=(1,0,0)(0,1,0)(0,0,1)" (R by its rows)
   std::vector<std::string> lines() const;
@@ -42,9 +42,9 @@ class DrawList3d final : public Canvas3d {
   // each solid's call as made (a golden record's draw list compares their numbers)
   struct Solid {
     std::string mesh;
-    Pen pen;
-    Vec3 x;
-    Mat3 rotation;
+    render::draw::Pen pen;
+    sim::world3d::Vec3 x;
+    sim::world3d::Mat3 rotation;
   };
   const std::vector<Solid>& solids() const { return solidCalls_; }
 

@@ -6,6 +6,10 @@
 
 namespace render::draw3d {
 
+using render::draw::Pen;
+using sim::core::Vec2;
+using sim::world3d::Mat3;
+using sim::world3d::Vec3;
 render::draw::Camera overlayCamera(int widthPx, int heightPx) {
   return render::draw::Camera(Vec2(0.5 * widthPx, 0.5 * heightPx), heightPx, widthPx, heightPx);
 }

@@ -10,46 +10,43 @@
 #include "render/draw3d/canvas3d.h"
 
 namespace render::draw3d {
-using render::draw::Color;
-using render::draw::GlContext;
-using render::draw::Image;
-using render::draw::Style;
-using render::draw::TextRenderer;
 
 // the light of 3D frames: a fraction of each color always, and the rest by the cosine of the angle
 // between the surface and the light (from the upper left, behind the viewer)
 struct Lighting {
   double ambient = 0.55;
   double diffuse = 0.45;
-  Vec3 toLight = Vec3(-0.45, 0.6, -1.0).normalized();  // camera coordinates: right, up, forward
+  sim::world3d::Vec3 toLight = sim::world3d::Vec3(-0.45, 0.6, -1.0).normalized();  // camera coordinates: right, up, forward
 };
 
 // the color of a surface of color `base` with outward normal `normal` (world), seen by `camera`
-Color shade(const Color& base, const Vec3& normal, const Camera3d& camera, const Lighting& light = {});
+render::draw::Color shade(const render::draw::Color& base, const sim::world3d::Vec3& normal, const Camera3d& camera,
+                          const Lighting& light = {});
 
 class GlCanvas3d final : public Canvas3d {
  public:
-  GlCanvas3d(GlContext& gl, TextRenderer& text, const Style& style);
+  GlCanvas3d(render::draw::GlContext& gl, render::draw::TextRenderer& text, const render::draw::Style& style);
 
   // start a frame: clear color and depth, look through `camera`
   void begin(const Camera3d& camera);
   // the frame, the overlay's text on top
-  Image finish();
+  render::draw::Image finish();
   // the same into `frame`, whose storage is reused when it has the frame's size already
-  void finish(Image& frame);
+  void finish(render::draw::Image& frame);
 
-  void solid(const Mesh& mesh, const Vec3& x, const Mat3& rotation, const Pen& pen) override;
-  Canvas& overlay() override;
+  void solid(const Mesh& mesh, const sim::world3d::Vec3& x, const sim::world3d::Mat3& rotation,
+             const render::draw::Pen& pen) override;
+  render::draw::Canvas& overlay() override;
 
  private:
   // a line from a to b (world) `widthPx` wide on the frame, at the depth of its points, clipped to
   // the near plane
-  void strokeLine(const Vec3& a, const Vec3& b, double widthPx);
+  void strokeLine(const sim::world3d::Vec3& a, const sim::world3d::Vec3& b, double widthPx);
   // glVertex of a point in clip coordinates, its pixel added to drawn_
   void vertex(const Vec4& clip);
 
-  GlContext& gl_;
-  const Style& style_;
+  render::draw::GlContext& gl_;
+  const render::draw::Style& style_;
   Camera3d camera_;
   render::draw::GlCanvas overlay_;
   bool overlaid_ = false;  // GL is set up for the overlay

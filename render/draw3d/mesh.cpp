@@ -8,6 +8,7 @@
 
 namespace render::draw3d {
 
+using sim::world3d::Vec3;
 namespace {
 
 std::string named(const char* kind, const Vec3& v) {

@@ -3,7 +3,7 @@
 #include <algorithm>
 
 namespace render::frame {
-using render::draw::Vec2;
+using sim::core::Vec2;
 
 void dashedLine(const std::vector<Vec2>& points, bool closed, double dash, double gap, const render::draw::Pen& pen,
                 render::draw::Canvas& draw) {

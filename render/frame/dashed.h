@@ -10,7 +10,7 @@ namespace render::frame {
 
 // the polyline through `points` (closed back to the first when `closed`) as dashes `dash` long with
 // `gap` between them, in world units, the pattern going on around the corners
-void dashedLine(const std::vector<render::draw::Vec2>& points, bool closed, double dash, double gap, const render::draw::Pen& pen,
+void dashedLine(const std::vector<sim::core::Vec2>& points, bool closed, double dash, double gap, const render::draw::Pen& pen,
                 render::draw::Canvas& draw);
 
 }  // namespace render::frame

@@ -16,15 +16,11 @@
 #include "sim/world/world.h"
 
 namespace render::frame {
-using render::draw::Camera;
-using render::draw::Canvas;
-using render::draw::Role;
-using sim::core::Vec2;
 
 struct EnergyBar {
   std::string name;    // e.g. "bar ½mv²", "U", "E"
   double value = 0.0;  // J
-  Role role = Role::TotalBar;
+  render::draw::Role role = render::draw::Role::TotalBar;
   int body = -1;
 };
 
@@ -41,11 +37,11 @@ class BarPanel {
  public:
   // `topPx`: the panel's top edge (by default half a line in, as the clock)
   BarPanel(const std::vector<std::string>& widestBarTexts, const std::vector<std::string>& widestLines, double lowest,
-           double highest, const Camera& camera, double em, double topPx = -1.0);
+           double highest, const render::draw::Camera& camera, double em, double topPx = -1.0);
   // the bars (each with its value in J after its name, 0 below the run's noise floor) and the lines
   // under them; with `measure` (the frame's text widths, px) the panel widens to its widest line where
   // the layout's estimate falls short, so that no number is cut
-  void draw(const std::vector<EnergyBar>& bars, const std::vector<std::string>& lines, Canvas& draw,
+  void draw(const std::vector<EnergyBar>& bars, const std::vector<std::string>& lines, render::draw::Canvas& draw,
             const std::function<int(const std::string&)>& measure = {}) const;
   // the panel's width at text size `em` px, insets excluded
   static double widthPx(const std::vector<std::string>& widestBarTexts, const std::vector<std::string>& widestLines, double em);
@@ -63,9 +59,9 @@ class BarPanel {
 
  private:
   // a pixel of the frame in world coordinates
-  Vec2 at(double xPx, double yPx) const { return camera_.toWorld({xPx, yPx}); }
+  sim::core::Vec2 at(double xPx, double yPx) const { return camera_.toWorld({xPx, yPx}); }
 
-  Camera camera_;
+  render::draw::Camera camera_;
   double lowest_, span_;  // the bars' scale: the run's least value (≤ 0) and largest − least, J
   double zeroBelow_;      // the bars' noise floor, J
   double em_;             // the text size, px
@@ -75,9 +71,10 @@ class BarPanel {
 
 class EnergyPanel {
  public:
-  EnergyPanel(const render::scene::Scene& def, const Camera& camera, const RunSurvey& survey);
+  EnergyPanel(const render::scene::Scene& def, const render::draw::Camera& camera, const RunSurvey& survey);
   // `measure`: the frame's text widths (px), or none (the panel's estimate)
-  void draw(const sim::world::World& world, Canvas& draw, const std::function<int(const std::string&)>& measure = {}) const;
+  void draw(const sim::world::World& world, render::draw::Canvas& draw,
+            const std::function<int(const std::string&)>& measure = {}) const;
   // the width of the frame's right-hand band the panel takes, insets included (0 without a panel),
   // px: the automatic camera keeps the bodies out of it
   static double bandPx(const render::scene::Scene& def, const RunSurvey& survey, int heightPx);
@@ -96,11 +93,11 @@ class EnergyPanel {
   // the totals of the scene's first state
   struct Totals {
     double energy = 0.0;
-    Vec2 momentum = Vec2::Zero();
+    sim::core::Vec2 momentum = sim::core::Vec2::Zero();
     double angular = 0.0;
   };
   static Totals initialTotals(const render::scene::Scene& def);
-  EnergyPanel(const render::scene::Scene& def, const Camera& camera, const RunSurvey& survey, const Totals& first);
+  EnergyPanel(const render::scene::Scene& def, const render::draw::Camera& camera, const RunSurvey& survey, const Totals& first);
 
   const render::scene::Scene& def_;
   bool energy_, momentum_;

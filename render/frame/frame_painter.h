@@ -19,22 +19,20 @@
 #include "sim/world/world.h"
 
 namespace render::frame {
-using render::draw::Camera;
-using render::draw::Canvas;
-using render::draw::DrawList;
 
 class FramePainter {
  public:
   // `width` measures text at the frame's font size, to wrap the caption (empty: an estimate)
-  FramePainter(const render::scene::Scene& def, const Camera& camera, const RunSurvey& survey, const TextWidth& width = {});
+  FramePainter(const render::scene::Scene& def, const render::draw::Camera& camera, const RunSurvey& survey,
+               const TextWidth& width = {});
 
   // what the history of a run must record for these frames
   History::Options historyOptions() const;
   // the frame at the world's present time; `ghosts` are earlier poses (strobe), oldest first. Every
   // text goes through one LabelPlacer (label_place.h) and reaches `draw` last, placed; `placed` (when
   // given) is told where each went
-  void paint(const sim::world::World& world, const History& history, const std::vector<DrawList>& ghosts, Canvas& draw,
-             std::vector<PlacedText>* placed = nullptr) const;
+  void paint(const sim::world::World& world, const History& history, const std::vector<render::draw::DrawList>& ghosts,
+             render::draw::Canvas& draw, std::vector<PlacedText>* placed = nullptr) const;
   // the text of the time caption, e.g. "t = 0.500 s"
   static std::string timeText(double t);
   // how many times slower a video shows simulation time t (the video's time map); frames say
@@ -49,10 +47,10 @@ class FramePainter {
 
  private:
   const render::scene::Scene& def_;
-  Camera camera_;
+  render::draw::Camera camera_;
   double impulseScale_, velocityScale_;  // m of arrow per N·s, per m/s
   // video timing and text: the slow-motion note and the caption, drawn last
-  void paintTimingText(double t, Canvas& draw) const;
+  void paintTimingText(double t, render::draw::Canvas& draw) const;
   // the bodies' labels, as `labels:` says (auto: those that fit, or all of a small scene)
   void paintLabels(const sim::world::World& world, LabelPlacer& draw) const;
   bool labelFits(const sim::core::Body& body, const std::string& label) const;

@@ -16,26 +16,22 @@
 #include "sim/world/world.h"
 
 namespace render::frame {
-using render::draw::Canvas;
-using render::draw::DrawList;
-using render::draw::Pen;
-using sim::core::Vec2;
 
 class History : public sim::world::StepObserver {
  public:
   // describes the contacts of the world now (points, normals, impulses, the SAT overlay)
-  using ContactDescriber = std::function<void(const sim::world::World&, Canvas&)>;
+  using ContactDescriber = std::function<void(const sim::world::World&, render::draw::Canvas&)>;
 
   struct Options {
     bool trails = false;
-    double hold = 0.5;                                  // s an afterimage stays, fading
-    bool eventImpulses = true;                          // an arrow where each event applies its impulse
-    bool impacts = true;                                // each impact the collision response logs: point, normal, impulses
-    double impulseScale = 1.0;                          // m of arrow per N·s
-    double normalLength = 1.0;                          // m, the arrow of a contact normal
-    ContactDescriber contacts;                          // the contacts touching now (empty: none)
-    std::vector<std::pair<int, Vec2>> points = {};      // body points (body coordinates) whose paths to keep
-    std::optional<ImpactLabels> labels = std::nullopt;  // impact_values: text on impact and event afterimages
+    double hold = 0.5;                                         // s an afterimage stays, fading
+    bool eventImpulses = true;                                 // an arrow where each event applies its impulse
+    bool impacts = true;                                       // each impact the collision response logs: point, normal, impulses
+    double impulseScale = 1.0;                                 // m of arrow per N·s
+    double normalLength = 1.0;                                 // m, the arrow of a contact normal
+    ContactDescriber contacts;                                 // the contacts touching now (empty: none)
+    std::vector<std::pair<int, sim::core::Vec2>> points = {};  // body points (body coordinates) whose paths to keep
+    std::optional<ImpactLabels> labels = std::nullopt;         // impact_values: text on impact and event afterimages
     // m: a trail keeps a point only this far from the one it kept before (and always the latest),
     // as drawTrails draws them: the same trail, in memory that grows with the path drawn, not with
     // the steps (10 bodies over 10⁷ steps kept every point: 3.7 GB); 0 keeps every step's
@@ -49,19 +45,20 @@ class History : public sim::world::StepObserver {
   void afterEvent(const sim::world::World& world, const sim::world::ImpulseEvent& event) override;
 
   // every dynamic body's path up to now as Trail segments, points closer than `spacing` merged
-  void drawTrails(Canvas& draw, double spacing) const;
+  void drawTrails(render::draw::Canvas& draw, double spacing) const;
   // the path so far of Options::points[k]
-  const std::vector<Vec2>& pointPath(size_t k) const { return points_[k]; }
+  const std::vector<sim::core::Vec2>& pointPath(size_t k) const { return points_[k]; }
   // a path as segments in `style`, points closer than `spacing` merged (the last one always kept)
-  static void drawPath(const std::vector<Vec2>& path, double spacing, const Pen& style, Canvas& draw);
+  static void drawPath(const std::vector<sim::core::Vec2>& path, double spacing, const render::draw::Pen& style,
+                       render::draw::Canvas& draw);
   // what happened at most `hold` before `t`, its opacity falling linearly from 1 to 0 with age
-  void drawAfterimages(double t, Canvas& draw) const;
+  void drawAfterimages(double t, render::draw::Canvas& draw) const;
 
  private:
   struct Moment {
     enum class Kind { Contact, Impact, Event };
     double time;
-    DrawList calls;
+    render::draw::DrawList calls;
     Kind kind;
     std::pair<int, int> pair;  // the bodies of an impact
   };
@@ -74,9 +71,9 @@ class History : public sim::world::StepObserver {
   void forgetOld(double now);
 
   Options options_;
-  std::vector<std::vector<Vec2>> trails_;  // by body; empty for static bodies or without trails
-  std::vector<bool> tentative_;            // by body: the trail's last point is the latest, not one kept
-  std::vector<std::vector<Vec2>> points_;  // by Options::points
+  std::vector<std::vector<sim::core::Vec2>> trails_;  // by body; empty for static bodies or without trails
+  std::vector<bool> tentative_;                       // by body: the trail's last point is the latest, not one kept
+  std::vector<std::vector<sim::core::Vec2>> points_;  // by Options::points
   // The moments held, by a number each gets when it begins: the order they are drawn in. A step
   // touches only the moments it adds, changes or forgets (each found by time or by pair), never
   // the others: a vector copied whenever one was forgotten made each step cost every held moment
@@ -85,7 +82,7 @@ class History : public sim::world::StepObserver {
   std::set<std::pair<double, long>> byTime_;          // (time, number) of each held moment, oldest first
   std::map<std::pair<int, int>, long> impactOfPair_;  // the number of each pair's impact moment
   long next_ = 0;                                     // the number the next moment gets
-  DrawList spare_;                                    // the touching contacts' previous draw list, its storage reused
+  render::draw::DrawList spare_;                      // the touching contacts' previous draw list, its storage reused
   long touching_ = -1;                                // the number of the contacts still touching, -1 when none
   size_t impactsSeen_ = 0;                            // records of world.impacts already turned into moments
 };

@@ -7,7 +7,6 @@
 #include "sim/world/world.h"
 
 namespace render::frame {
-using render::draw::Canvas;
 
 class ImpactLabels {
  public:
@@ -16,9 +15,10 @@ class ImpactLabels {
       : em_(em), impulseScale_(impulseScale), normalLength_(normalLength) {}
 
   // the labels of one impact record; the normal and the velocities once per pair and instant (`first`)
-  void impact(const sim::world::World& world, const sim::world::ImpactRecord& r, bool first, Canvas& draw) const;
+  void impact(const sim::world::World& world, const sim::world::ImpactRecord& r, bool first, render::draw::Canvas& draw) const;
   // the label of an event's impulse arrow from `tail` to `head`
-  void event(const sim::world::ImpulseEvent& e, const sim::core::Vec2& tail, const sim::core::Vec2& head, Canvas& draw) const;
+  void event(const sim::world::ImpulseEvent& e, const sim::core::Vec2& tail, const sim::core::Vec2& head,
+             render::draw::Canvas& draw) const;
 
   // "v_n⁻ = −1.00 m/s → v_n⁺ = 0.50 m/s"
   static std::string velocitiesText(double vnBefore, double vnAfter);

@@ -1,6 +1,9 @@
 #include "render/frame/impulse_beside.h"
 
 namespace render::frame {
+using render::draw::Pen;
+using render::draw::Role;
+using sim::core::Vec2;
 using namespace render::draw;
 
 void ImpulseBeside::arrow(const Vec2& tail, const Vec2& head, const Pen& p) {

@@ -7,25 +7,28 @@
 #include "render/draw/canvas.h"
 
 namespace render::frame {
-using render::draw::Canvas;
-using render::draw::Pen;
-using sim::core::Vec2;
 
-class ImpulseBeside final : public Canvas {
+class ImpulseBeside final : public render::draw::Canvas {
  public:
   // `offset`: how far the impulse's center line moves, world units
-  ImpulseBeside(Canvas& target, double offset) : target_(target), offset_(offset) {}
-  void polygon(const std::vector<Vec2>& v, const Pen& p) override { target_.polygon(v, p); }
-  void circle(const Vec2& c, double r, const Pen& p) override { target_.circle(c, r, p); }
-  void halfPlane(const Vec2& q, const Vec2& n, const Pen& p) override { target_.halfPlane(q, n, p); }
-  void segment(const Vec2& a, const Vec2& b, const Pen& p) override { target_.segment(a, b, p); }
-  void point(const Vec2& q, const Pen& p) override { target_.point(q, p); }
-  void arrow(const Vec2& tail, const Vec2& head, const Pen& p) override;
-  void text(const Vec2& at, const std::string& t, const Pen& p) override { target_.text(at, t, p); }
-  void label(const Vec2& a, const Vec2& d, const std::string& t, const Pen& p) override { target_.label(a, d, t, p); }
+  ImpulseBeside(render::draw::Canvas& target, double offset) : target_(target), offset_(offset) {}
+  void polygon(const std::vector<sim::core::Vec2>& v, const render::draw::Pen& p) override { target_.polygon(v, p); }
+  void circle(const sim::core::Vec2& c, double r, const render::draw::Pen& p) override { target_.circle(c, r, p); }
+  void halfPlane(const sim::core::Vec2& q, const sim::core::Vec2& n, const render::draw::Pen& p) override {
+    target_.halfPlane(q, n, p);
+  }
+  void segment(const sim::core::Vec2& a, const sim::core::Vec2& b, const render::draw::Pen& p) override {
+    target_.segment(a, b, p);
+  }
+  void point(const sim::core::Vec2& q, const render::draw::Pen& p) override { target_.point(q, p); }
+  void arrow(const sim::core::Vec2& tail, const sim::core::Vec2& head, const render::draw::Pen& p) override;
+  void text(const sim::core::Vec2& at, const std::string& t, const render::draw::Pen& p) override { target_.text(at, t, p); }
+  void label(const sim::core::Vec2& a, const sim::core::Vec2& d, const std::string& t, const render::draw::Pen& p) override {
+    target_.label(a, d, t, p);
+  }
 
  private:
-  Canvas& target_;
+  render::draw::Canvas& target_;
   double offset_;
 };
 

@@ -37,44 +37,42 @@
 #include "render/frame/caption.h"
 
 namespace render::frame {
-using render::draw::Camera;
-using render::draw::Canvas;
-using render::draw::Pen;
-using sim::core::Vec2;
 
 // a box in pixels, y down
 struct PixelBox {
   double left = 0, top = 0, right = 0, bottom = 0;
   bool overlaps(const PixelBox& o) const { return left < o.right && o.left < right && top < o.bottom && o.top < bottom; }
-  bool contains(const Vec2& p) const { return p.x() >= left && p.x() <= right && p.y() >= top && p.y() <= bottom; }
+  bool contains(const sim::core::Vec2& p) const { return p.x() >= left && p.x() <= right && p.y() >= top && p.y() <= bottom; }
   PixelBox grown(double by) const { return {left - by, top - by, right + by, bottom + by}; }
 };
 
 // a text as the placer put it (or would have: a dropped one keeps its preferred box)
 struct PlacedText {
   std::string text;
-  Pen pen;
-  PixelBox box;                // px
-  std::optional<Vec2> anchor;  // px: the point a label names; none for text fixed to the frame
-  bool leader = false;         // moved far: a leader line joins it to its anchor
+  render::draw::Pen pen;
+  PixelBox box;                           // px
+  std::optional<sim::core::Vec2> anchor;  // px: the point a label names; none for text fixed to the frame
+  bool leader = false;                    // moved far: a leader line joins it to its anchor
 };
 
-class LabelPlacer final : public Canvas {
+class LabelPlacer final : public render::draw::Canvas {
  public:
   // `target` draws; texts are `fontPx` high and `width` wide in pixels (an estimate without fonts)
-  LabelPlacer(Canvas& target, const Camera& camera, int fontPx, TextWidth width);
+  LabelPlacer(render::draw::Canvas& target, const render::draw::Camera& camera, int fontPx, TextWidth width);
 
-  void polygon(const std::vector<Vec2>& vertices, const Pen& pen) override;
-  void circle(const Vec2& center, double radius, const Pen& pen) override;
-  void halfPlane(const Vec2& point, const Vec2& normal, const Pen& pen) override;
-  void segment(const Vec2& a, const Vec2& b, const Pen& pen) override;
-  void point(const Vec2& p, const Pen& pen) override;
-  void arrow(const Vec2& tail, const Vec2& head, const Pen& pen) override;
-  void text(const Vec2& at, const std::string& text, const Pen& pen) override;
-  void label(const Vec2& anchor, const Vec2& direction, const std::string& text, const Pen& pen) override;
+  void polygon(const std::vector<sim::core::Vec2>& vertices, const render::draw::Pen& pen) override;
+  void circle(const sim::core::Vec2& center, double radius, const render::draw::Pen& pen) override;
+  void halfPlane(const sim::core::Vec2& point, const sim::core::Vec2& normal, const render::draw::Pen& pen) override;
+  void segment(const sim::core::Vec2& a, const sim::core::Vec2& b, const render::draw::Pen& pen) override;
+  void point(const sim::core::Vec2& p, const render::draw::Pen& pen) override;
+  void arrow(const sim::core::Vec2& tail, const sim::core::Vec2& head, const render::draw::Pen& pen) override;
+  void text(const sim::core::Vec2& at, const std::string& text, const render::draw::Pen& pen) override;
+  void label(const sim::core::Vec2& anchor, const sim::core::Vec2& direction, const std::string& text,
+             const render::draw::Pen& pen) override;
   // a label that stays near its anchor, so that it never needs a leader line: at its preferred spot
   // or moved less than a line, else dropped (a body's name in a frame of many bodies)
-  void labelNearby(const Vec2& anchor, const Vec2& direction, const std::string& text, const Pen& pen);
+  void labelNearby(const sim::core::Vec2& anchor, const sim::core::Vec2& direction, const std::string& text,
+                   const render::draw::Pen& pen);
 
   // places every text and label and draws them into the target (leader lines, then texts as
   // Canvas::text at their places); call once, after the last shape
@@ -89,21 +87,21 @@ class LabelPlacer final : public Canvas {
     enum class Shape { Polygon, Disc, Stroke, HalfPlane } shape;
     // a disc's center (first); a stroke's ends; a point on a half-plane's boundary and its outward
     // normal: kept in place, so that a frame's thousands of contact dots allocate nothing
-    std::array<Vec2, 2> at;
-    std::vector<Vec2> vertices;  // a polygon's
-    double radius = 0.0;         // a disc's radius, a stroke's half width
-    PixelBox bounds;             // around it all (the whole frame for a half-plane)
-    int body = -1;               // whose it is: a body's area is free to its labels, its marks to its name
-    double weight = 0.0;         // what covering it costs, in lines; infinity: never
-    bool area = false;           // a body's area rather than a mark drawn for it
-    int group = -1;              // the pieces of one polyline (a trail, an arc) share one: covered once
-    bool solid = false;          // a body's or a static body's area: a text over it gets a backing
+    std::array<sim::core::Vec2, 2> at;
+    std::vector<sim::core::Vec2> vertices;  // a polygon's
+    double radius = 0.0;                    // a disc's radius, a stroke's half width
+    PixelBox bounds;                        // around it all (the whole frame for a half-plane)
+    int body = -1;                          // whose it is: a body's area is free to its labels, its marks to its name
+    double weight = 0.0;                    // what covering it costs, in lines; infinity: never
+    bool area = false;                      // a body's area rather than a mark drawn for it
+    int group = -1;                         // the pieces of one polyline (a trail, an arc) share one: covered once
+    bool solid = false;                     // a body's or a static body's area: a text over it gets a backing
   };
   struct Pending {
-    Vec2 anchor;     // px
-    Vec2 direction;  // px, unit, y down; zero: centered on the anchor
+    sim::core::Vec2 anchor;     // px
+    sim::core::Vec2 direction;  // px, unit, y down; zero: centered on the anchor
     std::string text;
-    Pen pen;
+    render::draw::Pen pen;
     bool fixed;           // Canvas::text: stays where it was asked for (top-left for a caption)
     double width;         // px
     bool nearby = false;  // labelNearby: moved less than a line or not at all
@@ -129,7 +127,7 @@ class LabelPlacer final : public Canvas {
     mutable std::vector<unsigned> stamp_;  // by index: the query that found it last
     mutable unsigned query_ = 0;
   };
-  PixelBox boxAt(const Vec2& center, const Pending& p) const;
+  PixelBox boxAt(const sim::core::Vec2& center, const Pending& p) const;
   // does the obstacle's shape meet the box?
   static bool hits(const Obstacle& o, const PixelBox& box);
   // does a placed text stand over hatching or another body (and so need a backing)?
@@ -138,13 +136,13 @@ class LabelPlacer final : public Canvas {
   void place(const Pending& p, size_t self);
   void addObstacle(Obstacle o);
 
-  Canvas& target_;
-  Camera camera_;
+  render::draw::Canvas& target_;
+  render::draw::Camera camera_;
   int fontPx_;
   TextWidth width_;
   double line_, pad_;  // a line of text and the clearance between texts, px
   std::vector<Obstacle> obstacles_;
-  std::optional<Pen> lastSegment_;  // consecutive segments in one pen are one polyline
+  std::optional<render::draw::Pen> lastSegment_;  // consecutive segments in one pen are one polyline
   int groups_ = 0;
   std::vector<Pending> pending_;
   std::vector<PlacedText> placed_, dropped_;

@@ -7,6 +7,10 @@
 
 namespace render::frame {
 
+using render::draw::Camera;
+using render::draw::Canvas;
+using render::draw::Role;
+using sim::core::Vec2;
 namespace {
 
 const char* const kReferenceEdge = "reference edge";

@@ -16,31 +16,34 @@
 #include "render/scene/render_def.h"
 
 namespace render::frame {
-using render::draw::Camera;
-using render::draw::Canvas;
-using render::draw::Pen;
-using render::draw::Role;
-using render::draw::Vec2;
 
 // every call passed on to `target`, the roles drawn noted on the way
-class OverlaysSeen final : public Canvas {
+class OverlaysSeen final : public render::draw::Canvas {
  public:
-  explicit OverlaysSeen(Canvas& target) : target_(target) {}
-  bool seen(Role role) const { return seen_[static_cast<size_t>(role)]; }
+  explicit OverlaysSeen(render::draw::Canvas& target) : target_(target) {}
+  bool seen(render::draw::Role role) const { return seen_[static_cast<size_t>(role)]; }
 
-  void polygon(const std::vector<Vec2>& v, const Pen& p) override { note(p), target_.polygon(v, p); }
-  void circle(const Vec2& c, double r, const Pen& p) override { note(p), target_.circle(c, r, p); }
-  void halfPlane(const Vec2& q, const Vec2& n, const Pen& p) override { note(p), target_.halfPlane(q, n, p); }
-  void segment(const Vec2& a, const Vec2& b, const Pen& p) override { note(p), target_.segment(a, b, p); }
-  void point(const Vec2& q, const Pen& p) override { note(p), target_.point(q, p); }
-  void arrow(const Vec2& t, const Vec2& h, const Pen& p) override { note(p), target_.arrow(t, h, p); }
-  void text(const Vec2& at, const std::string& t, const Pen& p) override { target_.text(at, t, p); }
-  void label(const Vec2& a, const Vec2& d, const std::string& t, const Pen& p) override { target_.label(a, d, t, p); }
+  void polygon(const std::vector<sim::core::Vec2>& v, const render::draw::Pen& p) override { note(p), target_.polygon(v, p); }
+  void circle(const sim::core::Vec2& c, double r, const render::draw::Pen& p) override { note(p), target_.circle(c, r, p); }
+  void halfPlane(const sim::core::Vec2& q, const sim::core::Vec2& n, const render::draw::Pen& p) override {
+    note(p), target_.halfPlane(q, n, p);
+  }
+  void segment(const sim::core::Vec2& a, const sim::core::Vec2& b, const render::draw::Pen& p) override {
+    note(p), target_.segment(a, b, p);
+  }
+  void point(const sim::core::Vec2& q, const render::draw::Pen& p) override { note(p), target_.point(q, p); }
+  void arrow(const sim::core::Vec2& t, const sim::core::Vec2& h, const render::draw::Pen& p) override {
+    note(p), target_.arrow(t, h, p);
+  }
+  void text(const sim::core::Vec2& at, const std::string& t, const render::draw::Pen& p) override { target_.text(at, t, p); }
+  void label(const sim::core::Vec2& a, const sim::core::Vec2& d, const std::string& t, const render::draw::Pen& p) override {
+    target_.label(a, d, t, p);
+  }
   void manyPoints(double radius) override { target_.manyPoints(radius); }
 
  private:
-  void note(const Pen& p) { seen_[static_cast<size_t>(p.role)] = true; }
-  Canvas& target_;
+  void note(const render::draw::Pen& p) { seen_[static_cast<size_t>(p.role)] = true; }
+  render::draw::Canvas& target_;
   std::array<bool, render::draw::kRoleCount> seen_{};
 };
 
@@ -55,6 +58,7 @@ std::vector<std::string> possibleKeyRows(const render::scene::RenderDef& render,
 std::vector<std::string> overlayKeyRows(const OverlaysSeen& seen, bool labelled);
 // the key drawn from row `firstRow` of the top-left corner's lines down (the clock is row 0), in a
 // frame whose text is `fontPx` high; its names as text fixed to the frame
-void drawOverlayKey(const std::vector<std::string>& rows, const Camera& camera, int fontPx, int firstRow, Canvas& draw);
+void drawOverlayKey(const std::vector<std::string>& rows, const render::draw::Camera& camera, int fontPx, int firstRow,
+                    render::draw::Canvas& draw);
 
 }  // namespace render::frame

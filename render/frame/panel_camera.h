@@ -13,18 +13,17 @@
 #include "render/frame/survey.h"
 
 namespace render::frame {
-using render::draw::Bounds;
-using render::draw::Camera;
 
 // the world box of what `list` draws in the scene (not texts, labels, the energy panel or
 // half-planes, which reach the frame's edges by design)
-Bounds drawnBounds(const render::draw::DrawList& list);
+render::draw::Bounds drawnBounds(const render::draw::DrawList& list);
 
 // the instants a variant's panel is fitted over: 48 evenly spaced over its duration, and its impacts
 std::vector<double> fittingInstants(const render::scene::Scene& scene, const RunSurvey& survey);
 
 // the camera for `scenes` side by side (each at the panel's frame size); `widest` is the variant
 // beside the widest energy panel. Throws sim::world::Diverged
-Camera panelCamera(const std::vector<render::scene::Scene>& scenes, const std::vector<RunSurvey>& surveys, size_t widest);
+render::draw::Camera panelCamera(const std::vector<render::scene::Scene>& scenes, const std::vector<RunSurvey>& surveys,
+                                 size_t widest);
 
 }  // namespace render::frame

@@ -8,6 +8,10 @@
 #include "render/scene/render_def.h"
 
 namespace render::frame {
+using render::draw::Image;
+using render::draw::Role;
+using render::draw::Style;
+using render::draw::TextRenderer;
 using namespace render::draw;
 
 namespace {

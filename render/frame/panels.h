@@ -19,9 +19,6 @@
 #include "render/frame/pixel_draw_list.h"
 
 namespace render::frame {
-using render::draw::Image;
-using render::draw::Style;
-using render::draw::TextRenderer;
 
 // the default sheet, px: a 1080p slide
 inline constexpr int kSheetWidth = 1920, kSheetHeight = 1080;
@@ -49,28 +46,29 @@ PanelGrid panelGrid(size_t count, int width, int height, bool caption, int colum
 // the lines a sheet `width` px wide needs for the whole of `caption` at its text size (at least 1, at
 // most kMostCaptionLines: a caption longer than that ends in "…")
 inline constexpr int kMostCaptionLines = 4;
-int sheetCaptionLines(const std::string& caption, int width, int height, TextRenderer& text);
+int sheetCaptionLines(const std::string& caption, int width, int height, render::draw::TextRenderer& text);
 
 // the frames in the grid, each under its title, the caption under them all (wrapped to the sheet,
 // at most two lines), on the style's background with thin rules between the panels; every frame
 // must be the grid's frame size
-Image composePanels(const std::vector<Image>& frames, const PanelGrid& grid, const std::vector<std::string>& titles,
-                    const std::string& caption, const Style& style, TextRenderer& text);
+render::draw::Image composePanels(const std::vector<render::draw::Image>& frames, const PanelGrid& grid,
+                                  const std::vector<std::string>& titles, const std::string& caption,
+                                  const render::draw::Style& style, render::draw::TextRenderer& text);
 
 // a text the sheet writes itself, its top-center point in sheet pixels: the panels' titles, then the
 // caption's lines
 struct SheetText {
   std::string text;
-  Vec2 at;
+  sim::core::Vec2 at;
 };
 std::vector<SheetText> sheetTexts(const PanelGrid& grid, size_t count, const std::vector<std::string>& titles,
-                                  const std::string& caption, TextRenderer& text);
+                                  const std::string& caption, render::draw::TextRenderer& text);
 
 // the sheet's draw list: each panel's (`cells`, in its frame's pixels) moved to its place in the grid,
 // then the titles and the caption as composePanels writes them
 PixelDrawList sheetDrawList(const std::vector<PixelDrawList>& cells, const PanelGrid& grid,
-                            const std::vector<std::string>& titles, const std::string& caption, const Style& style,
-                            TextRenderer& text);
+                            const std::vector<std::string>& titles, const std::string& caption, const render::draw::Style& style,
+                            render::draw::TextRenderer& text);
 
 // "A", "B", …, "Z", "AA", … : the letter of the i-th panel (from 0)
 std::string panelLetter(size_t i);

@@ -41,7 +41,7 @@ struct PixelDrawList {
 
 // the box a text of `width` px and a line `lineHeight` px high is drawn in with its point at `at`
 // (TextRenderer::draw: the corner rounded to whole pixels)
-PixelBox textBox(const Vec2& at, render::draw::Anchor anchor, int width, int lineHeight);
+PixelBox textBox(const sim::core::Vec2& at, render::draw::Anchor anchor, int width, int lineHeight);
 
 // a frame's calls through `camera` in its pixels, each text measured by `width` at `fontPx` (a
 // label centered on its point, a caption with its top-left corner there, as GlCanvas draws them)
@@ -50,7 +50,7 @@ PixelDrawList pixelDrawList(const render::draw::DrawList& list, const render::dr
 // `cell`'s calls moved by (dx, dy) px, added to `sheet`
 void addMoved(PixelDrawList& sheet, const PixelDrawList& cell, double dx, double dy);
 // a text drawn straight into an image (a sheet's title or caption), in `color`
-void addText(PixelDrawList& image, const std::string& text, const Vec2& at, render::draw::Anchor anchor, int width,
+void addText(PixelDrawList& image, const std::string& text, const sim::core::Vec2& at, render::draw::Anchor anchor, int width,
              int lineHeight, const render::draw::Color& color);
 
 void writePixelDrawList(std::ostream& out, const PixelDrawList& list);

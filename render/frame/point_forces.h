@@ -8,11 +8,9 @@
 
 namespace render::frame {
 
-using sim::core::Vec2;
-
 struct AppliedForce {
-  Vec2 point;  // world
-  Vec2 force;  // world
+  sim::core::Vec2 point;  // world
+  sim::core::Vec2 force;  // world
 };
 
 // the forces on `body` at the world's time: each on during [from, until), as the world applies them

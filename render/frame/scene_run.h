@@ -16,20 +16,13 @@
 #include "sim/world/world.h"
 
 namespace render::frame {
-using render::draw::Camera;
-using render::draw::DrawList;
-using render::draw::GlCanvas;
-using render::draw::GlContext;
-using render::draw::Image;
-using render::draw::Style;
-using render::draw::TextRenderer;
 
 class SceneRun {
  public:
   // `def` must outlive the run; the GL context is the frame's size and current on this thread
   // (without one, only draw lists can be made)
-  SceneRun(const render::scene::Scene& def, const Camera& camera, const RunSurvey& survey, GlContext* gl = nullptr,
-           TextRenderer* text = nullptr);
+  SceneRun(const render::scene::Scene& def, const render::draw::Camera& camera, const RunSurvey& survey,
+           render::draw::GlContext* gl = nullptr, render::draw::TextRenderer* text = nullptr);
 
   // where the run ends, its last step cut there: the scene's duration unless set (before the first
   // frame) to a video's --duration
@@ -44,43 +37,44 @@ class SceneRun {
   // frameAt(t, strobe) paints, without a video's slow-motion note. A video's poster is drawn so from
   // the video's own run, and the scene is stepped once for both. Set before the first frame; `shot`
   // is told the picture by the first frameAt(t′, frame) with t′ ≥ t, or else by finish().
-  void pictureAlong(double t, int strobe, std::function<void(Image)> shot);
+  void pictureAlong(double t, int strobe, std::function<void(render::draw::Image)> shot);
 
   // the frame at time t, which must not be earlier than the last one; with `strobe` > 0, that many
   // earlier poses at t·i/strobe (i = 0 … strobe − 1) drawn fading behind the present one, which
   // needs a fresh run (nothing drawn yet). Throws sim::world::Diverged, ImpactsPileUp.
-  Image frameAt(double t, int strobe = 0);
+  render::draw::Image frameAt(double t, int strobe = 0);
   // the same without ghosts into `frame`, whose storage is reused when it has the frame's size (a
   // video's frames, drawn into a few buffers over and over)
-  void frameAt(double t, Image& frame);
+  void frameAt(double t, render::draw::Image& frame);
   // the draw calls of the frame at time t, without GL (the draw-list level of the tests); `placed`
   // (when given) is told where each text went (its box in pixels, the anchor it names)
-  DrawList drawListAt(double t, int strobe = 0, std::vector<PlacedText>* placed = nullptr);
+  render::draw::DrawList drawListAt(double t, int strobe = 0, std::vector<PlacedText>* placed = nullptr);
   // the frames at each of `instants` (s, in any order, none earlier than the last frame), each
   // exactly what a fresh run's frameAt(t, strobe) paints, told to `shot` with the instant's index,
   // earliest first: the run goes once through all of them and their ghosts (with ghosts it must be
   // fresh). Throws as frameAt.
-  void framesAt(const std::vector<double>& instants, int strobe, const std::function<void(size_t, Image)>& shot);
+  void framesAt(const std::vector<double>& instants, int strobe, const std::function<void(size_t, render::draw::Image)>& shot);
   // the same, each frame with its draw list (what `snapshot --draw-list` writes beside it)
   void framesAndListsAt(const std::vector<double>& instants, int strobe,
-                        const std::function<void(size_t, Image, DrawList)>& shot);
+                        const std::function<void(size_t, render::draw::Image, render::draw::DrawList)>& shot);
   // the same as draw lists, without GL
-  void drawListsAt(const std::vector<double>& instants, int strobe, const std::function<void(size_t, DrawList)>& shot);
+  void drawListsAt(const std::vector<double>& instants, int strobe,
+                   const std::function<void(size_t, render::draw::DrawList)>& shot);
   // what a golden record takes of an instant: the world there (its state hash and trace rows), and
   // when pictured its draw list and, with a GL context, its frame
   struct Shot {
     const sim::world::World& world;
-    DrawList drawList;
-    Image frame;
+    render::draw::DrawList drawList;
+    render::draw::Image frame;
   };
   // the shots at each of `instants` (in any order, none earlier than the last picture) from the one
   // run, as framesAt reaches them, those with `pictured[i]` drawn. Throws as frameAt.
   void shotsAt(const std::vector<double>& instants, const std::vector<bool>& pictured,
                const std::function<void(size_t, const Shot&)>& shot);
   // the title card alone (title_card.h), the frame's size; needs the text renderer
-  Image titleCard();
+  render::draw::Image titleCard();
   // the closing card with the poll's answer (`answer_card`), the frame's size; needs the text renderer
-  Image answerCard();
+  render::draw::Image answerCard();
   // video frames say when they are slowed (empty: never), see FramePainter
   void showSlowMotion(FramePainter::SlowFactor factorAt) { painter_.showSlowMotion(std::move(factorAt)); }
 
@@ -108,25 +102,26 @@ class SceneRun {
     std::vector<Need> needs;
     size_t next = 0;  // the first need not yet reached
     int strobe = 0;
-    std::vector<DrawList> ghosts;
-    std::function<void(Image)> shot;
+    std::vector<render::draw::DrawList> ghosts;
+    std::function<void(render::draw::Image)> shot;
   };
   // ghost i of `strobe`: the moving bodies of a state, fading
-  static DrawList ghostOf(const State& state, int i, int strobe);
+  static render::draw::DrawList ghostOf(const State& state, int i, int strobe);
   // the pictures at `instants`, each with its ghosts, from the one run, earliest first
   void picturesAt(const std::vector<double>& instants, int strobe,
-                  const std::function<void(size_t, const State&, const std::vector<DrawList>&)>& picture);
+                  const std::function<void(size_t, const State&, const std::vector<render::draw::DrawList>&)>& picture);
   // the frame of `state` through GL (and recorded into `list`, when given)
-  void paint(const State& state, const std::vector<DrawList>& ghosts, Image& frame, DrawList* list = nullptr);
+  void paint(const State& state, const std::vector<render::draw::DrawList>& ghosts, render::draw::Image& frame,
+             render::draw::DrawList* list = nullptr);
 
   const render::scene::Scene& def_;
-  Camera camera_;
-  Style style_;
+  render::draw::Camera camera_;
+  render::draw::Style style_;
   FramePainter painter_;
   Run run_;
   std::vector<Along> along_;  // the pictures taken along the run, in the order asked
-  std::unique_ptr<GlCanvas> canvas_;
-  TextRenderer* text_;
+  std::unique_ptr<render::draw::GlCanvas> canvas_;
+  render::draw::TextRenderer* text_;
 };
 
 }  // namespace render::frame

@@ -10,11 +10,9 @@
 #include "sim/world/world.h"
 
 namespace render::frame {
-using render::draw::Bounds;
-using render::draw::Camera;
 
 struct RunSurvey {
-  Bounds bounds;                    // every body's shape at every step, m
+  render::draw::Bounds bounds;      // every body's shape at every step, m
   int farthestBody = -1;            // the body that reached furthest from the origin (or not finite)
   double farthest = 0.0;            // how far, m: the largest coordinate of its box
   double maxSpeed = 0.0;            // of any center of mass, m/s
@@ -42,20 +40,20 @@ void surveyOverlays(const render::scene::Scene& def, const sim::world::World& wo
 void shareScales(const std::vector<RunSurvey*>& surveys);
 
 // the region a body's shape covers now (its position alone for shapes without an extent)
-Bounds bodyBounds(const sim::core::Body& body);
+render::draw::Bounds bodyBounds(const sim::core::Body& body);
 
 // an arrow scale, m of arrow per unit: `given` when positive, else one that makes `largest` 1/6 of
 // the view's height (1 when there is nothing to scale)
-double arrowScale(double given, double largest, const Camera& camera);
+double arrowScale(double given, double largest, const render::draw::Camera& camera);
 
 // the scene's camera: its fixed one, or fitted over `bounds` (the survey's own by default) with its
 // margin, above the caption's band when it has a caption and left of the energy panel's when it has one
-Camera cameraFor(const render::scene::Scene& def, const RunSurvey& survey);
-Camera cameraFor(const render::scene::Scene& def, const RunSurvey& survey, const Bounds& bounds);
+render::draw::Camera cameraFor(const render::scene::Scene& def, const RunSurvey& survey);
+render::draw::Camera cameraFor(const render::scene::Scene& def, const RunSurvey& survey, const render::draw::Bounds& bounds);
 
 // a bad scene (sim::yaml::SceneError at the `camera` key, or at the body that stretched the automatic
 // camera so) when `camera`'s view is not finite or past render::scene::kMaxViewExtent
-void checkView(const render::scene::Scene& def, const RunSurvey& survey, const Camera& camera);
+void checkView(const render::scene::Scene& def, const RunSurvey& survey, const render::draw::Camera& camera);
 
 // the times at which the world's collision response applied impulses so far, ascending, each once
 std::vector<double> impactTimes(const sim::world::World& world);

@@ -14,37 +14,36 @@
 #include "sim/world/world.h"
 
 namespace render::frame {
-using render::draw::Camera;
-using render::draw::Canvas;
-using render::draw::Pen;
-using sim::core::Vec2;
 
 class TeachingArrows {
  public:
   // `velocityScale`: m of arrow per m/s, as the frame's velocity arrows
-  TeachingArrows(const render::scene::Scene& def, const Camera& camera, const RunSurvey& survey, double velocityScale);
+  TeachingArrows(const render::scene::Scene& def, const render::draw::Camera& camera, const RunSurvey& survey,
+                 double velocityScale);
 
   // the body points whose paths the history must keep (`show: path`), in body coordinates
-  std::vector<std::pair<int, Vec2>> paths() const;
+  std::vector<std::pair<int, sim::core::Vec2>> paths() const;
   // every arrow at the world's present state; `history` kept the paths()
-  void draw(const sim::world::World& world, const History& history, Canvas& draw) const;
+  void draw(const sim::world::World& world, const History& history, render::draw::Canvas& draw) const;
 
   // "v", "r′", "ω", "x_b", "r", "f", "τ", "p"
   static std::string defaultLabel(render::scene::ArrowDef::Show show);
   // a curved arrow around `center`, `radius` from it, sweeping `sweep` (counter-clockwise when
   // positive) centered on the direction `middle` (an angle); `pixel`: the world length of a pixel
-  static void curvedArrow(const Vec2& center, double radius, double middle, double sweep, double pixel, const Pen& style,
-                          Canvas& draw);
+  static void curvedArrow(const sim::core::Vec2& center, double radius, double middle, double sweep, double pixel,
+                          const render::draw::Pen& style, render::draw::Canvas& draw);
 
  private:
   struct Arrow {
     render::scene::ArrowDef def;
-    Vec2 local;     // `at` in body coordinates after the centroid shift
-    int path = -1;  // index among paths()
+    sim::core::Vec2 local;  // `at` in body coordinates after the centroid shift
+    int path = -1;          // index among paths()
   };
-  void drawOne(const Arrow& a, int index, const sim::world::World& world, const History& history, Canvas& draw) const;
+  void drawOne(const Arrow& a, int index, const sim::world::World& world, const History& history,
+               render::draw::Canvas& draw) const;
   // the arrow's label (with its value) beyond `anchor` in `direction`
-  void label(const Arrow& a, const std::string& value, const Vec2& anchor, const Vec2& direction, Canvas& draw) const;
+  void label(const Arrow& a, const std::string& value, const sim::core::Vec2& anchor, const sim::core::Vec2& direction,
+             render::draw::Canvas& draw) const;
 
   std::vector<Arrow> arrows_;
   double px_, viewHeight_;                             // world lengths of a pixel and of the view

@@ -14,9 +14,6 @@
 #include "render/frame/caption.h"
 
 namespace render::frame {
-using render::draw::Image;
-using render::draw::Style;
-using render::draw::TextRenderer;
 
 // one line of a card: its text, the middle of its top edge in pixels, its size in pixels
 struct CardLine {
@@ -40,15 +37,17 @@ using SizedWidth = std::function<TextWidth(int sizePx)>;
 CardLayout layoutCard(int width, int height, const std::string& title, const std::string& text, double fontSize,
                       const SizedWidth& widthAt);
 // the card drawn from its layout
-Image composeCard(int width, int height, const CardLayout& layout, const Style& style, TextRenderer& text);
+render::draw::Image composeCard(int width, int height, const CardLayout& layout, const render::draw::Style& style,
+                                render::draw::TextRenderer& text);
 
 // the card of a scene's video, 2D or 3D, `width` × `height` px: its title (titleOf) over its
 // question (else its description), or, with `answer`, "Answer" over its answer. Throws
 // sim::yaml::SceneError at the text's line when it cannot fit
 CardLayout sceneCard(const render::scene::RenderDef& render, const std::string& name, const std::string& description, bool answer,
-                     int width, int height, TextRenderer& text);
+                     int width, int height, render::draw::TextRenderer& text);
 // that card drawn in the style of the scene's frames
-Image composeSceneCard(const render::scene::RenderDef& render, const std::string& name, const std::string& description,
-                       bool answer, int width, int height, const Style& style, TextRenderer& text);
+render::draw::Image composeSceneCard(const render::scene::RenderDef& render, const std::string& name,
+                                     const std::string& description, bool answer, int width, int height,
+                                     const render::draw::Style& style, render::draw::TextRenderer& text);
 
 }  // namespace render::frame

@@ -11,11 +11,9 @@
 #include "sim/world/world.h"
 
 namespace render::frame {
-using render::draw::Camera;
-using render::draw::Canvas;
 
 // the outlines of the bodies of `overlay` at the world's time, and the legend below the clock
 void drawTraceOverlay(const render::scene::Scene& def, const render::scene::TraceOverlayDef& overlay,
-                      const sim::world::World& world, const Camera& camera, Canvas& draw);
+                      const sim::world::World& world, const render::draw::Camera& camera, render::draw::Canvas& draw);
 
 }  // namespace render::frame

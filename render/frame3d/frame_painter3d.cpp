@@ -12,10 +12,18 @@
 #include "render/scene/scene_style.h"
 
 namespace render::frame3d {
+using render::draw::Canvas;
+using render::draw::Pen;
 using render::draw::Role;
+using render::draw3d::Camera3d;
+using render::draw3d::Canvas3d;
+using render::draw3d::Mesh;
 using render::scene3d::Arrow3dDef;
+using sim::core::Vec2;
+using sim::world3d::Vec3;
 using namespace sim::world3d;
 using namespace render::draw3d;
+using sim::world3d::Mat3;
 
 namespace {
 

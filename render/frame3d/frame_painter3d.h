@@ -20,22 +20,16 @@
 #include "render/frame3d/survey3d.h"
 
 namespace render::frame3d {
-using render::draw::Canvas;
-using render::draw::Pen;
-using render::draw3d::Camera3d;
-using render::draw3d::Canvas3d;
-using render::draw3d::Mesh;
-using sim::core::Vec2;
 
 class FramePainter3d {
  public:
   // `width` measures text at the frame's font size, to wrap the caption (empty: an estimate)
-  FramePainter3d(const render::scene3d::Scene& def, const Camera3d& camera, const RunSurvey3d& survey,
+  FramePainter3d(const render::scene3d::Scene& def, const render::draw3d::Camera3d& camera, const RunSurvey3d& survey,
                  const render::frame::TextWidth& width = {});
 
   // what the history of a run must record for these frames
   History3d::Options historyOptions() const;
-  void paint(const sim::world3d::World& world, const History3d& history, Canvas3d& canvas) const;
+  void paint(const sim::world3d::World& world, const History3d& history, render::draw3d::Canvas3d& canvas) const;
   void showSlowMotion(std::function<double(double)> factorAt) { slowMotion_ = std::move(factorAt); }
   const std::function<double(double)>& slowMotion() const { return slowMotion_; }
 
@@ -48,33 +42,35 @@ class FramePainter3d {
 
  private:
   // a world point on the overlay (pixels, y up), when it lies in front of the camera
-  std::optional<Vec2> screen(const Vec3& world) const;
-  void arrow(const Vec3& tail, const Vec3& head, const Pen& pen, const std::string& label, Canvas& draw) const;
-  void path(const std::vector<Vec3>& points, const Vec3& offset, const Pen& pen, Canvas& draw) const;
-  void paintArrows(const sim::world3d::World& world, const History3d& history, Canvas& draw) const;
-  void paintText(const sim::world3d::World& world, Canvas& draw) const;
-  void paintWorldAxes(Canvas& draw) const;
+  std::optional<sim::core::Vec2> screen(const sim::world3d::Vec3& world) const;
+  void arrow(const sim::world3d::Vec3& tail, const sim::world3d::Vec3& head, const render::draw::Pen& pen,
+             const std::string& label, render::draw::Canvas& draw) const;
+  void path(const std::vector<sim::world3d::Vec3>& points, const sim::world3d::Vec3& offset, const render::draw::Pen& pen,
+            render::draw::Canvas& draw) const;
+  void paintArrows(const sim::world3d::World& world, const History3d& history, render::draw::Canvas& draw) const;
+  void paintText(const sim::world3d::World& world, render::draw::Canvas& draw) const;
+  void paintWorldAxes(render::draw::Canvas& draw) const;
   // each plane as a ruled square around where the bodies go, before the bodies
-  void paintPlanes(const sim::world3d::World& world, Canvas3d& canvas) const;
+  void paintPlanes(const sim::world3d::World& world, render::draw3d::Canvas3d& canvas) const;
   // the contacts touching now (a dot and the normal at each point) and, held for contact_hold after
   // each impact, its point, normal and the impulse on the body (2D's contacts overlay)
-  void paintContacts(const sim::world3d::World& world, Canvas& draw) const;
+  void paintContacts(const sim::world3d::World& world, render::draw::Canvas& draw) const;
 
   const render::scene3d::Scene& def_;
-  Camera3d camera_;
+  render::draw3d::Camera3d camera_;
   render::draw::Camera overlay_;                  // pixels, y up
   render::frame::TextWidth textWidth_;            // of the frame's texts, px (empty: estimated)
   mutable render::frame::DroppedLabels dropped_;  // labels with no free spot, said once each per run
   // body i's mesh: one per shape and level of detail (mesh.h: segmentsFor its size on screen),
   // shared by every body of that shape and size, so that memory does not grow with the bodies
-  const Mesh& meshFor(size_t body, const sim::world3d::Body& b) const;
+  const render::draw3d::Mesh& meshFor(size_t body, const sim::world3d::Body& b) const;
   std::vector<std::string> shapeKeys_;  // by body: its shape, as text
   std::vector<double> radii_;           // by body: the radius of a ball around its shape, m
-  mutable std::map<std::pair<std::string, int>, Mesh> meshes_;
+  mutable std::map<std::pair<std::string, int>, render::draw3d::Mesh> meshes_;
   double omegaScale_, momentumScale_, velocityScale_;  // m of arrow per rad/s, kg·m²/s, m/s
   double impulseScale_;                                // m of arrow per N·s
-  Mesh planeMesh_;                                     // every plane's patch, square around the run
-  Vec3 planeCenter_;                                   // the center of the run's bounds, projected on each plane
+  render::draw3d::Mesh planeMesh_;                     // every plane's patch, square around the run
+  sim::world3d::Vec3 planeCenter_;                     // the center of the run's bounds, projected on each plane
   double em_;                                          // text size, px
   double lengthFloor_ = 0.0;                           // positions below it are round-off, m
   EnergyPanel3d panel_;

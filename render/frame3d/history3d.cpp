@@ -2,6 +2,7 @@
 
 namespace render::frame3d {
 
+using sim::world3d::Vec3;
 History3d::History3d(const sim::world3d::World& world, Options options)
     : options_(std::move(options)),
       trails_(world.bodies.size()),

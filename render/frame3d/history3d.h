@@ -9,14 +9,13 @@
 #include "sim/world3d/world.h"
 
 namespace render::frame3d {
-using sim::world3d::Vec3;
 
 class History3d : public sim::world3d::StepObserver {
  public:
   struct Options {
     bool trails = false;
-    std::vector<std::pair<int, Vec3>> points;  // body points (body coordinates) whose paths to keep
-    std::vector<int> omegaTips;                // bodies whose ω to keep, from the start
+    std::vector<std::pair<int, sim::world3d::Vec3>> points;  // body points (body coordinates) whose paths to keep
+    std::vector<int> omegaTips;                              // bodies whose ω to keep, from the start
     // a point closer than this to the last one kept replaces it: m for paths, rad/s for ω
     double spacing = 0.0, omegaSpacing = 0.0;
   };
@@ -27,17 +26,17 @@ class History3d : public sim::world3d::StepObserver {
   void afterEvent(const sim::world3d::World& world, const sim::world3d::ImpulseEvent&) override { afterStep(world); }
 
   // by body (empty without trails)
-  const std::vector<Vec3>& trail(size_t body) const { return trails_[body]; }
+  const std::vector<sim::world3d::Vec3>& trail(size_t body) const { return trails_[body]; }
   // by Options::points, world coordinates
-  const std::vector<Vec3>& pointPath(size_t k) const { return points_[k]; }
+  const std::vector<sim::world3d::Vec3>& pointPath(size_t k) const { return points_[k]; }
   // by Options::omegaTips: ω at each kept step (world frame)
-  const std::vector<Vec3>& omegaPath(size_t k) const { return omegas_[k]; }
+  const std::vector<sim::world3d::Vec3>& omegaPath(size_t k) const { return omegas_[k]; }
 
  private:
-  static void keep(std::vector<Vec3>& path, const Vec3& p, double spacing);
+  static void keep(std::vector<sim::world3d::Vec3>& path, const sim::world3d::Vec3& p, double spacing);
 
   Options options_;
-  std::vector<std::vector<Vec3>> trails_, points_, omegas_;
+  std::vector<std::vector<sim::world3d::Vec3>> trails_, points_, omegas_;
 };
 
 }  // namespace render::frame3d

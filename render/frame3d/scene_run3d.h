@@ -14,15 +14,12 @@
 #include "render/frame3d/frame_painter3d.h"
 
 namespace render::frame3d {
-using render::draw3d::Camera3d;
-using render::draw3d::DrawList3d;
-using render::draw3d::GlCanvas3d;
 
 class SceneRun3d final : public render::frame::FrameSource {
  public:
   // `def` must outlive the run; the GL context is the frame's size and current on this thread
   // (without one, only draw lists can be made)
-  SceneRun3d(const render::scene3d::Scene& def, const Camera3d& camera, const RunSurvey3d& survey,
+  SceneRun3d(const render::scene3d::Scene& def, const render::draw3d::Camera3d& camera, const RunSurvey3d& survey,
              render::draw::GlContext* gl = nullptr, render::draw::TextRenderer* text = nullptr);
 
   // where the run ends, its last step cut there: the scene's duration unless set before the first frame
@@ -46,7 +43,7 @@ class SceneRun3d final : public render::frame::FrameSource {
   render::draw::Image answerCard() override;
   void showSlowMotion(std::function<double(double)> factorAt) override { painter_.showSlowMotion(std::move(factorAt)); }
   // the calls of the frame at time t, without GL (the draw-list level of the tests)
-  DrawList3d drawListAt(double t);
+  render::draw3d::DrawList3d drawListAt(double t);
 
   // the world the last picture was drawn from: the run's own, or its copy between two steps
   const sim::world3d::World& world() const { return run_.world(); }
@@ -66,12 +63,12 @@ class SceneRun3d final : public render::frame::FrameSource {
   };
 
   const render::scene3d::Scene& def_;
-  Camera3d camera_;
+  render::draw3d::Camera3d camera_;
   render::draw::Style style_;
   FramePainter3d painter_;
   Run run_;
   std::vector<Along> along_;  // the pictures along the run not yet taken, in the order asked
-  std::unique_ptr<GlCanvas3d> canvas_;
+  std::unique_ptr<render::draw3d::GlCanvas3d> canvas_;
   render::draw::TextRenderer* text_;
 };
 

@@ -10,11 +10,9 @@
 #include "sim/world3d/world.h"
 
 namespace render::frame3d {
-using render::draw3d::Box3d;
-using render::draw3d::Camera3d;
 
 struct RunSurvey3d {
-  Box3d bounds;                             // every body's bounding ball at every step, and the anchors, m
+  render::draw3d::Box3d bounds;             // every body's bounding ball at every step, and the anchors, m
   double maxSpeed = 0.0;                    // |v| of any body, m/s
   double maxOmega = 0.0;                    // |ω| of any body, rad/s
   double maxAngularMomentum = 0.0;          // |L| of any body about its center, kg·m²/s
@@ -36,7 +34,8 @@ std::vector<double> energyValues(const sim::world3d::World& world);
 
 // the scene's camera: fixed, or fitted over `bounds` (the survey's own by default) along its view
 // direction, above the caption's band and left of the energy panel's
-Camera3d cameraFor(const render::scene3d::Scene& def, const RunSurvey3d& survey);
-Camera3d cameraFor(const render::scene3d::Scene& def, const RunSurvey3d& survey, const Box3d& bounds);
+render::draw3d::Camera3d cameraFor(const render::scene3d::Scene& def, const RunSurvey3d& survey);
+render::draw3d::Camera3d cameraFor(const render::scene3d::Scene& def, const RunSurvey3d& survey,
+                                   const render::draw3d::Box3d& bounds);
 
 }  // namespace render::frame3d

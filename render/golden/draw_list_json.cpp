@@ -14,6 +14,7 @@
 namespace render::golden {
 using namespace render::draw;
 using render::jobs::formatNumber;
+using sim::core::Vec2;
 
 DrawnFrame drawnFrame(const DrawList& list, const Style& style, const Camera& camera) {
   DrawnFrame f{camera.worldWidth(), camera.worldHeight(), {}};

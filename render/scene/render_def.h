@@ -14,7 +14,6 @@
 #include "sim/core/math.h"
 
 namespace render::scene {
-using sim::core::Vec2;
 
 // frame sides are even (H.264 in yuv420p halves the chroma planes) and at most this many pixels:
 // a 8192 × 8192 RGBA frame is 256 MiB, and supersampled several times that
@@ -41,10 +40,10 @@ inline constexpr double kMaxViewExtent = 1e150;
 // what the view shows: everything the run covers (auto), or a fixed window
 struct CameraDef {
   bool automatic = true;
-  double margin = 0.08;        // auto: free space on each side, as a fraction of the fitted size
-  Vec2 center = Vec2::Zero();  // fixed: world point at the middle of the frame, m
-  double height = 0.0;         // fixed: world height the frame shows, m
-  sim::core::SourceLoc loc;    // where `camera:` is written; 0 when it is the default
+  double margin = 0.08;                              // auto: free space on each side, as a fraction of the fitted size
+  sim::core::Vec2 center = sim::core::Vec2::Zero();  // fixed: world point at the middle of the frame, m
+  double height = 0.0;                               // fixed: world height the frame shows, m
+  sim::core::SourceLoc loc;                          // where `camera:` is written; 0 when it is the default
 };
 
 // colors of what is not a body's own (the roles' keys, render/draw/roles.h); bodies without
@@ -76,11 +75,11 @@ struct BodyLook {
 struct ArrowDef {
   enum class Show { Velocity, Offset, Omega, Frame, Path, Force, Torque, Momentum, NormalForce, Friction, Center };
   Show show = Show::Velocity;
-  int body = 0;            // index into SceneDef::bodies, resolved when read
-  Vec2 at = Vec2::Zero();  // body coordinates as written (before the centroid shift)
-  std::string label;       // empty: the default of `show` ("v", "r′", "ω", …)
-  bool value = false;      // the magnitude with its unit after the label
-  std::string color;       // "#rrggbb"; empty: the color of `show`'s role
+  int body = 0;                                  // index into SceneDef::bodies, resolved when read
+  sim::core::Vec2 at = sim::core::Vec2::Zero();  // body coordinates as written (before the centroid shift)
+  std::string label;                             // empty: the default of `show` ("v", "r′", "ω", …)
+  bool value = false;                            // the magnitude with its unit after the label
+  std::string color;                             // "#rrggbb"; empty: the color of `show`'s role
 };
 
 // the `show:` names

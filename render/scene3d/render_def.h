@@ -10,16 +10,15 @@
 #include "sim/world3d/math.h"
 
 namespace render::scene3d {
-using sim::world3d::Vec3;
 
 // the perspective camera: fitted over everything the run covers, looking along `direction`, or
 // placed at `eye` looking at `target`; `up` is the world direction drawn upward
 struct Camera3dDef {
   bool automatic = true;
-  Vec3 direction = Vec3(1.0, -1.7, 0.9);           // auto: from the fitted center toward the eye
-  double margin = 0.08;                            // auto: free space on each side, a fraction of the view
-  Vec3 eye = Vec3::Zero(), target = Vec3::Zero();  // fixed
-  Vec3 up = Vec3::UnitZ();
+  sim::world3d::Vec3 direction = sim::world3d::Vec3(1.0, -1.7, 0.9);  // auto: from the fitted center toward the eye
+  double margin = 0.08;                                               // auto: free space on each side, a fraction of the view
+  sim::world3d::Vec3 eye = sim::world3d::Vec3::Zero(), target = sim::world3d::Vec3::Zero();  // fixed
+  sim::world3d::Vec3 up = sim::world3d::Vec3::UnitZ();
   double fov = 35.0;  // vertical field of view, degrees
 };
 
@@ -27,11 +26,11 @@ struct Camera3dDef {
 struct Arrow3dDef {
   enum class Show { Axes, Omega, AngularMomentum, Velocity, Path, OmegaPath, State };
   Show show = Show::Axes;
-  int body = 0;            // index into the model's bodies
-  Vec3 at = Vec3::Zero();  // a body point, body coordinates (velocity, path)
-  std::string label;       // empty: the default of `show`
-  bool value = false;      // the vector's value after the label
-  std::string color;       // "#rrggbb"; empty: the color of `show`'s role
+  int body = 0;                                        // index into the model's bodies
+  sim::world3d::Vec3 at = sim::world3d::Vec3::Zero();  // a body point, body coordinates (velocity, path)
+  std::string label;                                   // empty: the default of `show`
+  bool value = false;                                  // the vector's value after the label
+  std::string color;                                   // "#rrggbb"; empty: the color of `show`'s role
 };
 
 inline constexpr sim::core::EnumNames<Arrow3dDef::Show, 7> kShow3dNames{{{

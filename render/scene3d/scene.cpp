@@ -8,6 +8,7 @@
 #include "sim/yaml3d/reader3d.h"
 
 namespace render::scene3d {
+using sim::world3d::Vec3;
 using sim::yaml::Reader;
 using sim::yaml3d::Reader3d;
 

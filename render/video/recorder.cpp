@@ -11,6 +11,9 @@
 #include "render/jobs/interrupt.h"
 
 namespace render::video {
+using render::draw::Image;
+using render::frame::FrameSource;
+using render::frame::SceneRun;
 using namespace render::jobs;
 using namespace render::draw;
 using namespace render::frame;

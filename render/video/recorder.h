@@ -14,15 +14,12 @@
 #include "render/video/time_map.h"
 
 namespace render::video {
-using render::draw::Image;
-using render::frame::FrameSource;
-using render::frame::SceneRun;
 
 // where finished frames go; called on the second thread, in frame order
 class FrameSink {
  public:
   virtual ~FrameSink() = default;
-  virtual void frame(long index, const Image& image) = 0;
+  virtual void frame(long index, const render::draw::Image& image) = 0;
 };
 
 // frames as numbered PNG files in a directory: frame-00000.png, frame-00001.png, …
@@ -30,7 +27,7 @@ class PngFrames : public FrameSink {
  public:
   // `count` sets the number of digits (at least 5)
   PngFrames(std::string directory, long count);
-  void frame(long index, const Image& image) override;
+  void frame(long index, const render::draw::Image& image) override;
   // the printf pattern of the names, e.g. "frame-%05d.png" (what ffmpeg's image2 reader takes)
   const std::string& pattern() const { return pattern_; }
 
@@ -42,10 +39,10 @@ class PngFrames : public FrameSink {
 // it (painted once), then the scene at map.simTime(k / fps), saying when it is slowed; `progress`
 // (may be empty) is told after each frame is painted. Throws what a sink or the simulation throws,
 // and Interrupted on Ctrl-C.
-void record(FrameSource& run, const TimeMap& map, double fps, const std::vector<FrameSink*>& sinks,
+void record(render::frame::FrameSource& run, const TimeMap& map, double fps, const std::vector<FrameSink*>& sinks,
             const std::function<void(long done)>& progress = {});
 // the same from a 2D scene's run
-void record(SceneRun& run, const TimeMap& map, double fps, const std::vector<FrameSink*>& sinks,
+void record(render::frame::SceneRun& run, const TimeMap& map, double fps, const std::vector<FrameSink*>& sinks,
             const std::function<void(long done)>& progress = {});
 
 }  // namespace render::video

@@ -19,11 +19,14 @@
 #include "sim/yaml/scene_error.h"
 
 namespace render::video {
+using render::frame::PanelGrid;
 using namespace render::jobs;
 using namespace render::frame3d;
 using namespace render::draw;
 using namespace render::frame;
 using namespace render::scene;
+using render::draw::Bounds;
+using render::draw::TextRenderer;
 
 namespace {
 

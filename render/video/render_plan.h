@@ -30,10 +30,6 @@
 #include "sim/world3d/world.h"
 
 namespace render::video {
-using render::draw::Camera;
-using render::frame::PanelGrid;
-using render::frame::RunSurvey;
-using render::scene::Scene;
 
 struct FrameSize {
   int width = 0, height = 0;
@@ -43,7 +39,7 @@ struct FrameSize {
 // it, and how its simulation gives up
 struct Planar {
   using Scene = render::scene::Scene;
-  using Survey = RunSurvey;
+  using Survey = render::frame::RunSurvey;
   using Camera = render::draw::Camera;
   using Diverged = sim::world::Diverged;
 };
@@ -105,7 +101,7 @@ struct StillsOf {
   std::vector<typename D::Scene> scenes;  // each variant as its stills draw it (a panel: its frame's size, its text, no caption)
   std::vector<typename D::Survey> surveys;  // the variants', side by side with scales shared (shareScales)
   bool panels = false;                      // the variants on one sheet in each image (panels.h)
-  PanelGrid grid;                           // that sheet's layout (panels only)
+  render::frame::PanelGrid grid;            // that sheet's layout (panels only)
   std::string caption;                      // under the sheet's grid, once (panels only)
   int strobe = 0;                           // (2D only)
   int width = 0, height = 0;                // of one variant's frame

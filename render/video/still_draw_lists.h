@@ -12,17 +12,17 @@
 #include "render/video/render_plan.h"
 
 namespace render::video {
-using render::frame::PixelDrawList;
 
 // variant `variant`'s frame of `stills`, recorded as `list`, in the frame's pixels
-PixelDrawList frameDrawList(const Stills& stills, size_t variant, const render::draw::DrawList& list,
-                            render::draw::TextRenderer& text);
+render::frame::PixelDrawList frameDrawList(const Stills& stills, size_t variant, const render::draw::DrawList& list,
+                                           render::draw::TextRenderer& text);
 // the still `shot`'s whole draw list from its frames' (one per variant, in order): the frame's own,
 // or the sheet's
-PixelDrawList stillDrawList(const Stills& stills, const StillOutput& shot, const std::vector<PixelDrawList>& frames,
-                            render::draw::TextRenderer& text);
+render::frame::PixelDrawList stillDrawList(const Stills& stills, const StillOutput& shot,
+                                           const std::vector<render::frame::PixelDrawList>& frames,
+                                           render::draw::TextRenderer& text);
 // every still's draw list, as the writer would make it, without GL: each variant run once through
 // the instants, told to `shot` in the stills' order. Throws sim::world::Diverged
-void stillDrawLists(const Stills& stills, const std::function<void(size_t shot, const PixelDrawList&)>& shot);
+void stillDrawLists(const Stills& stills, const std::function<void(size_t shot, const render::frame::PixelDrawList&)>& shot);
 
 }  // namespace render::video

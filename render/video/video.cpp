@@ -19,6 +19,7 @@
 #include "render/video/container_check.h"
 
 namespace render::video {
+using render::draw::Image;
 using namespace render::jobs;
 using namespace render::draw;
 

@@ -15,7 +15,6 @@
 #include "render/draw/image.h"
 
 namespace render::video {
-using render::draw::Image;
 
 enum class VideoFormat { Mp4, Webm, Gif };
 
@@ -38,7 +37,7 @@ class VideoWriter {
   VideoWriter& operator=(const VideoWriter&) = delete;
 
   // one frame of the size given; throws std::runtime_error with ffmpeg's message when it has failed
-  void write(const Image& frame);
+  void write(const render::draw::Image& frame);
   // close ffmpeg's input, wait for it, check the file and rename the video into place; throws
   // std::runtime_error (the previous video at the path is then left as it was)
   void finish();

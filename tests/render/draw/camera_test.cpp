@@ -6,7 +6,7 @@
 
 using render::draw::Bounds;
 using render::draw::Camera;
-using render::draw::Vec2;
+using sim::core::Vec2;
 
 TEST_CASE("world and pixel coordinates: y up in the world, down in the frame") {
   const Camera c({1.0, 2.0}, 4.0, 200, 100);

@@ -8,6 +8,8 @@
 #include <numbers>
 
 using namespace render::draw3d;
+using sim::core::Vec2;
+using sim::world3d::Vec3;
 
 TEST_CASE("a camera looking at a point: it lands on the principal point, right is right and up is up") {
   const Camera3d c(Vec3(0, -5, 0), Vec3::Zero(), Vec3::UnitZ(), 40.0, 640, 360, Vec2(320, 180), 1.0, 10.0);

@@ -8,6 +8,7 @@
 #include <numbers>
 
 using namespace render::draw3d;
+using sim::world3d::Vec3;
 
 namespace {
 

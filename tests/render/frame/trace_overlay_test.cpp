@@ -12,6 +12,7 @@
 
 using namespace render::draw;
 using render::frame::SceneRun;
+using sim::core::Vec2;
 
 namespace {
 

@@ -14,6 +14,8 @@ using namespace render::frame3d;
 using namespace render::draw3d;
 using render::draw::DrawList;
 using render::draw::Role;
+using render::draw3d::DrawList3d;
+using sim::core::Vec2;
 
 namespace {
 

@@ -9,6 +9,7 @@
 #include "sim/yaml/scene_source.h"
 
 using namespace render::frame3d;
+using render::draw3d::Camera3d;
 
 namespace {
 

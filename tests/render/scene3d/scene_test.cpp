@@ -7,6 +7,7 @@
 #include "support/scene_error_check.h"
 
 using namespace render::scene3d;
+using sim::world3d::Vec3;
 
 namespace {
 
