@@ -180,6 +180,8 @@ class World {
   // Returns whether the pairs were lastStep's, each written over its own. `sideSlack` as collide()'s.
   bool collectContacts(double margin, std::vector<Contact>& found, bool awakeOnly, bool warmStart, WorkerPool* threads = nullptr,
                        std::vector<Contact>* lastStep = nullptr, double sideSlack = 0.0) const;
+  // collectContacts' stages (world.cpp)
+  class ContactPass;
 
   bool started_ = false;
   bool contactPairsKept_ = false;
