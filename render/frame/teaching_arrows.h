@@ -43,6 +43,11 @@ class TeachingArrows {
     int path = -1;  // index among paths()
   };
   void drawOne(const Arrow& a, int index, const sim::world::World& world, const History& history, Canvas& draw) const;
+  // drawOne's stages: a straight arrow with its label, ω's or τ's arc, the body frame's axes
+  void straight(const Arrow& a, const Pen& style, const sim::core::Body& b, const Vec2& tail, const Vec2& vector,
+                const std::string& shown, Canvas& draw) const;
+  void spin(const Arrow& a, const Pen& style, const sim::core::Body& b, const sim::world::World& world, Canvas& draw) const;
+  void frame(const Arrow& a, const Pen& style, const sim::core::Body& b, Canvas& draw) const;
   // the arrow's label (with its value) beyond `anchor` in `direction`
   void label(const Arrow& a, const std::string& value, const Vec2& anchor, const Vec2& direction, Canvas& draw) const;
 
