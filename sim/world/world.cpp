@@ -449,12 +449,7 @@ long World::recycledContacts() const { return std::count(recycledNow_.begin(), r
 
 void World::start() {
   if (started_) return;
-  pending_ = events;
-  std::stable_sort(pending_.begin(), pending_.end(),
-                   [](const ImpulseEvent& a, const ImpulseEvent& b) { return a.time < b.time; });
-  std::vector<double> instants = forces.breakpoints();
-  for (const ImpulseEvent& e : pending_) instants.push_back(e.time);
-  grid_ = StepGrid(dt, std::move(instants));
+  timeline_ = Timeline<ImpulseEvent>(dt, events, forces.breakpoints());
   measureScene();
   if (collisions == CollisionMethod::Auto) chooseMethod();
   method_ = OwnedMethod(makeMethod(collisions, precision));
@@ -505,35 +500,18 @@ std::unique_ptr<Method> makeMethod(CollisionMethod method, Precision precision) 
 
 void World::advanceTo(double tEnd, StepObserver* observer) {
   start();
-  applyDueEvents(observer);
-  while (time < tEnd && !grid_.same(time, tEnd)) stepTo(grid_.nextStop(time, tEnd), tEnd, observer);
-  time = std::max(time, tEnd);
+  timeline_.advanceTo(*this, tEnd, observer);
 }
 
 void World::advanceWithin(double t, double tEnd, StepObserver* observer) {
   start();
-  applyDueEvents(observer);
-  while (time < tEnd && !grid_.same(time, tEnd)) {
-    const double stop = grid_.nextStop(time, tEnd);
-    if (stop > t && !grid_.same(stop, t)) break;
-    stepTo(stop, tEnd, observer);
-  }
+  timeline_.advanceWithin(*this, t, tEnd, observer);
 }
 
-// one step from now to `stop` on the way to tEnd, the events due there applied
-void World::stepTo(double stop, double tEnd, StepObserver* observer) {
-  // land on the grid point or tEnd itself when the stop is one of them within round-off
-  const double end = grid_.arrive(stop, tEnd);
-  step(stop, end);
-  time = end;
-  if (observer) observer->afterStep(*this);
-  applyDueEvents(observer);
-}
-
-// one step of size h by the collision method (methods.h), and what is the world's around it:
-// sleeping, `auto`'s switch and the finiteness check. Under `auto`, when the event method finds
-// impacts piling up (a stack or a pile forming), the step is done again from where it began by
-// the stack solver, which goes on from there.
+// the timeline's step (timeline.h): one step of size h by the collision method (methods.h), and
+// what is the world's around it: sleeping, `auto`'s switch and the finiteness check. Under
+// `auto`, when the event method finds impacts piling up (a stack or a pile forming), the step is
+// done again from where it began by the stack solver, which goes on from there.
 void World::step(double stop, double end) {
   const double h = stop - time;
   const TimeStep thisStep{time, h};
@@ -564,6 +542,7 @@ void World::step(double stop, double end) {
   if (sleeping()) sleep_.afterStep(bodies, contacts, forces, thisStep.midpoint(), h);
   // stop at the first non-finite state rather than carry NaN forward
   checkFinite(time + h);
+  time = end;
 }
 
 // the stack solver from why.time on: the start of the step in which the impacts piled up, or the
@@ -578,15 +557,12 @@ void World::switchToStackSolver(const MethodSwitch& why) {
   method_->start(*this);
 }
 
-void World::applyDueEvents(StepObserver* observer) {
-  while (nextEvent_ < pending_.size() && (pending_[nextEvent_].time < time || grid_.same(pending_[nextEvent_].time, time))) {
-    const ImpulseEvent& e = pending_[nextEvent_++];
-    if (sleeping()) sleep_.wake(e.body, contacts);
-    const Body& b = bodies[e.body];
-    const Vec2 r = e.pointInWorld ? e.point : b.pose().toWorld(e.point);
-    applyImpulse(e.body, r, e.impulse);
-    if (observer) observer->afterEvent(*this, e);
-  }
+// the timeline's event (timeline.h): the impulse now, its body's island woken first
+void World::applyEvent(const ImpulseEvent& e) {
+  if (sleeping()) sleep_.wake(e.body, contacts);
+  const Body& b = bodies[e.body];
+  const Vec2 r = e.pointInWorld ? e.point : b.pose().toWorld(e.point);
+  applyImpulse(e.body, r, e.impulse);
 }
 
 // only the stack solvers sleep: the event method's impacts and the isolated impulses find their
