@@ -3,10 +3,10 @@ BUILD    ?= build
 JOBS     ?= $(shell nproc 2>/dev/null || echo 2)
 DEMO     ?= scenes/poll_bar_impulse.yaml
 # the last line is for the tests: the page in a real browser, HTML checked by tidy, the GNU Parallel
-# recipe, and the scripts' JSON checks
+# recipe, the scripts' JSON checks, and the functions' lengths (tests/support/function_length_test.sh)
 PACKAGES := g++ cmake make pkg-config libeigen3-dev libyaml-cpp-dev doctest-dev libcli11-dev \
             libosmesa6-dev libpng-dev libfreetype-dev fonts-dejavu-core ffmpeg gnuplot-nox \
-            chromium tidy parallel python3
+            chromium tidy parallel python3 universal-ctags
 # `make bench` only: Box2D 2.4, the stacks' peer in the same run (the build and the tests never need it)
 BENCH_PACKAGES := libbox2d-dev
 SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)

@@ -34,14 +34,8 @@ struct SimulateOptions : SceneOptions, Verbosity {
   std::string output;  // -o: the state into this file instead of standard output
 };
 
-void printJson(const sim::scene::SceneDef& def, const sim::world::World& w, const sim::world::EnergyLedger& ledger,
-               bool verbose) {
-  JsonWriter j(std::cout);
-  j.beginObject();
-  j.field("scene", def.name);
-  j.key("variant");
-  def.variant.empty() ? j.null() : j.value(def.variant);
-  j.field("t", w.time).field("integrator", sim::core::integratorName(w.integrator)).field("dt", w.dt).field("steps", w.steps);
+// each body's pose, velocity and kinetic energy, by name
+void writeBodies(JsonWriter& j, const sim::scene::SceneDef& def, const sim::world::World& w) {
   j.key("bodies").beginArray();
   for (size_t i = 0; i < w.bodies.size(); ++i) {
     const sim::core::Body& b = w.bodies[i];
@@ -57,52 +51,72 @@ void printJson(const sim::scene::SceneDef& def, const sim::world::World& w, cons
         .endObject();
   }
   j.endArray();
+}
+
+// the whole system's energy and momenta, and the ledger of where the energy went
+void writeTotals(JsonWriter& j, const sim::scene::SceneDef& def, const sim::world::World& w,
+                 const sim::world::EnergyLedger& ledger) {
   const sim::world::Energy e = sim::world::energy(w);
   j.key("energy").beginObject().field("kinetic", e.kinetic).field("potential", e.potential).field("total", e.total()).endObject();
   const sim::core::Vec2 p = sim::world::linearMomentum(w);
   j.key("momentum").beginArray().value(p.x()).value(p.y()).endArray();
   j.field("angular_momentum", sim::world::angularMomentum(w));
   writeLedger(j, accountsOf(ledger), namesOf(def));
+}
+
+// the collision method and why; the optional fields only where they apply, so that the JSON of
+// a run without them is unchanged
+void writeMethod(JsonWriter& j, const sim::scene::SceneDef& def, const sim::world::World& w) {
   j.field("collision_method", sim::world::collisionMethodName(w.collisions));
   j.field("collision_method_reason", describeCollisionMethod(def, w));
-  // only when `auto` switched to the stack solver during the run (the JSON is otherwise unchanged)
+  // only when `auto` switched to the stack solver during the run
   if (w.methodSwitch)
     j.field("collision_method_switch_time", w.methodSwitch->time).field("collision_method_switch", describeMethodSwitch(def, w));
   // only with sim: {sleep: true}: how many bodies sleep at the end (sim/world/sleep.h)
   if (w.sleep) j.field("sleep", true).field("sleeping_bodies", static_cast<long>(w.sleepingBodies()));
   // only with sim: {precision: float}
   if (w.precision != sim::world::Precision::Double) j.field("precision", sim::world::precisionName(w.precision));
-  auto name = [&](int i) { return def.bodies[i].name; };
-  auto pair = [&](const sim::core::Vec2& v) -> JsonWriter& { return j.beginArray().value(v.x()).value(v.y()).endArray(); };
-  // every impulse the collision response applied; b is the obstacle for a body–obstacle collision
+}
+
+// a vector as [x, y]
+JsonWriter& writePair(JsonWriter& j, const sim::core::Vec2& v) { return j.beginArray().value(v.x()).value(v.y()).endArray(); }
+
+// every impulse the collision response applied; b is the obstacle for a body–obstacle collision
+void writeImpacts(JsonWriter& j, const sim::scene::SceneDef& def, const sim::world::World& w) {
   j.key("collisions").beginArray();
   for (const sim::world::ImpactRecord& r : w.impacts) {
-    j.beginObject().field("t", r.t).field("a", name(r.a)).field("b", name(r.b));
+    j.beginObject().field("t", r.t).field("a", def.bodies[r.a].name).field("b", def.bodies[r.b].name);
     j.key("point");
-    pair(r.point);
+    writePair(j, r.point);
     j.key("normal");
-    pair(r.normal);
+    writePair(j, r.normal);
     j.field("impulse", r.impulse).field("tangent_impulse", r.tangentImpulse);
     j.field("vn_before", r.vnBefore).field("vn_after", r.vnAfter).endObject();
   }
   j.endArray();
-  // the touching pairs at the end time
+}
+
+// the touching pairs at the end time
+void writeContacts(JsonWriter& j, const sim::scene::SceneDef& def, const sim::world::World& w) {
   j.key("contacts").beginArray();
   for (const sim::world::Contact& c : w.findContacts(sim::core::settings::kContactMargin)) {
-    j.beginObject().field("a", name(c.a)).field("b", name(c.b));
+    j.beginObject().field("a", def.bodies[c.a].name).field("b", def.bodies[c.b].name);
     j.key("normal");
-    pair(c.manifold.normal);
+    writePair(j, c.manifold.normal);
     j.key("points").beginArray();
     for (int k = 0; k < c.manifold.count; ++k) {
       j.beginObject().key("point");
-      pair(c.manifold.points[k].point);
+      writePair(j, c.manifold.points[k].point);
       j.field("separation", c.manifold.points[k].separation).endObject();
     }
     j.endArray().endObject();
   }
   j.endArray();
-  // contacts the event method turned into resting contact (impacts piling up in finite time): one
-  // entry per pair and kind, from its first record (t) to its last, or every record with --verbose
+}
+
+// contacts the event method turned into resting contact (impacts piling up in finite time): one
+// entry per pair and kind, from its first record (t) to its last, or every record with --verbose
+void writeResting(JsonWriter& j, const sim::scene::SceneDef& def, const sim::world::World& w, bool verbose) {
   j.key("resting").beginArray();
   std::vector<RestingSpan> spans;
   if (verbose)
@@ -111,13 +125,29 @@ void printJson(const sim::scene::SceneDef& def, const sim::world::World& w, cons
   for (const RestingSpan& s : spans)
     j.beginObject()
         .field("t", s.first.t)
-        .field("a", name(s.first.a))
-        .field("b", name(s.first.b))
+        .field("a", def.bodies[s.first.a].name)
+        .field("b", def.bodies[s.first.b].name)
         .field("moving", s.first.moving)
         .field("last", s.last)
         .field("count", s.count)
         .endObject();
   j.endArray();
+}
+
+void printJson(const sim::scene::SceneDef& def, const sim::world::World& w, const sim::world::EnergyLedger& ledger,
+               bool verbose) {
+  JsonWriter j(std::cout);
+  j.beginObject();
+  j.field("scene", def.name);
+  j.key("variant");
+  def.variant.empty() ? j.null() : j.value(def.variant);
+  j.field("t", w.time).field("integrator", sim::core::integratorName(w.integrator)).field("dt", w.dt).field("steps", w.steps);
+  writeBodies(j, def, w);
+  writeTotals(j, def, w, ledger);
+  writeMethod(j, def, w);
+  writeImpacts(j, def, w);
+  writeContacts(j, def, w);
+  writeResting(j, def, w, verbose);
   j.endObject();
   std::cout << '\n';
 }

@@ -130,6 +130,43 @@ void TeachingArrows::label(const Arrow& a, const std::string& value, const Vec2&
   draw.label(anchor, direction, text, {Role::Label, a.def.body, 1.0});
 }
 
+// a straight arrow from `tail` along `vector`, labeled past its head; one under a pixel long is a
+// dot with its label, out from the body's center (the rolling disk's "v = 0" at its contact)
+void TeachingArrows::straight(const Arrow& a, const Pen& style, const sim::core::Body& b, const Vec2& tail, const Vec2& vector,
+                              const std::string& shown, Canvas& draw) const {
+  if (vector.norm() > px_) {
+    draw.arrow(tail, tail + vector, style);
+    label(a, shown, tail + vector, vector.normalized(), draw);
+    return;
+  }
+  draw.point(tail, style);
+  label(a, shown, tail, directionOr(tail - b.x, Vec2::UnitY()), draw);
+}
+
+// ω arcs over the top, τ under the bottom, each labeled out from its middle
+void TeachingArrows::spin(const Arrow& a, const Pen& style, const sim::core::Body& b, const sim::world::World& world,
+                          Canvas& draw) const {
+  const bool omega = a.def.show == Show::Omega;
+  const double amount = omega ? b.omega : torqueOf(b, pointForcesOn(world, a.def.body));
+  const double largest = omega ? maxOmega_ : maxTorque_;
+  const double radius = (omega ? kOmegaRadius : kTorqueRadius) * viewHeight_, middle = omega ? 0.5 * kPi : -0.5 * kPi;
+  if (!(largest > 0.0) || amount == 0.0) return;
+  curvedArrow(b.x, radius, middle, kMaxSweep * amount / largest, px_, style, draw);
+  const Vec2 out(0.0, omega ? 1.0 : -1.0);
+  label(a, quantityText("", amount, omega ? "rad/s" : "N·m", omega ? omegaFloor_ : torqueFloor_), b.x + radius * out, out, draw);
+}
+
+// the body frame's axes x_b and y_b from its center of mass
+void TeachingArrows::frame(const Arrow& a, const Pen& style, const sim::core::Body& b, Canvas& draw) const {
+  const double length = kFrameLength * viewHeight_;
+  const Vec2 x = b.q().apply(Vec2::UnitX()), y = b.q().apply(Vec2::UnitY());
+  draw.arrow(b.x, b.x + length * x, style);
+  draw.arrow(b.x, b.x + length * y, style);
+  const Pen text{Role::Label, a.def.body, 1.0};
+  draw.label(b.x + length * x, x, "x_b", text);
+  draw.label(b.x + length * y, y, "y_b", text);
+}
+
 void TeachingArrows::drawOne(const Arrow& a, int index, const sim::world::World& world, const History& history,
                              Canvas& draw) const {
   const sim::core::Body& b = world.bodies[a.def.body];
@@ -137,22 +174,11 @@ void TeachingArrows::drawOne(const Arrow& a, int index, const sim::world::World&
   const Vec2 point = b.pose().toWorld(a.local);
   // the value after the label: " = 1.25 m/s", 0 below its noise floor
   const auto value = [](double x, const std::string& unit, double floor) { return quantityText("", x, unit, floor); };
-  // a straight arrow from `tail` along `vector`, labeled past its head; one under a pixel long is a
-  // dot with its label, out from the body's center (the rolling disk's "v = 0" at its contact)
-  const auto straight = [&](const Vec2& tail, const Vec2& vector, const std::string& shown) {
-    if (vector.norm() > px_) {
-      draw.arrow(tail, tail + vector, style);
-      label(a, shown, tail + vector, vector.normalized(), draw);
-      return;
-    }
-    draw.point(tail, style);
-    label(a, shown, tail, directionOr(tail - b.x, Vec2::UnitY()), draw);
-  };
   switch (a.def.show) {
     case Show::Velocity: {
       // the notes' velocity of a body point: v + ω × r′
       const Vec2 v = b.pointVelocity(point);
-      straight(point, velocityScale_ * v, value(v.norm(), "m/s", speedFloor_));
+      straight(a, style, b, point, velocityScale_ * v, value(v.norm(), "m/s", speedFloor_), draw);
       break;
     }
     case Show::Offset: {
@@ -164,43 +190,23 @@ void TeachingArrows::drawOne(const Arrow& a, int index, const sim::world::World&
       break;
     }
     case Show::Momentum:
-      straight(b.x, momentumScale_ * b.mass * b.v, value(b.mass * b.v.norm(), "kg·m/s", momentumFloor_));
+      straight(a, style, b, b.x, momentumScale_ * b.mass * b.v, value(b.mass * b.v.norm(), "kg·m/s", momentumFloor_), draw);
       break;
     case Show::Force:
       for (const AppliedForce& f : pointForcesOn(world, a.def.body))
-        straight(f.point, forceScale_ * f.force, value(f.force.norm(), "N", forceFloor_));
+        straight(a, style, b, f.point, forceScale_ * f.force, value(f.force.norm(), "N", forceFloor_), draw);
       break;
     case Show::NormalForce:
     case Show::Friction:
       // at each pair the body touches, from where its normal impulses are centred
       for (const ContactForce& f : contactForcesOn(world, a.def.body)) {
         const Vec2 force = a.def.show == Show::NormalForce ? f.normal : f.friction;
-        straight(f.point, forceScale_ * force, value(force.norm(), "N", forceFloor_));
+        straight(a, style, b, f.point, forceScale_ * force, value(force.norm(), "N", forceFloor_), draw);
       }
       break;
     case Show::Omega:
-    case Show::Torque: {
-      // ω arcs over the top, τ under the bottom, each labeled out from its middle
-      const bool omega = a.def.show == Show::Omega;
-      const double amount = omega ? b.omega : torqueOf(b, pointForcesOn(world, a.def.body));
-      const double largest = omega ? maxOmega_ : maxTorque_;
-      const double radius = (omega ? kOmegaRadius : kTorqueRadius) * viewHeight_, middle = omega ? 0.5 * kPi : -0.5 * kPi;
-      if (!(largest > 0.0) || amount == 0.0) break;
-      curvedArrow(b.x, radius, middle, kMaxSweep * amount / largest, px_, style, draw);
-      const Vec2 out(0.0, omega ? 1.0 : -1.0);
-      label(a, value(amount, omega ? "rad/s" : "N·m", omega ? omegaFloor_ : torqueFloor_), b.x + radius * out, out, draw);
-      break;
-    }
-    case Show::Frame: {
-      const double length = kFrameLength * viewHeight_;
-      const Vec2 x = b.q().apply(Vec2::UnitX()), y = b.q().apply(Vec2::UnitY());
-      draw.arrow(b.x, b.x + length * x, style);
-      draw.arrow(b.x, b.x + length * y, style);
-      const Pen text{Role::Label, a.def.body, 1.0};
-      draw.label(b.x + length * x, x, "x_b", text);
-      draw.label(b.x + length * y, y, "y_b", text);
-      break;
-    }
+    case Show::Torque: spin(a, style, b, world, draw); break;
+    case Show::Frame: frame(a, style, b, draw); break;
     case Show::Center:
       // the center of mass, wherever `at` is: the quartered disc, labeled out from it
       draw.point(b.x, style);

@@ -41,6 +41,12 @@ class TeachingArrows {
   };
   void drawOne(const Arrow& a, int index, const sim::world::World& world, const History& history,
                render::draw::Canvas& draw) const;
+  // drawOne's stages: a straight arrow with its label, ω's or τ's arc, the body frame's axes
+  void straight(const Arrow& a, const render::draw::Pen& style, const sim::core::Body& b, const sim::core::Vec2& tail,
+                const sim::core::Vec2& vector, const std::string& shown, render::draw::Canvas& draw) const;
+  void spin(const Arrow& a, const render::draw::Pen& style, const sim::core::Body& b, const sim::world::World& world,
+            render::draw::Canvas& draw) const;
+  void frame(const Arrow& a, const render::draw::Pen& style, const sim::core::Body& b, render::draw::Canvas& draw) const;
   // the arrow's label (with its value) beyond `anchor` in `direction`
   void label(const Arrow& a, const std::string& value, const sim::core::Vec2& anchor, const sim::core::Vec2& direction,
              render::draw::Canvas& draw) const;

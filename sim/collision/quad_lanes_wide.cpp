@@ -107,33 +107,36 @@ I featureId(I referenceOnA, I reference, I incident) {
   return selectI(referenceOnA, reference | incident << 32, incident | reference << 32);
 }
 
-}  // namespace
+// the notes' separation(P, Q) of each lane, the better of A's and B's edges, with its features,
+// and which polygon holds the reference edge (A's unless B's is clearly better)
+struct Sat {
+  EdgeSeparation a, b;
+  I bestA, refA;
+  V separation;
+  I edge, vertex;
+};
 
-void collideLanes(const Input& in, double margin, double hysteresis, double sideSlack, Output& out) {
-  Polygon A, B;
-  loadPoints(in.av, A.vx, A.vy);
-  loadPoints(in.an, A.nx, A.ny);
-  loadPoints(in.bv, B.vx, B.vy);
-  loadPoints(in.bn, B.nx, B.ny);
-  const EdgeSeparation ea = maxSeparation(A, B), eb = maxSeparation(B, A);
-  // the notes' separation(P, Q) and its features
-  const I bestA = ea.separation >= eb.separation;
-  const V satSeparation = select(ea.separation < eb.separation, eb.separation, ea.separation);
-  const I satEdge = selectI(bestA, ea.edge, eb.edge), satVertex = selectI(bestA, ea.vertex, eb.vertex);
-  // A's edge unless B's is clearly better
-  const I refA = ~(eb.separation > ea.separation + splat(hysteresis));
+[[gnu::always_inline]] inline Sat separatingAxis(const Polygon& A, const Polygon& B, double hysteresis) {
+  Sat sat{maxSeparation(A, B), maxSeparation(B, A), {}, {}, {}, {}, {}};
+  sat.bestA = sat.a.separation >= sat.b.separation;
+  sat.separation = select(sat.a.separation < sat.b.separation, sat.b.separation, sat.a.separation);
+  sat.edge = selectI(sat.bestA, sat.a.edge, sat.b.edge), sat.vertex = selectI(sat.bestA, sat.a.vertex, sat.b.vertex);
+  sat.refA = ~(sat.b.separation > sat.a.separation + splat(hysteresis));
+  return sat;
+}
 
-  // clipToReference<4> with the reference edge on A where refA, else on B
-  Polygon ref, inc;
+// clipToReference<4> with the reference edge on A where refA, else on B: the two polygons by role
+[[gnu::always_inline]] inline void byRole(const Polygon& A, const Polygon& B, I refA, Polygon& ref, Polygon& inc) {
   for (int k = 0; k < 4; ++k) {
     ref.vx[k] = select(refA, A.vx[k], B.vx[k]), ref.vy[k] = select(refA, A.vy[k], B.vy[k]);
     ref.nx[k] = select(refA, A.nx[k], B.nx[k]), ref.ny[k] = select(refA, A.ny[k], B.ny[k]);
     inc.vx[k] = select(refA, B.vx[k], A.vx[k]), inc.vy[k] = select(refA, B.vy[k], A.vy[k]);
     inc.nx[k] = select(refA, B.nx[k], A.nx[k]), inc.ny[k] = select(refA, B.ny[k], A.ny[k]);
   }
-  const I edge = selectI(refA, ea.edge, eb.edge);
-  const V nRefX = pick(ref.nx, edge), nRefY = pick(ref.ny, edge);
-  const V normalX = select(refA, -nRefX, nRefX), normalY = select(refA, -nRefY, nRefY);
+}
+
+// the incident edge: the one whose normal is most against the reference normal (the first least)
+[[gnu::always_inline]] inline I incidentEdge(const Polygon& inc, V nRefX, V nRefY) {
   I incEdge = splatI(0);
   V most = splat(kInf);
   for (int i = 0; i < 4; ++i) {
@@ -142,11 +145,11 @@ void collideLanes(const Input& in, double margin, double hysteresis, double side
     most = select(less, d, most);
     incEdge = selectI(less, splatI(i), incEdge);
   }
-  const I incNext = (incEdge + 1) & 3, refNext = (edge + 1) & 3;
-  const ClipPoint incident[2] = {{pick(inc.vx, incEdge), pick(inc.vy, incEdge), incEdge, splatI(-1)},
-                                 {pick(inc.vx, incNext), pick(inc.vy, incNext), incNext, splatI(-1)}};
-  const V v1x = pick(ref.vx, edge), v1y = pick(ref.vy, edge), v2x = pick(ref.vx, refNext), v2y = pick(ref.vy, refNext);
-  const V dx = v2x - v1x, dy = v2y - v1y;
+  return incEdge;
+}
+
+// the reference edge's unit direction (normalized(): unchanged where it has no length)
+[[gnu::always_inline]] inline void edgeDirection(V dx, V dy, V& tx, V& ty) {
   const V z = dx * dx + dy * dy;
   const I positive = z > 0.0;
 #if defined(__AVX2__)
@@ -155,43 +158,86 @@ void collideLanes(const Input& in, double margin, double hysteresis, double side
   V root = z;
   for (int lane = 0; lane < kLanes; ++lane) root[lane] = __builtin_sqrt(z[lane]);
 #endif
-  const V tx = select(positive, dx / root, dx), ty = select(positive, dy / root, dy);
+  tx = select(positive, dx / root, dx), ty = select(positive, dy / root, dy);
+}
+
+// the clipped points as the manifold has them: separation from the reference edge, kept within
+// the margin, feature ids, and each point halfway between the two surfaces
+struct ClippedPoints {
+  V sep[2], px[2], py[2];
+  I keep[2], id[2];
+};
+
+[[gnu::always_inline]] inline ClippedPoints manifoldPoints(const ClipPoint twice[2], I kept, I refA, I edge, I incEdge, V nRefX,
+                                                           V nRefY, V v1x, V v1y, double margin) {
+  ClippedPoints p;
+  for (int k = 0; k < 2; ++k) {
+    p.sep[k] = nRefX * (twice[k].x - v1x) + nRefY * (twice[k].y - v1y);
+    p.keep[k] = kept & ~(p.sep[k] > margin);
+    const I vertexOnEdge = featureId(refA, featureBits(0, twice[k].referenceVertex), featureBits(1, incEdge));
+    const I edgeOnVertex = featureId(refA, featureBits(1, edge), featureBits(0, twice[k].incidentVertex));
+    p.id[k] = selectI(twice[k].referenceVertex >= 0, vertexOnEdge, edgeOnVertex);
+    const V half = 0.5 * p.sep[k];
+    p.px[k] = twice[k].x - half * nRefX, p.py[k] = twice[k].y - half * nRefY;
+  }
+  return p;
+}
+
+// the kept points first, in order, and zeros past them (as a Manifold's points start); apart by
+// more than the margin: the first clipping's points as they are, with the notes' separation; else
+// the least of the points' (std::min from infinity, as collide() takes it)
+[[gnu::always_inline]] inline void storeManifold(const Sat& sat, const ClippedPoints& p, V normalX, V normalY, double margin,
+                                                 Output& out) {
+  const I count = (p.keep[0] & 1) + (p.keep[1] & 1), first = p.keep[0], second = p.keep[0] & p.keep[1];
+  const V zero = splat(0.0);
+  store(out.normalX, normalX), store(out.normalY, normalY), store(out.count, count);
+  store(out.pointX[0], select(count > 0, select(first, p.px[0], p.px[1]), zero));
+  store(out.pointY[0], select(count > 0, select(first, p.py[0], p.py[1]), zero));
+  const V firstSeparation = select(count > 0, select(first, p.sep[0], p.sep[1]), zero);
+  store(out.pointSeparation[0], firstSeparation);
+  store(out.id[0], selectI(count > 0, selectI(first, p.id[0], p.id[1]), splatI(0)));
+  store(out.pointX[1], select(second, p.px[1], zero)), store(out.pointY[1], select(second, p.py[1], zero));
+  store(out.pointSeparation[1], select(second, p.sep[1], zero)), store(out.id[1], selectI(second, p.id[1], splatI(0)));
+  store(out.satSeparation, sat.separation), store(out.satReferenceOnA, sat.bestA);
+  store(out.satReferenceEdge, sat.edge), store(out.satIncidentVertex, sat.vertex);
+  const I apart = sat.separation > margin;
+  const V least = select(firstSeparation < kInf, firstSeparation, splat(kInf));
+  const V both = select(p.sep[1] < least, p.sep[1], least);
+  store(out.separation, select(apart, sat.separation, select(second, both, least)));
+  store(out.again, (sat.a.edge < 0) | (sat.b.edge < 0) | (~apart & (count == 0)));
+}
+
+}  // namespace
+
+void collideLanes(const Input& in, double margin, double hysteresis, double sideSlack, Output& out) {
+  Polygon A, B;
+  loadPoints(in.av, A.vx, A.vy);
+  loadPoints(in.an, A.nx, A.ny);
+  loadPoints(in.bv, B.vx, B.vy);
+  loadPoints(in.bn, B.nx, B.ny);
+  // the axis of least penetration and the edge to clip against (collide.cpp's polygonsOf<4>)
+  const Sat sat = separatingAxis(A, B, hysteresis);
+  Polygon ref, inc;
+  byRole(A, B, sat.refA, ref, inc);
+  // the reference edge's normal, the manifold's (collide()'s sign), and the incident edge
+  const I edge = selectI(sat.refA, sat.a.edge, sat.b.edge);
+  const V nRefX = pick(ref.nx, edge), nRefY = pick(ref.ny, edge);
+  const V normalX = select(sat.refA, -nRefX, nRefX), normalY = select(sat.refA, -nRefY, nRefY);
+  const I incEdge = incidentEdge(inc, nRefX, nRefY);
+  const I incNext = (incEdge + 1) & 3, refNext = (edge + 1) & 3;
+  const ClipPoint incident[2] = {{pick(inc.vx, incEdge), pick(inc.vy, incEdge), incEdge, splatI(-1)},
+                                 {pick(inc.vx, incNext), pick(inc.vy, incNext), incNext, splatI(-1)}};
+  const V v1x = pick(ref.vx, edge), v1y = pick(ref.vy, edge), v2x = pick(ref.vx, refNext), v2y = pick(ref.vy, refNext);
+  V tx, ty;
+  edgeDirection(v2x - v1x, v2y - v1y, tx, ty);
+  // the incident edge clipped to the reference edge's side planes moved out by the side slack
+  // (collide.cpp's clipToReference, after Box2D-Lite's ClipSegmentToLine)
   ClipPoint once[2], twice[2];
   I kept = splatI(-1);
   clipSegment(incident, once, -tx, -ty, -(tx * v1x + ty * v1y) + splat(sideSlack), edge, kept);
   clipSegment(once, twice, tx, ty, tx * v2x + ty * v2y + splat(sideSlack), refNext, kept);
-  V sep[2], px[2], py[2];
-  I keep[2], id[2];
-  for (int k = 0; k < 2; ++k) {
-    sep[k] = nRefX * (twice[k].x - v1x) + nRefY * (twice[k].y - v1y);
-    keep[k] = kept & ~(sep[k] > margin);
-    const I vertexOnEdge = featureId(refA, featureBits(0, twice[k].referenceVertex), featureBits(1, incEdge));
-    const I edgeOnVertex = featureId(refA, featureBits(1, edge), featureBits(0, twice[k].incidentVertex));
-    id[k] = selectI(twice[k].referenceVertex >= 0, vertexOnEdge, edgeOnVertex);
-    const V half = 0.5 * sep[k];
-    px[k] = twice[k].x - half * nRefX, py[k] = twice[k].y - half * nRefY;
-  }
-
-  // the kept points first, in order, and zeros past them (as a Manifold's points start)
-  const I count = (keep[0] & 1) + (keep[1] & 1), first = keep[0], second = keep[0] & keep[1];
-  const V zero = splat(0.0);
-  store(out.normalX, normalX), store(out.normalY, normalY), store(out.count, count);
-  store(out.pointX[0], select(count > 0, select(first, px[0], px[1]), zero));
-  store(out.pointY[0], select(count > 0, select(first, py[0], py[1]), zero));
-  const V firstSeparation = select(count > 0, select(first, sep[0], sep[1]), zero);
-  store(out.pointSeparation[0], firstSeparation);
-  store(out.id[0], selectI(count > 0, selectI(first, id[0], id[1]), splatI(0)));
-  store(out.pointX[1], select(second, px[1], zero)), store(out.pointY[1], select(second, py[1], zero));
-  store(out.pointSeparation[1], select(second, sep[1], zero)), store(out.id[1], selectI(second, id[1], splatI(0)));
-  store(out.satSeparation, satSeparation), store(out.satReferenceOnA, bestA);
-  store(out.satReferenceEdge, satEdge), store(out.satIncidentVertex, satVertex);
-  // apart by more than the margin: the first clipping's points as they are, with the notes'
-  // separation; else the least of the points' (std::min from infinity, as collide() takes it)
-  const I apart = satSeparation > margin;
-  const V least = select(firstSeparation < kInf, firstSeparation, splat(kInf));
-  const V both = select(sep[1] < least, sep[1], least);
-  store(out.separation, select(apart, satSeparation, select(second, both, least)));
-  store(out.again, (ea.edge < 0) | (eb.edge < 0) | (~apart & (count == 0)));
+  const ClippedPoints points = manifoldPoints(twice, kept, sat.refA, edge, incEdge, nRefX, nRefY, v1x, v1y, margin);
+  storeManifold(sat, points, normalX, normalY, margin, out);
 }
 
 }  // namespace sim::collision::quad

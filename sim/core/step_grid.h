@@ -1,7 +1,8 @@
 // The fixed step grid of a run: steps of dt from t = 0, each cut short where something happens at
 // an exact instant (an impulse, a force switching on or off, the end of the run), so that no step
 // straddles one and the grid itself never shifts. Two times closer than kTimeSnap·dt are the same
-// instant (sim/core/settings.h). The 2D and the 3D world step on it alike.
+// instant (sim/core/settings.h). The 2D and the 3D world step on it through their one timeline
+// (timeline.h).
 #pragma once
 
 #include <vector>

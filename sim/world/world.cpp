@@ -93,225 +93,97 @@ void World::makeProxies() const {
     for (int k = 0; k < partCount(bodies[i].shape); ++k) proxies_.push_back({i, k});
 }
 
-bool World::collectContacts(double margin, std::vector<Contact>& found, bool awakeOnly, bool warmStart, WorkerPool* threads,
-                            std::vector<Contact>* lastStep, double sideSlack) const {
-  // (a body's shape is fixed from its making: only bodies added since ask for new proxies)
-  if (proxiesFor_ != bodies.size()) makeProxies();
-  const bool hasParts = !proxies_.empty();
-  const int n = hasParts ? static_cast<int>(proxies_.size()) : static_cast<int>(bodies.size());
-  // a proxy's body and part (while every body is one shape, proxy i is body i, part 0)
-  auto bodyOf = [&](int i) { return hasParts ? proxies_[i].body : i; };
-  auto partOf = [&](int i) { return hasParts ? proxies_[i].part : 0; };
-  const bool shared = threads && threads->size() > 1;
+// collectContacts' stages over one call: its options, and the proxies, pairs and manifolds it
+// writes into the world's scratch (World's mutable members); defined here, in one class, so that
+// each stage inlines into the loop that calls it as the lambdas it replaces did
+class World::ContactPass {
+ public:
+  ContactPass(const World& world, double margin, double sideSlack, bool awakeOnly, bool warmStart)
+      : w_(world),
+        margin_(margin),
+        sideSlack_(sideSlack),
+        awakeOnly_(awakeOnly),
+        warmStart_(warmStart),
+        hasParts_(!world.proxies_.empty()),
+        n_(hasParts_ ? static_cast<int>(world.proxies_.size()) : static_cast<int>(world.bodies.size())) {}
+
   // each proxy placed once (one sine and cosine, its vertices in the world), for its bounds and
-  // every pair it is in
-  placed_.resize(n);
-  boxes_.resize(n);
-  auto placeBodies = [&](int first, int last) {
-    for (int i = first; i < last; ++i) {
-      const Body& b = bodies[bodyOf(i)];
-      const Shape& shape = partShape(b.shape, partOf(i));
-      place(shape, partPoseOf(b.shape, partOf(i), b.pose()), placed_[i]);
-      Aabb box = bounds(placed_[i]);
-      box.lower -= Vec2::Constant(margin);
-      box.upper += Vec2::Constant(margin);
-      boxes_[i] = box;
-    }
-  };
-  if (shared) {
+  // every pair it is in; shared between `threads` when given
+  void placeProxies(WorkerPool* threads) const {
+    w_.placed_.resize(n_);
+    w_.boxes_.resize(n_);
+    if (!threads) return placeRange(0, n_);
     threads->run([&](int t) {
-      const auto [first, last] = Share{t, threads->size()}.of(0, n);
-      placeBodies(first, last);
+      const auto [first, last] = Share{t, threads->size()}.of(0, n_);
+      placeRange(first, last);
     });
-  } else {
-    placeBodies(0, n);
   }
-  fixed_.resize(n);
-  for (int i = 0; i < n; ++i) fixed_[i] = bodies[bodyOf(i)].isStatic;
-  pairCache_.find(boxes_, fixed_, pairs_);
-  // the parts of one body never collide with each other
-  if (hasParts) std::erase_if(pairs_, [&](const std::pair<int, int>& p) { return bodyOf(p.first) == bodyOf(p.second); });
-  // a proxy pair as a contact's pairKey
-  auto keyOf = [&](const std::pair<int, int>& p) {
-    return std::tuple<int, int, int, int>{bodyOf(p.first), partOf(p.first), bodyOf(p.second), partOf(p.second)};
-  };
-  // the manifold of pairs_[k], or none for a pair of a sleeping pile (its pairs are not tested:
-  // they are kept as they were when it fell asleep)
-  auto skipped = [&](int k) {
-    const int i = bodyOf(pairs_[k].first), j = bodyOf(pairs_[k].second);
-    return awakeOnly && (bodies[i].isStatic || sleep_.asleep(i)) && (bodies[j].isStatic || sleep_.asleep(j));
-  };
-  auto collidePair = [&](int k) {
-    return skipped(k) ? Manifold{} : collide(placed_[pairs_[k].first], placed_[pairs_[k].second], margin, sideSlack);
-  };
-  // pairs_[k, k + 4) into out[0, 4): four box pairs at once (quad_pairs.h: collide()'s manifolds to
-  // the bit), else one at a time
-  auto collideFour = [&](int k, Manifold* out) {
-    const PlacedShape* a[kQuadLanes];
-    const PlacedShape* b[kQuadLanes];
-    bool quads = true;
-    for (int q = 0; q < kQuadLanes; ++q) {
-      a[q] = &placed_[pairs_[k + q].first], b[q] = &placed_[pairs_[k + q].second];
-      quads = quads && !skipped(k + q) && isQuadPair(*a[q], *b[q]);
-    }
-    if (quads) return collideQuadPairs(a, b, margin, out, sideSlack);
-    for (int q = 0; q < kQuadLanes; ++q) out[q] = collidePair(k + q);
-  };
+
+  // the broad phase's candidate pairs (pair_cache.h), less those of one body's parts: they never
+  // collide with each other
+  void findPairs() const {
+    w_.fixed_.resize(n_);
+    for (int i = 0; i < n_; ++i) w_.fixed_[i] = w_.bodies[bodyOf(i)].isStatic;
+    w_.pairCache_.find(w_.boxes_, w_.fixed_, w_.pairs_);
+    if (hasParts_) std::erase_if(w_.pairs_, [&](const std::pair<int, int>& p) { return bodyOf(p.first) == bodyOf(p.second); });
+  }
+
   // soft_step's contact recycling (contact_recycle.h): each pair's manifold as made, kept by pair;
-  // while the candidate pairs are last call's (a pile at rest), in place, else merged by pair into a
-  // list for this call's pairs
-  auto keyBits = [](const std::pair<int, int>& p) {
-    return static_cast<std::uint64_t>(p.first) << 32 | static_cast<std::uint32_t>(p.second);
-  };
-  if (recycleReady_) {
-    std::swap(recycle_, recycleNext_);
-    recycleReady_ = false;
-  }
-  const bool recycling = recycleDistance > 0.0 && collisions == CollisionMethod::SoftStep && warmStart;
-  bool inPlace = false;
-  if (recycling) {
-    recycledNow_.assign(pairs_.size(), 0);
+  // while the candidate pairs are last call's (a pile at rest), in place, else merged by pair into
+  // a list for this call's pairs
+  void startRecycling() {
+    if (w_.recycleReady_) {
+      std::swap(w_.recycle_, w_.recycleNext_);
+      w_.recycleReady_ = false;
+    }
+    recycling_ = w_.recycleDistance > 0.0 && w_.collisions == CollisionMethod::SoftStep && warmStart_;
+    if (!recycling_) {
+      // (a solver's call without recycling; a look at the contacts, findContacts(margin), leaves
+      // the count of the solver's last call as it was)
+      if (warmStart_) w_.recycledNow_.clear();
+      return;
+    }
+    const std::vector<std::pair<int, int>>& pairs = w_.pairs_;
+    w_.recycledNow_.assign(pairs.size(), 0);
     // (each proxy's reach, once: its shape is fixed)
-    if (extent_.size() != static_cast<size_t>(n)) {
-      extent_.resize(n);
-      for (int i = 0; i < n; ++i) extent_[i] = fixed_[i] ? 0.0 : boundingRadius(*placed_[i].shape);
+    if (w_.extent_.size() != static_cast<size_t>(n_)) {
+      w_.extent_.resize(n_);
+      for (int i = 0; i < n_; ++i) w_.extent_[i] = w_.fixed_[i] ? 0.0 : boundingRadius(*w_.placed_[i].shape);
     }
-    keysNow_.resize(pairs_.size());
-    for (size_t k = 0; k < pairs_.size(); ++k) keysNow_[k] = keyBits(pairs_[k]);
-    inPlace = keysNow_ == recycleKeys_ && recycle_.size() == pairs_.size();
-    if (!inPlace) {
-      recycleNext_.resize(pairs_.size());
-      recycleReady_ = true;
-      std::swap(recycleKeys_, keysNow_);
+    w_.keysNow_.resize(pairs.size());
+    for (size_t k = 0; k < pairs.size(); ++k) w_.keysNow_[k] = keyBits(pairs[k]);
+    inPlace_ = w_.keysNow_ == w_.recycleKeys_ && w_.recycle_.size() == pairs.size();
+    if (!inPlace_) {
+      w_.recycleNext_.resize(pairs.size());
+      w_.recycleReady_ = true;
+      std::swap(w_.recycleKeys_, w_.keysNow_);
     }
-  } else if (warmStart) {
-    // (a solver's call without recycling; a look at the contacts, findContacts(margin), leaves the
-    // count of the solver's last call as it was)
-    recycledNow_.clear();
   }
-  // how many entries ahead recycleRange brings in
-  constexpr size_t kRecycleAhead = 4;
-  // pairs_[first, last) into out[0, last − first), each pair that touched keeping its manifold while
-  // it moved little, the others collided
-  auto recycleRange = [&](int first, int last, Manifold* out) {
-    // (merging: last call's entries walked alongside, both sorted by pair)
-    size_t old =
-        !inPlace && first < last
-            ? static_cast<size_t>(std::lower_bound(recycle_.begin(), recycle_.end(), keyBits(pairs_[first]),
-                                                   [](const RecycleEntry& e, std::uint64_t key) { return e.key < key; }) -
-                                  recycle_.begin())
-            : 0;
-    for (int k = first; k < last; ++k) {
-      const std::uint64_t key = keyBits(pairs_[k]);
-      const RecycleEntry* before = nullptr;
-      if (inPlace) {
-        before = &recycle_[k];
-        // (the entries a few ahead brought in while this one is read: 304 bytes each, 4.5 MB on the
-        // 5,050-box pyramid, and their first read was the hot spot of recycledManifold)
-        if (static_cast<size_t>(k) + kRecycleAhead < recycle_.size())
-          for (size_t line = 0; line < sizeof(RecycleEntry); line += 64)
-            __builtin_prefetch(reinterpret_cast<const char*>(&recycle_[k + kRecycleAhead]) + line);
-      } else {
-        while (old < recycle_.size() && recycle_[old].key < key) ++old;
-        if (old < recycle_.size() && recycle_[old].key == key) before = &recycle_[old];
-      }
-      RecycleEntry& entry = inPlace ? recycle_[k] : recycleNext_[k];
-      const PlacedShape &a = placed_[pairs_[k].first], &b = placed_[pairs_[k].second];
-      if (skipped(k)) {
-        out[k - first] = Manifold{};
-        entry = RecycleEntry{};
-        entry.key = key;
-        continue;
-      }
-      if (before) {
-        const double extent = std::max(extent_[pairs_[k].first], extent_[pairs_[k].second]);
-        if (recycledManifold(*before, a.pose, b.pose, extent, recycleDistance, out[k - first])) {
-          if (!inPlace) entry = *before;
-          recycledNow_[k] = 1;
-          continue;
-        }
-      }
-      out[k - first] = collide(a, b, margin, sideSlack);
-      entry = recycleEntry(key, a.pose, b.pose, out[k - first]);
-    }
-  };
-  // the manifolds of pairs_[first, last) into out[0, last − first)
-  auto collideRange = [&](int first, int last, Manifold* out) {
-    if (recycling) return recycleRange(first, last, out);
-    int k = first;
-    for (; k + kQuadLanes <= last; k += kQuadLanes) collideFour(k, out + (k - first));
-    for (; k < last; ++k) out[k - first] = collidePair(k);
-  };
-  // a contact written whole, its impulses those of last step's contact of the same pair (`old`
-  // walks `contacts`, sorted by pair as the pairs are, from `from`), matched while it is at hand
-  auto fill = [&](Contact& c, const std::pair<int, int>& pair, const Manifold& m, size_t& old) {
-    const int i = bodyOf(pair.first), j = bodyOf(pair.second);
-    c.a = i, c.b = j;
-    c.partA = partOf(pair.first), c.partB = partOf(pair.second);
-    c.manifold = m;
-    c.restitution = combinedRestitution(bodies[i].restitution, bodies[j].restitution);
-    c.friction = combinedFriction(bodies[i], bodies[j]);
-    c.state[0] = c.state[1] = ContactPointState{};
-    if (!warmStart) return;
-    const auto key = keyOf(pair);
-    while (old < contacts.size() && pairKey(contacts[old]) < key) ++old;
-    if (old < contacts.size() && pairKey(contacts[old]) == key) carryImpulses(contacts[old], c);
-  };
-  // whether a contact is of the proxy pair `pair`
-  auto samePair = [&](const Contact& c, const std::pair<int, int>& pair) {
-    return c.a == bodyOf(pair.first) && c.b == bodyOf(pair.second) && c.partA == partOf(pair.first) &&
-           c.partB == partOf(pair.second);
-  };
-  // the same pair's contact last step, written over with its new manifold and warm started from
-  // itself (its bodies, so its restitution and friction, are the ones it had: a body's coefficients
-  // are fixed from the start of a run)
-  auto overwrite = [](Contact& c, const Manifold& m) {
-    const CarriedPoints previous = carriedPoints(c);
-    c.manifold = m;
-    c.state[0] = c.state[1] = ContactPointState{};
-    carryImpulses(previous, c);
-  };
-  // where last step's contacts reach a pair
-  auto from = [&](const std::pair<int, int>& pair) {
-    return static_cast<size_t>(
-        std::lower_bound(contacts.begin(), contacts.end(), keyOf(pair),
-                         [](const Contact& c, const std::tuple<int, int, int, int>& key) { return pairKey(c) < key; }) -
-        contacts.begin());
-  };
-  const int pairCount = static_cast<int>(pairs_.size());
-  if (!shared) {
-    // a chunk of pairs at a time, written over the entries kept from the last call (fill writes
-    // every field), so that a step does not clear 208 bytes per contact first. While each touching
-    // pair is the one `lastStep` holds at its place (a pile that keeps its contacts), its contact is
-    // written over its own, warm started from itself: a pass over one list, not two (a third of
-    // this function's time on the 5,050-box pyramid); at the first that is not, the list so far
-    // goes to `found` and the rest is written there
+
+  // one thread: a chunk of pairs at a time, written over the entries kept from the last call (fill
+  // writes every field), so that a step does not clear 208 bytes per contact first. While each
+  // touching pair is the one `lastStep` holds at its place (a pile that keeps its contacts), its
+  // contact is written over its own, warm started from itself: a pass over one list, not two (a
+  // third of collectContacts' time on the 5,050-box pyramid); at the first that is not, the list so
+  // far goes to `found` and the rest is written there
+  bool collideInOrder(std::vector<Contact>& found, std::vector<Contact>* lastStep) const {
+    const int pairCount = static_cast<int>(w_.pairs_.size());
     constexpr int kChunk = 4 * kQuadLanes;
     Manifold chunk[kChunk];
     size_t next = 0, old = 0;
-    bool over = lastStep && warmStart;
+    bool over = lastStep && warmStart_;
     for (int first = 0; first < pairCount; first += kChunk) {
       const int last = std::min(first + kChunk, pairCount);
       collideRange(first, last, chunk);
       for (int k = first; k < last; ++k) {
         if (chunk[k - first].count == 0) continue;
         if (over) {
-          Contact* c = next < lastStep->size() ? &(*lastStep)[next] : nullptr;
-          // (the contacts a few ahead brought in while this one is written: the list is 3 MB on the
-          // 5,050-box pyramid, read once a step)
-          if (next + 8 < lastStep->size())
-            for (size_t line = 0; line < sizeof(Contact); line += 64)
-              __builtin_prefetch(reinterpret_cast<const char*>(&(*lastStep)[next + 8]) + line, 1);
-          if (c && samePair(*c, pairs_[k])) {
-            overwrite(*c, chunk[k - first]);
-            ++next;
-            continue;
-          }
+          if (overwriteAt(*lastStep, next, w_.pairs_[k], chunk[k - first])) continue;
           found.assign(lastStep->begin(), lastStep->begin() + static_cast<std::ptrdiff_t>(next));
           old = next, over = false;
         }
         if (next == found.size()) found.emplace_back();
-        fill(found[next++], pairs_[k], chunk[k - first], old);
+        fill(found[next++], w_.pairs_[k], chunk[k - first], old);
       }
     }
     if (!over) {
@@ -323,50 +195,253 @@ bool World::collectContacts(double margin, std::vector<Contact>& found, bool awa
     std::swap(found, *lastStep);
     return kept;
   }
-  // with threads, each collides its share of the pairs and counts the touching ones; then each
-  // writes its touching pairs from where the shares before it end (the same list, in order)
-  const int parts = threads->size();
-  manifolds_.resize(pairCount);
-  touching_.assign(parts + 1, 0);
-  threads->run([&](int t) {
-    const auto [first, last] = Share{t, parts}.of(0, pairCount);
-    collideRange(first, last, manifolds_.data() + first);
-    for (int k = first; k < last; ++k) touching_[t + 1] += manifolds_[k].count > 0;
-  });
-  for (int t = 0; t < parts; ++t) touching_[t + 1] += touching_[t];
-  // as many touching pairs as last step: when each is the pair last step's list holds at its place
-  // (each thread checks its share), every contact is written over its own, as on one thread
-  if (lastStep && warmStart && static_cast<size_t>(touching_[parts]) == lastStep->size()) {
-    // (one task: the threads meet after checking, and all read the same verdict)
-    differs_.assign(parts, 0);
-    threads->run([&](int t) {
+
+  // threads: each collides its share of the pairs and counts the touching ones (touching_[t + 1]),
+  // then touching_[t] is where thread t's touching pairs begin in the list
+  void collideShares(WorkerPool& threads) const {
+    const int parts = threads.size(), pairCount = static_cast<int>(w_.pairs_.size());
+    w_.manifolds_.resize(pairCount);
+    w_.touching_.assign(parts + 1, 0);
+    threads.run([&](int t) {
       const auto [first, last] = Share{t, parts}.of(0, pairCount);
-      int next = touching_[t];
-      for (int k = first; k < last && !differs_[t]; ++k)
-        if (manifolds_[k].count > 0) {
-          const Contact& c = (*lastStep)[next++];
-          differs_[t] = !samePair(c, pairs_[k]);
-        }
-      threads->sync();
-      if (std::find(differs_.begin(), differs_.end(), 1) != differs_.end()) return;
-      next = touching_[t];
-      for (int k = first; k < last; ++k)
-        if (manifolds_[k].count > 0) overwrite((*lastStep)[next++], manifolds_[k]);
+      collideRange(first, last, w_.manifolds_.data() + first);
+      for (int k = first; k < last; ++k) w_.touching_[t + 1] += w_.manifolds_[k].count > 0;
     });
-    if (std::find(differs_.begin(), differs_.end(), 1) == differs_.end()) {
-      std::swap(found, *lastStep);
-      return true;
+    for (int t = 0; t < parts; ++t) w_.touching_[t + 1] += w_.touching_[t];
+  }
+
+  // as many touching pairs as last step: when each is the pair last step's list holds at its place
+  // (each thread checks its share), every contact is written over its own, as on one thread;
+  // whether they were
+  bool overwriteShares(WorkerPool& threads, std::vector<Contact>* lastStep) const {
+    const int parts = threads.size(), pairCount = static_cast<int>(w_.pairs_.size());
+    if (!lastStep || !warmStart_ || static_cast<size_t>(w_.touching_[parts]) != lastStep->size()) return false;
+    std::vector<char>& differs = w_.differs_;
+    // (one task: the threads meet after checking, and all read the same verdict)
+    differs.assign(parts, 0);
+    threads.run([&](int t) {
+      const auto [first, last] = Share{t, parts}.of(0, pairCount);
+      int next = w_.touching_[t];
+      for (int k = first; k < last && !differs[t]; ++k)
+        if (w_.manifolds_[k].count > 0) differs[t] = !samePair((*lastStep)[next++], w_.pairs_[k]);
+      threads.sync();
+      if (std::find(differs.begin(), differs.end(), 1) != differs.end()) return;
+      next = w_.touching_[t];
+      for (int k = first; k < last; ++k)
+        if (w_.manifolds_[k].count > 0) overwrite((*lastStep)[next++], w_.manifolds_[k]);
+    });
+    return std::find(differs.begin(), differs.end(), 1) == differs.end();
+  }
+
+  // threads: each writes its touching pairs into `found` from where the shares before it end (the
+  // same list, in order; the entries kept from the last call are overwritten whole by fill)
+  void fillShares(WorkerPool& threads, std::vector<Contact>& found) const {
+    const int parts = threads.size(), pairCount = static_cast<int>(w_.pairs_.size());
+    found.resize(w_.touching_[parts]);
+    threads.run([&](int t) {
+      const auto [first, last] = Share{t, parts}.of(0, pairCount);
+      int next = w_.touching_[t];
+      size_t old = first < last && warmStart_ ? from(w_.pairs_[first]) : 0;
+      for (int k = first; k < last; ++k)
+        if (w_.manifolds_[k].count > 0) fill(found[next++], w_.pairs_[k], w_.manifolds_[k], old);
+    });
+  }
+
+ private:
+  // how many entries ahead recycleRange brings in
+  static constexpr size_t kRecycleAhead = 4;
+  // how many contacts ahead collideInOrder brings in
+  static constexpr size_t kContactsAhead = 8;
+
+  // a proxy's body and part (while every body is one shape, proxy i is body i, part 0)
+  int bodyOf(int i) const { return hasParts_ ? w_.proxies_[i].body : i; }
+  int partOf(int i) const { return hasParts_ ? w_.proxies_[i].part : 0; }
+  // a proxy pair as a contact's pairKey
+  std::tuple<int, int, int, int> keyOf(const std::pair<int, int>& p) const {
+    return {bodyOf(p.first), partOf(p.first), bodyOf(p.second), partOf(p.second)};
+  }
+  // a proxy pair as the recycled entries' key
+  static std::uint64_t keyBits(const std::pair<int, int>& p) {
+    return static_cast<std::uint64_t>(p.first) << 32 | static_cast<std::uint32_t>(p.second);
+  }
+  // the cache lines of *p brought in ahead of their use (for writing when kWrite)
+  template <int kWrite, class T>
+  static void prefetch(const T* p) {
+    for (size_t line = 0; line < sizeof(T); line += 64) __builtin_prefetch(reinterpret_cast<const char*>(p) + line, kWrite);
+  }
+
+  // proxies [first, last) placed, with their bounds grown by the margin
+  void placeRange(int first, int last) const {
+    for (int i = first; i < last; ++i) {
+      const Body& b = w_.bodies[bodyOf(i)];
+      const Shape& shape = partShape(b.shape, partOf(i));
+      place(shape, partPoseOf(b.shape, partOf(i), b.pose()), w_.placed_[i]);
+      Aabb box = bounds(w_.placed_[i]);
+      box.lower -= Vec2::Constant(margin_);
+      box.upper += Vec2::Constant(margin_);
+      w_.boxes_[i] = box;
     }
   }
-  // (the entries kept from the last call are overwritten whole by fill)
-  found.resize(touching_[parts]);
-  threads->run([&](int t) {
-    const auto [first, last] = Share{t, parts}.of(0, pairCount);
-    int next = touching_[t];
-    size_t old = first < last && warmStart ? from(pairs_[first]) : 0;
-    for (int k = first; k < last; ++k)
-      if (manifolds_[k].count > 0) fill(found[next++], pairs_[k], manifolds_[k], old);
-  });
+
+  // pairs_[k] is of a sleeping pile: not tested, its contacts kept as they were when it fell asleep
+  bool skipped(int k) const {
+    const int i = bodyOf(w_.pairs_[k].first), j = bodyOf(w_.pairs_[k].second);
+    const Sleep& sleep = w_.sleep_;
+    return awakeOnly_ && (w_.bodies[i].isStatic || sleep.asleep(i)) && (w_.bodies[j].isStatic || sleep.asleep(j));
+  }
+  // the manifold of pairs_[k], or none for a skipped pair
+  Manifold collidePair(int k) const {
+    return skipped(k) ? Manifold{}
+                      : collide(w_.placed_[w_.pairs_[k].first], w_.placed_[w_.pairs_[k].second], margin_, sideSlack_);
+  }
+  // pairs_[k, k + 4) into out[0, 4): four box pairs at once (quad_pairs.h: collide()'s manifolds to
+  // the bit), else one at a time
+  void collideFour(int k, Manifold* out) const {
+    const PlacedShape* a[kQuadLanes];
+    const PlacedShape* b[kQuadLanes];
+    bool quads = true;
+    for (int q = 0; q < kQuadLanes; ++q) {
+      a[q] = &w_.placed_[w_.pairs_[k + q].first], b[q] = &w_.placed_[w_.pairs_[k + q].second];
+      quads = quads && !skipped(k + q) && isQuadPair(*a[q], *b[q]);
+    }
+    if (quads) return collideQuadPairs(a, b, margin_, out, sideSlack_);
+    for (int q = 0; q < kQuadLanes; ++q) out[q] = collidePair(k + q);
+  }
+  // the manifolds of pairs_[first, last) into out[0, last − first)
+  void collideRange(int first, int last, Manifold* out) const {
+    if (recycling_) return recycleRange(first, last, out);
+    int k = first;
+    for (; k + kQuadLanes <= last; k += kQuadLanes) collideFour(k, out + (k - first));
+    for (; k < last; ++k) out[k - first] = collidePair(k);
+  }
+
+  // where the merge of last call's recycled entries starts for pairs_[first, ...) (both sorted by
+  // pair); in place, the entries are the pairs' own
+  size_t recycledFrom(int first, int last) const {
+    if (inPlace_ || first >= last) return 0;
+    const std::vector<RecycleEntry>& recycle = w_.recycle_;
+    return static_cast<size_t>(std::lower_bound(recycle.begin(), recycle.end(), keyBits(w_.pairs_[first]),
+                                                [](const RecycleEntry& e, std::uint64_t key) { return e.key < key; }) -
+                               recycle.begin());
+  }
+  // last call's entry of pairs_[k] (key `key`), or none: at k in place, else walked to from `old`
+  const RecycleEntry* recycledEntry(int k, std::uint64_t key, size_t& old) const {
+    const std::vector<RecycleEntry>& recycle = w_.recycle_;
+    if (inPlace_) {
+      // (the entries a few ahead brought in while this one is read: 304 bytes each, 4.5 MB on the
+      // 5,050-box pyramid, and their first read was the hot spot of recycledManifold)
+      if (static_cast<size_t>(k) + kRecycleAhead < recycle.size()) prefetch<0>(&recycle[k + kRecycleAhead]);
+      return &recycle[k];
+    }
+    while (old < recycle.size() && recycle[old].key < key) ++old;
+    return old < recycle.size() && recycle[old].key == key ? &recycle[old] : nullptr;
+  }
+  // pairs_[first, last) into out[0, last − first), each pair that touched keeping its manifold
+  // while it moved little (contact_recycle.h), the others collided
+  void recycleRange(int first, int last, Manifold* out) const {
+    size_t old = recycledFrom(first, last);
+    for (int k = first; k < last; ++k) {
+      const std::uint64_t key = keyBits(w_.pairs_[k]);
+      const RecycleEntry* before = recycledEntry(k, key, old);
+      RecycleEntry& entry = inPlace_ ? w_.recycle_[k] : w_.recycleNext_[k];
+      const PlacedShape &a = w_.placed_[w_.pairs_[k].first], &b = w_.placed_[w_.pairs_[k].second];
+      if (skipped(k)) {
+        out[k - first] = Manifold{};
+        entry = RecycleEntry{};
+        entry.key = key;
+        continue;
+      }
+      if (before) {
+        const double extent = std::max(w_.extent_[w_.pairs_[k].first], w_.extent_[w_.pairs_[k].second]);
+        if (recycledManifold(*before, a.pose, b.pose, extent, w_.recycleDistance, out[k - first])) {
+          if (!inPlace_) entry = *before;
+          w_.recycledNow_[k] = 1;
+          continue;
+        }
+      }
+      out[k - first] = collide(a, b, margin_, sideSlack_);
+      entry = recycleEntry(key, a.pose, b.pose, out[k - first]);
+    }
+  }
+
+  // a contact written whole, its impulses those of last step's contact of the same pair (`old`
+  // walks `contacts`, sorted by pair as the pairs are, from `from`), matched while it is at hand
+  void fill(Contact& c, const std::pair<int, int>& pair, const Manifold& m, size_t& old) const {
+    const int i = bodyOf(pair.first), j = bodyOf(pair.second);
+    c.a = i, c.b = j;
+    c.partA = partOf(pair.first), c.partB = partOf(pair.second);
+    c.manifold = m;
+    c.restitution = combinedRestitution(w_.bodies[i].restitution, w_.bodies[j].restitution);
+    c.friction = combinedFriction(w_.bodies[i], w_.bodies[j]);
+    c.state[0] = c.state[1] = ContactPointState{};
+    if (!warmStart_) return;
+    const std::vector<Contact>& contacts = w_.contacts;
+    const auto key = keyOf(pair);
+    while (old < contacts.size() && pairKey(contacts[old]) < key) ++old;
+    if (old < contacts.size() && pairKey(contacts[old]) == key) carryImpulses(contacts[old], c);
+  }
+  // where last step's contacts reach a pair
+  size_t from(const std::pair<int, int>& pair) const {
+    const std::vector<Contact>& contacts = w_.contacts;
+    return static_cast<size_t>(
+        std::lower_bound(contacts.begin(), contacts.end(), keyOf(pair),
+                         [](const Contact& c, const std::tuple<int, int, int, int>& key) { return pairKey(c) < key; }) -
+        contacts.begin());
+  }
+  // whether a contact is of the proxy pair `pair`
+  bool samePair(const Contact& c, const std::pair<int, int>& pair) const {
+    return c.a == bodyOf(pair.first) && c.b == bodyOf(pair.second) && c.partA == partOf(pair.first) &&
+           c.partB == partOf(pair.second);
+  }
+  // the same pair's contact last step, written over with its new manifold and warm started from
+  // itself (its bodies, so its restitution and friction, are the ones it had: a body's
+  // coefficients are fixed from the start of a run)
+  static void overwrite(Contact& c, const Manifold& m) {
+    const CarriedPoints previous = carriedPoints(c);
+    c.manifold = m;
+    c.state[0] = c.state[1] = ContactPointState{};
+    carryImpulses(previous, c);
+  }
+  // lastStep[next] written over with `pair`'s manifold when it is that pair's contact (then next
+  // moves on); whether it was
+  bool overwriteAt(std::vector<Contact>& lastStep, size_t& next, const std::pair<int, int>& pair, const Manifold& m) const {
+    Contact* c = next < lastStep.size() ? &lastStep[next] : nullptr;
+    // (the contacts a few ahead brought in while this one is written: the list is 3 MB on the
+    // 5,050-box pyramid, read once a step)
+    if (next + kContactsAhead < lastStep.size()) prefetch<1>(&lastStep[next + kContactsAhead]);
+    if (!c || !samePair(*c, pair)) return false;
+    overwrite(*c, m);
+    ++next;
+    return true;
+  }
+
+  const World& w_;
+  const double margin_, sideSlack_;
+  const bool awakeOnly_, warmStart_;
+  const bool hasParts_;  // some body is of parts: proxies_ says each proxy's body and part
+  const int n_;          // proxies
+  bool recycling_ = false, inPlace_ = false;
+};
+
+bool World::collectContacts(double margin, std::vector<Contact>& found, bool awakeOnly, bool warmStart, WorkerPool* threads,
+                            std::vector<Contact>* lastStep, double sideSlack) const {
+  // (a body's shape is fixed from its making: only bodies added since ask for new proxies)
+  if (proxiesFor_ != bodies.size()) makeProxies();
+  ContactPass pass(*this, margin, sideSlack, awakeOnly, warmStart);
+  WorkerPool* const shared = threads && threads->size() > 1 ? threads : nullptr;
+  // the proxies where they are, and the broad phase's pairs of them
+  pass.placeProxies(shared);
+  pass.findPairs();
+  // soft_step: which pairs may keep last call's manifold
+  pass.startRecycling();
+  // the narrow phase, each touching pair's contact written over its own last step's where it can
+  if (!shared) return pass.collideInOrder(found, lastStep);
+  pass.collideShares(*shared);
+  if (pass.overwriteShares(*shared, lastStep)) {
+    std::swap(found, *lastStep);
+    return true;
+  }
+  pass.fillShares(*shared, found);
   return false;
 }
 
@@ -374,12 +449,7 @@ long World::recycledContacts() const { return std::count(recycledNow_.begin(), r
 
 void World::start() {
   if (started_) return;
-  pending_ = events;
-  std::stable_sort(pending_.begin(), pending_.end(),
-                   [](const ImpulseEvent& a, const ImpulseEvent& b) { return a.time < b.time; });
-  std::vector<double> instants = forces.breakpoints();
-  for (const ImpulseEvent& e : pending_) instants.push_back(e.time);
-  grid_ = StepGrid(dt, std::move(instants));
+  timeline_ = Timeline<ImpulseEvent>(dt, events, forces.breakpoints());
   measureScene();
   if (collisions == CollisionMethod::Auto) chooseMethod();
   method_ = OwnedMethod(makeMethod(collisions, precision));
@@ -430,35 +500,18 @@ std::unique_ptr<Method> makeMethod(CollisionMethod method, Precision precision) 
 
 void World::advanceTo(double tEnd, StepObserver* observer) {
   start();
-  applyDueEvents(observer);
-  while (time < tEnd && !grid_.same(time, tEnd)) stepTo(grid_.nextStop(time, tEnd), tEnd, observer);
-  time = std::max(time, tEnd);
+  timeline_.advanceTo(*this, tEnd, observer);
 }
 
 void World::advanceWithin(double t, double tEnd, StepObserver* observer) {
   start();
-  applyDueEvents(observer);
-  while (time < tEnd && !grid_.same(time, tEnd)) {
-    const double stop = grid_.nextStop(time, tEnd);
-    if (stop > t && !grid_.same(stop, t)) break;
-    stepTo(stop, tEnd, observer);
-  }
+  timeline_.advanceWithin(*this, t, tEnd, observer);
 }
 
-// one step from now to `stop` on the way to tEnd, the events due there applied
-void World::stepTo(double stop, double tEnd, StepObserver* observer) {
-  // land on the grid point or tEnd itself when the stop is one of them within round-off
-  const double end = grid_.arrive(stop, tEnd);
-  step(stop, end);
-  time = end;
-  if (observer) observer->afterStep(*this);
-  applyDueEvents(observer);
-}
-
-// one step of size h by the collision method (methods.h), and what is the world's around it:
-// sleeping, `auto`'s switch and the finiteness check. Under `auto`, when the event method finds
-// impacts piling up (a stack or a pile forming), the step is done again from where it began by
-// the stack solver, which goes on from there.
+// the timeline's step (timeline.h): one step of size h by the collision method (methods.h), and
+// what is the world's around it: sleeping, `auto`'s switch and the finiteness check. Under
+// `auto`, when the event method finds impacts piling up (a stack or a pile forming), the step is
+// done again from where it began by the stack solver, which goes on from there.
 void World::step(double stop, double end) {
   const double h = stop - time;
   const TimeStep thisStep{time, h};
@@ -489,6 +542,7 @@ void World::step(double stop, double end) {
   if (sleeping()) sleep_.afterStep(bodies, contacts, forces, thisStep.midpoint(), h);
   // stop at the first non-finite state rather than carry NaN forward
   checkFinite(time + h);
+  time = end;
 }
 
 // the stack solver from why.time on: the start of the step in which the impacts piled up, or the
@@ -503,15 +557,12 @@ void World::switchToStackSolver(const MethodSwitch& why) {
   method_->start(*this);
 }
 
-void World::applyDueEvents(StepObserver* observer) {
-  while (nextEvent_ < pending_.size() && (pending_[nextEvent_].time < time || grid_.same(pending_[nextEvent_].time, time))) {
-    const ImpulseEvent& e = pending_[nextEvent_++];
-    if (sleeping()) sleep_.wake(e.body, contacts);
-    const Body& b = bodies[e.body];
-    const Vec2 r = e.pointInWorld ? e.point : b.pose().toWorld(e.point);
-    applyImpulse(e.body, r, e.impulse);
-    if (observer) observer->afterEvent(*this, e);
-  }
+// the timeline's event (timeline.h): the impulse now, its body's island woken first
+void World::applyEvent(const ImpulseEvent& e) {
+  if (sleeping()) sleep_.wake(e.body, contacts);
+  const Body& b = bodies[e.body];
+  const Vec2 r = e.pointInWorld ? e.point : b.pose().toWorld(e.point);
+  applyImpulse(e.body, r, e.impulse);
 }
 
 // only the stack solvers sleep: the event method's impacts and the isolated impulses find their

@@ -1,6 +1,6 @@
 // The world: bodies, forces, timed impulses and contacts, advanced on a fixed step grid that is
-// split exactly at every event and force switch (notes: "Dynamics of a free body", "Impulses",
-// "Collisions").
+// split exactly at every event and force switch (the timeline it shares with the 3D world,
+// sim/core/timeline.h; notes: "Dynamics of a free body", "Impulses", "Collisions").
 #pragma once
 
 #include <optional>
@@ -14,7 +14,7 @@
 #include "sim/core/forces.h"
 #include "sim/core/integrators.h"
 #include "sim/core/settings.h"
-#include "sim/core/step_grid.h"
+#include "sim/core/timeline.h"
 #include "sim/world/contact.h"
 #include "sim/world/contact_recycle.h"
 #include "sim/world/contact_watch.h"
@@ -31,7 +31,7 @@ using sim::core::ForceSet;
 using sim::core::Integrator;
 using sim::core::Rates;
 using sim::core::States;
-using sim::core::StepGrid;
+using sim::core::Timeline;
 using sim::core::Vec2;
 namespace settings = sim::core::settings;
 
@@ -166,11 +166,13 @@ class World {
  private:
   void measureScene();
   void chooseMethod();
-  void stepTo(double stop, double tEnd, StepObserver* observer);
-  // one step from now to `stop` (the time it arrives at: `end`)
+  // the timeline's two hooks: one step from now to `stop`, arriving at `end` (then the time), and
+  // an event's impulse applied now
+  template <class>
+  friend class sim::core::Timeline;
   void step(double stop, double end);
+  void applyEvent(const ImpulseEvent& e);
   void switchToStackSolver(const MethodSwitch& why);
-  void applyDueEvents(StepObserver* observer);
   void checkFinite(double t) const;
   bool sleeping() const;
   // the manifolds into `found` (its entries overwritten, its storage kept), without the sleeping pairs when
@@ -180,12 +182,12 @@ class World {
   // Returns whether the pairs were lastStep's, each written over its own. `sideSlack` as collide()'s.
   bool collectContacts(double margin, std::vector<Contact>& found, bool awakeOnly, bool warmStart, WorkerPool* threads = nullptr,
                        std::vector<Contact>* lastStep = nullptr, double sideSlack = 0.0) const;
+  // collectContacts' stages (world.cpp)
+  class ContactPass;
 
   bool started_ = false;
   bool contactPairsKept_ = false;
-  std::vector<ImpulseEvent> pending_;  // sorted by time
-  size_t nextEvent_ = 0;
-  StepGrid grid_;  // steps of dt, cut at the events and force switches
+  Timeline<ImpulseEvent> timeline_;  // steps of dt cut at the events and force switches, and the events due
   double sceneSize_ = 1.0;
   Sleep sleep_;         // the islands asleep and the bodies' time at rest
   OwnedMethod method_;  // the unit of `collisions`, made by start()

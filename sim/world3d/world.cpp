@@ -23,12 +23,7 @@ ContactPersists::ContactPersists(double t, int a_, int b_, const std::string& wh
 void World::start() {
   if (started_) return;
   if (!(dt > 0.0) || !std::isfinite(dt)) throw std::invalid_argument("the time step dt must be a positive finite number");
-  pending_ = events;
-  std::stable_sort(pending_.begin(), pending_.end(),
-                   [](const ImpulseEvent& a, const ImpulseEvent& b) { return a.time < b.time; });
-  std::vector<double> instants = forces.breakpoints();
-  for (const ImpulseEvent& e : pending_) instants.push_back(e.time);
-  grid_ = core::StepGrid(dt, std::move(instants));
+  timeline_ = core::Timeline<ImpulseEvent>(dt, events, forces.breakpoints());
   // the scale of the event method's tolerances: the bodies' extent at the start
   double extent = 0.0;
   for (const Body& b : bodies) extent = std::max(extent, 2.0 * boundingRadius(b.shape));
@@ -143,43 +138,27 @@ std::vector<Contact3> World::findContacts(double margin, const States* y) const 
 
 void World::advanceTo(double tEnd, StepObserver* observer) {
   start();
-  applyDueEvents(observer);
-  while (time < tEnd && !grid_.same(time, tEnd)) stepTo(grid_.nextStop(time, tEnd), tEnd, observer);
-  time = std::max(time, tEnd);
+  timeline_.advanceTo(*this, tEnd, observer);
 }
 
 void World::advanceWithin(double t, double tEnd, StepObserver* observer) {
   start();
-  applyDueEvents(observer);
-  while (time < tEnd && !grid_.same(time, tEnd)) {
-    const double stop = grid_.nextStop(time, tEnd);
-    if (stop > t && !grid_.same(stop, t)) break;
-    stepTo(stop, tEnd, observer);
-  }
+  timeline_.advanceWithin(*this, t, tEnd, observer);
 }
 
-// one step from now to `stop` on the way to tEnd, the events due there applied
-void World::stepTo(double stop, double tEnd, StepObserver* observer) {
-  const double end = grid_.arrive(stop, tEnd);
-  step(time, stop - time, end);
-  time = end;
-  // stop at the first non-finite state rather than carry NaN forward
-  checkFinite();
-  if (observer) observer->afterStep(*this);
-  applyDueEvents(observer);
-}
-
-// one step by the collision method. Under `auto`, a contact the event method cannot carry on
-// (ContactPersists) makes sequential redo the step from where it began, and slow impacts repeated
-// at one pair (the rattle watch) hand the run to it from the step's end
-void World::step(double start, double h, double end) {
+// the timeline's step (timeline.h): one step by the collision method, then the finiteness check.
+// Under `auto`, a contact the event method cannot carry on (ContactPersists) makes sequential redo
+// the step from where it began, and slow impacts repeated at one pair (the rattle watch) hand the
+// run to it from the step's end
+void World::step(double stop, double end) {
+  const double stepStart = time, h = stop - time;
   if (!watching_) {
-    method_->step(*this, start, h);
+    method_->step(*this, stepStart, h);
   } else {
     const States from = states();
     const size_t impactsBefore = impacts.size();
     try {
-      method_->step(*this, start, h);
+      method_->step(*this, stepStart, h);
       for (size_t k = impactsBefore; k < impacts.size(); ++k) {
         const ImpactRecord3& r = impacts[k];
         if (!rattle_.impact(r.a, r.b, r.t, r.vnBefore, core::settings::kTouchingTolerance * sceneSize_)) continue;
@@ -189,11 +168,14 @@ void World::step(double start, double h, double end) {
     } catch (const ContactPersists& p) {
       setStates(from);
       impacts.resize(impactsBefore);
-      switchToSequential({start, p.a, p.b, core::Persistence::Rested});
-      method_->step(*this, start, h);
+      switchToSequential({stepStart, p.a, p.b, core::Persistence::Rested});
+      method_->step(*this, stepStart, h);
     }
   }
   ++steps;
+  time = end;
+  // stop at the first non-finite state rather than carry NaN forward
+  checkFinite();
 }
 
 void World::switchToSequential(const MethodSwitch& why) {
@@ -206,14 +188,10 @@ void World::switchToSequential(const MethodSwitch& why) {
   method_->start(*this);
 }
 
-void World::applyDueEvents(StepObserver* observer) {
-  // every event up to now: events before the start of the run are applied at its start
-  while (nextEvent_ < pending_.size() && (pending_[nextEvent_].time < time || grid_.same(pending_[nextEvent_].time, time))) {
-    const ImpulseEvent& e = pending_[nextEvent_++];
-    Body& b = bodies[e.body];
-    b.applyImpulse(e.pointInWorld ? e.point : b.toWorld(e.point), e.impulse);
-    if (observer) observer->afterEvent(*this, e);
-  }
+// the timeline's event (timeline.h): the impulse now
+void World::applyEvent(const ImpulseEvent& e) {
+  Body& b = bodies[e.body];
+  b.applyImpulse(e.pointInWorld ? e.point : b.toWorld(e.point), e.impulse);
 }
 
 void World::checkFinite() const {

@@ -1,7 +1,8 @@
 // The 3D world: rigid bodies, static planes, forces and timed impulses, advanced by one integrator
-// on a fixed step grid split exactly at every event and force switch, as the 2D world (notes:
-// "Dynamics of a free body", "Impulses", "Collisions"; the 3D half of "Representing rigid body
-// state"). The collision method (methods3d.h) decides how a step answers touching bodies.
+// on a fixed step grid split exactly at every event and force switch, on the timeline the 2D world
+// uses too (sim/core/timeline.h; notes: "Dynamics of a free body", "Impulses", "Collisions"; the
+// 3D half of "Representing rigid body state"). The collision method (methods3d.h) decides how a
+// step answers touching bodies.
 #pragma once
 
 #include <memory>
@@ -12,7 +13,7 @@
 #include "sim/core/collision_methods.h"
 #include "sim/core/rattle_watch.h"
 #include "sim/core/settings.h"
-#include "sim/core/step_grid.h"
+#include "sim/core/timeline.h"
 #include "sim/world3d/contact3d.h"
 #include "sim/world3d/integrators.h"
 #include "sim/world3d/methods3d.h"
@@ -111,16 +112,17 @@ class World {
 
  private:
   void chooseMethod();
-  void stepTo(double stop, double tEnd, StepObserver* observer);
-  void step(double start, double h, double end);
+  // the timeline's two hooks: one step from now to `stop`, arriving at `end` (then the time), and
+  // an event's impulse applied now
+  template <class>
+  friend class sim::core::Timeline;
+  void step(double stop, double end);
+  void applyEvent(const ImpulseEvent& e);
   void switchToSequential(const MethodSwitch& why);
-  void applyDueEvents(StepObserver* observer);
   void checkFinite() const;
 
   bool started_ = false;
-  sim::core::StepGrid grid_;
-  std::vector<ImpulseEvent> pending_;  // sorted by time
-  size_t nextEvent_ = 0;
+  sim::core::Timeline<ImpulseEvent> timeline_;  // steps of dt cut at the events and force switches, and the events due
   double sceneSize_ = 1.0;
   OwnedMethod3 method_;    // the unit of `collisions`, made by start()
   bool watching_ = false;  // `auto` chose event: a contact that persists switches to sequential

@@ -42,73 +42,11 @@ class SceneReader : public Reader {
     // sceneSourceText has read `dimensions`; a 3D scene's model is sim/yaml3d's to read
     if (source.dimensions != 2)
       fail(root["dimensions"], "this reads 2D scenes, and this one is 3D (dimensions: 3); read it with sim::yaml3d::readModel");
-    s.name = root["name"] ? text(root["name"], "name") : source.stem;
-    if (const std::string fault = pathNameFault(s.name); !fault.empty())
-      fail(root["name"] ? root["name"] : root, "the scene's name '" + shownName(s.name) + "' names its output files but " +
-                                                   fault + "; give 'name:' letters, digits, '-' or '_'");
-    optional(root, "description", s.description, &Reader::text);
-    optional(root, "duration", s.duration, &Reader::positive);
-    if (const YAML::Node w = root["world"]) {
-      checkKeys(w, {"gravity", "restitution", "friction"}, "world");
-      optional(w, "gravity", s.gravity, &Reader::vec2);
-      if (w["restitution"]) s.restitution = restitution(w["restitution"]);
-      optional(w, "friction", s.friction, &Reader::nonNegative);
-    }
-    if (const YAML::Node sim = root["sim"]) {
-      checkKeys(sim,
-                {"integrator", "dt", "collisions", "iterations", "position_iterations", "substeps", "contact_hertz", "threads",
-                 "precision", "sleep", "recycle", "max_steps", "max_bodies", "max_vertices", "max_entries", "max_parts"},
-                "sim");
-      optional(sim, "max_steps", s.maxSteps, &Reader::positive);
-      readSizeLimits(*this, sim, limits_);
-      if (sim["collisions"]) {
-        s.collisions = named(sim["collisions"], "collisions", collisionMethodFromName, kCollisionMethodNames.list());
-        s.collisionsLoc = place(sim["collisions"]);
-      }
-      if (sim["iterations"]) s.velocityIterations = wholeNumber(sim["iterations"], "iterations", 1, 1000);
-      if (sim["position_iterations"])
-        s.positionIterations = wholeNumber(sim["position_iterations"], "position_iterations", 0, 1000);
-      if (sim["substeps"]) s.substeps = wholeNumber(sim["substeps"], "substeps", 1, 1000);
-      optional(sim, "contact_hertz", s.contactHertz, &Reader::positive);
-      optional(sim, "sleep", s.sleep, &Reader::boolean);
-      if (s.sleep && (s.collisions == CollisionMethod::None || s.collisions == CollisionMethod::Event ||
-                      s.collisions == CollisionMethod::Isolated))
-        fail(sim["sleep"], "'sleep: true' puts resting islands of the stack solvers to sleep, and 'collisions: " +
-                               std::string(collisionMethodName(s.collisions)) +
-                               "' has none; use 'collisions: sequential', 'soft_step' or 'auto', or drop 'sleep'");
-      if (const YAML::Node recycle = sim["recycle"]) {
-        // on or off, or on with its distance: {distance: m}
-        if (recycle.IsMap()) {
-          checkKeys(recycle, {"distance"}, "recycle");
-          s.recycleDistance = positive(required(recycle, "distance", "'recycle'"), "distance");
-        } else {
-          s.recycleDistance = boolean(recycle, "recycle") ? sim::core::settings::kRecycleDistance : 0.0;
-        }
-        if (s.recycleDistance > 0.0 && s.collisions != CollisionMethod::SoftStep)
-          fail(recycle, "'recycle' keeps the manifolds of soft_step's resting pairs, and 'collisions: " +
-                            std::string(collisionMethodName(s.collisions)) +
-                            "' is not soft_step; use 'collisions: soft_step' or drop 'recycle'");
-      }
-      if (sim["threads"]) s.threads = wholeNumber(sim["threads"], "threads", 1, sim::core::settings::kMaxThreads);
-      if (sim["precision"]) s.precision = named(sim["precision"], "precision", precisionFromName, kPrecisionNames.list());
-      if (sim["integrator"]) {
-        s.integrator = named(sim["integrator"], "integrator", integratorFromName, kIntegratorNames.list());
-        s.integratorLoc = place(sim["integrator"]);
-      }
-      optional(sim, "dt", s.dt, &Reader::positive);
-    }
-    const YAML::Node stepsAt = root["sim"] && root["sim"]["dt"] ? root["sim"]["dt"] : root["duration"] ? root["duration"] : root;
-    s.stepsLoc = {stepsAt.Mark().line + 1, stepsAt.Mark().column + 1};
-    if (const std::string over = sim::core::dtOverDuration(s.dt, s.duration); !over.empty())
-      fail(stepsAt, over + "; choose a dt of at most the duration (a hundredth of it or less to see any motion)");
-    if (const std::string over = stepsOverLimit(s, s.duration); !over.empty())
-      fail(stepsAt, over +
-                        "; raise dt, shorten duration, or, if the scene needs that many, raise the limit with "
-                        "'sim: {max_steps: N}'");
-    const YAML::Node bodies = required(root, "bodies", "a scene");
-    if (!bodies.IsSequence() || bodies.size() == 0) fail(bodies, "'bodies' must be a list of at least one body");
-    checkBodyCount(*this, bodies, limits_);
-    for (const YAML::Node& b : bodies) s.bodies.push_back(readBody(b));
+    readHeading(root, source, s);
+    if (const YAML::Node w = root["world"]) readWorld(w, s);
+    if (const YAML::Node sim = root["sim"]) readSim(sim, s);
+    checkStepCount(root, s);
+    readBodies(root, s);
     // forces and events are read alike in 2D and 3D (sim/yaml/force_reader.h) but for the vector
     size_t entries = 0;
     sim::yaml::readForcesAndEvents(
@@ -122,6 +60,93 @@ class SceneReader : public Reader {
   }
 
  private:
+  // name, description and duration; the name names output files, so it must make a path
+  void readHeading(const YAML::Node& root, const SceneSource& source, SceneDef& s) {
+    s.name = root["name"] ? text(root["name"], "name") : source.stem;
+    if (const std::string fault = pathNameFault(s.name); !fault.empty())
+      fail(root["name"] ? root["name"] : root, "the scene's name '" + shownName(s.name) + "' names its output files but " +
+                                                   fault + "; give 'name:' letters, digits, '-' or '_'");
+    optional(root, "description", s.description, &Reader::text);
+    optional(root, "duration", s.duration, &Reader::positive);
+  }
+
+  // world: gravity and the default restitution and friction
+  void readWorld(const YAML::Node& w, SceneDef& s) {
+    checkKeys(w, {"gravity", "restitution", "friction"}, "world");
+    optional(w, "gravity", s.gravity, &Reader::vec2);
+    if (w["restitution"]) s.restitution = restitution(w["restitution"]);
+    optional(w, "friction", s.friction, &Reader::nonNegative);
+  }
+
+  // sim: the method, its iterations and options, the integrator and dt; an option that the chosen
+  // method does not have is refused at its key
+  void readSim(const YAML::Node& sim, SceneDef& s) {
+    checkKeys(sim,
+              {"integrator", "dt", "collisions", "iterations", "position_iterations", "substeps", "contact_hertz", "threads",
+               "precision", "sleep", "recycle", "max_steps", "max_bodies", "max_vertices", "max_entries", "max_parts"},
+              "sim");
+    optional(sim, "max_steps", s.maxSteps, &Reader::positive);
+    readSizeLimits(*this, sim, limits_);
+    if (sim["collisions"]) {
+      s.collisions = named(sim["collisions"], "collisions", collisionMethodFromName, kCollisionMethodNames.list());
+      s.collisionsLoc = place(sim["collisions"]);
+    }
+    if (sim["iterations"]) s.velocityIterations = wholeNumber(sim["iterations"], "iterations", 1, 1000);
+    if (sim["position_iterations"])
+      s.positionIterations = wholeNumber(sim["position_iterations"], "position_iterations", 0, 1000);
+    if (sim["substeps"]) s.substeps = wholeNumber(sim["substeps"], "substeps", 1, 1000);
+    optional(sim, "contact_hertz", s.contactHertz, &Reader::positive);
+    optional(sim, "sleep", s.sleep, &Reader::boolean);
+    if (s.sleep && (s.collisions == CollisionMethod::None || s.collisions == CollisionMethod::Event ||
+                    s.collisions == CollisionMethod::Isolated))
+      fail(sim["sleep"], "'sleep: true' puts resting islands of the stack solvers to sleep, and 'collisions: " +
+                             std::string(collisionMethodName(s.collisions)) +
+                             "' has none; use 'collisions: sequential', 'soft_step' or 'auto', or drop 'sleep'");
+    if (const YAML::Node recycle = sim["recycle"]) readRecycle(recycle, s);
+    if (sim["threads"]) s.threads = wholeNumber(sim["threads"], "threads", 1, sim::core::settings::kMaxThreads);
+    if (sim["precision"]) s.precision = named(sim["precision"], "precision", precisionFromName, kPrecisionNames.list());
+    if (sim["integrator"]) {
+      s.integrator = named(sim["integrator"], "integrator", integratorFromName, kIntegratorNames.list());
+      s.integratorLoc = place(sim["integrator"]);
+    }
+    optional(sim, "dt", s.dt, &Reader::positive);
+  }
+
+  // sim: {recycle: ...}: on or off, or on with its distance: {distance: m}; soft_step's alone
+  void readRecycle(const YAML::Node& recycle, SceneDef& s) {
+    if (recycle.IsMap()) {
+      checkKeys(recycle, {"distance"}, "recycle");
+      s.recycleDistance = positive(required(recycle, "distance", "'recycle'"), "distance");
+    } else {
+      s.recycleDistance = boolean(recycle, "recycle") ? sim::core::settings::kRecycleDistance : 0.0;
+    }
+    if (s.recycleDistance > 0.0 && s.collisions != CollisionMethod::SoftStep)
+      fail(recycle, "'recycle' keeps the manifolds of soft_step's resting pairs, and 'collisions: " +
+                        std::string(collisionMethodName(s.collisions)) +
+                        "' is not soft_step; use 'collisions: soft_step' or drop 'recycle'");
+  }
+
+  // the run's steps, refused where they are set (dt, else duration) when dt exceeds the duration
+  // or the steps exceed max_steps
+  void checkStepCount(const YAML::Node& root, SceneDef& s) {
+    const YAML::Node stepsAt = root["sim"] && root["sim"]["dt"] ? root["sim"]["dt"] : root["duration"] ? root["duration"] : root;
+    s.stepsLoc = {stepsAt.Mark().line + 1, stepsAt.Mark().column + 1};
+    if (const std::string over = sim::core::dtOverDuration(s.dt, s.duration); !over.empty())
+      fail(stepsAt, over + "; choose a dt of at most the duration (a hundredth of it or less to see any motion)");
+    if (const std::string over = stepsOverLimit(s, s.duration); !over.empty())
+      fail(stepsAt, over +
+                        "; raise dt, shorten duration, or, if the scene needs that many, raise the limit with "
+                        "'sim: {max_steps: N}'");
+  }
+
+  // bodies: a list of at least one, within max_bodies
+  void readBodies(const YAML::Node& root, SceneDef& s) {
+    const YAML::Node bodies = required(root, "bodies", "a scene");
+    if (!bodies.IsSequence() || bodies.size() == 0) fail(bodies, "'bodies' must be a list of at least one body");
+    checkBodyCount(*this, bodies, limits_);
+    for (const YAML::Node& b : bodies) s.bodies.push_back(readBody(b));
+  }
+
   Shape readShape(const YAML::Node& n, BodyDef& body) {
     checkKeys(n, {"box", "polygon", "circle", "plane", "compound"}, "shape");
     if (n.size() != 1)
