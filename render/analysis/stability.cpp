@@ -231,7 +231,7 @@ StabilityResult searchFewest(double start, double limit, const std::function<boo
 std::string describeFailure(const Study& study, const StabilityResult& r) {
   const sim::scene::SceneDef& def = study.model;
   return describeBoundary(std::string(sim::core::integratorName(def.integrator)) + " + " +
-                              std::string(sim::world::collisionMethodName(def.collisions)),
+                              std::string(sim::core::collisionMethodName(def.collisions)),
                           kParameterNames.name(study.stability.parameter), r, def.maxSteps);
 }
 

@@ -36,7 +36,7 @@ sim::scene::SceneDef withMethod(sim::scene::SceneDef def, const SweepCase& m) {
 bool hasCollisions(const sim::scene::SceneDef& def) {
   sim::world::World w = sim::scene::buildWorld(def);
   w.start();
-  return w.collisions != sim::world::CollisionMethod::None;
+  return w.collisions != sim::core::CollisionMethod::None;
 }
 
 }  // namespace
@@ -47,7 +47,7 @@ SweepReference sweepReference(const sim::scene::SceneDef& def, double smallestDt
   std::string name = "rk4 at dt " + formatNumber(ref.dt);
   // the exact event method is the reference where bodies collide and it can run the scene
   if (hasCollisions(def)) {
-    ref.collisions = sim::world::CollisionMethod::Event;
+    ref.collisions = sim::core::CollisionMethod::Event;
     try {
       sim::world::World w = sim::scene::buildWorld(withMethod(def, ref));
       InterruptCheck stop;
@@ -94,7 +94,7 @@ SweepRow runSweepCase(const sim::scene::SceneDef& scene, const SweepCase& method
   } else if (reference.name == "expect") {
     sim::world::World again = sim::scene::buildWorld(def);
     InterruptCheck stop;
-    for (const sim::scene::CheckResult& r : sim::scene::runExpects(def, again, &stop)) row.error = std::max(row.error, r.error);
+    for (const sim::core::CheckResult& r : sim::scene::runExpects(def, again, &stop)) row.error = std::max(row.error, r.error);
   } else {
     for (size_t i = 0; i < w.bodies.size(); ++i) {
       const sim::core::Body& b = w.bodies[i];

@@ -11,7 +11,7 @@ namespace render::analysis {
 
 struct SweepCase {
   sim::core::Integrator integrator = sim::core::Integrator::SymplecticEuler;
-  sim::world::CollisionMethod collisions = sim::world::CollisionMethod::Auto;
+  sim::core::CollisionMethod collisions = sim::core::CollisionMethod::Auto;
   double dt = 0.0;
   int iterations = 0;  // sequential velocity iterations
   int substeps = 0;    // soft_step substeps (0: the scene's)

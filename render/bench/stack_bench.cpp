@@ -147,7 +147,7 @@ RunResult run(StackRun& engine, const char* name, const bench::StackLayout& layo
 // --- rigidreel, through a scene definition and World's public members ---
 
 sim::scene::SceneDef sceneOf(const bench::StackLayout& layout, const bench::StackSettings& s, const RunOptions& o,
-                             sim::world::CollisionMethod method, sim::world::Precision precision, double recycle) {
+                             sim::core::CollisionMethod method, sim::world::Precision precision, double recycle) {
   sim::scene::SceneDef def;
   def.name = layout.name;
   def.gravity = {0.0, s.gravity};
@@ -191,7 +191,7 @@ sim::scene::SceneDef sceneOf(const bench::StackLayout& layout, const bench::Stac
 
 class OurRun : public StackRun {
  public:
-  OurRun(const bench::StackLayout& layout, const bench::StackSettings& s, const RunOptions& o, sim::world::CollisionMethod method,
+  OurRun(const bench::StackLayout& layout, const bench::StackSettings& s, const RunOptions& o, sim::core::CollisionMethod method,
          sim::world::Precision precision, double recycle = 0.0)
       : world_(sim::scene::buildWorld(sceneOf(layout, s, o, method, precision, recycle))), dt_(s.dt) {
     world_.simdWidth = o.simdWidth;
@@ -421,10 +421,10 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   options.box2dOuterSkin = skin == "outer";
   options.ourGrowth = ourSkin == "core" ? kBox2dPolygonRadius : 0.0;
-  std::vector<sim::world::CollisionMethod> ourMethods;
+  std::vector<sim::core::CollisionMethod> ourMethods;
   for (const std::string& name : methods) {
-    const std::optional<sim::world::CollisionMethod> m = sim::world::collisionMethodFromName(name);
-    if (!m || *m == sim::world::CollisionMethod::Auto) {
+    const std::optional<sim::core::CollisionMethod> m = sim::core::collisionMethodFromName(name);
+    if (!m || *m == sim::core::CollisionMethod::Auto) {
       std::cerr << "--method: unknown collision method '" << name << "'\n";
       return 2;
     }
@@ -545,11 +545,11 @@ int main(int argc, char** argv) {
       else std::fprintf(stderr, "--box2d3: %s/b3_pyramid did not run\n", box2d3Dir.c_str());
     }
     // soft_step once per --precision and --recycle, the others in doubles
-    for (sim::world::CollisionMethod method : ourMethods)
+    for (sim::core::CollisionMethod method : ourMethods)
       for (const std::string& precision : precisions)
         for (const std::string& recycle : recycles)
           for (int threads : threadCounts) {
-            const bool soft = method == sim::world::CollisionMethod::SoftStep;
+            const bool soft = method == sim::core::CollisionMethod::SoftStep;
             if (!soft && (precision != precisions.front() || recycle != recycles.front() || threads != threadCounts.front()))
               continue;
             RunOptions withThreads = options;
@@ -558,7 +558,7 @@ int main(int argc, char** argv) {
             const bool recycled = soft && recycle == "on";
             // appended piece by piece: g++ 12 warns of overlapping copies in ":" + std::to_string(...)
             // (GCC bug 105329, a false positive)
-            std::string name(sim::world::collisionMethodName(method));
+            std::string name(sim::core::collisionMethodName(method));
             if (p == sim::world::Precision::Float) name += ":float";
             if (recycled) name += ":recycle";
             if (withThreads.threads > 1) name += ':' + std::to_string(withThreads.threads) + 't';

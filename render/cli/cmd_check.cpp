@@ -104,8 +104,8 @@ void reportSleep(const sim::world::World& w, std::ostream& out) {
   long dynamic = 0;
   for (const sim::core::Body& b : w.bodies) dynamic += !b.isStatic;
   out << "  sleep: on; " << w.sleepingBodies() << " of " << dynamic << " dynamic bodies asleep at the end";
-  if (w.collisions != sim::world::CollisionMethod::Sequential && w.collisions != sim::world::CollisionMethod::SoftStep)
-    out << " (only the stack solvers sleep; " << sim::world::collisionMethodName(w.collisions) << " does not)";
+  if (w.collisions != sim::core::CollisionMethod::Sequential && w.collisions != sim::core::CollisionMethod::SoftStep)
+    out << " (only the stack solvers sleep; " << sim::core::collisionMethodName(w.collisions) << " does not)";
   out << '\n';
 }
 
@@ -113,8 +113,8 @@ void reportSleep(const sim::world::World& w, std::ostream& out) {
 void reportPrecision(const sim::world::World& w, std::ostream& out) {
   if (w.precision == sim::world::Precision::Double) return;
   out << "  precision: " << sim::world::precisionName(w.precision) << " (soft_step's contact solve";
-  if (w.collisions != sim::world::CollisionMethod::SoftStep)
-    out << "; " << sim::world::collisionMethodName(w.collisions) << " solves in doubles";
+  if (w.collisions != sim::core::CollisionMethod::SoftStep)
+    out << "; " << sim::core::collisionMethodName(w.collisions) << " solves in doubles";
   out << ")\n";
 }
 

@@ -67,7 +67,7 @@ void writeTotals(JsonWriter& j, const sim::scene::SceneDef& def, const sim::worl
 // the collision method and why; the optional fields only where they apply, so that the JSON of
 // a run without them is unchanged
 void writeMethod(JsonWriter& j, const sim::scene::SceneDef& def, const sim::world::World& w) {
-  j.field("collision_method", sim::world::collisionMethodName(w.collisions));
+  j.field("collision_method", sim::core::collisionMethodName(w.collisions));
   j.field("collision_method_reason", describeCollisionMethod(def, w));
   // only when `auto` switched to the stack solver during the run
   if (w.methodSwitch)

@@ -24,6 +24,7 @@ using namespace render::jobs;
 using namespace render::analysis;
 using namespace sim::world;
 using namespace sim::collision;
+using sim::core::CollisionMethod;
 
 namespace {
 
@@ -35,9 +36,9 @@ struct StabilityOptions : MethodLists, Verbosity {
 // a scene whose variants are the methods compares them all; without variants (or with --variant) the
 // scene's own, and for a scene whose bodies can meet every method that makes them collide (`auto`
 // alone where no two bodies can meet: the others would repeat its numbers)
-std::vector<sim::world::CollisionMethod> defaultCollisions(const StabilityOptions& o, const OpenScene& file,
-                                                           const sim::scene::SceneDef& def) {
-  using sim::world::CollisionMethod;
+std::vector<sim::core::CollisionMethod> defaultCollisions(const StabilityOptions& o, const OpenScene& file,
+                                                          const sim::scene::SceneDef& def) {
+  using sim::core::CollisionMethod;
   std::vector<CollisionMethod> methods;
   if (o.variant.empty() && !def.variantNames.empty()) {
     for (const std::string& v : def.variantNames) {
@@ -82,7 +83,7 @@ int stability(const StabilityOptions& o) {
   ChartSeries bars{chart.yLabel, {}};
   ChartSeries bounds{
       fewest ? "fails up to the search's limit (needs more)" : "holds up to the search's limit (at least this)", {}, true};
-  for (sim::world::CollisionMethod c : methods)
+  for (sim::core::CollisionMethod c : methods)
     for (sim::core::Integrator i : integrators) {
       Study d = study;
       d.model.integrator = i;
@@ -90,12 +91,12 @@ int stability(const StabilityOptions& o) {
       const StabilityResult r = findBoundary(d);
       std::cout << describeFailure(d, r) << '\n';
       const bool open = fewest ? r.failsEverywhere : r.holdsToLimit;
-      csv.stream() << sim::core::integratorName(i) << ',' << sim::world::collisionMethodName(c) << ',' << parameter << ','
+      csv.stream() << sim::core::integratorName(i) << ',' << sim::core::collisionMethodName(c) << ',' << parameter << ','
                    << formatNumber(r.largestStable) << ',' << formatNumber(r.firstFailing) << ','
                    << csvField(r.holdsToLimit ? "none" : r.failing.failure) << '\n';
       const double x = static_cast<double>(chart.barLabels.size());
       chart.barLabels.push_back(std::string(sim::core::integratorName(i)) + "\n" +
-                                std::string(sim::world::collisionMethodName(c)));
+                                std::string(sim::core::collisionMethodName(c)));
       const double value = fewest && r.failsEverywhere ? r.firstFailing : r.largestStable;
       (open ? bounds : bars).points.emplace_back(x, value > 0.0 ? value : NAN);
     }

@@ -25,6 +25,7 @@ namespace render::cli {
 using namespace render::jobs;
 using namespace render::analysis;
 using namespace sim::world;
+using sim::core::CollisionMethod;
 
 namespace {
 
@@ -36,9 +37,9 @@ struct SweepOptions : MethodLists, Verbosity {
 
 std::string methodLabel(const SweepCase& m) {
   std::string s =
-      std::string(sim::core::integratorName(m.integrator)) + " + " + std::string(sim::world::collisionMethodName(m.collisions));
-  if (m.collisions == sim::world::CollisionMethod::Sequential) s += " (" + std::to_string(m.iterations) + " it)";
-  if (m.collisions == sim::world::CollisionMethod::SoftStep && m.substeps > 0) s += " (" + std::to_string(m.substeps) + " sub)";
+      std::string(sim::core::integratorName(m.integrator)) + " + " + std::string(sim::core::collisionMethodName(m.collisions));
+  if (m.collisions == sim::core::CollisionMethod::Sequential) s += " (" + std::to_string(m.iterations) + " it)";
+  if (m.collisions == sim::core::CollisionMethod::SoftStep && m.substeps > 0) s += " (" + std::to_string(m.substeps) + " sub)";
   return s;
 }
 
@@ -64,7 +65,7 @@ int stackSweep(const SweepOptions& o, const sim::scene::SceneDef& def, const std
   csv.stream()
       << "integrator,collisions,dt,iterations,substeps,steps,cpu_seconds_per_step,top_displacement,max_displacement,fastest\n";
   for (const SweepRow& r : rows)
-    csv.stream() << sim::core::integratorName(r.method.integrator) << ',' << sim::world::collisionMethodName(r.method.collisions)
+    csv.stream() << sim::core::integratorName(r.method.integrator) << ',' << sim::core::collisionMethodName(r.method.collisions)
                  << ',' << formatNumber(r.method.dt) << ',' << r.method.iterations << ',' << r.method.substeps << ',' << r.steps
                  << ',' << formatNumber(r.secondsPerStep) << ',' << formatNumber(r.topDisplacement) << ','
                  << formatNumber(r.maxDisplacement) << ',' << formatNumber(r.fastest) << '\n';
@@ -77,7 +78,7 @@ int stackSweep(const SweepOptions& o, const sim::scene::SceneDef& def, const std
   std::vector<std::string> order;
   for (const SweepRow& r : rows) {
     // one line per method (and integrator, and step): its points are its iterations or substeps
-    std::string label = std::string(sim::world::collisionMethodName(r.method.collisions));
+    std::string label = std::string(sim::core::collisionMethodName(r.method.collisions));
     if (o.integratorList().size() > 1) label += " + " + std::string(sim::core::integratorName(r.method.integrator));
     if (!o.dt.empty() && parseRange(o.dt, "--dt").size() > 1) label += " dt " + formatNumber(r.method.dt);
     if (!byMethod.count(label)) order.push_back(label), byMethod[label].title = label;
@@ -126,7 +127,7 @@ int sweep(const SweepOptions& o) {
   // a stack is measured against where it stands at the start, a motion against a finer run
   const SweepReference reference = o.stack ? SweepReference{kRestPose, {}} : sweepReference(def, smallest);
   std::vector<SweepRow> rows;
-  using sim::world::CollisionMethod;
+  using sim::core::CollisionMethod;
   for (CollisionMethod c : methods)
     for (sim::core::Integrator i : integrators)
       for (int it : c == CollisionMethod::Sequential ? iterations : std::vector<int>{def.velocityIterations})
@@ -138,7 +139,7 @@ int sweep(const SweepOptions& o) {
   csv.stream()
       << "integrator,collisions,dt,iterations,steps,seconds_per_sim_second,error,energy_drift,max_penetration,reference\n";
   for (const SweepRow& r : rows)
-    csv.stream() << sim::core::integratorName(r.method.integrator) << ',' << sim::world::collisionMethodName(r.method.collisions)
+    csv.stream() << sim::core::integratorName(r.method.integrator) << ',' << sim::core::collisionMethodName(r.method.collisions)
                  << ',' << formatNumber(r.method.dt) << ',' << r.method.iterations << ',' << r.steps << ','
                  << formatNumber(r.secondsPerSimSecond) << ',' << formatNumber(r.error) << ',' << formatNumber(r.energyDrift)
                  << ',' << formatNumber(r.maxPenetration) << ',' << csvField(reference.name) << '\n';

@@ -45,10 +45,10 @@ std::vector<sim::core::Integrator> MethodLists::integratorList() const {
   return namedList(integrators, sim::core::integratorFromName, sim::core::kIntegratorNames.list(), "--integrators");
 }
 
-std::vector<sim::world::CollisionMethod> MethodLists::collisionList(
-    const std::vector<sim::world::CollisionMethod>& defaults) const {
+std::vector<sim::core::CollisionMethod> MethodLists::collisionList(
+    const std::vector<sim::core::CollisionMethod>& defaults) const {
   if (collisions.empty()) return defaults;
-  return namedList(collisions, sim::world::collisionMethodFromName, sim::world::kCollisionMethodNames.list(), "--collisions");
+  return namedList(collisions, sim::core::collisionMethodFromName, sim::core::kCollisionMethodNames.list(), "--collisions");
 }
 
 }  // namespace render::cli

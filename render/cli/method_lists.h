@@ -20,7 +20,7 @@ struct MethodLists {
   // the named integrators, or all four; throws UsageError naming the unknown one
   std::vector<sim::core::Integrator> integratorList() const;
   // the named collision methods, or `defaults` (the scene's own, or those its variants choose)
-  std::vector<sim::world::CollisionMethod> collisionList(const std::vector<sim::world::CollisionMethod>& defaults) const;
+  std::vector<sim::core::CollisionMethod> collisionList(const std::vector<sim::core::CollisionMethod>& defaults) const;
 };
 
 }  // namespace render::cli

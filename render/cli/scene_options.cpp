@@ -63,10 +63,10 @@ SceneFile SceneOptions::load() const {
       throw UsageError("--dt: " + over + "; choose a larger step, or raise the scene's 'sim: {max_steps: N}'");
   }
   if (!collisions.empty()) {
-    const auto method = sim::world::collisionMethodFromName(collisions);
+    const auto method = sim::core::collisionMethodFromName(collisions);
     if (!method)
       throw UsageError("--collisions: unknown collision method '" + collisions +
-                       "'; choose one of: " + sim::world::kCollisionMethodNames.list());
+                       "'; choose one of: " + sim::core::kCollisionMethodNames.list());
     def.collisions = *method;
     def.collisionsLoc = {};
   }
@@ -170,7 +170,7 @@ void warnOfModel(const sim::scene::SceneDef& def, const std::string& file) {
   // more threads than cores take turns on them, and every step waits for the last: 64 threads on 2
   // cores ran 65 times slower than one
   const unsigned cores = std::thread::hardware_concurrency();
-  if (def.collisions == sim::world::CollisionMethod::SoftStep && cores > 0 && def.threads > static_cast<int>(cores)) {
+  if (def.collisions == sim::core::CollisionMethod::SoftStep && cores > 0 && def.threads > static_cast<int>(cores)) {
     const std::string line = file + ": warning: soft_step runs " + std::to_string(def.threads) + " threads on " +
                              std::to_string(cores) + (cores == 1 ? " core" : " cores") +
                              ", taking turns, and each step waits for all of them (slower than one thread); give at most " +
@@ -189,7 +189,7 @@ sim::world::World startWorld(const sim::scene::SceneDef& def, const std::string&
     m << "bodies '" << def.bodies[o.a].name << "' and '" << def.bodies[o.b].name << "' overlap by " << o.depth
       << " at t = 0; the event method starts from separated bodies: move them apart, or choose "
          "--collisions sequential";
-    const sim::scene::SourceLoc at = def.bodies[o.b].loc;
+    const sim::core::SourceLoc at = def.bodies[o.b].loc;
     throw sim::yaml::SceneError(file, at.line, at.column, m.str());
   }
   return world;

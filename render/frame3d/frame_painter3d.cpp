@@ -304,10 +304,10 @@ void FramePainter3d::paint(const World& world, const History3d& history, Canvas3
   if (r.springs)
     for (const Spring& sp : world.forces.springs) {
       const Vec3 a = world.bodies[sp.bodyA].toWorld(sp.pointA);
-      const Vec3 b = sp.bodyB == kWorldAnchor ? sp.pointB : world.bodies[sp.bodyB].toWorld(sp.pointB);
+      const Vec3 b = sp.bodyB == sim::core::kWorldAnchor ? sp.pointB : world.bodies[sp.bodyB].toWorld(sp.pointB);
       const std::optional<Vec2> pa = screen(a), pb = screen(b);
       if (pa && pb) draw.segment(*pa, *pb, {Role::Spring, -1, 1.0});
-      if (pb && sp.bodyB == kWorldAnchor) draw.point(*pb, {Role::Spring, -1, 1.0});
+      if (pb && sp.bodyB == sim::core::kWorldAnchor) draw.point(*pb, {Role::Spring, -1, 1.0});
     }
   paintArrows(world, history, draw);
   if (r.labels)

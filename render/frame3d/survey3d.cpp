@@ -68,7 +68,7 @@ RunSurvey3d surveyRun(const render::scene3d::Scene& def, double until) {
   surveyor.afterStep(world);
   // a spring's world anchor belongs in the picture with what hangs from it
   for (const Spring& sp : world.forces.springs)
-    if (sp.bodyB == kWorldAnchor) survey.bounds.add(sp.pointB);
+    if (sp.bodyB == sim::core::kWorldAnchor) survey.bounds.add(sp.pointB);
   world.advanceTo(until < 0.0 ? def.model.duration : until, &surveyor);
   // impacts closer than this are one instant (the corners of a face landing flat), as in 2D
   constexpr double kSameInstant = 1e-9;

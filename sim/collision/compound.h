@@ -9,20 +9,19 @@
 #include "sim/collision/collide.h"
 
 namespace sim::collision {
-using sim::core::ShapePart;
 
 // where a part of a body at `body` is in the world: the body's pose after the part's
-inline Pose partPose(const Pose& body, const ShapePart& part) { return body.then(part.pose); }
+inline sim::core::Pose partPose(const sim::core::Pose& body, const sim::core::ShapePart& part) { return body.then(part.pose); }
 
 // how many convex parts a shape has (1 for a circle, polygon or plane)
-inline int partCount(const Shape& shape) {
+inline int partCount(const sim::core::Shape& shape) {
   return shape.kind == sim::core::ShapeKind::Compound ? static_cast<int>(shape.parts.size()) : 1;
 }
 // part k of a shape and its pose, for a body at `body` (a convex shape is its own part 0)
-inline const Shape& partShape(const Shape& shape, int k) {
+inline const sim::core::Shape& partShape(const sim::core::Shape& shape, int k) {
   return shape.kind == sim::core::ShapeKind::Compound ? shape.parts[k].shape : shape;
 }
-inline Pose partPoseOf(const Shape& shape, int k, const Pose& body) {
+inline sim::core::Pose partPoseOf(const sim::core::Shape& shape, int k, const sim::core::Pose& body) {
   return shape.kind == sim::core::ShapeKind::Compound ? partPose(body, shape.parts[k]) : body;
 }
 
@@ -33,17 +32,18 @@ struct PartManifold {
 };
 
 // the manifolds of every pair of parts of a and b closer than `margin`, into `out` (cleared first)
-void collideParts(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, double margin, std::vector<PartManifold>& out,
-                  double sideSlack = 0.0);
+void collideParts(const sim::core::Shape& a, const sim::core::Pose& pa, const sim::core::Shape& b, const sim::core::Pose& pb,
+                  double margin, std::vector<PartManifold>& out, double sideSlack = 0.0);
 
 // the manifold of the closest pair of parts (collide()'s answer for a compound: its separation is
 // the gap between the shapes)
-Manifold closestParts(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, double margin, double sideSlack = 0.0);
+Manifold closestParts(const sim::core::Shape& a, const sim::core::Pose& pa, const sim::core::Shape& b, const sim::core::Pose& pb,
+                      double margin, double sideSlack = 0.0);
 
 // the bounds of a compound at `pose`: its parts' together
-Aabb compoundBounds(const Shape& shape, const Pose& pose);
+Aabb compoundBounds(const sim::core::Shape& shape, const sim::core::Pose& pose);
 
 // the first part of a compound that overlaps one before it by more than `tolerance`, or none
-std::optional<int> overlappingPart(const Shape& compound, double tolerance);
+std::optional<int> overlappingPart(const sim::core::Shape& compound, double tolerance);
 
 }  // namespace sim::collision

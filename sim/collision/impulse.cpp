@@ -3,6 +3,9 @@
 #include <algorithm>
 
 namespace sim::collision {
+using sim::core::Body;
+using sim::core::cross;
+using sim::core::Vec2;
 using namespace sim::core;
 
 double inverseEffectiveMass(const Body& a, const Body& b, const Vec2& r, const Vec2& n) {

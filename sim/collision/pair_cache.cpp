@@ -6,6 +6,7 @@
 #include "sim/core/settings.h"
 
 namespace sim::collision {
+using sim::core::Vec2;
 using namespace sim::core;
 
 namespace {

@@ -6,6 +6,7 @@
 
 namespace sim::collision {
 
+using sim::core::Vec2;
 void collideQuadPairs(const PlacedShape* const a[kQuadLanes], const PlacedShape* const b[kQuadLanes], double margin,
                       Manifold out[kQuadLanes], double sideSlack) {
   static_assert(kQuadLanes == quad::kLanes, "one lane a pair");

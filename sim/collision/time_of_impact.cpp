@@ -7,6 +7,8 @@
 #include "sim/core/settings.h"
 
 namespace sim::collision {
+using sim::core::BodyState;
+using sim::core::Shape;
 using namespace sim::core;
 
 namespace {

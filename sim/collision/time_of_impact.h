@@ -24,18 +24,15 @@
 #include "sim/core/shape.h"
 
 namespace sim::collision {
-using sim::core::BodyState;
-using sim::core::Pose;
-using sim::core::Shape;
 
 // where the two shapes are at τ
 struct PosePair {
-  Pose a, b;
+  sim::core::Pose a, b;
 };
 
 struct ToiInput {
-  const Shape* a = nullptr;
-  const Shape* b = nullptr;
+  const sim::core::Shape* a = nullptr;
+  const sim::core::Shape* b = nullptr;
   // the poses τ after the search starts: any motion (exact parabolas, an integrator's steps)
   std::function<PosePair(double tau)> motion;
   // m/s: no point of A approaches B faster than this over the search (zero: nothing approaches)
@@ -60,6 +57,7 @@ std::optional<double> timeOfImpact(const ToiInput& input);
 
 // the fastest any point of A can approach any point of B, m/s: |v_a − v_b| + |ω_a| R_a + |ω_b| R_b
 // with R the largest distance of a shape's points from its body's center of mass
-double approachBound(const Shape& a, const BodyState& sa, const Shape& b, const BodyState& sb);
+double approachBound(const sim::core::Shape& a, const sim::core::BodyState& sa, const sim::core::Shape& b,
+                     const sim::core::BodyState& sb);
 
 }  // namespace sim::collision

@@ -6,6 +6,8 @@
 #include <utility>
 
 namespace sim::debug {
+using sim::core::Shape;
+using sim::core::Vec2;
 using namespace sim::core;
 
 namespace {

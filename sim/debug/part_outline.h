@@ -7,15 +7,13 @@
 #include "sim/core/shape.h"
 
 namespace sim::debug {
-using sim::core::Shape;
-using sim::core::Vec2;
 
 struct OutlineSegment {
-  Vec2 a, b;
+  sim::core::Vec2 a, b;
 };
 
 // the outline of compound `shape` in its body's coordinates (a circle part as a polygon of
 // `circleSegments` chords), a piece per maximal run of a part's edge on the outside
-std::vector<OutlineSegment> partOutline(const Shape& shape, int circleSegments = 96);
+std::vector<OutlineSegment> partOutline(const sim::core::Shape& shape, int circleSegments = 96);
 
 }  // namespace sim::debug

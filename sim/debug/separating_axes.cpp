@@ -9,6 +9,11 @@
 #include "sim/debug/number_text.h"
 
 namespace sim::debug {
+using sim::core::Body;
+using sim::core::Vec2;
+using sim::debug_draw::DebugDraw;
+using sim::debug_draw::DrawRole;
+using sim::world::World;
 using namespace sim::collision;
 using namespace sim::core;
 using namespace sim::world;

@@ -8,18 +8,14 @@
 
 namespace sim::debug {
 // what is described goes through the simulator's drawing interface
-using sim::core::Body;
-using sim::debug_draw::DebugDraw;
-using sim::debug_draw::DrawRole;
-using sim::debug_draw::DrawStyle;
-using sim::world::World;
 
 // edge e's separation from the polygon `other`: min over its vertices v of n̂_e · (v − p_e), m
-double edgeSeparation(const Body& polygon, int edge, const Body& other);
+double edgeSeparation(const sim::core::Body& polygon, int edge, const sim::core::Body& other);
 
 // every polygon pair (not both static) whose separation is at most `maxGap`: the reference edge,
 // the incident vertex, and the separation written `labelOffset` inside the reference polygon from
 // the edge; with `everyAxis`, every other candidate edge of both polygons labeled the same way
-void describeSeparatingAxes(const World& world, double maxGap, double labelOffset, DebugDraw& draw, bool everyAxis = false);
+void describeSeparatingAxes(const sim::world::World& world, double maxGap, double labelOffset, sim::debug_draw::DebugDraw& draw,
+                            bool everyAxis = false);
 
 }  // namespace sim::debug

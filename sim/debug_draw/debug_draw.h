@@ -10,7 +10,6 @@
 #include "sim/core/math.h"
 
 namespace sim::debug_draw {
-using sim::core::Vec2;
 
 // the physics a picture of the world shows; a renderer gives each its look
 enum class DrawRole {
@@ -38,14 +37,14 @@ class DebugDraw {
  public:
   virtual ~DebugDraw() = default;
   // a closed convex polygon
-  virtual void polygon(const std::vector<Vec2>& vertices, const DrawStyle& style) = 0;
-  virtual void circle(const Vec2& center, double radius, const DrawStyle& style) = 0;
+  virtual void polygon(const std::vector<sim::core::Vec2>& vertices, const DrawStyle& style) = 0;
+  virtual void circle(const sim::core::Vec2& center, double radius, const DrawStyle& style) = 0;
   // the half-plane {r : n·(r − point) ≤ 0}, to be filled out to the edges of the view
-  virtual void halfPlane(const Vec2& point, const Vec2& normal, const DrawStyle& style) = 0;
-  virtual void segment(const Vec2& a, const Vec2& b, const DrawStyle& style) = 0;
-  virtual void point(const Vec2& p, const DrawStyle& style) = 0;
-  virtual void arrow(const Vec2& tail, const Vec2& head, const DrawStyle& style) = 0;
-  virtual void text(const Vec2& at, const std::string& text, const DrawStyle& style) = 0;
+  virtual void halfPlane(const sim::core::Vec2& point, const sim::core::Vec2& normal, const DrawStyle& style) = 0;
+  virtual void segment(const sim::core::Vec2& a, const sim::core::Vec2& b, const DrawStyle& style) = 0;
+  virtual void point(const sim::core::Vec2& p, const DrawStyle& style) = 0;
+  virtual void arrow(const sim::core::Vec2& tail, const sim::core::Vec2& head, const DrawStyle& style) = 0;
+  virtual void text(const sim::core::Vec2& at, const std::string& text, const DrawStyle& style) = 0;
 };
 
 }  // namespace sim::debug_draw

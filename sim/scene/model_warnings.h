@@ -13,10 +13,10 @@
 namespace sim::scene {
 
 struct ModelWarning {
-  SourceLoc loc;        // the key's place; line 0 when the value came from the command line
-  std::string setting;  // the key as the scene writes it: "collisions" or "integrator"
-  std::string value;    // its value, as written: "event", "rk4"
-  std::string message;  // what the method leaves out, and what to use instead
+  sim::core::SourceLoc loc;  // the key's place; line 0 when the value came from the command line
+  std::string setting;       // the key as the scene writes it: "collisions" or "integrator"
+  std::string value;         // its value, as written: "event", "rk4"
+  std::string message;       // what the method leaves out, and what to use instead
 };
 
 std::vector<ModelWarning> modelWarnings(const SceneDef& def);

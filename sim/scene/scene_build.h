@@ -5,17 +5,15 @@
 #include "sim/world/world.h"
 
 namespace sim::scene {
-using sim::core::Vec2;
-using sim::world::World;
 
 // the definitions must be valid (the loader checks them); body i of the world is def.bodies[i]
-World buildWorld(const SceneDef& def);
+sim::world::World buildWorld(const SceneDef& def);
 
 // a body's mass properties as the scene gives them: shape and density unless given outright
 struct MassProperties {
   double mass = 0.0;
   double inertia = 0.0;
-  Vec2 centroid = Vec2::Zero();  // in the coordinates the shape was written in
+  sim::core::Vec2 centroid = sim::core::Vec2::Zero();  // in the coordinates the shape was written in
 };
 MassProperties massProperties(const BodyDef& def);
 

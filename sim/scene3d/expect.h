@@ -10,21 +10,19 @@
 #include "sim/world3d/world.h"
 
 namespace sim::scene3d {
-using sim::core::CheckResult;
-using sim::world3d::FreeBodyMeasures;
-using sim::world3d::World;
 
 // every quantity of one entry, for a world at the entry's time; `measures` followed each body from
 // t = 0 (by body index)
 // (`indices`: the scene's bodyIndices(), when many entries are evaluated; else each name is scanned for)
-std::vector<CheckResult> evaluate(const ExpectDef& expect, const SceneDef& def, const World& world,
-                                  const std::vector<FreeBodyMeasures>& measures,
-                                  const std::unordered_map<std::string, int>* indices = nullptr);
+std::vector<sim::core::CheckResult> evaluate(const ExpectDef& expect, const SceneDef& def, const sim::world3d::World& world,
+                                             const std::vector<sim::world3d::FreeBodyMeasures>& measures,
+                                             const std::unordered_map<std::string, int>* indices = nullptr);
 
 // runs the scene's world from t = 0 through every expect entry in time order, measuring as it goes
 // (`observer`, if any, sees every step: a progress line)
-std::vector<CheckResult> runExpects(const SceneDef& def, World& world, sim::world3d::StepObserver* observer = nullptr);
+std::vector<sim::core::CheckResult> runExpects(const SceneDef& def, sim::world3d::World& world,
+                                               sim::world3d::StepObserver* observer = nullptr);
 // the same on a world built from the definitions
-std::vector<CheckResult> runExpects(const SceneDef& def);
+std::vector<sim::core::CheckResult> runExpects(const SceneDef& def);
 
 }  // namespace sim::scene3d

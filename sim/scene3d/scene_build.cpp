@@ -1,6 +1,10 @@
 #include "sim/scene3d/scene_build.h"
 
 namespace sim::scene3d {
+using sim::core::DragDef;
+using sim::world3d::Body;
+using sim::world3d::MassProperties;
+using sim::world3d::World;
 using namespace sim::world3d;
 
 int SceneDef::bodyIndex(const std::string& name) const {
@@ -68,7 +72,7 @@ World buildWorld(const SceneDef& s) {
     w.forces.pointForces.push_back({index(f.body), f.point, f.force, f.bodyFrame, f.from, f.until});
   for (const SpringDef& sp : s.springs) {
     const bool anchored = sp.body2.empty();
-    w.forces.springs.push_back({index(sp.body), sp.point, anchored ? kWorldAnchor : index(sp.body2),
+    w.forces.springs.push_back({index(sp.body), sp.point, anchored ? sim::core::kWorldAnchor : index(sp.body2),
                                 anchored ? sp.anchor : sp.point2, sp.stiffness, sp.restLength, sp.damping});
   }
   for (const DragDef& d : s.drags) w.forces.drags.push_back({index(d.body), d.linear, d.angular});

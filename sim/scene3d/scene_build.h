@@ -5,16 +5,13 @@
 #include "sim/world3d/world.h"
 
 namespace sim::scene3d {
-using sim::world3d::Body;
-using sim::world3d::MassProperties;
-using sim::world3d::World;
 
 // a body's mass and inertia: those given, the rest from the shape filled at `density` (or at the
 // density that gives the mass that is given, when only the mass is)
-MassProperties massProperties(const BodyDef& body);
+sim::world3d::MassProperties massProperties(const BodyDef& body);
 // the body at its start state; throws std::invalid_argument when its mass properties are no solid's
-Body buildBody(const BodyDef& body);
+sim::world3d::Body buildBody(const BodyDef& body);
 // the world of the scene at t = 0 (the reader has checked every name and value)
-World buildWorld(const SceneDef& scene);
+sim::world3d::World buildWorld(const SceneDef& scene);
 
 }  // namespace sim::scene3d

@@ -15,56 +15,48 @@
 #include "sim/world3d/shape.h"
 
 namespace sim::scene3d {
-using sim::world3d::Integrator;
-using sim::world3d::Mat3;
-using sim::world3d::Quat;
-using sim::world3d::Shape;
-using sim::world3d::Vec3;
-
-using sim::core::SourceLoc;
 
 struct BodyDef {
   std::string name;
-  Shape shape;                          // body coordinates, centered on the center of mass
-  std::optional<double> density;        // kg/m³
-  std::optional<double> mass;           // kg
-  std::optional<Mat3> inertia;          // kg·m² about the center, body axes
-  Vec3 position = Vec3::Zero();         // of the center of mass, world
-  Quat orientation = Quat::Identity();  // body to world, unit
-  Vec3 velocity = Vec3::Zero();         // world
-  Vec3 angularVelocity = Vec3::Zero();  // world
-  std::optional<double> restitution;    // c_r; the world's when absent
-  std::optional<double> friction;       // μ; the world's when absent (2D's rule: sim/scene/scene_def.h)
-  SourceLoc loc;
-  SourceLoc massLoc;  // where the mass properties are written (the body when they are not)
+  sim::world3d::Shape shape;                                        // body coordinates, centered on the center of mass
+  std::optional<double> density;                                    // kg/m³
+  std::optional<double> mass;                                       // kg
+  std::optional<sim::world3d::Mat3> inertia;                        // kg·m² about the center, body axes
+  sim::world3d::Vec3 position = sim::world3d::Vec3::Zero();         // of the center of mass, world
+  sim::world3d::Quat orientation = sim::world3d::Quat::Identity();  // body to world, unit
+  sim::world3d::Vec3 velocity = sim::world3d::Vec3::Zero();         // world
+  sim::world3d::Vec3 angularVelocity = sim::world3d::Vec3::Zero();  // world
+  std::optional<double> restitution;                                // c_r; the world's when absent
+  std::optional<double> friction;  // μ; the world's when absent (2D's rule: sim/scene/scene_def.h)
+  sim::core::SourceLoc loc;
+  sim::core::SourceLoc massLoc;  // where the mass properties are written (the body when they are not)
 };
 
 // a static half-space, written in `bodies:` as {plane: {point, normal}}: solid behind its normal
 struct PlaneDef {
   std::string name;
-  Vec3 point = Vec3::Zero();
-  Vec3 normal = Vec3::UnitZ();  // unit, as read
+  sim::world3d::Vec3 point = sim::world3d::Vec3::Zero();
+  sim::world3d::Vec3 normal = sim::world3d::Vec3::UnitZ();  // unit, as read
   std::optional<double> restitution, friction;
-  SourceLoc loc;
+  sim::core::SourceLoc loc;
 };
 
-using PointForceDef = sim::core::PointForceDefOf<Vec3>;
-using SpringDef = sim::core::SpringDefOf<Vec3>;
-using sim::core::DragDef;
-using EventDef = sim::core::EventDefOf<Vec3>;
+using PointForceDef = sim::core::PointForceDefOf<sim::world3d::Vec3>;
+using SpringDef = sim::core::SpringDefOf<sim::world3d::Vec3>;
+using EventDef = sim::core::EventDefOf<sim::world3d::Vec3>;
 
 // a closed-form answer that `rigidreel check` compares against; absent fields are not checked
 struct ExpectDef {
   double time = 0.0;
   std::string body;  // empty for world-wide quantities
   // a body's state at `time`
-  std::optional<Vec3> position, velocity, angularVelocity;
-  std::optional<Quat> orientation;       // q and −q are the same rotation: compared with the nearer
-  std::optional<double> quaternionNorm;  // |q|, which drifts without normalization
+  std::optional<sim::world3d::Vec3> position, velocity, angularVelocity;
+  std::optional<sim::world3d::Quat> orientation;  // q and −q are the same rotation: compared with the nearer
+  std::optional<double> quaternionNorm;           // |q|, which drifts without normalization
   // energies (kinetic: the body's, or the world's without a body) and momenta (angular: the body's
   // about its center, or the world's about the origin without a body)
   std::optional<double> kineticEnergy, potentialEnergy, totalEnergy;
-  std::optional<Vec3> momentum, angularMomentum;
+  std::optional<sim::world3d::Vec3> momentum, angularMomentum;
   // the energy, less the work of applied forces and events, never rises above its lowest so far by
   // more than the tolerance, at any step up to `time` (2D's: sim/scene/scene_def.h)
   bool energyNeverRises = false;
@@ -74,7 +66,7 @@ struct ExpectDef {
   std::optional<double> coneAngle, precessionRate, spacePrecessionRate, flipPeriod;
   double tolerance = sim::core::settings::kDefaultExpectTolerance;
   bool earlierRun = false;  // source: earlier_run, a value an earlier run gave (else a closed form)
-  SourceLoc loc;
+  sim::core::SourceLoc loc;
 };
 
 struct SceneDef {
@@ -83,22 +75,22 @@ struct SceneDef {
   std::string variant;  // the variant merged in, empty for the base scene
   std::vector<std::string> variantNames;
   double duration = sim::core::settings::kDefaultDuration;
-  Vec3 gravity = Vec3::Zero();
-  Integrator integrator = Integrator::Splitting;
+  sim::world3d::Vec3 gravity = sim::world3d::Vec3::Zero();
+  sim::world3d::Integrator integrator = sim::world3d::Integrator::Splitting;
   double dt = sim::core::settings::kDefaultDt;
   double maxSteps = sim::core::settings::kDefaultMaxSteps;        // the most steps a run may take (sim: max_steps)
   bool normalize = true;                                          // q ← q/|q| after every step (World::normalizeQuaternions)
   double restitution = sim::core::settings::kDefaultRestitution;  // of every body and plane that names none
   std::optional<double> friction;                                 // unset: only what a body names
   sim::core::CollisionMethod collisions = sim::core::CollisionMethod::Auto;
-  SourceLoc collisionsLoc;
+  sim::core::SourceLoc collisionsLoc;
   int velocityIterations = sim::core::settings::kVelocityIterations;  // sequential
   int positionIterations = sim::core::settings::kPositionIterations;
   std::vector<BodyDef> bodies;
   std::vector<PlaneDef> planes;
   std::vector<PointForceDef> pointForces;
   std::vector<SpringDef> springs;
-  std::vector<DragDef> drags;
+  std::vector<sim::core::DragDef> drags;
   std::vector<EventDef> events;
   std::vector<ExpectDef> expects;
 

@@ -16,21 +16,13 @@
 #include "sim/core/enum_names.h"
 
 namespace sim::world {
-using sim::collision::FeatureId;
-using sim::collision::Manifold;
-using sim::core::EnumNames;
-using sim::core::Vec2;
 
 // the collision methods by name (shared with 3D)
-using sim::core::CollisionMethod;
-using sim::core::collisionMethodFromName;
-using sim::core::collisionMethodName;
-using sim::core::kCollisionMethodNames;
 
 // the numbers soft_step solves its contacts in (`sim: {precision: ...}`): double, or float as Box2D
 // v3 does (half the width of a SIMD lane: faster on piles, to float's round-off)
 enum class Precision { Double, Float };
-inline constexpr EnumNames<Precision, 2> kPrecisionNames{{{
+inline constexpr sim::core::EnumNames<Precision, 2> kPrecisionNames{{{
     {Precision::Double, "double"},
     {Precision::Float, "float"},
 }}};
@@ -45,12 +37,12 @@ struct ContactPointState {
 };
 
 // the direction friction acts along at a contact of normal n̂: n̂ turned a quarter counterclockwise
-inline Vec2 tangentOf(const Vec2& n) { return {-n.y(), n.x()}; }
+inline sim::core::Vec2 tangentOf(const sim::core::Vec2& n) { return {-n.y(), n.x()}; }
 
 struct Contact {
   int a = 0, b = 0;          // body indices, a < b
   int partA = 0, partB = 0;  // which part of each body touches (0 for a body of one shape)
-  Manifold manifold;
+  sim::collision::Manifold manifold;
   double restitution = 0.0;
   double friction = 0.0;
   ContactPointState state[2];
@@ -60,10 +52,10 @@ struct Contact {
 struct ImpactRecord {
   double t = 0.0;
   int a = 0, b = 0;
-  Vec2 point = Vec2::Zero();
-  Vec2 normal = Vec2::UnitY();  // from B to A
-  double impulse = 0.0;         // γ
-  double tangentImpulse = 0.0;  // friction, along (−n_y, n_x)
+  sim::core::Vec2 point = sim::core::Vec2::Zero();
+  sim::core::Vec2 normal = sim::core::Vec2::UnitY();  // from B to A
+  double impulse = 0.0;                               // γ
+  double tangentImpulse = 0.0;                        // friction, along (−n_y, n_x)
   double vnBefore = 0.0, vnAfter = 0.0;
 };
 
@@ -82,7 +74,7 @@ inline std::tuple<int, int, int, int> pairKey(const Contact& c) { return {c.a, c
 // what a contact's points carry to the same pair's contact next step: their features and impulses
 struct CarriedPoints {
   int count = 0;
-  FeatureId id[2] = {0, 0};
+  sim::collision::FeatureId id[2] = {0, 0};
   ContactPointState state[2];
 };
 CarriedPoints carriedPoints(const Contact& c);

@@ -7,6 +7,10 @@
 #include "sim/core/settings.h"
 
 namespace sim::world {
+using sim::collision::Manifold;
+using sim::core::Pose;
+using sim::core::Rot;
+using sim::core::Vec2;
 using namespace sim::core;
 
 namespace {

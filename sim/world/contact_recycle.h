@@ -11,25 +11,23 @@
 #include "sim/collision/collide.h"
 
 namespace sim::world {
-using sim::collision::Manifold;
-using sim::core::Pose;
-using sim::core::Rot;
-using sim::core::Vec2;
 
 // a manifold as it was made, with what carrying it needs
 struct RecycleEntry {
   std::uint64_t key = ~std::uint64_t{0};  // the proxy pair (first << 32 | second)
   bool valid = false;                     // a manifold with points was made
-  Rot qA, qB;                             // the two shapes' rotations then
-  Pose relative;                          // B's shape in A's frame then
+  sim::core::Rot qA, qB;                  // the two shapes' rotations then
+  sim::core::Pose relative;               // B's shape in A's frame then
   // each point from each shape's origin then, in the world
-  Vec2 anchorA[2] = {Vec2::Zero(), Vec2::Zero()}, anchorB[2] = {Vec2::Zero(), Vec2::Zero()};
+  sim::core::Vec2 anchorA[2] = {sim::core::Vec2::Zero(), sim::core::Vec2::Zero()},
+                  anchorB[2] = {sim::core::Vec2::Zero(), sim::core::Vec2::Zero()};
   double baseSeparation[2] = {0.0, 0.0};
-  Manifold manifold;
+  sim::collision::Manifold manifold;
 };
 
 // the entry of manifold `m` made with the shapes at `a` and `b`
-RecycleEntry recycleEntry(std::uint64_t key, const Pose& a, const Pose& b, const Manifold& m);
+RecycleEntry recycleEntry(std::uint64_t key, const sim::core::Pose& a, const sim::core::Pose& b,
+                          const sim::collision::Manifold& m);
 
 // `entry`'s manifold carried to the shapes at `a` and `b`: each point's anchors turned with its
 // shape, its separation changed by how far the two material points moved apart along the normal;
@@ -37,6 +35,7 @@ RecycleEntry recycleEntry(std::uint64_t key, const Pose& a, const Pose& b, const
 // farthest point `extent` from its origin) by `distance` or more. Written into `out` (untouched
 // when there is none): returned in an optional, its copy out read the stack in pieces wider than
 // they were written, a stall that was 3 % of a step on the 5,050-box pyramid
-bool recycledManifold(const RecycleEntry& entry, const Pose& a, const Pose& b, double extent, double distance, Manifold& out);
+bool recycledManifold(const RecycleEntry& entry, const sim::core::Pose& a, const sim::core::Pose& b, double extent,
+                      double distance, sim::collision::Manifold& out);
 
 }  // namespace sim::world

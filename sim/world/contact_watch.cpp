@@ -5,6 +5,7 @@
 #include "sim/world/world.h"
 
 namespace sim::world {
+using sim::core::Persistence;
 using namespace sim::core;
 
 std::optional<PersistentContact> ContactWatch::afterStep(const World& world, size_t impactsBefore, size_t restingBefore) {

@@ -17,10 +17,8 @@ namespace sim::world {
 
 class World;
 
-using sim::core::Persistence;
-
 struct PersistentContact {
-  Persistence how = Persistence::Rested;
+  sim::core::Persistence how = sim::core::Persistence::Rested;
   int a = 0, b = 0;
 };
 

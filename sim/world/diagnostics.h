@@ -5,8 +5,6 @@
 #include "sim/world/world.h"
 
 namespace sim::world {
-using sim::core::Body;
-using sim::core::Vec2;
 
 struct KineticEnergy {
   double translational = 0.0;  // ½ m v²
@@ -21,10 +19,10 @@ struct Energy {
 };
 
 // static bodies have infinite mass and no motion: they carry no energy or momentum
-KineticEnergy kineticEnergy(const Body& body);
+KineticEnergy kineticEnergy(const sim::core::Body& body);
 Energy energy(const World& world);
 // Σ m v
-Vec2 linearMomentum(const World& world);
+sim::core::Vec2 linearMomentum(const World& world);
 // about the world origin: Σ x × m v + I ω
 double angularMomentum(const World& world);
 // a hash of every body's pose and velocity bits: equal hashes mean bit-identical runs

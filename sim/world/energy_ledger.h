@@ -8,7 +8,6 @@
 
 namespace sim::world {
 
-using sim::core::EnergyRise;
-using EnergyLedger = sim::core::EnergyLedgerOf<World, StepObserver, ImpulseEvent, States>;
+using EnergyLedger = sim::core::EnergyLedgerOf<World, StepObserver, ImpulseEvent, sim::core::States>;
 
 }  // namespace sim::world

@@ -4,6 +4,8 @@
 #include "sim/world/world.h"
 
 namespace sim::world {
+using sim::core::Rates;
+using sim::core::States;
 using namespace sim::core;
 using namespace sim::collision;
 

@@ -8,6 +8,8 @@
 #include "sim/world/world.h"
 
 namespace sim::world {
+using sim::core::Body;
+using sim::core::Vec2;
 using namespace sim::core;
 using namespace sim::collision;
 

@@ -11,40 +11,40 @@
 
 namespace sim::world {
 
-using sim::core::bit;
-using sim::core::has;
-using sim::core::IntegratorUse;
-using sim::core::MethodModel;
-using sim::core::phenomenaText;
-using sim::core::Phenomenon;
-
 // one row per method; `auto` is resolved to one of them before a run (World::start)
-inline constexpr MethodModel kMethodModels[] = {
-    {CollisionMethod::None, 0u, IntegratorUse::Named, "bodies pass through each other: restitution and friction are never used"},
-    {CollisionMethod::Event, Phenomenon::IsolatedImpacts | Phenomenon::FrictionAtImpacts, IntegratorUse::Named,
+inline constexpr sim::core::MethodModel kMethodModels[] = {
+    {sim::core::CollisionMethod::None, 0u, sim::core::IntegratorUse::Named,
+     "bodies pass through each other: restitution and friction are never used"},
+    {sim::core::CollisionMethod::Event, sim::core::Phenomenon::IsolatedImpacts | sim::core::Phenomenon::FrictionAtImpacts,
+     sim::core::IntegratorUse::Named,
      "friction acts at impacts only: a contact that persists (a Zeno series of bounces ended) rests without friction, so a body "
      "that lands slides on and a stack gives up"},
-    {CollisionMethod::Isolated, Phenomenon::IsolatedImpacts | Phenomenon::FrictionAtImpacts, IntegratorUse::Named,
+    {sim::core::CollisionMethod::Isolated, sim::core::Phenomenon::IsolatedImpacts | sim::core::Phenomenon::FrictionAtImpacts,
+     sim::core::IntegratorUse::Named,
      "friction acts at impacts only, and resting bodies jitter and sink: it answers each overlap with one impulse"},
-    {CollisionMethod::Sequential,
-     Phenomenon::IsolatedImpacts | Phenomenon::FrictionAtImpacts | Phenomenon::SlidingFriction | Phenomenon::RestingContact |
-         Phenomenon::Stacks,
-     IntegratorUse::Named, "impacts slower than 1 m/s do not bounce (restitution threshold)"},
-    {CollisionMethod::SoftStep,
-     Phenomenon::IsolatedImpacts | Phenomenon::FrictionAtImpacts | Phenomenon::SlidingFriction | Phenomenon::RestingContact |
-         Phenomenon::Stacks,
-     IntegratorUse::Own, "forces act by symplectic Euler in each substep, whatever the scene's integrator"},
+    {sim::core::CollisionMethod::Sequential,
+     sim::core::Phenomenon::IsolatedImpacts | sim::core::Phenomenon::FrictionAtImpacts | sim::core::Phenomenon::SlidingFriction |
+         sim::core::Phenomenon::RestingContact | sim::core::Phenomenon::Stacks,
+     sim::core::IntegratorUse::Named, "impacts slower than 1 m/s do not bounce (restitution threshold)"},
+    {sim::core::CollisionMethod::SoftStep,
+     sim::core::Phenomenon::IsolatedImpacts | sim::core::Phenomenon::FrictionAtImpacts | sim::core::Phenomenon::SlidingFriction |
+         sim::core::Phenomenon::RestingContact | sim::core::Phenomenon::Stacks,
+     sim::core::IntegratorUse::Own, "forces act by symplectic Euler in each substep, whatever the scene's integrator"},
 };
 
 // the row of a method (not `auto`)
-const MethodModel& methodModel(CollisionMethod method);
-inline bool models(CollisionMethod method, Phenomenon p) { return has(methodModel(method).models, p); }
+const sim::core::MethodModel& methodModel(sim::core::CollisionMethod method);
+inline bool models(sim::core::CollisionMethod method, sim::core::Phenomenon p) {
+  return sim::core::has(methodModel(method).models, p);
+}
 // whether the method's contacts are right with this integrator (it moves the bodies by it)
-inline bool usesIntegrator(CollisionMethod method) { return methodModel(method).integrators == IntegratorUse::Named; }
+inline bool usesIntegrator(sim::core::CollisionMethod method) {
+  return methodModel(method).integrators == sim::core::IntegratorUse::Named;
+}
 
 // the least of `none`, `event` and `sequential` that models every phenomenon of `needs` (`auto`'s
 // choice: `isolated` shows the notes' model failing and `soft_step` is for piles `sequential`
 // loses, so `auto` never picks them)
-CollisionMethod leastMethodFor(unsigned needs);
+sim::core::CollisionMethod leastMethodFor(unsigned needs);
 
 }  // namespace sim::world

@@ -16,10 +16,6 @@
 #include "sim/world/contact.h"
 
 namespace sim::world {
-using sim::core::Dynamics;
-using sim::core::Rates;
-using sim::core::States;
-using sim::core::Vec2;
 
 class World;
 
@@ -44,7 +40,7 @@ class Method {
   virtual void step(World&, const TimeStep&) = 0;
   // forces of the contacts the method holds, added to the applied ones at state y (event: resting
   // contacts push back so that they do not sink in)
-  virtual void addContactForces(const World&, const States& /*y*/, std::vector<Vec2>& /*force*/,
+  virtual void addContactForces(const World&, const sim::core::States& /*y*/, std::vector<sim::core::Vec2>& /*force*/,
                                 std::vector<double>& /*torque*/) const {}
 };
 
@@ -55,16 +51,16 @@ std::unique_ptr<Method> makeSequentialSolver();
 std::unique_ptr<Method> makeSoftStepSolver(Precision precision = Precision::Double);
 std::unique_ptr<Method> makeEventStepper();
 // the unit of a method by its name (`auto` must be resolved first: World::start)
-std::unique_ptr<Method> makeMethod(CollisionMethod method, Precision precision = Precision::Double);
+std::unique_ptr<Method> makeMethod(sim::core::CollisionMethod method, Precision precision = Precision::Double);
 
 // the free-body equations during one step, as the integrators see them (notes: "Dynamics of a free
 // body"): the world's rates at the step's midpoint, whatever stage time the integrator asks for.
 // A force switching at the step's end is on at all of the step's stages, as it is on all of its
 // open interval (RK4's last stage at the end of the step included).
-class StepDynamics : public Dynamics {
+class StepDynamics : public sim::core::Dynamics {
  public:
   StepDynamics(const World& world, const TimeStep& step) : world_(world), midpoint_(step.midpoint()) {}
-  void rates(double t, const States& y, Rates& out) const override;
+  void rates(double t, const sim::core::States& y, sim::core::Rates& out) const override;
 
  private:
   const World& world_;

@@ -14,8 +14,6 @@
 #include "sim/world/contact.h"
 
 namespace sim::world {
-using sim::core::Body;
-using sim::core::ForceSet;
 
 class Sleep {
  public:
@@ -27,13 +25,14 @@ class Sleep {
   // after a step of length h: each body's time at rest, and the islands (joined by `contacts` and
   // the springs) whose every body has been at rest for kTimeToSleep fall asleep; a body pushed by a
   // point force that is on at `t` is never at rest
-  void afterStep(std::vector<Body>& bodies, const std::vector<Contact>& contacts, const ForceSet& forces, double t, double h);
+  void afterStep(std::vector<sim::core::Body>& bodies, const std::vector<Contact>& contacts, const sim::core::ForceSet& forces,
+                 double t, double h);
 
   // the island of `body` wakes; the contacts it kept are put back into `contacts` (sorted by pair)
   void wake(int body, std::vector<Contact>& contacts);
 
   // the islands that a point force on at `t` pushes wake
-  void wakeForced(const ForceSet& forces, double t, std::vector<Contact>& contacts);
+  void wakeForced(const sim::core::ForceSet& forces, double t, std::vector<Contact>& contacts);
 
   // the islands that a `found` contact joins to an awake body wake; true when any did
   bool wakeTouched(const std::vector<Contact>& found, std::vector<Contact>& contacts);

@@ -23,25 +23,15 @@
 
 namespace sim::world {
 class WorkerPool;
-using sim::collision::Aabb;
-using sim::collision::PairCache;
-using sim::collision::PlacedShape;
-using sim::core::Body;
-using sim::core::ForceSet;
-using sim::core::Integrator;
-using sim::core::Rates;
-using sim::core::States;
-using sim::core::Timeline;
-using sim::core::Vec2;
 namespace settings = sim::core::settings;
 
 // an impulse j applied at exactly `time`: Δv = j/m, Δω = I⁻¹ (r′ × j)
 struct ImpulseEvent {
   double time = 0.0;
   int body = 0;
-  Vec2 point = Vec2::Zero();  // body coordinates, or world coordinates when pointInWorld
+  sim::core::Vec2 point = sim::core::Vec2::Zero();  // body coordinates, or world coordinates when pointInWorld
   bool pointInWorld = false;
-  Vec2 impulse = Vec2::Zero();  // world coordinates
+  sim::core::Vec2 impulse = sim::core::Vec2::Zero();  // world coordinates
 };
 
 class World;
@@ -74,22 +64,18 @@ struct ImpactsPileUp : std::runtime_error {
   double time;
 };
 
-using sim::core::MethodReason;
-using sim::core::MethodSwitch;
-using sim::core::Persistence;
-
 // The world holds the bodies, the forces, the contacts and the time; the collision method
 // (methods.h) decides how a step answers touching bodies.
 class World {
  public:
-  std::vector<Body> bodies;
-  ForceSet forces;
+  std::vector<sim::core::Body> bodies;
+  sim::core::ForceSet forces;
   std::vector<ImpulseEvent> events;  // any order; applied in time order
-  Integrator integrator = Integrator::SymplecticEuler;
-  double dt = settings::kDefaultDt;                    // read once, by start(): the step grid's spacing
-  CollisionMethod collisions = CollisionMethod::Auto;  // resolved when the run starts
-  MethodReason methodReason = MethodReason::Requested;
-  std::optional<MethodSwitch> methodSwitch;  // when and why `auto` went from event to the stack solver
+  sim::core::Integrator integrator = sim::core::Integrator::SymplecticEuler;
+  double dt = settings::kDefaultDt;                                          // read once, by start(): the step grid's spacing
+  sim::core::CollisionMethod collisions = sim::core::CollisionMethod::Auto;  // resolved when the run starts
+  sim::core::MethodReason methodReason = sim::core::MethodReason::Requested;
+  std::optional<sim::core::MethodSwitch> methodSwitch;  // when and why `auto` went from event to the stack solver
   int velocityIterations = settings::kVelocityIterations;
   int positionIterations = settings::kPositionIterations;
   int substeps = settings::kSubsteps;             // soft_step: substeps per step
@@ -125,16 +111,16 @@ class World {
   void advanceWithin(double t, double tEnd, StepObserver* observer = nullptr);
 
   // the notes' impulse at a world point r: v += j/m, ω += I⁻¹ (r − x) × j
-  void applyImpulse(int body, const Vec2& r, const Vec2& j);
+  void applyImpulse(int body, const sim::core::Vec2& r, const sim::core::Vec2& j);
 
   // the notes' free-body equations at time t (notes: "Dynamics of a free body"): ẋ = v, θ̇ = ω,
   // v̇ = f/m, ω̇ = τ/I with the forces and torques of the forces on at t and of the contacts the
   // collision method holds (event: resting contacts)
-  void rates(double t, const States& y, Rates& out) const;
+  void rates(double t, const sim::core::States& y, sim::core::Rates& out) const;
 
   // every body's state; setStates moves the dynamic bodies to y (static ones never move)
-  States states() const;
-  void setStates(const States& y);
+  sim::core::States states() const;
+  void setStates(const sim::core::States& y);
 
   // manifolds of every pair closer than `margin` now, sorted by pair
   std::vector<Contact> findContacts(double margin) const;
@@ -172,7 +158,7 @@ class World {
   friend class sim::core::Timeline;
   void step(double stop, double end);
   void applyEvent(const ImpulseEvent& e);
-  void switchToStackSolver(const MethodSwitch& why);
+  void switchToStackSolver(const sim::core::MethodSwitch& why);
   void checkFinite(double t) const;
   bool sleeping() const;
   // the manifolds into `found` (its entries overwritten, its storage kept), without the sleeping pairs when
@@ -187,14 +173,14 @@ class World {
 
   bool started_ = false;
   bool contactPairsKept_ = false;
-  Timeline<ImpulseEvent> timeline_;  // steps of dt cut at the events and force switches, and the events due
+  sim::core::Timeline<ImpulseEvent> timeline_;  // steps of dt cut at the events and force switches, and the events due
   double sceneSize_ = 1.0;
   Sleep sleep_;         // the islands asleep and the bodies' time at rest
   OwnedMethod method_;  // the unit of `collisions`, made by start()
   // `auto` chose event: contact that persists, or a stack forming, switches to sequential
   bool mayStackUp_ = false;
   ContactWatch watch_;
-  States stepStart_;  // the states where the step began, to redo it on a switch
+  sim::core::States stepStart_;  // the states where the step began, to redo it on a switch
   // the collision proxies, one per convex shape, body by body (a body of parts has one per part):
   // empty while every body is one shape, when proxy i is body i
   struct Proxy {
@@ -205,7 +191,7 @@ class World {
   mutable size_t proxiesFor_ = 0;  // the body count they were made for
   // the broad phase's candidate pairs, kept from one findContacts to the next (the pairs found
   // do not depend on them)
-  mutable PairCache pairCache_;
+  mutable sim::collision::PairCache pairCache_;
   // soft_step's contact recycling: each candidate pair's manifold as made, by the index of its pair
   // (recycle_, for the pairs recycleKeys_), and the list of this call's pairs when they are others
   // (recycleNext_, swapped in at the next call); which pairs kept theirs; each proxy's reach
@@ -214,14 +200,14 @@ class World {
   mutable std::vector<char> recycledNow_;
   mutable std::vector<double> extent_;
   mutable bool recycleReady_ = false;
-  mutable std::vector<std::pair<int, int>> pairs_;  // scratch of findContacts: the proxies' pairs,
-  mutable std::vector<PlacedShape> placed_;         // and the proxies' shapes where they are,
-  mutable std::vector<Aabb> boxes_;                 // their bounds with the margin,
-  mutable std::vector<bool> fixed_;                 // which are static,
-  mutable std::vector<Manifold> manifolds_;         // and each pair's manifold, when threads share them,
-  mutable std::vector<int> touching_;               // with where each thread's touching pairs begin,
-  mutable std::vector<char> differs_;               // and whether its pairs differ from last step's
-  mutable std::vector<Vec2> force_;                 // scratch of rates()
+  mutable std::vector<std::pair<int, int>> pairs_;           // scratch of findContacts: the proxies' pairs,
+  mutable std::vector<sim::collision::PlacedShape> placed_;  // and the proxies' shapes where they are,
+  mutable std::vector<sim::collision::Aabb> boxes_;          // their bounds with the margin,
+  mutable std::vector<bool> fixed_;                          // which are static,
+  mutable std::vector<sim::collision::Manifold> manifolds_;  // and each pair's manifold, when threads share them,
+  mutable std::vector<int> touching_;                        // with where each thread's touching pairs begin,
+  mutable std::vector<char> differs_;                        // and whether its pairs differ from last step's
+  mutable std::vector<sim::core::Vec2> force_;               // scratch of rates()
   mutable std::vector<double> torque_;
 };
 

@@ -3,6 +3,7 @@
 #include <cmath>
 
 namespace sim::world3d {
+using sim::core::kWorldAnchor;
 
 namespace {
 

@@ -10,8 +10,6 @@
 
 namespace sim::world3d {
 
-using sim::core::kWorldAnchor;  // a spring end fixed in the world
-
 // a constant force at a body point, on during [from, until)
 struct PointForce {
   int body = 0;
@@ -25,12 +23,12 @@ struct PointForce {
 // a damped linear spring between a body point and a world anchor or another body's point
 struct Spring {
   int bodyA = 0;
-  Vec3 pointA = Vec3::Zero();  // body coordinates of A
-  int bodyB = kWorldAnchor;
-  Vec3 pointB = Vec3::Zero();  // body coordinates of B, or the world anchor
-  double stiffness = 0.0;      // N/m
-  double restLength = 0.0;     // m
-  double damping = 0.0;        // N·s/m, along the spring
+  Vec3 pointA = Vec3::Zero();           // body coordinates of A
+  int bodyB = sim::core::kWorldAnchor;  // or a spring end fixed in the world
+  Vec3 pointB = Vec3::Zero();           // body coordinates of B, or the world anchor
+  double stiffness = 0.0;               // N/m
+  double restLength = 0.0;              // m
+  double damping = 0.0;                 // N·s/m, along the spring
 };
 
 // linear and angular drag: f = −c v, τ = −c_ω ω (ω in the world frame)

@@ -10,6 +10,9 @@
 #include "sim/world3d/method_models3d.h"
 
 namespace sim::world3d {
+using sim::core::CollisionMethod;
+using sim::core::MethodReason;
+using sim::core::MethodSwitch;
 namespace core = sim::core;
 
 Diverged::Diverged(double t, int b)

@@ -19,9 +19,6 @@
 #include "sim/world3d/methods3d.h"
 
 namespace sim::world3d {
-using sim::core::CollisionMethod;
-using sim::core::MethodReason;
-using sim::core::MethodSwitch;
 
 // an impulse j applied at exactly `time`: Δv = j/m, Δω = I⁻¹ (r′ × j) with I = R I_b Rᵀ
 struct ImpulseEvent {
@@ -79,9 +76,9 @@ class World {
   // q ← q/|q| after every step; off, a four-vector method's |q| drifts as its closed form says
   bool normalizeQuaternions = true;
   double dt = sim::core::settings::kDefaultDt;
-  CollisionMethod collisions = CollisionMethod::Auto;  // resolved when the run starts
-  MethodReason methodReason = MethodReason::Requested;
-  std::optional<MethodSwitch> methodSwitch;                           // when and why `auto` went from event to sequential
+  sim::core::CollisionMethod collisions = sim::core::CollisionMethod::Auto;  // resolved when the run starts
+  sim::core::MethodReason methodReason = sim::core::MethodReason::Requested;
+  std::optional<sim::core::MethodSwitch> methodSwitch;                // when and why `auto` went from event to sequential
   int velocityIterations = sim::core::settings::kVelocityIterations;  // sequential
   int positionIterations = sim::core::settings::kPositionIterations;
 
@@ -118,7 +115,7 @@ class World {
   friend class sim::core::Timeline;
   void step(double stop, double end);
   void applyEvent(const ImpulseEvent& e);
-  void switchToSequential(const MethodSwitch& why);
+  void switchToSequential(const sim::core::MethodSwitch& why);
   void checkFinite() const;
 
   bool started_ = false;

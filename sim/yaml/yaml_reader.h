@@ -19,7 +19,6 @@
 #include "sim/yaml/utf8.h"
 
 namespace sim::yaml {
-using sim::core::Vec2;
 
 // edit distance with a swap of two neighbours counted as one edit (the optimal string alignment
 // form of Damerau's, 1964): the typos a hint should catch are a letter wrong, missing, extra or
@@ -155,7 +154,7 @@ class Reader {
     return x;
   }
 
-  Vec2 vec2(const YAML::Node& n, const std::string& key) const {
+  sim::core::Vec2 vec2(const YAML::Node& n, const std::string& key) const {
     if (!n.IsSequence() || n.size() != 2) {
       const std::string got = n.IsSequence() ? "a list of " + std::to_string(n.size()) + " values" : describe(n);
       fail(n, "expected [x, y] for '" + key + "', got " + got);

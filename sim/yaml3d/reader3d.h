@@ -7,23 +7,19 @@
 #include "sim/yaml/yaml_reader.h"
 
 namespace sim::yaml3d {
-using sim::world3d::Mat3;
-using sim::world3d::Quat;
-using sim::world3d::Vec3;
-using sim::yaml::describe;
 
 class Reader3d : public sim::yaml::Reader {
  public:
   using Reader::Reader;
 
-  Vec3 vec3(const YAML::Node& n, const std::string& key) const {
+  sim::world3d::Vec3 vec3(const YAML::Node& n, const std::string& key) const {
     if (!n.IsSequence() || n.size() != 3) fail(n, "expected [x, y, z] for '" + key + "', got " + shape(n));
     return {finite(n[0], key), finite(n[1], key), finite(n[2], key)};
   }
 
   // `orientation`: a unit quaternion [w, x, y, z] (normalized when its length is 1 to round-off,
   // refused when further off) or {axis: [x, y, z], angle: θ}
-  Quat orientation(const YAML::Node& n, const std::string& key) const {
+  sim::world3d::Quat orientation(const YAML::Node& n, const std::string& key) const {
     try {
       if (n.IsMap()) {
         checkKeys(n, {"axis", "angle"}, key);
@@ -41,13 +37,13 @@ class Reader3d : public sim::yaml::Reader {
 
   // `inertia`: the three principal moments [I1, I2, I3] (the body's axes are principal), or the 3 × 3
   // tensor [[Ixx, Ixy, Ixz], [Iyx, Iyy, Iyz], [Izx, Izy, Izz]] in body axes, kg·m²
-  Mat3 inertia(const YAML::Node& n, const std::string& key) const {
+  sim::world3d::Mat3 inertia(const YAML::Node& n, const std::string& key) const {
     if (n.IsSequence() && n.size() == 3 && n[0].IsScalar()) {
-      const Vec3 moments(positive(n[0], key), positive(n[1], key), positive(n[2], key));
+      const sim::world3d::Vec3 moments(positive(n[0], key), positive(n[1], key), positive(n[2], key));
       return moments.asDiagonal();
     }
     if (n.IsSequence() && n.size() == 3) {
-      Mat3 m;
+      sim::world3d::Mat3 m;
       for (int r = 0; r < 3; ++r) m.row(r) = vec3(n[r], key + " row").transpose();
       return m;
     }
@@ -57,7 +53,7 @@ class Reader3d : public sim::yaml::Reader {
 
  private:
   static std::string shape(const YAML::Node& n) {
-    return n.IsSequence() ? "a list of " + std::to_string(n.size()) + " values" : describe(n);
+    return n.IsSequence() ? "a list of " + std::to_string(n.size()) + " values" : sim::yaml::describe(n);
   }
 };
 

@@ -16,9 +16,14 @@
 #include "sim/yaml3d/reader3d.h"
 
 namespace sim::yaml3d {
+using sim::world3d::Quat;
+using sim::yaml::describe;
+using sim::yaml::OtherKeys;
+using sim::yaml::SceneSource;
 using namespace sim::scene3d;
 using namespace sim::world3d;
 using sim::core::stepsOverLimit;
+using sim::world3d::Shape;
 using sim::yaml::Keys;
 using sim::yaml::with;
 

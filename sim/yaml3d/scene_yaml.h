@@ -10,13 +10,11 @@
 #include "sim/yaml/scene_yaml.h"
 
 namespace sim::yaml3d {
-using sim::yaml::OtherKeys;
-using sim::yaml::SceneSource;
 
 // the 3D model of the scene in `source`, which must say `dimensions: 3`; any key not the model's
 // nor in `others` is an error naming the nearest valid key (a 2D key says why 3D has none).
 // Throws sim::yaml::SceneError.
-sim::scene3d::SceneDef readModel(const SceneSource& source, const OtherKeys& others = {});
+sim::scene3d::SceneDef readModel(const sim::yaml::SceneSource& source, const sim::yaml::OtherKeys& others = {});
 
 // the model of a file that has nothing but the model
 sim::scene3d::SceneDef loadSceneFile(const std::string& path, const std::string& variant = "");

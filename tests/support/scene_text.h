@@ -88,7 +88,7 @@ struct CradleRun {
   double e0, e1;
   std::string speeds;  // the balls' final x velocities
 };
-inline CradleRun runCradle(sim::world::CollisionMethod method) {
+inline CradleRun runCradle(sim::core::CollisionMethod method) {
   sim::scene::SceneDef def = sim::yaml::loadSceneText(kCradle, "inline.yaml");
   def.collisions = method;
   CradleRun r{sim::scene::buildWorld(def), {}, 0.0, 0.0, {}};

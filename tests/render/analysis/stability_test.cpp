@@ -30,10 +30,10 @@ stability: {parameter: dt, from: 0.01}
 constexpr double kOmega = 2.0;
 
 double boundary(const char* yaml, sim::core::Integrator method,
-                sim::world::CollisionMethod collisions = sim::world::CollisionMethod::Auto, const std::string& variant = "") {
+                sim::core::CollisionMethod collisions = sim::core::CollisionMethod::Auto, const std::string& variant = "") {
   render::analysis::Study def = study(yaml, variant);
   def.model.integrator = method;
-  if (collisions != sim::world::CollisionMethod::Auto) def.model.collisions = collisions;
+  if (collisions != sim::core::CollisionMethod::Auto) def.model.collisions = collisions;
   const render::analysis::StabilityResult r = render::analysis::findBoundary(def);
   MESSAGE(render::analysis::describeFailure(def, r));
   CHECK_FALSE(r.failsEverywhere);
@@ -84,11 +84,11 @@ bodies:
 stability: {parameter: speed, body: bullet, from: 0.5, to: 10000}
 )";
   const double allowed = 0.5 * (0.05 + 0.05) * 60.0;
-  CHECK(boundary(yaml, sim::core::Integrator::SymplecticEuler, sim::world::CollisionMethod::Isolated) ==
+  CHECK(boundary(yaml, sim::core::Integrator::SymplecticEuler, sim::core::CollisionMethod::Isolated) ==
         doctest::Approx(allowed).epsilon(0.10));
 
   render::analysis::Study def = study(yaml);
-  def.model.collisions = sim::world::CollisionMethod::Event;
+  def.model.collisions = sim::core::CollisionMethod::Event;
   const render::analysis::StabilityResult r = render::analysis::findBoundary(def);
   CHECK(r.holdsToLimit);
 }
@@ -105,12 +105,12 @@ bodies:
   for (int i = 0; i < 6; ++i)
     yaml += "  - {name: box" + std::to_string(i) + ", shape: {box: [1, 1]}, position: [0, " + std::to_string(0.5 + i) + "]}\n";
   render::analysis::Study def = study(yaml);
-  def.model.collisions = sim::world::CollisionMethod::Sequential;
+  def.model.collisions = sim::core::CollisionMethod::Sequential;
   const render::analysis::StabilityResult held = render::analysis::findBoundary(def);
   MESSAGE(render::analysis::describeFailure(def, held));
   CHECK(held.holdsToLimit);
   CHECK(held.largestStable == 6.0);
-  def.model.collisions = sim::world::CollisionMethod::Isolated;
+  def.model.collisions = sim::core::CollisionMethod::Isolated;
   const render::analysis::StabilityResult isolated = render::analysis::findBoundary(def);
   MESSAGE(render::analysis::describeFailure(def, isolated));
   CHECK(isolated.largestStable < 6.0);
@@ -172,7 +172,7 @@ TEST_CASE("the fewest search brackets the boundary: the value it names holds, th
 
 TEST_CASE("iterations: the fewest sequential iterations that hold a 10-box column within 5 cm, at rest") {
   render::analysis::Study def = study(boxColumn(10, "{parameter: iterations, within: 0.05, to: 64}"));
-  def.model.collisions = sim::world::CollisionMethod::Sequential;
+  def.model.collisions = sim::core::CollisionMethod::Sequential;
   const render::analysis::StabilityResult r = render::analysis::findBoundary(def);
   MESSAGE(render::analysis::describeFailure(def, r));
   REQUIRE_FALSE(r.failsEverywhere);
@@ -191,7 +191,7 @@ TEST_CASE("iterations: the fewest sequential iterations that hold a 10-box colum
 
 TEST_CASE("substeps: soft_step needs more than one substep for a 10-box column, and says where") {
   render::analysis::Study def = study(boxColumn(10, "{parameter: substeps, within: 0.05, to: 16}"));
-  def.model.collisions = sim::world::CollisionMethod::SoftStep;
+  def.model.collisions = sim::core::CollisionMethod::SoftStep;
   const render::analysis::StabilityResult r = render::analysis::findBoundary(def);
   const std::string said = render::analysis::describeFailure(def, r);
   MESSAGE(said);
@@ -217,14 +217,14 @@ bodies:
               std::to_string(1.125 * k + 0.5625 * row) + ", " + std::to_string(0.5 + row) + "]}\n";
   render::analysis::Study def = study(yaml);
   CHECK(def.stability.stack);
-  def.model.collisions = sim::world::CollisionMethod::Sequential;
+  def.model.collisions = sim::core::CollisionMethod::Sequential;
   const render::analysis::StabilityResult held = render::analysis::findBoundary(def);
   MESSAGE(render::analysis::describeFailure(def, held));
   CHECK(held.holdsToLimit);
   CHECK(held.largestStable == 12.0);
   // a base-12 pyramid is 78 boxes, the largest run of the search
   CHECK(render::analysis::withParameter(def, 12.0).model.bodies.size() == 1 + 78);
-  def.model.collisions = sim::world::CollisionMethod::Isolated;
+  def.model.collisions = sim::core::CollisionMethod::Isolated;
   const render::analysis::StabilityResult isolated = render::analysis::findBoundary(def);
   MESSAGE(render::analysis::describeFailure(def, isolated));
   CHECK(isolated.largestStable < 3.0);

@@ -45,7 +45,7 @@ TEST_CASE("the spring-bar sweep's work-precision slopes give each integrator's o
                         Case{sim::core::Integrator::Midpoint, 8e-3, 1e-3, 2}, Case{sim::core::Integrator::Rk4, 4e-2, 5e-3, 4}}) {
     std::vector<render::analysis::SweepRow> rows;
     for (double h : render::analysis::parseRange(std::to_string(c.from) + ":" + std::to_string(c.to) + ":4", "--dt"))
-      rows.push_back(render::analysis::runSweepCase(def, {c.method, sim::world::CollisionMethod::Auto, h, 0}, reference, 1));
+      rows.push_back(render::analysis::runSweepCase(def, {c.method, sim::core::CollisionMethod::Auto, h, 0}, reference, 1));
     const double measured = slope(rows);
     MESSAGE(sim::core::integratorName(c.method), ": slope ", measured);
     CHECK(measured == doctest::Approx(c.order).epsilon(0.3 / c.order));
@@ -70,10 +70,10 @@ expect: [{time: 1, body: ball, position: [1, -5], tolerance: 1e-9}]
   CHECK(reference.name == "expect");
   // symplectic Euler's height error is −g h t/2 = −0.05 at h = 0.01: exactly the sweep's error
   const render::analysis::SweepRow row = render::analysis::runSweepCase(
-      def, {sim::core::Integrator::SymplecticEuler, sim::world::CollisionMethod::Auto, 0.01, 0}, reference, 1);
+      def, {sim::core::Integrator::SymplecticEuler, sim::core::CollisionMethod::Auto, 0.01, 0}, reference, 1);
   CHECK(row.error == doctest::Approx(0.05).epsilon(1e-9));
   const render::analysis::SweepRow exact = render::analysis::runSweepCase(
-      def, {sim::core::Integrator::Midpoint, sim::world::CollisionMethod::Auto, 0.01, 0}, reference, 1);
+      def, {sim::core::Integrator::Midpoint, sim::core::CollisionMethod::Auto, 0.01, 0}, reference, 1);
   CHECK(exact.error < 1e-12);
 }
 
@@ -97,12 +97,12 @@ TEST_CASE("a stack sweep: more iterations or substeps leave a 10-box column's to
     yaml += "  - {name: box" + std::to_string(i) + ", shape: {box: [1, 1]}, position: [0, " + std::to_string(0.5 + i) + "]}\n";
   const sim::scene::SceneDef def = sim::yaml::loadSceneText(yaml, "inline.yaml");
   const render::analysis::SweepReference rest{render::analysis::kRestPose, {}};
-  using sim::world::CollisionMethod;
+  using sim::core::CollisionMethod;
   const auto run = [&](CollisionMethod c, int iterations, int substeps) {
     const render::analysis::SweepRow r =
         render::analysis::runSweepCase(def, {sim::core::Integrator::SymplecticEuler, c, def.dt, iterations, substeps}, rest, 1);
-    MESSAGE(sim::world::collisionMethodName(c) << " " << iterations << " it, " << substeps << " substeps: top "
-                                               << r.topDisplacement << " m, farthest " << r.maxDisplacement << " m");
+    MESSAGE(sim::core::collisionMethodName(c) << " " << iterations << " it, " << substeps << " substeps: top "
+                                              << r.topDisplacement << " m, farthest " << r.maxDisplacement << " m");
     // the error of a stack sweep is its top body's displacement, the farthest body's at least that
     CHECK(r.error == r.topDisplacement);
     CHECK(r.maxDisplacement >= r.topDisplacement);

@@ -7,7 +7,7 @@
 
 namespace {
 
-using sim::collision::Pose;
+using sim::core::Pose;
 using sim::core::Rot;
 using sim::core::Shape;
 using sim::core::Vec2;

@@ -47,12 +47,12 @@ TEST_CASE("at the defaults, a tilted box dropped on a rough floor comes to rest 
     CAPTURE(d.mu);
     sim::world::World w = build(droppedBox(d.w, d.h, d.tilt, d.spin, d.height, d.cr, d.mu));
     w.start();
-    CHECK(w.collisions == sim::world::CollisionMethod::Event);
+    CHECK(w.collisions == sim::core::CollisionMethod::Event);
     sim::world::EnergyLedger ledger(w);
     w.advanceTo(5.0, &ledger);
     // handed over when contact persisted, well before the end, between the floor and the box
-    CHECK(w.collisions == sim::world::CollisionMethod::Sequential);
-    CHECK(w.methodReason == sim::world::MethodReason::ContactPersisted);
+    CHECK(w.collisions == sim::core::CollisionMethod::Sequential);
+    CHECK(w.methodReason == sim::core::MethodReason::ContactPersisted);
     REQUIRE(w.methodSwitch);
     CHECK(w.methodSwitch->a == 0);
     CHECK(w.methodSwitch->b == 1);
@@ -80,7 +80,7 @@ TEST_CASE("the watch: slow impacts repeated within the window hand over, fast an
       "1]}}}\n  - {name: ball, shape: {circle: 0.1}, position: [0, 0.12]}\n");
   rattle.advanceTo(1.0);
   REQUIRE(rattle.methodSwitch);
-  CHECK(rattle.methodSwitch->how == sim::world::Persistence::Rattling);
+  CHECK(rattle.methodSwitch->how == sim::core::Persistence::Rattling);
   // its switch comes at the end of the step of the impact that made four within the window, on the
   // step grid, and no three impacts before it were within a window
   std::vector<double> times;
@@ -95,8 +95,8 @@ TEST_CASE("the watch: slow impacts repeated within the window hand over, fast an
 
   // Newton's cradle: the balls touch from the start and strike each other, but no force presses them
   // together and their impacts are fast: it stays with event, whose closed forms it keeps
-  const scene_text::CradleRun cradle = scene_text::runCradle(sim::world::CollisionMethod::Auto);
-  CHECK(cradle.world.collisions == sim::world::CollisionMethod::Event);
+  const scene_text::CradleRun cradle = scene_text::runCradle(sim::core::CollisionMethod::Auto);
+  CHECK(cradle.world.collisions == sim::core::CollisionMethod::Event);
   CHECK_FALSE(cradle.world.methodSwitch);
 
   // a ball thrown along a floor at 5 m/s bounces from 1 m at c_r 0.9: isolated impacts, far apart

@@ -84,7 +84,7 @@ RunResult runFreeScene(const std::string& yaml, double cr, double until) {
     FAIL_CHECK("the event method stopped at t = " << w.time << " after " << w.impacts.size()
                                                   << " impulses: " << std::string(e.what()));
   }
-  CHECK(w.collisions == sim::world::CollisionMethod::Event);
+  CHECK(w.collisions == sim::core::CollisionMethod::Event);
   checkRestitutionLaw(w, cr, speed);
   CHECK(obs.dp <= 1e-9);
   CHECK(obs.dl <= 1e-9);
@@ -325,7 +325,7 @@ TEST_CASE("the event method never tunnels, and its times of impact are exact") {
 }
 
 TEST_CASE("Newton's cradle under event: the last ball leaves at the striker's speed, the others rest") {
-  const scene_text::CradleRun r = scene_text::runCradle(sim::world::CollisionMethod::Event);
+  const scene_text::CradleRun r = scene_text::runCradle(sim::core::CollisionMethod::Event);
   const sim::world::World& w = r.world;
   const sim::core::Vec2 p0 = r.p0;
   const double e0 = r.e0;

@@ -147,7 +147,7 @@ class StandWatch : public sim::world::StepObserver {
 
 TEST_CASE("isolated: the 10-box stack does not stand (the known failure of one impulse per contact)") {
   sim::world::World w = build(boxStack("isolated"));
-  REQUIRE(w.collisions == sim::world::CollisionMethod::Isolated);
+  REQUIRE(w.collisions == sim::core::CollisionMethod::Isolated);
   StandWatch watch(w, 10);
   bool diverged = false;
   try {
@@ -237,7 +237,7 @@ TEST_CASE("isolated: the lowest speed at which the thin body tunnels through the
 }
 
 TEST_CASE("Newton's cradle under isolated: momentum kept, the energy bounded") {
-  const scene_text::CradleRun r = scene_text::runCradle(sim::world::CollisionMethod::Isolated);
+  const scene_text::CradleRun r = scene_text::runCradle(sim::core::CollisionMethod::Isolated);
   const sim::world::World& w = r.world;
   const sim::core::Vec2 p0 = r.p0;
   const double e0 = r.e0, e1 = r.e1;

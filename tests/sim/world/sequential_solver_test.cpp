@@ -79,7 +79,7 @@ class StandWatch : public sim::world::StepObserver {
 void checkStands(const std::string& yaml, const char* name, size_t bodies) {
   sim::world::World w = build(yaml);
   REQUIRE(w.bodies.size() == bodies);
-  REQUIRE(w.collisions == sim::world::CollisionMethod::Sequential);
+  REQUIRE(w.collisions == sim::core::CollisionMethod::Sequential);
   const int top = static_cast<int>(w.bodies.size()) - 1;
   StandWatch watch(w, top);
   const auto t0 = std::chrono::steady_clock::now();
@@ -300,7 +300,7 @@ TEST_CASE("sequential: the lowest tunneling speed, against the geometry; fast bo
 }
 
 TEST_CASE("Newton's cradle under sequential: momentum kept, the energy bounded") {
-  const scene_text::CradleRun r = scene_text::runCradle(sim::world::CollisionMethod::Sequential);
+  const scene_text::CradleRun r = scene_text::runCradle(sim::core::CollisionMethod::Sequential);
   const sim::world::World& w = r.world;
   const sim::core::Vec2 p0 = r.p0;
   const double e0 = r.e0, e1 = r.e1;

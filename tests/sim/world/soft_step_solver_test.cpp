@@ -62,7 +62,7 @@ const char* const kPrecisions[] = {"double", "float"};
 
 Held runPile(const std::string& yaml, const std::vector<sim::core::Vec2>& rest, double seconds) {
   sim::world::World w = build(yaml);
-  REQUIRE(w.collisions == sim::world::CollisionMethod::SoftStep);
+  REQUIRE(w.collisions == sim::core::CollisionMethod::SoftStep);
   w.advanceTo(seconds);
   Held h;
   for (size_t i = 1; i < w.bodies.size(); ++i) {

@@ -269,13 +269,13 @@ TEST_CASE("auto builds a stack: events until a contact persists, then the stack 
   std::vector<double> restX;
   for (const sim::core::Body& b : w.bodies) restX.push_back(b.x.x());
   w.start();
-  CHECK(w.collisions == sim::world::CollisionMethod::Event);
+  CHECK(w.collisions == sim::core::CollisionMethod::Event);
   CHECK_FALSE(w.methodSwitch);
   w.advanceTo(10.0);
   // the switch, reported: which method, why, between which bodies and from when (a step's end, as
   // the lowest row lands and rattles on the ground, before 1 s and before impacts pile up)
-  CHECK(w.collisions == sim::world::CollisionMethod::Sequential);
-  CHECK(w.methodReason == sim::world::MethodReason::ContactPersisted);
+  CHECK(w.collisions == sim::core::CollisionMethod::Sequential);
+  CHECK(w.methodReason == sim::core::MethodReason::ContactPersisted);
   REQUIRE(w.methodSwitch);
   CHECK(w.methodSwitch->a == 0);
   CHECK(w.methodSwitch->b >= 1);
@@ -298,5 +298,5 @@ TEST_CASE("auto builds a stack: events until a contact persists, then the stack 
   // named explicitly, event keeps to itself and gives up as before
   sim::world::World event = sim::scene::buildWorld(sim::yaml::loadSceneText(droppedPile("event"), "inline.yaml"));
   CHECK_THROWS_AS(event.advanceTo(10.0), sim::world::ImpactsPileUp);
-  CHECK(event.collisions == sim::world::CollisionMethod::Event);
+  CHECK(event.collisions == sim::core::CollisionMethod::Event);
 }

@@ -101,7 +101,7 @@ TEST_CASE("the potential energy's gradient is minus the force, and its rate unde
   std::vector<Body> bodies = twoBodies();
   ForceSet forces;
   forces.gravity = Vec3(0.5, 0, -9.81);
-  forces.springs.push_back({0, Vec3(0.1, 0.2, 0.3), kWorldAnchor, Vec3(1, 1, 1), 30.0, 0.4, 0.0});
+  forces.springs.push_back({0, Vec3(0.1, 0.2, 0.3), sim::core::kWorldAnchor, Vec3(1, 1, 1), 30.0, 0.4, 0.0});
   forces.springs.push_back({0, Vec3(-0.1, 0.2, -0.3), 1, Vec3(0, 0, 0.3), 40.0, 0.5, 0.0});
   const Wrenches w = at(forces, bodies);
   const double e = 1e-6;

@@ -93,7 +93,7 @@ TEST_CASE("advanceWithin takes the run's own steps up to a time between them, ne
 TEST_CASE("a state that stops being finite is an error naming the time and the body") {
   // a stiff spring on the second body under explicit Euler: h ω = 10, |state| grows tenfold a step
   World w = fixtures3d::springChain(Integrator::ExplicitEuler, 0.01);
-  w.forces.springs.push_back({1, Vec3::Zero(), kWorldAnchor, Vec3::Zero(), 1e6 * w.bodies[1].mass, 0.0, 0.0});
+  w.forces.springs.push_back({1, Vec3::Zero(), sim::core::kWorldAnchor, Vec3::Zero(), 1e6 * w.bodies[1].mass, 0.0, 0.0});
   try {
     w.advanceTo(100.0);
     FAIL("no divergence");
