@@ -10,9 +10,6 @@ namespace render::analysis {
 using sim::world::World;
 using namespace sim::core;
 using namespace sim::world;
-using sim::core::Body;
-using sim::core::Pose;
-using sim::core::Vec2;
 
 namespace {
 

@@ -17,9 +17,7 @@
 
 namespace {
 
-using render::draw::Color;
-using render::draw::Image;
-using render::draw::Role;
+using namespace render::draw;
 using sim::core::Vec2;
 using Clock = std::chrono::steady_clock;
 

@@ -12,9 +12,6 @@
 #include "sim/world/diagnostics.h"
 
 namespace render::frame {
-using render::draw::Camera;
-using render::draw::Canvas;
-using render::draw::Role;
 using sim::core::Vec2;
 using namespace render::draw;
 using namespace render::scene;

@@ -19,12 +19,6 @@
 #include "sim/debug/separating_axes.h"
 
 namespace render::frame {
-using render::draw::Bounds;
-using render::draw::Camera;
-using render::draw::Canvas;
-using render::draw::DrawList;
-using render::draw::Pen;
-using render::draw::Role;
 using sim::core::Vec2;
 using namespace render::draw;
 using namespace render::scene;

@@ -4,10 +4,6 @@
 #include "sim/debug/describe.h"
 
 namespace render::frame {
-using render::draw::Canvas;
-using render::draw::DrawList;
-using render::draw::Pen;
-using render::draw::Role;
 using sim::core::Vec2;
 using namespace render::draw;
 

@@ -7,9 +7,6 @@
 #include "sim/core/settings.h"
 
 namespace render::frame {
-using render::draw::Canvas;
-using render::draw::Pen;
-using render::draw::Role;
 using namespace render::draw;
 
 using sim::core::Vec2;

@@ -12,10 +12,6 @@
 #include "render/jobs/interrupt.h"
 
 namespace render::frame {
-using render::draw::Camera;
-using render::draw::Canvas;
-using render::draw::Pen;
-using render::draw::Role;
 using sim::core::Vec2;
 using namespace render::draw;
 

@@ -7,9 +7,7 @@
 
 namespace render::frame {
 
-using render::draw::Camera;
-using render::draw::Canvas;
-using render::draw::Role;
+using namespace render::draw;
 using sim::core::Vec2;
 namespace {
 

@@ -6,10 +6,6 @@
 #include "render/frame/scene_run.h"
 
 namespace render::frame {
-using render::draw::Bounds;
-using render::draw::Camera;
-using render::draw::DrawList;
-using render::draw::Role;
 using sim::core::Vec2;
 using namespace render::draw;
 

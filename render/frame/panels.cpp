@@ -8,10 +8,6 @@
 #include "render/scene/render_def.h"
 
 namespace render::frame {
-using render::draw::Image;
-using render::draw::Role;
-using render::draw::Style;
-using render::draw::TextRenderer;
 using namespace render::draw;
 
 namespace {

@@ -5,11 +5,6 @@
 #include "render/jobs/json_writer.h"
 
 namespace render::frame {
-using render::draw::Camera;
-using render::draw::DrawList;
-using render::draw::Pen;
-using render::draw::Role;
-using render::draw::Style;
 using sim::core::Vec2;
 using namespace render::draw;
 

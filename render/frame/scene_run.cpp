@@ -11,13 +11,6 @@
 #include "sim/scene/scene_build.h"
 
 namespace render::frame {
-using render::draw::Camera;
-using render::draw::DrawList;
-using render::draw::GlCanvas;
-using render::draw::GlContext;
-using render::draw::Image;
-using render::draw::Role;
-using render::draw::TextRenderer;
 using namespace render::draw;
 using namespace render::scene;
 

@@ -13,10 +13,6 @@
 #include "sim/scene/scene_build.h"
 
 namespace render::frame {
-using render::draw::Camera;
-using render::draw::Canvas;
-using render::draw::Pen;
-using render::draw::Role;
 using sim::core::Vec2;
 using namespace render::draw;
 using namespace render::scene;

@@ -8,10 +8,6 @@
 #include "sim/yaml/scene_error.h"
 
 namespace render::frame {
-using render::draw::Image;
-using render::draw::Role;
-using render::draw::Style;
-using render::draw::TextRenderer;
 using namespace render::draw;
 using namespace render::scene;
 

@@ -7,10 +7,6 @@
 #include "render/frame/quantity_text.h"
 
 namespace render::frame {
-using render::draw::Camera;
-using render::draw::Canvas;
-using render::draw::Pen;
-using render::draw::Role;
 using sim::core::Vec2;
 using namespace render::draw;
 

@@ -12,12 +12,7 @@
 #include "render/scene/scene_style.h"
 
 namespace render::frame3d {
-using render::draw::Canvas;
-using render::draw::Pen;
-using render::draw::Role;
-using render::draw3d::Camera3d;
-using render::draw3d::Canvas3d;
-using render::draw3d::Mesh;
+using namespace render::draw;
 using render::scene3d::Arrow3dDef;
 using sim::core::Vec2;
 using sim::world3d::Vec3;

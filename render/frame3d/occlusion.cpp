@@ -4,9 +4,7 @@
 #include <cmath>
 
 namespace render::frame3d {
-using sim::world3d::Body;
-using sim::world3d::ShapeKind;
-using sim::world3d::Vec3;
+using namespace sim::world3d;
 
 namespace {
 

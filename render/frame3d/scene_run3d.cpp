@@ -7,9 +7,6 @@
 #include "sim/scene3d/scene_build.h"
 
 namespace render::frame3d {
-using render::draw3d::Camera3d;
-using render::draw3d::DrawList3d;
-using render::draw3d::GlCanvas3d;
 using namespace render::draw3d;
 
 namespace {

@@ -21,7 +21,6 @@
 #include "render/video/still_draw_lists.h"
 
 namespace render::video {
-using render::draw::Image;
 using render::frame::PixelDrawList;
 using render::frame::SceneRun;
 using namespace render::trace;
@@ -29,9 +28,6 @@ using namespace render::jobs;
 using namespace render::draw;
 using namespace render::frame;
 using namespace render::scene;
-using render::draw::DrawList;
-using render::draw::GlContext;
-using render::draw::TextRenderer;
 
 namespace {
 

@@ -9,9 +9,6 @@ using render::frame::PixelDrawList;
 using render::frame::SceneRun;
 using namespace render::draw;
 using namespace render::frame;
-using render::draw::DrawList;
-using render::draw::Style;
-using render::draw::TextRenderer;
 
 PixelDrawList frameDrawList(const Stills& stills, size_t variant, const DrawList& list, TextRenderer& text) {
   const render::scene::Scene& scene = stills.scenes[variant];

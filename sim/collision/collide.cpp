@@ -7,9 +7,6 @@
 #include "sim/core/settings.h"
 
 namespace sim::collision {
-using sim::core::Pose;
-using sim::core::Shape;
-using sim::core::Vec2;
 using namespace sim::core;
 
 namespace {

@@ -3,10 +3,6 @@
 #include <limits>
 
 namespace sim::collision {
-using sim::core::Pose;
-using sim::core::Shape;
-using sim::core::ShapePart;
-using sim::core::Vec2;
 using namespace sim::core;
 
 void collideParts(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, double margin, std::vector<PartManifold>& out,

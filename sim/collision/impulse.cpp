@@ -3,9 +3,6 @@
 #include <algorithm>
 
 namespace sim::collision {
-using sim::core::Body;
-using sim::core::cross;
-using sim::core::Vec2;
 using namespace sim::core;
 
 double inverseEffectiveMass(const Body& a, const Body& b, const Vec2& r, const Vec2& n) {

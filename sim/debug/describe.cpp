@@ -4,20 +4,11 @@
 #include "sim/debug/part_outline.h"
 
 namespace sim::debug {
-using sim::core::Body;
-using sim::core::Vec2;
-using sim::debug_draw::DebugDraw;
-using sim::debug_draw::DrawRole;
-using sim::debug_draw::DrawStyle;
-using sim::world::ImpactRecord;
-using sim::world::ImpulseEvent;
-using sim::world::World;
+using namespace sim::debug_draw;
 using namespace sim::world;
 using namespace sim::collision;
 using namespace sim::core;
 using sim::collision::Manifold;
-using sim::core::Pose;
-using sim::core::ShapePart;
 
 namespace {
 

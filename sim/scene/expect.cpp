@@ -8,13 +8,10 @@
 #include "sim/world/energy_ledger.h"
 
 namespace sim::scene {
-using sim::core::CheckResult;
-using sim::core::Vec2;
 using sim::world::World;
 using namespace sim::core;
 using namespace sim::collision;
 using namespace sim::world;
-using sim::core::Body;
 
 namespace {
 

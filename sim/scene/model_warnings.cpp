@@ -3,13 +3,8 @@
 #include "sim/world/method_models.h"
 
 namespace sim::scene {
-using sim::core::Vec2;
+using namespace sim::core;
 using namespace sim::world;
-using sim::core::bit;
-using sim::core::CollisionMethod;
-using sim::core::collisionMethodName;
-using sim::core::phenomenaText;
-using sim::core::Phenomenon;
 
 namespace {
 

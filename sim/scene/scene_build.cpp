@@ -3,17 +3,10 @@
 #include <stdexcept>
 
 namespace sim::scene {
-using sim::core::DragDef;
-using sim::core::Shape;
-using sim::core::Vec2;
 using sim::world::World;
 using namespace sim::core;
 using namespace sim::collision;
 using namespace sim::world;
-using sim::core::Body;
-using sim::core::Pose;
-using sim::core::Rot;
-using sim::core::ShapePart;
 
 int SceneDef::bodyIndex(const std::string& n) const {
   for (size_t i = 0; i < bodies.size(); ++i)

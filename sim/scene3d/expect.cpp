@@ -11,11 +11,6 @@
 
 namespace sim::scene3d {
 using sim::core::CheckResult;
-using sim::world3d::Body;
-using sim::world3d::FreeBodyMeasures;
-using sim::world3d::Quat;
-using sim::world3d::Vec3;
-using sim::world3d::World;
 using namespace sim::world3d;
 
 namespace {

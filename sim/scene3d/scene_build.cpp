@@ -2,9 +2,6 @@
 
 namespace sim::scene3d {
 using sim::core::DragDef;
-using sim::world3d::Body;
-using sim::world3d::MassProperties;
-using sim::world3d::World;
 using namespace sim::world3d;
 
 int SceneDef::bodyIndex(const std::string& name) const {

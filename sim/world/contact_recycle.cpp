@@ -8,9 +8,6 @@
 
 namespace sim::world {
 using sim::collision::Manifold;
-using sim::core::Pose;
-using sim::core::Rot;
-using sim::core::Vec2;
 using namespace sim::core;
 
 namespace {

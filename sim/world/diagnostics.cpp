@@ -3,11 +3,8 @@
 #include <cstring>
 
 namespace sim::world {
-using sim::core::Body;
-using sim::core::Vec2;
 using namespace sim::core;
 using namespace sim::collision;
-using sim::core::cross;
 
 KineticEnergy kineticEnergy(const Body& b) {
   if (b.isStatic) return {};

@@ -29,16 +29,8 @@
 namespace sim::world {
 using sim::collision::Aabb;
 using sim::collision::Manifold;
-using sim::core::Body;
-using sim::core::Pose;
-using sim::core::Rates;
-using sim::core::States;
-using sim::core::Vec2;
 using namespace sim::core;
 using namespace sim::collision;
-using sim::core::BodyState;
-using sim::core::cross;
-using sim::core::Shape;
 
 namespace {
 

@@ -4,9 +4,7 @@
 
 namespace sim::world {
 
-using sim::core::CollisionMethod;
-using sim::core::has;
-using sim::core::MethodModel;
+using namespace sim::core;
 const MethodModel& methodModel(CollisionMethod method) {
   if (const MethodModel* row = sim::core::findMethod(kMethodModels, method)) return *row;
   throw std::logic_error("methodModel: 'auto' has no row of its own; resolve it first");

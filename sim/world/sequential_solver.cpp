@@ -10,14 +10,8 @@
 #include "sim/world/world.h"
 
 namespace sim::world {
-using sim::core::Body;
-using sim::core::Pose;
-using sim::core::Rot;
-using sim::core::States;
-using sim::core::Vec2;
 using namespace sim::core;
 using namespace sim::collision;
-using sim::core::cross;
 
 namespace {
 

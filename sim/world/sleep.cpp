@@ -8,9 +8,6 @@
 #include "sim/core/settings.h"
 
 namespace sim::world {
-using sim::core::Body;
-using sim::core::ForceSet;
-using sim::core::Vec2;
 using namespace sim::core;
 
 namespace {

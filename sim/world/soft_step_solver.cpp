@@ -28,13 +28,8 @@
 #include "sim/world/world.h"
 
 namespace sim::world {
-using sim::core::Body;
-using sim::core::Rates;
-using sim::core::States;
-using sim::core::Vec2;
 using namespace sim::core;
 using namespace sim::collision;
-using sim::core::BodyState;
 
 namespace {
 

@@ -12,24 +12,8 @@
 #include "sim/world/worker_pool.h"
 
 namespace sim::world {
-using sim::collision::Aabb;
-using sim::collision::Manifold;
-using sim::collision::PlacedShape;
-using sim::core::bit;
-using sim::core::Body;
-using sim::core::CollisionMethod;
-using sim::core::has;
-using sim::core::MethodReason;
-using sim::core::MethodSwitch;
-using sim::core::Phenomenon;
-using sim::core::Rates;
-using sim::core::States;
-using sim::core::Timeline;
-using sim::core::Vec2;
 using namespace sim::core;
 using namespace sim::collision;
-using sim::core::cross;
-using sim::core::Shape;
 
 Diverged::Diverged(double t, int b)
     : std::runtime_error("state is no longer finite at t = " + std::to_string(t)), time(t), body(b) {}

@@ -10,9 +10,7 @@
 #include "sim/world3d/method_models3d.h"
 
 namespace sim::world3d {
-using sim::core::CollisionMethod;
-using sim::core::MethodReason;
-using sim::core::MethodSwitch;
+using namespace sim::core;
 namespace core = sim::core;
 
 Diverged::Diverged(double t, int b)

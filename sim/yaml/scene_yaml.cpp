@@ -16,18 +16,10 @@
 #include "sim/yaml/yaml_reader.h"
 
 namespace sim::yaml {
-using sim::core::Vec2;
 using namespace sim::core;
 using namespace sim::world;
 using namespace sim::scene;
 using sim::collision::overlappingPart;
-using sim::core::CollisionMethod;
-using sim::core::collisionMethodFromName;
-using sim::core::collisionMethodName;
-using sim::core::has;
-using sim::core::kCollisionMethodNames;
-using sim::core::Rot;
-using sim::core::Shape;
 
 namespace {
 

@@ -17,15 +17,11 @@
 
 namespace sim::yaml3d {
 using sim::world3d::Quat;
-using sim::yaml::describe;
-using sim::yaml::OtherKeys;
-using sim::yaml::SceneSource;
+using namespace sim::yaml;
 using namespace sim::scene3d;
 using namespace sim::world3d;
 using sim::core::stepsOverLimit;
 using sim::world3d::Shape;
-using sim::yaml::Keys;
-using sim::yaml::with;
 
 namespace {
 

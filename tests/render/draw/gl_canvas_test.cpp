@@ -6,11 +6,7 @@
 
 #include "render/draw/gl_canvas.h"
 
-using render::draw::Camera;
-using render::draw::Color;
-using render::draw::Image;
-using render::draw::Pen;
-using render::draw::Role;
+using namespace render::draw;
 using sim::core::Vec2;
 
 namespace {

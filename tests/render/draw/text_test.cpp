@@ -3,9 +3,7 @@
 
 #include "render/draw/text.h"
 
-using render::draw::Anchor;
-using render::draw::Color;
-using render::draw::Image;
+using namespace render::draw;
 
 TEST_CASE("UTF-8 decodes to code points; malformed bytes become U+FFFD") {
   CHECK(render::draw::decodeUtf8("aω") == U"aω");

@@ -6,12 +6,7 @@
 #include <doctest/doctest.h>
 
 using namespace render::draw3d;
-using render::draw::Color;
-using render::draw::GlContext;
-using render::draw::Image;
-using render::draw::Role;
-using render::draw::Style;
-using render::draw::TextRenderer;
+using namespace render::draw;
 using sim::core::Vec2;
 using sim::world3d::Mat3;
 using sim::world3d::Vec3;

@@ -8,13 +8,8 @@
 #include "render/draw/draw_list.h"
 #include "render/draw/text.h"
 
-using render::draw::Camera;
-using render::draw::DrawList;
-using render::draw::Pen;
-using render::draw::Role;
-using render::frame::LabelPlacer;
-using render::frame::PixelBox;
-using render::frame::PlacedText;
+using namespace render::draw;
+using namespace render::frame;
 using sim::core::Vec2;
 
 namespace {

@@ -8,9 +8,7 @@
 #include "support/drawn_scene.h"
 #include "support/render_block.h"
 
-using render_block::expectError;
-using render_block::kBody;
-using render_block::renderOf;
+using namespace render_block;
 
 TEST_CASE("no question, no answer, no answer card, and no panel is ever the answer, by default") {
   const render::scene::PollDef p = renderOf("").poll;

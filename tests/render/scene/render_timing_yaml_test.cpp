@@ -7,9 +7,7 @@
 #include "support/drawn_scene.h"
 #include "support/render_block.h"
 
-using render_block::expectError;
-using render_block::kBody;
-using render_block::renderOf;
+using namespace render_block;
 
 TEST_CASE("timing and text are off by default") {
   const render::scene::RenderDef r = renderOf("");

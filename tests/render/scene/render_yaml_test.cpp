@@ -11,9 +11,7 @@
 #include "support/render_block.h"
 
 using render::draw::Role;
-using render_block::expectError;
-using render_block::kBody;
-using render_block::renderOf;
+using namespace render_block;
 
 TEST_CASE("labels and contacts: auto (the default), or true and false as written") {
   const render::scene::RenderDef a = renderOf("render: {labels: auto, contacts: auto}\n");

@@ -18,11 +18,7 @@
 #include "sim/yaml/scene_source.h"
 #include "support/drawn_scene.h"
 
-using render::video::FrameSize;
-using render::video::LectureRequest;
-using render::video::RenderPlan;
-using render::video::StillRequest;
-using render::video::VideoRequest;
+using namespace render::video;
 
 namespace {
 

@@ -7,10 +7,7 @@
 
 namespace {
 
-using sim::core::Pose;
-using sim::core::Rot;
-using sim::core::Shape;
-using sim::core::Vec2;
+using namespace sim::core;
 
 // a T: a 0.1 × 1 handle and a 0.4 × 0.2 head on its top end
 Shape hammer() {

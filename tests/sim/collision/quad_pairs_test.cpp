@@ -17,10 +17,7 @@ namespace {
 
 using sim::collision::Manifold;
 using sim::collision::PlacedShape;
-using sim::core::Pose;
-using sim::core::Rot;
-using sim::core::Shape;
-using sim::core::Vec2;
+using namespace sim::core;
 
 // the same bits, field by field (the points past count too: they are stored in the contacts)
 bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }

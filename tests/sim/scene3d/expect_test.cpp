@@ -16,9 +16,6 @@
 using namespace sim::scene3d;
 using namespace sim::world3d;
 using sim::core::CheckResult;
-using sim::world3d::Body;
-using sim::world3d::Vec3;
-using sim::world3d::World;
 
 namespace {
 

@@ -12,9 +12,7 @@
 
 namespace {
 
-using scene_text::build;
-using scene_text::num;
-using scene_text::vec;
+using namespace scene_text;
 
 constexpr double kPi = 3.14159265358979323846;
 

@@ -17,10 +17,7 @@
 
 namespace {
 
-using scene_text::build;
-using scene_text::num;
-using scene_text::randomBody;
-using scene_text::vec;
+using namespace scene_text;
 
 // checks after every finished step: Σ m v and Σ x × m v + I ω about the origin stay what they were
 class Conservation : public sim::world::StepObserver {

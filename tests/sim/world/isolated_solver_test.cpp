@@ -16,10 +16,7 @@
 
 namespace {
 
-using scene_text::build;
-using scene_text::num;
-using scene_text::randomBody;
-using scene_text::vec;
+using namespace scene_text;
 
 // the fastest any material point of the scene moves at the start, m/s: Σ |v| + |ω| R
 double speedScale(const sim::world::World& w) {

@@ -17,9 +17,7 @@
 
 namespace {
 
-using scene_text::build;
-using scene_text::num;
-using scene_text::vec;
+using namespace scene_text;
 
 const char* kSolverSettings =
     "world: {gravity: [0, -10], friction: 0.6, restitution: 0}\n"

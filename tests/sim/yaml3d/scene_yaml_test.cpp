@@ -13,11 +13,7 @@
 
 using namespace sim::scene3d;
 using sim::core::kWorldAnchor;
-using sim::world3d::Integrator;
-using sim::world3d::Mat3;
-using sim::world3d::Quat;
-using sim::world3d::Vec3;
-using sim::world3d::World;
+using namespace sim::world3d;
 
 namespace {
 
