@@ -1,7 +1,6 @@
 #include "render/golden/golden_run3d.h"
 
 #include <algorithm>
-#include <cstring>
 #include <memory>
 
 #include "render/draw/text.h"
@@ -10,25 +9,9 @@
 #include "render/golden/drawn_frame3d.h"
 #include "render/golden/sample3d.h"
 #include "render/video/output_names.h"
+#include "sim/world3d/diagnostics.h"
 
 namespace render::golden {
-
-unsigned long long stateHash3d(const sim::world3d::World& world) {
-  unsigned long long h = 1469598103934665603ull;
-  auto mix = [&h](double value) {
-    unsigned long long bits;
-    std::memcpy(&bits, &value, sizeof bits);
-    for (int k = 0; k < 8; ++k) {
-      h ^= (bits >> (8 * k)) & 0xffu;
-      h *= 1099511628211ull;
-    }
-  };
-  for (const sim::world3d::Body& b : world.bodies)
-    for (double x : {b.x.x(), b.x.y(), b.x.z(), b.q.w(), b.q.x(), b.q.y(), b.q.z(), b.v.x(), b.v.y(), b.v.z(), b.omega.x(),
-                     b.omega.y(), b.omega.z()})
-      mix(x);
-  return h;
-}
 
 GoldenRun runGolden(const render::scene3d::Scene& original, const GoldenDef& golden, const GoldenTimes* asked, bool pixels) {
   render::scene3d::Scene scene = original;
@@ -55,7 +38,7 @@ GoldenRun runGolden(const render::scene3d::Scene& original, const GoldenDef& gol
   for (double t : times.checkpoints) {
     const render::draw3d::DrawList3d list = sceneRun.drawListAt(t);
     const sim::world3d::World& world = sceneRun.world();
-    Checkpoint c{t, stateHash3d(world), {}};
+    Checkpoint c{t, sim::world3d::stateHash(world), {}};
     for (const sim::world3d::Body& b : world.bodies) c.bodies.push_back(sampleOf(b, world.time));
     run.checkpoints.push_back(std::move(c));
     if (!std::binary_search(times.frames.begin(), times.frames.end(), t)) continue;

@@ -14,7 +14,4 @@ namespace render::golden {
 // sim::world3d::Diverged, std::runtime_error (GL).
 GoldenRun runGolden(const render::scene3d::Scene& scene, const GoldenDef& golden, const GoldenTimes* times, bool pixels);
 
-// FNV-1a over the raw bits of every body's x, q, v and ω (sim::world::stateHash's, in 3D)
-unsigned long long stateHash3d(const sim::world3d::World& world);
-
 }  // namespace render::golden

@@ -1,6 +1,6 @@
 #include "sim/world/diagnostics.h"
 
-#include <cstring>
+#include "sim/core/bit_hash.h"
 
 namespace sim::world {
 using namespace sim::core;
@@ -33,20 +33,10 @@ double angularMomentum(const World& world) {
 }
 
 unsigned long long stateHash(const World& world) {
-  // FNV-1a over the raw bits
-  unsigned long long h = 1469598103934665603ull;
-  auto mix = [&h](double value) {
-    unsigned long long bits;
-    std::memcpy(&bits, &value, sizeof bits);
-    for (int k = 0; k < 8; ++k) {
-      h ^= (bits >> (8 * k)) & 0xffu;
-      h *= 1099511628211ull;
-    }
-  };
-  for (const Body& b : world.bodies) {
-    mix(b.x.x()), mix(b.x.y()), mix(b.angle), mix(b.v.x()), mix(b.v.y()), mix(b.omega);
-  }
-  return h;
+  sim::core::BitHash h;
+  for (const Body& b : world.bodies)
+    for (double x : {b.x.x(), b.x.y(), b.angle, b.v.x(), b.v.y(), b.omega}) h.mix(x);
+  return h.value();
 }
 
 }  // namespace sim::world

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sim/core/bit_hash.h"
+
 namespace sim::world3d {
 
 KineticEnergy kineticEnergy(const Body& b) { return {0.5 * b.mass * b.v.squaredNorm(), 0.5 * b.omega.dot(b.angularMomentum())}; }
@@ -30,6 +32,15 @@ double quaternionDrift(const World& world) {
   double drift = 0.0;
   for (const Body& b : world.bodies) drift = std::max(drift, std::abs(b.q.norm() - 1.0));
   return drift;
+}
+
+unsigned long long stateHash(const World& world) {
+  sim::core::BitHash h;
+  for (const Body& b : world.bodies)
+    for (double x : {b.x.x(), b.x.y(), b.x.z(), b.q.w(), b.q.x(), b.q.y(), b.q.z(), b.v.x(), b.v.y(), b.v.z(), b.omega.x(),
+                     b.omega.y(), b.omega.z()})
+      h.mix(x);
+  return h.value();
 }
 
 }  // namespace sim::world3d

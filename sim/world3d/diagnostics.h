@@ -24,6 +24,8 @@ Energy energy(const World& world);
 Vec3 linearMomentum(const World& world);
 // about the world origin: Σ x × m v + I ω
 Vec3 angularMomentum(const World& world);
+// a hash of every body's pose and velocity bits (x, q, v, ω): equal hashes mean bit-identical runs
+unsigned long long stateHash(const World& world);
 // the largest | |q| − 1 | over the bodies
 double quaternionDrift(const World& world);
 
