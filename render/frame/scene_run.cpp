@@ -79,6 +79,7 @@ void SceneRun::picturesAt(const std::vector<double>& instants, int strobe,
   if (strobe > 0 && run_.runWorld().time > 0.0) throw std::logic_error("a strobe image needs a fresh run");
   std::vector<std::vector<DrawList>> ghosts(instants.size(), std::vector<DrawList>(strobe));
   for (const Need& n : needsOf(instants, strobe)) {
+    takeAlong(n.time);
     const State& state = run_.reach(n.time);
     if (n.ghost >= 0) {
       ghosts[n.instant][n.ghost] = ghostOf(state, n.ghost, strobe);

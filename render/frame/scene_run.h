@@ -36,8 +36,11 @@ class SceneRun {
   // a picture taken as the run passes instant t, with `strobe` ghosts: exactly what a fresh run's
   // frameAt(t, strobe) paints, without a video's slow-motion note. A video's poster is drawn so from
   // the video's own run, and the scene is stepped once for both. Set before the first frame; `shot`
-  // is told the picture by the first frameAt(t′, frame) with t′ ≥ t, or else by finish().
+  // is told the picture by the first picture asked at t′ ≥ t (frameAt, drawListAt, framesAt, …),
+  // by takePicturesAlong(), or by finish().
   void pictureAlong(double t, int strobe, std::function<void(render::draw::Image)> shot);
+  // the pictures along the run not yet taken, taken: the run stepped only as far as they need
+  void takePicturesAlong() { takeAlong(run_.end()); }
 
   // the frame at time t, which must not be earlier than the last one; with `strobe` > 0, that many
   // earlier poses at t·i/strobe (i = 0 … strobe − 1) drawn fading behind the present one, which

@@ -1,6 +1,5 @@
 #include "render/frame/survey.h"
 
-#include "render/frame/shared_scales.h"
 #include <algorithm>
 #include <cmath>
 #include <optional>

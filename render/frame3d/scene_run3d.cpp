@@ -95,6 +95,7 @@ render::draw::Image SceneRun3d::answerCard() {
 }
 
 DrawList3d SceneRun3d::drawListAt(double t) {
+  takeAlong(t);
   const State& state = run_.reach(t);
   DrawList3d list;
   painter_.paint(state.world, state.history, list);

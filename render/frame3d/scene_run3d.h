@@ -32,8 +32,11 @@ class SceneRun3d final : public render::frame::FrameSource {
   void finish();
   // a picture taken as the run passes instant t: exactly what a fresh run's frameAt(t) paints,
   // without a video's slow-motion note (a video's poster from the video's own run, as SceneRun's).
-  // Set before the first frame; `shot` is told it by the first frameAt(t′, frame) with t′ ≥ t, or by finish().
+  // Set before the first frame; `shot` is told it by the first picture asked at t′ ≥ t (frameAt,
+  // drawListAt), by takePicturesAlong(), or by finish().
   void pictureAlong(double t, std::function<void(render::draw::Image)> shot);
+  // the pictures along the run not yet taken, taken: the run stepped only as far as they need
+  void takePicturesAlong() { takeAlong(run_.end()); }
 
   // the frame at time t, not earlier than the last one. Throws sim::world3d::Diverged.
   render::draw::Image frameAt(double t) override;

@@ -115,7 +115,9 @@ void writeVideo(const PlannedVariantOf<D>& v, const VideoOutputOf<D>& out, bool 
   }
   Progress progress(outputBase(v.scene.model.name, v.scene.model.variant), out.frameCount, !quiet);
   record(run, out.timeMap, out.fps, sinks, [&](long done) { progress.update(done); });
-  run.finish();
+  // the poster, if the frames did not pass it; a trace follows the run to its end
+  run.takePicturesAlong();
+  if (trace) run.finish();
   progress.finish();
   video.finish();
   if (framesDir) framesDir->commit();

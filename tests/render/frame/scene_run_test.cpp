@@ -243,3 +243,32 @@ TEST_CASE("a picture along a run is asked before its first frame") {
   SceneRun listsOnly(v.def, v.camera, v.survey);
   CHECK_THROWS_AS(listsOnly.pictureAlong(1.0, 0, [](render::draw::Image) {}), std::logic_error);
 }
+
+TEST_CASE("a picture along a run is taken by any picture past it, or by takePicturesAlong, never twice") {
+  render::draw::GlContext gl(320, 180);
+  render::draw::TextRenderer text;
+  Variant v = variant("scenes/poll_bar_impulse.yaml", "end");
+  v.def.render.width = 320, v.def.render.height = 180;
+  v.camera = render::frame::cameraFor(v.def, v.survey);
+  SceneRun fresh(v.def, v.camera, v.survey, &gl, &text);
+  const render::draw::Image want = fresh.frameAt(0.5 + 1e-7, 3);
+
+  // a draw list past the instant takes it first (the run never passes a picture it owes)
+  SceneRun run(v.def, v.camera, v.survey, &gl, &text);
+  std::vector<render::draw::Image> got;
+  run.pictureAlong(0.5 + 1e-7, 3, [&](render::draw::Image picture) { got.push_back(std::move(picture)); });
+  (void)run.drawListAt(1.0);
+  REQUIRE(got.size() == 1);
+  CHECK(got[0].rgba == want.rgba);
+  run.takePicturesAlong();
+  run.finish();
+  CHECK(got.size() == 1);
+
+  // takePicturesAlong steps only as far as the picture needs
+  SceneRun early(v.def, v.camera, v.survey, &gl, &text);
+  int taken = 0;
+  early.pictureAlong(0.25, 0, [&](render::draw::Image) { ++taken; });
+  early.takePicturesAlong();
+  CHECK(taken == 1);
+  CHECK(early.runWorld().time <= 0.25 + 1e-12);
+}
