@@ -36,7 +36,7 @@ sim::scene::SceneDef withMethod(sim::scene::SceneDef def, const SweepCase& m) {
 bool hasCollisions(const sim::scene::SceneDef& def) {
   sim::world::World w = sim::scene::buildWorld(def);
   w.start();
-  return w.collisions != sim::core::CollisionMethod::None;
+  return w.collisions() != sim::core::CollisionMethod::None;
 }
 
 }  // namespace
@@ -79,7 +79,7 @@ SweepRow runSweepCase(const sim::scene::SceneDef& scene, const SweepCase& method
   MetricsOptions options;
   options.penetration = def.bodies.size() > 1;
   const RunMetrics m = measureRun(w, def.duration, options);
-  row.method.collisions = w.collisions;
+  row.method.collisions = w.collisions();
   row.steps = w.steps;
   row.finite = m.finite;
   row.energyDrift = m.energyDrift;

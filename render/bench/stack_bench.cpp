@@ -189,12 +189,18 @@ sim::scene::SceneDef sceneOf(const bench::StackLayout& layout, const bench::Stac
   return def;
 }
 
+// a built world solved with at most `width` lanes: the SIMD width is the bench's to choose, not a scene's
+sim::world::World withSimdWidth(sim::world::World built, int width) {
+  sim::world::WorldDef def = built.def();
+  def.simdWidth = width;
+  return sim::world::World(std::move(def), std::move(built.bodies));
+}
+
 class OurRun : public StackRun {
  public:
   OurRun(const bench::StackLayout& layout, const bench::StackSettings& s, const RunOptions& o, sim::core::CollisionMethod method,
          sim::world::Precision precision, double recycle = 0.0)
-      : world_(sim::scene::buildWorld(sceneOf(layout, s, o, method, precision, recycle))), dt_(s.dt) {
-    world_.simdWidth = o.simdWidth;
+      : world_(withSimdWidth(sim::scene::buildWorld(sceneOf(layout, s, o, method, precision, recycle)), o.simdWidth)), dt_(s.dt) {
     world_.start();
   }
   void advance(int steps) override {

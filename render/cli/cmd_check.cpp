@@ -95,26 +95,26 @@ void reportResting(const sim::scene::SceneDef& def, const sim::world::World& w, 
 
 // say when `auto` went from the event method to the stack solver during the run, and why
 void reportSwitch(const sim::scene::SceneDef& def, const sim::world::World& w, std::ostream& out) {
-  if (w.methodSwitch) out << "  switched: " << describeMethodSwitch(def, w) << '\n';
+  if (w.methodSwitch()) out << "  switched: " << describeMethodSwitch(def, w) << '\n';
 }
 
 // with sim: {sleep: true}, how many of the dynamic bodies sleep at the end (sim/world/sleep.h)
 void reportSleep(const sim::world::World& w, std::ostream& out) {
-  if (!w.sleep) return;
+  if (!w.def().sleep) return;
   long dynamic = 0;
   for (const sim::core::Body& b : w.bodies) dynamic += !b.isStatic;
   out << "  sleep: on; " << w.sleepingBodies() << " of " << dynamic << " dynamic bodies asleep at the end";
-  if (w.collisions != sim::core::CollisionMethod::Sequential && w.collisions != sim::core::CollisionMethod::SoftStep)
-    out << " (only the stack solvers sleep; " << sim::core::collisionMethodName(w.collisions) << " does not)";
+  if (w.collisions() != sim::core::CollisionMethod::Sequential && w.collisions() != sim::core::CollisionMethod::SoftStep)
+    out << " (only the stack solvers sleep; " << sim::core::collisionMethodName(w.collisions()) << " does not)";
   out << '\n';
 }
 
 // with sim: {precision: float}, that soft_step solves its contacts in floats
 void reportPrecision(const sim::world::World& w, std::ostream& out) {
-  if (w.precision == sim::world::Precision::Double) return;
-  out << "  precision: " << sim::world::precisionName(w.precision) << " (soft_step's contact solve";
-  if (w.collisions != sim::core::CollisionMethod::SoftStep)
-    out << "; " << sim::core::collisionMethodName(w.collisions) << " solves in doubles";
+  if (w.def().precision == sim::world::Precision::Double) return;
+  out << "  precision: " << sim::world::precisionName(w.def().precision) << " (soft_step's contact solve";
+  if (w.collisions() != sim::core::CollisionMethod::SoftStep)
+    out << "; " << sim::core::collisionMethodName(w.collisions()) << " solves in doubles";
   out << ")\n";
 }
 
@@ -221,7 +221,7 @@ std::vector<std::string> checkCase3d(const OpenScene& scene, const std::string& 
     out << "  FAIL  " << failure << '\n';
     std::cerr << failure << '\n';
   }
-  if (w.methodSwitch) out << "  switched: " << describeMethodSwitch(def, w) << '\n';
+  if (w.methodSwitch()) out << "  switched: " << describeMethodSwitch(def, w) << '\n';
   out << "  " << describeLedger(accountsOf(ledger), namesOf(def)) << '\n';
   if (!failure.empty()) failures.push_back(failure);
   return failures;

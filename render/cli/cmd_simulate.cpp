@@ -67,15 +67,16 @@ void writeTotals(JsonWriter& j, const sim::scene::SceneDef& def, const sim::worl
 // the collision method and why; the optional fields only where they apply, so that the JSON of
 // a run without them is unchanged
 void writeMethod(JsonWriter& j, const sim::scene::SceneDef& def, const sim::world::World& w) {
-  j.field("collision_method", sim::core::collisionMethodName(w.collisions));
+  j.field("collision_method", sim::core::collisionMethodName(w.collisions()));
   j.field("collision_method_reason", describeCollisionMethod(def, w));
   // only when `auto` switched to the stack solver during the run
-  if (w.methodSwitch)
-    j.field("collision_method_switch_time", w.methodSwitch->time).field("collision_method_switch", describeMethodSwitch(def, w));
+  if (w.methodSwitch())
+    j.field("collision_method_switch_time", w.methodSwitch()->time)
+        .field("collision_method_switch", describeMethodSwitch(def, w));
   // only with sim: {sleep: true}: how many bodies sleep at the end (sim/world/sleep.h)
-  if (w.sleep) j.field("sleep", true).field("sleeping_bodies", static_cast<long>(w.sleepingBodies()));
+  if (w.def().sleep) j.field("sleep", true).field("sleeping_bodies", static_cast<long>(w.sleepingBodies()));
   // only with sim: {precision: float}
-  if (w.precision != sim::world::Precision::Double) j.field("precision", sim::world::precisionName(w.precision));
+  if (w.def().precision != sim::world::Precision::Double) j.field("precision", sim::world::precisionName(w.def().precision));
 }
 
 // a vector as [x, y]
@@ -141,7 +142,10 @@ void printJson(const sim::scene::SceneDef& def, const sim::world::World& w, cons
   j.field("scene", def.name);
   j.key("variant");
   def.variant.empty() ? j.null() : j.value(def.variant);
-  j.field("t", w.time).field("integrator", sim::core::integratorName(w.integrator)).field("dt", w.dt).field("steps", w.steps);
+  j.field("t", w.time)
+      .field("integrator", sim::core::integratorName(w.def().integrator))
+      .field("dt", w.def().dt)
+      .field("steps", w.steps);
   writeBodies(j, def, w);
   writeTotals(j, def, w, ledger);
   writeMethod(j, def, w);
@@ -155,7 +159,8 @@ void printJson(const sim::scene::SceneDef& def, const sim::world::World& w, cons
 void printText(const sim::scene::SceneDef& def, const sim::world::World& w, const sim::world::EnergyLedger& ledger,
                bool verbose) {
   std::cout << def.name << (def.variant.empty() ? "" : " [" + def.variant + "]") << ": t = " << formatNumber(w.time) << ", "
-            << sim::core::integratorName(w.integrator) << ", dt = " << formatNumber(w.dt) << ", " << w.steps << " steps\n";
+            << sim::core::integratorName(w.def().integrator) << ", dt = " << formatNumber(w.def().dt) << ", " << w.steps
+            << " steps\n";
   std::cout << std::left << std::setw(16) << "body" << std::right;
   for (const char* h : {"x", "y", "angle", "vx", "vy", "omega", "kinetic"}) std::cout << std::setw(14) << h;
   std::cout << '\n';

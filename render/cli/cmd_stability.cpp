@@ -47,7 +47,7 @@ std::vector<sim::core::CollisionMethod> defaultCollisions(const StabilityOptions
     }
     return methods;
   }
-  if (!o.variant.empty() || startWorld(def, o.scene).collisions == CollisionMethod::None) return {def.collisions};
+  if (!o.variant.empty() || startWorld(def, o.scene).collisions() == CollisionMethod::None) return {def.collisions};
   return {CollisionMethod::Event, CollisionMethod::Isolated, CollisionMethod::Sequential};
 }
 

@@ -250,19 +250,19 @@ NameOf namesOf(const sim::scene3d::SceneDef& def) {
 }
 
 std::string describeCollisionMethod(const sim::scene::SceneDef& def, const sim::world::World& world) {
-  return describeMethod(world.collisions, world.methodReason, world.methodSwitch, namesOf(def));
+  return describeMethod(world.collisions(), world.methodReason(), world.methodSwitch(), namesOf(def));
 }
 
 std::string describeCollisionMethod(const sim::scene3d::SceneDef& def, const sim::world3d::World& world) {
-  return describeMethod(world.collisions, world.methodReason, world.methodSwitch, namesOf(def));
+  return describeMethod(world.collisions(), world.methodReason(), world.methodSwitch(), namesOf(def));
 }
 
 std::string describeMethodSwitch(const sim::scene::SceneDef& def, const sim::world::World& world) {
-  return describeSwitch(world.collisions, world.methodSwitch, namesOf(def));
+  return describeSwitch(world.collisions(), world.methodSwitch(), namesOf(def));
 }
 
 std::string describeMethodSwitch(const sim::scene3d::SceneDef& def, const sim::world3d::World& world) {
-  return describeSwitch(world.collisions, world.methodSwitch, namesOf(def));
+  return describeSwitch(world.collisions(), world.methodSwitch(), namesOf(def));
 }
 
 std::string describeResting(const sim::scene::SceneDef& def, const sim::world::RestingRecord& r) {

@@ -34,7 +34,10 @@ void printJson(const sim::scene3d::SceneDef& def, const World& w, const EnergyLe
   j.field("scene", def.name);
   j.key("variant");
   def.variant.empty() ? j.null() : j.value(def.variant);
-  j.field("t", w.time).field("integrator", kIntegratorNames.name(w.integrator)).field("dt", w.dt).field("steps", w.steps);
+  j.field("t", w.time)
+      .field("integrator", kIntegratorNames.name(w.def().integrator))
+      .field("dt", w.def().dt)
+      .field("steps", w.steps);
   j.key("bodies").beginArray();
   for (size_t i = 0; i < w.bodies.size(); ++i) {
     const Body& b = w.bodies[i];
@@ -52,11 +55,12 @@ void printJson(const sim::scene3d::SceneDef& def, const World& w, const EnergyLe
   vector3(j.key("momentum"), linearMomentum(w));
   vector3(j.key("angular_momentum"), angularMomentum(w));
   writeLedger(j, accountsOf(ledger), namesOf(def));
-  j.field("collision_method", sim::core::collisionMethodName(w.collisions));
+  j.field("collision_method", sim::core::collisionMethodName(w.collisions()));
   j.field("collision_method_reason", describeCollisionMethod(def, w));
   // only when `auto` switched to sequential during the run
-  if (w.methodSwitch)
-    j.field("collision_method_switch_time", w.methodSwitch->time).field("collision_method_switch", describeMethodSwitch(def, w));
+  if (w.methodSwitch())
+    j.field("collision_method_switch_time", w.methodSwitch()->time)
+        .field("collision_method_switch", describeMethodSwitch(def, w));
   const NameOf name = namesOf(def);
   // every impulse the collision response applied; b is the plane for a body–plane collision
   j.key("collisions").beginArray();
@@ -94,8 +98,8 @@ std::string triple(const Vec3& v) {
 
 void printText(const sim::scene3d::SceneDef& def, const World& w, const EnergyLedger3d& ledger) {
   std::cout << def.name << (def.variant.empty() ? "" : " [" + def.variant + "]") << ": t = " << formatNumber(w.time) << ", "
-            << kIntegratorNames.name(w.integrator) << (w.normalizeQuaternions ? "" : " (q unnormalized)")
-            << ", dt = " << formatNumber(w.dt) << ", " << w.steps << " steps\n";
+            << kIntegratorNames.name(w.def().integrator) << (w.def().normalizeQuaternions ? "" : " (q unnormalized)")
+            << ", dt = " << formatNumber(w.def().dt) << ", " << w.steps << " steps\n";
   for (size_t i = 0; i < w.bodies.size(); ++i) {
     const Body& b = w.bodies[i];
     std::cout << def.bodies[i].name << ": x = " << triple(b.x) << ", q = [" << std::setprecision(6) << b.q.w() << ", " << b.q.x()

@@ -6,8 +6,8 @@ using sim::core::Vec2;
 std::vector<ContactForce> contactForcesOn(const sim::world::World& world, int body) {
   // the time the stored impulses act over: a step of the sequential solver, a substep of soft_step's
   double over = 0.0;
-  if (world.collisions == sim::core::CollisionMethod::Sequential) over = world.lastStep;
-  if (world.collisions == sim::core::CollisionMethod::SoftStep) over = world.lastStep / std::max(1, world.substeps);
+  if (world.collisions() == sim::core::CollisionMethod::Sequential) over = world.lastStep;
+  if (world.collisions() == sim::core::CollisionMethod::SoftStep) over = world.lastStep / std::max(1, world.def().substeps);
   std::vector<ContactForce> out;
   if (!(over > 0.0)) return out;
   for (const sim::world::Contact& c : world.contacts) {

@@ -38,7 +38,7 @@ std::vector<double> energyValues(const sim::world::World& world) {
   }
   const sim::world::Energy e = sim::world::energy(world);
   // gravity or a spring: the scene has a potential energy (its zero is the world origin, as in `check`)
-  if (world.forces.gravity != Vec2::Zero() || !world.forces.springs.empty()) values.push_back(e.potential);
+  if (world.def().forces.gravity != Vec2::Zero() || !world.def().forces.springs.empty()) values.push_back(e.potential);
   values.push_back(e.total());
   return values;
 }

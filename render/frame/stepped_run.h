@@ -43,7 +43,7 @@ class SteppedRun {
   const State& reach(double t) {
     observers_.history = &run_.history;
     World& world = run_.world;
-    const double snap = sim::core::settings::kTimeSnap * world.dt;
+    const double snap = sim::core::settings::kTimeSnap * world.def().dt;
     if (t < world.time - snap) throw std::logic_error("a picture earlier than the run's time");
     world.advanceWithin(t, std::max(t, end_), &observers_);
     shown_ = &run_;

@@ -94,7 +94,7 @@ RunSurvey surveyRun(const render::scene::Scene& def, double until) {
   Surveyor surveyor(def, survey);
   surveyor.afterStep(world);
   // a spring's world anchor belongs in the picture with what hangs from it
-  for (const sim::core::Spring& sp : world.forces.springs)
+  for (const sim::core::Spring& sp : world.def().forces.springs)
     if (sp.bodyB == sim::core::kWorldAnchor) survey.bounds.add(sp.pointB);
   world.advanceTo(until < 0.0 ? def.model.duration : until, &surveyor);
   for (const sim::world::ImpactRecord& r : world.impacts) survey.maxImpulse = std::max(survey.maxImpulse, std::abs(r.impulse));
@@ -113,7 +113,7 @@ void surveyOverlays(const render::scene::Scene& def, const sim::world::World& wo
     if (b.isStatic) continue;
     out.maxOmega = std::max(out.maxOmega, std::abs(b.omega));
     out.maxMomentum = std::max(out.maxMomentum, b.mass * b.v.norm());
-    if (world.forces.pointForces.empty()) continue;
+    if (world.def().forces.pointForces.empty()) continue;
     const std::vector<AppliedForce> forces = pointForcesOn(world, static_cast<int>(i));
     for (const AppliedForce& f : forces) out.maxForce = std::max(out.maxForce, f.force.norm());
     out.maxTorque = std::max(out.maxTorque, std::abs(torqueOf(b, forces)));

@@ -22,7 +22,7 @@ std::string upcomingText(double t) { return "j at t = " + timeToMs(t) + " s"; }
 void drawUpcomingEvents(const sim::world::World& world, double impulseScale, const Camera& camera, double lineWidthPx,
                         Canvas& draw) {
   const double px = camera.pixelSize();
-  for (const sim::world::ImpulseEvent& e : world.events) {
+  for (const sim::world::ImpulseEvent& e : world.def().events) {
     // an event at the present time has struck already (a frame shows the state after it)
     if (!(e.time > world.time)) continue;
     const sim::core::Body& b = world.bodies[e.body];

@@ -251,7 +251,7 @@ const Mesh& FramePainter3d::meshFor(size_t i, const Body& b) const {
 }
 
 void FramePainter3d::paintPlanes(const World& world, Canvas3d& canvas) const {
-  for (const Plane& p : world.planes) {
+  for (const Plane& p : world.def().planes) {
     // the patch's z axis along the normal, centered below the run's middle
     const Quat turn = Quat::FromTwoVectors(Vec3::UnitZ(), p.normal);
     const Vec3 center = planeCenter_ - p.normal.dot(planeCenter_ - p.point) * p.normal;
@@ -297,7 +297,7 @@ void FramePainter3d::paint(const World& world, const History3d& history, Canvas3
     for (size_t i = 0; i < world.bodies.size(); ++i)
       path(history.trail(i), Vec3::Zero(), {Role::Trail, static_cast<int>(i), 1.0}, draw);
   if (r.springs)
-    for (const Spring& sp : world.forces.springs) {
+    for (const Spring& sp : world.def().forces.springs) {
       const Vec3 a = world.bodies[sp.bodyA].toWorld(sp.pointA);
       const Vec3 b = sp.bodyB == sim::core::kWorldAnchor ? sp.pointB : world.bodies[sp.bodyB].toWorld(sp.pointB);
       const std::optional<Vec2> pa = screen(a), pb = screen(b);

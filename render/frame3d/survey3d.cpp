@@ -56,7 +56,7 @@ std::vector<double> energyValues(const World& world) {
   }
   const Energy e = energy(world);
   // gravity or a spring: the scene has a potential energy (zero at the world origin, as in `check`)
-  if (world.forces.gravity != Vec3::Zero() || !world.forces.springs.empty()) values.push_back(e.potential);
+  if (world.def().forces.gravity != Vec3::Zero() || !world.def().forces.springs.empty()) values.push_back(e.potential);
   values.push_back(e.total());
   return values;
 }
@@ -67,7 +67,7 @@ RunSurvey3d surveyRun(const render::scene3d::Scene& def, double until) {
   Surveyor surveyor(def, survey);
   surveyor.afterStep(world);
   // a spring's world anchor belongs in the picture with what hangs from it
-  for (const Spring& sp : world.forces.springs)
+  for (const Spring& sp : world.def().forces.springs)
     if (sp.bodyB == sim::core::kWorldAnchor) survey.bounds.add(sp.pointB);
   world.advanceTo(until < 0.0 ? def.model.duration : until, &surveyor);
   // impacts closer than this are one instant (the corners of a face landing flat), as in 2D

@@ -44,7 +44,7 @@ class EnergyLedgerOf : public Observer {
     start = end = e.total();
     scale = std::abs(e.kinetic) + std::abs(e.potential);
     adjusted_ = lowest_ = start;
-    if (world.forces.hasWorkingForces()) states_ = world.states();
+    if (world.def().forces.hasWorkingForces()) states_ = world.states();
   }
 
   void afterStep(const World& world) override {
@@ -57,8 +57,8 @@ class EnergyLedgerOf : public Observer {
     if (!states_.empty()) {
       const double window = time_ + 0.5 * h;
       const States now = world.states();
-      applied = world.forces.pointForceWork(window, states_, now);
-      damping = 0.5 * h * (world.forces.power(window, states_).damping + world.forces.power(window, now).damping);
+      applied = world.def().forces.pointForceWork(window, states_, now);
+      damping = 0.5 * h * (world.def().forces.power(window, states_).damping + world.def().forces.power(window, now).damping);
       appliedWork += applied;
       lostToDamping -= damping;
     }

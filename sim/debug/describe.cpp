@@ -122,7 +122,7 @@ Arrow describeEventImpulse(const World& world, const ImpulseEvent& e, double imp
 }
 
 void describeSprings(const World& world, double amplitude, DebugDraw& draw) {
-  for (const Spring& sp : world.forces.springs) {
+  for (const Spring& sp : world.def().forces.springs) {
     const Vec2 a = world.bodies[sp.bodyA].pose().toWorld(sp.pointA);
     const bool anchored = sp.bodyB == kWorldAnchor;
     const Vec2 b = anchored ? sp.pointB : world.bodies[sp.bodyB].pose().toWorld(sp.pointB);

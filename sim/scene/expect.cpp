@@ -86,7 +86,7 @@ std::vector<CheckResult> runExpects(const SceneDef& def, World& world, sim::worl
     // `simulate` runs it), and a copy advanced to its time when it falls between two of them
     const double end = std::max(def.duration, e->time);
     world.advanceWithin(e->time, end, observer);
-    if (std::abs(world.time - e->time) <= settings::kTimeSnap * world.dt) {
+    if (std::abs(world.time - e->time) <= settings::kTimeSnap * world.def().dt) {
       for (CheckResult& r : evaluate(*e, def, world, &indices)) out.push_back(std::move(r));
       continue;
     }

@@ -86,7 +86,7 @@ Shape bodyShape(const BodyDef& def, const Vec2& center) {
 }  // namespace
 
 World buildWorld(const SceneDef& def) {
-  World w;
+  WorldDef w;
   w.integrator = def.integrator;
   w.dt = def.dt;
   w.forces.gravity = def.gravity;
@@ -102,6 +102,7 @@ World buildWorld(const SceneDef& def) {
 
   // body points are written in the shape's coordinates; the body origin moves to the centroid
   std::vector<Vec2> centroid;
+  std::vector<Body> bodies;
   for (const BodyDef& bd : def.bodies) {
     const MassProperties mp = massProperties(bd);
     centroid.push_back(mp.centroid);
@@ -119,7 +120,7 @@ World buildWorld(const SceneDef& def) {
     b.friction = bd.friction.value_or(def.friction.value_or(settings::kDefaultFriction));
     b.frictionNamed = bd.friction.has_value() || def.friction.has_value();
     if (bd.isStatic) b.makeStatic();
-    w.bodies.push_back(std::move(b));
+    bodies.push_back(std::move(b));
   }
   // the readers check every name; a definition changed after reading (a stability search) must too
   const std::unordered_map<std::string, int> indices = def.bodyIndices();
@@ -145,7 +146,7 @@ World buildWorld(const SceneDef& def) {
   for (const DragDef& d : def.drags) w.forces.drags.push_back({index(d.body), d.linear, d.angular});
   for (const EventDef& e : def.events)
     w.events.push_back({e.time, index(e.body), e.pointInWorld ? e.point : local(e.body, e.point), e.pointInWorld, e.impulse});
-  return w;
+  return World(std::move(w), std::move(bodies));
 }
 
 }  // namespace sim::scene

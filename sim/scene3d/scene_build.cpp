@@ -44,14 +44,15 @@ World buildWorld(const SceneDef& s) {
   // every name looked up in one index (the readers checked each)
   const std::unordered_map<std::string, int> indices = s.bodyIndices();
   const auto index = [&](const std::string& name) { return indices.at(name); };
-  World w;
+  WorldDef w;
+  std::vector<Body> bodies;
   // a body's or plane's own coefficients, else the world's (2D's rule for friction: contact.h)
   for (const BodyDef& def : s.bodies) {
     Body b = buildBody(def);
     b.restitution = def.restitution.value_or(s.restitution);
     b.friction = def.friction.value_or(s.friction.value_or(sim::core::settings::kDefaultFriction));
     b.frictionNamed = def.friction.has_value() || s.friction.has_value();
-    w.bodies.push_back(b);
+    bodies.push_back(b);
   }
   for (const PlaneDef& p : s.planes) {
     const bool named = p.friction.has_value() || s.friction.has_value();
@@ -74,7 +75,7 @@ World buildWorld(const SceneDef& s) {
   }
   for (const DragDef& d : s.drags) w.forces.drags.push_back({index(d.body), d.linear, d.angular});
   for (const EventDef& e : s.events) w.events.push_back({e.time, index(e.body), e.point, e.pointInWorld, e.impulse});
-  return w;
+  return World(std::move(w), std::move(bodies));
 }
 
 }  // namespace sim::scene3d

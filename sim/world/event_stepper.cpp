@@ -152,7 +152,7 @@ class EventStepper final : public Method {
 
   // the event method advances to the instant of touching: it cannot start from an overlap
   void start(World& world) override {
-    gravityOnly_ = world.forces.gravityOnly();
+    gravityOnly_ = world.def().forces.gravityOnly();
     for (const Contact& c : world.findContacts(0.0))
       if (c.manifold.separation < -settings::kTouchingTolerance * world.sceneSize())
         throw InitialOverlap(c.a, c.b, -c.manifold.separation);
@@ -216,7 +216,7 @@ class EventStepper final : public Method {
       for (size_t i = 0; i < y.size(); ++i) y[i] = uniformlyAccelerated(from[i], k[i], tau);
       return y;
     }
-    integrate(world.integrator, dynamics, step.start, tau, y);
+    integrate(world.def().integrator, dynamics, step.start, tau, y);
     return y;
   }
 
@@ -290,7 +290,7 @@ class EventStepper final : public Method {
       for (int k = 0; k < c.manifold.count; ++k)
         fastest = std::max(fastest, std::abs(n.dot(relativeVelocity(a, b, c.manifold.points[k].point))));
       if (fastest > settings::kRestingSpeed) continue;
-      const States ahead = motion(world, step, world.states(), world.dt);
+      const States ahead = motion(world, step, world.states(), world.def().dt);
       const double gap = collideResting(world, restingPairOf(c), ahead[c.a].pose(), ahead[c.b].pose(), 0.0).separation;
       if (gap >= -touch) continue;
       // the rest of the geometric series of bounces is below kRestingSpeed: end it here

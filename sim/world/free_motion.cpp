@@ -25,7 +25,7 @@ void StepDynamics::rates(double, const States& y, Rates& out) const { world_.rat
 
 void moveFreely(World& world, const TimeStep& step) {
   States y = world.states();
-  integrate(world.integrator, StepDynamics(world, step), step.start, step.h, y);
+  integrate(world.def().integrator, StepDynamics(world, step), step.start, step.h, y);
   world.setStates(y);
 }
 

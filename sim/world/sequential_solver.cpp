@@ -258,7 +258,7 @@ class SequentialSolver final : public Method {
     for (size_t i = 0; i < bodies.size(); ++i)
       velocities_[i] = {bodies[i].v, bodies[i].omega, bodies[i].invMass, bodies[i].invInertia};
     warmStart(velocities_, constraints_);
-    for (int k = 0; k < world.velocityIterations; ++k) solveVelocities(velocities_, constraints_);
+    for (int k = 0; k < world.def().velocityIterations; ++k) solveVelocities(velocities_, constraints_);
     for (size_t i = 0; i < bodies.size(); ++i) bodies[i].v = velocities_[i].v, bodies[i].omega = velocities_[i].omega;
     storeImpulses(world);
     // the positions from the free motion's, with the velocities the contacts changed
@@ -267,7 +267,7 @@ class SequentialSolver final : public Method {
     positions_.resize(bodies.size());
     for (size_t i = 0; i < bodies.size(); ++i)
       positions_[i] = {bodies[i].x, bodies[i].angle, bodies[i].invMass, bodies[i].invInertia, Rot{}, true};
-    for (int k = 0; k < world.positionIterations; ++k)
+    for (int k = 0; k < world.def().positionIterations; ++k)
       if (solvePositions(positions_, constraints_, anchors_)) break;
     for (size_t i = 0; i < bodies.size(); ++i) bodies[i].x = positions_[i].x, bodies[i].angle = positions_[i].angle;
     recordImpacts(world, vnBefore_, step.end());
@@ -281,7 +281,7 @@ class SequentialSolver final : public Method {
   // of positions; the midpoint rule and RK4: x + h (v + v⁺)/2 at rest, so a resting body stays,
   // where h Δv would lift it by ½ h² g every step; explicit Euler: x + h v
   void integratePositions(World& world, double h) const {
-    const double reach = constantAccelerationWeight(world.integrator) * h;
+    const double reach = constantAccelerationWeight(world.def().integrator) * h;
     for (size_t i = 0; i < world.bodies.size(); ++i) {
       Body& b = world.bodies[i];
       if (b.isStatic) continue;

@@ -104,10 +104,10 @@ class SoftStepSolver final : public Method {
   // restitution once after them all; the impulses kept for the next step
   void step(World& world, const TimeStep& step) override {
     // the contacts where the bodies are now, carrying over last step's impulses
-    WorkerPool& threads = pool(world.threads);
+    WorkerPool& threads = pool(world.def().threads);
     world.findContacts(speculativeMargin(world, step.h), fresh_, &threads);
     std::swap(world.contacts, fresh_);
-    const double h = step.h / world.substeps;
+    const double h = step.h / world.def().substeps;
     const bool kept = beginStep(world, h);
     // one task from the preparation to the impulses kept, the threads meeting between its stages:
     // a task of its own for each woke the other threads three times a step instead of once. The
@@ -133,7 +133,7 @@ class SoftStepSolver final : public Method {
 
  private:
   void substeps(const World& world, const TimeStep& step, const Share& share, WorkerPool& threads) {
-    const int n = world.substeps;
+    const int n = world.def().substeps;
     const double h = step.h / n;
     // the totals serve restitution and the impact records alone: a pile at rest needs neither
     const bool totals = bouncy_ || std::find(approaching_.begin(), approaching_.end(), 1) != approaching_.end();
@@ -203,10 +203,10 @@ class SoftStepSolver final : public Method {
   // Returns whether each lane keeps last step's pair, masses, friction and softness.
   bool beginStep(World& world, double h) {
     const bool arranged = arrange(world);
-    width_ = laneWidth(world.simdWidth);
+    width_ = laneWidth(world.def().simdWidth);
     const int dummy = static_cast<int>(world.bodies.size());  // the static bodies' shared record
     // Box2D v3: contactHertz = min(contactHertz, 0.25 × substep rate); static contacts twice as stiff
-    const double hertz = std::min(world.contactHertz, settings::kContactHertzPerSubstepRate / h);
+    const double hertz = std::min(world.def().contactHertz, settings::kContactHertzPerSubstepRate / h);
     const Softness soft = makeSoft(hertz, settings::kContactDampingRatio, h);
     const Softness staticSoft = makeSoft(2.0 * hertz, settings::kContactDampingRatio, h);
     // the same pairs in the same lanes with the same softness as last step: each lane's bodies,
@@ -216,7 +216,7 @@ class SoftStepSolver final : public Method {
     blocks_.resize(blockCount_);
     vnBefore_.resize(2 * world.contacts.size());
     points_.resize(world.contacts.size());
-    approaching_.assign(pool(world.threads).size(), 0);
+    approaching_.assign(pool(world.def().threads).size(), 0);
     sizeBodies(world);
     return kept;
   }
@@ -290,11 +290,11 @@ class SoftStepSolver final : public Method {
     states_.resize(n + 1);
     states_[n] = BodyState{};
     x_.resize(n), angle_.resize(n), turned_.resize(n), moving_.resize(n);
-    gravityDv_.resize(world.forces.gravityOnly() ? n : 0);
+    gravityDv_.resize(world.def().forces.gravityOnly() ? n : 0);
   }
   void loadBodies(const World& world, double h, const Share& share) {
     const std::vector<Body>& bodies = world.bodies;
-    const bool gravity = world.forces.gravityOnly();
+    const bool gravity = world.def().forces.gravityOnly();
     const auto [first, last] = share.of(0, static_cast<int>(bodies.size()));
     for (int i = first; i < last; ++i) {
       const Body& b = bodies[i];
@@ -305,7 +305,7 @@ class SoftStepSolver final : public Method {
       if (gravity) gravityDv_[i] = Vec2::Zero();
       if (b.isStatic) continue;
       s.vx = b.v.x(), s.vy = b.v.y(), s.w = b.omega;
-      if (gravity && !world.asleep(i)) gravityDv_[i] = h * Vec2(b.invMass * Vec2(b.mass * world.forces.gravity));
+      if (gravity && !world.asleep(i)) gravityDv_[i] = h * Vec2(b.invMass * Vec2(b.mass * world.def().forces.gravity));
     }
   }
 
@@ -324,7 +324,7 @@ class SoftStepSolver final : public Method {
   void integrateVelocities(const World& world, const TimeStep& step, double h, const Share& share, WorkerPool& threads) {
     const std::vector<Body>& bodies = world.bodies;
     const auto [first, last] = share.of(0, static_cast<int>(bodies.size()));
-    if (world.forces.gravityOnly()) {
+    if (world.def().forces.gravityOnly()) {
       // (adding a zero leaves a static or sleeping body's velocity as it is, a zero)
       for (int i = first; i < last; ++i) states_[i].vx += gravityDv_[i].x(), states_[i].vy += gravityDv_[i].y();
       return;

@@ -8,31 +8,21 @@
 #include <string>
 #include <vector>
 
-#include "sim/collision/collide.h"
-#include "sim/collision/pair_cache.h"
 #include "sim/core/body.h"
 #include "sim/core/forces.h"
 #include "sim/core/integrators.h"
 #include "sim/core/settings.h"
 #include "sim/core/timeline.h"
 #include "sim/world/contact.h"
-#include "sim/world/contact_recycle.h"
+#include "sim/world/contact_finder.h"
 #include "sim/world/contact_watch.h"
 #include "sim/world/methods.h"
 #include "sim/world/sleep.h"
+#include "sim/world/world_def.h"
 
 namespace sim::world {
 class WorkerPool;
 namespace settings = sim::core::settings;
-
-// an impulse j applied at exactly `time`: Δv = j/m, Δω = I⁻¹ (r′ × j)
-struct ImpulseEvent {
-  double time = 0.0;
-  int body = 0;
-  sim::core::Vec2 point = sim::core::Vec2::Zero();  // body coordinates, or world coordinates when pointInWorld
-  bool pointInWorld = false;
-  sim::core::Vec2 impulse = sim::core::Vec2::Zero();  // world coordinates
-};
 
 class World;
 
@@ -64,36 +54,23 @@ struct ImpactsPileUp : std::runtime_error {
   double time;
 };
 
-// The world holds the bodies, the forces, the contacts and the time; the collision method
-// (methods.h) decides how a step answers touching bodies.
+// The world's state, stepped under its definition (world_def.h): the bodies, the time and the
+// contacts; the collision method (methods.h) decides how a step answers touching bodies, and the
+// contact finder (contact_finder.h) keeps the contacts' upkeep.
 class World {
  public:
-  std::vector<sim::core::Body> bodies;
-  sim::core::ForceSet forces;
-  std::vector<ImpulseEvent> events;  // any order; applied in time order
-  sim::core::Integrator integrator = sim::core::Integrator::SymplecticEuler;
-  double dt = settings::kDefaultDt;                                          // read once, by start(): the step grid's spacing
-  sim::core::CollisionMethod collisions = sim::core::CollisionMethod::Auto;  // resolved when the run starts
-  sim::core::MethodReason methodReason = sim::core::MethodReason::Requested;
-  std::optional<sim::core::MethodSwitch> methodSwitch;  // when and why `auto` went from event to the stack solver
-  int velocityIterations = settings::kVelocityIterations;
-  int positionIterations = settings::kPositionIterations;
-  int substeps = settings::kSubsteps;             // soft_step: substeps per step
-  double contactHertz = settings::kContactHertz;  // soft_step: contact stiffness, Hz (capped per substep)
-  // soft_step: the widest SIMD a set's contacts are solved with, where the processor has it: 8
-  // (AVX-512: eight doubles at once; eight floats with its registers), 4 (AVX2: four doubles, eight
-  // floats) or 1 (one at a time); the same order, to the same state
-  int simdWidth = 8;
-  // soft_step: the numbers its contact solve is carried in (the world's state stays double)
-  Precision precision = Precision::Double;
-  // sequential and soft_step: islands at rest fall asleep and are not stepped until touched (sleep.h)
-  bool sleep = false;
-  // soft_step: threads that share each set of contacts (the same state with any number)
-  int threads = 1;
-  // soft_step: a touching pair keeps its manifold, carried with the bodies, while it moved less than
-  // this relative to the step it was made in, m (contact_recycle.h); 0: every pair collided every step
-  double recycleDistance = 0.0;
+  World() = default;
+  explicit World(WorldDef def, std::vector<sim::core::Body> bodies = {});
 
+  // what the scene fixed: forces, events, the step, the method asked for and its settings
+  const WorldDef& def() const { return def_; }
+  // the method stepping the world: the one asked for, with `auto` resolved by start() and switched
+  // to the stack solver when the run shows it is needed; why, and when it switched
+  sim::core::CollisionMethod collisions() const { return collisions_; }
+  sim::core::MethodReason methodReason() const { return methodReason_; }
+  const std::optional<sim::core::MethodSwitch>& methodSwitch() const { return methodSwitch_; }
+
+  std::vector<sim::core::Body> bodies;
   double time = 0.0;
   long steps = 0;
   double lastStep = 0.0;               // the length of the last step taken, s: the contacts' impulses are over it
@@ -138,7 +115,7 @@ class World {
   // (then a solver's arrangement of them still holds); false when it cannot tell
   bool contactPairsKept() const { return contactPairsKept_; }
   // how many of the solver's last findContacts' touching pairs kept their manifold (recycleDistance)
-  long recycledContacts() const;
+  long recycledContacts() const { return finder_.recycled(); }
 
   // sleeping (sleep.h): whether a body sleeps now, and how many do
   bool asleep(int body) const { return sleep_.asleep(body); }
@@ -161,16 +138,13 @@ class World {
   void switchToStackSolver(const sim::core::MethodSwitch& why);
   void checkFinite(double t) const;
   bool sleeping() const;
-  // the manifolds into `found` (its entries overwritten, its storage kept), without the sleeping pairs when
-  // `awakeOnly`, warm started from `contacts` when `warmStart`; the placing and the narrow phase
-  // split between `threads` when there are two or more. `lastStep` (`contacts`, or none): a list
-  // the contacts may be written over while its pairs are theirs (then its storage and found's swap)
-  // Returns whether the pairs were lastStep's, each written over its own. `sideSlack` as collide()'s.
-  bool collectContacts(double margin, std::vector<Contact>& found, bool awakeOnly, bool warmStart, WorkerPool* threads = nullptr,
-                       std::vector<Contact>* lastStep = nullptr, double sideSlack = 0.0) const;
-  // collectContacts' stages (world.cpp)
-  class ContactPass;
+  // what a pass of the contact finder asks, the world's contacts being last step's
+  ContactQuery contactQuery(double margin, double sideSlack, bool awakeOnly, bool warmStart) const;
 
+  WorldDef def_;
+  sim::core::CollisionMethod collisions_ = def_.collisions;
+  sim::core::MethodReason methodReason_ = sim::core::MethodReason::Requested;
+  std::optional<sim::core::MethodSwitch> methodSwitch_;
   bool started_ = false;
   bool contactPairsKept_ = false;
   sim::core::Timeline<ImpulseEvent> timeline_;  // steps of dt cut at the events and force switches, and the events due
@@ -181,33 +155,10 @@ class World {
   bool mayStackUp_ = false;
   ContactWatch watch_;
   sim::core::States stepStart_;  // the states where the step began, to redo it on a switch
-  // the collision proxies, one per convex shape, body by body (a body of parts has one per part):
-  // empty while every body is one shape, when proxy i is body i
-  struct Proxy {
-    int body = 0, part = 0;
-  };
-  void makeProxies() const;
-  mutable std::vector<Proxy> proxies_;
-  mutable size_t proxiesFor_ = 0;  // the body count they were made for
-  // the broad phase's candidate pairs, kept from one findContacts to the next (the pairs found
-  // do not depend on them)
-  mutable sim::collision::PairCache pairCache_;
-  // soft_step's contact recycling: each candidate pair's manifold as made, by the index of its pair
-  // (recycle_, for the pairs recycleKeys_), and the list of this call's pairs when they are others
-  // (recycleNext_, swapped in at the next call); which pairs kept theirs; each proxy's reach
-  mutable std::vector<RecycleEntry> recycle_, recycleNext_;
-  mutable std::vector<std::uint64_t> recycleKeys_, keysNow_;
-  mutable std::vector<char> recycledNow_;
-  mutable std::vector<double> extent_;
-  mutable bool recycleReady_ = false;
-  mutable std::vector<std::pair<int, int>> pairs_;           // scratch of findContacts: the proxies' pairs,
-  mutable std::vector<sim::collision::PlacedShape> placed_;  // and the proxies' shapes where they are,
-  mutable std::vector<sim::collision::Aabb> boxes_;          // their bounds with the margin,
-  mutable std::vector<bool> fixed_;                          // which are static,
-  mutable std::vector<sim::collision::Manifold> manifolds_;  // and each pair's manifold, when threads share them,
-  mutable std::vector<int> touching_;                        // with where each thread's touching pairs begin,
-  mutable std::vector<char> differs_;                        // and whether its pairs differ from last step's
-  mutable std::vector<sim::core::Vec2> force_;               // scratch of rates()
+  // the contacts' upkeep: proxies, broad phase, manifolds, recycling (scratch: a look at the
+  // contacts from a const world uses it too)
+  mutable ContactFinder finder_;
+  mutable std::vector<sim::core::Vec2> force_;  // scratch of rates()
   mutable std::vector<double> torque_;
 };
 

@@ -12,7 +12,7 @@ KineticEnergy kineticEnergy(const Body& b) { return {0.5 * b.mass * b.v.squaredN
 Energy energy(const World& world) {
   Energy e;
   for (const Body& b : world.bodies) e.kinetic += kineticEnergy(b).total();
-  e.potential = world.forces.potentialEnergy(world.bodies);
+  e.potential = world.def().forces.potentialEnergy(world.bodies);
   return e;
 }
 

@@ -30,7 +30,7 @@ double gap(const World& world, int a, int b, const States& y) {
   const Body& body = world.bodies[a];
   if (b >= 0) return (y[a].x - y[b].x).norm() - body.shape.radius - world.bodies[b].shape.radius;
   ContactPoint3 points[kMaxContactPoints];
-  const int count = planeContact(body.shape, y[a], world.planes[-1 - b], std::numeric_limits<double>::infinity(), points);
+  const int count = planeContact(body.shape, y[a], world.def().planes[-1 - b], std::numeric_limits<double>::infinity(), points);
   double lowest = std::numeric_limits<double>::infinity();
   for (int k = 0; k < count; ++k) lowest = std::min(lowest, points[k].separation);
   return lowest;
@@ -41,7 +41,7 @@ std::vector<std::pair<int, int>> candidatePairs(const World& world) {
   std::vector<std::pair<int, int>> pairs;
   const int n = static_cast<int>(world.bodies.size());
   for (int i = 0; i < n; ++i) {
-    for (int p = 0; p < static_cast<int>(world.planes.size()); ++p) pairs.emplace_back(i, -1 - p);
+    for (int p = 0; p < static_cast<int>(world.def().planes.size()); ++p) pairs.emplace_back(i, -1 - p);
     if (world.bodies[i].shape.kind != ShapeKind::Sphere) continue;
     for (int j = i + 1; j < n; ++j)
       if (world.bodies[j].shape.kind == ShapeKind::Sphere) pairs.emplace_back(i, j);
@@ -254,7 +254,7 @@ class EventStepper3 final : public Method3 {
       if (!any) break;
     }
     // a step of free motion from here, once for every contact below
-    const States ahead = motion(world, world.states(), start, h, world.dt);
+    const States ahead = motion(world, world.states(), start, h, world.def().dt);
     for (const Contact3& c : touching) {
       double fastest = 0.0;
       for (int k = 0; k < c.count; ++k)

@@ -76,10 +76,10 @@ class SequentialSolver3 final : public Method3 {
     const States free = world.states();
     // the contacts, prepared where the step began, solved on the free velocities
     warmStart(world);
-    for (int k = 0; k < world.velocityIterations; ++k) solveVelocities(world);
+    for (int k = 0; k < world.def().velocityIterations; ++k) solveVelocities(world);
     store(world);
     integratePositions(world, free, h);
-    for (int k = 0; k < world.positionIterations; ++k)
+    for (int k = 0; k < world.def().positionIterations; ++k)
       if (solvePositions(world)) break;
     recordImpacts(world, start + h);
   }
@@ -193,7 +193,7 @@ class SequentialSolver3 final : public Method3 {
   // With contacts): h Δv under symplectic Euler, ½ h Δv under the midpoint rule, RK4 and the
   // splitting (x + h (v + h a/2) for a constant a), none under explicit Euler
   static void integratePositions(World& w, const States& free, double h) {
-    const double reach = constantAccelerationWeight(w.integrator) * h;
+    const double reach = constantAccelerationWeight(w.def().integrator) * h;
     for (size_t i = 0; i < w.bodies.size(); ++i) {
       Body& body = w.bodies[i];
       body.x = free[i].x + reach * (body.v - free[i].v);

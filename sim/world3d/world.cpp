@@ -21,16 +21,19 @@ Diverged::Diverged(double t, int b)
 ContactPersists::ContactPersists(double t, int a_, int b_, const std::string& why)
     : std::runtime_error(why), time(t), a(a_), b(b_) {}
 
+World::World(WorldDef def, std::vector<Body> bodies_) : bodies(std::move(bodies_)), def_(std::move(def)) {}
+
 void World::start() {
   if (started_) return;
+  const double dt = def_.dt;
   if (!(dt > 0.0) || !std::isfinite(dt)) throw std::invalid_argument("the time step dt must be a positive finite number");
-  timeline_ = core::Timeline<ImpulseEvent>(dt, events, forces.breakpoints());
+  timeline_ = core::Timeline<ImpulseEvent>(dt, def_.events, def_.forces.breakpoints());
   // the scale of the event method's tolerances: the bodies' extent at the start
   double extent = 0.0;
   for (const Body& b : bodies) extent = std::max(extent, 2.0 * boundingRadius(b.shape));
   sceneSize_ = std::max(extent, core::settings::kMinSceneSize);
-  if (collisions == CollisionMethod::Auto) chooseMethod();
-  method_ = OwnedMethod3(makeMethod3(collisions));
+  if (collisions_ == CollisionMethod::Auto) chooseMethod();
+  method_ = OwnedMethod3(makeMethod3(collisions_));
   method_->start(*this);
   started_ = true;
 }
@@ -38,7 +41,7 @@ void World::start() {
 bool World::bodiesCanMeet() const {
   int spheres = 0;
   for (const Body& b : bodies) spheres += b.shape.kind == ShapeKind::Sphere;
-  return (!planes.empty() && !bodies.empty()) || spheres >= 2;
+  return (!def_.planes.empty() && !bodies.empty()) || spheres >= 2;
 }
 
 // `auto`: the least model the scene needs at the start (method_models3d.h), then watched
@@ -46,14 +49,15 @@ void World::chooseMethod() {
   unsigned needs = 0;
   if (bodiesCanMeet()) needs |= core::bit(core::Phenomenon::IsolatedImpacts);
   // bodies that touch at the start under a load rest: their contacts persist
+  const ForceSet& forces = def_.forces;
   const bool loaded = forces.gravity != Vec3::Zero() || !forces.pointForces.empty() || !forces.springs.empty();
   if (needs && loaded && !findContacts(core::settings::kContactMargin).empty())
     needs |= core::bit(core::Phenomenon::RestingContact);
-  collisions = leastMethodFor3(needs);
-  if (!needs) methodReason = MethodReason::FewBodies;
-  else if (core::has(needs, core::Phenomenon::RestingContact)) methodReason = MethodReason::PersistentContacts;
-  else methodReason = MethodReason::IsolatedImpacts;
-  watching_ = collisions == CollisionMethod::Event;
+  collisions_ = leastMethodFor3(needs);
+  if (!needs) methodReason_ = MethodReason::FewBodies;
+  else if (core::has(needs, core::Phenomenon::RestingContact)) methodReason_ = MethodReason::PersistentContacts;
+  else methodReason_ = MethodReason::IsolatedImpacts;
+  watching_ = collisions_ == CollisionMethod::Event;
 }
 
 void World::setStates(const States& y) {
@@ -114,14 +118,14 @@ std::vector<Contact3> World::findContacts(double margin, const States* y) const 
   std::vector<Contact3> found;
   for (size_t i = 0; i < bodies.size(); ++i) {
     const Body& body = bodies[i];
-    for (size_t p = 0; p < planes.size(); ++p) {
+    for (size_t p = 0; p < def_.planes.size(); ++p) {
       Contact3 c;
-      c.count = planeContact(body.shape, at(i), planes[p], margin, c.points);
+      c.count = planeContact(body.shape, at(i), def_.planes[p], margin, c.points);
       if (c.count == 0) continue;
       c.a = static_cast<int>(i), c.b = -1 - static_cast<int>(p);
-      c.normal = planes[p].normal;
-      c.restitution = combinedRestitution(body.restitution, planes[p].restitution);
-      c.friction = combinedFriction(body.friction, body.frictionNamed, planes[p].friction, planes[p].frictionNamed);
+      c.normal = def_.planes[p].normal;
+      c.restitution = combinedRestitution(body.restitution, def_.planes[p].restitution);
+      c.friction = combinedFriction(body.friction, body.frictionNamed, def_.planes[p].friction, def_.planes[p].frictionNamed);
       found.push_back(c);
     }
     for (; next != near.end() && next->first == static_cast<int>(i); ++next) {
@@ -180,12 +184,12 @@ void World::step(double stop, double end) {
 }
 
 void World::switchToSequential(const MethodSwitch& why) {
-  collisions = CollisionMethod::Sequential;
-  methodReason = MethodReason::ContactPersisted;
-  methodSwitch = why;
+  collisions_ = CollisionMethod::Sequential;
+  methodReason_ = MethodReason::ContactPersisted;
+  methodSwitch_ = why;
   watching_ = false;
   contacts.clear();
-  method_ = OwnedMethod3(makeMethod3(collisions));
+  method_ = OwnedMethod3(makeMethod3(collisions_));
   method_->start(*this);
 }
 
@@ -221,9 +225,9 @@ States motion(const World& world, const States& from, double start, double h, do
   if (tau <= 0.0) return y;
   // the timed forces that are on somewhere inside the step are on for all of it (it is split at
   // every switch)
-  const Dynamics dynamics{world.bodies, world.forces, start + 0.5 * h};
-  integrate(world.integrator, dynamics, tau, y);
-  if (world.normalizeQuaternions) normalizeRotations(y);
+  const Dynamics dynamics{world.bodies, world.def().forces, start + 0.5 * h};
+  integrate(world.def().integrator, dynamics, tau, y);
+  if (world.def().normalizeQuaternions) normalizeRotations(y);
   return y;
 }
 

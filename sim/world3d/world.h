@@ -17,17 +17,9 @@
 #include "sim/world3d/contact3d.h"
 #include "sim/world3d/integrators.h"
 #include "sim/world3d/methods3d.h"
+#include "sim/world3d/world_def.h"
 
 namespace sim::world3d {
-
-// an impulse j applied at exactly `time`: Δv = j/m, Δω = I⁻¹ (r′ × j) with I = R I_b Rᵀ
-struct ImpulseEvent {
-  double time = 0.0;
-  int body = 0;
-  Vec3 point = Vec3::Zero();  // body coordinates, or world coordinates when pointInWorld
-  bool pointInWorld = false;
-  Vec3 impulse = Vec3::Zero();  // world coordinates, N·s
-};
 
 class World;
 
@@ -65,23 +57,22 @@ class OwnedMethod3 {
   std::unique_ptr<Method3> method_;
 };
 
+// The 3D world's state, stepped under its definition (world_def.h): the bodies, the time and the
+// contacts
 class World {
  public:
-  std::vector<Body> bodies;
-  std::vector<Plane> planes;  // static half-spaces: floors and walls
-  ForceSet forces;
-  std::vector<ImpulseEvent> events;  // any order; applied in time order
-  // the splitting by default: the 3D method that keeps |q| = 1 and a free body's L (sim/README.md)
-  Integrator integrator = Integrator::Splitting;
-  // q ← q/|q| after every step; off, a four-vector method's |q| drifts as its closed form says
-  bool normalizeQuaternions = true;
-  double dt = sim::core::settings::kDefaultDt;
-  sim::core::CollisionMethod collisions = sim::core::CollisionMethod::Auto;  // resolved when the run starts
-  sim::core::MethodReason methodReason = sim::core::MethodReason::Requested;
-  std::optional<sim::core::MethodSwitch> methodSwitch;                // when and why `auto` went from event to sequential
-  int velocityIterations = sim::core::settings::kVelocityIterations;  // sequential
-  int positionIterations = sim::core::settings::kPositionIterations;
+  World() = default;
+  explicit World(WorldDef def, std::vector<Body> bodies = {});
 
+  // what the scene fixed: planes, forces, events, the step, the method asked for and its settings
+  const WorldDef& def() const { return def_; }
+  // the method stepping the world: the one asked for, with `auto` resolved by start() and switched
+  // to sequential when the run shows it is needed; why, and when it switched
+  sim::core::CollisionMethod collisions() const { return collisions_; }
+  sim::core::MethodReason methodReason() const { return methodReason_; }
+  const std::optional<sim::core::MethodSwitch>& methodSwitch() const { return methodSwitch_; }
+
+  std::vector<Body> bodies;
   double time = 0.0;
   long steps = 0;
   std::vector<Contact3> contacts;      // the touching pairs of the last step (sequential)
@@ -118,6 +109,10 @@ class World {
   void switchToSequential(const sim::core::MethodSwitch& why);
   void checkFinite() const;
 
+  WorldDef def_;
+  sim::core::CollisionMethod collisions_ = def_.collisions;
+  sim::core::MethodReason methodReason_ = sim::core::MethodReason::Requested;
+  std::optional<sim::core::MethodSwitch> methodSwitch_;
   bool started_ = false;
   sim::core::Timeline<ImpulseEvent> timeline_;  // steps of dt cut at the events and force switches, and the events due
   double sceneSize_ = 1.0;

@@ -22,26 +22,25 @@ using sim::world3d::Spring;
 using sim::world3d::StepObserver;
 using sim::world3d::Vec3;
 using sim::world3d::World;
+using sim::world3d::WorldDef;
 
 // a free box of sides 0.2 × 0.4 × 0.6 m (three distinct moments), 1 kg, tilted and spun about an
 // axis off all three principal axes; no forces: L and E are constant, ω wanders
 inline World freeBox(Integrator method, double dt, const Vec3& omega = Vec3(1.0, 2.0, 3.0)) {
-  World w;
   Body box = makeBody(makeBox(Vec3(0.2, 0.4, 0.6)), 1.0 / 0.048);
   box.q = axisAngle(Vec3(1, 1, 0), 0.4);
   box.v = Vec3(0.1, 0, 0);
   box.omega = omega;
-  w.bodies.push_back(box);
-  w.integrator = method;
-  w.dt = dt;
-  return w;
+  WorldDef def;
+  def.integrator = method;
+  def.dt = dt;
+  return World(def, {box});
 }
 
 // translation and rotation coupled: a box hung from a world anchor by a spring at a corner, under
 // gravity, tilted and spinning, with a lightly damped spring to an ellipsoid below it and angular
 // drag on the ellipsoid (so the velocity-dependent forces are exercised too)
 inline World springChain(Integrator method, double dt) {
-  World w;
   Body box = makeBody(makeBox(Vec3(0.2, 0.4, 0.6)), 20.0);
   box.x = Vec3(0.2, -0.1, -1.0);
   box.q = axisAngle(Vec3(1, 2, 0), 0.5);
@@ -49,14 +48,14 @@ inline World springChain(Integrator method, double dt) {
   Body ellipsoid = makeBody(makeEllipsoid(Vec3(0.1, 0.15, 0.25)), 40.0);
   ellipsoid.x = Vec3(0.0, 0.2, -2.0);
   ellipsoid.omega = Vec3(0.0, 3.0, 1.0);
-  w.bodies = {box, ellipsoid};
-  w.forces.gravity = Vec3(0, 0, -9.81);
-  w.forces.springs.push_back({0, Vec3(0.1, 0.2, 0.3), kWorldAnchor, Vec3(0, 0, 0), 60.0, 0.5, 0.0});
-  w.forces.springs.push_back({0, Vec3(-0.1, 0.2, -0.3), 1, Vec3(0, 0, 0.25), 40.0, 0.5, 0.2});
-  w.forces.drags.push_back({1, 0.0, 0.01});
-  w.integrator = method;
-  w.dt = dt;
-  return w;
+  WorldDef def;
+  def.forces.gravity = Vec3(0, 0, -9.81);
+  def.forces.springs.push_back({0, Vec3(0.1, 0.2, 0.3), kWorldAnchor, Vec3(0, 0, 0), 60.0, 0.5, 0.0});
+  def.forces.springs.push_back({0, Vec3(-0.1, 0.2, -0.3), 1, Vec3(0, 0, 0.25), 40.0, 0.5, 0.2});
+  def.forces.drags.push_back({1, 0.0, 0.01});
+  def.integrator = method;
+  def.dt = dt;
+  return World(def, {box, ellipsoid});
 }
 
 // a distance in state space, summed over the bodies: |Δx| + |Δq| + |Δv| + |Δω| (m, 1, m/s, rad/s:

@@ -7,6 +7,7 @@
 
 #include "render/frame/scene_run.h"
 #include "support/drawn_scene.h"
+#include "support/redefined.h"
 
 using render::draw::DrawList;
 using render::draw::Role;
@@ -38,7 +39,7 @@ TEST_CASE("an impulse still to come: a dashed shaft, a solid head at its point, 
   sim::world::World world;
   world.bodies.resize(1);
   world.bodies[0].x = Vec2(1, 0);
-  world.events.push_back({0.5, 0, Vec2(0, 2), false, Vec2(1, 0)});
+  world = fixtures::redefined(world, [&](auto& d) { d.events.push_back({0.5, 0, Vec2(0, 2), false, Vec2(1, 0)}); });
   const render::draw::Camera camera(Vec2::Zero(), 10.0, 640, 360);
   DrawList list;
   // 2 m of arrow: the shaft from (−1, 2) to the neck 24 px short of the point (1, 2)

@@ -45,16 +45,16 @@ TEST_CASE("at the defaults, a tilted box dropped on a rough floor comes to rest 
     CAPTURE(d.mu);
     sim::world::World w = build(droppedBox(d.w, d.h, d.tilt, d.spin, d.height, d.cr, d.mu));
     w.start();
-    CHECK(w.collisions == sim::core::CollisionMethod::Event);
+    CHECK(w.collisions() == sim::core::CollisionMethod::Event);
     sim::world::EnergyLedger ledger(w);
     w.advanceTo(5.0, &ledger);
     // handed over when contact persisted, well before the end, between the floor and the box
-    CHECK(w.collisions == sim::core::CollisionMethod::Sequential);
-    CHECK(w.methodReason == sim::core::MethodReason::ContactPersisted);
-    REQUIRE(w.methodSwitch);
-    CHECK(w.methodSwitch->a == 0);
-    CHECK(w.methodSwitch->b == 1);
-    CHECK(w.methodSwitch->time < 2.0);
+    CHECK(w.collisions() == sim::core::CollisionMethod::Sequential);
+    CHECK(w.methodReason() == sim::core::MethodReason::ContactPersisted);
+    REQUIRE(w.methodSwitch());
+    CHECK(w.methodSwitch()->a == 0);
+    CHECK(w.methodSwitch()->b == 1);
+    CHECK(w.methodSwitch()->time < 2.0);
     // at rest, lying on a face: its center one half-side above the floor
     const sim::core::Body& box = w.bodies[1];
     CHECK(box.v.norm() <= 1e-9);
@@ -77,16 +77,16 @@ TEST_CASE("the watch: slow impacts repeated within the window hand over, fast an
       "world: {gravity: [0, -9.81], restitution: 0.5}\nbodies:\n  - {name: floor, shape: {plane: {point: [0, 0], normal: [0, "
       "1]}}}\n  - {name: ball, shape: {circle: 0.1}, position: [0, 0.12]}\n");
   rattle.advanceTo(1.0);
-  REQUIRE(rattle.methodSwitch);
-  CHECK(rattle.methodSwitch->how == sim::core::Persistence::Rattling);
+  REQUIRE(rattle.methodSwitch());
+  CHECK(rattle.methodSwitch()->how == sim::core::Persistence::Rattling);
   // its switch comes at the end of the step of the impact that made four within the window, on the
   // step grid, and no three impacts before it were within a window
   std::vector<double> times;
   for (const sim::world::ImpactRecord& r : rattle.impacts)
-    if (r.t <= rattle.methodSwitch->time) times.push_back(r.t);
+    if (r.t <= rattle.methodSwitch()->time) times.push_back(r.t);
   REQUIRE(times.size() >= 4);
   const double last = times.back();
-  CHECK(rattle.methodSwitch->time == doctest::Approx(std::ceil(last / rattle.dt) * rattle.dt).epsilon(1e-12));
+  CHECK(rattle.methodSwitch()->time == doctest::Approx(std::ceil(last / rattle.def().dt) * rattle.def().dt).epsilon(1e-12));
   CHECK(last - times[times.size() - 4] <= sim::core::settings::kRepeatWindow);
   for (size_t k = 3; k + 1 < times.size(); ++k) CHECK(times[k] - times[k - 3] > sim::core::settings::kRepeatWindow);
   CHECK(rattle.bodies[1].v.norm() <= 1e-9);
@@ -94,14 +94,14 @@ TEST_CASE("the watch: slow impacts repeated within the window hand over, fast an
   // Newton's cradle: the balls touch from the start and strike each other, but no force presses them
   // together and their impacts are fast: it stays with event, whose closed forms it keeps
   const scene_text::CradleRun cradle = scene_text::runCradle(sim::core::CollisionMethod::Auto);
-  CHECK(cradle.world.collisions == sim::core::CollisionMethod::Event);
-  CHECK_FALSE(cradle.world.methodSwitch);
+  CHECK(cradle.world.collisions() == sim::core::CollisionMethod::Event);
+  CHECK_FALSE(cradle.world.methodSwitch());
 
   // a ball thrown along a floor at 5 m/s bounces from 1 m at c_r 0.9: isolated impacts, far apart
   sim::world::World bounce = build(
       "world: {gravity: [0, -9.81], restitution: 0.9}\nbodies:\n  - {name: floor, shape: {plane: {point: [0, 0], normal: [0, "
       "1]}}}\n  - {name: ball, shape: {circle: 0.1}, position: [0, 1], velocity: [5, 0]}\n");
   bounce.advanceTo(2.0);
-  CHECK_FALSE(bounce.methodSwitch);
+  CHECK_FALSE(bounce.methodSwitch());
   CHECK(bounce.impacts.size() >= 2);
 }

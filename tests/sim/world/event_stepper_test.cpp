@@ -70,7 +70,7 @@ struct RunResult {
 // (on whatever it logged, also when the run stops with an error, which is itself a failure)
 RunResult runFreeScene(const std::string& yaml, double cr, double until) {
   sim::world::World w = build(yaml);
-  REQUIRE(w.forces.gravity == sim::core::Vec2::Zero());
+  REQUIRE(w.def().forces.gravity == sim::core::Vec2::Zero());
   const double e0 = sim::world::energy(w).kinetic, speed = speedScale(w);
   Conservation obs(w);
   bool threw = false;
@@ -81,7 +81,7 @@ RunResult runFreeScene(const std::string& yaml, double cr, double until) {
     FAIL_CHECK("the event method stopped at t = " << w.time << " after " << w.impacts.size()
                                                   << " impulses: " << std::string(e.what()));
   }
-  CHECK(w.collisions == sim::core::CollisionMethod::Event);
+  CHECK(w.collisions() == sim::core::CollisionMethod::Event);
   checkRestitutionLaw(w, cr, speed);
   CHECK(obs.dp <= 1e-9);
   CHECK(obs.dl <= 1e-9);

@@ -144,7 +144,7 @@ class StandWatch : public sim::world::StepObserver {
 
 TEST_CASE("isolated: the 10-box stack does not stand (the known failure of one impulse per contact)") {
   sim::world::World w = build(boxStack("isolated"));
-  REQUIRE(w.collisions == sim::core::CollisionMethod::Isolated);
+  REQUIRE(w.collisions() == sim::core::CollisionMethod::Isolated);
   StandWatch watch(w, 10);
   bool diverged = false;
   try {

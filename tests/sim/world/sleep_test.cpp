@@ -10,6 +10,7 @@
 
 #include "sim/world/diagnostics.h"
 #include "support/scene_text.h"
+#include "support/redefined.h"
 
 namespace {
 
@@ -74,7 +75,7 @@ TEST_CASE("sleep: a settled pile falls asleep and stays exactly still; a ball dr
     const size_t impactsBefore = w.impacts.size();
     double floorImpulse = 0.0;
     while (w.time < 1.6) {
-      w.advanceTo(w.time + w.dt);
+      w.advanceTo(w.time + w.def().dt);
       for (const sim::world::Contact& c : w.contacts)
         if (c.a == 0)
           for (int k = 0; k < c.manifold.count; ++k) floorImpulse += c.state[k].normalImpulse;
@@ -135,7 +136,7 @@ TEST_CASE("sleep: written false it is the default, and nothing sleeps however lo
   absent.replace(absent.find(", " + key), key.size() + 2, "");
   REQUIRE(absent.find("sleep") == std::string::npos);
   sim::world::World wOff = build(off), wAbsent = build(absent);
-  CHECK_FALSE(wOff.sleep);
+  CHECK_FALSE(wOff.def().sleep);
   wOff.advanceTo(1.2);
   wAbsent.advanceTo(1.2);
   CHECK(wOff.sleepingBodies() == 0);
@@ -159,7 +160,7 @@ TEST_CASE("sleep: soft_step with 2 or 3 threads gives the state hash of 1 thread
   for (double t : {1.0, 1.6, 4.0}) {
     CAPTURE(t);
     sim::world::World one = build(yaml);
-    one.threads = 1;
+    one = fixtures::redefined(one, [&](auto& d) { d.threads = 1; });
     one.advanceTo(t);
     // asleep at 1.0 (both piles), the first pile woken at 1.6 and the far one still asleep
     if (t == 1.0) CHECK(one.sleepingBodies() == kPileBodies + 3);
@@ -167,7 +168,7 @@ TEST_CASE("sleep: soft_step with 2 or 3 threads gives the state hash of 1 thread
     for (int threads : {2, 3}) {
       CAPTURE(threads);
       sim::world::World many = build(yaml);
-      many.threads = threads;
+      many = fixtures::redefined(many, [&](auto& d) { d.threads = threads; });
       many.advanceTo(t);
       CHECK(many.sleepingBodies() == one.sleepingBodies());
       CHECK(sim::world::stateHash(many) == sim::world::stateHash(one));

@@ -10,6 +10,7 @@
 #include "sim/core/simd_support.h"
 #include "sim/world/soft_contacts.h"
 #include "support/scene_text.h"
+#include "support/redefined.h"
 
 namespace {
 
@@ -58,9 +59,11 @@ std::string pile() {
 unsigned long long run(const std::string& yaml, int width, double seconds, int threads = 1,
                        sim::world::Precision precision = sim::world::Precision::Double) {
   sim::world::World w = scene_text::build(yaml);
-  w.simdWidth = width;
-  w.threads = threads;
-  w.precision = precision;
+  w = fixtures::redefined(w, [&](auto& d) {
+    d.simdWidth = width;
+    d.threads = threads;
+    d.precision = precision;
+  });
   w.advanceTo(seconds);
   return sim::world::stateHash(w);
 }
@@ -121,7 +124,7 @@ TEST_CASE("soft_step: 1, 2 and 3 threads give the same state hash (pyramids, a t
 
 TEST_CASE("soft_step: sim: threads reaches the world, and a copy of a threaded world steps on its own") {
   sim::world::World w = scene_text::build(pyramid(10, true) + "");
-  w.threads = 2;
+  w = fixtures::redefined(w, [&](auto& d) { d.threads = 2; });
   w.advanceTo(0.5);
   sim::world::World copy = w;  // the copy makes its own threads
   copy.advanceTo(1.0);
@@ -129,5 +132,5 @@ TEST_CASE("soft_step: sim: threads reaches the world, and a copy of a threaded w
   CHECK(sim::world::stateHash(copy) == sim::world::stateHash(w));
   std::string yaml = pyramid(3, false);
   yaml.replace(yaml.find("dt: 0.016666666666666667}"), 25, "dt: 0.016666666666666667, threads: 2}");
-  CHECK(scene_text::build(yaml).threads == 2);
+  CHECK(scene_text::build(yaml).def().threads == 2);
 }

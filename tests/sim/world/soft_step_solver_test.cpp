@@ -60,7 +60,7 @@ const char* const kPrecisions[] = {"double", "float"};
 
 Held runPile(const std::string& yaml, const std::vector<sim::core::Vec2>& rest, double seconds) {
   sim::world::World w = build(yaml);
-  REQUIRE(w.collisions == sim::core::CollisionMethod::SoftStep);
+  REQUIRE(w.collisions() == sim::core::CollisionMethod::SoftStep);
   w.advanceTo(seconds);
   Held h;
   for (size_t i = 1; i < w.bodies.size(); ++i) {
@@ -200,18 +200,18 @@ TEST_CASE("soft_step: a resting contact gives g/ω², ω = 2π · 2 · min(conta
 
 TEST_CASE("soft_step: precision is read, double by default, double or float only") {
   const std::string ball = "bodies: [{name: a, shape: {circle: 1}}]\n";
-  CHECK(build("sim: {collisions: soft_step}\n" + ball).precision == sim::world::Precision::Double);
-  CHECK(build("sim: {collisions: soft_step, precision: float}\n" + ball).precision == sim::world::Precision::Float);
-  CHECK(build("sim: {collisions: soft_step, precision: double}\n" + ball).precision == sim::world::Precision::Double);
+  CHECK(build("sim: {collisions: soft_step}\n" + ball).def().precision == sim::world::Precision::Double);
+  CHECK(build("sim: {collisions: soft_step, precision: float}\n" + ball).def().precision == sim::world::Precision::Float);
+  CHECK(build("sim: {collisions: soft_step, precision: double}\n" + ball).def().precision == sim::world::Precision::Double);
   CHECK_THROWS_WITH_AS(build("sim: {collisions: soft_step, precision: half}\n" + ball),
                        doctest::Contains("inline.yaml:1:41: unknown precision 'half'; choose one of: double, float"),
                        std::exception);
 }
 
 TEST_CASE("soft_step: contact_hertz is read, positive only") {
-  CHECK(build(std::string(kSettings) + "  - {name: box, shape: {box: [1, 1]}, position: [0, 0.5]}\n").contactHertz == 30.0);
+  CHECK(build(std::string(kSettings) + "  - {name: box, shape: {box: [1, 1]}, position: [0, 0.5]}\n").def().contactHertz == 30.0);
   const std::string stiff = "sim: {collisions: soft_step, contact_hertz: 120}\nbodies: [{name: a, shape: {circle: 1}}]\n";
-  CHECK(build(stiff).contactHertz == 120.0);
+  CHECK(build(stiff).def().contactHertz == 120.0);
   CHECK_THROWS_WITH_AS(build("sim: {contact_hertz: 0}\nbodies: [{name: a, shape: {circle: 1}}]\n"),
                        doctest::Contains("contact_hertz"), std::exception);
 }

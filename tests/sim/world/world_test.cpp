@@ -228,7 +228,7 @@ TEST_CASE("pinned state hashes after N steps: a stack (sequential), impacts (eve
     const std::string name = p.name;
     CAPTURE(name);
     sim::world::World w = sim::scene::buildWorld(sim::yaml::loadSceneText(p.yaml, "inline.yaml"));
-    while (w.steps < p.steps) w.advanceTo(w.time + w.dt);
+    while (w.steps < p.steps) w.advanceTo(w.time + w.def().dt);
     REQUIRE(w.steps == p.steps);
     CHECK(sim::world::stateHash(w) == p.hash);
   }
@@ -269,19 +269,19 @@ TEST_CASE("auto builds a stack: events until a contact persists, then the stack 
   std::vector<double> restX;
   for (const sim::core::Body& b : w.bodies) restX.push_back(b.x.x());
   w.start();
-  CHECK(w.collisions == sim::core::CollisionMethod::Event);
-  CHECK_FALSE(w.methodSwitch);
+  CHECK(w.collisions() == sim::core::CollisionMethod::Event);
+  CHECK_FALSE(w.methodSwitch());
   w.advanceTo(10.0);
   // the switch, reported: which method, why, between which bodies and from when (a step's end, as
   // the lowest row lands and rattles on the ground, before 1 s and before impacts pile up)
-  CHECK(w.collisions == sim::core::CollisionMethod::Sequential);
-  CHECK(w.methodReason == sim::core::MethodReason::ContactPersisted);
-  REQUIRE(w.methodSwitch);
-  CHECK(w.methodSwitch->a == 0);
-  CHECK(w.methodSwitch->b >= 1);
-  CHECK(w.methodSwitch->time > 0.0);
-  CHECK(w.methodSwitch->time < 1.0);
-  const double steps = w.methodSwitch->time / w.dt;
+  CHECK(w.collisions() == sim::core::CollisionMethod::Sequential);
+  CHECK(w.methodReason() == sim::core::MethodReason::ContactPersisted);
+  REQUIRE(w.methodSwitch());
+  CHECK(w.methodSwitch()->a == 0);
+  CHECK(w.methodSwitch()->b >= 1);
+  CHECK(w.methodSwitch()->time > 0.0);
+  CHECK(w.methodSwitch()->time < 1.0);
+  const double steps = w.methodSwitch()->time / w.def().dt;
   CHECK(std::abs(steps - std::round(steps)) < 1e-6);
   // the pile at rest, in place: every box slower than 1 cm/s and within 0.1 m of its rest x
   for (size_t i = 1; i < w.bodies.size(); ++i) {
@@ -292,11 +292,11 @@ TEST_CASE("auto builds a stack: events until a contact persists, then the stack 
   }
   // no impact after the switch is the event method's: every later one is at a step's end
   for (const sim::world::ImpactRecord& r : w.impacts)
-    if (r.t > w.methodSwitch->time) CHECK(std::abs(r.t / w.dt - std::round(r.t / w.dt)) < 1e-6);
-  for (const sim::world::RestingRecord& r : w.resting) CHECK(r.t <= w.methodSwitch->time);
+    if (r.t > w.methodSwitch()->time) CHECK(std::abs(r.t / w.def().dt - std::round(r.t / w.def().dt)) < 1e-6);
+  for (const sim::world::RestingRecord& r : w.resting) CHECK(r.t <= w.methodSwitch()->time);
 
   // named explicitly, event keeps to itself and gives up as before
   sim::world::World event = sim::scene::buildWorld(sim::yaml::loadSceneText(droppedPile("event"), "inline.yaml"));
   CHECK_THROWS_AS(event.advanceTo(10.0), sim::world::ImpactsPileUp);
-  CHECK(event.collisions == sim::core::CollisionMethod::Event);
+  CHECK(event.collisions() == sim::core::CollisionMethod::Event);
 }

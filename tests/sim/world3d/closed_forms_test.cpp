@@ -8,6 +8,7 @@
 #include "sim/world3d/diagnostics.h"
 #include "sim/world3d/measures.h"
 #include "support/world3d_fixtures.h"
+#include "support/redefined.h"
 
 using namespace sim::world3d;
 using fixtures3d::relativeError;
@@ -21,8 +22,10 @@ World symmetricTop(Integrator method, double dt, const Vec3& omegaBody) {
   top.q = axisAngle(Vec3(1, -2, 0.5), 0.7);
   top.omega = top.rotation() * omegaBody;
   w.bodies.push_back(top);
-  w.integrator = method;
-  w.dt = dt;
+  w = fixtures::redefined(w, [&](auto& d) {
+    d.integrator = method;
+    d.dt = dt;
+  });
   return w;
 }
 
@@ -33,8 +36,10 @@ World racket(Integrator method, double dt) {
   Body box = makeBody(makeBox(Vec3(0.1, 0.4, 0.8)), 1.0 / 0.032);
   box.omega = Vec3(0.1, 4.0, 0.1);
   w.bodies.push_back(box);
-  w.integrator = method;
-  w.dt = dt;
+  w = fixtures::redefined(w, [&](auto& d) {
+    d.integrator = method;
+    d.dt = dt;
+  });
   return w;
 }
 
@@ -99,7 +104,7 @@ TEST_CASE("the symmetric top: Ω = ω₃ (I₃ − I₁)/I₁ in the body, |L|/I
             relativeError(bodyRate, bodyPrecessionRate(top)), "), space precession ", spaceRate, " rad/s (",
             relativeError(spaceRate, spacePrecessionRate(top)), "), cone angle within ", p.coneError, " rad");
     // the splitting's O(h²) error: (h|ω|)², 2.6e-5 and 1.4e-5 here
-    const double splittingError = std::pow(w.dt * omegaBody.norm(), 2);
+    const double splittingError = std::pow(w.def().dt * omegaBody.norm(), 2);
     CHECK(relativeError(bodyRate, bodyPrecessionRate(top)) < splittingError);
     CHECK(relativeError(spaceRate, spacePrecessionRate(top)) < splittingError);
     CHECK(p.coneError < 1e-6);
@@ -167,7 +172,7 @@ TEST_CASE("the notes' poll in 3D: the bar (l = 4, m = 3, I = 4) struck by j = (1
   const ImpulseOutcome expected =
       afterImpulse(3.0, inertia, bar.q, bar.v, bar.omega, bar.rotation() * Vec3(0, 0, 2), Vec3(1, 0, 0));
   w.bodies.push_back(bar);
-  w.events.push_back({0.0, 0, Vec3(0, 0, 2), false, Vec3(1, 0, 0)});
+  w = fixtures::redefined(w, [&](auto& d) { d.events.push_back({0.0, 0, Vec3(0, 0, 2), false, Vec3(1, 0, 0)}); });
   w.advanceTo(0.0);
   CHECK(w.bodies[0].v.isApprox(expected.velocity, 1e-15));
   CHECK(w.bodies[0].omega.isApprox(expected.angularVelocity, 1e-14));

@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include "support/world3d_fixtures.h"
+#include "support/redefined.h"
 
 using namespace sim::world3d;
 using fixtures3d::relativeError;
@@ -16,7 +17,7 @@ TEST_CASE("kinetic energy ½ m v·v + ½ ω·L, and a sphere's ½ (⅖ m r²) ω
   const KineticEnergy k = kineticEnergy(w.bodies[0]);
   CHECK(relativeError(k.translational, 0.5 * 6 * 9) < 1e-15);
   CHECK(relativeError(k.rotational, 0.5 * 0.4 * 6 * 0.25 * 25) < 1e-14);
-  w.forces.gravity = Vec3(0, 0, -10);
+  w = fixtures::redefined(w, [&](auto& d) { d.forces.gravity = Vec3(0, 0, -10); });
   w.bodies[0].x = Vec3(0, 0, 2);
   CHECK(relativeError(energy(w).potential, 6 * 10 * 2) < 1e-15);
   CHECK(relativeError(energy(w).total(), k.total() + 120) < 1e-15);

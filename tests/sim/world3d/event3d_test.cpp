@@ -8,6 +8,7 @@
 #include "sim/world3d/diagnostics.h"
 #include "sim/world3d/energy_ledger3d.h"
 #include "sim/world3d/world.h"
+#include "support/redefined.h"
 
 using namespace sim::world3d;
 using sim::core::CollisionMethod;
@@ -16,11 +17,11 @@ namespace {
 constexpr double kG = 9.81;
 
 World onFloor(CollisionMethod method, double restitution, double friction = 0.0) {
-  World w;
-  w.planes.push_back({Vec3::Zero(), Vec3::UnitZ(), restitution, friction, friction > 0.0});
-  w.forces.gravity = Vec3(0, 0, -kG);
-  w.collisions = method;
-  return w;
+  WorldDef def;
+  def.planes.push_back({Vec3::Zero(), Vec3::UnitZ(), restitution, friction, friction > 0.0});
+  def.forces.gravity = Vec3(0, 0, -kG);
+  def.collisions = method;
+  return World(def);
 }
 }  // namespace
 
@@ -66,8 +67,9 @@ TEST_CASE("a box landing flat on its face with no spin rebounds as a point mass"
 }
 
 TEST_CASE("two spheres: the notes' two-body impulse in 3D keeps momentum, and c_r = 1 the kinetic energy") {
-  World w;
-  w.collisions = CollisionMethod::Event;
+  WorldDef def;
+  def.collisions = CollisionMethod::Event;
+  World w(def);
   Body a = makeBody(makeSphere(0.5), 1.0), b = makeBody(makeSphere(0.3), 3.0);
   a.restitution = b.restitution = 1.0;
   a.x = Vec3(-2, 0.2, 0.1), a.v = Vec3(2, 0, 0), a.omega = Vec3(0, 0, 5);
@@ -97,13 +99,13 @@ TEST_CASE("event named stops where a contact persists; under auto, sequential ta
   CHECK_THROWS_AS(named.advanceTo(3.0), ContactPersists);
   World automatic = bouncing(CollisionMethod::Auto);
   automatic.start();
-  CHECK(automatic.collisions == CollisionMethod::Event);
+  CHECK(automatic.collisions() == CollisionMethod::Event);
   automatic.advanceTo(3.0);
-  CHECK(automatic.collisions == CollisionMethod::Sequential);
-  REQUIRE(automatic.methodSwitch);
-  CHECK(automatic.methodSwitch->a == 0);
-  CHECK(automatic.methodSwitch->b == -1);
-  CHECK(automatic.methodSwitch->time < 1.5);
+  CHECK(automatic.collisions() == CollisionMethod::Sequential);
+  REQUIRE(automatic.methodSwitch());
+  CHECK(automatic.methodSwitch()->a == 0);
+  CHECK(automatic.methodSwitch()->b == -1);
+  CHECK(automatic.methodSwitch()->time < 1.5);
   CHECK(automatic.bodies[0].v.norm() <= 1e-9);
   CHECK(automatic.bodies[0].x.z() == doctest::Approx(0.1).epsilon(sim::core::settings::kLinearSlop));
 }
@@ -111,7 +113,7 @@ TEST_CASE("event named stops where a contact persists; under auto, sequential ta
 TEST_CASE("a pair touching and approaching strikes at once; one resting under gravity persists, never jitters") {
   // no gravity: a ball on the floor moving into it bounces at t = 0, not 0.5 mm into the floor
   World w = onFloor(CollisionMethod::Event, 1.0);
-  w.forces.gravity = Vec3::Zero();
+  w = fixtures::redefined(w, [&](auto& d) { d.forces.gravity = Vec3::Zero(); });
   Body ball = makeBody(makeSphere(0.1), 100.0);
   ball.restitution = 1.0;
   ball.x = Vec3(0, 0, 0.1), ball.v = Vec3(0, 0, -1);
@@ -130,7 +132,7 @@ TEST_CASE("a pair touching and approaching strikes at once; one resting under gr
     resting.advanceTo(1.0);
     FAIL("a ball at rest on the floor under event should persist");
   } catch (const ContactPersists& e) {
-    CHECK(e.time <= resting.dt);
+    CHECK(e.time <= resting.def().dt);
   }
 }
 

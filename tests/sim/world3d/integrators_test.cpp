@@ -6,6 +6,7 @@
 #include <complex>
 
 #include "support/world3d_fixtures.h"
+#include "support/redefined.h"
 
 using namespace sim::world3d;
 
@@ -19,7 +20,7 @@ constexpr Integrator kClassic[] = {Integrator::ExplicitEuler, Integrator::Symple
 World principalSpin(Integrator method, double dt, bool normalize) {
   World w = fixtures3d::freeBox(method, dt, Vec3(0, 0, 4.0));
   w.bodies[0].q = Quat::Identity();
-  w.normalizeQuaternions = normalize;
+  w = fixtures::redefined(w, [&](auto& d) { d.normalizeQuaternions = normalize; });
   return w;
 }
 
@@ -61,7 +62,7 @@ TEST_CASE("normalized: |q| = 1 to round-off after 10⁶ steps of explicit Euler 
   CHECK(worst.drift <= settings::kUnitNormRoundOff);
   // without the normalization the same run ends far off: one step alone puts |q| off by (h|ω|)²/8
   World loose = fixtures3d::freeBox(Integrator::ExplicitEuler, 1e-3);
-  loose.normalizeQuaternions = false;
+  loose = fixtures::redefined(loose, [&](auto& d) { d.normalizeQuaternions = false; });
   loose.advanceTo(1.0);
   CHECK(quaternionDrift(loose) > 1e3 * settings::kUnitNormRoundOff);
 }
@@ -104,7 +105,7 @@ TEST_CASE("unnormalized: |q| drifts by the stability function's modulus, (1 + (h
   // wandering free box, explicit and symplectic Euler without normalization diverge within 10 s
   for (Integrator m : {Integrator::ExplicitEuler, Integrator::SymplecticEuler}) {
     World w = fixtures3d::freeBox(m, 0.01);
-    w.normalizeQuaternions = false;
+    w = fixtures::redefined(w, [&](auto& d) { d.normalizeQuaternions = false; });
     CHECK_THROWS_AS(w.advanceTo(10.0), Diverged);
   }
   // explicit Euler's drift, spelled out: (1 + 0.0004)^500

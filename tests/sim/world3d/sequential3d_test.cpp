@@ -8,6 +8,7 @@
 #include "sim/world3d/diagnostics.h"
 #include "sim/world3d/energy_ledger3d.h"
 #include "sim/world3d/world.h"
+#include "support/redefined.h"
 
 using namespace sim::world3d;
 using sim::core::CollisionMethod;
@@ -18,11 +19,11 @@ const Integrator kIntegrators[] = {Integrator::ExplicitEuler, Integrator::Symple
                                    Integrator::Splitting};
 
 World onFloor(double friction, Integrator integrator = Integrator::Splitting) {
-  World w;
-  w.planes.push_back({Vec3::Zero(), Vec3::UnitZ(), 0.5, friction, true});
-  w.forces.gravity = Vec3(0, 0, -kG);
-  w.integrator = integrator;
-  return w;
+  WorldDef def;
+  def.planes.push_back({Vec3::Zero(), Vec3::UnitZ(), 0.5, friction, true});
+  def.forces.gravity = Vec3(0, 0, -kG);
+  def.integrator = integrator;
+  return World(def);
 }
 }  // namespace
 
@@ -37,10 +38,10 @@ TEST_CASE("a ball launched without spin slides, then rolls at 5/7 of its speed f
     w.bodies.push_back(ball);
     // touching under gravity at the start: auto chooses sequential
     w.start();
-    REQUIRE(w.collisions == CollisionMethod::Sequential);
+    REQUIRE(w.collisions() == CollisionMethod::Sequential);
     const double rolls = 2 * v0 / (7 * mu * kG);
     // still sliding a step before, rolling from a step after
-    w.advanceTo(rolls - 2 * w.dt);
+    w.advanceTo(rolls - 2 * w.def().dt);
     const Body& b = w.bodies[0];
     CHECK(b.v.x() - b.omega.y() * r > 1e-3);
     w.advanceTo(1.0);
@@ -63,8 +64,8 @@ TEST_CASE("a die thrown tumbling onto the floor comes to rest on a face, its ene
   EnergyLedger3d ledger(w);
   w.advanceTo(4.0, &ledger);
   // auto began with event and handed over when the die stayed on the floor
-  CHECK(w.collisions == CollisionMethod::Sequential);
-  REQUIRE(w.methodSwitch);
+  CHECK(w.collisions() == CollisionMethod::Sequential);
+  REQUIRE(w.methodSwitch());
   const Body& b = w.bodies[0];
   CHECK(b.v.norm() <= 1e-9);
   CHECK(b.omega.norm() <= 1e-9);
@@ -81,8 +82,10 @@ TEST_CASE("a box at rest on the floor stays at rest under every integrator") {
       CAPTURE(kIntegratorNames.name(integrator));
       CAPTURE(dt);
       World w = onFloor(0.5, integrator);
-      w.dt = dt;
-      w.collisions = CollisionMethod::Sequential;
+      w = fixtures::redefined(w, [&](auto& d) {
+        d.dt = dt;
+        d.collisions = CollisionMethod::Sequential;
+      });
       Body box = makeBody(makeBox(Vec3(0.4, 0.3, 0.2)), 10.0);
       box.x = Vec3(0, 0, 0.1);
       w.bodies.push_back(box);

@@ -6,6 +6,7 @@
 #include "sim/world3d/diagnostics.h"
 #include "sim/world3d/integrators.h"
 #include "support/world3d_fixtures.h"
+#include "support/redefined.h"
 
 using namespace sim::world3d;
 
@@ -27,7 +28,7 @@ TEST_CASE("a free asymmetric body: the splitting keeps L to round-off over 10⁴
 
 TEST_CASE("the splitting keeps |q| = 1 to round-off without any normalization") {
   World w = fixtures3d::freeBox(Integrator::Splitting, 0.01);
-  w.normalizeQuaternions = false;
+  w = fixtures::redefined(w, [&](auto& d) { d.normalizeQuaternions = false; });
   w.advanceTo(100.0);
   MESSAGE("| |q| - 1 | after 10^4 unnormalized steps: ", quaternionDrift(w));
   // a product of unit quaternions rounds by a few ulps a step, adding up as a random walk
@@ -36,10 +37,12 @@ TEST_CASE("the splitting keeps |q| = 1 to round-off without any normalization") 
 
 TEST_CASE("the splitting is symmetric: a step of −h undoes a step of h") {
   World w = fixtures3d::freeBox(Integrator::Splitting, 0.01);
-  w.forces.gravity = Vec3(0, 0, -9.81);  // a kick as well as the free flow
+  w = fixtures::redefined(w, [&](auto& d) {
+    d.forces.gravity = Vec3(0, 0, -9.81);  // a kick as well as the free flow
+  });
   States y(w.bodies.begin(), w.bodies.end());
   const States start = y;
-  const Dynamics f{w.bodies, w.forces, 0.0};
+  const Dynamics f{w.bodies, w.def().forces, 0.0};
   splittingStep(f, 0.05, y);
   CHECK((y[0].q.coeffs() - start[0].q.coeffs()).norm() > 0.01);
   splittingStep(f, -0.05, y);
@@ -53,10 +56,12 @@ TEST_CASE("two bodies joined by a spring: the splitting keeps p and L about the 
   // internal forces only: each kick adds f and −f at points on one line, so Σ p and Σ (x × p + L)
   // are untouched; the drift moves x along v and the free flow keeps each body's L
   World w = fixtures3d::springChain(Integrator::Splitting, 0.01);
-  w.forces.gravity.setZero();
-  w.forces.springs.erase(w.forces.springs.begin());  // the world anchor would be an external force
-  w.forces.drags.clear();
-  w.forces.springs[0].damping = 0.0;
+  w = fixtures::redefined(w, [&](auto& d) {
+    d.forces.gravity.setZero();
+    d.forces.springs.erase(d.forces.springs.begin());  // the world anchor would be an external force
+    d.forces.drags.clear();
+    d.forces.springs[0].damping = 0.0;
+  });
   w.bodies[0].v = Vec3(0.3, 0, 0);
   const Vec3 p0 = linearMomentum(w), l0 = angularMomentum(w);
   const double e0 = energy(w).total();

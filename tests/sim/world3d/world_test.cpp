@@ -4,6 +4,7 @@
 
 #include "sim/world3d/diagnostics.h"
 #include "support/world3d_fixtures.h"
+#include "support/redefined.h"
 
 using namespace sim::world3d;
 
@@ -31,10 +32,12 @@ bool sameState(const World& a, const World& b) {
 
 TEST_CASE("the step grid is split exactly at events and force switches, and events at 0 and at the end apply") {
   World w = fixtures3d::freeBox(Integrator::Rk4, 0.1);
-  w.events = {{0.25, 0, Vec3::Zero(), false, Vec3(1, 0, 0)},
-              {0.0, 0, Vec3::Zero(), false, Vec3(0, 1, 0)},
-              {0.5, 0, Vec3::Zero(), false, Vec3(0, 0, 1)}};
-  w.forces.pointForces.push_back({0, Vec3::Zero(), Vec3(0, 0, 1), false, 0.33, 0.45});
+  w = fixtures::redefined(w, [&](auto& d) {
+    d.events = {{0.25, 0, Vec3::Zero(), false, Vec3(1, 0, 0)},
+                {0.0, 0, Vec3::Zero(), false, Vec3(0, 1, 0)},
+                {0.5, 0, Vec3::Zero(), false, Vec3(0, 0, 1)}};
+    d.forces.pointForces.push_back({0, Vec3::Zero(), Vec3(0, 0, 1), false, 0.33, 0.45});
+  });
   Recorder r;
   w.advanceTo(0.5, &r);
   CHECK(r.stepTimes == std::vector<double>{0.1, 0.2, 0.25, 3 * 0.1, 0.33, 4 * 0.1, 0.45, 0.5});
@@ -47,7 +50,9 @@ TEST_CASE("a timed force changes the momentum by f × its duration, exactly, wit
   for (Integrator m : kAll) {
     CAPTURE(kIntegratorNames.name(m));
     World w = fixtures3d::freeBox(m, 0.01);
-    w.forces.pointForces.push_back({0, Vec3(0.1, 0, 0), Vec3(0, 2.0, 0), false, 0.033, 0.5});
+    w = fixtures::redefined(w, [&](auto& d) {
+      d.forces.pointForces.push_back({0, Vec3(0.1, 0, 0), Vec3(0, 2.0, 0), false, 0.033, 0.5});
+    });
     const Vec3 p0 = linearMomentum(w);
     w.advanceTo(1.0);
     CHECK((linearMomentum(w) - p0 - Vec3(0, 2.0 * 0.467, 0)).norm() < 1e-14);
@@ -77,7 +82,9 @@ TEST_CASE("advanceWithin takes the run's own steps up to a time between them, ne
   for (Integrator m : kAll) {
     CAPTURE(kIntegratorNames.name(m));
     World once = fixtures3d::springChain(m, 0.01), within = fixtures3d::springChain(m, 0.01);
-    within.events = once.events = {{0.333, 0, Vec3::Zero(), false, Vec3(0, 1, 0)}};
+    const auto withEvent = [](auto& d) { d.events = {{0.333, 0, Vec3::Zero(), false, Vec3(0, 1, 0)}}; };
+    once = fixtures::redefined(once, withEvent);
+    within = fixtures::redefined(within, withEvent);
     Recorder a, b;
     once.advanceTo(0.755, &a);
     // pictures at 1/60 s, the end of the run 0.755 s
@@ -93,7 +100,9 @@ TEST_CASE("advanceWithin takes the run's own steps up to a time between them, ne
 TEST_CASE("a state that stops being finite is an error naming the time and the body") {
   // a stiff spring on the second body under explicit Euler: h ω = 10, |state| grows tenfold a step
   World w = fixtures3d::springChain(Integrator::ExplicitEuler, 0.01);
-  w.forces.springs.push_back({1, Vec3::Zero(), sim::core::kWorldAnchor, Vec3::Zero(), 1e6 * w.bodies[1].mass, 0.0, 0.0});
+  w = fixtures::redefined(w, [&](auto& d) {
+    d.forces.springs.push_back({1, Vec3::Zero(), sim::core::kWorldAnchor, Vec3::Zero(), 1e6 * w.bodies[1].mass, 0.0, 0.0});
+  });
   try {
     w.advanceTo(100.0);
     FAIL("no divergence");

@@ -83,16 +83,16 @@ expect:
   // principal moments, and a full tensor, as written
   CHECK(w.bodies[2].inertiaBody == Mat3(Vec3(1, 2, 2.5).asDiagonal()));
   CHECK(w.bodies[3].inertiaBody(0, 1) == 0.1);
-  CHECK_FALSE(w.normalizeQuaternions);
-  REQUIRE(w.forces.springs.size() == 1);
-  CHECK(w.forces.springs[0].bodyB == kWorldAnchor);
-  CHECK(w.forces.springs[0].pointB == Vec3(0, 0, 5));
-  REQUIRE(w.forces.pointForces.size() == 1);
-  CHECK(w.forces.pointForces[0].bodyFrame);
-  CHECK(w.forces.pointForces[0].until == 1.0);
-  CHECK(w.forces.drags[0].angular == 0.2);
-  REQUIRE(w.events.size() == 1);
-  CHECK(w.events[0].body == 3);
+  CHECK_FALSE(w.def().normalizeQuaternions);
+  REQUIRE(w.def().forces.springs.size() == 1);
+  CHECK(w.def().forces.springs[0].bodyB == kWorldAnchor);
+  CHECK(w.def().forces.springs[0].pointB == Vec3(0, 0, 5));
+  REQUIRE(w.def().forces.pointForces.size() == 1);
+  CHECK(w.def().forces.pointForces[0].bodyFrame);
+  CHECK(w.def().forces.pointForces[0].until == 1.0);
+  CHECK(w.def().forces.drags[0].angular == 0.2);
+  REQUIRE(w.def().events.size() == 1);
+  CHECK(w.def().events[0].body == 3);
   REQUIRE(s.expects.size() == 1);
   CHECK(s.expects[0].flipPeriod == 3.0);
   CHECK(s.expects[0].tolerance == 1e-6);
