@@ -12,6 +12,7 @@
 #include <memory>
 #include <vector>
 
+#include "sim/core/cloned.h"
 #include "sim/core/integrators.h"
 #include "sim/world/contact.h"
 
@@ -71,23 +72,6 @@ class StepDynamics : public sim::core::Dynamics {
 void moveFreely(World& world, const TimeStep& step);
 
 // a method owned by value: a copy of the world has a copy of its method's state
-class OwnedMethod {
- public:
-  OwnedMethod() = default;
-  explicit OwnedMethod(std::unique_ptr<Method> method) : method_(std::move(method)) {}
-  OwnedMethod(const OwnedMethod& o) : method_(o.method_ ? o.method_->clone() : nullptr) {}
-  OwnedMethod& operator=(const OwnedMethod& o) {
-    method_ = o.method_ ? o.method_->clone() : nullptr;
-    return *this;
-  }
-  OwnedMethod(OwnedMethod&&) = default;
-  OwnedMethod& operator=(OwnedMethod&&) = default;
-  explicit operator bool() const { return method_ != nullptr; }
-  Method& operator*() const { return *method_; }
-  Method* operator->() const { return method_.get(); }
-
- private:
-  std::unique_ptr<Method> method_;
-};
+using OwnedMethod = sim::core::Cloned<Method>;
 
 }  // namespace sim::world

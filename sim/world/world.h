@@ -12,6 +12,7 @@
 #include "sim/core/forces.h"
 #include "sim/core/integrators.h"
 #include "sim/core/settings.h"
+#include "sim/core/step_observer.h"
 #include "sim/core/timeline.h"
 #include "sim/world/contact.h"
 #include "sim/world/contact_finder.h"
@@ -27,12 +28,7 @@ namespace settings = sim::core::settings;
 class World;
 
 // told of every finished step and every applied event, e.g. to write a trace
-class StepObserver {
- public:
-  virtual ~StepObserver() = default;
-  virtual void afterStep(const World&) {}
-  virtual void afterEvent(const World&, const ImpulseEvent&) {}
-};
+using StepObserver = sim::core::StepObserverOf<World, ImpulseEvent>;
 
 // a body's state stopped being finite
 struct Diverged : std::runtime_error {

@@ -10,9 +10,11 @@
 #include <stdexcept>
 #include <vector>
 
+#include "sim/core/cloned.h"
 #include "sim/core/collision_methods.h"
 #include "sim/core/rattle_watch.h"
 #include "sim/core/settings.h"
+#include "sim/core/step_observer.h"
 #include "sim/core/timeline.h"
 #include "sim/world3d/contact3d.h"
 #include "sim/world3d/integrators.h"
@@ -24,12 +26,7 @@ namespace sim::world3d {
 class World;
 
 // told of every finished step and every applied event, e.g. to write a trace
-class StepObserver {
- public:
-  virtual ~StepObserver() = default;
-  virtual void afterStep(const World&) {}
-  virtual void afterEvent(const World&, const ImpulseEvent&) {}
-};
+using StepObserver = sim::core::StepObserverOf<World, ImpulseEvent>;
 
 // a body's state stopped being finite
 struct Diverged : std::runtime_error {
@@ -39,23 +36,7 @@ struct Diverged : std::runtime_error {
 };
 
 // a method owned by value: a copy of the world has a copy of its method's state
-class OwnedMethod3 {
- public:
-  OwnedMethod3() = default;
-  explicit OwnedMethod3(std::unique_ptr<Method3> m) : method_(std::move(m)) {}
-  OwnedMethod3(const OwnedMethod3& o) : method_(o.method_ ? o.method_->clone() : nullptr) {}
-  OwnedMethod3& operator=(const OwnedMethod3& o) {
-    method_ = o.method_ ? o.method_->clone() : nullptr;
-    return *this;
-  }
-  OwnedMethod3(OwnedMethod3&&) = default;
-  OwnedMethod3& operator=(OwnedMethod3&&) = default;
-  Method3* operator->() const { return method_.get(); }
-  explicit operator bool() const { return method_ != nullptr; }
-
- private:
-  std::unique_ptr<Method3> method_;
-};
+using OwnedMethod3 = sim::core::Cloned<Method3>;
 
 // The 3D world's state, stepped under its definition (world_def.h): the bodies, the time and the
 // contacts
