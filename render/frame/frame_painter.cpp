@@ -15,8 +15,8 @@
 #include "render/frame/upcoming_events.h"
 #include "render/scene/scene_style.h"
 #include "sim/collision/collide.h"
-#include "sim/debug/describe.h"
-#include "sim/debug/separating_axes.h"
+#include "sim/describe/describe.h"
+#include "sim/describe/separating_axes.h"
 
 namespace render::frame {
 using sim::core::Vec2;
@@ -96,7 +96,7 @@ History::Options FramePainter::historyOptions() const {
     const double length = o.normalLength;
     o.contacts = [length](const sim::world::World& world, Canvas& draw) {
       PhysicsDraw physics(draw);
-      sim::debug::describeContacts(world, length, physics);
+      sim::describe::describeContacts(world, length, physics);
     };
   }
   return o;
@@ -110,18 +110,18 @@ void FramePainter::paint(const sim::world::World& world, const History& history,
   // static bodies and planes at the back, so that everything that moves is drawn over them
   RoleFilter statics(draw, [](Role role) { return role == Role::StaticBody; });
   PhysicsDraw staticPhysics(statics);
-  sim::debug::describeBodies(world, staticPhysics);
+  sim::describe::describeBodies(world, staticPhysics);
   // trails, points 1.5 px apart at most: smooth, and a few hundred segments for a long run
   if (r.trails) history.drawTrails(draw, kTrailSpacingPx * px);
   for (const DrawList& ghost : ghosts) ghost.replay(draw);
   RoleFilter moving(draw, [](Role role) { return role != Role::StaticBody; });
   PhysicsDraw movingPhysics(moving);
-  sim::debug::describeBodies(world, movingPhysics);
+  sim::describe::describeBodies(world, movingPhysics);
   // what the overlays drew, for the key to those not labelled where they are
   OverlaysSeen seen(draw);
   PhysicsDraw physics(seen);
   // coils 2.5 line widths to each side: visible, and narrower than most bodies
-  if (r.springs) sim::debug::describeSprings(world, 2.5 * lineWidthFor(def_.render, camera_.heightPx()) * px, physics);
+  if (r.springs) sim::describe::describeSprings(world, 2.5 * lineWidthFor(def_.render, camera_.heightPx()) * px, physics);
   // impulses beside the normals they share a line with, so that both show
   ImpulseBeside beside(seen, impulseOffsetPx(lineWidthFor(r, camera_.heightPx())) * px);
   // contacts: dots and normals while few are on screen, else (contacts: auto) dots alone, which
@@ -151,7 +151,7 @@ void FramePainter::paint(const sim::world::World& world, const History& history,
   // the overlay of every polygon pair closer than a tenth of the view (so, as they approach), its
   // label a line of text out from the edge
   if (r.sat || r.overlays.satAxes)
-    sim::debug::describeSeparatingAxes(world, 0.1 * camera_.worldHeight(), textSize, physics, r.overlays.satAxes);
+    sim::describe::describeSeparatingAxes(world, 0.1 * camera_.worldHeight(), textSize, physics, r.overlays.satAxes);
   if (r.velocities)
     for (size_t i = 0; i < world.bodies.size(); ++i) {
       const sim::core::Body& b = world.bodies[i];

@@ -1,7 +1,7 @@
 #include "render/frame/history.h"
 
 #include "render/jobs/interrupt.h"
-#include "sim/debug/describe.h"
+#include "sim/describe/describe.h"
 
 namespace render::frame {
 using sim::core::Vec2;
@@ -40,7 +40,7 @@ void History::afterEvent(const sim::world::World& world, const sim::world::Impul
   if (!options_.eventImpulses) return;
   Moment m{world.time, {}, Moment::Kind::Event, {-1, -1}};
   PhysicsDraw physics(m.calls);
-  const sim::debug::Arrow arrow = sim::debug::describeEventImpulse(world, e, options_.impulseScale, physics);
+  const sim::describe::Arrow arrow = sim::describe::describeEventImpulse(world, e, options_.impulseScale, physics);
   if (options_.labels) options_.labels->event(e, arrow.tail, arrow.head, m.calls);
   begin(std::move(m));
 }
@@ -85,7 +85,7 @@ void History::observeImpacts(const sim::world::World& world) {
     DrawList& d = moments_.at(id).calls;
     const bool first = d.empty();
     PhysicsDraw physics(d);
-    sim::debug::describeImpact(world, r, options_.impulseScale, options_.normalLength, physics);
+    sim::describe::describeImpact(world, r, options_.impulseScale, options_.normalLength, physics);
     if (options_.labels) options_.labels->impact(world, r, first, d);
   }
 }

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "sim/debug/number_text.h"
+#include "sim/describe/number_text.h"
 
 namespace render::frame {
 
@@ -24,7 +24,7 @@ std::string timeToMs(double t) {
   return s == "-0" ? "0" : s;
 }
 
-std::string numberText(double x, double zeroBelow) { return sim::debug::numberText(x, 3, zeroBelow); }
+std::string numberText(double x, double zeroBelow) { return sim::describe::numberText(x, 3, zeroBelow); }
 
 std::string quantityText(const std::string& name, double x, const std::string& unit, double zeroBelow) {
   return name + " = " + numberText(x, zeroBelow) + " " + unit;

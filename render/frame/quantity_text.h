@@ -1,6 +1,6 @@
 // Values as the lecture overlays write them: three significant digits in plain notation (from 0.001
 // to 10,000), a true minus sign (U+2212), the unit after a space, e.g. "ω = −0.500 rad/s"
-// (sim::debug::numberText, the one format of every value a frame shows).
+// (sim::describe::numberText, the one format of every value a frame shows).
 #pragma once
 
 #include <cmath>
@@ -21,7 +21,7 @@ inline double noiseFloor(double scale) { return kNoiseFloor * std::abs(scale); }
 std::string timeToMs(double t);
 // x to `decimals` decimals, negative with "−"; −0.00 written 0.00
 std::string signedNumber(double x, int decimals = 2);
-// x to three significant digits (sim::debug::numberText), 0 below `zeroBelow`
+// x to three significant digits (sim::describe::numberText), 0 below `zeroBelow`
 std::string numberText(double x, double zeroBelow = 0.0);
 // "name = x unit"; each number 0 below `zeroBelow` (its quantity's noise floor)
 std::string quantityText(const std::string& name, double x, const std::string& unit, double zeroBelow = 0.0);

@@ -6,7 +6,7 @@
 
 #include "render/frame/title_card.h"
 #include "render/scene/scene_style.h"
-#include "sim/debug/describe.h"
+#include "sim/describe/describe.h"
 #include "sim/core/settings.h"
 #include "sim/scene/scene_build.h"
 
@@ -54,7 +54,7 @@ DrawList SceneRun::ghostOf(const State& state, int i, int strobe) {
   DrawList ghost;
   const double opacity = kOldestGhost + (kNewestGhost - kOldestGhost) * i / std::max(1, strobe - 1);
   PhysicsDraw physics(ghost);
-  sim::debug::describeBodies(state.world, physics, opacity);
+  sim::describe::describeBodies(state.world, physics, opacity);
   // ghosts of moving bodies only: a static body's ghost would only darken it
   DrawList moving;
   RoleFilter filter(moving, [](Role r) { return r != Role::StaticBody; });

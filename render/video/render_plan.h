@@ -8,8 +8,8 @@
 //                                                                      └─paths()─▶ lecture --list
 //
 // 2D and 3D scenes are planned by the same code: the types are written once over the scene's
-// dimension (Planar, Spatial); a 3D plan makes the same outputs in perspective, without impacts or
-// strobes, since nothing collides in 3D.
+// dimension (Planar, Spatial); a 3D plan makes the same outputs in perspective (its stills at its
+// impacts too, `--impacts`), without strobes or pixel draw lists, which are 2D frames' only.
 #pragma once
 
 #include <functional>
@@ -190,8 +190,8 @@ RenderPlan planStills(const LoadVariant& load, const StillRequest& request);
 // sim::yaml::SceneError (`panels: impacts` where a variant has none), VariantDiverged
 RenderPlan planLecture(const LoadVariant& load, const LectureRequest& request);
 
-// the same for a 3D scene; `--impacts` and `--strobe` are UsageErrors (nothing collides in 3D, and
-// earlier poses are ghosted in 2D frames only). Throw as `load`, VariantDiverged3d
+// the same for a 3D scene; `--strobe` and `--draw-list` are UsageErrors (earlier poses are ghosted,
+// and draw lists written, for 2D frames only). Throw as `load`, VariantDiverged3d
 RenderPlan3d planVideos3d(const LoadVariant3d& load, const VideoRequest& request);
 RenderPlan3d planStills3d(const LoadVariant3d& load, const StillRequest& request);
 RenderPlan3d planLecture3d(const LoadVariant3d& load, const LectureRequest& request);

@@ -1,9 +1,9 @@
-#include "sim/debug/describe.h"
+#include "sim/describe/describe.h"
 
 #include "sim/collision/compound.h"
-#include "sim/debug/part_outline.h"
+#include "sim/describe/part_outline.h"
 
-namespace sim::debug {
+namespace sim::describe {
 using namespace sim::debug_draw;
 using namespace sim::world;
 using namespace sim::collision;
@@ -131,4 +131,4 @@ void describeSprings(const World& world, double amplitude, DebugDraw& draw) {
   }
 }
 
-}  // namespace sim::debug
+}  // namespace sim::describe

@@ -1,11 +1,11 @@
-#include "sim/debug/part_outline.h"
+#include "sim/describe/part_outline.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <utility>
 
-namespace sim::debug {
+namespace sim::describe {
 using sim::core::Shape;
 using sim::core::Vec2;
 using namespace sim::core;
@@ -87,4 +87,4 @@ std::vector<OutlineSegment> partOutline(const Shape& shape, int circleSegments) 
   return out;
 }
 
-}  // namespace sim::debug
+}  // namespace sim::describe

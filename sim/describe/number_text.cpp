@@ -1,11 +1,11 @@
-#include "sim/debug/number_text.h"
+#include "sim/describe/number_text.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
-namespace sim::debug {
+namespace sim::describe {
 
 namespace {
 
@@ -59,4 +59,4 @@ std::string numberText(double x, int digits, double zeroBelow) {
   return (x < 0.0 ? kMinus : "") + body;
 }
 
-}  // namespace sim::debug
+}  // namespace sim::describe

@@ -4,15 +4,15 @@
 
 #include <cmath>
 
-#include "sim/debug/part_outline.h"
+#include "sim/describe/part_outline.h"
 
 namespace {
 
 using sim::core::Vec2;
 
-double length(const std::vector<sim::debug::OutlineSegment>& outline) {
+double length(const std::vector<sim::describe::OutlineSegment>& outline) {
   double sum = 0.0;
-  for (const sim::debug::OutlineSegment& s : outline) sum += (s.b - s.a).norm();
+  for (const sim::describe::OutlineSegment& s : outline) sum += (s.b - s.a).norm();
   return sum;
 }
 
@@ -21,10 +21,10 @@ double length(const std::vector<sim::debug::OutlineSegment>& outline) {
 TEST_CASE("two boxes side by side: the outline of the 3 × 1 box they make, no seam") {
   const sim::core::Shape s =
       sim::core::makeCompound({{sim::core::makeBox(2, 1), {}}, {sim::core::makeBox(1, 1), {{1.5, 0}, {}}}});
-  const auto outline = sim::debug::partOutline(s);
+  const auto outline = sim::describe::partOutline(s);
   CHECK(length(outline) == doctest::Approx(8.0).epsilon(1e-8));
   // nothing on the line x = 1 where they touch, but for the ends of the top and bottom edges
-  for (const sim::debug::OutlineSegment& seg : outline)
+  for (const sim::describe::OutlineSegment& seg : outline)
     CHECK_FALSE((std::abs(seg.a.x() - 1.0) < 1e-9 && std::abs(seg.b.x() - 1.0) < 1e-9));
 }
 
@@ -32,7 +32,7 @@ TEST_CASE("an L of two boxes: its six sides, the shared part of the long edge le
   // a 2 × 1 box and a 1 × 1 box on top of its left half: an L of perimeter 2 + 2 + 1 + 1 + 1 + 1
   const sim::core::Shape s =
       sim::core::makeCompound({{sim::core::makeBox(2, 1), {}}, {sim::core::makeBox(1, 1), {{-0.5, 1}, {}}}});
-  CHECK(length(sim::debug::partOutline(s)) == doctest::Approx(8.0).epsilon(1e-8));
+  CHECK(length(sim::describe::partOutline(s)) == doctest::Approx(8.0).epsilon(1e-8));
 }
 
 TEST_CASE("a disk on a box's end: the arc inside the box is left out") {
@@ -40,8 +40,8 @@ TEST_CASE("a disk on a box's end: the arc inside the box is left out") {
   // and so is the arc over the box's end
   const sim::core::Shape s =
       sim::core::makeCompound({{sim::core::makeBox(2, 1), {}}, {sim::core::makeCircle(1.0), {{1, 0}, {}}}});
-  const auto outline = sim::debug::partOutline(s, 720);
-  for (const sim::debug::OutlineSegment& seg : outline) {
+  const auto outline = sim::describe::partOutline(s, 720);
+  for (const sim::describe::OutlineSegment& seg : outline) {
     // no piece of the box inside the disk; no piece of the disk inside the box
     const Vec2 mid = 0.5 * (seg.a + seg.b);
     const bool inBox = std::abs(mid.x()) < 1.0 - 1e-6 && std::abs(mid.y()) < 0.5 - 1e-6;

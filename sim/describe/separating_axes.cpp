@@ -1,4 +1,4 @@
-#include "sim/debug/separating_axes.h"
+#include "sim/describe/separating_axes.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -6,9 +6,9 @@
 
 #include "sim/collision/collide.h"
 #include "sim/core/settings.h"
-#include "sim/debug/number_text.h"
+#include "sim/describe/number_text.h"
 
-namespace sim::debug {
+namespace sim::describe {
 using sim::core::Body;
 using sim::core::Vec2;
 using sim::debug_draw::DebugDraw;
@@ -79,4 +79,4 @@ void describeSeparatingAxes(const World& world, double maxGap, double labelOffse
     }
 }
 
-}  // namespace sim::debug
+}  // namespace sim::describe

@@ -5,9 +5,9 @@
 
 #include <cmath>
 
-#include "sim/debug/number_text.h"
+#include "sim/describe/number_text.h"
 
-using sim::debug::numberText;
+using sim::describe::numberText;
 
 TEST_CASE("three significant digits in plain notation from 0.001 to 10,000") {
   CHECK(numberText(2.0) == "2.00");

@@ -6,7 +6,7 @@
 
 #include "sim/core/shape.h"
 
-namespace sim::debug {
+namespace sim::describe {
 
 struct OutlineSegment {
   sim::core::Vec2 a, b;
@@ -16,4 +16,4 @@ struct OutlineSegment {
 // `circleSegments` chords), a piece per maximal run of a part's edge on the outside
 std::vector<OutlineSegment> partOutline(const sim::core::Shape& shape, int circleSegments = 96);
 
-}  // namespace sim::debug
+}  // namespace sim::describe

@@ -6,10 +6,10 @@
 
 #include <string>
 
-namespace sim::debug {
+namespace sim::describe {
 
 // x to `digits` significant digits (1 to 17); |x| below `zeroBelow` is written "0"; a value that
 // rounds to zero has no sign; NaN is "nan", ±∞ "∞" and "−∞"
 std::string numberText(double x, int digits = 3, double zeroBelow = 0.0);
 
-}  // namespace sim::debug
+}  // namespace sim::describe

@@ -1,6 +1,6 @@
 // The separating-axis overlay: the notes' reference edge, incident vertex and separation, and every
 // other candidate axis labeled with its own separation (recorded as a draw list).
-#include "sim/debug/separating_axes.h"
+#include "sim/describe/separating_axes.h"
 
 #include <doctest/doctest.h>
 
@@ -34,17 +34,17 @@ std::vector<std::string> texts(const DrawList& list) {
 TEST_CASE("an edge's separation is the least distance of the other polygon's vertices past it") {
   const sim::world::World w = sim::scene::buildWorld(kPair);
   // the base's edges from (−1, −0.5) counter-clockwise: bottom, right, top, left
-  CHECK(sim::debug::edgeSeparation(w.bodies[0], 0, w.bodies[1]) == doctest::Approx(-2.1));
-  CHECK(sim::debug::edgeSeparation(w.bodies[0], 1, w.bodies[1]) == doctest::Approx(-1.5));
-  CHECK(sim::debug::edgeSeparation(w.bodies[0], 2, w.bodies[1]) == doctest::Approx(0.1));
-  CHECK(sim::debug::edgeSeparation(w.bodies[1], 0, w.bodies[0]) == doctest::Approx(0.1));
+  CHECK(sim::describe::edgeSeparation(w.bodies[0], 0, w.bodies[1]) == doctest::Approx(-2.1));
+  CHECK(sim::describe::edgeSeparation(w.bodies[0], 1, w.bodies[1]) == doctest::Approx(-1.5));
+  CHECK(sim::describe::edgeSeparation(w.bodies[0], 2, w.bodies[1]) == doctest::Approx(0.1));
+  CHECK(sim::describe::edgeSeparation(w.bodies[1], 0, w.bodies[0]) == doctest::Approx(0.1));
 }
 
 TEST_CASE("the reference edge, the incident vertex and the separation; every other axis on request") {
   const sim::world::World w = sim::scene::buildWorld(kPair);
   DrawList list;
   render::draw::PhysicsDraw physics(list);
-  sim::debug::describeSeparatingAxes(w, 1.0, 0.05, physics);
+  sim::describe::describeSeparatingAxes(w, 1.0, 0.05, physics);
   const std::vector<std::string> lines = list.lines();
   REQUIRE(lines.size() == 3);
   // the base's top face is the reference edge, the box's lower-left corner the incident vertex
@@ -57,7 +57,7 @@ TEST_CASE("the reference edge, the incident vertex and the separation; every oth
   // every axis: the 7 other edges of both polygons, each labeled inside its own polygon
   DrawList every;
   render::draw::PhysicsDraw everyPhysics(every);
-  sim::debug::describeSeparatingAxes(w, 1.0, 0.05, everyPhysics, true);
+  sim::describe::describeSeparatingAxes(w, 1.0, 0.05, everyPhysics, true);
   std::vector<std::string> candidates = texts(every);
   REQUIRE(candidates.size() == 8);
   candidates.erase(candidates.begin());
@@ -67,6 +67,6 @@ TEST_CASE("the reference edge, the incident vertex and the separation; every oth
   // pairs farther apart than the gap asked for are not drawn
   DrawList far;
   render::draw::PhysicsDraw farPhysics(far);
-  sim::debug::describeSeparatingAxes(w, 0.05, 0.05, farPhysics);
+  sim::describe::describeSeparatingAxes(w, 0.05, 0.05, farPhysics);
   CHECK(far.empty());
 }

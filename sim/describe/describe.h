@@ -5,7 +5,7 @@
 #include "sim/debug_draw/debug_draw.h"
 #include "sim/world/world.h"
 
-namespace sim::debug {
+namespace sim::describe {
 // what is described goes through the simulator's drawing interface
 
 // every body's shape in its current pose (and a radius for circles, so rotation shows)
@@ -31,4 +31,4 @@ Arrow describeEventImpulse(const sim::world::World& world, const sim::world::Imp
 // every spring as a zigzag `amplitude` wide between its ends, and a dot at a world anchor
 void describeSprings(const sim::world::World& world, double amplitude, sim::debug_draw::DebugDraw& draw);
 
-}  // namespace sim::debug
+}  // namespace sim::describe

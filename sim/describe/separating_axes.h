@@ -6,7 +6,7 @@
 #include "sim/debug_draw/debug_draw.h"
 #include "sim/world/world.h"
 
-namespace sim::debug {
+namespace sim::describe {
 // what is described goes through the simulator's drawing interface
 
 // edge e's separation from the polygon `other`: min over its vertices v of n̂_e · (v − p_e), m
@@ -18,4 +18,4 @@ double edgeSeparation(const sim::core::Body& polygon, int edge, const sim::core:
 void describeSeparatingAxes(const sim::world::World& world, double maxGap, double labelOffset, sim::debug_draw::DebugDraw& draw,
                             bool everyAxis = false);
 
-}  // namespace sim::debug
+}  // namespace sim::describe
