@@ -10,6 +10,7 @@
 #include "render/cli/energy_report.h"
 #include "sim/world/energy_ledger.h"
 #include "render/cli/output.h"
+#include "render/cli/run_fields.h"
 #include "render/cli/run_progress.h"
 #include "render/cli/scene_options.h"
 #include "render/cli/space3d.h"
@@ -139,13 +140,7 @@ void printJson(const sim::scene::SceneDef& def, const sim::world::World& w, cons
                bool verbose) {
   JsonWriter j(std::cout);
   j.beginObject();
-  j.field("scene", def.name);
-  j.key("variant");
-  def.variant.empty() ? j.null() : j.value(def.variant);
-  j.field("t", w.time)
-      .field("integrator", sim::core::integratorName(w.def().integrator))
-      .field("dt", w.def().dt)
-      .field("steps", w.steps);
+  writeRunFields(j, def, w, sim::core::integratorName(w.def().integrator));
   writeBodies(j, def, w);
   writeTotals(j, def, w, ledger);
   writeMethod(j, def, w);

@@ -9,6 +9,7 @@
 
 #include "render/cli/commands.h"
 #include "render/cli/output.h"
+#include "render/cli/run_fields.h"
 #include "render/cli/run_progress.h"
 #include "render/cli/space3d.h"
 #include "render/jobs/atomic_file.h"
@@ -31,13 +32,7 @@ JsonWriter& vector3(JsonWriter& j, const Vec3& v) { return j.beginArray().value(
 void printJson(const sim::scene3d::SceneDef& def, const World& w, const EnergyLedger3d& ledger) {
   JsonWriter j(std::cout);
   j.beginObject();
-  j.field("scene", def.name);
-  j.key("variant");
-  def.variant.empty() ? j.null() : j.value(def.variant);
-  j.field("t", w.time)
-      .field("integrator", kIntegratorNames.name(w.def().integrator))
-      .field("dt", w.def().dt)
-      .field("steps", w.steps);
+  writeRunFields(j, def, w, kIntegratorNames.name(w.def().integrator));
   j.key("bodies").beginArray();
   for (size_t i = 0; i < w.bodies.size(); ++i) {
     const Body& b = w.bodies[i];

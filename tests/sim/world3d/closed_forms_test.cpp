@@ -15,32 +15,28 @@ using fixtures3d::relativeError;
 
 namespace {
 
+// a world of free bodies stepped by `method` at `dt`
+WorldDef stepping(Integrator method, double dt) {
+  WorldDef def;
+  def.integrator = method;
+  def.dt = dt;
+  return def;
+}
+
 // a torque-free symmetric ellipsoid, semi-axes (0.3, 0.3, 0.1): I₁ = I₂ = 0.02 m, I₃ = 0.036 m
 World symmetricTop(Integrator method, double dt, const Vec3& omegaBody) {
-  World w;
   Body top = makeBody(makeEllipsoid(Vec3(0.3, 0.3, 0.1)), 100.0);
   top.q = axisAngle(Vec3(1, -2, 0.5), 0.7);
   top.omega = top.rotation() * omegaBody;
-  w.bodies.push_back(top);
-  w = fixtures::redefined(w, [&](auto& d) {
-    d.integrator = method;
-    d.dt = dt;
-  });
-  return w;
+  return World(stepping(method, dt), {top});
 }
 
 // a box of sides 0.1 × 0.4 × 0.8 spun at 4 rad/s about y, its middle axis, nudged by 0.1 rad/s
 // about the others: ω₂ flips sign twice a period
 World racket(Integrator method, double dt) {
-  World w;
   Body box = makeBody(makeBox(Vec3(0.1, 0.4, 0.8)), 1.0 / 0.032);
   box.omega = Vec3(0.1, 4.0, 0.1);
-  w.bodies.push_back(box);
-  w = fixtures::redefined(w, [&](auto& d) {
-    d.integrator = method;
-    d.dt = dt;
-  });
-  return w;
+  return World(stepping(method, dt), {box});
 }
 
 // the period of ω_b,y measured over `periods` periods: from its sign changes, each located on
