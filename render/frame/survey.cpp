@@ -19,8 +19,6 @@
 #include "sim/world/diagnostics.h"
 
 namespace render::frame {
-using render::draw::Bounds;
-using render::draw::Camera;
 using sim::core::Vec2;
 using namespace render::draw;
 using namespace render::scene;

@@ -11,9 +11,6 @@
 #include "sim/world3d/diagnostics.h"
 
 namespace render::frame3d {
-using render::draw3d::Box3d;
-using render::draw3d::Camera3d;
-using sim::world3d::Vec3;
 using namespace sim::world3d;
 using namespace render::draw3d;
 

@@ -1,12 +1,11 @@
 #include "render/golden/golden_run.h"
 
 #include <algorithm>
-#include <memory>
 #include <optional>
 
-#include "render/draw/text.h"
 #include "render/frame/scene_run.h"
 #include "render/frame/survey.h"
+#include "render/golden/golden_drawing.h"
 #include "render/scene/scene_style.h"
 #include "render/video/output_names.h"
 #include "sim/world/diagnostics.h"
@@ -34,22 +33,11 @@ std::string frameName(double t) { return "frame-t" + render::video::timeForName(
 
 GoldenRun runGolden(const render::scene::Scene& original, const GoldenDef& golden, const GoldenTimes* asked, bool pixels) {
   const render::scene::Scene scene = atGoldenSize(original, golden);
-  GoldenRun run;
-  run.name = render::video::outputBase(scene.model);
-  for (const auto& b : scene.model.bodies) run.bodies.push_back(b.name);
+  GoldenRun run = goldenRunOf(scene.model, false);
   const render::frame::RunSurvey survey = render::frame::surveyRun(scene);
   const GoldenTimes times = asked ? *asked : goldenTimes(scene.model, golden, survey.impactTimes);
   const render::draw::Camera camera = render::frame::cameraFor(scene, survey);
   const render::draw::Style style = render::scene::makeStyle(scene, golden.height);
-
-  std::unique_ptr<render::draw::GlContext> gl;
-  // text is measured alike with and without pixels: labels are placed by their widths
-  render::draw::TextRenderer text;
-  if (pixels) {
-    gl = std::make_unique<render::draw::GlContext>(golden.width, golden.height);
-    run.renderer = gl->renderer();
-    run.rendererVersion = gl->version();
-  }
   // every instant once: a frame's time is also a checkpoint
   const std::vector<double>& instants = times.checkpoints;
   std::vector<bool> pictured(instants.size());
@@ -59,7 +47,8 @@ GoldenRun runGolden(const render::scene::Scene& original, const GoldenDef& golde
   std::vector<std::optional<GoldenFrame>> frames(instants.size());
   // frames named with as many digits as tell every two apart (0.5 and 0.5000004 are two files)
   const std::vector<std::string> names = render::video::timesForNames(times.frames);
-  render::frame::SceneRun sceneRun(scene, camera, survey, gl.get(), &text);
+  GoldenDrawing drawing(golden, pixels, run);
+  render::frame::SceneRun sceneRun(scene, camera, survey, drawing.gl(), drawing.text());
   sceneRun.shotsAt(instants, pictured, [&](size_t i, const render::frame::SceneRun::Shot& shot) {
     Checkpoint& c = run.checkpoints[i];
     c.t = instants[i];

@@ -13,6 +13,7 @@
 #include "render/golden/golden_def.h"
 #include "render/trace/trace_csv.h"
 #include "render/scene/scene.h"
+#include "render/video/output_names.h"
 
 namespace render::golden {
 
@@ -65,6 +66,16 @@ GoldenTimes goldenTimes(const Model& model, const GoldenDef& golden, const std::
   sortUnique(times.checkpoints);
   return times;
 }
+// a run of `model` (2D or 3D) before its checkpoints and frames: its record's name and its bodies
+template <class Model>
+GoldenRun goldenRunOf(const Model& model, bool threeD) {
+  GoldenRun run;
+  run.name = render::video::outputBase(model.name, model.variant);
+  for (const auto& b : model.bodies) run.bodies.push_back(b.name);
+  run.threeD = threeD;
+  return run;
+}
+
 // the run at `times`, or (null) at those its golden: block asks for, the impacts taken from the
 // survey the drawing needs anyway (the scene is stepped twice, never three times); frames at the
 // golden size; without `pixels` no GL is loaded and the frames are draw lists alone. Throws

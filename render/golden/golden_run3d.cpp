@@ -1,14 +1,12 @@
 #include "render/golden/golden_run3d.h"
 
 #include <algorithm>
-#include <memory>
 
-#include "render/draw/text.h"
 #include "render/frame3d/scene_run3d.h"
 #include "render/frame3d/survey3d.h"
 #include "render/golden/drawn_frame3d.h"
+#include "render/golden/golden_drawing.h"
 #include "render/golden/sample3d.h"
-#include "render/video/output_names.h"
 #include "sim/world3d/diagnostics.h"
 
 namespace render::golden {
@@ -17,23 +15,13 @@ GoldenRun runGolden(const render::scene3d::Scene& original, const GoldenDef& gol
   render::scene3d::Scene scene = original;
   scene.render.width = golden.width;
   scene.render.height = golden.height;
-  GoldenRun run;
-  run.threeD = true;
-  run.name = render::video::outputBase(scene.model.name, scene.model.variant);
-  for (const auto& b : scene.model.bodies) run.bodies.push_back(b.name);
+  GoldenRun run = goldenRunOf(scene.model, true);
   const render::frame3d::RunSurvey3d survey = render::frame3d::surveyRun(scene);
   const GoldenTimes times = asked ? *asked : goldenTimes(scene.model, golden, survey.impactTimes);
   const render::draw3d::Camera3d camera = render::frame3d::cameraFor(scene, survey);
   const render::draw::Style style = render::scene3d::makeStyle(scene, golden.height);
-  std::unique_ptr<render::draw::GlContext> gl;
-  // text is measured alike with and without pixels: labels are placed by their widths
-  render::draw::TextRenderer text;
-  if (pixels) {
-    gl = std::make_unique<render::draw::GlContext>(golden.width, golden.height);
-    run.renderer = gl->renderer();
-    run.rendererVersion = gl->version();
-  }
-  render::frame3d::SceneRun3d sceneRun(scene, camera, survey, gl.get(), &text);
+  GoldenDrawing drawing(golden, pixels, run);
+  render::frame3d::SceneRun3d sceneRun(scene, camera, survey, drawing.gl(), drawing.text());
   // every instant once, in time order: a frame's time is also a checkpoint
   for (double t : times.checkpoints) {
     const render::draw3d::DrawList3d list = sceneRun.drawListAt(t);

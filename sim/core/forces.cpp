@@ -1,7 +1,5 @@
 #include "sim/core/forces.h"
 
-#include <cmath>
-
 namespace sim::core {
 
 namespace {
@@ -115,15 +113,6 @@ bool ForceSet::hasWorkingForces() const {
   for (const Spring& sp : springs)
     if (sp.damping != 0.0) return true;
   return false;
-}
-
-std::vector<double> ForceSet::breakpoints() const {
-  std::vector<double> t;
-  for (const PointForce& p : pointForces) {
-    if (p.from > 0.0) t.push_back(p.from);
-    if (std::isfinite(p.until)) t.push_back(p.until);
-  }
-  return t;
 }
 
 }  // namespace sim::core

@@ -4,38 +4,12 @@
 #include <vector>
 
 #include "sim/core/body.h"
+#include "sim/core/force_set_of.h"
 
 namespace sim::core {
 
-inline constexpr int kWorldAnchor = -1;  // a spring end fixed in the world
-
-// a constant force at a body point, on during [from, until)
-struct PointForce {
-  int body = 0;
-  Vec2 point = Vec2::Zero();  // body coordinates
-  Vec2 force = Vec2::Zero();
-  bool bodyFrame = false;  // the force turns with the body
-  double from = 0.0;
-  double until = std::numeric_limits<double>::infinity();
-};
-
-// a damped linear spring between a body point and a world anchor or another body's point
-struct Spring {
-  int bodyA = 0;
-  Vec2 pointA = Vec2::Zero();  // body coordinates of A
-  int bodyB = kWorldAnchor;
-  Vec2 pointB = Vec2::Zero();  // body coordinates of B, or the world anchor
-  double stiffness = 0.0;      // N/m
-  double restLength = 0.0;     // m
-  double damping = 0.0;        // N·s/m, along the spring
-};
-
-// linear and angular drag: f = -c v, τ = -c_ω ω
-struct Drag {
-  int body = 0;
-  double linear = 0.0;
-  double angular = 0.0;
-};
+using PointForce = PointForceOf<Vec2>;
+using Spring = SpringOf<Vec2>;
 
 // the rate at which the forces that have no potential do work on the bodies, W/s: the applied point
 // forces (what a scene puts in) and the damping of drags and springs (what it takes out, ≤ 0);
@@ -45,12 +19,8 @@ struct ForcePower {
   double damping = 0.0;
 };
 
-struct ForceSet {
-  Vec2 gravity = Vec2::Zero();
-  std::vector<PointForce> pointForces;
-  std::vector<Spring> springs;
-  std::vector<Drag> drags;
-
+// the 2D world's forces (what they are: force_set_of.h), and what they do to its bodies
+struct ForceSet : ForceSetOf<Vec2> {
   // net force and torque about the center of mass of each body, for the given states;
   // `window` is a time inside the current step, which decides which timed forces are on
   void accumulate(double window, const std::vector<Body>& bodies, const std::vector<BodyState>& states, std::vector<Vec2>& force,
@@ -67,9 +37,6 @@ struct ForceSet {
   double pointForceWork(double window, const std::vector<BodyState>& from, const std::vector<BodyState>& to) const;
   // some force does work that no potential counts (a point force, a drag, a damped spring)
   bool hasWorkingForces() const;
-
-  // times at which a force switches on or off: the step is split there
-  std::vector<double> breakpoints() const;
 
   // only gravity acts (or nothing): every body falls on a parabola of its own, exactly
   bool gravityOnly() const { return pointForces.empty() && springs.empty() && drags.empty(); }

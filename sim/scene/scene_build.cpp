@@ -3,22 +3,9 @@
 #include <stdexcept>
 
 namespace sim::scene {
-using sim::world::World;
 using namespace sim::core;
 using namespace sim::collision;
 using namespace sim::world;
-
-int SceneDef::bodyIndex(const std::string& n) const {
-  for (size_t i = 0; i < bodies.size(); ++i)
-    if (bodies[i].name == n) return static_cast<int>(i);
-  return -1;
-}
-
-std::unordered_map<std::string, int> SceneDef::bodyIndices() const {
-  std::unordered_map<std::string, int> out;
-  for (size_t i = 0; i < bodies.size(); ++i) out.emplace(bodies[i].name, static_cast<int>(i));
-  return out;
-}
 
 namespace {
 

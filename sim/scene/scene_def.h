@@ -5,11 +5,12 @@
 
 #include <optional>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
+#include "sim/core/expect_def_of.h"
 #include "sim/core/force_defs.h"
 #include "sim/core/integrators.h"
+#include "sim/core/scene_def_of.h"
 #include "sim/core/settings.h"
 #include "sim/core/shape.h"
 #include "sim/world/contact.h"
@@ -42,48 +43,20 @@ using PointForceDef = sim::core::PointForceDefOf<sim::core::Vec2>;
 using SpringDef = sim::core::SpringDefOf<sim::core::Vec2>;
 using EventDef = sim::core::EventDefOf<sim::core::Vec2>;
 
-// a closed-form answer that `rigidreel check` compares against; absent fields are not checked
-struct ExpectDef {
-  double time = 0.0;
-  std::string body;  // empty for world-wide quantities
-  std::optional<sim::core::Vec2> position;
+// a closed-form answer that `rigidreel check` compares against (what 3D's has too: sim/core/expect_def_of.h)
+struct ExpectDef : sim::core::ExpectDefOf<sim::core::Vec2> {
   std::optional<double> angle;
-  std::optional<sim::core::Vec2> velocity;
   std::optional<double> angularVelocity;
-  std::optional<double> kineticEnergy;      // of `body`, or of the world when no body is named
-  std::optional<double> potentialEnergy;    // world
-  std::optional<double> totalEnergy;        // world
-  std::optional<sim::core::Vec2> momentum;  // world
-  std::optional<double> angularMomentum;    // world, about the origin
-  // the energy, less the work of applied forces and impulse events, never rises by more than the
-  // tolerance above its lowest value so far, at any step up to `time` (sim/world/energy_ledger.h)
-  bool energyNeverRises = false;
-  double tolerance = settings::kDefaultExpectTolerance;
-  bool earlierRun = false;  // source: earlier_run, a value an earlier run gave (else a closed form)
-  sim::core::SourceLoc loc;
+  std::optional<double> angularMomentum;  // world, about the origin
 };
 
-struct SceneDef {
-  std::string name;
-  std::string description;
-  std::string variant;  // the variant merged in, empty for the base scene
-  std::vector<std::string> variantNames;
-  double duration = settings::kDefaultDuration;
-  sim::core::Vec2 gravity = sim::core::Vec2::Zero();
-  double restitution = settings::kDefaultRestitution;
-  // μ of every body that names none; unset, the default (0) is not a μ the scene named, and a pair
-  // with a body that names one takes that body's (sim::world::combinedFriction)
-  std::optional<double> friction;
+// a 2D scene's model: what 3D's has too (sim/core/scene_def_of.h), and 2D's integrator and solvers' keys
+struct SceneDef : sim::core::SceneDefOf<sim::core::Vec2, BodyDef, ExpectDef> {
   sim::core::Integrator integrator = sim::core::Integrator::SymplecticEuler;
-  double dt = settings::kDefaultDt;
-  double maxSteps = settings::kDefaultMaxSteps;  // the most steps a run may take (sim: max_steps)
-  sim::core::SourceLoc stepsLoc;                 // where dt (or else duration) is set, for messages
-  sim::core::CollisionMethod collisions = sim::core::CollisionMethod::Auto;
-  // where `sim: {collisions}` and `sim: {integrator}` are written (line 0: not in the file, e.g. set
-  // on the command line), for the warnings of what a named method leaves out (model_warnings.h)
-  sim::core::SourceLoc collisionsLoc, integratorLoc;
-  int velocityIterations = settings::kVelocityIterations;
-  int positionIterations = settings::kPositionIterations;
+  sim::core::SourceLoc stepsLoc;  // where dt (or else duration) is set, for messages
+  // where `sim: {integrator}` is written (line 0: not in the file), beside collisionsLoc, for the
+  // warnings of what a named method leaves out (model_warnings.h)
+  sim::core::SourceLoc integratorLoc;
   int substeps = settings::kSubsteps;             // soft_step
   double contactHertz = settings::kContactHertz;  // soft_step's contact stiffness, Hz
   bool sleep = false;                             // sequential and soft_step: islands at rest fall asleep (sim/world/sleep.h)
@@ -91,17 +64,6 @@ struct SceneDef {
   sim::world::Precision precision =
       sim::world::Precision::Double;  // soft_step: the numbers of its contact solve (sim: precision)
   double recycleDistance = 0.0;       // soft_step: contact recycling's distance, m (sim: recycle); 0: off
-  std::vector<BodyDef> bodies;
-  std::vector<PointForceDef> pointForces;
-  std::vector<SpringDef> springs;
-  std::vector<sim::core::DragDef> drags;
-  std::vector<EventDef> events;
-  std::vector<ExpectDef> expects;
-
-  // index of the body with this name, or -1 (a scan: for one lookup)
-  int bodyIndex(const std::string& name) const;
-  // every body's index by its name: for lookups of many entries, in one pass
-  std::unordered_map<std::string, int> bodyIndices() const;
 };
 
 }  // namespace sim::scene

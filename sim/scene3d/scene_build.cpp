@@ -4,18 +4,6 @@ namespace sim::scene3d {
 using sim::core::DragDef;
 using namespace sim::world3d;
 
-int SceneDef::bodyIndex(const std::string& name) const {
-  for (size_t i = 0; i < bodies.size(); ++i)
-    if (bodies[i].name == name) return static_cast<int>(i);
-  return -1;
-}
-
-std::unordered_map<std::string, int> SceneDef::bodyIndices() const {
-  std::unordered_map<std::string, int> out;
-  for (size_t i = 0; i < bodies.size(); ++i) out.emplace(bodies[i].name, static_cast<int>(i));
-  return out;
-}
-
 MassProperties massProperties(const BodyDef& b) {
   // the shape at unit density: its volume and its inertia per kg/m³
   const MassProperties unit = massProperties(b.shape, 1.0);

@@ -1,6 +1,7 @@
 #include "sim/world/diagnostics.h"
 
 #include "sim/core/bit_hash.h"
+#include "sim/core/world_energy.h"
 
 namespace sim::world {
 using namespace sim::core;
@@ -11,12 +12,7 @@ KineticEnergy kineticEnergy(const Body& b) {
   return {0.5 * b.mass * b.v.squaredNorm(), 0.5 * b.inertia * b.omega * b.omega};
 }
 
-Energy energy(const World& world) {
-  Energy e;
-  for (const Body& b : world.bodies) e.kinetic += kineticEnergy(b).total();
-  e.potential = world.def().forces.potentialEnergy(world.bodies);
-  return e;
-}
+Energy energy(const World& world) { return worldEnergy<Energy>(world, kineticEnergy); }
 
 Vec2 linearMomentum(const World& world) {
   Vec2 p = Vec2::Zero();

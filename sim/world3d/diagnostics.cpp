@@ -4,17 +4,13 @@
 #include <cmath>
 
 #include "sim/core/bit_hash.h"
+#include "sim/core/world_energy.h"
 
 namespace sim::world3d {
 
 KineticEnergy kineticEnergy(const Body& b) { return {0.5 * b.mass * b.v.squaredNorm(), 0.5 * b.omega.dot(b.angularMomentum())}; }
 
-Energy energy(const World& world) {
-  Energy e;
-  for (const Body& b : world.bodies) e.kinetic += kineticEnergy(b).total();
-  e.potential = world.def().forces.potentialEnergy(world.bodies);
-  return e;
-}
+Energy energy(const World& world) { return sim::core::worldEnergy<Energy>(world, kineticEnergy); }
 
 Vec3 linearMomentum(const World& world) {
   Vec3 p = Vec3::Zero();

@@ -1,8 +1,7 @@
 #include "sim/world3d/forces.h"
 
-#include <cmath>
-
 namespace sim::world3d {
+using sim::core::Drag;
 using sim::core::kWorldAnchor;
 
 namespace {
@@ -70,15 +69,6 @@ double ForceSet::potentialEnergy(const std::vector<Body>& bodies) const {
     e += 0.5 * sp.stiffness * stretch * stretch;
   }
   return e;
-}
-
-std::vector<double> ForceSet::breakpoints() const {
-  std::vector<double> t;
-  for (const PointForce& p : pointForces) {
-    if (p.from > 0.0) t.push_back(p.from);
-    if (std::isfinite(p.until)) t.push_back(p.until);
-  }
-  return t;
 }
 
 double ForceSet::pointForceWork(double window, const std::vector<BodyState>& from, const std::vector<BodyState>& to) const {

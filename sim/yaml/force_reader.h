@@ -5,7 +5,6 @@
 #include <string>
 #include <type_traits>
 
-#include "sim/yaml/size_limits.h"
 #include "sim/yaml/yaml_reader.h"
 
 namespace sim::yaml {
@@ -81,23 +80,6 @@ auto readEvent(const Reader& r, const YAML::Node& n, const Scene& s, ReadVector 
   if (const YAML::Node p = n["point"]) e.point = vector(p, "point");
   if (n["frame"]) e.pointInWorld = r.coordinateFrame(n["frame"]) == "world";
   return e;
-}
-
-// the scene's `forces:` and `events:` lists, each optional, into its definitions
-// (`entries` counts them toward limits.maxEntries, which expect entries share)
-template <class Scene, class ReadVector>
-void readForcesAndEvents(const Reader& r, const YAML::Node& root, Scene& s, ReadVector vector, const SizeLimits& limits,
-                         size_t& entries) {
-  if (const YAML::Node forces = root["forces"]) {
-    if (!forces.IsSequence()) r.fail(forces, "'forces' must be a list, got " + describe(forces));
-    checkEntryCount(r, forces, entries, limits);
-    for (const YAML::Node& f : forces) readForce(r, f, s, vector);
-  }
-  if (const YAML::Node events = root["events"]) {
-    if (!events.IsSequence()) r.fail(events, "'events' must be a list, got " + describe(events));
-    checkEntryCount(r, events, entries, limits);
-    for (const YAML::Node& e : events) s.events.push_back(readEvent(r, e, s, vector));
-  }
 }
 
 }  // namespace sim::yaml

@@ -3,15 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
-#include <unordered_set>
 
 #include "sim/collision/compound.h"
-#include "sim/core/step_limit.h"
 #include "sim/scene/scene_build.h"
-#include "sim/scene/step_limit.h"
-#include "sim/yaml/expect_time.h"
-#include "sim/yaml/force_reader.h"
-#include "sim/yaml/path_name.h"
+#include "sim/yaml/expect_entry.h"
+#include "sim/yaml/model_reader_of.h"
 #include "sim/yaml/size_limits.h"
 #include "sim/yaml/yaml_reader.h"
 
@@ -23,17 +19,12 @@ using sim::collision::overlappingPart;
 
 namespace {
 
-class SceneReader : public Reader {
+class SceneReader : public ModelReaderOf<Reader> {
  public:
-  SceneReader(const SceneSource& source, const OtherKeys& others) : Reader(source.file), others_(others) {
-    placeUnmarked(source.variantMark);
-  }
+  using ModelReaderOf::ModelReaderOf;
 
   SceneDef read(const SceneSource& source) {
     const YAML::Node root = source.root;
-    SceneDef s;
-    s.variant = source.variant;
-    s.variantNames = source.variantNames;
     checkKeys(root,
               with({"name", "description", "duration", "world", "sim", "bodies", "forces", "events", "variants", "expect",
                     "dimensions"},
@@ -42,42 +33,18 @@ class SceneReader : public Reader {
     // sceneSourceText has read `dimensions`; a 3D scene's model is sim/yaml3d's to read
     if (source.dimensions != 2)
       fail(root["dimensions"], "this reads 2D scenes, and this one is 3D (dimensions: 3); read it with sim::yaml3d::readModel");
+    SceneDef s;
     readHeading(root, source, s);
-    if (const YAML::Node w = root["world"]) readWorld(w, s);
+    if (const YAML::Node w = root["world"]) readWorld(w, s, &Reader::vec2);
     if (const YAML::Node sim = root["sim"]) readSim(sim, s);
-    checkStepCount(root, s);
-    readBodies(root, s);
-    // forces and events are read alike in 2D and 3D (sim/yaml/force_reader.h) but for the vector
-    size_t entries = 0;
-    sim::yaml::readForcesAndEvents(
-        *this, root, s, [this](const YAML::Node& v, const std::string& key) { return vec2(v, key); }, limits_, entries);
-    if (const YAML::Node expect = root["expect"]) {
-      if (!expect.IsSequence()) fail(expect, "'expect' must be a list, got " + describe(expect));
-      sim::yaml::checkEntryCount(*this, expect, entries, limits_);
-      for (const YAML::Node& e : expect) s.expects.push_back(readExpect(e, s));
-    }
+    const YAML::Node stepsAt = checkStepCount(root, s);
+    s.stepsLoc = {stepsAt.Mark().line + 1, stepsAt.Mark().column + 1};
+    for (const YAML::Node& b : bodyList(root)) s.bodies.push_back(readBody(b));
+    readEntryLists(root, s, &Reader::vec2, [&](const YAML::Node& e) { return readExpect(e, s); });
     return s;
   }
 
  private:
-  // name, description and duration; the name names output files, so it must make a path
-  void readHeading(const YAML::Node& root, const SceneSource& source, SceneDef& s) {
-    s.name = root["name"] ? text(root["name"], "name") : source.stem;
-    if (const std::string fault = pathNameFault(s.name); !fault.empty())
-      fail(root["name"] ? root["name"] : root, "the scene's name '" + shownName(s.name) + "' names its output files but " +
-                                                   fault + "; give 'name:' letters, digits, '-' or '_'");
-    optional(root, "description", s.description, &Reader::text);
-    optional(root, "duration", s.duration, &Reader::positive);
-  }
-
-  // world: gravity and the default restitution and friction
-  void readWorld(const YAML::Node& w, SceneDef& s) {
-    checkKeys(w, {"gravity", "restitution", "friction"}, "world");
-    optional(w, "gravity", s.gravity, &Reader::vec2);
-    if (w["restitution"]) s.restitution = restitution(w["restitution"]);
-    optional(w, "friction", s.friction, &Reader::nonNegative);
-  }
-
   // sim: the method, its iterations and options, the integrator and dt; an option that the chosen
   // method does not have is refused at its key
   void readSim(const YAML::Node& sim, SceneDef& s) {
@@ -124,27 +91,6 @@ class SceneReader : public Reader {
       fail(recycle, "'recycle' keeps the manifolds of soft_step's resting pairs, and 'collisions: " +
                         std::string(collisionMethodName(s.collisions)) +
                         "' is not soft_step; use 'collisions: soft_step' or drop 'recycle'");
-  }
-
-  // the run's steps, refused where they are set (dt, else duration) when dt exceeds the duration
-  // or the steps exceed max_steps
-  void checkStepCount(const YAML::Node& root, SceneDef& s) {
-    const YAML::Node stepsAt = root["sim"] && root["sim"]["dt"] ? root["sim"]["dt"] : root["duration"] ? root["duration"] : root;
-    s.stepsLoc = {stepsAt.Mark().line + 1, stepsAt.Mark().column + 1};
-    if (const std::string over = sim::core::dtOverDuration(s.dt, s.duration); !over.empty())
-      fail(stepsAt, over + "; choose a dt of at most the duration (a hundredth of it or less to see any motion)");
-    if (const std::string over = stepsOverLimit(s, s.duration); !over.empty())
-      fail(stepsAt, over +
-                        "; raise dt, shorten duration, or, if the scene needs that many, raise the limit with "
-                        "'sim: {max_steps: N}'");
-  }
-
-  // bodies: a list of at least one, within max_bodies
-  void readBodies(const YAML::Node& root, SceneDef& s) {
-    const YAML::Node bodies = required(root, "bodies", "a scene");
-    if (!bodies.IsSequence() || bodies.size() == 0) fail(bodies, "'bodies' must be a list of at least one body");
-    checkBodyCount(*this, bodies, limits_);
-    for (const YAML::Node& b : bodies) s.bodies.push_back(readBody(b));
   }
 
   Shape readShape(const YAML::Node& n, BodyDef& body) {
@@ -235,10 +181,7 @@ class SceneReader : public Reader {
               "a body");
     BodyDef b;
     b.loc = {n.Mark().line + 1, n.Mark().column + 1};
-    b.name = text(required(n, "name", "every body"), "name");
-    if (b.name.empty()) fail(n, "a body's name cannot be empty");
-    // by hash: a scan of the names before would make loading quadratic in the bodies
-    if (!bodyNames_.insert(b.name).second) fail(n["name"], "duplicate body name '" + b.name + "'; names must be unique");
+    b.name = uniqueName(n);
     b.shape = readShape(required(n, "shape", "body '" + b.name + "'"), b);
     optional(n, "density", b.density, &Reader::positive);
     optional(n, "center_of_mass", b.centerOfMass, &Reader::vec2);
@@ -295,42 +238,24 @@ class SceneReader : public Reader {
     return b;
   }
 
-  double restitution(const YAML::Node& n) {
-    const double c = number(n, "restitution");
-    if (!(c >= 0.0 && c <= 1.0)) fail(n, "'restitution' must be within [0, 1] (0: plastic, 1: elastic), got " + n.Scalar());
-    return c;
-  }
-
   ExpectDef readExpect(const YAML::Node& n, const SceneDef& s) {
     checkKeys(n,
               {"time", "body", "position", "angle", "velocity", "angular_velocity", "kinetic_energy", "potential_energy",
                "total_energy", "momentum", "angular_momentum", "energy_never_rises", "tolerance", "source"},
               "an expect entry");
     ExpectDef e;
-    e.loc = {n.Mark().line + 1, n.Mark().column + 1};
-    const sim::yaml::ExpectTime when = sim::yaml::readExpectTime(*this, n, s.duration);
-    e.time = when.time;
-    e.energyNeverRises = when.energyNeverRises;
-    if (n["body"]) e.body = bodyRef(n, "body", s, "an expect entry");
-    for (const char* key : {"position", "angle", "velocity", "angular_velocity"})
-      if (n[key] && e.body.empty()) fail(n[key], std::string("'") + key + "' is a body's: add 'body:'");
+    readExpectHead(*this, n, s, {"position", "angle", "velocity", "angular_velocity"}, e);
     optional(n, "position", e.position, &Reader::vec2);
     optional(n, "angle", e.angle, &Reader::finite);
     optional(n, "velocity", e.velocity, &Reader::vec2);
     optional(n, "angular_velocity", e.angularVelocity, &Reader::finite);
-    optional(n, "kinetic_energy", e.kineticEnergy, &Reader::finite);
-    optional(n, "potential_energy", e.potentialEnergy, &Reader::finite);
-    optional(n, "total_energy", e.totalEnergy, &Reader::finite);
+    readExpectEnergies(*this, n, e);
     optional(n, "momentum", e.momentum, &Reader::vec2);
     optional(n, "angular_momentum", e.angularMomentum, &Reader::finite);
     optional(n, "tolerance", e.tolerance, &Reader::positive);
     e.earlierRun = expectSource(n);
     return e;
   }
-
-  const OtherKeys& others_;
-  std::unordered_set<std::string> bodyNames_;
-  SizeLimits limits_;
 };
 
 }  // namespace

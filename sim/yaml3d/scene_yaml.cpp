@@ -2,15 +2,12 @@
 
 #include <cmath>
 #include <sstream>
-#include <unordered_set>
 #include <utility>
 
-#include "sim/core/step_limit.h"
 #include "sim/scene3d/contact_pairs.h"
 #include "sim/scene3d/scene_build.h"
-#include "sim/yaml/expect_time.h"
-#include "sim/yaml/force_reader.h"
-#include "sim/yaml/path_name.h"
+#include "sim/yaml/expect_entry.h"
+#include "sim/yaml/model_reader_of.h"
 #include "sim/yaml/size_limits.h"
 #include "sim/world3d/method_models3d.h"
 #include "sim/yaml3d/reader3d.h"
@@ -20,14 +17,12 @@ using sim::world3d::Quat;
 using namespace sim::yaml;
 using namespace sim::scene3d;
 using namespace sim::world3d;
-using sim::core::stepsOverLimit;
 using sim::world3d::Shape;
 
 namespace {
 
 // keys of a 2D scene that 3D has no use for, and why: said instead of "unknown key"
 using Refusals = std::vector<std::pair<const char*, std::string>>;
-const Refusals kWorldRefusals = {};
 const Refusals kSimRefusals = {{"max_vertices", "3D shapes have no vertices to bound ('max_vertices' bounds a 2D polygon's)"},
                                {"substeps", "3D has no soft_step, so no 'substeps'"},
                                {"contact_hertz", "3D has no soft_step, so no 'contact_hertz'"},
@@ -42,73 +37,25 @@ const Refusals kShapeRefusals = {
     {"polygon", "'polygon' is a 2D shape; in 3D a shape is {box: [a, b, c]}, {sphere: r} or {ellipsoid: [a, b, c]}"}};
 const Refusals kExpectRefusals = {{"angle", "a 3D body's rotation is checked by 'orientation': [w, x, y, z]"}};
 
-class SceneReader3d : public Reader3d {
+class SceneReader3d : public ModelReaderOf<Reader3d> {
  public:
-  SceneReader3d(const SceneSource& source, const OtherKeys& others) : Reader3d(source.file), others_(others) {
-    placeUnmarked(source.variantMark);
-  }
+  using ModelReaderOf::ModelReaderOf;
 
   SceneDef read(const SceneSource& source) {
     const YAML::Node root = source.root;
-    SceneDef s;
-    s.variant = source.variant;
-    s.variantNames = source.variantNames;
     checkKeys(root,
               with({"name", "description", "dimensions", "duration", "world", "sim", "bodies", "forces", "events", "variants",
                     "expect"},
                    others_.scene),
               "the scene");
     if (source.dimensions != 3) fail(root, "this reads 3D scenes, which say 'dimensions: 3'");
-    s.name = root["name"] ? text(root["name"], "name") : source.stem;
-    if (const std::string fault = sim::yaml::pathNameFault(s.name); !fault.empty())
-      fail(root["name"] ? root["name"] : root, "the scene's name '" + sim::yaml::shownName(s.name) +
-                                                   "' names its output files but " + fault +
-                                                   "; give 'name:' letters, digits, '-' or '_'");
-    optional(root, "description", s.description, &Reader::text);
-    optional(root, "duration", s.duration, &Reader::positive);
-    if (const YAML::Node w = root["world"]) {
-      keys(w, {"gravity", "restitution", "friction"}, kWorldRefusals, "world");
-      optional(w, "gravity", s.gravity, &Reader3d::vec3);
-      if (w["restitution"]) s.restitution = restitution(w["restitution"]);
-      optional(w, "friction", s.friction, &Reader::nonNegative);
-    }
-    if (const YAML::Node sim = root["sim"]) {
-      keys(sim,
-           {"integrator", "dt", "normalize", "collisions", "iterations", "position_iterations", "max_steps", "max_bodies",
-            "max_entries"},
-           kSimRefusals, "sim");
-      if (const YAML::Node c = sim["collisions"]) {
-        s.collisions = named(c, "collisions", sim::core::collisionMethodFromName, sim::core::kCollisionMethodNames.list());
-        if (!sim::world3d::methodModel3d(s.collisions) && s.collisions != sim::core::CollisionMethod::Auto)
-          fail(c, "'" + c.Scalar() + "' is a 2D method; 3D scenes take 'auto', 'none', 'event' or 'sequential'");
-        s.collisionsLoc = place(c);
-      }
-      if (sim["iterations"]) s.velocityIterations = wholeNumber(sim["iterations"], "iterations", 1, 1000);
-      if (sim["position_iterations"])
-        s.positionIterations = wholeNumber(sim["position_iterations"], "position_iterations", 0, 1000);
-      optional(sim, "max_steps", s.maxSteps, &Reader::positive);
-      readSizeLimits(*this, sim, limits_);
-      if (sim["integrator"])
-        s.integrator = named(
-            sim["integrator"], "integrator", [](const std::string& n) { return kIntegratorNames.parse(n); },
-            kIntegratorNames.list());
-      optional(sim, "dt", s.dt, &Reader::positive);
-      optional(sim, "normalize", s.normalize, &Reader::boolean);
-    }
+    SceneDef s;
+    readHeading(root, source, s);
+    if (const YAML::Node w = root["world"]) readWorld(w, s, &Reader3d::vec3);
+    if (const YAML::Node sim = root["sim"]) readSim(sim, s);
     // a bound on work, as in 2D: a typo in dt must not run for years, nor one that takes no step
-    if (const std::string over = sim::core::dtOverDuration(s.dt, s.duration); !over.empty()) {
-      const YAML::Node at = root["sim"] && root["sim"]["dt"] ? root["sim"]["dt"] : root["duration"] ? root["duration"] : root;
-      fail(at, over + "; choose a dt of at most the duration (a hundredth of it or less to see any motion)");
-    }
-    if (const std::string over = stepsOverLimit(s.dt, s.maxSteps, s.duration); !over.empty()) {
-      const YAML::Node at = root["sim"] && root["sim"]["dt"] ? root["sim"]["dt"] : root["duration"] ? root["duration"] : root;
-      fail(at, over +
-                   "; raise dt, shorten duration, or, if the scene needs that many, raise the limit with "
-                   "'sim: {max_steps: N}'");
-    }
-    const YAML::Node bodies = required(root, "bodies", "a scene");
-    if (!bodies.IsSequence() || bodies.size() == 0) fail(bodies, "'bodies' must be a list of at least one body");
-    checkBodyCount(*this, bodies, limits_);
+    checkStepCount(root, s);
+    const YAML::Node bodies = bodyList(root);
     for (const YAML::Node& b : bodies) {
       // an obstacle: {plane: {point, normal}} is a static half-space, apart from the bodies
       if (b.IsMap() && b["shape"] && b["shape"].IsMap() && b["shape"]["plane"]) s.planes.push_back(readPlane(b));
@@ -116,19 +63,37 @@ class SceneReader3d : public Reader3d {
     }
     if (s.bodies.empty()) fail(bodies, "a scene needs at least one body that moves; planes are obstacles only");
     checkPairs(bodies, s);
-    // forces and events are read alike in 2D and 3D (sim/yaml/force_reader.h) but for the vector
-    size_t entries = 0;
-    sim::yaml::readForcesAndEvents(
-        *this, root, s, [this](const YAML::Node& v, const std::string& key) { return vec3(v, key); }, limits_, entries);
-    if (const YAML::Node expect = root["expect"]) {
-      if (!expect.IsSequence()) fail(expect, "'expect' must be a list, got " + describe(expect));
-      sim::yaml::checkEntryCount(*this, expect, entries, limits_);
-      for (const YAML::Node& e : expect) s.expects.push_back(readExpect(e, s));
-    }
+    readEntryLists(root, s, &Reader3d::vec3, [&](const YAML::Node& e) { return readExpect(e, s); });
     return s;
   }
 
  private:
+  // sim: the method and its iterations, the integrator, dt and normalize; a 2D option is refused
+  // with why 3D has none
+  void readSim(const YAML::Node& sim, SceneDef& s) {
+    keys(sim,
+         {"integrator", "dt", "normalize", "collisions", "iterations", "position_iterations", "max_steps", "max_bodies",
+          "max_entries"},
+         kSimRefusals, "sim");
+    if (const YAML::Node c = sim["collisions"]) {
+      s.collisions = named(c, "collisions", sim::core::collisionMethodFromName, sim::core::kCollisionMethodNames.list());
+      if (!sim::world3d::methodModel3d(s.collisions) && s.collisions != sim::core::CollisionMethod::Auto)
+        fail(c, "'" + c.Scalar() + "' is a 2D method; 3D scenes take 'auto', 'none', 'event' or 'sequential'");
+      s.collisionsLoc = place(c);
+    }
+    if (sim["iterations"]) s.velocityIterations = wholeNumber(sim["iterations"], "iterations", 1, 1000);
+    if (sim["position_iterations"])
+      s.positionIterations = wholeNumber(sim["position_iterations"], "position_iterations", 0, 1000);
+    optional(sim, "max_steps", s.maxSteps, &Reader::positive);
+    readSizeLimits(*this, sim, limits_);
+    if (sim["integrator"])
+      s.integrator = named(
+          sim["integrator"], "integrator", [](const std::string& n) { return kIntegratorNames.parse(n); },
+          kIntegratorNames.list());
+    optional(sim, "dt", s.dt, &Reader::positive);
+    optional(sim, "normalize", s.normalize, &Reader::boolean);
+  }
+
   // every key of `map` one of `allowed`; a 2D key among `refused` fails with its reason
   void keys(const YAML::Node& map, const Keys& allowed, const Refusals& refused, const std::string& what) const {
     if (map.IsMap())
@@ -151,21 +116,6 @@ class SceneReader3d : public Reader3d {
     } catch (const std::invalid_argument& e) {
       fail(n, e.what());
     }
-  }
-
-  double restitution(const YAML::Node& n) {
-    const double c = number(n, "restitution");
-    if (!(c >= 0.0 && c <= 1.0)) fail(n, "'restitution' must be within [0, 1] (0: plastic, 1: elastic), got " + n.Scalar());
-    return c;
-  }
-
-  // a body's name, unique among bodies and planes
-  std::string uniqueName(const YAML::Node& n) {
-    std::string name = text(required(n, "name", "every body"), "name");
-    if (name.empty()) fail(n, "a body's name cannot be empty");
-    // by hash: a scan of the names before would make loading quadratic in the bodies
-    if (!bodyNames_.insert(name).second) fail(n["name"], "duplicate body name '" + name + "'; names must be unique");
-    return name;
   }
 
   PlaneDef readPlane(const YAML::Node& n) {
@@ -238,14 +188,10 @@ class SceneReader3d : public Reader3d {
           "space_precession_rate", "flip_period", "energy_never_rises", "tolerance", "source"},
          kExpectRefusals, "an expect entry");
     ExpectDef e;
-    e.loc = {n.Mark().line + 1, n.Mark().column + 1};
-    const sim::yaml::ExpectTime when = sim::yaml::readExpectTime(*this, n, s.duration);
-    e.time = when.time;
-    e.energyNeverRises = when.energyNeverRises;
-    if (n["body"]) e.body = bodyRef(n, "body", s, "an expect entry");
-    for (const char* key : {"position", "orientation", "velocity", "angular_velocity", "quaternion_norm", "cone_angle",
-                            "precession_rate", "space_precession_rate", "flip_period"})
-      if (n[key] && e.body.empty()) fail(n[key], std::string("'") + key + "' is a body's: add 'body:'");
+    readExpectHead(*this, n, s,
+                   {"position", "orientation", "velocity", "angular_velocity", "quaternion_norm", "cone_angle", "precession_rate",
+                    "space_precession_rate", "flip_period"},
+                   e);
     optional(n, "position", e.position, &Reader3d::vec3);
     // typed as the scene's orientation is, but as an answer: a quaternion is compared as written
     if (const YAML::Node q = n["orientation"]) {
@@ -256,9 +202,7 @@ class SceneReader3d : public Reader3d {
     optional(n, "velocity", e.velocity, &Reader3d::vec3);
     optional(n, "angular_velocity", e.angularVelocity, &Reader3d::vec3);
     optional(n, "quaternion_norm", e.quaternionNorm, &Reader::positive);
-    optional(n, "kinetic_energy", e.kineticEnergy, &Reader::finite);
-    optional(n, "potential_energy", e.potentialEnergy, &Reader::finite);
-    optional(n, "total_energy", e.totalEnergy, &Reader::finite);
+    readExpectEnergies(*this, n, e);
     optional(n, "momentum", e.momentum, &Reader3d::vec3);
     optional(n, "angular_momentum", e.angularMomentum, &Reader3d::vec3);
     optional(n, "cone_angle", e.coneAngle, &Reader::nonNegative);
@@ -269,10 +213,6 @@ class SceneReader3d : public Reader3d {
     e.earlierRun = expectSource(n);
     return e;
   }
-
-  const OtherKeys& others_;
-  sim::yaml::SizeLimits limits_;
-  std::unordered_set<std::string> bodyNames_;
 };
 
 }  // namespace

@@ -34,4 +34,26 @@ void expectSceneError(Load load, const std::string& file, const std::string& tex
   }
 }
 
+// the check of one reader's inline scene text, for the readers' tests: `load(text, file, variant)` is
+// the 2D or the 3D reader's loadSceneText, and `file` names the text in its messages
+template <class Load>
+struct InlineSceneErrors {
+  Load load;
+  std::string file;
+
+  // loading `text` (with `variant`) must throw as expectSceneError says
+  void operator()(const std::string& text, int line, int column, std::initializer_list<std::string> words,
+                  const std::string& variant = "") const {
+    expectSceneError(load, file, text, line, column, words, variant);
+  }
+};
+
 }  // namespace scene_errors
+
+// EXPECT_SCENE_ERROR(text, line, column, {words}[, variant]): the test file's expectSceneError (an
+// InlineSceneErrors), with the line of the call named in the failures reported from inside it
+#define EXPECT_SCENE_ERROR(...)                    \
+  do {                                             \
+    INFO("EXPECT_SCENE_ERROR at line ", __LINE__); \
+    expectSceneError(__VA_ARGS__);                 \
+  } while (false)

@@ -20,19 +20,7 @@ const char* const kFile = "inline.yaml";
 
 // loading `text` (with `variant`) must throw a SceneError at `line`:`column` (column 0: not
 // checked) whose message contains every one of `words`
-void expectSceneError(const std::string& text, int line, int column, std::initializer_list<std::string> words,
-                      const std::string& variant = "") {
-  scene_errors::expectSceneError(
-      [](const std::string& t, const std::string& f, const std::string& v) { return sim::yaml::loadSceneText(t, f, v); }, kFile,
-      text, line, column, words, variant);
-}
-
-// names the call site in failures reported from inside the helper
-#define EXPECT_SCENE_ERROR(...)                    \
-  do {                                             \
-    INFO("EXPECT_SCENE_ERROR at line ", __LINE__); \
-    expectSceneError(__VA_ARGS__);                 \
-  } while (false)
+const scene_errors::InlineSceneErrors expectSceneError{sim::yaml::loadSceneText, kFile};
 
 // one body `a` (a unit circle) on lines 1-3; tests append lines 4, 5, ...
 const std::string kOneBody =

@@ -19,18 +19,7 @@ namespace {
 
 const char* const kFile = "inline.yaml";
 
-void expectSceneError(const std::string& text, int line, int column, std::initializer_list<std::string> words,
-                      const std::string& variant = "") {
-  scene_errors::expectSceneError(
-      [](const std::string& t, const std::string& f, const std::string& v) { return sim::yaml3d::loadSceneText(t, f, v); }, kFile,
-      text, line, column, words, variant);
-}
-
-#define EXPECT_SCENE_ERROR(...)                    \
-  do {                                             \
-    INFO("EXPECT_SCENE_ERROR at line ", __LINE__); \
-    expectSceneError(__VA_ARGS__);                 \
-  } while (false)
+const scene_errors::InlineSceneErrors expectSceneError{sim::yaml3d::loadSceneText, kFile};
 
 // a 3D scene with one body `a` (a unit cube) on lines 1-4; tests append lines 5, 6, ...
 const std::string kOneBody =
