@@ -41,6 +41,17 @@ struct SceneDefOf {
   std::vector<EventDefOf<Vec>> events;
   std::vector<Expect> expects;
 
+  // what a world's definition takes from the model alike in 2D and 3D (each buildWorld adds its
+  // own keys): the step, gravity, and the collision method with its iterations
+  template <class WorldDef>
+  void defineRun(WorldDef& w) const {
+    w.dt = dt;
+    w.forces.gravity = gravity;
+    w.collisions = collisions;
+    w.velocityIterations = velocityIterations;
+    w.positionIterations = positionIterations;
+  }
+
   // index of the body with this name, or -1 (a scan: for one lookup)
   int bodyIndex(const std::string& name) const {
     for (size_t i = 0; i < bodies.size(); ++i)

@@ -74,12 +74,8 @@ Shape bodyShape(const BodyDef& def, const Vec2& center) {
 
 World buildWorld(const SceneDef& def) {
   WorldDef w;
+  def.defineRun(w);
   w.integrator = def.integrator;
-  w.dt = def.dt;
-  w.forces.gravity = def.gravity;
-  w.collisions = def.collisions;
-  w.velocityIterations = def.velocityIterations;
-  w.positionIterations = def.positionIterations;
   w.substeps = def.substeps;
   w.contactHertz = def.contactHertz;
   w.sleep = def.sleep;

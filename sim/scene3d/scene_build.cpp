@@ -47,13 +47,9 @@ World buildWorld(const SceneDef& s) {
     w.planes.push_back({p.point, p.normal, p.restitution.value_or(s.restitution),
                         p.friction.value_or(s.friction.value_or(sim::core::settings::kDefaultFriction)), named});
   }
-  w.collisions = s.collisions;
-  w.velocityIterations = s.velocityIterations;
-  w.positionIterations = s.positionIterations;
+  s.defineRun(w);
   w.integrator = s.integrator;
-  w.dt = s.dt;
   w.normalizeQuaternions = s.normalize;
-  w.forces.gravity = s.gravity;
   for (const PointForceDef& f : s.pointForces)
     w.forces.pointForces.push_back({index(f.body), f.point, f.force, f.bodyFrame, f.from, f.until});
   for (const SpringDef& sp : s.springs) {
