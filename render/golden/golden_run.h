@@ -66,6 +66,7 @@ GoldenTimes goldenTimes(const Model& model, const GoldenDef& golden, const std::
   sortUnique(times.checkpoints);
   return times;
 }
+
 // a run of `model` (2D or 3D) before its checkpoints and frames: its record's name and its bodies
 template <class Model>
 GoldenRun goldenRunOf(const Model& model, bool threeD) {

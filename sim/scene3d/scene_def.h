@@ -62,7 +62,7 @@ struct ExpectDef : sim::core::ExpectDefOf<sim::world3d::Vec3> {
 // a 3D scene's model: what 2D's has too (sim/core/scene_def_of.h), and 3D's integrator and planes
 struct SceneDef : sim::core::SceneDefOf<sim::world3d::Vec3, BodyDef, ExpectDef> {
   sim::world3d::Integrator integrator = sim::world3d::Integrator::Splitting;
-  bool normalize = true;  // q ← q/|q| after every step (World::normalizeQuaternions)
+  bool normalize = true;  // q ← q/|q| after every step (WorldDef::normalizeQuaternions)
   std::vector<PlaneDef> planes;
 };
 

@@ -21,8 +21,7 @@ void ContactFinder::makeProxies(const std::vector<Body>& bodies) {
 }
 
 // collect's stages over one call: its query, and the proxies, pairs and manifolds it writes into
-// the finder's scratch; defined here, in one class, so that
-// each stage inlines into the loop that calls it as the lambdas it replaces did
+// the finder's scratch; one class, so that each stage inlines into the loop that calls it
 class ContactFinder::Pass {
  public:
   Pass(ContactFinder& finder, const ContactQuery& query)
@@ -296,7 +295,7 @@ class ContactFinder::Pass {
   }
 
   // a contact written whole, its impulses those of last step's contact of the same pair (`old`
-  // walks `contacts`, sorted by pair as the pairs are, from `from`), matched while it is at hand
+  // walks the query's `last`, sorted by pair as the pairs are, from `from`), matched while it is at hand
   void fill(Contact& c, const std::pair<int, int>& pair, const Manifold& m, size_t& old) const {
     const int i = bodyOf(pair.first), j = bodyOf(pair.second);
     c.a = i, c.b = j;

@@ -1,8 +1,9 @@
 // The contacts' upkeep, a unit of its own that the world's methods call through World::findContacts:
 // the collision proxies (one per convex shape), the broad phase's pairs of them (pair_cache.h),
 // each pair's manifold (collide.h, four box pairs at once: quad_pairs.h), soft_step's recycled
-// manifolds (contact_recycle.h) and the warm start from last step's same pair (Catto 2006). It
-// keeps only scratch from one call to the next: what it finds is the same with or without it.
+// manifolds (contact_recycle.h) and the warm start from last step's same pair (Catto 2006). From
+// one call to the next it keeps scratch, which changes nothing it finds, and soft_step's recycled
+// manifolds, which are what recycling finds.
 #pragma once
 
 #include <cstdint>

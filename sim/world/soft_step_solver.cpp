@@ -194,7 +194,7 @@ class SoftStepSolver final : public Method {
     return true;
   }
 
-  // the widest SIMD the passes may use, at most `allowed` (World::simdWidth): 8 AVX-512, 4 AVX2, 1
+  // the widest SIMD the passes may use, at most `allowed` (WorldDef::simdWidth): 8 AVX-512, 4 AVX2, 1
   // none; doubles take eight, four or one lanes at once, floats eight in AVX-512VL's registers or
   // AVX2's, or one
   static int laneWidth(int allowed) { return allowed >= 8 && avx512Available() ? 8 : allowed >= 4 && avx2Available() ? 4 : 1; }

@@ -146,13 +146,13 @@ class World {
   sim::core::Timeline<ImpulseEvent> timeline_;  // steps of dt cut at the events and force switches, and the events due
   double sceneSize_ = 1.0;
   Sleep sleep_;         // the islands asleep and the bodies' time at rest
-  OwnedMethod method_;  // the unit of `collisions`, made by start()
+  OwnedMethod method_;  // the unit of collisions(), made by start()
   // `auto` chose event: contact that persists, or a stack forming, switches to sequential
   bool mayStackUp_ = false;
   ContactWatch watch_;
   sim::core::States stepStart_;  // the states where the step began, to redo it on a switch
-  // the contacts' upkeep: proxies, broad phase, manifolds, recycling (scratch: a look at the
-  // contacts from a const world uses it too)
+  // the contacts' upkeep: proxies, broad phase, manifolds, recycling (mutable: a look at the
+  // contacts from a const world uses its scratch, and leaves what recycling kept as it was)
   mutable ContactFinder finder_;
   mutable std::vector<sim::core::Vec2> force_;  // scratch of rates()
   mutable std::vector<double> torque_;

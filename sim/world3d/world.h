@@ -97,7 +97,7 @@ class World {
   bool started_ = false;
   sim::core::Timeline<ImpulseEvent> timeline_;  // steps of dt cut at the events and force switches, and the events due
   double sceneSize_ = 1.0;
-  OwnedMethod3 method_;    // the unit of `collisions`, made by start()
+  OwnedMethod3 method_;    // the unit of collisions(), made by start()
   bool watching_ = false;  // `auto` chose event: a contact that persists switches to sequential
   sim::core::RattleWatch rattle_;
 };

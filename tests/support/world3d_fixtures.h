@@ -22,7 +22,6 @@ using sim::world3d::Spring;
 using sim::world3d::StepObserver;
 using sim::world3d::Vec3;
 using sim::world3d::World;
-using sim::world3d::WorldDef;
 
 // a free box of sides 0.2 × 0.4 × 0.6 m (three distinct moments), 1 kg, tilted and spun about an
 // axis off all three principal axes; no forces: L and E are constant, ω wanders
@@ -31,7 +30,7 @@ inline World freeBox(Integrator method, double dt, const Vec3& omega = Vec3(1.0,
   box.q = axisAngle(Vec3(1, 1, 0), 0.4);
   box.v = Vec3(0.1, 0, 0);
   box.omega = omega;
-  WorldDef def;
+  sim::world3d::WorldDef def;
   def.integrator = method;
   def.dt = dt;
   return World(def, {box});
@@ -48,7 +47,7 @@ inline World springChain(Integrator method, double dt) {
   Body ellipsoid = makeBody(makeEllipsoid(Vec3(0.1, 0.15, 0.25)), 40.0);
   ellipsoid.x = Vec3(0.0, 0.2, -2.0);
   ellipsoid.omega = Vec3(0.0, 3.0, 1.0);
-  WorldDef def;
+  sim::world3d::WorldDef def;
   def.forces.gravity = Vec3(0, 0, -9.81);
   def.forces.springs.push_back({0, Vec3(0.1, 0.2, 0.3), kWorldAnchor, Vec3(0, 0, 0), 60.0, 0.5, 0.0});
   def.forces.springs.push_back({0, Vec3(-0.1, 0.2, -0.3), 1, Vec3(0, 0, 0.25), 40.0, 0.5, 0.2});

