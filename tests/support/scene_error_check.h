@@ -47,6 +47,9 @@ struct InlineSceneErrors {
     expectSceneError(load, file, text, line, column, words, variant);
   }
 };
+// (spelled out: clang 14, the sanitizers' compiler, does not deduce an aggregate's arguments)
+template <class Load>
+InlineSceneErrors(Load, std::string) -> InlineSceneErrors<Load>;
 
 }  // namespace scene_errors
 
