@@ -69,7 +69,8 @@ FramePainter::FramePainter(const render::scene::Scene& def, const Camera& camera
       velocityScale_(arrowScale(def.render.velocityScale, survey.maxSpeed, camera)),
       textWidth_(width),
       arrows_(def, camera, survey, velocityScale_),
-      panel_(def, camera, survey) {
+      panel_(def, camera, survey),
+      look_(afterimageLook()) {
   // the caption is the same in every frame: wrapped once, to the frame less an inset on each side
   const std::string caption = captionOf(def);
   const int size = fontSizeFor(def.render, camera.heightPx());
@@ -87,19 +88,19 @@ History::Options FramePainter::historyOptions() const {
   o.hold = r.contactHold;
   o.eventImpulses = r.impulses;
   o.impacts = r.contacts;
-  o.impulseScale = impulseScale_;
-  o.normalLength = kNormalFraction * camera_.worldHeight();
   o.points = arrows_.paths();
-  if (r.overlays.impactValues)
-    o.labels.emplace(fontSizeFor(r, camera_.heightPx()) * camera_.pixelSize(), impulseScale_, o.normalLength);
-  if (r.contacts) {
-    const double length = o.normalLength;
-    o.contacts = [length](const sim::world::World& world, Canvas& draw) {
-      PhysicsDraw physics(draw);
-      sim::describe::describeContacts(world, length, physics);
-    };
-  }
+  if (r.contacts) o.contacts = sim::describe::contactMarks;
   return o;
+}
+
+History::Look FramePainter::afterimageLook() const {
+  const render::scene::RenderDef& r = def_.render;
+  History::Look look;
+  look.impulseScale = impulseScale_;
+  look.normalLength = kNormalFraction * camera_.worldHeight();
+  if (r.overlays.impactValues)
+    look.labels.emplace(fontSizeFor(r, camera_.heightPx()) * camera_.pixelSize(), impulseScale_, look.normalLength);
+  return look;
 }
 
 void FramePainter::paint(const sim::world::World& world, const History& history, const std::vector<DrawList>& ghosts,
@@ -129,7 +130,7 @@ void FramePainter::paint(const sim::world::World& world, const History& history,
   // counted first, then drawn (a copy of tens of thousands of calls made a frame of a 5,050-box
   // pyramid allocate and free each)
   ContactsInView onScreen(camera_.view());
-  if (r.contactsAuto) history.drawAfterimages(world.time, onScreen);
+  if (r.contactsAuto) history.drawAfterimages(world, look_, onScreen);
   if (r.contactsAuto && onScreen.count >= kManyContacts) {
     // dots scaled to the bodies they sit on, or none where they would cover them
     const double radius = manyDotRadiusPx(world);
@@ -138,10 +139,10 @@ void FramePainter::paint(const sim::world::World& world, const History& history,
       return role != Role::ContactNormal && role != Role::Impulse && (showDots || role != Role::ContactPoint);
     });
     target.manyPoints(radius);
-    history.drawAfterimages(world.time, dots);
+    history.drawAfterimages(world, look_, dots);
     target.manyPoints(0.0);
   } else {
-    history.drawAfterimages(world.time, beside);
+    history.drawAfterimages(world, look_, beside);
   }
   // a poll's frames show the impulses still to come, dashed, so that its question can be asked from
   // the picture (struck at the center, or at the end?)

@@ -28,6 +28,8 @@ class FramePainter {
 
   // what the history of a run must record for these frames
   History::Options historyOptions() const;
+  // how these frames draw the history's afterimages: their arrows' scales and labels
+  History::Look afterimageLook() const;
   // the frame at the world's present time; `ghosts` are earlier poses (strobe), oldest first. Every
   // text goes through one LabelPlacer (label_place.h) and reaches `draw` last, placed; `placed` (when
   // given) is told where each went
@@ -63,6 +65,7 @@ class FramePainter {
   SlowFactor slowMotion_;
   TeachingArrows arrows_;  // the lecture overlays
   EnergyPanel panel_;
+  History::Look look_;  // afterimageLook(), made once
 };
 
 }  // namespace render::frame

@@ -1,7 +1,6 @@
 #include "render/frame/history.h"
 
 #include "render/jobs/interrupt.h"
-#include "sim/describe/describe.h"
 
 namespace render::frame {
 using sim::core::Vec2;
@@ -38,11 +37,11 @@ void History::afterStep(const sim::world::World& world) {
 
 void History::afterEvent(const sim::world::World& world, const sim::world::ImpulseEvent& e) {
   if (!options_.eventImpulses) return;
-  Moment m{world.time, {}, Moment::Kind::Event, {-1, -1}};
-  PhysicsDraw physics(m.calls);
-  const sim::describe::Arrow arrow = sim::describe::describeEventImpulse(world, e, options_.impulseScale, physics);
-  if (options_.labels) options_.labels->event(e, arrow.tail, arrow.head, m.calls);
-  begin(std::move(m));
+  // where it strikes, now: the body moves on, the arrow stays where the blow fell
+  sim::world::ImpulseEvent at = e;
+  at.point = e.pointInWorld ? e.point : world.bodies[e.body].pose().toWorld(e.point);
+  at.pointInWorld = true;
+  begin({.time = world.time, .kind = Moment::Kind::Event, .pair = {-1, -1}, .event = at});
 }
 
 long History::begin(Moment moment) {
@@ -74,26 +73,22 @@ void History::observeImpacts(const sim::world::World& world) {
     const auto held = impactOfPair_.find(pair);
     long id = 0;
     if (held == impactOfPair_.end()) {
-      id = begin({r.t, {}, Moment::Kind::Impact, pair});
+      id = begin({.time = r.t, .kind = Moment::Kind::Impact, .pair = pair});
     } else {
       id = held->second;
       if (moments_.at(id).time != r.t) {
         retime(id, r.t);
-        moments_.at(id).calls.clear();
+        moments_.at(id).impacts.clear();
       }
     }
-    DrawList& d = moments_.at(id).calls;
-    const bool first = d.empty();
-    PhysicsDraw physics(d);
-    sim::describe::describeImpact(world, r, options_.impulseScale, options_.normalLength, physics);
-    if (options_.labels) options_.labels->impact(world, r, first, d);
+    moments_.at(id).impacts.push_back(r);
   }
 }
 
 void History::observeContacts(const sim::world::World& world) {
   if (!options_.contacts) return;
-  // described into the last step's storage, which keeps its capacity: no allocation a step
-  DrawList& now = spare_;
+  // marked into the last step's storage, which keeps its capacity: no allocation a step
+  std::vector<sim::describe::ContactMark>& now = spare_;
   now.clear();
   options_.contacts(world, now);
   if (now.empty()) {
@@ -104,9 +99,9 @@ void History::observeContacts(const sim::world::World& world) {
   // after a separation is a new moment, so that the last one fades while the next one shows
   if (touching_ >= 0) {
     retime(touching_, world.time);
-    std::swap(moments_.at(touching_).calls, now);
+    std::swap(moments_.at(touching_).contacts, now);
   } else {
-    touching_ = begin({world.time, std::move(now), Moment::Kind::Contact, {-1, -1}});
+    touching_ = begin({.time = world.time, .kind = Moment::Kind::Contact, .pair = {-1, -1}, .contacts = std::move(now)});
   }
 }
 
@@ -137,12 +132,34 @@ void History::drawPath(const std::vector<Vec2>& path, double spacing, const Pen&
   }
 }
 
-void History::drawAfterimages(double t, Canvas& draw) const {
-  const double hold = options_.hold;
+void History::describe(const sim::world::World& world, const Moment& m, const Look& look, Canvas& draw) {
+  PhysicsDraw physics(draw);
+  switch (m.kind) {
+    case Moment::Kind::Contact: sim::describe::describeContactMarks(m.contacts, look.normalLength, physics); break;
+    case Moment::Kind::Impact:
+      for (size_t k = 0; k < m.impacts.size(); ++k) {
+        sim::describe::describeImpact(world, m.impacts[k], look.impulseScale, look.normalLength, physics);
+        // the normal and the velocities once per pair and instant
+        if (look.labels) look.labels->impact(world, m.impacts[k], k == 0, draw);
+      }
+      break;
+    case Moment::Kind::Event: {
+      const sim::describe::Arrow arrow = sim::describe::describeEventImpulse(world, m.event, look.impulseScale, physics);
+      if (look.labels) look.labels->event(m.event, arrow.tail, arrow.head, draw);
+      break;
+    }
+  }
+}
+
+void History::drawAfterimages(const sim::world::World& world, const Look& look, Canvas& draw) const {
+  const double hold = options_.hold, t = world.time;
+  DrawList calls;
   for (const auto& [id, m] : moments_) {
     const double age = t - m.time;
     if (age < 0.0 || age > hold) continue;
-    m.calls.replay(draw, hold > 0.0 ? 1.0 - age / hold : 1.0);
+    calls.clear();
+    describe(world, m, look, calls);
+    calls.replay(draw, hold > 0.0 ? 1.0 - age / hold : 1.0);
   }
 }
 

@@ -1,7 +1,9 @@
 // What a frame shows besides the present state, gathered while the world steps: where each body has
 // been (its trail), and what happened a moment ago and stays on screen a while, fading (an impact's
 // contact point, normal and impulses; the arrow of an event's impulse; contacts after they part),
-// so that a video shows them for more than the one frame in which they happen.
+// so that a video shows them for more than the one frame in which they happen. It keeps what
+// happened, not how it looks: the arrows' scales come with the frame that draws them (Look), so a
+// history gathered before the camera is known draws the same frames as one gathered after.
 #pragma once
 
 #include <functional>
@@ -13,29 +15,33 @@
 
 #include "render/draw/draw_list.h"
 #include "render/frame/impact_labels.h"
+#include "sim/describe/describe.h"
 #include "sim/world/world.h"
 
 namespace render::frame {
 
 class History : public sim::world::StepObserver {
  public:
-  // describes the contacts of the world now (points, normals, impulses, the SAT overlay)
-  using ContactDescriber = std::function<void(const sim::world::World&, render::draw::Canvas&)>;
+  // the contacts of the world now, as marks (empty: none)
+  using ContactSource = std::function<void(const sim::world::World&, std::vector<sim::describe::ContactMark>&)>;
 
   struct Options {
     bool trails = false;
     double hold = 0.5;                                         // s an afterimage stays, fading
     bool eventImpulses = true;                                 // an arrow where each event applies its impulse
     bool impacts = true;                                       // each impact the collision response logs: point, normal, impulses
-    double impulseScale = 1.0;                                 // m of arrow per N·s
-    double normalLength = 1.0;                                 // m, the arrow of a contact normal
-    ContactDescriber contacts;                                 // the contacts touching now (empty: none)
+    ContactSource contacts;                                    // the contacts touching now (empty: none)
     std::vector<std::pair<int, sim::core::Vec2>> points = {};  // body points (body coordinates) whose paths to keep
-    std::optional<ImpactLabels> labels = std::nullopt;         // impact_values: text on impact and event afterimages
     // m: a trail keeps a point only this far from the one it kept before (and always the latest),
     // as drawTrails draws them: the same trail, in memory that grows with the path drawn, not with
     // the steps (10 bodies over 10⁷ steps kept every point: 3.7 GB); 0 keeps every step's
     double trailSpacing = 0.0;
+  };
+  // how a frame draws the afterimages: its scales
+  struct Look {
+    double impulseScale = 1.0;                          // m of arrow per N·s
+    double normalLength = 1.0;                          // m, the arrow of a contact normal
+    std::optional<ImpactLabels> labels = std::nullopt;  // impact_values: text on impact and event afterimages
   };
 
   // starts with the world's present state (its contacts and positions at the start)
@@ -51,17 +57,23 @@ class History : public sim::world::StepObserver {
   // a path as segments in `style`, points closer than `spacing` merged (the last one always kept)
   static void drawPath(const std::vector<sim::core::Vec2>& path, double spacing, const render::draw::Pen& style,
                        render::draw::Canvas& draw);
-  // what happened at most `hold` before `t`, its opacity falling linearly from 1 to 0 with age
-  void drawAfterimages(double t, render::draw::Canvas& draw) const;
+  // what happened at most `hold` before `world`'s time, its opacity falling linearly from 1 to 0 with
+  // age, drawn as `look` says (the world names which bodies are static)
+  void drawAfterimages(const sim::world::World& world, const Look& look, render::draw::Canvas& draw) const;
 
  private:
+  // what happened, as it happened: drawn only when a frame shows it
   struct Moment {
     enum class Kind { Contact, Impact, Event };
     double time;
-    render::draw::DrawList calls;
     Kind kind;
-    std::pair<int, int> pair;  // the bodies of an impact
+    std::pair<int, int> pair;                               // the bodies of an impact
+    std::vector<sim::describe::ContactMark> contacts = {};  // Kind::Contact: the points touching
+    std::vector<sim::world::ImpactRecord> impacts = {};     // Kind::Impact: its records at `time`
+    sim::world::ImpulseEvent event = {};                    // Kind::Event: its point in world coordinates
   };
+  // a moment as `look` draws it
+  static void describe(const sim::world::World& world, const Moment& moment, const Look& look, render::draw::Canvas& draw);
   void observeContacts(const sim::world::World& world);
   void observeImpacts(const sim::world::World& world);
   // a new moment, held from now on; its number
@@ -82,7 +94,7 @@ class History : public sim::world::StepObserver {
   std::set<std::pair<double, long>> byTime_;          // (time, number) of each held moment, oldest first
   std::map<std::pair<int, int>, long> impactOfPair_;  // the number of each pair's impact moment
   long next_ = 0;                                     // the number the next moment gets
-  render::draw::DrawList spare_;                      // the touching contacts' previous draw list, its storage reused
+  std::vector<sim::describe::ContactMark> spare_;     // the touching contacts' previous marks, their storage reused
   long touching_ = -1;                                // the number of the contacts still touching, -1 when none
   size_t impactsSeen_ = 0;                            // records of world.impacts already turned into moments
 };

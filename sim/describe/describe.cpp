@@ -88,20 +88,23 @@ void describeBodies(const World& world, DebugDraw& draw, double opacity) {
   }
 }
 
-void describeContacts(const World& world, double normalLength, DebugDraw& draw) {
-  auto describe = [&](const Contact& c) {
+void contactMarks(const World& world, std::vector<ContactMark>& out) {
+  auto mark = [&](const Contact& c) {
     const Manifold& m = c.manifold;
     const Vec2 n = shownNormal(world, c.a, m.normal);
-    for (int k = 0; k < m.count; ++k) {
-      const Vec2& p = m.points[k].point;
-      draw.arrow(p, p + normalLength * n, {DrawRole::ContactNormal, -1, 1.0});
-      draw.point(p, {DrawRole::ContactPoint, -1, 1.0});
-    }
+    for (int k = 0; k < m.count; ++k) out.push_back({m.points[k].point, n});
   };
-  for (const Contact& c : world.contacts) describe(c);
+  for (const Contact& c : world.contacts) mark(c);
   // a sleeping pile still touches where it touched when it fell asleep (sim: {sleep: true})
   for (const std::vector<Contact>& island : world.sleepingContacts())
-    for (const Contact& c : island) describe(c);
+    for (const Contact& c : island) mark(c);
+}
+
+void describeContactMarks(const std::vector<ContactMark>& marks, double normalLength, DebugDraw& draw) {
+  for (const ContactMark& m : marks) {
+    draw.arrow(m.point, m.point + normalLength * m.normal, {DrawRole::ContactNormal, -1, 1.0});
+    draw.point(m.point, {DrawRole::ContactPoint, -1, 1.0});
+  }
 }
 
 void describeImpact(const World& world, const ImpactRecord& r, double impulseScale, double normalLength, DebugDraw& draw) {

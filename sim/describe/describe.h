@@ -2,6 +2,8 @@
 // of the simulation shows (notes: "Rigid body state", "Impulses", "Collisions").
 #pragma once
 
+#include <vector>
+
 #include "sim/debug_draw/debug_draw.h"
 #include "sim/world/world.h"
 
@@ -11,10 +13,16 @@ namespace sim::describe {
 // every body's shape in its current pose (and a radius for circles, so rotation shows)
 void describeBodies(const sim::world::World& world, sim::debug_draw::DebugDraw& draw, double opacity = 1.0);
 
-// the contacts touching now (world.contacts, and those the sleeping islands kept): a dot at each
-// manifold point and an arrow
-// `normalLength` long along its normal, from B into A (into B when A is static, as for a floor)
-void describeContacts(const sim::world::World& world, double normalLength, sim::debug_draw::DebugDraw& draw);
+// a contact point as a picture shows it: where, and its normal from B into A (into B when A is
+// static, as for a floor)
+struct ContactMark {
+  sim::core::Vec2 point, normal;
+};
+// the contacts touching now (world.contacts, and those the sleeping islands kept), a mark for each
+// manifold point, appended to `out` in the order describeContactMarks draws them
+void contactMarks(const sim::world::World& world, std::vector<ContactMark>& out);
+// a dot at each mark and an arrow `normalLength` long along its normal
+void describeContactMarks(const std::vector<ContactMark>& marks, double normalLength, sim::debug_draw::DebugDraw& draw);
 
 // one impact of the collision response: the impulse on each moving body (γ n̂ on A, −γ n̂ on B,
 // `impulseScale` m per N·s) from the point, the normal `normalLength` long and the point
