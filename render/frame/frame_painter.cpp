@@ -10,6 +10,7 @@
 
 #include "render/draw/style.h"
 #include "render/frame/impulse_beside.h"
+#include "render/frame/kept_run.h"
 #include "render/frame/overlay_key.h"
 #include "render/frame/trace_overlay.h"
 #include "render/frame/upcoming_events.h"
@@ -81,15 +82,9 @@ FramePainter::FramePainter(const render::scene::Scene& def, const Camera& camera
 }
 
 History::Options FramePainter::historyOptions() const {
-  const render::scene::RenderDef& r = def_.render;
-  History::Options o;
-  o.trails = r.trails;
+  // what a kept run records, its trail points kept at the frame's spacing
+  History::Options o = keptHistoryOptions(def_);
   o.trailSpacing = kTrailSpacingPx * camera_.pixelSize();
-  o.hold = r.contactHold;
-  o.eventImpulses = r.impulses;
-  o.impacts = r.contacts;
-  o.points = arrows_.paths();
-  if (r.contacts) o.contacts = sim::describe::contactMarks;
   return o;
 }
 

@@ -17,15 +17,8 @@ void History::afterStep(const sim::world::World& world) {
   // a snapshot's run to its time: Ctrl-C between two steps
   render::jobs::checkInterrupted();
   if (options_.trails)
-    for (size_t i = 0; i < world.bodies.size(); ++i) {
-      if (world.bodies[i].isStatic) continue;
-      std::vector<Vec2>& trail = trails_[i];
-      // drawPath's rule, applied as the points come: the latest point replaces one not kept
-      if (tentative_[i]) trail.pop_back();
-      const Vec2 kept = trail.empty() ? world.bodies[i].x : trail.back();
-      tentative_[i] = !trail.empty() && (world.bodies[i].x - kept).norm() < options_.trailSpacing;
-      trail.push_back(world.bodies[i].x);
-    }
+    for (size_t i = 0; i < world.bodies.size(); ++i)
+      if (!world.bodies[i].isStatic) keepTrailPoint(i, world.bodies[i].x);
   for (size_t k = 0; k < points_.size(); ++k) {
     const auto& [body, local] = options_.points[k];
     points_[k].push_back(world.bodies[body].pose().toWorld(local));
@@ -42,6 +35,39 @@ void History::afterEvent(const sim::world::World& world, const sim::world::Impul
   at.point = e.pointInWorld ? e.point : world.bodies[e.body].pose().toWorld(e.point);
   at.pointInWorld = true;
   begin({.time = world.time, .kind = Moment::Kind::Event, .pair = {-1, -1}, .event = at});
+}
+
+void History::keepTrailPoint(size_t body, const Vec2& x) {
+  std::vector<Vec2>& trail = trails_[body];
+  if (tentative_[body]) trail.pop_back();
+  const Vec2 kept = trail.empty() ? x : trail.back();
+  tentative_[body] = !trail.empty() && (x - kept).norm() < options_.trailSpacing;
+  trail.push_back(x);
+}
+
+void History::respace(double spacing) {
+  options_.trailSpacing = spacing;
+  for (size_t i = 0; i < trails_.size(); ++i) {
+    std::vector<Vec2> every = std::move(trails_[i]);
+    trails_[i].clear();
+    tentative_[i] = false;
+    for (const Vec2& x : every) keepTrailPoint(i, x);
+  }
+}
+
+size_t History::pathBytes() const {
+  size_t total = 0;
+  for (const auto& trail : trails_) total += trail.capacity() * sizeof(Vec2);
+  for (const auto& path : points_) total += path.capacity() * sizeof(Vec2);
+  return total;
+}
+
+size_t History::bytes() const {
+  size_t total = sizeof(History) + pathBytes();
+  for (const auto& [id, m] : moments_)
+    total += sizeof(Moment) + m.contacts.capacity() * sizeof(sim::describe::ContactMark) +
+             m.impacts.capacity() * sizeof(sim::world::ImpactRecord);
+  return total + spare_.capacity() * sizeof(sim::describe::ContactMark);
 }
 
 long History::begin(Moment moment) {

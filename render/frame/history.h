@@ -50,6 +50,14 @@ class History : public sim::world::StepObserver {
   void afterStep(const sim::world::World& world) override;
   void afterEvent(const sim::world::World& world, const sim::world::ImpulseEvent& event) override;
 
+  const Options& options() const { return options_; }
+  // the same record as a history with `spacing` between trail points would hold after the same
+  // steps: exact from a history that kept every step's point (trailSpacing 0), as the survey's does
+  void respace(double spacing);
+  // about how much memory it holds, bytes: in all, and in its paths (trails and body points)
+  size_t bytes() const;
+  size_t pathBytes() const;
+
   // every dynamic body's path up to now as Trail segments, points closer than `spacing` merged
   void drawTrails(render::draw::Canvas& draw, double spacing) const;
   // the path so far of Options::points[k]
@@ -74,6 +82,8 @@ class History : public sim::world::StepObserver {
   };
   // a moment as `look` draws it
   static void describe(const sim::world::World& world, const Moment& moment, const Look& look, render::draw::Canvas& draw);
+  // drawPath's rule, applied as the points come: the latest point replaces one not kept
+  void keepTrailPoint(size_t body, const sim::core::Vec2& x);
   void observeContacts(const sim::world::World& world);
   void observeImpacts(const sim::world::World& world);
   // a new moment, held from now on; its number

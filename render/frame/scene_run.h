@@ -12,6 +12,7 @@
 #include "render/draw/style.h"
 #include "render/frame/frame_painter.h"
 #include "render/frame/history.h"
+#include "render/frame/kept_run.h"
 #include "render/frame/stepped_run.h"
 #include "sim/world/world.h"
 
@@ -85,9 +86,11 @@ class SceneRun {
   const sim::world::World& world() const { return run_.world(); }
   // the run's own world, at its last step
   const sim::world::World& runWorld() const { return run_.runWorld(); }
+  // the steps this run took for its pictures: none where the survey kept the run at their instants
+  long stepsTaken() const { return run_.stepsTaken(); }
 
  private:
-  using Run = SteppedRun<sim::world::World, History, sim::world::StepObserver, sim::world::ImpulseEvent>;
+  using Run = PlanarRun;
   using State = Run::State;
   // the world built and its history started
   static State startState(const sim::scene::SceneDef& model, History::Options options);
@@ -122,7 +125,8 @@ class SceneRun {
   render::draw::Style style_;
   FramePainter painter_;
   Run run_;
-  std::vector<Along> along_;  // the pictures taken along the run, in the order asked
+  std::shared_ptr<const KeptRun> kept_;  // the survey's run, which run_ goes on from (may be none)
+  std::vector<Along> along_;             // the pictures taken along the run, in the order asked
   std::unique_ptr<render::draw::GlCanvas> canvas_;
   render::draw::TextRenderer* text_;
 };

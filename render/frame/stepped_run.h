@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <stdexcept>
 
@@ -36,32 +37,58 @@ class SteppedRun {
   // nothing drawn and no step taken yet
   bool fresh() const { return run_.world.time <= 0.0 && !shown_; }
 
+  // states of this very run, ascending in time, taken by an earlier pass that ended at `end`: the
+  // run goes on from the latest one not past where it is asked to go instead of stepping there
+  // (never while a follower must be told of every step, nor once the run's end differs); `adopt`
+  // fits a kept state's history to this run's. `kept` must outlive the run.
+  void resumeFrom(const std::vector<State>* kept, double end, std::function<void(State&)> adopt) {
+    kept_ = kept, keptEnd_ = end, adopt_ = std::move(adopt);
+  }
+  // the steps this run's worlds took, its copies between steps included: those it started past by
+  // resuming are not counted
+  long stepsTaken() const { return taken_; }
+
+  // the run itself advanced by the steps that end by t (none past its end), and its state there
+  const State& advanceWithin(double t) {
+    resumeToward(t);
+    observers_.history = &run_.history;
+    World& world = run_.world;
+    const long before = world.steps;
+    world.advanceWithin(t, std::max(t, end_), &observers_);
+    taken_ += world.steps - before;
+    return run_;
+  }
+
   // the state to draw at t: the run itself advanced toward the end as far as t allows, or a copy
   // (reused) advanced to t. A copy's part step that fails where the run does not (impacts piling
   // up in a step cut short) gives the run: the run meets its own failures in its own steps. Throws
   // std::logic_error for t before the run's time, and what the world's steps throw.
   const State& reach(double t) {
-    observers_.history = &run_.history;
-    World& world = run_.world;
-    const double snap = sim::core::settings::kTimeSnap * world.def().dt;
-    if (t < world.time - snap) throw std::logic_error("a picture earlier than the run's time");
-    world.advanceWithin(t, std::max(t, end_), &observers_);
+    const double snap = sim::core::settings::kTimeSnap * run_.world.def().dt;
+    if (t < run_.world.time - snap) throw std::logic_error("a picture earlier than the run's time");
+    const World& world = advanceWithin(t).world;
     shown_ = &run_;
     if (std::abs(world.time - t) <= snap) return run_;
     if (!between_) between_ = std::make_unique<State>(run_);
     else *between_ = run_;
+    const long before = between_->world.steps;
     try {
       between_->world.advanceTo(t, &between_->history);
     } catch (const std::runtime_error&) {
+      taken_ += between_->world.steps - before;
       return run_;
     }
+    taken_ += between_->world.steps - before;
     shown_ = between_.get();
     return *between_;
   }
   // the run taken on to its end
   void finish() {
+    resumeToward(end_);
     observers_.history = &run_.history;
+    const long before = run_.world.steps;
     run_.world.advanceTo(end_, &observers_);
+    taken_ += run_.world.steps - before;
     shown_ = &run_;
   }
 
@@ -85,11 +112,27 @@ class SteppedRun {
     }
   };
 
+  // the run moved on to the latest kept state not past t, when it is ahead of the run
+  void resumeToward(double t) {
+    if (!kept_ || observers_.follower || keptEnd_ != end_) return;
+    const double snap = sim::core::settings::kTimeSnap * run_.world.def().dt;
+    const State* latest = nullptr;
+    for (; next_ < kept_->size() && (*kept_)[next_].world.time <= t + snap; ++next_) latest = &(*kept_)[next_];
+    if (!latest || latest->world.time <= run_.world.time) return;
+    run_ = *latest;
+    if (adopt_) adopt_(run_);
+  }
+
   State run_;
   Observers observers_;
   double end_;
-  std::unique_ptr<State> between_;  // the copy drawn between steps (kept for its storage)
-  const State* shown_ = nullptr;    // the state of the last picture
+  std::unique_ptr<State> between_;            // the copy drawn between steps (kept for its storage)
+  const State* shown_ = nullptr;              // the state of the last picture
+  const std::vector<State>* kept_ = nullptr;  // resumeFrom's states, and the first not yet passed
+  size_t next_ = 0;
+  double keptEnd_ = 0.0;
+  std::function<void(State&)> adopt_;
+  long taken_ = 0;  // stepsTaken()
 };
 
 }  // namespace render::frame

@@ -32,11 +32,14 @@ class Surveyor : public sim::world::StepObserver {
   void afterStep(const sim::world::World& world) override {
     // the survey runs the whole scene before the first frame: Ctrl-C must stop it too
     render::jobs::checkInterrupted();
+    if (extents_.empty())
+      for (const sim::core::Body& b : world.bodies) extents_.push_back(extentOf(b.shape));
     for (size_t i = 0; i < world.bodies.size(); ++i) {
       const sim::core::Body& b = world.bodies[i];
+      out_.maxSpeed = std::max(out_.maxSpeed, b.v.norm());
+      if (inside(b.x, extents_[i])) continue;
       const Bounds box = bodyBounds(b);
       out_.bounds.add(box);
-      out_.maxSpeed = std::max(out_.maxSpeed, b.v.norm());
       // which body stretches the automatic camera most: the one to name when the view is too large
       const double reach = std::max(box.min.cwiseAbs().maxCoeff(), box.max.cwiseAbs().maxCoeff());
       if (!(reach <= out_.farthest)) out_.farthest = reach, out_.farthestBody = static_cast<int>(i);
@@ -56,8 +59,30 @@ class Surveyor : public sim::world::StepObserver {
   void afterEvent(const sim::world::World& world, const sim::world::ImpulseEvent&) override { afterStep(world); }
 
  private:
+  // a bound on how far a shape reaches from its center along either axis, whatever its turning (no
+  // bound, -1, for shapes of parts or without an extent): |c vx − s vy| ≤ |vx| + |vy| even rounded
+  static double extentOf(const sim::core::Shape& shape) {
+    if (shape.kind == sim::core::ShapeKind::Circle) return shape.radius;
+    if (shape.kind != sim::core::ShapeKind::Polygon) return -1.0;
+    double most = 0.0;
+    for (const Vec2& v : shape.vertices) most = std::max(most, std::abs(v.x()) + std::abs(v.y()));
+    return most;
+  }
+  // the body's shape at `x` lies inside what the survey holds already, and no farther from the
+  // origin than its farthest: bodyBounds (a sine and cosine a polygon) would change nothing. Checked
+  // with room for the rounding of x ± the extent; false for a position that is not finite
+  bool inside(const Vec2& x, double extent) const {
+    if (!(extent >= 0.0)) return false;
+    const double reach = extent + 1e-9 * (extent + x.cwiseAbs().maxCoeff());
+    const Vec2 lo = x.array() - reach, hi = x.array() + reach;
+    const Bounds& b = out_.bounds;
+    return lo.x() >= b.min.x() && lo.y() >= b.min.y() && hi.x() <= b.max.x() && hi.y() <= b.max.y() &&
+           std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff()) <= out_.farthest;
+  }
+
   const render::scene::Scene& def_;
   RunSurvey& out_;
+  std::vector<double> extents_;  // extentOf each body's shape
 };
 
 }  // namespace
@@ -85,7 +110,7 @@ Bounds bodyBounds(const sim::core::Body& b) {
   return box;
 }
 
-RunSurvey surveyRun(const render::scene::Scene& def, double until) {
+RunSurvey surveyRun(const render::scene::Scene& def, double until, const std::vector<double>& keepAt) {
   RunSurvey survey;
   for (const sim::scene::EventDef& e : def.model.events) survey.maxImpulse = std::max(survey.maxImpulse, e.impulse.norm());
   sim::world::World world = sim::scene::buildWorld(def.model);
@@ -94,9 +119,18 @@ RunSurvey surveyRun(const render::scene::Scene& def, double until) {
   // a spring's world anchor belongs in the picture with what hangs from it
   for (const sim::core::Spring& sp : world.def().forces.springs)
     if (sp.bodyB == sim::core::kWorldAnchor) survey.bounds.add(sp.pointB);
-  world.advanceTo(until < 0.0 ? def.model.duration : until, &surveyor);
-  for (const sim::world::ImpactRecord& r : world.impacts) survey.maxImpulse = std::max(survey.maxImpulse, std::abs(r.impulse));
-  survey.impactTimes = impactTimes(world);
+  const double end = until < 0.0 ? def.model.duration : until;
+  const auto ended = [&survey](const sim::world::World& last) {
+    for (const sim::world::ImpactRecord& r : last.impacts) survey.maxImpulse = std::max(survey.maxImpulse, std::abs(r.impulse));
+    survey.impactTimes = impactTimes(last);
+    survey.steps = last.steps;
+  };
+  if (keepAt.empty()) {
+    world.advanceTo(end, &surveyor);
+    ended(world);
+  } else {
+    survey.kept = std::make_shared<const KeptRun>(keepRun(def, std::move(world), end, keepAt, surveyor, ended));
+  }
   return survey;
 }
 

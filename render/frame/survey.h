@@ -3,9 +3,11 @@
 // largest event impulse (for arrow scales), and when impacts happen (for `snapshot --impacts`).
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "render/draw/camera.h"
+#include "render/frame/kept_run.h"
 #include "render/scene/scene.h"
 #include "sim/world/world.h"
 
@@ -27,10 +29,14 @@ struct RunSurvey {
   double minEnergy = 0.0, maxEnergy = 0.0;  // of any bar of the energy panel (≤ 0, ≥ 0), J
   double maxLinearMomentum = 0.0;           // |Σ m v|, kg·m/s
   double maxAngularMomentum = 0.0;          // |L| about the origin, kg·m²/s
+  long steps = 0;                           // the steps the run took, as simulate's run of the same scene takes them
+  // the run kept at the instants asked for (none: nothing kept), for the drawing to go on from
+  std::shared_ptr<const KeptRun> kept;
 };
 
-// the scene run from 0 to `until` (its duration when negative); throws sim::world::Diverged
-RunSurvey surveyRun(const render::scene::Scene& def, double until = -1.0);
+// the scene run from 0 to `until` (its duration when negative), kept at `keepAt` (kept_run.h);
+// throws sim::world::Diverged
+RunSurvey surveyRun(const render::scene::Scene& def, double until = -1.0, const std::vector<double>& keepAt = {});
 // the overlays' extremes of the world now, added into `out` (by surveyRun after every step)
 void surveyOverlays(const render::scene::Scene& def, const sim::world::World& world, RunSurvey& out);
 

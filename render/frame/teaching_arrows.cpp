@@ -69,17 +69,19 @@ TeachingArrows::TeachingArrows(const render::scene::Scene& def, const Camera& ca
       torqueFloor_(noiseFloor(survey.maxTorque)),
       lengthFloor_(noiseFloor(camera.worldHeight())) {
   int paths = 0;
-  for (const render::scene::ArrowDef& a : def.render.overlays.arrows) {
-    // `at` is written as a force's point: in the shape's coordinates, before the centroid shift
-    const Vec2 local = a.at - sim::scene::massProperties(def.model.bodies[a.body]).centroid;
-    arrows_.push_back({a, local, a.show == Show::Path ? paths++ : -1});
-  }
+  for (const render::scene::ArrowDef& a : def.render.overlays.arrows)
+    arrows_.push_back({a, localPoint(def, a), a.show == Show::Path ? paths++ : -1});
 }
 
-std::vector<std::pair<int, Vec2>> TeachingArrows::paths() const {
+Vec2 TeachingArrows::localPoint(const render::scene::Scene& def, const render::scene::ArrowDef& a) {
+  // `at` is written as a force's point: in the shape's coordinates, before the centroid shift
+  return a.at - sim::scene::massProperties(def.model.bodies[a.body]).centroid;
+}
+
+std::vector<std::pair<int, Vec2>> TeachingArrows::pathsOf(const render::scene::Scene& def) {
   std::vector<std::pair<int, Vec2>> out;
-  for (const Arrow& a : arrows_)
-    if (a.path >= 0) out.emplace_back(a.def.body, a.local);
+  for (const render::scene::ArrowDef& a : def.render.overlays.arrows)
+    if (a.show == Show::Path) out.emplace_back(a.body, localPoint(def, a));
   return out;
 }
 

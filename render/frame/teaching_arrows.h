@@ -22,8 +22,8 @@ class TeachingArrows {
                  double velocityScale);
 
   // the body points whose paths the history must keep (`show: path`), in body coordinates
-  std::vector<std::pair<int, sim::core::Vec2>> paths() const;
-  // every arrow at the world's present state; `history` kept the paths()
+  static std::vector<std::pair<int, sim::core::Vec2>> pathsOf(const render::scene::Scene& def);
+  // every arrow at the world's present state; `history` kept the pathsOf(def)
   void draw(const sim::world::World& world, const History& history, render::draw::Canvas& draw) const;
 
   // "v", "r′", "ω", "x_b", "r", "f", "τ", "p"
@@ -37,8 +37,10 @@ class TeachingArrows {
   struct Arrow {
     render::scene::ArrowDef def;
     sim::core::Vec2 local;  // `at` in body coordinates after the centroid shift
-    int path = -1;          // index among paths()
+    int path = -1;          // index among pathsOf(def)
   };
+  // `at` in body coordinates after the centroid shift
+  static sim::core::Vec2 localPoint(const render::scene::Scene& def, const render::scene::ArrowDef& a);
   void drawOne(const Arrow& a, int index, const sim::world::World& world, const History& history,
                render::draw::Canvas& draw) const;
   // drawOne's stages: a straight arrow with its label, ω's or τ's arc, the body frame's axes

@@ -33,6 +33,15 @@ inline constexpr double kMaxTitleCard = 60.0;
 // range is undefined behavior)
 inline constexpr double kMaxFrames = 1e7;
 
+// the survey's run kept for the drawing (render/frame/kept_run.h), bytes, at most per variant: past
+// it the drawing steps the rest of the run again, as it did before states were kept. A lecture
+// scene's states are a few MB; a 5,050-box pile's about 8 MB each
+inline constexpr size_t kKeptRunBytes = size_t{256} << 20;
+// and the kept history's paths (trails and body points keep every step's point until the camera is
+// known), bytes: 10 bodies over 25,000 steps. Past it nothing more is kept: memory that grew with the
+// steps would undo trails kept at the frame's spacing (10 bodies over 10⁷ steps: 1.6 GB)
+inline constexpr size_t kKeptPathBytes = size_t{4} << 20;
+
 // the largest view, m, a side and away from the origin: squared lengths of what it shows stay finite
 // in double (a view past it is a bad scene: hatching, pixels and GL's clipping all need them)
 inline constexpr double kMaxViewExtent = 1e150;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <functional>
 #include <type_traits>
 
 #include "render/frame/energy_panel.h"
@@ -59,18 +60,51 @@ std::string baseOf(const Model& model) {
   return outputBase(model.name, model.variant);
 }
 
+// the instants a variant's pictures will show, for its survey to keep its run at (2D scenes)
+template <class Scene>
+using KeepAt = std::function<std::vector<double>(const Scene&)>;
+
+// the instants of a video of `duration` s and of its poster: every frame's, those of slow-motion
+// windows around impacts aside (not known before the survey; their frames step from the instant
+// before), and each strobe ghost's
+template <class Scene>
+std::vector<double> videoInstants(const Scene& scene, double duration) {
+  const render::scene::RenderDef& r = scene.render;
+  const TimeMap map = timeMapFor(r, {}, duration);
+  std::vector<double> instants;
+  const long frames = map.frameCount(r.fps);
+  instants.reserve(static_cast<size_t>(frames) + static_cast<size_t>(r.strobe) + 2);
+  for (long k = 0; k < frames; ++k) instants.push_back(map.simTime(static_cast<double>(k) / r.fps));
+  const double poster = r.poll.question.empty() ? duration : 0.0;
+  for (int i = 0; i < r.strobe; ++i) instants.push_back(poster * i / r.strobe);
+  instants.push_back(poster);
+  return instants;
+}
+
+// each of `times` and its strobe ghosts
+std::vector<double> stillInstants(const std::vector<double>& times, int strobe) {
+  std::vector<double> instants;
+  for (double t : times) {
+    for (int i = 0; i < strobe; ++i) instants.push_back(t * i / strobe);
+    instants.push_back(t);
+  }
+  return instants;
+}
+
 // each variant at the size (and frame rate) asked for, surveyed from 0 to `until` (its duration when
-// negative): the one run of its world before anything is drawn
+// negative) and, in 2D, kept at the instants `keepAt` names: the one run of its world
 template <class D>
 RenderPlanOf<D> surveyed(std::vector<typename D::Scene> scenes, const std::optional<FrameSize>& size,
-                         const std::optional<double>& fps, double until) {
+                         const std::optional<double>& fps, double until, const KeepAt<typename D::Scene>& keepAt = {}) {
   RenderPlanOf<D> plan;
   plan.scene = scenes.front().model.name;
   for (typename D::Scene& scene : scenes) {
     if (size) scene.render.width = size->width, scene.render.height = size->height;
     if (fps) scene.render.fps = *fps;
     try {
-      typename D::Survey survey = surveyRun(scene, until);
+      typename D::Survey survey;
+      if constexpr (std::is_same_v<D, Planar>) survey = surveyRun(scene, until, keepAt ? keepAt(scene) : std::vector<double>{});
+      else survey = surveyRun(scene, until);
       // a view past what double arithmetic can draw is a bad scene, said before any frame
       if constexpr (std::is_same_v<D, Planar>) render::frame::checkView(scene, survey, cameraFor(scene, survey));
       plan.variants.push_back({std::move(scene), std::move(survey)});
@@ -373,8 +407,11 @@ RenderPlanOf<D> planVideosOf(const LoadVariantOf<D>& load, const VideoRequest& r
       if (const std::string over = sim::core::stepsOverLimit(s.model.dt, s.model.maxSteps, *r.duration); !over.empty())
         throw UsageError("--duration: " + over + "; choose a shorter video, or raise the scene's 'sim: {max_steps: N}'");
   boundFrames(scenes, r.duration, r.fps);
-  // each variant surveyed over its video's duration, which --duration sets for all
-  RenderPlanOf<D> plan = surveyed<D>(std::move(scenes), r.size, r.fps, r.duration.value_or(-1.0));
+  // each variant surveyed over its video's duration, which --duration sets for all, and kept at its frames
+  const KeepAt<typename D::Scene> frames = [&](const typename D::Scene& s) {
+    return videoInstants(s, r.duration.value_or(s.model.duration));
+  };
+  RenderPlanOf<D> plan = surveyed<D>(std::move(scenes), r.size, r.fps, r.duration.value_or(-1.0), frames);
   for (size_t i = 0; i < plan.variants.size(); ++i) {
     const double duration = r.duration.value_or(plan.variants[i].scene.model.duration);
     plan.videos.push_back(videoOf(plan, i, r.root, duration, r.format, r.frames));
@@ -397,7 +434,10 @@ RenderPlanOf<D> planStillsOf(const LoadVariantOf<D>& load, const StillRequest& r
     scenes.push_back(load(r.variant));
   }
   // --size is a single frame's, or with --panels the whole sheet's
-  RenderPlanOf<D> plan = surveyed<D>(std::move(scenes), r.panels ? std::nullopt : r.size, std::nullopt, -1.0);
+  const KeepAt<typename D::Scene> stills = [&](const typename D::Scene& s) {
+    return stillInstants(r.times, r.strobe.value_or(s.render.strobe));
+  };
+  RenderPlanOf<D> plan = surveyed<D>(std::move(scenes), r.panels ? std::nullopt : r.size, std::nullopt, -1.0, stills);
   plan.stills = stillsOf(plan, {r.times, r.impacts, r.panels, r.strobe, r.root, r.file, r.panels ? r.size : std::nullopt,
                                 baseTitle, baseVariantTitle, r.drawList});
   return plan;
@@ -409,7 +449,13 @@ RenderPlanOf<D> planLectureOf(const LoadVariantOf<D>& load, const LectureRequest
   // each variant surveyed once, over its duration: the video's and the panels' survey alike
   std::vector<typename D::Scene> scenes = variantsOf<D>(base, load);
   boundFrames(scenes, std::nullopt, r.fps);
-  RenderPlanOf<D> plan = surveyed<D>(std::move(scenes), r.size, r.fps, -1.0);
+  const KeepAt<typename D::Scene> pictures = [&](const typename D::Scene& s) {
+    std::vector<double> instants = videoInstants(s, s.model.duration);
+    const std::vector<double> panels = stillInstants(base.render.panels.times, s.render.strobe);
+    instants.insert(instants.end(), panels.begin(), panels.end());
+    return instants;
+  };
+  RenderPlanOf<D> plan = surveyed<D>(std::move(scenes), r.size, r.fps, -1.0, pictures);
   plan.scene = base.model.name;
   for (size_t i = 0; i < plan.variants.size(); ++i)
     plan.videos.push_back(videoOf(plan, i, r.root, plan.variants[i].scene.model.duration, VideoFormat::Mp4, false));

@@ -178,3 +178,27 @@ TEST_CASE("a pair that hits again replaces its last impact instead of piling up 
   CHECK(lines[1].find("arrow ContactNormal") == 0);
   CHECK(lines[1].find("-> (0,0.5)") != std::string::npos);
 }
+
+TEST_CASE("a history of every step respaced keeps what a history kept at that spacing keeps, then and after") {
+  History::Options every = options(true, 0.5, false, false);
+  History::Options spaced = every;
+  spaced.trailSpacing = 0.1495;
+  sim::world::World a = ballWorld(), b = ballWorld();
+  History all(a, every), kept(b, spaced);
+  // the trail points each holds, every one drawn (spacing 0)
+  const auto points = [](const History& h) {
+    DrawList d;
+    h.drawTrails(d, 0.0);
+    return d.toText();
+  };
+  a.advanceTo(0.62, &all);
+  b.advanceTo(0.62, &kept);
+  REQUIRE(points(all) != points(kept));
+  all.respace(0.1495);
+  CHECK(points(all) == points(kept));
+  CHECK(all.pathBytes() < 10 * sizeof(sim::core::Vec2) + kept.pathBytes());
+  // and it goes on as the spaced one does: through the kick, the latest point replacing one not kept
+  a.advanceTo(1.2, &all);
+  b.advanceTo(1.2, &kept);
+  CHECK(points(all) == points(kept));
+}

@@ -49,7 +49,7 @@ Drawn arrowsAt(const std::string& entries, double t = 0.0) {
   const render::frame::TeachingArrows arrows(d.def, camera, d.survey, 1.0);
   d.world = sim::scene::buildWorld(d.def.model);
   render::frame::History::Options o;
-  o.points = arrows.paths();
+  o.points = render::frame::TeachingArrows::pathsOf(d.def);
   render::frame::History history(d.world, o);
   d.world.advanceTo(t, &history);
   arrows.draw(d.world, history, d.list);

@@ -14,6 +14,7 @@
 #include "render/video/output_names.h"
 #include "render/video/render_plan.h"
 #include "render/scene3d/scene.h"
+#include "sim/scene/scene_build.h"
 #include "sim/yaml/scene_error.h"
 #include "sim/yaml/scene_source.h"
 #include "support/drawn_scene.h"
@@ -127,6 +128,49 @@ TEST_CASE("render: the time map with the title card and slow motion around each 
   CHECK(shorter.videos.front().duration == 0.3);
   CHECK(shorter.variants.front().survey.impactTimes.empty());
   CHECK(shorter.videos.front().timeMap.videoLength() == doctest::Approx(1.3));
+}
+
+namespace {
+
+// the steps a video's run takes for its frames and poster, drawn as the recorder draws them (draw
+// lists: the same states, without GL)
+long drawingSteps(const RenderPlan& plan, const render::video::VideoOutput& video) {
+  const render::video::PlannedVariant& v = plan.variants[video.variant];
+  render::frame::SceneRun run(v.scene, video.camera, v.survey);
+  run.endAt(video.duration);
+  for (long k = 0; k < video.frameCount; ++k) {
+    const double u = static_cast<double>(k) / video.fps;
+    if (!video.timeMap.inTitleCard(u) && !video.timeMap.inAnswerCard(u)) run.drawListAt(video.timeMap.simTime(u));
+  }
+  run.drawListAt(video.posterTime);
+  return run.stepsTaken();
+}
+
+// the steps `simulate` takes over the scene
+long simulateSteps(const render::video::PlannedVariant& v) {
+  sim::world::World world = sim::scene::buildWorld(v.scene.model);
+  world.advanceTo(v.scene.model.duration);
+  return world.steps;
+}
+
+}  // namespace
+
+TEST_CASE("render: the scene is stepped once, by its survey; the frames and the poster go on from its states") {
+  const RenderPlan plan =
+      render::video::planVideos(lesson(drawn_scene::bounce("2", "render: {title_card: 1, size: [320, 180]}\n")), {.fps = 10});
+  REQUIRE(plan.videos.size() == 1);
+  const render::video::PlannedVariant& v = plan.variants.front();
+  CHECK(v.survey.steps == simulateSteps(v));
+  CHECK(v.survey.steps == 2000);
+  REQUIRE(v.survey.kept);
+  CHECK(v.survey.kept->states.size() == 21);  // 0, 0.1, …, 2 s: the title card's frames share the first
+  CHECK(drawingSteps(plan, plan.videos.front()) == 0);
+  // slow motion around the impact: the frames inside its window (not known before the survey) step
+  // from the kept state before them, the rest take no step
+  const RenderPlan slowed = render::video::planVideos(lesson(), {.variant = "long", .fps = 10});
+  const long steps = drawingSteps(slowed, slowed.videos.front());
+  CHECK(steps > 0);
+  CHECK(steps <= 200);  // at most the window's 0.2 s, at 1 ms steps
 }
 
 TEST_CASE("render: a poll's posters show the start, not the outcome the question asks about") {
