@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "render/frame/history.h"
+#include "render/frame/kept_run_of.h"
 #include "render/frame/stepped_run.h"
 #include "render/scene/scene.h"
 #include "sim/world/world.h"
@@ -16,12 +17,7 @@ namespace render::frame {
 
 using PlanarRun = SteppedRun<sim::world::World, History, sim::world::StepObserver, sim::world::ImpulseEvent>;
 
-struct KeptRun {
-  History::Options options;              // what every kept history records
-  double end = 0.0;                      // where the run ended
-  std::vector<PlanarRun::State> states;  // ascending in time, each at the last step that ends by its instant
-  size_t bytes = 0;                      // about how much memory they hold
-};
+using KeptRun = KeptRunOf<PlanarRun::State, History::Options>;
 
 // what the history of a run of `def` records, whatever the camera: every step's trail point
 History::Options keptHistoryOptions(const render::scene::Scene& def);

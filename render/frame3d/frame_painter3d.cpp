@@ -89,12 +89,7 @@ FramePainter3d::FramePainter3d(const render::scene3d::Scene& def, const Camera3d
 }
 
 History3d::Options FramePainter3d::historyOptions() const {
-  History3d::Options o;
-  o.trails = def_.render.trails;
-  for (const Arrow3dDef& a : def_.space.arrows) {
-    if (a.show == Arrow3dDef::Show::Path) o.points.emplace_back(a.body, a.at);
-    if (a.show == Arrow3dDef::Show::OmegaPath) o.omegaTips.push_back(a.body);
-  }
+  History3d::Options o = keptHistoryOptions(def_);
   // a pixel at the target's depth
   o.spacing = camera_.viewHeight() / camera_.heightPx();
   o.omegaSpacing = o.spacing / omegaScale_;

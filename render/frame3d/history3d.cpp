@@ -17,6 +17,25 @@ void History3d::keep(std::vector<Vec3>& path, const Vec3& p, double spacing) {
   else path.push_back(p);
 }
 
+void History3d::respace(double spacing, double omegaSpacing) {
+  options_.spacing = spacing, options_.omegaSpacing = omegaSpacing;
+  const auto again = [](std::vector<Vec3>& path, double d) {
+    std::vector<Vec3> every = std::move(path);
+    path.clear();
+    for (const Vec3& p : every) keep(path, p, d);
+  };
+  for (auto& trail : trails_) again(trail, spacing);
+  for (auto& path : points_) again(path, spacing);
+  for (auto& path : omegas_) again(path, omegaSpacing);
+}
+
+size_t History3d::pathBytes() const {
+  size_t total = 0;
+  for (const auto* paths : {&trails_, &points_, &omegas_})
+    for (const auto& path : *paths) total += path.capacity() * sizeof(Vec3);
+  return total;
+}
+
 void History3d::afterStep(const sim::world3d::World& world) {
   if (options_.trails)
     for (size_t i = 0; i < world.bodies.size(); ++i) keep(trails_[i], world.bodies[i].x, options_.spacing);

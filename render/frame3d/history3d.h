@@ -25,6 +25,13 @@ class History3d : public sim::world3d::StepObserver {
   void afterStep(const sim::world3d::World& world) override;
   void afterEvent(const sim::world3d::World& world, const sim::world3d::ImpulseEvent&) override { afterStep(world); }
 
+  const Options& options() const { return options_; }
+  // the same paths as a history with these spacings would hold after the same steps: exact from a
+  // history that kept every step's point (spacings 0), as the survey's does (render/frame/kept_run_of.h)
+  void respace(double spacing, double omegaSpacing);
+  // about how much memory its paths hold, bytes
+  size_t pathBytes() const;
+
   // by body (empty without trails)
   const std::vector<sim::world3d::Vec3>& trail(size_t body) const { return trails_[body]; }
   // by Options::points, world coordinates

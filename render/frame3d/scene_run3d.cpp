@@ -34,6 +34,16 @@ SceneRun3d::SceneRun3d(const render::scene3d::Scene& def, const Camera3d& camera
           def.model.duration),
       text_(text) {
   if (gl && text) canvas_ = std::make_unique<GlCanvas3d>(*gl, *text, style_);
+  // the survey's run kept at the pictures' instants: the drawing goes on from there, its paths
+  // respaced to this camera's pixels
+  const History3d::Options o = painter_.historyOptions();
+  const auto sameRecord = [&o](const History3d::Options& kept) {
+    return kept.trails == o.trails && kept.points == o.points && kept.omegaTips == o.omegaTips;
+  };
+  if (survey.kept && sameRecord(survey.kept->options)) {
+    kept_ = survey.kept;
+    run_.resumeFrom(&kept_->states, kept_->end, [o](State& s) { s.history.respace(o.spacing, o.omegaSpacing); });
+  }
 }
 
 void SceneRun3d::pictureAlong(double t, std::function<void(render::draw::Image)> shot) {

@@ -52,9 +52,11 @@ class SceneRun3d final : public render::frame::FrameSource {
   const sim::world3d::World& world() const { return run_.world(); }
   // the run's own world, at its last step
   const sim::world3d::World& runWorld() const { return run_.runWorld(); }
+  // the steps this run took for its pictures: none where the survey kept the run at their instants
+  long stepsTaken() const { return run_.stepsTaken(); }
 
  private:
-  using Run = render::frame::SteppedRun<sim::world3d::World, History3d, sim::world3d::StepObserver, sim::world3d::ImpulseEvent>;
+  using Run = SpatialRun;
   using State = Run::State;
   // the state at t painted into `frame`
   void paint(const State& state, render::draw::Image& frame);
@@ -70,7 +72,8 @@ class SceneRun3d final : public render::frame::FrameSource {
   render::draw::Style style_;
   FramePainter3d painter_;
   Run run_;
-  std::vector<Along> along_;  // the pictures along the run not yet taken, in the order asked
+  std::shared_ptr<const KeptRun3d> kept_;  // the survey's run, which run_ goes on from (may be none)
+  std::vector<Along> along_;               // the pictures along the run not yet taken, in the order asked
   std::unique_ptr<render::draw3d::GlCanvas3d> canvas_;
   render::draw::TextRenderer* text_;
 };

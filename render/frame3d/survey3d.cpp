@@ -58,7 +58,7 @@ std::vector<double> energyValues(const World& world) {
   return values;
 }
 
-RunSurvey3d surveyRun(const render::scene3d::Scene& def, double until) {
+RunSurvey3d surveyRun(const render::scene3d::Scene& def, double until, const std::vector<double>& keepAt) {
   RunSurvey3d survey;
   World world = sim::scene3d::buildWorld(def.model);
   Surveyor surveyor(def, survey);
@@ -66,14 +66,40 @@ RunSurvey3d surveyRun(const render::scene3d::Scene& def, double until) {
   // a spring's world anchor belongs in the picture with what hangs from it
   for (const Spring& sp : world.def().forces.springs)
     if (sp.bodyB == sim::core::kWorldAnchor) survey.bounds.add(sp.pointB);
-  world.advanceTo(until < 0.0 ? def.model.duration : until, &surveyor);
-  // impacts closer than this are one instant (the corners of a face landing flat), as in 2D
-  constexpr double kSameInstant = 1e-9;
-  for (const ImpactRecord3& r : world.impacts) {
-    if (survey.impactTimes.empty() || r.t - survey.impactTimes.back() > kSameInstant) survey.impactTimes.push_back(r.t);
-    survey.maxImpulse = std::max(survey.maxImpulse, (r.impulse * r.normal + r.tangentImpulse).norm());
+  const double end = until < 0.0 ? def.model.duration : until;
+  const auto ended = [&survey](const World& last) {
+    // impacts closer than this are one instant (the corners of a face landing flat), as in 2D
+    constexpr double kSameInstant = 1e-9;
+    for (const ImpactRecord3& r : last.impacts) {
+      if (survey.impactTimes.empty() || r.t - survey.impactTimes.back() > kSameInstant) survey.impactTimes.push_back(r.t);
+      survey.maxImpulse = std::max(survey.maxImpulse, (r.impulse * r.normal + r.tangentImpulse).norm());
+    }
+    survey.steps = last.steps;
+  };
+  if (keepAt.empty()) {
+    world.advanceTo(end, &surveyor);
+    ended(world);
+  } else {
+    const auto bytes = [](const SpatialRun::State& s) {
+      return sizeof(s) + s.history.pathBytes() + s.world.bodies.capacity() * sizeof(Body) +
+             2 * s.world.contacts.capacity() * sizeof(s.world.contacts.front()) +
+             s.world.impacts.capacity() * sizeof(ImpactRecord3);
+    };
+    survey.kept = std::make_shared<const KeptRun3d>(
+        render::frame::keepRunOf<SpatialRun::State, History3d::Options, StepObserver, ImpulseEvent, World>(
+            keptHistoryOptions(def), std::move(world), end, keepAt, surveyor, bytes, ended));
   }
   return survey;
+}
+
+History3d::Options keptHistoryOptions(const render::scene3d::Scene& def) {
+  History3d::Options o;
+  o.trails = def.render.trails;
+  for (const render::scene3d::Arrow3dDef& a : def.space.arrows) {
+    if (a.show == render::scene3d::Arrow3dDef::Show::Path) o.points.emplace_back(a.body, a.at);
+    if (a.show == render::scene3d::Arrow3dDef::Show::OmegaPath) o.omegaTips.push_back(a.body);
+  }
+  return o;
 }
 
 void shareScales(const std::vector<RunSurvey3d*>& surveys) {

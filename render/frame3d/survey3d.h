@@ -3,13 +3,22 @@
 // (for the arrows' and the energy panel's scales, fixed over a video).
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "render/draw3d/camera3d.h"
+#include "render/frame/kept_run_of.h"
+#include "render/frame/stepped_run.h"
+#include "render/frame3d/history3d.h"
 #include "render/scene3d/scene.h"
 #include "sim/world3d/world.h"
 
 namespace render::frame3d {
+
+using SpatialRun =
+    render::frame::SteppedRun<sim::world3d::World, History3d, sim::world3d::StepObserver, sim::world3d::ImpulseEvent>;
+// the survey's run kept at the pictures' instants, as in 2D (render/frame/kept_run.h)
+using KeptRun3d = render::frame::KeptRunOf<SpatialRun::State, History3d::Options>;
 
 struct RunSurvey3d {
   render::draw3d::Box3d bounds;             // every body's bounding ball at every step, and the anchors, m
@@ -21,10 +30,15 @@ struct RunSurvey3d {
   double maxWorldAngularMomentum = 0.0;     // |L| about the origin, kg·m²/s
   std::vector<double> impactTimes;          // every distinct instant of an impact (slow motion, --impacts)
   double maxImpulse = 0.0;                  // |j| of any impact, N·s (the impulse arrows' scale)
+  long steps = 0;                           // the steps the run took, as simulate's run of the scene takes them
+  std::shared_ptr<const KeptRun3d> kept;    // the run kept at the instants asked for (none: nothing kept)
 };
 
-// the scene run from 0 to `until` (its duration when negative); throws sim::world3d::Diverged
-RunSurvey3d surveyRun(const render::scene3d::Scene& def, double until = -1.0);
+// the scene run from 0 to `until` (its duration when negative), kept at `keepAt`; throws
+// sim::world3d::Diverged
+RunSurvey3d surveyRun(const render::scene3d::Scene& def, double until = -1.0, const std::vector<double>& keepAt = {});
+// what the history of a run of `def` records, whatever the camera: every step's point of each path
+History3d::Options keptHistoryOptions(const render::scene3d::Scene& def);
 // the scales (not the bounds) of every survey set to the extremes over all, for panels side by side
 void shareScales(const std::vector<RunSurvey3d*>& surveys);
 

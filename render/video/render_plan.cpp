@@ -60,7 +60,7 @@ std::string baseOf(const Model& model) {
   return outputBase(model.name, model.variant);
 }
 
-// the instants a variant's pictures will show, for its survey to keep its run at (2D scenes)
+// the instants a variant's pictures will show, for its survey to keep its run at
 template <class Scene>
 using KeepAt = std::function<std::vector<double>(const Scene&)>;
 
@@ -92,7 +92,7 @@ std::vector<double> stillInstants(const std::vector<double>& times, int strobe) 
 }
 
 // each variant at the size (and frame rate) asked for, surveyed from 0 to `until` (its duration when
-// negative) and, in 2D, kept at the instants `keepAt` names: the one run of its world
+// negative) and kept at the instants `keepAt` names: the one run of its world
 template <class D>
 RenderPlanOf<D> surveyed(std::vector<typename D::Scene> scenes, const std::optional<FrameSize>& size,
                          const std::optional<double>& fps, double until, const KeepAt<typename D::Scene>& keepAt = {}) {
@@ -102,9 +102,7 @@ RenderPlanOf<D> surveyed(std::vector<typename D::Scene> scenes, const std::optio
     if (size) scene.render.width = size->width, scene.render.height = size->height;
     if (fps) scene.render.fps = *fps;
     try {
-      typename D::Survey survey;
-      if constexpr (std::is_same_v<D, Planar>) survey = surveyRun(scene, until, keepAt ? keepAt(scene) : std::vector<double>{});
-      else survey = surveyRun(scene, until);
+      typename D::Survey survey = surveyRun(scene, until, keepAt ? keepAt(scene) : std::vector<double>{});
       // a view past what double arithmetic can draw is a bad scene, said before any frame
       if constexpr (std::is_same_v<D, Planar>) render::frame::checkView(scene, survey, cameraFor(scene, survey));
       plan.variants.push_back({std::move(scene), std::move(survey)});

@@ -76,3 +76,26 @@ TEST_CASE("a 3D picture along a run is asked before its first frame") {
   (void)run.frameAt(0.1);
   CHECK_THROWS_AS(run.pictureAlong(0.3, [](render::draw::Image) {}), std::logic_error);
 }
+
+TEST_CASE("a 3D drawing that goes on from the survey's kept run is the fresh run's, and takes no step") {
+  // the top with its trail and the cone ω sweeps: paths of every step's point, respaced when taken up
+  std::string yaml = kTop;
+  yaml.replace(yaml.find("  arrows:\n"), 10, "  trails: true\n  arrows:\n    - {body: top, show: omega_path}\n");
+  const render::scene3d::Scene def = render::scene3d::readScene(sim::yaml::sceneSourceText(yaml, "inline.yaml"));
+  std::vector<double> instants;
+  for (int k = 0; k <= 20; ++k) instants.push_back(k / 40.0);
+  const RunSurvey3d kept = surveyRun(def, -1.0, instants), plain = surveyRun(def);
+  REQUIRE(kept.kept);
+  CHECK(kept.kept->states.size() == instants.size());
+  CHECK(kept.steps == 500);
+  CHECK(plain.steps == 500);
+  const Camera3d camera = cameraFor(def, plain);
+  SceneRun3d fromKept(def, camera, kept), fresh(def, camera, plain);
+  for (double t : instants) {
+    CAPTURE(t);
+    const std::string want = fresh.drawListAt(t).toText();
+    CHECK(fromKept.drawListAt(t).toText() == want);
+  }
+  CHECK(fromKept.stepsTaken() == 0);
+  CHECK(fresh.stepsTaken() == 500);
+}

@@ -1,0 +1,77 @@
+// The survey's run kept at the pictures' instants, over the dimension (2D kept_run.h, 3D
+// render/frame3d/survey3d.h): the states a SteppedRun goes on from, and the loop that keeps them.
+#pragma once
+
+#include <algorithm>
+#include <functional>
+#include <vector>
+
+#include "render/scene/render_def.h"
+
+namespace render::frame {
+
+template <class State, class Options>
+struct KeptRunOf {
+  Options options;            // what every kept history records
+  double end = 0.0;           // where the run ended
+  std::vector<State> states;  // ascending in time, each at the last step that ends by its instant
+  size_t bytes = 0;           // about how much memory they hold
+};
+
+// the run of `world` to `end`, `follower` told of every step and event, its world and a history of
+// `options` kept at each of `instants` (in any order; none past the end, past
+// render::scene::kKeptRunBytes of states, or once the history's paths pass kKeptPathBytes);
+// `ended` is shown the world at the end. Throws what the world's steps throw.
+template <class State, class Options, class StepObserver, class ImpulseEvent, class World>
+KeptRunOf<State, Options> keepRunOf(Options options, World world, double end, std::vector<double> instants,
+                                    StepObserver& follower, const std::function<size_t(const State&)>& bytesOf,
+                                    const std::function<void(const World&)>& ended) {
+  using History = decltype(State::history);
+  // the history and the survey told of each step while states are kept, then the survey alone
+  class Recorder : public StepObserver {
+   public:
+    Recorder(History& history, StepObserver& follower) : history_(history), follower_(follower) {}
+    void afterStep(const World& w) override {
+      if (recording()) history_.afterStep(w);
+      follower_.afterStep(w);
+    }
+    void afterEvent(const World& w, const ImpulseEvent& e) override {
+      if (recording()) history_.afterEvent(w, e);
+      follower_.afterEvent(w, e);
+    }
+    // the history is told of every step until its paths, which keep every step's point, outgrow
+    // their bound: from then on nothing more is kept (a trail of 10 bodies over 10⁶ steps: 160 MB)
+    bool recording() {
+      full_ = full_ || history_.pathBytes() > render::scene::kKeptPathBytes;
+      return !full_;
+    }
+
+   private:
+    History& history_;
+    StepObserver& follower_;
+    bool full_ = false;
+  };
+
+  KeptRunOf<State, Options> kept{std::move(options), end, {}, 0};
+  History history(world, kept.options);
+  Recorder recorder(history, follower);
+  std::sort(instants.begin(), instants.end());
+  for (double t : instants) {
+    if (t > end) break;
+    // the run's own steps that end by t, as SteppedRun::reach takes them
+    world.advanceWithin(t, end, &recorder);
+    if (!recorder.recording()) break;
+    // two instants between the same two steps share one state
+    if (!kept.states.empty() && kept.states.back().world.steps == world.steps) continue;
+    State state{world, history};
+    const size_t bytes = bytesOf(state);
+    if (kept.bytes + bytes > render::scene::kKeptRunBytes) break;
+    kept.bytes += bytes;
+    kept.states.push_back(std::move(state));
+  }
+  world.advanceTo(end, &follower);
+  ended(world);
+  return kept;
+}
+
+}  // namespace render::frame
