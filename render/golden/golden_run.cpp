@@ -34,7 +34,9 @@ std::string frameName(double t) { return "frame-t" + render::video::timeForName(
 GoldenRun runGolden(const render::scene::Scene& original, const GoldenDef& golden, const GoldenTimes* asked, bool pixels) {
   const render::scene::Scene scene = atGoldenSize(original, golden);
   GoldenRun run = goldenRunOf(scene.model, false);
-  const render::frame::RunSurvey survey = render::frame::surveyRun(scene);
+  // kept at the instants known before the run (all but its impacts'), for the shots to go on from
+  const render::frame::RunSurvey survey =
+      render::frame::surveyRun(scene, -1.0, asked ? asked->checkpoints : goldenTimes(scene.model, golden, {}).checkpoints);
   const GoldenTimes times = asked ? *asked : goldenTimes(scene.model, golden, survey.impactTimes);
   const render::draw::Camera camera = render::frame::cameraFor(scene, survey);
   const render::draw::Style style = render::scene::makeStyle(scene, golden.height);

@@ -78,7 +78,8 @@ GoldenRun goldenRunOf(const Model& model, bool threeD) {
 }
 
 // the run at `times`, or (null) at those its golden: block asks for, the impacts taken from the
-// survey the drawing needs anyway (the scene is stepped twice, never three times); frames at the
+// survey the drawing needs anyway, which keeps its run at the instants known before it (the scene is
+// stepped once; an impact's frame steps from the kept state before it); frames at the
 // golden size; without `pixels` no GL is loaded and the frames are draw lists alone. Throws
 // sim::world::Diverged, std::runtime_error (GL).
 GoldenRun runGolden(const render::scene::Scene& scene, const GoldenDef& golden, const GoldenTimes* times, bool pixels);

@@ -16,7 +16,9 @@ GoldenRun runGolden(const render::scene3d::Scene& original, const GoldenDef& gol
   scene.render.width = golden.width;
   scene.render.height = golden.height;
   GoldenRun run = goldenRunOf(scene.model, true);
-  const render::frame3d::RunSurvey3d survey = render::frame3d::surveyRun(scene);
+  // kept at the instants known before the run (all but its impacts'), for the shots to go on from
+  const render::frame3d::RunSurvey3d survey =
+      render::frame3d::surveyRun(scene, -1.0, asked ? asked->checkpoints : goldenTimes(scene.model, golden, {}).checkpoints);
   const GoldenTimes times = asked ? *asked : goldenTimes(scene.model, golden, survey.impactTimes);
   const render::draw3d::Camera3d camera = render::frame3d::cameraFor(scene, survey);
   const render::draw::Style style = render::scene3d::makeStyle(scene, golden.height);
