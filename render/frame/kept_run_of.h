@@ -2,6 +2,8 @@
 // render/frame3d/survey3d.h): the states a SteppedRun goes on from, and the loop that keeps them.
 #pragma once
 
+#include <malloc.h>
+
 #include <algorithm>
 #include <functional>
 #include <vector>
@@ -9,6 +11,9 @@
 #include "render/scene/render_def.h"
 
 namespace render::frame {
+
+// the bytes the heap has handed out now (glibc's count; 0 where it keeps none, as under a sanitizer)
+inline size_t allocatedBytes() { return ::mallinfo2().uordblks; }
 
 template <class State, class Options>
 struct KeptRunOf {
@@ -61,10 +66,15 @@ KeptRunOf<State, Options> keepRunOf(Options options, World world, double end, st
     // the run's own steps that end by t, as SteppedRun::reach takes them
     world.advanceWithin(t, end, &recorder);
     if (!recorder.recording()) break;
-    // two instants between the same two steps share one state
-    if (!kept.states.empty() && kept.states.back().world.steps == world.steps) continue;
+    // a state only where it saves steps enough to pay for its copy (instants between the same two
+    // steps share one; a pile's 1 step a frame is cheaper to take again than to keep)
+    const long since = kept.states.empty() ? world.steps : world.steps - kept.states.back().world.steps;
+    if (since < render::scene::kKeptMinSteps) continue;
+    // its size as the allocator counts it where it can (a world's contact finder and method hold
+    // more than the estimate sees), else the estimate
+    const size_t before = allocatedBytes();
     State state{world, history};
-    const size_t bytes = bytesOf(state);
+    const size_t bytes = std::max(bytesOf(state), allocatedBytes() - std::min(before, allocatedBytes()));
     if (kept.bytes + bytes > render::scene::kKeptRunBytes) break;
     kept.bytes += bytes;
     kept.states.push_back(std::move(state));

@@ -35,8 +35,12 @@ inline constexpr double kMaxFrames = 1e7;
 
 // the survey's run kept for the drawing (render/frame/kept_run.h), bytes, at most per variant: past
 // it the drawing steps the rest of the run again, as it did before states were kept. A lecture
-// scene's states are a few MB; a 5,050-box pile's about 8 MB each
-inline constexpr size_t kKeptRunBytes = size_t{256} << 20;
+// scene's states are tens of kB; a 5,050-box pile's 12 MB each (30 of them took a 0.5 s render
+// from 234 to 611 MB)
+inline constexpr size_t kKeptRunBytes = size_t{64} << 20;
+// the steps a kept state must save, at least, over the one kept before it: a state of a pile that
+// steps once a frame costs more to copy and hold than the step it saves
+inline constexpr long kKeptMinSteps = 4;
 // and the kept history's paths (trails and body points keep every step's point until the camera is
 // known), bytes: 10 bodies over 25,000 steps. Past it nothing more is kept: memory that grew with the
 // steps would undo trails kept at the frame's spacing (10 bodies over 10⁷ steps: 1.6 GB)

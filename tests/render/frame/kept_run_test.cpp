@@ -79,7 +79,7 @@ TEST_CASE("a drawing that goes on from the kept run is the fresh run's, bit for 
   CHECK(once == 400);
   CHECK(kept.surveySteps == once);
   CHECK(kept.steps == 0);
-  CHECK(kept.kept == 81);
+  CHECK(kept.kept == 80);  // every instant but the start, where the run begins anyway
   // without kept states the drawing steps the whole scene a second time
   CHECK(fresh.kept == 0);
   CHECK(fresh.steps == once);
@@ -134,4 +134,16 @@ TEST_CASE("past the bound on the kept paths nothing more is kept, and the drawin
   CHECK(kept.steps < fresh.steps);
   // the trails after the last kept state go on as a run of the frame's own spacing keeps them
   CHECK(kept.lists == fresh.lists);
+}
+
+TEST_CASE("a state is kept only where it saves 4 steps: instants a step apart keep every fourth") {
+  const render::scene::Scene def = drawn_scene::load(kScene);
+  std::vector<double> instants;
+  for (int k = 1; k <= 40; ++k) instants.push_back(0.005 * k);
+  const Drawing kept = drawn(def, instants, true), fresh = drawn(def, instants, false);
+  CHECK(kept.kept == 10);
+  CHECK(kept.lists == fresh.lists);
+  // the run steps the three steps between kept states itself
+  CHECK(kept.steps == 30);
+  CHECK(fresh.steps == 40);
 }

@@ -163,7 +163,7 @@ TEST_CASE("render: the scene is stepped once, by its survey; the frames and the 
   CHECK(v.survey.steps == simulateSteps(v));
   CHECK(v.survey.steps == 2000);
   REQUIRE(v.survey.kept);
-  CHECK(v.survey.kept->states.size() == 21);  // 0, 0.1, …, 2 s: the title card's frames share the first
+  CHECK(v.survey.kept->states.size() == 20);  // 0.1, …, 2 s: the run starts at 0 anyway
   CHECK(drawingSteps(plan, plan.videos.front()) == 0);
   // slow motion around the impact: the frames inside its window (not known before the survey) step
   // from the kept state before them, the rest take no step
