@@ -36,6 +36,7 @@
 #include "render/draw/png_io.h"
 #include "render/frame/frame_painter.h"
 #include "render/frame/history.h"
+#include "render/frame/kept_run.h"
 #include "render/frame/scene_run.h"
 #include "render/jobs/json_writer.h"
 #include "render/jobs/process.h"
@@ -84,25 +85,28 @@ double medianTime(const std::vector<std::string>& argv, int runs) {
   return t[t.size() / 2];
 }
 
-// rigidreel's own work per frame, in this process, in ms: a frame drawn (the simulation stepped to
+// rigidreel's own work per frame, in this process, in ms: a frame drawn (the simulation taken to
 // its instant, the GL drawing at each sample position, the samples resolved, the text; the
 // read-back excluded), read back (the frame copied out of GL, measured on frames of the background
 // alone) and handed over (written into a pipe to a reader that discards it)
 struct FrameParts {
   double drawing = 0.0, readback = 0.0, handover = 0.0;
-  double simulation = 0.0;  // of the drawing's time, the world stepped to the frames' instants
+  double simulation = 0.0;  // of the drawing's time, the world taken to the frames' instants
 };
 
-// the world alone stepped to each frame's instant, with the history the frames record: the
+// the drawing's run alone taken to each frame's instant as SceneRun takes it (from the survey's kept
+// states where it kept them, stepping the rest), with the history the frames record: the
 // simulation's share of a frame, s in all
 double simulationSeconds(const render::video::PlannedVariant& v, const render::video::VideoOutput& out) {
   const render::frame::FramePainter painter(v.scene, out.camera, v.survey);
   sim::world::World world = sim::scene::buildWorld(v.scene.model);
   render::frame::History history(world, painter.historyOptions());
+  render::frame::PlanarRun run({std::move(world), std::move(history)}, v.scene.model.duration);
+  render::frame::goOnFrom(run, v.survey.kept, painter.historyOptions());
   const auto start = Clock::now();
   for (long k = 0; k < out.frameCount; ++k) {
     const double u = static_cast<double>(k) / out.fps;
-    if (!out.timeMap.inTitleCard(u)) world.advanceTo(out.timeMap.simTime(u), &history);
+    if (!out.timeMap.inTitleCard(u)) run.reach(out.timeMap.simTime(u));
   }
   return secondsSince(start);
 }

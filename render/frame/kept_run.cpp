@@ -17,10 +17,17 @@ History::Options keptHistoryOptions(const render::scene::Scene& def) {
   return o;
 }
 
-KeptRun keepRun(const render::scene::Scene& def, sim::world::World world, double end, std::vector<double> instants,
+KeptRun keepRun(const render::scene::Scene& def, sim::world::World world, double end, std::vector<double> instants, size_t budget,
                 sim::world::StepObserver& follower, const std::function<void(const sim::world::World&)>& ended) {
   return keepRunOf<PlanarRun::State, History::Options, sim::world::StepObserver, sim::world::ImpulseEvent>(
-      keptHistoryOptions(def), std::move(world), end, std::move(instants), follower, keptBytes, ended);
+      keptHistoryOptions(def), std::move(world), end, std::move(instants), budget, follower, keptBytes, ended);
+}
+
+void goOnFrom(PlanarRun& run, const std::shared_ptr<const KeptRun>& kept, const History::Options& options) {
+  if (!kept || !sameRecord(kept->options, options)) return;
+  // the lambda holds the kept run, so its states outlive the run that reads them
+  run.resumeFrom(&kept->states, kept->end,
+                 [kept, spacing = options.trailSpacing](PlanarRun::State& s) { s.history.respace(spacing); });
 }
 
 bool sameRecord(const History::Options& a, const History::Options& b) {

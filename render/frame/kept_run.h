@@ -5,6 +5,7 @@
 // respaced to the frame's pixels when the drawing takes them up (History::respace).
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "render/frame/history.h"
@@ -23,10 +24,15 @@ using KeptRun = KeptRunOf<PlanarRun::State, History::Options>;
 History::Options keptHistoryOptions(const render::scene::Scene& def);
 
 // the run of `def` from `start` to `end`, `follower` told of every step and event, kept at each of
-// `instants` (in any order; those past the end, or past render::scene::kKeptRunBytes of states, are
-// not kept); `ended` is shown the world at the end. Throws what the world's steps throw.
-KeptRun keepRun(const render::scene::Scene& def, sim::world::World start, double end, std::vector<double> instants,
+// `instants` within `budget` bytes of states (keepRunOf says which are not kept); `ended` is shown
+// the world at the end. Throws what the world's steps throw.
+KeptRun keepRun(const render::scene::Scene& def, sim::world::World start, double end, std::vector<double> instants, size_t budget,
                 sim::world::StepObserver& follower, const std::function<void(const sim::world::World&)>& ended);
+
+// `run` (of the same scene, its history recording `options`) set to go on from `kept`'s states, its
+// trails respaced to `options`' spacing as it takes each up; nothing when there are none, or when
+// they record something else
+void goOnFrom(PlanarRun& run, const std::shared_ptr<const KeptRun>& kept, const History::Options& options);
 
 // whether a history with options `b` may go on from a state kept with `a`: the same record, but for
 // the trails' spacing (respaced when taken up)

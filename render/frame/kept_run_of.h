@@ -24,11 +24,12 @@ struct KeptRunOf {
 };
 
 // the run of `world` to `end`, `follower` told of every step and event, its world and a history of
-// `options` kept at each of `instants` (in any order; none past the end, past
-// render::scene::kKeptRunBytes of states, or once the history's paths pass kKeptPathBytes);
-// `ended` is shown the world at the end. Throws what the world's steps throw.
+// `options` kept at each of `instants` (in any order). Not kept: instants past the end, those fewer
+// than render::scene::kKeptMinSteps steps after the state kept before, those past `budget` bytes of
+// states, and all once the history's paths pass kKeptPathBytes. `ended` is shown the world at the
+// end. Throws what the world's steps throw.
 template <class State, class Options, class StepObserver, class ImpulseEvent, class World>
-KeptRunOf<State, Options> keepRunOf(Options options, World world, double end, std::vector<double> instants,
+KeptRunOf<State, Options> keepRunOf(Options options, World world, double end, std::vector<double> instants, size_t budget,
                                     StepObserver& follower, const std::function<size_t(const State&)>& bytesOf,
                                     const std::function<void(const World&)>& ended) {
   using History = decltype(State::history);
@@ -75,7 +76,7 @@ KeptRunOf<State, Options> keepRunOf(Options options, World world, double end, st
     const size_t before = allocatedBytes();
     State state{world, history};
     const size_t bytes = std::max(bytesOf(state), allocatedBytes() - std::min(before, allocatedBytes()));
-    if (kept.bytes + bytes > render::scene::kKeptRunBytes) break;
+    if (kept.bytes + bytes > budget) break;
     kept.bytes += bytes;
     kept.states.push_back(std::move(state));
   }

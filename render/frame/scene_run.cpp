@@ -43,13 +43,8 @@ SceneRun::SceneRun(const render::scene::Scene& def, const Camera& camera, const 
       run_(startState(def.model, painter_.historyOptions()), def.model.duration),
       text_(text) {
   if (gl && text) canvas_ = std::make_unique<GlCanvas>(*gl, *text, style_);
-  // the survey's run kept at the pictures' instants: the drawing goes on from there, its trails
-  // respaced to this camera's pixels
-  const History::Options options = painter_.historyOptions();
-  if (survey.kept && sameRecord(survey.kept->options, options)) {
-    kept_ = survey.kept;
-    run_.resumeFrom(&kept_->states, kept_->end, [spacing = options.trailSpacing](State& s) { s.history.respace(spacing); });
-  }
+  // the survey's run kept at the pictures' instants: the drawing goes on from there
+  goOnFrom(run_, survey.kept, painter_.historyOptions());
 }
 
 void SceneRun::finish() {

@@ -125,8 +125,7 @@ class SceneRun {
   render::draw::Style style_;
   FramePainter painter_;
   Run run_;
-  std::shared_ptr<const KeptRun> kept_;  // the survey's run, which run_ goes on from (may be none)
-  std::vector<Along> along_;             // the pictures taken along the run, in the order asked
+  std::vector<Along> along_;  // the pictures taken along the run, in the order asked
   std::unique_ptr<render::draw::GlCanvas> canvas_;
   render::draw::TextRenderer* text_;
 };

@@ -117,7 +117,9 @@ class SteppedRun {
     if (!kept_ || observers_.follower || keptEnd_ != end_) return;
     const double snap = sim::core::settings::kTimeSnap * run_.world.def().dt;
     const State* latest = nullptr;
-    for (; next_ < kept_->size() && (*kept_)[next_].world.time <= t + snap; ++next_) latest = &(*kept_)[next_];
+    // the grid's own test (StepGrid::same): a state the run's steps within t would reach
+    const auto within = [&](double time) { return time <= t || std::abs(time - t) <= snap; };
+    for (; next_ < kept_->size() && within((*kept_)[next_].world.time); ++next_) latest = &(*kept_)[next_];
     if (!latest || latest->world.time <= run_.world.time) return;
     run_ = *latest;
     if (adopt_) adopt_(run_);

@@ -110,7 +110,7 @@ Bounds bodyBounds(const sim::core::Body& b) {
   return box;
 }
 
-RunSurvey surveyRun(const render::scene::Scene& def, double until, const std::vector<double>& keepAt) {
+RunSurvey surveyRun(const render::scene::Scene& def, double until, const std::vector<double>& keepAt, size_t keepBytes) {
   RunSurvey survey;
   for (const sim::scene::EventDef& e : def.model.events) survey.maxImpulse = std::max(survey.maxImpulse, e.impulse.norm());
   sim::world::World world = sim::scene::buildWorld(def.model);
@@ -129,7 +129,7 @@ RunSurvey surveyRun(const render::scene::Scene& def, double until, const std::ve
     world.advanceTo(end, &surveyor);
     ended(world);
   } else {
-    survey.kept = std::make_shared<const KeptRun>(keepRun(def, std::move(world), end, keepAt, surveyor, ended));
+    survey.kept = std::make_shared<const KeptRun>(keepRun(def, std::move(world), end, keepAt, keepBytes, surveyor, ended));
   }
   return survey;
 }

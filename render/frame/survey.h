@@ -34,9 +34,10 @@ struct RunSurvey {
   std::shared_ptr<const KeptRun> kept;
 };
 
-// the scene run from 0 to `until` (its duration when negative), kept at `keepAt` (kept_run.h);
-// throws sim::world::Diverged
-RunSurvey surveyRun(const render::scene::Scene& def, double until = -1.0, const std::vector<double>& keepAt = {});
+// the scene run from 0 to `until` (its duration when negative), kept at `keepAt` within `keepBytes`
+// (kept_run.h); throws sim::world::Diverged
+RunSurvey surveyRun(const render::scene::Scene& def, double until = -1.0, const std::vector<double>& keepAt = {},
+                    size_t keepBytes = render::scene::kKeptRunBytes);
 // the overlays' extremes of the world now, added into `out` (by surveyRun after every step)
 void surveyOverlays(const render::scene::Scene& def, const sim::world::World& world, RunSurvey& out);
 

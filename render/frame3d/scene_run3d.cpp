@@ -40,10 +40,9 @@ SceneRun3d::SceneRun3d(const render::scene3d::Scene& def, const Camera3d& camera
   const auto sameRecord = [&o](const History3d::Options& kept) {
     return kept.trails == o.trails && kept.points == o.points && kept.omegaTips == o.omegaTips;
   };
-  if (survey.kept && sameRecord(survey.kept->options)) {
-    kept_ = survey.kept;
-    run_.resumeFrom(&kept_->states, kept_->end, [o](State& s) { s.history.respace(o.spacing, o.omegaSpacing); });
-  }
+  // the lambda holds the kept run, so its states outlive the run that reads them
+  if (const std::shared_ptr<const KeptRun3d>& kept = survey.kept; kept && sameRecord(kept->options))
+    run_.resumeFrom(&kept->states, kept->end, [kept, o](State& s) { s.history.respace(o.spacing, o.omegaSpacing); });
 }
 
 void SceneRun3d::pictureAlong(double t, std::function<void(render::draw::Image)> shot) {

@@ -72,8 +72,7 @@ class SceneRun3d final : public render::frame::FrameSource {
   render::draw::Style style_;
   FramePainter3d painter_;
   Run run_;
-  std::shared_ptr<const KeptRun3d> kept_;  // the survey's run, which run_ goes on from (may be none)
-  std::vector<Along> along_;               // the pictures along the run not yet taken, in the order asked
+  std::vector<Along> along_;  // the pictures along the run not yet taken, in the order asked
   std::unique_ptr<render::draw3d::GlCanvas3d> canvas_;
   render::draw::TextRenderer* text_;
 };

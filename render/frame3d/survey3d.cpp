@@ -58,7 +58,7 @@ std::vector<double> energyValues(const World& world) {
   return values;
 }
 
-RunSurvey3d surveyRun(const render::scene3d::Scene& def, double until, const std::vector<double>& keepAt) {
+RunSurvey3d surveyRun(const render::scene3d::Scene& def, double until, const std::vector<double>& keepAt, size_t keepBytes) {
   RunSurvey3d survey;
   World world = sim::scene3d::buildWorld(def.model);
   Surveyor surveyor(def, survey);
@@ -87,7 +87,7 @@ RunSurvey3d surveyRun(const render::scene3d::Scene& def, double until, const std
     };
     survey.kept = std::make_shared<const KeptRun3d>(
         render::frame::keepRunOf<SpatialRun::State, History3d::Options, StepObserver, ImpulseEvent, World>(
-            keptHistoryOptions(def), std::move(world), end, keepAt, surveyor, bytes, ended));
+            keptHistoryOptions(def), std::move(world), end, keepAt, keepBytes, surveyor, bytes, ended));
   }
   return survey;
 }

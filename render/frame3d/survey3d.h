@@ -34,9 +34,10 @@ struct RunSurvey3d {
   std::shared_ptr<const KeptRun3d> kept;    // the run kept at the instants asked for (none: nothing kept)
 };
 
-// the scene run from 0 to `until` (its duration when negative), kept at `keepAt`; throws
+// the scene run from 0 to `until` (its duration when negative), kept at `keepAt` within `keepBytes`; throws
 // sim::world3d::Diverged
-RunSurvey3d surveyRun(const render::scene3d::Scene& def, double until = -1.0, const std::vector<double>& keepAt = {});
+RunSurvey3d surveyRun(const render::scene3d::Scene& def, double until = -1.0, const std::vector<double>& keepAt = {},
+                      size_t keepBytes = render::scene::kKeptRunBytes);
 // what the history of a run of `def` records, whatever the camera: every step's point of each path
 History3d::Options keptHistoryOptions(const render::scene3d::Scene& def);
 // the scales (not the bounds) of every survey set to the extremes over all, for panels side by side

@@ -33,11 +33,14 @@ inline constexpr double kMaxTitleCard = 60.0;
 // range is undefined behavior)
 inline constexpr double kMaxFrames = 1e7;
 
-// the survey's run kept for the drawing (render/frame/kept_run.h), bytes, at most per variant: past
-// it the drawing steps the rest of the run again, as it did before states were kept. A lecture
-// scene's states are tens of kB; a 5,050-box pile's 12 MB each (30 of them took a 0.5 s render
-// from 234 to 611 MB)
+// the survey's run kept for the drawing (render/frame/kept_run.h), bytes, at most per render (shared
+// by the variants it surveys): past it the drawing steps the rest of the run again, as it did before
+// states were kept. A lecture scene's states are tens of kB; a 5,050-box pile's 12 MB each (30 of
+// them took a 0.5 s render from 234 to 611 MB)
 inline constexpr size_t kKeptRunBytes = size_t{64} << 20;
+// a video's frames whose instants are offered to its survey to keep, at most: more states than
+// kKeptRunBytes holds of the smallest scene's (a few kB each)
+inline constexpr long kKeptMostInstants = 100000;
 // the steps a kept state must save, at least, over the one kept before it: a state of a pile that
 // steps once a frame costs more to copy and hold than the step it saves
 inline constexpr long kKeptMinSteps = 4;

@@ -72,7 +72,8 @@ std::vector<double> videoInstants(const Scene& scene, double duration) {
   const render::scene::RenderDef& r = scene.render;
   const TimeMap map = timeMapFor(r, {}, duration);
   std::vector<double> instants;
-  const long frames = map.frameCount(r.fps);
+  // the first frames only of a video longer than the states kept could hold (10⁷ frames: 80 MB of times)
+  const long frames = std::min(map.frameCount(r.fps), render::scene::kKeptMostInstants);
   instants.reserve(static_cast<size_t>(frames) + static_cast<size_t>(r.strobe) + 2);
   for (long k = 0; k < frames; ++k) instants.push_back(map.simTime(static_cast<double>(k) / r.fps));
   const double poster = r.poll.question.empty() ? duration : 0.0;
@@ -102,7 +103,9 @@ RenderPlanOf<D> surveyed(std::vector<typename D::Scene> scenes, const std::optio
     if (size) scene.render.width = size->width, scene.render.height = size->height;
     if (fps) scene.render.fps = *fps;
     try {
-      typename D::Survey survey = surveyRun(scene, until, keepAt ? keepAt(scene) : std::vector<double>{});
+      // the kept states' bytes shared by the variants, all kept until the plan is written
+      typename D::Survey survey =
+          surveyRun(scene, until, keepAt ? keepAt(scene) : std::vector<double>{}, render::scene::kKeptRunBytes / scenes.size());
       // a view past what double arithmetic can draw is a bad scene, said before any frame
       if constexpr (std::is_same_v<D, Planar>) render::frame::checkView(scene, survey, cameraFor(scene, survey));
       plan.variants.push_back({std::move(scene), std::move(survey)});

@@ -147,3 +147,24 @@ TEST_CASE("a state is kept only where it saves 4 steps: instants a step apart ke
   CHECK(kept.steps == 30);
   CHECK(fresh.steps == 40);
 }
+
+TEST_CASE("a run that ends elsewhere, or records something else, than the survey's steps on its own") {
+  const render::scene::Scene def = drawn_scene::load(kScene);
+  const std::vector<double> instants = frames(0.0);
+  const render::frame::RunSurvey survey = render::frame::surveyRun(def, -1.0, instants);
+  const render::draw::Camera camera = render::frame::cameraFor(def, survey);
+  REQUIRE(survey.kept);
+  // a video cut at 1 s: its last step is cut elsewhere than the survey's, whose states it leaves
+  render::frame::SceneRun cut(def, camera, survey);
+  cut.endAt(1.0);
+  cut.drawListAt(1.0);
+  CHECK(cut.stepsTaken() == 200);
+  // a history that keeps no trails is not the one the survey kept
+  render::scene::Scene plain = def;
+  plain.render.trails = false;
+  render::frame::SceneRun other(plain, camera, survey);
+  const std::string got = other.drawListAt(1.0).toText();
+  CHECK(other.stepsTaken() == 200);
+  render::frame::SceneRun fresh(plain, camera, render::frame::surveyRun(plain));
+  CHECK(got == fresh.drawListAt(1.0).toText());
+}
