@@ -111,6 +111,31 @@ class RoleFilter final : public Canvas {
   Keep keep_;
 };
 
+// every call passed on to `target`, its pen's opacity times `opacity`: what DrawList::replay(target,
+// opacity) draws of the calls recorded, without recording them (a history's fading afterimages)
+class Faded final : public Canvas {
+ public:
+  Faded(Canvas& target, double opacity) : target_(target), opacity_(opacity) {}
+  void polygon(const std::vector<sim::core::Vec2>& v, const Pen& p) override { target_.polygon(v, faded(p)); }
+  void circle(const sim::core::Vec2& c, double r, const Pen& p) override { target_.circle(c, r, faded(p)); }
+  void halfPlane(const sim::core::Vec2& q, const sim::core::Vec2& n, const Pen& p) override { target_.halfPlane(q, n, faded(p)); }
+  void segment(const sim::core::Vec2& a, const sim::core::Vec2& b, const Pen& p) override { target_.segment(a, b, faded(p)); }
+  void point(const sim::core::Vec2& q, const Pen& p) override { target_.point(q, faded(p)); }
+  void arrow(const sim::core::Vec2& t, const sim::core::Vec2& h, const Pen& p) override { target_.arrow(t, h, faded(p)); }
+  void text(const sim::core::Vec2& at, const std::string& t, const Pen& p) override { target_.text(at, t, faded(p)); }
+  void label(const sim::core::Vec2& a, const sim::core::Vec2& d, const std::string& t, const Pen& p) override {
+    target_.label(a, d, t, faded(p));
+  }
+
+ private:
+  Pen faded(Pen p) const {
+    p.opacity *= opacity_;
+    return p;
+  }
+  Canvas& target_;
+  double opacity_;
+};
+
 // every call into both `first` and `second` (a frame drawn and its draw list recorded at once)
 class BothCanvases final : public Canvas {
  public:

@@ -34,6 +34,27 @@ TEST_CASE("a replay repeats the calls with their opacity scaled") {
   CHECK(b.toText() == "point ContactPoint@0.25 (1,1)\narrow ContactNormal@0.5 (0,0) -> (0,1)\n");
 }
 
+TEST_CASE("a faded canvas draws what a replay at that opacity draws, every kind of call") {
+  const auto draw = [](render::draw::Canvas& c) {
+    c.polygon({{0, 0}, {1, 0}, {0, 1}}, {Role::Body, 0, 1.0});
+    c.circle({1, 2}, 0.5, {Role::Body, 1, 0.5});
+    c.halfPlane({0, -1}, {0, 1}, {Role::StaticBody, 2, 1.0});
+    c.segment({0, 0}, {1, 2}, {Role::Trail, 0, 1.0});
+    c.point({3, 4}, {Role::ContactPoint, -1, 1.0});
+    c.arrow({0, 0}, {1, 1}, {Role::Impulse, 0, 0.5});
+    c.text({0, 0}, "t", {Role::Caption, -1, 1.0});
+    c.label({1, 1}, {0, 1}, "j", {Role::Label, -1, 1.0});
+  };
+  DrawList recorded, replayed, faded;
+  draw(recorded);
+  recorded.replay(replayed, 0.3);
+  render::draw::Faded fade(faded, 0.3);
+  draw(fade);
+  REQUIRE(replayed.calls().size() == 8);
+  CHECK(faded.toText() == replayed.toText());
+  for (size_t i = 0; i < 8; ++i) CHECK(faded.calls()[i].style.opacity == replayed.calls()[i].style.opacity);
+}
+
 TEST_CASE("a role filter passes only the roles it keeps") {
   DrawList all, kept;
   all.polygon({{0, 0}, {1, 0}, {1, 1}}, {Role::StaticBody, 0, 1.0});
