@@ -67,7 +67,7 @@ RunMetrics measureRun3d(w3::World& world, double until) {
   Recorder3d recorder(m, angularMomentum(world));
   try {
     world.advanceTo(until, &recorder);
-  } catch (const w3::Diverged& d) {
+  } catch (const sim::core::Diverged& d) {
     m.finite = false;
     m.divergedAt = d.time;
   }

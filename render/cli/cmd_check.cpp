@@ -119,7 +119,7 @@ void reportPrecision(const sim::world::World& w, std::ostream& out) {
 }
 
 // why a run stopped before its duration, as `simulate` says it
-std::string runFailure(const sim::scene::SceneDef& def, const sim::world::Diverged& d) {
+std::string runFailure(const sim::scene::SceneDef& def, const sim::core::Diverged& d) {
   return "the simulation diverged at t = " + formatNumber(d.time) + ": body '" + def.bodies[d.body].name +
          "' has a non-finite state; try a smaller step (--dt " + formatNumber(def.dt / 4) +
          ") or another integrator (--integrator rk4)";
@@ -149,7 +149,7 @@ std::vector<std::string> checkCase(const OpenScene& scene, const std::string& va
     results = sim::scene::runExpects(def, w, &ledger);
     // on past the last entry to the duration: a scene that passes check must simulate and render
     w.advanceTo(def.duration, &ledger);
-  } catch (const sim::world::Diverged& d) {
+  } catch (const sim::core::Diverged& d) {
     failure = runFailure(def, d);
   } catch (const sim::world::ImpactsPileUp& e) {
     failure = e.what();
@@ -206,7 +206,7 @@ std::vector<std::string> checkCase3d(const OpenScene& scene, const std::string& 
   try {
     results = sim::scene3d::runExpects(def, w, &ledger);
     w.advanceTo(def.duration, &ledger);
-  } catch (const sim::world3d::Diverged& d) {
+  } catch (const sim::core::Diverged& d) {
     failure = divergedMessage(file, def, d);
   } catch (const sim::world3d::ContactPersists& p) {
     failure = contactPersistsMessage(def, p);
@@ -230,7 +230,7 @@ std::vector<std::string> checkCase3d(const OpenScene& scene, const std::string& 
 // `--render`: every output the lecture pack makes of the scene planned as `lecture` plans it (each
 // variant surveyed, its video's frames counted and named, its poster, the poll panels), nothing
 // drawn; false when a variant diverges on the way. Throws sim::yaml::SceneError, UsageError
-template <class Plan, class Diverged>
+template <class Plan>
 bool planned(const std::string& file, const std::function<Plan()>& plan) {
   try {
     const Plan p = plan();
@@ -239,7 +239,7 @@ bool planned(const std::string& file, const std::function<Plan()>& plan) {
     std::cout << "  render: " << plural(p.videos.size(), "video") << " (" << frames << " frames), "
               << plural(p.stills ? p.stills->shots.size() : 0, "panel sheet") << " planned\n";
     return true;
-  } catch (const Diverged& d) {
+  } catch (const sim::core::Diverged& d) {
     std::cout << "  FAIL  render: the simulation diverged at t = " << formatNumber(d.time) << " while planning\n";
     std::cerr << file << ": the simulation diverged at t = " << formatNumber(d.time) << " while planning its outputs\n";
     return false;
@@ -250,10 +250,9 @@ bool planRender(const OpenScene& scene) {
   const std::string& file = scene.path();
   const render::video::LectureRequest request{.root = "out/lecture", .file = file, .size = {}, .fps = {}};
   if (scene.is3d())
-    return planned<render::video::RenderPlan3d, render::video::VariantDiverged3d>(
-        file, [&] { return render::video::planLecture3d(lectureLoader3d(scene), request); });
-  return planned<render::video::RenderPlan, render::video::VariantDiverged>(
-      file, [&] { return render::video::planLecture(lectureLoader(scene), request); });
+    return planned<render::video::RenderPlan3d>(file,
+                                                [&] { return render::video::planLecture3d(lectureLoader3d(scene), request); });
+  return planned<render::video::RenderPlan>(file, [&] { return render::video::planLecture(lectureLoader(scene), request); });
 }
 
 // the files as given, a directory as every *.yaml in it (as `lecture` reads it: its order.txt's order, else sorted)
@@ -307,12 +306,7 @@ int check(const std::vector<std::string>& arguments, const Verbosity& say, const
       failScene(tally, file, file + ": " + e.what(), kExitBadInput, code);
     } catch (const sim::yaml::SceneError& e) {
       failScene(tally, file, e.what(), kExitBadInput, code);
-    } catch (const sim::world::Diverged& d) {
-      failScene(tally, file,
-                file + ": the simulation diverged at t = " + formatNumber(d.time) + " (body #" + std::to_string(d.body) +
-                    "); use a smaller dt or another integrator",
-                kExitFailure, code);
-    } catch (const sim::world3d::Diverged& d) {
+    } catch (const sim::core::Diverged& d) {
       failScene(tally, file,
                 file + ": the simulation diverged at t = " + formatNumber(d.time) + " (body #" + std::to_string(d.body) +
                     "); use a smaller dt or another integrator",

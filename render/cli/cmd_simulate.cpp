@@ -212,7 +212,7 @@ int simulate(const SimulateOptions& o) {
   try {
     RunProgress progress(o.scene, until, trace.get(), !o.quiet);
     world.advanceTo(until, &ledger.emplace(world, progress.observer()));
-  } catch (const sim::world::Diverged& d) {
+  } catch (const sim::core::Diverged& d) {
     std::cerr << o.scene << ": the simulation diverged at t = " << formatNumber(d.time) << ": body '" << def.bodies[d.body].name
               << "' has a non-finite state; try a smaller step (--dt " << formatNumber(def.dt / 4)
               << ") or another integrator (--integrator rk4)\n";

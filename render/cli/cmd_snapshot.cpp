@@ -88,7 +88,7 @@ int snapshot(const SnapshotCommand& o) {
   try {
     const RenderPlan plan = planStills(withOverlay(o.variantLoader(), o.overlay), request(o));
     traced<TraceWriter>(o.trace, plan, [&](TraceWriter* trace) { writePlan(plan, !o.verbose, print, trace); });
-  } catch (const sim::world::Diverged& d) {
+  } catch (const sim::core::Diverged& d) {
     std::cerr << o.scene << ": the simulation diverged at t = " << timeForName(d.time)
               << "; try a smaller step (--dt) or another integrator (--integrator rk4)\n";
     return kExitFailure;

@@ -112,7 +112,7 @@ void printText(const sim::scene3d::SceneDef& def, const World& w, const EnergyLe
 
 }  // namespace
 
-std::string divergedMessage(const std::string& file, const sim::scene3d::SceneDef& def, const Diverged& d) {
+std::string divergedMessage(const std::string& file, const sim::scene3d::SceneDef& def, const sim::core::Diverged& d) {
   return file + ": the simulation diverged at t = " + formatNumber(d.time) + ": body '" + def.bodies[d.body].name +
          "' has a non-finite state; try a smaller step (--dt " + formatNumber(def.dt / 4) +
          ") or another integrator (--integrator " +
@@ -160,7 +160,7 @@ int simulate3d(const SceneOptions& o, std::optional<double> until, bool json, co
   try {
     RunProgress3d progress(o.scene, end, trace.get());
     world.advanceTo(end, &ledger.emplace(world, progress.observer()));
-  } catch (const Diverged& d) {
+  } catch (const sim::core::Diverged& d) {
     std::cerr << divergedMessage(o.scene, def, d) << '\n';
     return kExitFailure;
   } catch (const ContactPersists& p) {

@@ -19,7 +19,7 @@ namespace render::cli {
 // trace; kExitOk, or kExitFailure when the simulation diverged
 int simulate3d(const SceneOptions& options, std::optional<double> until, bool json, const std::string& trace);
 // `check` of one file: every variant's model described and its expect entries compared, each
-// variant tallied with what failed in it. Throws sim::yaml::SceneError, sim::world3d::Diverged
+// variant tallied with what failed in it. Throws sim::yaml::SceneError, sim::core::Diverged
 void check3d(const OpenScene& scene, const Verbosity& say, CheckTally& tally);
 // `sweep` and `stability`
 // (`verbose`: the CSV printed after the table)
@@ -34,7 +34,7 @@ inline bool isStaticBody(const sim::scene::BodyDef& b) { return b.isStatic; }
 inline bool isStaticBody(const sim::scene3d::BodyDef&) { return false; }
 
 // "the simulation diverged at t = …: body '…' has a non-finite state; try …", for standard error
-std::string divergedMessage(const std::string& file, const sim::scene3d::SceneDef& def, const sim::world3d::Diverged& d);
+std::string divergedMessage(const std::string& file, const sim::scene3d::SceneDef& def, const sim::core::Diverged& d);
 // why a named `event` stopped: "'die' and 'floor' at t = 0.61: a contact too slow to part persists
 // (...); the event method resolves isolated impacts only: use 'collisions: sequential' or 'auto'"
 std::string contactPersistsMessage(const sim::scene3d::SceneDef& def, const sim::world3d::ContactPersists& p);

@@ -22,7 +22,7 @@ render::draw::Bounds drawnBounds(const render::draw::DrawList& list);
 std::vector<double> fittingInstants(const render::scene::Scene& scene, const RunSurvey& survey);
 
 // the camera for `scenes` side by side (each at the panel's frame size); `widest` is the variant
-// beside the widest energy panel. Throws sim::world::Diverged
+// beside the widest energy panel. Throws sim::core::Diverged
 render::draw::Camera panelCamera(const std::vector<render::scene::Scene>& scenes, const std::vector<RunSurvey>& surveys,
                                  size_t widest);
 

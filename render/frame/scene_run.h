@@ -45,7 +45,7 @@ class SceneRun {
 
   // the frame at time t, which must not be earlier than the last one; with `strobe` > 0, that many
   // earlier poses at t·i/strobe (i = 0 … strobe − 1) drawn fading behind the present one, which
-  // needs a fresh run (nothing drawn yet). Throws sim::world::Diverged, ImpactsPileUp.
+  // needs a fresh run (nothing drawn yet). Throws sim::core::Diverged, ImpactsPileUp.
   render::draw::Image frameAt(double t, int strobe = 0);
   // the same without ghosts into `frame`, whose storage is reused when it has the frame's size (a
   // video's frames, drawn into a few buffers over and over)

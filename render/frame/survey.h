@@ -35,7 +35,7 @@ struct RunSurvey {
 };
 
 // the scene run from 0 to `until` (its duration when negative), kept at `keepAt` within `keepBytes`
-// (kept_run.h); throws sim::world::Diverged
+// (kept_run.h); throws sim::core::Diverged
 RunSurvey surveyRun(const render::scene::Scene& def, double until = -1.0, const std::vector<double>& keepAt = {},
                     size_t keepBytes = render::scene::kKeptRunBytes);
 // the overlays' extremes of the world now, added into `out` (by surveyRun after every step)

@@ -38,7 +38,7 @@ class SceneRun3d final : public render::frame::FrameSource {
   // the pictures along the run not yet taken, taken: the run stepped only as far as they need
   void takePicturesAlong() { takeAlong(run_.end()); }
 
-  // the frame at time t, not earlier than the last one. Throws sim::world3d::Diverged.
+  // the frame at time t, not earlier than the last one. Throws sim::core::Diverged.
   render::draw::Image frameAt(double t) override;
   // the same into `frame`, its storage reused when it has the frame's size (a video's few buffers)
   void frameAt(double t, render::draw::Image& frame) override;

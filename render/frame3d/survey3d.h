@@ -35,7 +35,7 @@ struct RunSurvey3d {
 };
 
 // the scene run from 0 to `until` (its duration when negative), kept at `keepAt` within `keepBytes`; throws
-// sim::world3d::Diverged
+// sim::core::Diverged
 RunSurvey3d surveyRun(const render::scene3d::Scene& def, double until = -1.0, const std::vector<double>& keepAt = {},
                       size_t keepBytes = render::scene::kKeptRunBytes);
 // what the history of a run of `def` records, whatever the camera: every step's point of each path

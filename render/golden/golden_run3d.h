@@ -11,7 +11,7 @@ namespace render::golden {
 
 // the run at `times`, or (null) at those its golden: block asks for (goldenTimes, from the survey the
 // drawing needs anyway), frames at the golden size; without `pixels` no GL is loaded. Throws
-// sim::world3d::Diverged, std::runtime_error (GL).
+// sim::core::Diverged, std::runtime_error (GL).
 GoldenRun runGolden(const render::scene3d::Scene& scene, const GoldenDef& golden, const GoldenTimes* times, bool pixels);
 
 }  // namespace render::golden

@@ -43,11 +43,11 @@ struct BodyComparison {
 };
 
 // the run of `world` (fresh, built from `def`) to the scene's duration against `theirs`; throws
-// sim::world::Diverged
+// sim::core::Diverged
 std::vector<BodyComparison> compareTrace(const sim::scene::SceneDef& def, sim::world::World& world,
                                          const render::trace::Trace& theirs, const CompareTolerance& tolerance);
 // the same of a 3D scene: position and velocity (with ω) in 3D, the angle the rotation between the
-// orientations; throws sim::world3d::Diverged
+// orientations; throws sim::core::Diverged
 std::vector<BodyComparison> compareTrace(const sim::scene3d::SceneDef& def, sim::world3d::World& world,
                                          const render::trace::Trace& theirs, const CompareTolerance& tolerance);
 

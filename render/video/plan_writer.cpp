@@ -65,7 +65,7 @@ template <class D, class Draw>
 void drawing(const PlannedVariantOf<D>& v, DrawStage what, Draw&& draw) {
   try {
     draw();
-  } catch (const typename D::Diverged& d) {
+  } catch (const sim::core::Diverged& d) {
     throw VariantDivergedOf<D>(d, v.scene.model, what);
   }
 }

@@ -20,14 +20,11 @@
 #include "sim/yaml/scene_error.h"
 
 namespace render::video {
-using render::frame::PanelGrid;
 using namespace render::jobs;
 using namespace render::frame3d;
 using namespace render::draw;
 using namespace render::frame;
 using namespace render::scene;
-using render::draw::Bounds;
-using render::draw::TextRenderer;
 
 namespace {
 
@@ -109,7 +106,7 @@ RenderPlanOf<D> surveyed(std::vector<typename D::Scene> scenes, const std::optio
       // a view past what double arithmetic can draw is a bad scene, said before any frame
       if constexpr (std::is_same_v<D, Planar>) render::frame::checkView(scene, survey, cameraFor(scene, survey));
       plan.variants.push_back({std::move(scene), std::move(survey)});
-    } catch (const typename D::Diverged& d) {
+    } catch (const sim::core::Diverged& d) {
       throw VariantDivergedOf<D>(d, scene.model, DrawStage::Planning);
     }
   }

@@ -36,18 +36,16 @@ struct FrameSize {
 };
 
 // what a plan takes of a scene's dimension: the scene, the survey of its run, the camera that draws
-// it, and how its simulation gives up
+// it
 struct Planar {
   using Scene = render::scene::Scene;
   using Survey = render::frame::RunSurvey;
   using Camera = render::draw::Camera;
-  using Diverged = sim::world::Diverged;
 };
 struct Spatial {
   using Scene = render::scene3d::Scene;
   using Survey = render::frame3d::RunSurvey3d;
   using Camera = render::draw3d::Camera3d;
-  using Diverged = sim::world3d::Diverged;
 };
 template <class D>
 using ModelOf = decltype(D::Scene::model);  // the variant's scene definition (sim::scene or sim::scene3d)
@@ -124,10 +122,10 @@ struct RenderPlanOf {
 // a variant's simulation diverged: planning (its survey), drawing its video or poster, or a still
 enum class DrawStage { Planning, Video, Stills };
 template <class D>
-struct VariantDivergedOf : D::Diverged {
+struct VariantDivergedOf : sim::core::Diverged {
   using While = DrawStage;
-  VariantDivergedOf(const typename D::Diverged& d, const ModelOf<D>& variant, While stage)
-      : D::Diverged(d), model(variant), when(stage) {}
+  VariantDivergedOf(const sim::core::Diverged& d, const ModelOf<D>& variant, While stage)
+      : sim::core::Diverged(d), model(variant), when(stage) {}
   ModelOf<D> model;  // the variant's: its bodies' names, its step
   While when;
 };

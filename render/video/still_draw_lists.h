@@ -22,7 +22,7 @@ render::frame::PixelDrawList stillDrawList(const Stills& stills, const StillOutp
                                            const std::vector<render::frame::PixelDrawList>& frames,
                                            render::draw::TextRenderer& text);
 // every still's draw list, as the writer would make it, without GL: each variant run once through
-// the instants, told to `shot` in the stills' order. Throws sim::world::Diverged
+// the instants, told to `shot` in the stills' order. Throws sim::core::Diverged
 void stillDrawLists(const Stills& stills, const std::function<void(size_t shot, const render::frame::PixelDrawList&)>& shot);
 
 }  // namespace render::video

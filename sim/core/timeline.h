@@ -1,7 +1,8 @@
 // The run's timeline, one for the 2D and the 3D world: the fixed step grid (step_grid.h) cut at
 // every timed impulse and force switch, the impulses applied in time order at their exact
 // instants, and the stepping to a time on that grid (notes: "Impulses"). A world keeps what is
-// its own, the two hooks the timeline calls (private ones, with the timeline a friend):
+// its own, the hooks the timeline calls (step and applyEvent private ones, with the timeline a friend):
+//   world.start(): ready to step (the method chosen, the start state checked), a no-op once done;
 //   world.step(stop, end): one step from world.time to `stop`, arriving at `end` (the grid point
 //     or the end itself where `stop` is one of them to within round-off), world.time = end after;
 //   world.applyEvent(e): the impulse e, now.
@@ -33,6 +34,7 @@ class Timeline {
   // and every event
   template <class World, class Observer>
   void advanceTo(World& world, double tEnd, Observer* observer) {
+    world.start();
     applyDueEvents(world, observer);
     while (world.time < tEnd && !grid_.same(world.time, tEnd)) stepTo(world, grid_.nextStop(world.time, tEnd), tEnd, observer);
     world.time = std::max(world.time, tEnd);
@@ -42,6 +44,7 @@ class Timeline {
   // splitting one at t
   template <class World, class Observer>
   void advanceWithin(World& world, double t, double tEnd, Observer* observer) {
+    world.start();
     applyDueEvents(world, observer);
     while (world.time < tEnd && !grid_.same(world.time, tEnd)) {
       const double stop = grid_.nextStop(world.time, tEnd);

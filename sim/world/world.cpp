@@ -13,9 +13,6 @@ namespace sim::world {
 using namespace sim::core;
 using namespace sim::collision;
 
-Diverged::Diverged(double t, int b)
-    : std::runtime_error("state is no longer finite at t = " + std::to_string(t)), time(t), body(b) {}
-
 ImpactsPileUp::ImpactsPileUp(double t, int n)
     : std::runtime_error("more than " + std::to_string(n) + " impacts in one step at t = " + std::to_string(t) +
                          ": impacts pile up; use --collisions sequential"),
@@ -24,7 +21,8 @@ ImpactsPileUp::ImpactsPileUp(double t, int n)
 InitialOverlap::InitialOverlap(int a_, int b_, double d)
     : std::runtime_error("bodies overlap at the start"), a(a_), b(b_), depth(d) {}
 
-World::World(WorldDef def, std::vector<Body> bodies_) : bodies(std::move(bodies_)), def_(std::move(def)) {}
+World::World(WorldDef def, std::vector<Body> bodies_)
+    : bodies(std::move(bodies_)), def_(std::move(def)), timeline_(def_.dt, def_.events, def_.forces.breakpoints()) {}
 
 void World::applyImpulse(int i, const Vec2& r, const Vec2& j) {
   Body& b = bodies[i];
@@ -92,7 +90,6 @@ ContactQuery World::contactQuery(double margin, double sideSlack, bool awakeOnly
 
 void World::start() {
   if (started_) return;
-  timeline_ = Timeline<ImpulseEvent>(def_.dt, def_.events, def_.forces.breakpoints());
   measureScene();
   if (collisions_ == CollisionMethod::Auto) chooseMethod();
   method_ = OwnedMethod(makeMethod(collisions_, def_.precision));
@@ -141,15 +138,9 @@ std::unique_ptr<Method> makeMethod(CollisionMethod method, Precision precision) 
   return makeFreeMotion();
 }
 
-void World::advanceTo(double tEnd, StepObserver* observer) {
-  start();
-  timeline_.advanceTo(*this, tEnd, observer);
-}
+void World::advanceTo(double tEnd, StepObserver* observer) { timeline_.advanceTo(*this, tEnd, observer); }
 
-void World::advanceWithin(double t, double tEnd, StepObserver* observer) {
-  start();
-  timeline_.advanceWithin(*this, t, tEnd, observer);
-}
+void World::advanceWithin(double t, double tEnd, StepObserver* observer) { timeline_.advanceWithin(*this, t, tEnd, observer); }
 
 // the timeline's step (timeline.h): one step of size h by the collision method (methods.h), and
 // what is the world's around it: sleeping, `auto`'s switch and the finiteness check. Under

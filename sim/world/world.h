@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "sim/core/body.h"
+#include "sim/core/diverged.h"
 #include "sim/core/forces.h"
 #include "sim/core/integrators.h"
 #include "sim/core/settings.h"
@@ -29,13 +30,6 @@ class World;
 
 // told of every finished step and every applied event, e.g. to write a trace
 using StepObserver = sim::core::StepObserverOf<World, ImpulseEvent>;
-
-// a body's state stopped being finite
-struct Diverged : std::runtime_error {
-  Diverged(double time, int body);
-  double time;
-  int body;
-};
 
 // bodies overlap where the chosen method cannot start (the event method needs separated bodies)
 struct InitialOverlap : std::runtime_error {
@@ -76,11 +70,11 @@ class World {
 
   // resolve `auto`, check the start state; called by advanceTo, callable earlier to ask
   void start();
-  // advance to exactly tEnd (events at tEnd included); throws Diverged
+  // advance to exactly tEnd (events at tEnd included); throws sim::core::Diverged
   void advanceTo(double tEnd, StepObserver* observer = nullptr);
   // advance by the steps that advanceTo(tEnd) takes (grid points, events, force switches, tEnd) as
   // long as they end by t, never splitting one at t: a picture at t between two of them is drawn
-  // from a copy of the world advanced to t (render/frame/scene_run.h); throws Diverged
+  // from a copy of the world advanced to t (render/frame/scene_run.h); throws sim::core::Diverged
   void advanceWithin(double t, double tEnd, StepObserver* observer = nullptr);
 
   // the notes' impulse at a world point r: v += j/m, ω += I⁻¹ (r − x) × j

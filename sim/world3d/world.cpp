@@ -13,21 +13,16 @@ namespace sim::world3d {
 using namespace sim::core;
 namespace core = sim::core;
 
-Diverged::Diverged(double t, int b)
-    : std::runtime_error("body " + std::to_string(b) + "'s state is no longer finite at t = " + std::to_string(t)),
-      time(t),
-      body(b) {}
-
 ContactPersists::ContactPersists(double t, int a_, int b_, const std::string& why)
     : std::runtime_error(why), time(t), a(a_), b(b_) {}
 
-World::World(WorldDef def, std::vector<Body> bodies_) : bodies(std::move(bodies_)), def_(std::move(def)) {}
+World::World(WorldDef def, std::vector<Body> bodies_)
+    : bodies(std::move(bodies_)), def_(std::move(def)), timeline_(def_.dt, def_.events, def_.forces.breakpoints()) {}
 
 void World::start() {
   if (started_) return;
   const double dt = def_.dt;
   if (!(dt > 0.0) || !std::isfinite(dt)) throw std::invalid_argument("the time step dt must be a positive finite number");
-  timeline_ = core::Timeline<ImpulseEvent>(dt, def_.events, def_.forces.breakpoints());
   // the scale of the event method's tolerances: the bodies' extent at the start
   double extent = 0.0;
   for (const Body& b : bodies) extent = std::max(extent, 2.0 * boundingRadius(b.shape));
@@ -141,15 +136,9 @@ std::vector<Contact3> World::findContacts(double margin, const States* y) const 
   return found;
 }
 
-void World::advanceTo(double tEnd, StepObserver* observer) {
-  start();
-  timeline_.advanceTo(*this, tEnd, observer);
-}
+void World::advanceTo(double tEnd, StepObserver* observer) { timeline_.advanceTo(*this, tEnd, observer); }
 
-void World::advanceWithin(double t, double tEnd, StepObserver* observer) {
-  start();
-  timeline_.advanceWithin(*this, t, tEnd, observer);
-}
+void World::advanceWithin(double t, double tEnd, StepObserver* observer) { timeline_.advanceWithin(*this, t, tEnd, observer); }
 
 // the timeline's step (timeline.h): one step by the collision method, then the finiteness check.
 // Under `auto`, a contact the event method cannot carry on (ContactPersists) makes sequential redo

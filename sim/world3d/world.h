@@ -12,6 +12,7 @@
 
 #include "sim/core/cloned.h"
 #include "sim/core/collision_methods.h"
+#include "sim/core/diverged.h"
 #include "sim/core/rattle_watch.h"
 #include "sim/core/settings.h"
 #include "sim/core/step_observer.h"
@@ -27,13 +28,6 @@ class World;
 
 // told of every finished step and every applied event, e.g. to write a trace
 using StepObserver = sim::core::StepObserverOf<World, ImpulseEvent>;
-
-// a body's state stopped being finite
-struct Diverged : std::runtime_error {
-  Diverged(double time, int body);
-  double time;
-  int body;
-};
 
 // a method owned by value: a copy of the world has a copy of its method's state
 using OwnedMethod3 = sim::core::Cloned<Method3>;
@@ -61,7 +55,7 @@ class World {
 
   // resolve `auto` and check dt; called by advanceTo, callable earlier to ask
   void start();
-  // advance to exactly tEnd (events at tEnd included); throws Diverged, and std::invalid_argument
+  // advance to exactly tEnd (events at tEnd included); throws sim::core::Diverged, and std::invalid_argument
   // for dt ≤ 0. The events, the force switches and dt are read when the first call starts the run.
   void advanceTo(double tEnd, StepObserver* observer = nullptr);
   // advance by the steps that advanceTo(tEnd) takes as long as they end by t, never splitting one

@@ -23,7 +23,7 @@ void checkOne(const std::string& text, const std::string& variant) {
     world.start();
     world.advanceTo(kSteps * def.dt);
   } catch (const sim::world::InitialOverlap&) {
-  } catch (const sim::world::Diverged&) {
+  } catch (const sim::core::Diverged&) {
   } catch (const std::runtime_error&) {
     // the methods' own refusals (impacts piling up) are answers, not crashes
   }

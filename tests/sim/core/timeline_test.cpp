@@ -19,13 +19,20 @@ struct RecordingWorld {
   double time = 0.0;
   std::vector<double> ends;
   std::vector<std::string> log;
+  int starts = 0;
+  // the timeline readies the world before its first step or event
+  void start() { ++starts; }
   void step(double stop, double end) {
+    CHECK(starts > 0);
     CHECK(stop > time);
     ends.push_back(end);
     log.push_back("step");
     time = end;
   }
-  void applyEvent(const Event& e) { log.push_back("event " + std::to_string(e.id) + " at " + std::to_string(time)); }
+  void applyEvent(const Event& e) {
+    CHECK(starts > 0);
+    log.push_back("event " + std::to_string(e.id) + " at " + std::to_string(time));
+  }
 };
 
 // counts what an observer is told
@@ -49,6 +56,7 @@ TEST_CASE("steps are cut at the events and the force switches, and the events ap
   CHECK(world.time == 0.5);
   CHECK(observer.steps == 7);
   CHECK(observer.events == 3);
+  CHECK(world.starts == 1);
 }
 
 TEST_CASE("advanceWithin takes the steps that end by t and never splits one at t") {

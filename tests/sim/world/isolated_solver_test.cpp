@@ -149,7 +149,7 @@ TEST_CASE("isolated: the 10-box stack does not stand (the known failure of one i
   bool diverged = false;
   try {
     w.advanceTo(10.0, &watch);
-  } catch (const sim::world::Diverged&) {
+  } catch (const sim::core::Diverged&) {
     diverged = true;
   }
   const double box = 1.0;

@@ -144,7 +144,7 @@ forces: [{type: spring, body: wild, anchor: [0, 0], stiffness: 1e12}]
   try {
     w.advanceTo(100);
     FAIL("no divergence reported");
-  } catch (const sim::world::Diverged& d) {
+  } catch (const sim::core::Diverged& d) {
     CHECK(d.body == 1);
     CHECK(d.time > 0.0);
     CHECK(d.time < 100.0);

@@ -106,7 +106,7 @@ TEST_CASE("unnormalized: |q| drifts by the stability function's modulus, (1 + (h
   for (Integrator m : {Integrator::ExplicitEuler, Integrator::SymplecticEuler}) {
     World w = fixtures3d::freeBox(m, 0.01);
     w = fixtures::redefined(w, [&](auto& d) { d.normalizeQuaternions = false; });
-    CHECK_THROWS_AS(w.advanceTo(10.0), Diverged);
+    CHECK_THROWS_AS(w.advanceTo(10.0), sim::core::Diverged);
   }
   // explicit Euler's drift, spelled out: (1 + 0.0004)^500
   CHECK(fixtures3d::relativeError(std::pow(stepGrowth(Integrator::ExplicitEuler, 0.02), n), std::pow(1.0004, 500)) < 1e-12);

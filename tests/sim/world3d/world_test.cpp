@@ -106,7 +106,7 @@ TEST_CASE("a state that stops being finite is an error naming the time and the b
   try {
     w.advanceTo(100.0);
     FAIL("no divergence");
-  } catch (const Diverged& e) {
+  } catch (const sim::core::Diverged& e) {
     MESSAGE(std::string(e.what()));
     CHECK(e.time == w.time);
     CHECK(e.time < 10.0);
