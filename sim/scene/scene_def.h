@@ -53,7 +53,6 @@ struct ExpectDef : sim::core::ExpectDefOf<sim::core::Vec2> {
 // a 2D scene's model: what 3D's has too (sim/core/scene_def_of.h), and 2D's integrator and solvers' keys
 struct SceneDef : sim::core::SceneDefOf<sim::core::Vec2, BodyDef, ExpectDef> {
   sim::core::Integrator integrator = sim::core::Integrator::SymplecticEuler;
-  sim::core::SourceLoc stepsLoc;  // where dt (or else duration) is set, for messages
   // where `sim: {integrator}` is written (line 0: not in the file), beside collisionsLoc, for the
   // warnings of what a named method leaves out (model_warnings.h)
   sim::core::SourceLoc integratorLoc;

@@ -1,5 +1,5 @@
 // What the 2D and the 3D reader read alike of an `expect` entry (sim/core/expect_def_of.h): its place,
-// its time or `energy_never_rises`, its body, and its energies. Each reader reads the entry's other
+// its time or `energy_never_rises`, its body, its energies and momenta, and its tolerance. Each reader reads the entry's other
 // keys around these, every key in the order it always has, so that a fault is found first as before.
 #pragma once
 
@@ -60,6 +60,22 @@ void readExpectEnergies(const Reader& r, const YAML::Node& n, sim::core::ExpectD
   r.optional(n, "kinetic_energy", e.kineticEnergy, &Reader::finite);
   r.optional(n, "potential_energy", e.potentialEnergy, &Reader::finite);
   r.optional(n, "total_energy", e.totalEnergy, &Reader::finite);
+}
+
+// an entry's energies, momentum and angular momentum (a number in 2D, a vector in 3D: read by
+// `angular`), on the dimension's reader `r`
+template <class DimReader, class Expect, class ReadAngular>
+void readExpectMomenta(const DimReader& r, const YAML::Node& n, Expect& e, ReadAngular angular) {
+  readExpectEnergies(r, n, e);
+  r.optional(n, "momentum", e.momentum, DimReader::kVector);
+  r.optional(n, "angular_momentum", e.angularMomentum, angular);
+}
+
+// an entry's tolerance, and whether its answer is an earlier run's (`source: earlier_run`)
+template <class Vec>
+void readExpectTolerance(const Reader& r, const YAML::Node& n, sim::core::ExpectDefOf<Vec>& e) {
+  r.optional(n, "tolerance", e.tolerance, &Reader::positive);
+  e.earlierRun = r.expectSource(n);
 }
 
 }  // namespace sim::yaml

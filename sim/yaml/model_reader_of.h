@@ -1,7 +1,9 @@
 // What the 2D and the 3D reader of a scene's model read alike, on the dimension's reader (`Base`:
-// sim::yaml::Reader, or sim::yaml3d::Reader3d with its vec3): the heading, the world block, the
-// bound on steps, the list of bodies and their unique names, restitution, and the forces, events and
-// expect entries, counted together toward max_entries. Each reader reads its own keys around these.
+// sim::yaml::Reader, or sim::yaml3d::Reader3d with its vec3): the scene's outline in the order its
+// faults are found (read()), the heading, the world block, the solver's iterations, the bound on
+// steps, the list of bodies and their unique names, restitution, and the forces, events and expect
+// entries, counted together toward max_entries. `Self`, the dimension's reader (a CRTP), reads what
+// is its own: its dimension's check, its sim block, its bodies and its expect entries.
 #pragma once
 
 #include <string>
@@ -19,7 +21,9 @@
 
 namespace sim::yaml {
 
-template <class Base>
+// `Scene`: the model read; Self has checkDimensions(root, dimensions), readSim(sim, scene),
+// readBodies(list, scene) and readExpect(entry, scene), which read() calls
+template <class Base, class Self, class Scene>
 class ModelReaderOf : public Base {
  public:
   // `others`: the keys other layers read from the same maps, accepted and left alone
@@ -27,9 +31,30 @@ class ModelReaderOf : public Base {
     this->placeUnmarked(source.variantMark);
   }
 
+  // the scene's model, read in the order its faults are reported: the scene's keys, its dimension,
+  // heading, world and sim, the bound on steps, the bodies, and the forces, events and expect entries
+  auto read(const SceneSource& source) {
+    Self& self = static_cast<Self&>(*this);
+    const YAML::Node root = source.root;
+    this->checkKeys(root,
+                    with({"name", "description", "dimensions", "duration", "world", "sim", "bodies", "forces", "events",
+                          "variants", "expect"},
+                         others_.scene),
+                    "the scene");
+    self.checkDimensions(root, source.dimensions);
+    Scene s;
+    readHeading(root, source, s);
+    if (const YAML::Node w = root["world"]) readWorld(w, s);
+    if (const YAML::Node sim = root["sim"]) self.readSim(sim, s);
+    // a bound on work: a typo in dt must not run for years, nor one that takes no step
+    s.stepsLoc = this->place(checkStepCount(root, s));
+    self.readBodies(bodyList(root), s);
+    readEntryLists(root, s, [&](const YAML::Node& e) { return self.readExpect(e, s); });
+    return s;
+  }
+
  protected:
   // the variant, name, description and duration; the name names output files, so it must make a path
-  template <class Scene>
   void readHeading(const YAML::Node& root, const SceneSource& source, Scene& s) const {
     s.variant = source.variant;
     s.variantNames = source.variantNames;
@@ -41,19 +66,17 @@ class ModelReaderOf : public Base {
     this->optional(root, "duration", s.duration, &Reader::positive);
   }
 
-  // world: gravity, read by `vector` (&Reader::vec2 or &Reader3d::vec3), and the default restitution
-  // and friction
-  template <class Scene, class ReadVector>
-  void readWorld(const YAML::Node& w, Scene& s, ReadVector vector) const {
+  // world: gravity, read by the dimension's vector reader (Base::kVector: &Reader::vec2 or
+  // &Reader3d::vec3), and the default restitution and friction
+  void readWorld(const YAML::Node& w, Scene& s) const {
     this->checkKeys(w, {"gravity", "restitution", "friction"}, "world");
-    this->optional(w, "gravity", s.gravity, vector);
+    this->optional(w, "gravity", s.gravity, Base::kVector);
     if (w["restitution"]) s.restitution = restitution(w["restitution"]);
     this->optional(w, "friction", s.friction, &Reader::nonNegative);
   }
 
   // the run's steps, refused where they are set (dt, else duration, else the scene) when dt exceeds
   // the duration or the steps exceed max_steps; returns where they are set
-  template <class Scene>
   YAML::Node checkStepCount(const YAML::Node& root, const Scene& s) const {
     const YAML::Node at = root["sim"] && root["sim"]["dt"] ? root["sim"]["dt"] : root["duration"] ? root["duration"] : root;
     if (const std::string over = sim::core::dtOverDuration(s.dt, s.duration); !over.empty())
@@ -63,6 +86,13 @@ class ModelReaderOf : public Base {
                          "; raise dt, shorten duration, or, if the scene needs that many, raise the limit with "
                          "'sim: {max_steps: N}'");
     return at;
+  }
+
+  // sim: the stack solver's iterations (`iterations` for velocities, `position_iterations`)
+  void readIterations(const YAML::Node& sim, Scene& s) const {
+    if (sim["iterations"]) s.velocityIterations = this->wholeNumber(sim["iterations"], "iterations", 1, 1000);
+    if (sim["position_iterations"])
+      s.positionIterations = this->wholeNumber(sim["position_iterations"], "position_iterations", 0, 1000);
   }
 
   // bodies: a list of at least one, within max_bodies
@@ -89,10 +119,10 @@ class ModelReaderOf : public Base {
   }
 
   // the forces, events and expect entries, which count together toward max_entries: forces and
-  // events read alike but for `vector` (as readWorld's), each expect entry by `readExpect(node)`
-  template <class Scene, class ReadVector, class ReadExpect>
-  void readEntryLists(const YAML::Node& root, Scene& s, ReadVector vector, ReadExpect readExpect) const {
-    const auto readVector = [this, vector](const YAML::Node& v, const std::string& key) { return (this->*vector)(v, key); };
+  // events read alike but for their vectors (as readWorld's), each expect entry by `readExpect(node)`
+  template <class ReadExpect>
+  void readEntryLists(const YAML::Node& root, Scene& s, ReadExpect readExpect) const {
+    const auto readVector = [this](const YAML::Node& v, const std::string& key) { return (this->*Base::kVector)(v, key); };
     size_t entries = 0;
     readEntryList(*this, root, "forces", entries, limits_, [&](const YAML::Node& f) { readForce(*this, f, s, readVector); });
     readEntryList(*this, root, "events", entries, limits_,

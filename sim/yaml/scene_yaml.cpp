@@ -19,32 +19,20 @@ using sim::collision::overlappingPart;
 
 namespace {
 
-class SceneReader : public ModelReaderOf<Reader> {
+class SceneReader : public ModelReaderOf<Reader, SceneReader, SceneDef> {
  public:
   using ModelReaderOf::ModelReaderOf;
 
-  SceneDef read(const SceneSource& source) {
-    const YAML::Node root = source.root;
-    checkKeys(root,
-              with({"name", "description", "duration", "world", "sim", "bodies", "forces", "events", "variants", "expect",
-                    "dimensions"},
-                   others_.scene),
-              "the scene");
-    // sceneSourceText has read `dimensions`; a 3D scene's model is sim/yaml3d's to read
-    if (source.dimensions != 2)
+  // sceneSourceText has read `dimensions`; a 3D scene's model is sim/yaml3d's to read
+  void checkDimensions(const YAML::Node& root, int dimensions) const {
+    if (dimensions != 2)
       fail(root["dimensions"], "this reads 2D scenes, and this one is 3D (dimensions: 3); read it with sim::yaml3d::readModel");
-    SceneDef s;
-    readHeading(root, source, s);
-    if (const YAML::Node w = root["world"]) readWorld(w, s, &Reader::vec2);
-    if (const YAML::Node sim = root["sim"]) readSim(sim, s);
-    const YAML::Node stepsAt = checkStepCount(root, s);
-    s.stepsLoc = {stepsAt.Mark().line + 1, stepsAt.Mark().column + 1};
-    for (const YAML::Node& b : bodyList(root)) s.bodies.push_back(readBody(b));
-    readEntryLists(root, s, &Reader::vec2, [&](const YAML::Node& e) { return readExpect(e, s); });
-    return s;
   }
 
- private:
+  void readBodies(const YAML::Node& list, SceneDef& s) {
+    for (const YAML::Node& b : list) s.bodies.push_back(readBody(b));
+  }
+
   // sim: the method, its iterations and options, the integrator and dt; an option that the chosen
   // method does not have is refused at its key
   void readSim(const YAML::Node& sim, SceneDef& s) {
@@ -58,9 +46,7 @@ class SceneReader : public ModelReaderOf<Reader> {
       s.collisions = named(sim["collisions"], "collisions", collisionMethodFromName, kCollisionMethodNames.list());
       s.collisionsLoc = place(sim["collisions"]);
     }
-    if (sim["iterations"]) s.velocityIterations = wholeNumber(sim["iterations"], "iterations", 1, 1000);
-    if (sim["position_iterations"])
-      s.positionIterations = wholeNumber(sim["position_iterations"], "position_iterations", 0, 1000);
+    readIterations(sim, s);
     if (sim["substeps"]) s.substeps = wholeNumber(sim["substeps"], "substeps", 1, 1000);
     optional(sim, "contact_hertz", s.contactHertz, &Reader::positive);
     optional(sim, "sleep", s.sleep, &Reader::boolean);
@@ -249,11 +235,8 @@ class SceneReader : public ModelReaderOf<Reader> {
     optional(n, "angle", e.angle, &Reader::finite);
     optional(n, "velocity", e.velocity, &Reader::vec2);
     optional(n, "angular_velocity", e.angularVelocity, &Reader::finite);
-    readExpectEnergies(*this, n, e);
-    optional(n, "momentum", e.momentum, &Reader::vec2);
-    optional(n, "angular_momentum", e.angularMomentum, &Reader::finite);
-    optional(n, "tolerance", e.tolerance, &Reader::positive);
-    e.earlierRun = expectSource(n);
+    readExpectMomenta(*this, n, e, &Reader::finite);
+    readExpectTolerance(*this, n, e);
     return e;
   }
 };

@@ -161,6 +161,8 @@ class Reader {
     }
     return {finite(n[0], key), finite(n[1], key)};
   }
+  // the dimension's reader of a vector, for what reads 2D and 3D alike (Reader3d's is vec3)
+  static constexpr auto kVector = &Reader::vec2;
 
   std::string text(const YAML::Node& n, const std::string& key) const {
     if (!n.IsScalar()) fail(n, "expected text for '" + key + "', got " + describe(n));

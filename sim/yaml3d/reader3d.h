@@ -16,6 +16,8 @@ class Reader3d : public sim::yaml::Reader {
     if (!n.IsSequence() || n.size() != 3) fail(n, "expected [x, y, z] for '" + key + "', got " + shape(n));
     return {finite(n[0], key), finite(n[1], key), finite(n[2], key)};
   }
+  // the dimension's reader of a vector (Reader's is vec2)
+  static constexpr auto kVector = &Reader3d::vec3;
 
   // `orientation`: a unit quaternion [w, x, y, z] (normalized when its length is 1 to round-off,
   // refused when further off) or {axis: [x, y, z], angle: θ}

@@ -37,37 +37,24 @@ const Refusals kShapeRefusals = {
     {"polygon", "'polygon' is a 2D shape; in 3D a shape is {box: [a, b, c]}, {sphere: r} or {ellipsoid: [a, b, c]}"}};
 const Refusals kExpectRefusals = {{"angle", "a 3D body's rotation is checked by 'orientation': [w, x, y, z]"}};
 
-class SceneReader3d : public ModelReaderOf<Reader3d> {
+class SceneReader3d : public ModelReaderOf<Reader3d, SceneReader3d, SceneDef> {
  public:
   using ModelReaderOf::ModelReaderOf;
 
-  SceneDef read(const SceneSource& source) {
-    const YAML::Node root = source.root;
-    checkKeys(root,
-              with({"name", "description", "dimensions", "duration", "world", "sim", "bodies", "forces", "events", "variants",
-                    "expect"},
-                   others_.scene),
-              "the scene");
-    if (source.dimensions != 3) fail(root, "this reads 3D scenes, which say 'dimensions: 3'");
-    SceneDef s;
-    readHeading(root, source, s);
-    if (const YAML::Node w = root["world"]) readWorld(w, s, &Reader3d::vec3);
-    if (const YAML::Node sim = root["sim"]) readSim(sim, s);
-    // a bound on work, as in 2D: a typo in dt must not run for years, nor one that takes no step
-    checkStepCount(root, s);
-    const YAML::Node bodies = bodyList(root);
-    for (const YAML::Node& b : bodies) {
-      // an obstacle: {plane: {point, normal}} is a static half-space, apart from the bodies
+  void checkDimensions(const YAML::Node& root, int dimensions) const {
+    if (dimensions != 3) fail(root, "this reads 3D scenes, which say 'dimensions: 3'");
+  }
+
+  // the bodies, and the obstacles among them: {plane: {point, normal}} is a static half-space
+  void readBodies(const YAML::Node& list, SceneDef& s) {
+    for (const YAML::Node& b : list) {
       if (b.IsMap() && b["shape"] && b["shape"].IsMap() && b["shape"]["plane"]) s.planes.push_back(readPlane(b));
       else s.bodies.push_back(readBody(b));
     }
-    if (s.bodies.empty()) fail(bodies, "a scene needs at least one body that moves; planes are obstacles only");
-    checkPairs(bodies, s);
-    readEntryLists(root, s, &Reader3d::vec3, [&](const YAML::Node& e) { return readExpect(e, s); });
-    return s;
+    if (s.bodies.empty()) fail(list, "a scene needs at least one body that moves; planes are obstacles only");
+    checkPairs(list, s);
   }
 
- private:
   // sim: the method and its iterations, the integrator, dt and normalize; a 2D option is refused
   // with why 3D has none
   void readSim(const YAML::Node& sim, SceneDef& s) {
@@ -81,9 +68,7 @@ class SceneReader3d : public ModelReaderOf<Reader3d> {
         fail(c, "'" + c.Scalar() + "' is a 2D method; 3D scenes take 'auto', 'none', 'event' or 'sequential'");
       s.collisionsLoc = place(c);
     }
-    if (sim["iterations"]) s.velocityIterations = wholeNumber(sim["iterations"], "iterations", 1, 1000);
-    if (sim["position_iterations"])
-      s.positionIterations = wholeNumber(sim["position_iterations"], "position_iterations", 0, 1000);
+    readIterations(sim, s);
     optional(sim, "max_steps", s.maxSteps, &Reader::positive);
     readSizeLimits(*this, sim, limits_);
     if (sim["integrator"])
@@ -202,16 +187,19 @@ class SceneReader3d : public ModelReaderOf<Reader3d> {
     optional(n, "velocity", e.velocity, &Reader3d::vec3);
     optional(n, "angular_velocity", e.angularVelocity, &Reader3d::vec3);
     optional(n, "quaternion_norm", e.quaternionNorm, &Reader::positive);
-    readExpectEnergies(*this, n, e);
-    optional(n, "momentum", e.momentum, &Reader3d::vec3);
-    optional(n, "angular_momentum", e.angularMomentum, &Reader3d::vec3);
+    readExpectMomenta(*this, n, e, &Reader3d::vec3);
+    readTopAnswers(n, e);
+    readExpectTolerance(*this, n, e);
+    return e;
+  }
+
+  // the free body's closed forms (sim/scene3d/scene_def.h): the angle between ω and L, the rates of
+  // ω about the symmetry axis in the body and of that axis about L in space, and ω's flip period
+  void readTopAnswers(const YAML::Node& n, ExpectDef& e) const {
     optional(n, "cone_angle", e.coneAngle, &Reader::nonNegative);
     optional(n, "precession_rate", e.precessionRate, &Reader::finite);
     optional(n, "space_precession_rate", e.spacePrecessionRate, &Reader::finite);
     optional(n, "flip_period", e.flipPeriod, &Reader::positive);
-    optional(n, "tolerance", e.tolerance, &Reader::positive);
-    e.earlierRun = expectSource(n);
-    return e;
   }
 };
 
@@ -223,10 +211,6 @@ SceneDef readModel(const SceneSource& source, const OtherKeys& others) {
 
 SceneDef loadSceneText(const std::string& text, const std::string& file, const std::string& variant) {
   return sim::yaml3d::readModel(sim::yaml::sceneSourceText(text, file, variant));
-}
-
-SceneDef loadSceneFile(const std::string& path, const std::string& variant) {
-  return sim::yaml3d::readModel(sim::yaml::readSceneSource(path, variant));
 }
 
 }  // namespace sim::yaml3d

@@ -16,9 +16,7 @@ namespace sim::yaml3d {
 // Throws sim::yaml::SceneError.
 sim::scene3d::SceneDef readModel(const sim::yaml::SceneSource& source, const sim::yaml::OtherKeys& others = {});
 
-// the model of a file that has nothing but the model
-sim::scene3d::SceneDef loadSceneFile(const std::string& path, const std::string& variant = "");
-// the same from text; `file` names it in messages
+// the model of text that has nothing but the model; `file` names it in messages
 sim::scene3d::SceneDef loadSceneText(const std::string& text, const std::string& file, const std::string& variant = "");
 
 }  // namespace sim::yaml3d
