@@ -15,13 +15,6 @@ using namespace render::trace;
 
 namespace {
 
-// the scene drawn at the golden size
-render::scene::Scene atGoldenSize(render::scene::Scene scene, const GoldenDef& golden) {
-  scene.render.width = golden.width;
-  scene.render.height = golden.height;
-  return scene;
-}
-
 TraceSample sampleOf(const sim::world::World& w, size_t i) {
   const sim::core::Body& b = w.bodies[i];
   return {w.time, b.x.x(), b.x.y(), b.angle, b.v.x(), b.v.y(), b.omega, sim::world::kineticEnergy(b).total(), 0};
@@ -34,11 +27,9 @@ std::string frameName(double t) { return "frame-t" + render::video::timeForName(
 GoldenRun runGolden(const render::scene::Scene& original, const GoldenDef& golden, const GoldenTimes* asked, bool pixels) {
   const render::scene::Scene scene = atGoldenSize(original, golden);
   GoldenRun run = goldenRunOf(scene.model, false);
-  // kept at the instants known before the run (all but its impacts'), for the shots to go on from
-  const render::frame::RunSurvey survey =
-      render::frame::surveyRun(scene, -1.0, asked ? asked->checkpoints : goldenTimes(scene.model, golden, {}).checkpoints);
-  const GoldenTimes times = asked ? *asked : goldenTimes(scene.model, golden, survey.impactTimes);
-  const render::draw::Camera camera = render::frame::cameraFor(scene, survey);
+  const auto surveyed = surveyGolden(scene, golden, asked, [](const auto&... a) { return render::frame::surveyRun(a...); });
+  const GoldenTimes& times = surveyed.times;
+  const render::draw::Camera camera = render::frame::cameraFor(scene, surveyed.survey);
   const render::draw::Style style = render::scene::makeStyle(scene, golden.height);
   // every instant once: a frame's time is also a checkpoint
   const std::vector<double>& instants = times.checkpoints;
@@ -50,7 +41,7 @@ GoldenRun runGolden(const render::scene::Scene& original, const GoldenDef& golde
   // frames named with as many digits as tell every two apart (0.5 and 0.5000004 are two files)
   const std::vector<std::string> names = render::video::timesForNames(times.frames);
   GoldenDrawing drawing(golden, pixels, run);
-  render::frame::SceneRun sceneRun(scene, camera, survey, drawing.gl(), drawing.text());
+  render::frame::SceneRun sceneRun(scene, camera, surveyed.survey, drawing.gl(), drawing.text());
   sceneRun.shotsAt(instants, pictured, [&](size_t i, const render::frame::SceneRun::Shot& shot) {
     Checkpoint& c = run.checkpoints[i];
     c.t = instants[i];

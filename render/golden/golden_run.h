@@ -67,6 +67,14 @@ GoldenTimes goldenTimes(const Model& model, const GoldenDef& golden, const std::
   return times;
 }
 
+// the scene (2D or 3D) drawn at the golden size
+template <class Scene>
+Scene atGoldenSize(Scene scene, const GoldenDef& golden) {
+  scene.render.width = golden.width;
+  scene.render.height = golden.height;
+  return scene;
+}
+
 // a run of `model` (2D or 3D) before its checkpoints and frames: its record's name and its bodies
 template <class Model>
 GoldenRun goldenRunOf(const Model& model, bool threeD) {
@@ -77,11 +85,26 @@ GoldenRun goldenRunOf(const Model& model, bool threeD) {
   return run;
 }
 
+// a golden record's survey and times: the survey (by `surveyRun`, 2D's or 3D's) keeps its run at the
+// instants known before it (all but its impacts'), for the shots to go on from; the times are `asked`
+// or, when null, those the scene's golden: block asks for with the survey's impacts
+template <class Survey>
+struct GoldenSurvey {
+  Survey survey;
+  GoldenTimes times;
+};
+template <class Scene, class SurveyRun>
+auto surveyGolden(const Scene& scene, const GoldenDef& golden, const GoldenTimes* asked, SurveyRun surveyRun) {
+  auto survey = surveyRun(scene, -1.0, asked ? asked->checkpoints : goldenTimes(scene.model, golden, {}).checkpoints);
+  GoldenTimes times = asked ? *asked : goldenTimes(scene.model, golden, survey.impactTimes);
+  return GoldenSurvey<decltype(survey)>{std::move(survey), std::move(times)};
+}
+
 // the run at `times`, or (null) at those its golden: block asks for, the impacts taken from the
 // survey the drawing needs anyway, which keeps its run at the instants known before it (the scene is
 // stepped once; an impact's frame steps from the kept state before it); frames at the
 // golden size; without `pixels` no GL is loaded and the frames are draw lists alone. Throws
-// sim::world::Diverged, std::runtime_error (GL).
+// sim::core::Diverged, std::runtime_error (GL).
 GoldenRun runGolden(const render::scene::Scene& scene, const GoldenDef& golden, const GoldenTimes* times, bool pixels);
 
 // "frame-t1.5"

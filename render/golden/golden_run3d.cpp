@@ -12,14 +12,10 @@
 namespace render::golden {
 
 GoldenRun runGolden(const render::scene3d::Scene& original, const GoldenDef& golden, const GoldenTimes* asked, bool pixels) {
-  render::scene3d::Scene scene = original;
-  scene.render.width = golden.width;
-  scene.render.height = golden.height;
+  const render::scene3d::Scene scene = atGoldenSize(original, golden);
   GoldenRun run = goldenRunOf(scene.model, true);
-  // kept at the instants known before the run (all but its impacts'), for the shots to go on from
-  const render::frame3d::RunSurvey3d survey =
-      render::frame3d::surveyRun(scene, -1.0, asked ? asked->checkpoints : goldenTimes(scene.model, golden, {}).checkpoints);
-  const GoldenTimes times = asked ? *asked : goldenTimes(scene.model, golden, survey.impactTimes);
+  const auto [survey, times] =
+      surveyGolden(scene, golden, asked, [](const auto&... a) { return render::frame3d::surveyRun(a...); });
   const render::draw3d::Camera3d camera = render::frame3d::cameraFor(scene, survey);
   const render::draw::Style style = render::scene3d::makeStyle(scene, golden.height);
   GoldenDrawing drawing(golden, pixels, run);

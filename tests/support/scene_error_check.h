@@ -34,12 +34,15 @@ void expectSceneError(Load load, const std::string& file, const std::string& tex
   }
 }
 
+// the name the readers' tests give their inline scene texts
+inline const std::string kInlineFile = "inline.yaml";
+
 // the check of one reader's inline scene text, for the readers' tests: `load(text, file, variant)` is
 // the 2D or the 3D reader's loadSceneText, and `file` names the text in its messages
 template <class Load>
 struct InlineSceneErrors {
   Load load;
-  std::string file;
+  std::string file = kInlineFile;
 
   // loading `text` (with `variant`) must throw as expectSceneError says
   void operator()(const std::string& text, int line, int column, std::initializer_list<std::string> words,
@@ -50,6 +53,8 @@ struct InlineSceneErrors {
 // (spelled out: clang 14, the sanitizers' compiler, does not deduce an aggregate's arguments)
 template <class Load>
 InlineSceneErrors(Load, std::string) -> InlineSceneErrors<Load>;
+template <class Load>
+InlineSceneErrors(Load) -> InlineSceneErrors<Load>;
 
 }  // namespace scene_errors
 

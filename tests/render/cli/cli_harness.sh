@@ -1,5 +1,6 @@
 # What the command-line test scripts share (sourced, not run): their arguments, a scratch
-# directory removed at exit, and the ok / not ok bookkeeping of the cases.
+# directory removed at exit, the ok / not ok bookkeeping of the cases, and reading what `golden check`
+# reports (a level's line, a JUnit file), and checking the entries `expect` printed.
 #
 # cli_setup NAME "$@": checks the arguments <path-to-rigidreel> <project-source-dir>; sets BIN and
 # SRC (absolute), WORK (a new scratch directory, removed at exit) and changes into it
@@ -45,4 +46,19 @@ expect() {  # expect NAME CODE TEXT ARGS...: exits CODE and stderr contains TEXT
 cli_finish() {  # the count, and the script's exit status
   echo "$passed passed, $failed failed"
   [ "$failed" -eq 0 ]
+}
+junit() {  # junit FILE: "tests failures", as python's XML parser counts the testcases and their failures
+  python3 -c '
+import sys, xml.etree.ElementTree as ET
+cases = ET.parse(sys.argv[1]).getroot().findall(".//testcase")
+print(len(cases), sum(1 for c in cases if c.find("failure") is not None))' "$1"
+}
+level() {  # level NAME: the line `golden check` printed (in ./out) for that level of the record in $G
+  grep "^$(basename "$G")  $1  " out
+}
+pasted() {  # pasted SCENE OKS NAME: expect's entries (./out) appended to SCENE pass check, OKS comparisons ok
+  { cat "$1"; cat out; } >pasted.yaml
+  run check pasted.yaml
+  [ "$rc" -eq 0 ] && [ "$(grep -c '^  ok ' out)" -eq "$2" ]
+  check "$3" $? "exit $rc: $(head -c 400 out)"
 }

@@ -16,11 +16,7 @@
 
 namespace {
 
-const char* const kFile = "inline.yaml";
-
-// loading `text` (with `variant`) must throw a SceneError at `line`:`column` (column 0: not
-// checked) whose message contains every one of `words`
-const scene_errors::InlineSceneErrors expectSceneError{sim::yaml::loadSceneText, kFile};
+const scene_errors::InlineSceneErrors expectSceneError{sim::yaml::loadSceneText};
 
 // one body `a` (a unit circle) on lines 1-3; tests append lines 4, 5, ...
 const std::string kOneBody =
@@ -30,7 +26,7 @@ const std::string kOneBody =
 
 // the model of a scene whose bodies may have the renderer's keys too, as the command line reads it
 sim::scene::SceneDef load(const std::string& text, const std::string& variant = "") {
-  return sim::yaml::readModel(sim::yaml::sceneSourceText(text, kFile, variant), {{}, {"color", "label"}});
+  return sim::yaml::readModel(sim::yaml::sceneSourceText(text, scene_errors::kInlineFile, variant), {{}, {"color", "label"}});
 }
 
 }  // namespace
@@ -104,7 +100,7 @@ TEST_CASE("unknown keys name the nearest valid key") {
                          {"unknown key '" + shape + "' in shape", "choose one of: box, polygon, circle, plane"});
       std::string message;
       try {
-        sim::yaml::loadSceneText("bodies:\n  - name: a\n    shape: {" + shape + ": 1}\n", kFile, "");
+        sim::yaml::loadSceneText("bodies:\n  - name: a\n    shape: {" + shape + ": 1}\n", scene_errors::kInlineFile, "");
       } catch (const sim::yaml::SceneError& e) {
         message = e.what();
       }
@@ -598,20 +594,21 @@ TEST_CASE("the model reads its own keys: another layer's key is unknown unless t
   const std::string text = "bodies:\n  - {name: a, shape: {circle: 1}, color: \"#112233\"}\nrender: {fps: 30}\n";
   // the renderer reads `color` and `render`; the model alone rejects them, naming the key
   try {
-    (void)sim::yaml::loadSceneText(text, kFile);
+    (void)sim::yaml::loadSceneText(text, scene_errors::kInlineFile);
     FAIL_CHECK("the scene loaded; expected a SceneError");
   } catch (const sim::yaml::SceneError& e) {
     CHECK(e.line == 3);
     CHECK(e.message.find("unknown key 'render' in the scene") != std::string::npos);
   }
   try {
-    (void)sim::yaml::readModel(sim::yaml::sceneSourceText(text, kFile), {{"render"}, {}});
+    (void)sim::yaml::readModel(sim::yaml::sceneSourceText(text, scene_errors::kInlineFile), {{"render"}, {}});
     FAIL_CHECK("the scene loaded; expected a SceneError");
   } catch (const sim::yaml::SceneError& e) {
     CHECK(e.line == 2);
     CHECK(e.message.find("unknown key 'color' in a body") != std::string::npos);
   }
-  const sim::scene::SceneDef s = sim::yaml::readModel(sim::yaml::sceneSourceText(text, kFile), {{"render"}, {"color"}});
+  const sim::scene::SceneDef s =
+      sim::yaml::readModel(sim::yaml::sceneSourceText(text, scene_errors::kInlineFile), {{"render"}, {"color"}});
   CHECK(s.bodies.size() == 1);
 }
 
@@ -799,8 +796,8 @@ TEST_CASE("a run of more steps than max_steps is refused at dt, or at duration, 
                    {"the run needs 1e+18 steps", "more than the limit of 1e+08", "raise dt", "max_steps"});
   expectSceneError("duration: 1.0e6\nbodies: [{name: a, shape: {box: [1, 1]}}]\n", 1, 11, {"1e+09 steps"});
   // the scene that needs them says so
-  const auto def =
-      sim::yaml::loadSceneText("duration: 1.0e6\nsim: {max_steps: 1.0e9}\nbodies: [{name: a, shape: {box: [1, 1]}}]\n", kFile);
+  const auto def = sim::yaml::loadSceneText(
+      "duration: 1.0e6\nsim: {max_steps: 1.0e9}\nbodies: [{name: a, shape: {box: [1, 1]}}]\n", scene_errors::kInlineFile);
   CHECK(def.maxSteps == 1e9);
 }
 

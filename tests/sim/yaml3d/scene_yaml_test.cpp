@@ -17,9 +17,7 @@ using namespace sim::world3d;
 
 namespace {
 
-const char* const kFile = "inline.yaml";
-
-const scene_errors::InlineSceneErrors expectSceneError{sim::yaml3d::loadSceneText, kFile};
+const scene_errors::InlineSceneErrors expectSceneError{sim::yaml3d::loadSceneText};
 
 // a 3D scene with one body `a` (a unit cube) on lines 1-4; tests append lines 5, 6, ...
 const std::string kOneBody =
@@ -51,7 +49,7 @@ events:
 expect:
   - {time: 2, body: brick, orientation: [0, 1, 0, 0], flip_period: 3, tolerance: 1e-6}
 )",
-                                                kFile);
+                                                scene_errors::kInlineFile);
   CHECK(s.name == "inline");
   CHECK(s.duration == 2.0);
   CHECK(s.gravity == Vec3(0, 0, -9.81));
@@ -88,7 +86,7 @@ expect:
 }
 
 TEST_CASE("3D defaults: the splitting, normalized, unit density, at rest at the origin") {
-  const SceneDef s = sim::yaml3d::loadSceneText(kOneBody, kFile);
+  const SceneDef s = sim::yaml3d::loadSceneText(kOneBody, scene_errors::kInlineFile);
   CHECK(s.integrator == Integrator::Splitting);
   CHECK(s.normalize);
   CHECK(s.gravity == Vec3::Zero());
@@ -99,7 +97,8 @@ TEST_CASE("3D defaults: the splitting, normalized, unit density, at rest at the 
 }
 
 TEST_CASE("a typed quaternion within round-off of unit length is normalized; one further off is refused") {
-  const SceneDef s = sim::yaml3d::loadSceneText(kOneBody + "    orientation: [0.7071068, 0.7071068, 0, 0]\n", kFile);
+  const SceneDef s =
+      sim::yaml3d::loadSceneText(kOneBody + "    orientation: [0.7071068, 0.7071068, 0, 0]\n", scene_errors::kInlineFile);
   CHECK(std::abs(s.bodies[0].orientation.norm() - 1.0) < 1e-15);
   EXPECT_SCENE_ERROR(kOneBody + "    orientation: [1, 0.1, 0, 0]\n", 5, 18, {"unit length", "1.004988"});
   EXPECT_SCENE_ERROR(kOneBody + "    orientation: [1, 0, 0]\n", 5, 18, {"[w, x, y, z]", "3 values"});
@@ -119,12 +118,12 @@ TEST_CASE("variants deep-merge over a 3D scene as over a 2D one, and cannot chan
                            "variants:\n"
                            "  fast: {bodies: [{name: a, velocity: [2, 0, 0]}], sim: {integrator: rk4}}\n"
                            "  base: {}\n";
-  const SceneDef fast = sim::yaml3d::loadSceneText(good, kFile, "fast");
+  const SceneDef fast = sim::yaml3d::loadSceneText(good, scene_errors::kInlineFile, "fast");
   CHECK(fast.variant == "fast");
   CHECK(fast.variantNames == std::vector<std::string>{"fast", "base"});
   CHECK(fast.bodies[0].velocity == Vec3(2, 0, 0));
   CHECK(fast.integrator == Integrator::Rk4);
-  CHECK(sim::yaml3d::loadSceneText(good, kFile, "base").bodies[0].velocity == Vec3(1, 0, 0));
+  CHECK(sim::yaml3d::loadSceneText(good, scene_errors::kInlineFile, "base").bodies[0].velocity == Vec3(1, 0, 0));
 }
 
 TEST_CASE("2D keys in a 3D scene say why 3D has none; 3D keys are checked where they are written") {
@@ -152,10 +151,11 @@ TEST_CASE("2D keys in a 3D scene say why 3D has none; 3D keys are checked where 
 TEST_CASE("dimensions: 2 or 3, read once for every reader; the 2D reader refuses a 3D scene") {
   EXPECT_SCENE_ERROR("dimensions: 4\nbodies: [{name: a, shape: {box: [1, 1, 1]}}]\n", 1, 13, {"2", "3"});
   // the 2D reader takes `dimensions: 2` as it takes no dimensions at all, and says where a 3D scene is read
-  CHECK(sim::yaml::loadSceneText("dimensions: 2\nbodies: [{name: a, shape: {circle: 1}}]\n", kFile).bodies.size() == 1);
+  CHECK(sim::yaml::loadSceneText("dimensions: 2\nbodies: [{name: a, shape: {circle: 1}}]\n", scene_errors::kInlineFile)
+            .bodies.size() == 1);
   scene_errors::expectSceneError(
-      [](const std::string& t, const std::string& f, const std::string& v) { return sim::yaml::loadSceneText(t, f, v); }, kFile,
-      kOneBody, 1, 13, {"3D", "sim::yaml3d"});
+      [](const std::string& t, const std::string& f, const std::string& v) { return sim::yaml::loadSceneText(t, f, v); },
+      scene_errors::kInlineFile, kOneBody, 1, 13, {"3D", "sim::yaml3d"});
   // and the 3D reader a 2D one
   EXPECT_SCENE_ERROR("bodies: [{name: a, shape: {box: [1, 1, 1]}}]\n", 1, 1, {"dimensions: 3"});
 }
@@ -165,7 +165,8 @@ TEST_CASE("a 3D scene's name is one file name, and its run is bounded, as in 2D"
   EXPECT_SCENE_ERROR("name: \"\"\n" + kOneBody, 1, 7, {"names its output files"});
   // 1e-12 for 1e-2: 1e15 steps, refused at the dt that asks for them, naming the way to allow them
   EXPECT_SCENE_ERROR(kOneBody + "duration: 1000\nsim: {dt: 1e-12}\n", 6, 11, {"1e+15 steps", "max_steps"});
-  const SceneDef allowed = sim::yaml3d::loadSceneText(kOneBody + "duration: 1\nsim: {dt: 1e-3, max_steps: 1000}\n", kFile, "");
+  const SceneDef allowed =
+      sim::yaml3d::loadSceneText(kOneBody + "duration: 1\nsim: {dt: 1e-3, max_steps: 1000}\n", scene_errors::kInlineFile, "");
   CHECK(allowed.maxSteps == 1000.0);
   EXPECT_SCENE_ERROR(kOneBody + "duration: 1\nsim: {dt: 1e-3, max_steps: 999}\n", 6, 11, {"1000 steps", "999"});
 }
@@ -178,7 +179,7 @@ TEST_CASE("planes, restitution, friction and the collision methods of a 3D scene
       "bodies:\n"
       "  - {name: floor, shape: {plane: {point: [0, 0, -1], normal: [0, 0, 2]}}, friction: 0.9}\n"
       "  - {name: ball, shape: {sphere: 0.5}, restitution: 0.8}\n";
-  const sim::scene3d::SceneDef s = sim::yaml3d::loadSceneText(scene, kFile);
+  const sim::scene3d::SceneDef s = sim::yaml3d::loadSceneText(scene, scene_errors::kInlineFile);
   REQUIRE(s.planes.size() == 1);
   REQUIRE(s.bodies.size() == 1);
   CHECK(s.planes[0].name == "floor");
@@ -209,7 +210,7 @@ TEST_CASE("planes, restitution, friction and the collision methods of a 3D scene
   CHECK(
       sim::yaml3d::loadSceneText("dimensions: 3\nbodies:\n  - {name: a, shape: {box: [1, 1, 1]}}\n  - {name: b, shape: {box: [1, "
                                  "1, 1]}}\n",
-                                 kFile)
+                                 scene_errors::kInlineFile)
           .bodies.size() == 2);
   // but two spheres may meet under auto without a plane, so a box beside them is refused too
   EXPECT_SCENE_ERROR(
@@ -222,7 +223,7 @@ TEST_CASE("planes, restitution, friction and the collision methods of a 3D scene
     const sim::scene3d::SceneDef s =
         sim::yaml3d::loadSceneText(std::string("dimensions: 3\nbodies:\n  - {name: f, shape: {plane: {normal: ") + normal +
                                        "}}}\n  - {name: b, shape: {sphere: 1}, position: [5, 0, 0]}\n",
-                                   kFile);
+                                   scene_errors::kInlineFile);
     CHECK(s.planes[0].normal.norm() == doctest::Approx(1.0).epsilon(1e-15));
     CHECK(s.planes[0].normal.x() > 0.5);
   }
