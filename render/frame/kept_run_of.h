@@ -46,9 +46,11 @@ KeptRunOf<State, Options> keepRunOf(Options options, World world, double end, st
       follower_.afterEvent(w, e);
     }
     // the history is told of every step until its paths, which keep every step's point, outgrow
-    // their bound: from then on nothing more is kept (a trail of 10 bodies over 10⁶ steps: 160 MB)
+    // their bound: from then on nothing more is kept (a trail of 10 bodies over 10⁶ steps: 160 MB).
+    // Their size is a sum over the bodies, so it is looked at every 64th step: the paths grow by a
+    // point a step, 64 points past the bound at most
     bool recording() {
-      full_ = full_ || history_.pathBytes() > render::scene::kKeptPathBytes;
+      if (!full_ && calls_++ % 64 == 0) full_ = history_.pathBytes() > render::scene::kKeptPathBytes;
       return !full_;
     }
 
@@ -56,6 +58,7 @@ KeptRunOf<State, Options> keepRunOf(Options options, World world, double end, st
     History& history_;
     StepObserver& follower_;
     bool full_ = false;
+    unsigned long calls_ = 0;
   };
 
   KeptRunOf<State, Options> kept{std::move(options), end, {}, 0};

@@ -25,6 +25,14 @@ using namespace render::scene;
 
 namespace {
 
+// max(largest, scale·√square), the root taken only where it may be the larger: a step's speeds
+// rarely raise the survey's, and the root is monotone (the slack covers the product's rounding), so
+// the result is the same to the bit as max(largest, scale·√square)
+double largerRoot(double largest, double scale, double square) {
+  if (!(scale * scale * square >= largest * largest * (1.0 - 1e-9))) return largest;
+  return std::max(largest, scale * std::sqrt(square));
+}
+
 // the bodies' extent and speed after every step
 class Surveyor : public sim::world::StepObserver {
  public:
@@ -36,7 +44,9 @@ class Surveyor : public sim::world::StepObserver {
       for (const sim::core::Body& b : world.bodies) extents_.push_back(extentOf(b.shape));
     for (size_t i = 0; i < world.bodies.size(); ++i) {
       const sim::core::Body& b = world.bodies[i];
-      out_.maxSpeed = std::max(out_.maxSpeed, b.v.norm());
+      // a static body never moves: its bounds once, at the start
+      if (b.isStatic && staticsSeen_) continue;
+      out_.maxSpeed = largerRoot(out_.maxSpeed, 1.0, b.v.squaredNorm());
       if (inside(b.x, extents_[i])) continue;
       const Bounds box = bodyBounds(b);
       out_.bounds.add(box);
@@ -55,6 +65,7 @@ class Surveyor : public sim::world::StepObserver {
         theirs.x = pose.x, theirs.angle = pose.angle;
         out_.bounds.add(bodyBounds(theirs));
       }
+    staticsSeen_ = true;
   }
   void afterEvent(const sim::world::World& world, const sim::world::ImpulseEvent&) override { afterStep(world); }
 
@@ -83,6 +94,7 @@ class Surveyor : public sim::world::StepObserver {
   const render::scene::Scene& def_;
   RunSurvey& out_;
   std::vector<double> extents_;  // extentOf each body's shape
+  bool staticsSeen_ = false;     // the static bodies' bounds are in
 };
 
 }  // namespace
@@ -144,7 +156,7 @@ void surveyOverlays(const render::scene::Scene& def, const sim::world::World& wo
     const sim::core::Body& b = world.bodies[i];
     if (b.isStatic) continue;
     out.maxOmega = std::max(out.maxOmega, std::abs(b.omega));
-    out.maxMomentum = std::max(out.maxMomentum, b.mass * b.v.norm());
+    out.maxMomentum = largerRoot(out.maxMomentum, b.mass, b.v.squaredNorm());
     if (world.def().forces.pointForces.empty()) continue;
     const std::vector<AppliedForce> forces = pointForcesOn(world, static_cast<int>(i));
     for (const AppliedForce& f : forces) out.maxForce = std::max(out.maxForce, f.force.norm());
