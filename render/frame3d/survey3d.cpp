@@ -6,6 +6,7 @@
 #include "render/frame/caption.h"
 #include "render/frame/shared_scales.h"
 #include "render/frame3d/energy3d.h"
+#include "render/jobs/interrupt.h"
 #include "render/scene/scene_style.h"
 #include "sim/scene3d/scene_build.h"
 #include "sim/world3d/diagnostics.h"
@@ -20,6 +21,8 @@ class Surveyor : public StepObserver {
  public:
   Surveyor(const render::scene3d::Scene& def, RunSurvey3d& out) : def_(def), out_(out) {}
   void afterStep(const World& w) override {
+    // the survey runs the whole scene before the first frame: Ctrl-C must stop it too
+    render::jobs::checkInterrupted();
     for (const Body& b : w.bodies) {
       out_.bounds.add(Ball{b.x, boundingRadius(b.shape)});
       out_.maxSpeed = std::max(out_.maxSpeed, b.v.norm());
