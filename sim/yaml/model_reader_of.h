@@ -33,7 +33,7 @@ class ModelReaderOf : public Base {
 
   // the scene's model, read in the order its faults are reported: the scene's keys, its dimension,
   // heading, world and sim, the bound on steps, the bodies, and the forces, events and expect entries
-  auto read(const SceneSource& source) {
+  Scene read(const SceneSource& source) {
     Self& self = static_cast<Self&>(*this);
     const YAML::Node root = source.root;
     this->checkKeys(root,
