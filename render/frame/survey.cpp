@@ -41,14 +41,19 @@ class Surveyor : public sim::world::StepObserver {
     // the survey runs the whole scene before the first frame: Ctrl-C must stop it too
     render::jobs::checkInterrupted();
     if (extents_.empty())
-      for (const sim::core::Body& b : world.bodies) extents_.push_back(extentOf(b.shape));
+      for (const sim::core::Body& b : world.bodies) {
+        extents_.push_back(extentOf(b.shape));
+        radii_.push_back(sim::core::boundingRadius(b.shape));
+      }
+    last_.resize(world.bodies.size());
     for (size_t i = 0; i < world.bodies.size(); ++i) {
       const sim::core::Body& b = world.bodies[i];
       // a static body never moves: its bounds once, at the start
       if (b.isStatic && staticsSeen_) continue;
       out_.maxSpeed = largerRoot(out_.maxSpeed, 1.0, b.v.squaredNorm());
-      if (inside(b.x, extents_[i])) continue;
+      if (inside(b.x, extents_[i]) || withinLast(b, i)) continue;
       const Bounds box = bodyBounds(b);
+      last_[i] = {box, b.x, b.angle};
       out_.bounds.add(box);
       // which body stretches the automatic camera most: the one to name when the view is too large
       const double reach = std::max(box.min.cwiseAbs().maxCoeff(), box.max.cwiseAbs().maxCoeff());
@@ -85,16 +90,49 @@ class Surveyor : public sim::world::StepObserver {
   bool inside(const Vec2& x, double extent) const {
     if (!(extent >= 0.0)) return false;
     const double reach = extent + 1e-9 * (extent + x.cwiseAbs().maxCoeff());
-    const Vec2 lo = x.array() - reach, hi = x.array() + reach;
+    return covered(x.array() - reach, x.array() + reach);
+  }
+  // the same with the body's bounds when they were last taken, moved along with its center and
+  // grown by how far its turning since has carried any point of it, r |Δθ| (an arc is longer than
+  // its chord), with room for rounding. A body near the view's edge, where its extent reaches past
+  // it, then takes its bounds (a sine and cosine) only where it may be going past that edge. Along
+  // an axis where neither its center nor its angle has changed, the bounds are the same to the bit,
+  // so a body resting at the edge (the one that set it) needs no room there
+  bool withinLast(const sim::core::Body& b, size_t i) const {
+    const LastBounds& last = last_[i];
+    if (last.box.empty()) return false;
+    const double r = radii_[i];
+    const double grow = r * std::abs(b.angle - last.angle) +
+                        1e-9 * (r * (1.0 + std::abs(b.angle)) + b.x.cwiseAbs().maxCoeff() + last.x.cwiseAbs().maxCoeff());
+    Vec2 lo = last.box.min, hi = last.box.max;
+    for (int a = 0; a < 2; ++a) {
+      if (b.x[a] == last.x[a] && b.angle == last.angle) continue;
+      lo[a] += b.x[a] - last.x[a] - grow;
+      hi[a] += b.x[a] - last.x[a] + grow;
+    }
+    return covered(lo, hi);
+  }
+  // [lo, hi] lies inside what the survey holds already, and no farther from the origin than its
+  // farthest (false where either is not finite)
+  bool covered(const Vec2& lo, const Vec2& hi) const {
     const Bounds& b = out_.bounds;
     return lo.x() >= b.min.x() && lo.y() >= b.min.y() && hi.x() <= b.max.x() && hi.y() <= b.max.y() &&
            std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff()) <= out_.farthest;
   }
 
+  // a body's bounds where they were last taken
+  struct LastBounds {
+    Bounds box;  // empty: not taken yet
+    Vec2 x = Vec2::Zero();
+    double angle = 0.0;
+  };
+
   const render::scene::Scene& def_;
   RunSurvey& out_;
-  std::vector<double> extents_;  // extentOf each body's shape
-  bool staticsSeen_ = false;     // the static bodies' bounds are in
+  std::vector<double> extents_;   // extentOf each body's shape
+  std::vector<double> radii_;     // how far each body's shape reaches from its center
+  std::vector<LastBounds> last_;  // each body's
+  bool staticsSeen_ = false;      // the static bodies' bounds are in
 };
 
 }  // namespace
