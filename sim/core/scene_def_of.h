@@ -29,7 +29,6 @@ struct SceneDefOf {
   std::optional<double> friction;
   double dt = settings::kDefaultDt;
   double maxSteps = settings::kDefaultMaxSteps;  // the most steps a run may take (sim: max_steps)
-  SourceLoc stepsLoc;                            // where dt (or else duration) is set, for messages
   CollisionMethod collisions = CollisionMethod::Auto;
   // where `sim: {collisions}` is written (line 0: not in the file, e.g. set on the command line)
   SourceLoc collisionsLoc;

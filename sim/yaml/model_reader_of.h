@@ -47,7 +47,7 @@ class ModelReaderOf : public Base {
     if (const YAML::Node w = root["world"]) readWorld(w, s);
     if (const YAML::Node sim = root["sim"]) self.readSim(sim, s);
     // a bound on work: a typo in dt must not run for years, nor one that takes no step
-    s.stepsLoc = this->place(checkStepCount(root, s));
+    checkStepCount(root, s);
     self.readBodies(bodyList(root), s);
     readEntryLists(root, s, [&](const YAML::Node& e) { return self.readExpect(e, s); });
     return s;
@@ -76,8 +76,8 @@ class ModelReaderOf : public Base {
   }
 
   // the run's steps, refused where they are set (dt, else duration, else the scene) when dt exceeds
-  // the duration or the steps exceed max_steps; returns where they are set
-  YAML::Node checkStepCount(const YAML::Node& root, const Scene& s) const {
+  // the duration or the steps exceed max_steps
+  void checkStepCount(const YAML::Node& root, const Scene& s) const {
     const YAML::Node at = root["sim"] && root["sim"]["dt"] ? root["sim"]["dt"] : root["duration"] ? root["duration"] : root;
     if (const std::string over = sim::core::dtOverDuration(s.dt, s.duration); !over.empty())
       this->fail(at, over + "; choose a dt of at most the duration (a hundredth of it or less to see any motion)");
@@ -85,7 +85,6 @@ class ModelReaderOf : public Base {
       this->fail(at, over +
                          "; raise dt, shorten duration, or, if the scene needs that many, raise the limit with "
                          "'sim: {max_steps: N}'");
-    return at;
   }
 
   // sim: the stack solver's iterations (`iterations` for velocities, `position_iterations`)
