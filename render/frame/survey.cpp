@@ -40,12 +40,13 @@ class Surveyor : public sim::world::StepObserver {
   void afterStep(const sim::world::World& world) override {
     // the survey runs the whole scene before the first frame: Ctrl-C must stop it too
     render::jobs::checkInterrupted();
-    if (extents_.empty())
+    if (extents_.empty()) {
       for (const sim::core::Body& b : world.bodies) {
         extents_.push_back(extentOf(b.shape));
         radii_.push_back(sim::core::boundingRadius(b.shape));
       }
-    last_.resize(world.bodies.size());
+      last_.resize(world.bodies.size());
+    }
     for (size_t i = 0; i < world.bodies.size(); ++i) {
       const sim::core::Body& b = world.bodies[i];
       // a static body never moves: its bounds once, at the start

@@ -59,20 +59,14 @@ printf 'name: ok\nbodies: [{name: a, shape: {box: [1, 1]}}]\nvariants:\n  a/b: {
 expect "a variant name with '/' is refused at its key, not by ffmpeg" 2 "variant.yaml:4:3: variant name 'a/b'" render variant.yaml --all-variants -o o --quiet
 
 # --- item 5: signals during the survey and a stalled ffmpeg; stale temporary files -------------
-# a survey of 10⁹ steps (about a minute) before the first frame
+# a survey of 10⁹ steps (about a minute) before the first frame, in 2D and in 3D (each survey its
+# own loop)
 cat >long.yaml <<'YAML'
 name: long
 duration: 100
 sim: {dt: 1.0e-7, max_steps: 1.0e10}
 bodies: [{name: ball, shape: {circle: 0.2}, velocity: [1, 0]}]
 YAML
-"$BIN" render long.yaml -o o --size 160x90 --fps 10 --quiet >out 2>err &
-pid=$!
-sleep 1
-signal_and_wait INT $pid
-[ "$rc" -eq 130 ] && grep -q interrupted err && [ ! -e o/long/long.mp4 ] && no_parts
-check "Ctrl-C during the survey: exit 130, no output" $? "exit $rc"
-# the same of a 3D scene, whose survey is its own loop
 cat >long3d.yaml <<'YAML'
 name: long3d
 dimensions: 3
@@ -80,12 +74,14 @@ duration: 100
 sim: {dt: 1.0e-7, max_steps: 1.0e10}
 bodies: [{name: ball, shape: {sphere: 0.2}, velocity: [1, 0, 0]}]
 YAML
-"$BIN" render long3d.yaml -o o --size 160x90 --fps 10 --quiet >out 2>err &
-pid=$!
-sleep 1
-signal_and_wait INT $pid
-[ "$rc" -eq 130 ] && grep -q interrupted err && [ ! -e o/long3d/long3d.mp4 ] && no_parts
-check "Ctrl-C during a 3D scene's survey: exit 130, no output" $? "exit $rc"
+for scene in long long3d; do
+  "$BIN" render $scene.yaml -o o --size 160x90 --fps 10 --quiet >out 2>err &
+  pid=$!
+  sleep 1
+  signal_and_wait INT $pid
+  [ "$rc" -eq 130 ] && grep -q interrupted err && [ ! -e o/$scene/$scene.mp4 ] && no_parts
+  check "Ctrl-C during the survey of $scene.yaml: exit 130, no output" $? "exit $rc"
+done
 # an ffmpeg that reads nothing: the frames fill the pipe and the writer waits on it
 mkdir -p stalled
 printf '#!/bin/sh\necho $$ >%s/stalled.pid\nexec sleep 600\n' "$WORK" >stalled/ffmpeg
