@@ -24,6 +24,7 @@
 #include "sim/world/contact_colors.h"
 #include "sim/world/methods.h"
 #include "sim/world/soft_contacts.h"
+#include "sim/world/step_turn.h"
 #include "sim/world/worker_pool.h"
 #include "sim/world/world.h"
 
@@ -361,26 +362,8 @@ class SoftStepSolver final : public Method {
       // one local angle, so that the compiler makes the two calls one sincos (a store to qc could
       // alias turned_[i] and kept them apart: 5 % of a step on the 5,050-box pyramid)
       const double turned = turned_[i] += da;
-      if constexpr (kFloat) {
-        turnInFloats(turned, s.qc, s.qs);
-      } else {
-        s.qc = std::cos(turned), s.qs = std::sin(turned);
-      }
+      stepTurn(turned, s.qc, s.qs);
     }
-  }
-
-  // cos and sin of the rotation since the step began, to a float: a step turns a body by little,
-  // so Taylor's polynomials to x⁸ and x⁷ (the first terms left out, x¹⁰/10! and x⁹/9!, are below
-  // a float's round-off for |x| ≤ 0.5), and the library past that. The libm call was 6 % of a
-  // step on the 5,050-box pyramid in floats
-  static void turnInFloats(double x, float& c, float& s) {
-    if (!(std::abs(x) <= 0.5)) {
-      c = static_cast<float>(std::cos(x)), s = static_cast<float>(std::sin(x));
-      return;
-    }
-    const double x2 = x * x;
-    c = static_cast<float>(1.0 + x2 * (-1.0 / 2 + x2 * (1.0 / 24 + x2 * (-1.0 / 720 + x2 * (1.0 / 40320)))));
-    s = static_cast<float>(x * (1.0 + x2 * (-1.0 / 6 + x2 * (1.0 / 120 + x2 * (-1.0 / 5040)))));
   }
 
   // each pass: the overflow one contact after the other (on the first thread), then each set's
