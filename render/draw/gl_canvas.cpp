@@ -47,6 +47,7 @@ void GlCanvas::start(const Camera& camera, bool clear) {
   camera_ = camera;
   px_ = camera.pixelSize();
   texts_.clear();
+  lateDots_.clear();
   smallBodies_ = largeBodies_ = 0;
   // 2D drawing in call order: no depth test; straight alpha blending that keeps the frame opaque
   glDisable(GL_DEPTH_TEST);
@@ -110,6 +111,13 @@ void GlCanvas::finish(Image& image) {
   under_.reset();
   if (bounded_ && smallBodies_ >= kDenseBodies && largeBodies_ == 0) gl_.fewerSamples(2);
   gl_.read(image);
+  // the dots nothing drew over, then the text over everything
+  if (!lateDots_.empty()) {
+    DotLayer dots;
+    for (const LateDot& d : lateDots_) dots.add(camera_.toPixel(d.at), d.radiusPx, d.color);
+    lateDots_.clear();
+    dots.drawInto(image);
+  }
   // a halo of the background around each letter, a tenth of the size: legible over any line
   const int halo = std::max(1, style_.fontSize / 10);
   for (const QueuedText& t : texts_)
@@ -293,16 +301,11 @@ void GlCanvas::point(const Vec2& p, const Pen& s) {
       ring(p, 4.0 * w * px_, w);
       break;
     case Role::ContactPoint:
-      // many: a plain dot scaled to the bodies, whose rim would be under a pixel
+      // many: a plain dot scaled to the bodies, whose rim would be under a pixel, blended in after
+      // the frame (DotLayer) unless GL draws over it
       if (many) {
-        // A dot a pixel or two across needs no more than its area: as few as 4 chords within a
-        // quarter pixel, the polygon grown to the disc's area (a frame of 20,000 contact dots drew
-        // 8 triangles a dot, three times its 5,050 boxes' triangles)
-        const double r = manyDotRadius_ * px_;
-        const int n = discSegments(r, tolerance, kLeastManyDotSegments);
-        const double grow = std::sqrt(std::numbers::pi / (0.5 * n * std::sin(2.0 * std::numbers::pi / n)));
-        beginPrimitive(strokeColor(s), s.opacity, false, false);
-        fillDisc(p, grow * r, tolerance, kLeastManyDotSegments);
+        const Color c = strokeColor(s);
+        lateDots_.push_back({p, manyDotRadius_, c.withAlpha(c.a * std::clamp(s.opacity, 0.0, 1.0))});
         break;
       }
       // a dot with a rim of the background, visible over a body of the same color
@@ -312,6 +315,26 @@ void GlCanvas::point(const Vec2& p, const Pen& s) {
       fillDisc(p, 2.2 * w * px_, tolerance);
       break;
     default: beginPrimitive(strokeColor(s), s.opacity, false, false); fillDisc(p, 1.6 * w * px_, tolerance);
+  }
+}
+
+void GlCanvas::fillManyDot(const Vec2& at, double radiusPx) {
+  // A dot a pixel or two across needs no more than its area: as few as 4 chords within a quarter
+  // pixel, the polygon grown to the disc's area (a frame of 20,000 contact dots drew 8 triangles a
+  // dot, three times its 5,050 boxes' triangles)
+  const double r = radiusPx * px_;
+  const int n = discSegments(r, 0.25, kLeastManyDotSegments);
+  const double grow = std::sqrt(std::numbers::pi / (0.5 * n * std::sin(2.0 * std::numbers::pi / n)));
+  fillDisc(at, grow * r, 0.25, kLeastManyDotSegments);
+}
+
+void GlCanvas::drawLateDots() {
+  // taken out first: each dot's beginPrimitive() would come back here
+  const std::vector<LateDot> dots = std::move(lateDots_);
+  lateDots_.clear();
+  for (const LateDot& d : dots) {
+    beginPrimitive(d.color.withAlpha(1.0), d.color.a, false, false);
+    fillManyDot(d.at, d.radiusPx);
   }
 }
 
@@ -343,6 +366,8 @@ void GlCanvas::label(const Vec2& anchor, const Vec2& direction, const std::strin
 void GlCanvas::beginPrimitive(const Color& c, double opacity, bool marks, bool overlaps) {
   // a frame of many bodies takes long: Ctrl-C ends it here, not after it (a flag read, no more)
   render::jobs::checkInterrupted();
+  // GL draws over the kept dots: they go under it, as drawn in order
+  if (!lateDots_.empty()) drawLateDots();
   const double alpha = c.a * std::clamp(opacity, 0.0, 1.0);
   keyed({c.r, c.g, c.b, alpha, marks ? 1.0 : 0.0});
   if ((alpha >= 1.0 || !overlaps) && !marks) {

@@ -1,7 +1,8 @@
 // The drawing interface implemented with OpenGL 1.x (fixed function, through OSMesa): world
 // coordinates, y up, sizes of lines, dots and arrow heads in output pixels whatever the zoom.
 // Text is queued and blended in after the GL frame is read back (FreeType, see text.h), so it
-// always lies on top.
+// always lies on top; so are the contact dots of a dense frame (DotLayer), under the text, unless
+// GL draws after them.
 //
 // Each translucent call is one "primitive" under a fresh stencil value: a pixel is written at most
 // once per primitive, so the overlapping parts of an outline (edge quads and round joins) blend once,
@@ -21,6 +22,7 @@
 #include "render/draw/style.h"
 #include "render/draw/text.h"
 #include "render/draw/canvas.h"
+#include "render/draw/dot_layer.h"
 
 namespace render::draw {
 
@@ -51,8 +53,9 @@ class GlCanvas final : public Canvas {
   void text(const sim::core::Vec2& at, const std::string& text, const Pen& style) override;
   // where it prefers, measured: a frame's labels reach here placed, as text
   void label(const sim::core::Vec2& anchor, const sim::core::Vec2& direction, const std::string& text, const Pen& style) override;
-  // many points: their discs with chords within a quarter pixel, not a twentieth (a 720p frame of
-  // 800 contact dots drew 10 triangles a dot instead of 21: its drawing took half the time)
+  // many points: contact dots of `dotRadiusPx` blended in after the GL frame (DotLayer), unless GL
+  // draws over them; other points as discs with chords within a quarter pixel, not a twentieth (a
+  // 720p frame of 800 contact dots drew 10 triangles a dot instead of 21: its drawing took half the time)
   void manyPoints(double dotRadiusPx) override { manyDotRadius_ = dotRadiusPx; }
 
   // the GL draw calls of the frame so far (begin() starts the count): one per batch of opaque
@@ -132,6 +135,17 @@ class GlCanvas final : public Canvas {
   // the segments of a disc of `radius`: chords within `tolerance` pixels of the circle
   int discSegments(double radius, double tolerance = 0.05, int least = 8) const;
   double manyDotRadius_ = 0.0;  // px; 0: points drawn as usual
+  // the contact dots among many, kept for the DotLayer at finish() while nothing is drawn over them
+  struct LateDot {
+    sim::core::Vec2 at;  // world
+    double radiusPx;
+    Color color;  // its alpha the opacity
+  };
+  std::vector<LateDot> lateDots_;
+  // the kept dots drawn with GL after all, in order, since GL draws over them now
+  void drawLateDots();
+  // a dot among many as GL draws it: a polygon of a few chords, grown to the disc's area
+  void fillManyDot(const sim::core::Vec2& at, double radiusPx);
 
   GlContext& gl_;
   TextRenderer& textRenderer_;

@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <cstdlib>
+#include <numbers>
 
 #include "render/draw/gl_canvas.h"
 
@@ -91,6 +92,36 @@ TEST_CASE_FIXTURE(Fixture, "contact points, arrows and captions are drawn in the
   for (int y = 0; y < 20; ++y)
     for (int x = 0; x < 40; ++x) dark += i.pixel(x, y)[0] < 100;
   CHECK(dark > 10);
+}
+
+// among many, a contact dot is blended in after the GL frame (DotLayer), unless GL draws over it
+TEST_CASE_FIXTURE(Fixture, "contact dots among many lie at their points, under whatever is drawn after them") {
+  const auto dotFrame = [&](bool bodyOver) {
+    canvas.begin(camera);
+    canvas.manyPoints(3.0);
+    canvas.point({1, 1}, {Role::ContactPoint, -1, 1.0});  // pixel (60, 40)
+    canvas.point({1, 1}, {Role::ContactPoint, -1, 1.0});
+    canvas.manyPoints(0.0);
+    if (bodyOver) canvas.polygon({{0, 0}, {2, 0}, {2, 2}, {0, 2}}, {Role::Body, 0, 1.0});
+    return canvas.finish();
+  };
+  const Image dots = dotFrame(false);
+  CHECK(near(dots, 60, 40, style.role(Role::ContactPoint), 0));
+  // its disc: 3 px across its radius, about the point (pixel centers (59.5 .. 60.5, 39.5 .. 40.5)
+  // around the point at the corner (60, 40))
+  double area = 0.0, sx = 0.0, sy = 0.0;
+  for (int y = 0; y < 100; ++y)
+    for (int x = 0; x < 100; ++x) {
+      const double w = (255.0 - dots.pixel(x, y)[1]) / (255.0 - Color::byte(style.role(Role::ContactPoint).g));
+      area += w, sx += w * (x + 0.5), sy += w * (y + 0.5);
+    }
+  CHECK(area == doctest::Approx(std::numbers::pi * 9.0).epsilon(0.03));
+  CHECK(sx / area == doctest::Approx(60.0).epsilon(0.001));
+  CHECK(sy / area == doctest::Approx(40.0).epsilon(0.001));
+  // a body drawn after the dots covers them: drawn with GL, under it, in the order called
+  const Image covered = dotFrame(true);
+  CHECK(near(covered, 60, 40, style.bodies[0].mixed({1, 1, 1, 1}, 0.35)));
+  CHECK(near(covered, 58, 42, style.role(Role::ContactPoint), 40) == false);
 }
 
 TEST_CASE_FIXTURE(Fixture, "the same calls give the same pixels") {
