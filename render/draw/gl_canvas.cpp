@@ -202,7 +202,7 @@ void GlCanvas::polygon(const std::vector<Vec2>& vertices, const Pen& s) {
     for (const Vec2& v : vertices) extent.add(v);
     countBody(extent.size().maxCoeff());
   }
-  // an opaque moving body a few pixels across: two fills, fewer triangles than a fill and its outline
+  // an opaque moving body outlined mitred: two fills, fewer triangles than a fill and its outline
   const bool opaque = s.opacity >= 1.0 && fillColor(s).a >= 1.0 && strokeColor(s).a >= 1.0;
   if (s.role == Role::Body && opaque && fillOutlined(vertices, fillColor(s), strokeColor(s), strokeWidth(s.role))) return;
   if (solid) {
@@ -517,12 +517,9 @@ void GlCanvas::strokeSegment(const Vec2& a, const Vec2& b, double width) {
 
 void GlCanvas::strokeClosed(const std::vector<Vec2>& vertices, double width) {
   const double half = 0.5 * width * px_;
-  // a polygon a few pixels across: its outline as one strip with mitred corners, 2 triangles an
-  // edge (a round join's corner differs by a fifth of a pixel's area: no difference at that size,
-  // and the joins were four fifths of a small box's triangles)
-  Bounds extent;
-  for (const Vec2& v : vertices) extent.add(v);
-  if (vertices.size() >= 3 && extent.size().maxCoeff() < kSmallOutlinePx * px_) {
+  // an outline whose mitred corners are as good as round: one strip with mitred corners, 2 triangles
+  // an edge (the joins were four fifths of a box's triangles)
+  if (mitredLooksRound(vertices, half)) {
     strokeMitred(vertices, half);
     return;
   }
@@ -537,6 +534,24 @@ void GlCanvas::strokeClosed(const std::vector<Vec2>& vertices, double width) {
     }
     fillDisc(a, half);
   }
+}
+
+bool GlCanvas::mitredLooksRound(const std::vector<Vec2>& vertices, double half) const {
+  if (vertices.size() < 3) return false;
+  // a polygon a few pixels across: a round join's corner differs by a fifth of a pixel's area
+  Bounds extent;
+  for (const Vec2& v : vertices) extent.add(v);
+  if (extent.size().maxCoeff() < kSmallOutlinePx * px_) return true;
+  // a larger one whose every mitred corner lies within half a pixel of its round join (a box's
+  // corners under an outline up to 2.4 px wide: 720p's 2 px, not 1080p's 3)
+  const size_t n = vertices.size();
+  for (size_t i = 0; i < n; ++i) {
+    const Vec2 &prev = vertices[(i + n - 1) % n], &v = vertices[i], &next = vertices[(i + 1) % n];
+    // the corner's point lies half / cos(turn / 2) out, cos²(turn / 2) = (1 + cos turn) / 2
+    const double cosTurn = (v - prev).normalized().dot((next - v).normalized());
+    if (!(half <= (half + kMitreReachPx * px_) * std::sqrt(0.5 * (1.0 + cosTurn)))) return false;
+  }
+  return true;
 }
 
 std::vector<Vec2> GlCanvas::mitres(const std::vector<Vec2>& vertices, double half) {
@@ -577,9 +592,7 @@ void GlCanvas::strokeMitred(const std::vector<Vec2>& vertices, double half) {
 
 bool GlCanvas::fillOutlined(const std::vector<Vec2>& vertices, const Color& fill, const Color& stroke, double width) {
   const double half = 0.5 * width * px_;
-  Bounds extent;
-  for (const Vec2& v : vertices) extent.add(v);
-  if (vertices.size() < 3 || !(extent.size().maxCoeff() < kSmallOutlinePx * px_)) return false;
+  if (!mitredLooksRound(vertices, half)) return false;
   // the inner corners must not cross over: the polygon wider than its outline everywhere (its
   // width across each edge, convex)
   for (size_t k = 0; k < vertices.size(); ++k) {

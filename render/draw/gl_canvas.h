@@ -115,11 +115,15 @@ class GlCanvas final : public Canvas {
   void strokeMitred(const std::vector<sim::core::Vec2>& vertices, double half);
   // each vertex's move to its mitred outline's outer corner, `half` the outline's width away
   static std::vector<sim::core::Vec2> mitres(const std::vector<sim::core::Vec2>& vertices, double half);
-  // a small opaque polygon filled and outlined (mitred) as two fills; false (nothing drawn) when
-  // it is too large or narrower than its outline
+  // an opaque polygon filled and outlined (mitred) as two fills; false (nothing drawn) when its
+  // outline is not mitred (mitredLooksRound) or it is narrower than its outline
   bool fillOutlined(const std::vector<sim::core::Vec2>& vertices, const Color& fill, const Color& stroke, double width);
-  // polygons under this many pixels across are outlined mitred (strokeMitred), as one strip
+  // whether an outline `half` wide on each side is drawn mitred (strokeMitred, one strip) rather
+  // than with a round join at each vertex: the polygon is under kSmallOutlinePx across, or every
+  // mitred corner lies within kMitreReachPx of where the round join reaches
+  bool mitredLooksRound(const std::vector<sim::core::Vec2>& vertices, double half) const;
   static constexpr double kSmallOutlinePx = 16.0;
+  static constexpr double kMitreReachPx = 0.5;
   // a frame of at least this many moving bodies, every one under kSmallOutlinePx across, is dense:
   // drawn at two samples a pixel, not four (GlContext::fewerSamples; the look measured alike there)
   static constexpr int kDenseBodies = 200;

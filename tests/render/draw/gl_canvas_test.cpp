@@ -50,6 +50,29 @@ TEST_CASE_FIXTURE(Fixture, "a body is filled inside, outlined darker, and nothin
   CHECK(near(i, 5, 5, style.background, 0));
 }
 
+// a mitred corner reaches half / cos(45°) out, a round join half: mitred while that is at most half
+// a pixel further (a 2 px outline's 0.41 px), round past it (a 6 px outline's 1.24 px)
+TEST_CASE("a box's outline is mitred where its corners would look round, round-joined where not") {
+  const auto corner = [](double lineWidth) {
+    render::draw::GlContext gl{100, 100};
+    render::draw::TextRenderer text;
+    render::draw::Style style = testStyle();
+    style.lineWidth = lineWidth;
+    render::draw::GlCanvas canvas{gl, text, style};
+    canvas.begin(Camera{Vec2::Zero(), 10.0, 100, 100});
+    // (-2, 2) m is pixel corner (30, 30): the outline's outer corner pixel is (29 - k, 29 - k)
+    canvas.polygon({{-2, -2}, {2, -2}, {2, 2}, {-2, 2}}, {Role::Body, 0, 1.0});
+    const Image i = canvas.finish();
+    const int k = static_cast<int>(lineWidth / 2) - 1;
+    return std::pair{near(i, 29 - k, 29 - k, style.bodies[0].mixed({0, 0, 0, 1}, 0.35), 0),
+                     near(i, 50, 29 - k, style.bodies[0].mixed({0, 0, 0, 1}, 0.35), 0)};
+  };
+  // 2 px: the corner pixel is the edge's color, whole
+  CHECK(corner(2.0) == std::pair{true, true});
+  // 6 px: the round join leaves the corner pixel partly background, while the edge is whole
+  CHECK(corner(6.0) == std::pair{false, true});
+}
+
 TEST_CASE_FIXTURE(Fixture, "a translucent outline blends once, at its joins as along its edges") {
   canvas.begin(camera);
   canvas.polygon({{-3, -3}, {3, -3}, {3, 3}, {-3, 3}}, {Role::Body, 0, 0.5});
