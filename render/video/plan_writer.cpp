@@ -92,6 +92,9 @@ template <class D>
 void writeVideo(const PlannedVariantOf<D>& v, const VideoOutputOf<D>& out, bool quiet, const Wrote& wrote,
                 typename Drawing<D>::Trace* trace) {
   using Run = typename Drawing<D>::Run;
+  // ffmpeg first: it starts (loads its libraries, sets up the encoder) while GL is loaded and the
+  // poster drawn, not after (a 0.5 s clip of a 210-box pile: 0.65 -> 0.59 s wall)
+  VideoWriter video(out.path, out.format, out.width, out.height, out.fps);
   GlContext gl(out.width, out.height);
   TextRenderer text;
   Run run(v.scene, out.camera, v.survey, &gl, &text);
@@ -102,7 +105,6 @@ void writeVideo(const PlannedVariantOf<D>& v, const VideoOutputOf<D>& out, bool 
   Image poster;
   Drawing<D>::poster(run, out, [&poster](Image picture) { poster = std::move(picture); });
 
-  VideoWriter video(out.path, out.format, out.width, out.height, out.fps);
   VideoSink videoSink(video);
   std::vector<FrameSink*> sinks = {&videoSink};
   std::unique_ptr<StagedDirectory> framesDir;
