@@ -51,6 +51,9 @@ namespace {
 using Clock = std::chrono::steady_clock;
 namespace fs = std::filesystem;
 
+// the rounds of each render measure, taken in turn, whose median is reported
+constexpr int kRounds = 3;
+
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 struct Timed {
@@ -75,6 +78,16 @@ Timed timeProgram(const std::vector<std::string>& argv, bool failureExpected = f
   const render::jobs::ProcessResult r = render::jobs::runProgram(argv, "");
   if (r.status != 0 && !failureExpected) std::cerr << argv[0] << " failed (" << r.status << "): " << r.errorTail << '\n';
   return {secondsSince(start), childrenCpu() - cpu, r.status};
+}
+
+// the median of timings, wall and processor time each (a timing's status is the last one's)
+Timed median(std::vector<Timed> timings) {
+  Timed m = timings.back();
+  std::sort(timings.begin(), timings.end(), [](const Timed& a, const Timed& b) { return a.seconds < b.seconds; });
+  m.seconds = timings[timings.size() / 2].seconds;
+  std::sort(timings.begin(), timings.end(), [](const Timed& a, const Timed& b) { return a.cpu < b.cpu; });
+  m.cpu = timings[timings.size() / 2].cpu;
+  return m;
 }
 
 // the median of `runs` timings of argv, in seconds
@@ -366,14 +379,11 @@ int main(int argc, char** argv) {
       a[0] = program;
       return a;
     };
-    // rigidreel's side alone: its frames into the stand-in that discards them
-    const Timed side = timeWithPath(renderWith(rigidreel), standIn);
     // ffmpeg alone, with the arguments rigidreel gives it, on the same frames read from a file
     std::vector<std::string> encode{"ffmpeg"};
     for (const std::string& a :
          render::video::ffmpegArguments(render::video::VideoFormat::Mp4, w, h, fps, "out/bench/ffmpeg-only.mp4"))
       encode.push_back(a == "pipe:0" ? raw : a);
-    const Timed ffmpeg = timeProgram(encode);
     // the whole render, its peak resident memory measured by GNU time (kB)
     struct Whole {
       std::string name;
@@ -381,17 +391,29 @@ int main(int argc, char** argv) {
       double peakMb;
     };
     std::vector<Whole> wholes;
+    for (const auto& [name, program] : programs) wholes.push_back({name, {}, 0.0});
     // the same frames make the same video: the frames measured here are the ones rendered (this
     // build's video, compared before a baseline's, which may draw otherwise, takes its place)
     const std::string mp4 = "out/bench/render/" + stem + "/" + stem + ".mp4";
-    bool same = false;
-    for (const auto& [name, program] : programs) {
-      std::vector<std::string> timed{"/usr/bin/time", "-f", "%M", "-o", "out/bench/peak.txt"};
-      for (const std::string& a : renderWith(program)) timed.push_back(a);
-      const Timed t = timeProgram(timed);
-      wholes.push_back({name, t, std::atof(fileText("out/bench/peak.txt").c_str()) / 1024.0});
-      if (wholes.size() == 1) same = fileText(mp4) == fileText("out/bench/ffmpeg-only.mp4");
+    bool same = true;
+    // rounds in turn, each measure the median of its rounds: a short clip's ratio moved by a tenth
+    // from one run to the next on an idle machine
+    std::vector<Timed> sides, ffmpegs;
+    std::vector<std::vector<Timed>> wholeRounds(programs.size());
+    for (int round = 0; round < kRounds; ++round) {
+      // rigidreel's side alone: its frames into the stand-in that discards them
+      sides.push_back(timeWithPath(renderWith(rigidreel), standIn));
+      ffmpegs.push_back(timeProgram(encode));
+      for (size_t p = 0; p < programs.size(); ++p) {
+        std::vector<std::string> timed{"/usr/bin/time", "-f", "%M", "-o", "out/bench/peak.txt"};
+        for (const std::string& a : renderWith(programs[p].second)) timed.push_back(a);
+        wholeRounds[p].push_back(timeProgram(timed));
+        wholes[p].peakMb = std::max(wholes[p].peakMb, std::atof(fileText("out/bench/peak.txt").c_str()) / 1024.0);
+        if (p == 0) same = same && fileText(mp4) == fileText("out/bench/ffmpeg-only.mp4");
+      }
     }
+    const Timed side = median(sides), ffmpeg = median(ffmpegs);
+    for (size_t p = 0; p < programs.size(); ++p) wholes[p].timed = median(wholeRounds[p]);
     fs::remove(raw);
 
     const long bodies = static_cast<long>(plan.variants[out.variant].scene.model.bodies.size());
