@@ -79,8 +79,15 @@ void DotLayer::drawRun(size_t first, size_t last, Image& frame, std::vector<uint
         const double dy = y + kGrid[j] - d.y;
         chord[j] = r2 > dy * dy ? std::sqrt(r2 - dy * dy) : -1.0;
       }
+      // the pixels of the row the disc covers whole: within its half width at the row's farther edge
+      const double farDy = std::max(std::abs(y - d.y), std::abs(y + 1 - d.y));
+      const double inner = r2 > farDy * farDy ? std::sqrt(r2 - farDy * farDy) : -1.0;
       uint16_t* row = mask.data() + static_cast<size_t>(y - y0) * w - x0;
       for (int x = px0; x < px1; ++x) {
+        if (x >= d.x - inner && x + 1 <= d.x + inner) {
+          row[x] = 0xffff;
+          continue;
+        }
         uint16_t m = 0;
         for (int j = 0; j < 4; ++j)
           for (int k = 0; k < 4; ++k)
