@@ -115,8 +115,8 @@ class GlCanvas final : public Canvas {
   void strokeMitred(const std::vector<sim::core::Vec2>& vertices, double half);
   // each vertex's move to its mitred outline's outer corner, `half` the outline's width away
   static std::vector<sim::core::Vec2> mitres(const std::vector<sim::core::Vec2>& vertices, double half);
-  // an opaque polygon filled and outlined (mitred) as two fills; false (nothing drawn) when its
-  // outline is not mitred (mitredLooksRound) or it is narrower than its outline
+  // an opaque polygon filled and outlined (mitred) as two fills; false (nothing drawn) when it is
+  // kTwoFillsPx across or more, its outline not mitred, or it is narrower than its outline
   bool fillOutlined(const std::vector<sim::core::Vec2>& vertices, const Color& fill, const Color& stroke, double width);
   // whether an outline `half` wide on each side is drawn mitred (strokeMitred, one strip) rather
   // than with a round join at each vertex: the polygon is under kSmallOutlinePx across, or every
@@ -124,6 +124,7 @@ class GlCanvas final : public Canvas {
   bool mitredLooksRound(const std::vector<sim::core::Vec2>& vertices, double half) const;
   static constexpr double kSmallOutlinePx = 16.0;
   static constexpr double kMitreReachPx = 0.5;
+  static constexpr double kTwoFillsPx = 64.0;
   // a frame of at least this many moving bodies, every one under kSmallOutlinePx across, is dense:
   // drawn at two samples a pixel, not four (GlContext::fewerSamples; the look measured alike there)
   static constexpr int kDenseBodies = 200;
@@ -142,14 +143,18 @@ class GlCanvas final : public Canvas {
   // the contact dots among many, kept for the DotLayer at finish() while nothing is drawn over them
   struct LateDot {
     sim::core::Vec2 at;  // world
-    double radiusPx;
+    double radiusPx;     // from its center to its corners
+    int corners;
     Color color;  // its alpha the opacity
   };
   std::vector<LateDot> lateDots_;
   // the kept dots drawn with GL after all, in order, since GL draws over them now
   void drawLateDots();
-  // a dot among many as GL draws it: a polygon of a few chords, grown to the disc's area
-  void fillManyDot(const sim::core::Vec2& at, double radiusPx);
+  // a dot among many of `radiusPx`: its corners and its radius to them, a polygon of chords within
+  // a quarter pixel grown to the disc's area
+  std::pair<int, double> manyDot(double radiusPx);
+  std::pair<double, double> manyDot_{-1.0, -1.0};  // the radius (px) and pixel size it was last worked out for
+  std::pair<int, double> manyDotShape_{};
 
   GlContext& gl_;
   TextRenderer& textRenderer_;

@@ -86,6 +86,8 @@ class GlContext {
   // the frame being drawn takes `samples` (2) samples a pixel rather than the context's 4: a frame
   // dense with small bodies (GlCanvas's rule), where the two look alike (gl_context.cpp)
   void fewerSamples(int samples);
+  // the samples a pixel of the frame being drawn (or, after read(), last drawn) is drawn at
+  int samples() const { return samplesNow_; }
   // draw the recorded frame at each sample position, resolve the samples and return the frame at the
   // output size, top row first
   Image read();
