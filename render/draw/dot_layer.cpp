@@ -136,9 +136,22 @@ void DotLayer::add(const sim::core::Vec2& center, double radius, int corners, co
   dots_.push_back({center.x(), center.y(), radius, corners, color});
 }
 
+// the sample positions, in pixels and in subpixels (GL's are multiples of 1/8 px: exact), the
+// polygons by their corners (a frame's dots share one), and the run's masks and spans, kept from
+// run to run (a translucent dot is a run of its own)
+struct DotLayer::Scratch {
+  const std::vector<SamplePosition>& positions;
+  std::vector<std::array<long long, 2>> subpixel;
+  std::map<int, Edges> polygons;
+  std::vector<uint16_t> mask;
+  std::vector<std::pair<int, int>> touched;
+};
+
 void DotLayer::drawInto(Image& frame, const std::vector<SamplePosition>& positions) const {
   if (positions.empty() || positions.size() > 16) throw std::invalid_argument("DotLayer: 1 to 16 sample positions a pixel");
-  std::vector<uint16_t> mask;
+  Scratch scratch{positions, {}, {}, {}, {}};
+  for (const SamplePosition& q : positions)
+    scratch.subpixel.push_back({std::llround(q[0] * kSubpixels), std::llround(q[1] * kSubpixels)});
   size_t first = 0;
   // opaque dots of one color in a row cover a sample once, as GL's opaque fans do; a translucent
   // dot blends over what is under it, the dot before it too, as GL blends each translucent fan
@@ -147,13 +160,16 @@ void DotLayer::drawInto(Image& frame, const std::vector<SamplePosition>& positio
   };
   for (size_t i = 1; i <= dots_.size(); ++i) {
     if (i < dots_.size() && sameOpaque(dots_[i].color, dots_[first].color)) continue;
-    drawRun(first, i, frame, positions, mask);
+    drawRun(first, i, frame, scratch);
     first = i;
   }
 }
 
-void DotLayer::drawRun(size_t first, size_t last, Image& frame, const std::vector<SamplePosition>& positions,
-                       std::vector<uint16_t>& mask) const {
+void DotLayer::drawRun(size_t first, size_t last, Image& frame, Scratch& scratch) const {
+  const std::vector<SamplePosition>& positions = scratch.positions;
+  const std::vector<std::array<long long, 2>>& subpixel = scratch.subpixel;
+  std::vector<uint16_t>& mask = scratch.mask;
+  std::vector<std::pair<int, int>>& touched = scratch.touched;
   int x0 = frame.width, y0 = frame.height, x1 = 0, y1 = 0;
   for (size_t i = first; i < last; ++i) {
     const Dot& d = dots_[i];
@@ -165,22 +181,18 @@ void DotLayer::drawRun(size_t first, size_t last, Image& frame, const std::vecto
   mask.assign(static_cast<size_t>(w) * (y1 - y0), 0);
   const auto at = [&](int x, int y) -> uint16_t& { return mask[static_cast<size_t>(y - y0) * w + (x - x0)]; };
   // each row's touched pixels, so that blending visits the dots' pixels, not the run's whole box
-  std::vector<std::pair<int, int>> touched(static_cast<size_t>(y1 - y0), {x1, x0});
-  // the polygons by their corners (a frame's dots share one), the last one's at hand
-  std::map<int, Edges> polygons;
+  touched.assign(static_cast<size_t>(y1 - y0), {x1, x0});
+  // the last dot's polygon at hand
   const Edges* edges = nullptr;
   int lastCorners = 0;
-  // the sample positions in subpixels (GL's are multiples of 1/8 px: exact)
-  std::vector<std::array<long long, 2>> subpixel;
-  for (const SamplePosition& q : positions)
-    subpixel.push_back({std::llround(q[0] * kSubpixels), std::llround(q[1] * kSubpixels)});
   const uint16_t all = static_cast<uint16_t>((1u << positions.size()) - 1);
   // each dot's samples joined into the run's: a sample under two dots is covered once
   for (size_t i = first; i < last; ++i) {
     // thousands of large dots take long: Ctrl-C ends them here (a flag read, no more)
     render::jobs::checkInterrupted();
     const Dot& d = dots_[i];
-    if (d.corners != lastCorners) edges = &polygons.try_emplace(d.corners, d.corners).first->second, lastCorners = d.corners;
+    if (d.corners != lastCorners)
+      edges = &scratch.polygons.try_emplace(d.corners, d.corners).first->second, lastCorners = d.corners;
     // in units of the radius, so that no square overflows
     const double inv = 1.0 / d.radius, inner2 = edges->apothem * edges->apothem;
     // a dot on the frame's scale: its corners on GL's grid, its edges GL's, so that a sample on an

@@ -33,8 +33,6 @@ class DotLayer {
   // center to each; `center` in output pixels, x to the right, y down from the top-left corner
   // (pixel (i, j) covers [i, i + 1) × [j, j + 1)); in `color` at its alpha
   void add(const sim::core::Vec2& center, double radius, int corners, const Color& color);
-  bool empty() const { return dots_.empty(); }
-  void clear() { dots_.clear(); }
   // the dots blended over `frame` (RGBA, opaque) in the order added, each pixel covered in the
   // share of `positions` (at most 16) inside; its alpha is left alone
   void drawInto(Image& frame, const std::vector<SamplePosition>& positions) const;
@@ -46,9 +44,10 @@ class DotLayer {
     Color color;
   };
   std::vector<Dot> dots_;
-  // the run dots_[first, last) (one color) drawn into `frame`, `mask` the scratch it reuses
-  void drawRun(size_t first, size_t last, Image& frame, const std::vector<SamplePosition>& positions,
-               std::vector<uint16_t>& mask) const;
+  // what drawing the runs of a frame shares and reuses (dot_layer.cpp)
+  struct Scratch;
+  // the run dots_[first, last) (opaque dots of one color, or one translucent dot) drawn into `frame`
+  void drawRun(size_t first, size_t last, Image& frame, Scratch& scratch) const;
 };
 
 }  // namespace render::draw
