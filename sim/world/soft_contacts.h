@@ -1,12 +1,12 @@
 // soft_step's contact constraints laid out for the machine (Box2D v3's contact_solver.c, its wide
 // constraints; Catto, "SIMD Matters", 2024; written anew here): the bodies' solver state in one
-// flat array of records, the contacts of a set (contact_colors.h) packed eight to a block, each
-// number of a block stored as eight side by side, so that one block is solved in SIMD lanes.
-// In doubles (sim: {precision: double}, the default) a block is one AVX-512 register of eight, or
-// two halves in AVX2's four; in floats (precision: float, as Box2D v3 solves) one AVX2 register of
-// eight. The scalar path solves the same blocks lane by lane in the same order with the same
-// operations: since the contacts of a block touch disjoint bodies, both give the same state to the
-// bit (tests/sim/world/soft_contacts_test.cpp).
+// flat array of records, the contacts of a set (contact_colors.h) packed into blocks, each number
+// of a block stored side by side, one lane per contact, so that one block is solved in SIMD lanes.
+// Each number of a block is 64 bytes, one AVX-512 register: in doubles (sim: {precision: double},
+// the default) eight lanes, or two halves in AVX2's four; in floats (precision: float, as Box2D v3
+// solves) sixteen, or two halves in AVX2's eight. The scalar path solves the same blocks lane by
+// lane in the same order with the same operations: since the contacts of a block touch disjoint
+// bodies, both give the same state to the bit (tests/sim/world/soft_contacts_test.cpp).
 //
 // No Eigen and no standard library templates here: the wide path is compiled with -mavx2 and must
 // share no inline function with the rest of the program.
@@ -14,7 +14,11 @@
 
 namespace sim::world::soft {
 
-constexpr int kLanes = 8;
+// a block's lanes: as many numbers as one 64-byte AVX-512 register holds (eight doubles, sixteen
+// floats). Within a set the contacts touch disjoint bodies, so the state is the same to the bit for
+// any grouping of a set into blocks
+template <class T>
+inline constexpr int kLanesOf = 64 / static_cast<int>(sizeof(T));
 
 // a body during the substeps: velocity, and where it has moved since the step began (position
 // delta dp, rotation delta dq as cos and sin); static bodies all share one record of zeros. One
@@ -25,13 +29,13 @@ struct alignas(8 * sizeof(T)) BodyStateOf {
   T dpx = 0, dpy = 0, qc = 1, qs = 0;
 };
 
-// eight numbers, one per lane
+// a block's numbers, one per lane
 template <class T>
-struct alignas(kLanes * sizeof(T)) LanesOf {
-  T l[kLanes] = {0, 0, 0, 0, 0, 0, 0, 0};
+struct alignas(64) LanesOf {
+  T l[kLanesOf<T>] = {};
 };
 
-// one manifold point in eight lanes; a lane without a second point has zero masses, so its
+// one manifold point in a block's lanes; a lane without a second point has zero masses, so its
 // impulses stay zero
 template <class T>
 struct PointLanesOf {
@@ -42,11 +46,11 @@ struct PointLanesOf {
   LanesOf<T> totalNormalImpulse;             // over the step's substeps
 };
 
-// eight contacts of one set (or of the overflow, solved lane by lane)
+// a block's contacts, of one set (or of the overflow, solved lane by lane)
 template <class T>
 struct ContactBlockOf {
-  int a[kLanes] = {0, 0, 0, 0, 0, 0, 0, 0}, b[kLanes] = {0, 0, 0, 0, 0, 0, 0, 0};  // BodyState indices
-  LanesOf<T> nx, ny;                                                               // normal from B to A
+  int a[kLanesOf<T>] = {}, b[kLanesOf<T>] = {};  // BodyState indices
+  LanesOf<T> nx, ny;                             // normal from B to A
   LanesOf<T> invMassA, invInertiaA, invMassB, invInertiaB;
   LanesOf<T> friction;
   LanesOf<T> biasRate, massScale, impulseScale;  // the soft constraint (static contacts stiffer)
@@ -61,9 +65,9 @@ struct PassSettings {
   bool accumulate = false;    // the substep's last pass: each point's impulse added to its total
 };
 
-// the passes over blocks [begin, end), lane by lane (scalar), four lanes at once (wide: AVX2's four
-// doubles; in floats all eight in one AVX2 register, or with AVX-512VL's registers: wideVl) or eight
-// doubles (wide512: AVX-512)
+// the passes over blocks [begin, end), lane by lane (scalar), half a block at once (wide: AVX2's
+// four doubles or eight floats) or a whole block in one AVX-512 register (wide512: eight doubles or
+// sixteen floats)
 void warmStartScalar(ContactBlockOf<double>* blocks, int begin, int end, BodyStateOf<double>* bodies);
 void warmStartScalar(ContactBlockOf<float>* blocks, int begin, int end, BodyStateOf<float>* bodies);
 void solveScalar(ContactBlockOf<double>* blocks, int begin, int end, BodyStateOf<double>* bodies, const PassSettings& s);
@@ -72,10 +76,10 @@ void warmStartWide(ContactBlockOf<double>* blocks, int begin, int end, BodyState
 void warmStartWide(ContactBlockOf<float>* blocks, int begin, int end, BodyStateOf<float>* bodies);
 void solveWide(ContactBlockOf<double>* blocks, int begin, int end, BodyStateOf<double>* bodies, const PassSettings& s);
 void solveWide(ContactBlockOf<float>* blocks, int begin, int end, BodyStateOf<float>* bodies, const PassSettings& s);
-void warmStartWideVl(ContactBlockOf<float>* blocks, int begin, int end, BodyStateOf<float>* bodies);
-void solveWideVl(ContactBlockOf<float>* blocks, int begin, int end, BodyStateOf<float>* bodies, const PassSettings& s);
 void warmStartWide512(ContactBlockOf<double>* blocks, int begin, int end, BodyStateOf<double>* bodies);
+void warmStartWide512(ContactBlockOf<float>* blocks, int begin, int end, BodyStateOf<float>* bodies);
 void solveWide512(ContactBlockOf<double>* blocks, int begin, int end, BodyStateOf<double>* bodies, const PassSettings& s);
+void solveWide512(ContactBlockOf<float>* blocks, int begin, int end, BodyStateOf<float>* bodies, const PassSettings& s);
 // (which of them this processor runs: sim/core/simd_support.h)
 
 }  // namespace sim::world::soft

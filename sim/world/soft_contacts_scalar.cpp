@@ -30,13 +30,13 @@ struct ScalarLane {
 template <class T>
 void warmStartLanes(ContactBlockOf<T>* blocks, int begin, int end, BodyStateOf<T>* bodies) {
   for (int i = begin; i < end; ++i)
-    for (int lane = 0; lane < kLanes; ++lane) warmStartBlock<ScalarLane<T>>(blocks[i], bodies, lane);
+    for (int lane = 0; lane < kLanesOf<T>; ++lane) warmStartBlock<ScalarLane<T>>(blocks[i], bodies, lane);
 }
 
 template <class T>
 void solveLanes(ContactBlockOf<T>* blocks, int begin, int end, BodyStateOf<T>* bodies, const PassSettings& s) {
   for (int i = begin; i < end; ++i)
-    for (int lane = 0; lane < kLanes; ++lane) solveBlock<ScalarLane<T>>(blocks[i], bodies, s, lane);
+    for (int lane = 0; lane < kLanesOf<T>; ++lane) solveBlock<ScalarLane<T>>(blocks[i], bodies, s, lane);
 }
 
 }  // namespace

@@ -12,7 +12,7 @@
 namespace sim::world::soft {
 namespace {
 
-static_assert(kLanes == 8, "a block is two halves of four lanes");
+static_assert(kLanesOf<double> == 8, "a block is two halves of four lanes");
 
 typedef double V4 __attribute__((vector_size(32)));
 typedef long long M4 __attribute__((vector_size(32)));
@@ -26,11 +26,13 @@ struct WideLanes {
   static void store(LanesOf<T>& x, int half, V v) { *reinterpret_cast<V4*>(x.l + half) = v; }
   static V splat(double v) { return V4{v, v, v, v}; }
   static M4 greater(V a, V b) { return a > b; }
-  // a where m, else b, bit by bit (as the scalar path's m ? a : b)
-  static V select(M4 m, V a, V b) { return reinterpret_cast<V4>((reinterpret_cast<M4>(a) & m) | (reinterpret_cast<M4>(b) & ~m)); }
-  static V max(V a, V b) { return select(a < b, b, a); }
-  static V min(V a, V b) { return select(b < a, b, a); }
 #if defined(__AVX2__)
+  // a where m, else b (m is all ones or all zeros in each lane, as the scalar path's m ? a : b)
+  static V select(M4 m, V a, V b) { return V4(_mm256_blendv_pd(__m256d(b), __m256d(a), __m256d(m))); }
+  // vmaxpd(x, y) is x > y ? x : y, vminpd(x, y) x < y ? x : y: the scalar path's a < b ? b : a and
+  // b < a ? b : a with the operands so, NaN and signed zeros included
+  static V max(V a, V b) { return V4(_mm256_max_pd(__m256d(b), __m256d(a))); }
+  static V min(V a, V b) { return V4(_mm256_min_pd(__m256d(b), __m256d(a))); }
   // four records' first (or second) halves, read as rows and turned into columns
   static void transpose(__m256d& r0, __m256d& r1, __m256d& r2, __m256d& r3) { sim::core::transpose4(r0, r1, r2, r3); }
   static BodyLanes<V> gather(const BodyState* bodies, const int* all, int half) {
@@ -55,6 +57,9 @@ struct WideLanes {
     _mm256_store_pd(&bodies[index[3]].vx, r3);
   }
 #else
+  static V select(M4 m, V a, V b) { return reinterpret_cast<V4>((reinterpret_cast<M4>(a) & m) | (reinterpret_cast<M4>(b) & ~m)); }
+  static V max(V a, V b) { return select(a < b, b, a); }
+  static V min(V a, V b) { return select(b < a, b, a); }
   static BodyLanes<V> gather(const BodyState* bodies, const int* all, int half) {
     const int* index = all + half;
     const BodyState &b0 = bodies[index[0]], &b1 = bodies[index[1]], &b2 = bodies[index[2]], &b3 = bodies[index[3]];
@@ -76,12 +81,12 @@ struct WideLanes {
 
 void warmStartWide(ContactBlockOf<double>* blocks, int begin, int end, BodyStateOf<double>* bodies) {
   for (int i = begin; i < end; ++i)
-    for (int half = 0; half < kLanes; half += 4) warmStartBlock<WideLanes>(blocks[i], bodies, half);
+    for (int half = 0; half < kLanesOf<double>; half += 4) warmStartBlock<WideLanes>(blocks[i], bodies, half);
 }
 
 void solveWide(ContactBlockOf<double>* blocks, int begin, int end, BodyStateOf<double>* bodies, const PassSettings& s) {
   for (int i = begin; i < end; ++i)
-    for (int half = 0; half < kLanes; half += 4) solveBlock<WideLanes>(blocks[i], bodies, s, half);
+    for (int half = 0; half < kLanesOf<double>; half += 4) solveBlock<WideLanes>(blocks[i], bodies, s, half);
 }
 
 }  // namespace sim::world::soft

@@ -12,10 +12,9 @@
 namespace sim::world::soft {
 namespace {
 
-static_assert(kLanes == 8, "a block is one register of eight lanes");
+static_assert(kLanesOf<double> == 8, "a block is one register of eight lanes");
 
 typedef double V8 __attribute__((vector_size(64)));
-typedef long long M8 __attribute__((vector_size(64)));
 
 struct Wide512Lanes {
   using T = double;
@@ -24,11 +23,16 @@ struct Wide512Lanes {
   static V load(const LanesOf<T>& x, int) { return *reinterpret_cast<const V8*>(x.l); }
   static void store(LanesOf<T>& x, int, V v) { *reinterpret_cast<V8*>(x.l) = v; }
   static V splat(double v) { return V8{v, v, v, v, v, v, v, v}; }
-  static M8 greater(V a, V b) { return a > b; }
-  // a where m, else b, bit by bit (as the scalar path's m ? a : b)
-  static V select(M8 m, V a, V b) { return reinterpret_cast<V8>((reinterpret_cast<M8>(a) & m) | (reinterpret_cast<M8>(b) & ~m)); }
-  static V max(V a, V b) { return select(a < b, b, a); }
-  static V min(V a, V b) { return select(b < a, b, a); }
+  // a comparison into a mask register, and a blend by it (a NaN compares false, as the scalar
+  // path's a > b): with max and min below, one instruction each where the vector extensions' and,
+  // andnot and or took three; the 5,050-box pyramid's double step with recycling went from 1.95
+  // to 1.76 ms (two runs in turn, with the float blocks' change; rigidreel_stack_bench)
+  static __mmask8 greater(V a, V b) { return _mm512_cmp_pd_mask(__m512d(a), __m512d(b), _CMP_GT_OQ); }
+  static V select(__mmask8 m, V a, V b) { return V8(_mm512_mask_blend_pd(m, __m512d(b), __m512d(a))); }
+  // vmaxpd(x, y) is x > y ? x : y, vminpd(x, y) x < y ? x : y: the scalar path's a < b ? b : a and
+  // b < a ? b : a with the operands so, NaN and signed zeros included
+  static V max(V a, V b) { return V8(_mm512_maskz_max_pd(0xff, __m512d(b), __m512d(a))); }
+  static V min(V a, V b) { return V8(_mm512_maskz_min_pd(0xff, __m512d(b), __m512d(a))); }
   // AVX-512's shuffles in their masked forms with every lane kept (GCC 12's unmasked ones warn of
   // their undefined source)
   static __m512d unpackLow(__m512d a, __m512d b) { return _mm512_maskz_unpacklo_pd(0xff, a, b); }

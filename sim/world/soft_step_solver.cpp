@@ -11,13 +11,12 @@
 // by symplectic Euler, whatever the scene's integrator.
 //
 // Laid out for the machine as v3 is: the bodies' solver state in one flat array (soft_contacts.h),
-// the contacts prepared once per step into blocks of eight, sorted into sets (contact_colors.h)
+// the contacts prepared once per step into blocks (eight doubles or sixteen floats), sorted into sets (contact_colors.h)
 // so that each block is solved in SIMD lanes; the colouring is kept while the touching pairs stay
 // the same.
 #include <algorithm>
 #include <cmath>
 #include <memory>
-#include <type_traits>
 
 #include "sim/collision/impulse.h"
 #include "sim/core/simd_support.h"
@@ -95,7 +94,7 @@ template <class T>
 class SoftStepSolver final : public Method {
   using ContactBlock = soft::ContactBlockOf<T>;
   using BodyState = soft::BodyStateOf<T>;
-  static constexpr bool kFloat = std::is_same_v<T, float>;
+  static constexpr int kLanes = soft::kLanesOf<T>;
 
  public:
   std::unique_ptr<Method> clone() const override { return std::make_unique<SoftStepSolver>(*this); }
@@ -184,10 +183,10 @@ class SoftStepSolver final : public Method {
     auto place = [&](const std::vector<int>& members) {
       const int first = block;
       for (size_t j = 0; j < members.size(); ++j)
-        slots_[members[j]] = {first + static_cast<int>(j) / soft::kLanes, static_cast<int>(j) % soft::kLanes};
-      block = first + static_cast<int>((members.size() + soft::kLanes - 1) / soft::kLanes);
+        slots_[members[j]] = {first + static_cast<int>(j) / kLanes, static_cast<int>(j) % kLanes};
+      block = first + static_cast<int>((members.size() + kLanes - 1) / kLanes);
       ranges_.push_back({first, block});
-      if (members.size() % soft::kLanes != 0) padded_.push_back(block - 1);
+      if (members.size() % kLanes != 0) padded_.push_back(block - 1);
     };
     place(colors_.overflow);
     for (const std::vector<int>& set : colors_.sets) place(set);
@@ -196,8 +195,8 @@ class SoftStepSolver final : public Method {
   }
 
   // the widest SIMD the passes may use, at most `allowed` (WorldDef::simdWidth): 8 AVX-512, 4 AVX2, 1
-  // none; doubles take eight, four or one lanes at once, floats eight in AVX-512VL's registers or
-  // AVX2's, or one
+  // none; a whole block at once in AVX-512 (eight doubles, sixteen floats), half of one in AVX2, or
+  // one lane
   static int laneWidth(int allowed) { return allowed >= 8 && avx512Available() ? 8 : allowed >= 4 && avx2Available() ? 4 : 1; }
 
   // the blocks and the bodies' arrays sized for this step (on one thread, before the task)
@@ -232,7 +231,7 @@ class SoftStepSolver final : public Method {
     for (int k = firstPadded; k < lastPadded; ++k) {
       ContactBlock& blk = blocks_[padded_[k]];
       blk = ContactBlock{};
-      for (int l = 0; l < soft::kLanes; ++l) blk.a[l] = blk.b[l] = dummy;
+      for (int l = 0; l < kLanes; ++l) blk.a[l] = blk.b[l] = dummy;
     }
     threads.sync();
     const auto [first, last] = share.of(0, static_cast<int>(world.contacts.size()));
@@ -389,15 +388,9 @@ class SoftStepSolver final : public Method {
     pass(
         share, threads, [&](int b, int e) { soft::warmStartScalar(blocks, b, e, bodies); },
         [&](int b, int e) {
-          if constexpr (kFloat) {
-            width_ == 8   ? soft::warmStartWideVl(blocks, b, e, bodies)
-            : width_ == 4 ? soft::warmStartWide(blocks, b, e, bodies)
-                          : soft::warmStartScalar(blocks, b, e, bodies);
-          } else {
-            width_ == 8   ? soft::warmStartWide512(blocks, b, e, bodies)
-            : width_ == 4 ? soft::warmStartWide(blocks, b, e, bodies)
-                          : soft::warmStartScalar(blocks, b, e, bodies);
-          }
+          width_ == 8   ? soft::warmStartWide512(blocks, b, e, bodies)
+          : width_ == 4 ? soft::warmStartWide(blocks, b, e, bodies)
+                        : soft::warmStartScalar(blocks, b, e, bodies);
         });
   }
 
@@ -408,15 +401,9 @@ class SoftStepSolver final : public Method {
     pass(
         share, threads, [&](int b, int e) { soft::solveScalar(blocks, b, e, bodies, s); },
         [&](int b, int e) {
-          if constexpr (kFloat) {
-            width_ == 8   ? soft::solveWideVl(blocks, b, e, bodies, s)
-            : width_ == 4 ? soft::solveWide(blocks, b, e, bodies, s)
-                          : soft::solveScalar(blocks, b, e, bodies, s);
-          } else {
-            width_ == 8   ? soft::solveWide512(blocks, b, e, bodies, s)
-            : width_ == 4 ? soft::solveWide(blocks, b, e, bodies, s)
-                          : soft::solveScalar(blocks, b, e, bodies, s);
-          }
+          width_ == 8   ? soft::solveWide512(blocks, b, e, bodies, s)
+          : width_ == 4 ? soft::solveWide(blocks, b, e, bodies, s)
+                        : soft::solveScalar(blocks, b, e, bodies, s);
         });
   }
 

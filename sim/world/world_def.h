@@ -35,8 +35,8 @@ struct WorldDef {
   int substeps = sim::core::settings::kSubsteps;             // soft_step: substeps per step
   double contactHertz = sim::core::settings::kContactHertz;  // soft_step: contact stiffness, Hz (capped per substep)
   // soft_step: the widest SIMD a set's contacts are solved with, where the processor has it: 8
-  // (AVX-512: eight doubles at once; eight floats with its registers), 4 (AVX2: four doubles, eight
-  // floats) or 1 (one at a time); the same order, to the same state
+  // (AVX-512: eight doubles or sixteen floats at once), 4 (AVX2: four doubles, eight floats) or 1
+  // (one at a time); the same state to the bit
   int simdWidth = 8;
   // soft_step: the numbers its contact solve is carried in (the world's state stays double)
   Precision precision = Precision::Double;

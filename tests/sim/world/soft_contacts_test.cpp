@@ -93,10 +93,10 @@ TEST_CASE("soft_step: the AVX-512, AVX2 and scalar contact passes give the same 
   }
 }
 
-// in floats (sim: precision: float) one register holds a whole block, with AVX-512VL's registers or
-// AVX2's: the same order as the scalar floats, to the bit; and not the doubles' state (the test
+// in floats (sim: precision: float) a block is sixteen lanes, one AVX-512 register or two halves in
+// AVX2's: the same state as the scalar floats, to the bit; and not the doubles' state (the test
 // would pass if float were ignored)
-TEST_CASE("soft_step in floats: the AVX-512VL, AVX2 and scalar contact passes give the same state hash, 1 or 2 threads") {
+TEST_CASE("soft_step in floats: the AVX-512, AVX2 and scalar contact passes give the same state hash, 1 or 2 threads") {
   const auto kFloat = sim::world::Precision::Float;
   for (const auto& scene : threadedScenes()) {
     CAPTURE(std::string(scene.first));
