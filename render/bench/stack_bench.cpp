@@ -70,8 +70,9 @@ struct RunOptions {
   // contact_hertz} (the stiffness capped at a quarter of the substep rate)
   int substeps = sim::core::settings::kSubsteps;
   double contactHertz = sim::core::settings::kContactHertz;
-  int threads = 1;    // soft_step's sim: threads
-  int simdWidth = 8;  // soft_step's widest SIMD: 8 (AVX-512), 4 (AVX2) or 1, where the processor has it
+  int threads = 1;            // soft_step's sim: threads
+  int simdWidth = 8;          // soft_step's widest SIMD: 8 (AVX-512), 4 (AVX2) or 1, where the processor has it
+  int contactsPerThread = 0;  // soft_step: the contacts a step needs per thread past the first to share it (0: settings.h's)
 };
 
 // one engine holding one layout: step it, read the boxes back (in layout order)
@@ -189,10 +190,12 @@ sim::scene::SceneDef sceneOf(const bench::StackLayout& layout, const bench::Stac
   return def;
 }
 
-// a built world solved with at most `width` lanes: the SIMD width is the bench's to choose, not a scene's
-sim::world::World withSimdWidth(sim::world::World built, int width) {
+// a built world solved with at most o.simdWidth lanes and shared by threads from o.contactsPerThread
+// contacts: the bench's to choose, not a scene's
+sim::world::World withSolveOptions(sim::world::World built, const RunOptions& o) {
   sim::world::WorldDef def = built.def();
-  def.simdWidth = width;
+  def.simdWidth = o.simdWidth;
+  def.contactsPerThread = o.contactsPerThread;
   return sim::world::World(std::move(def), std::move(built.bodies));
 }
 
@@ -200,7 +203,7 @@ class OurRun : public StackRun {
  public:
   OurRun(const bench::StackLayout& layout, const bench::StackSettings& s, const RunOptions& o, sim::core::CollisionMethod method,
          sim::world::Precision precision, double recycle = 0.0)
-      : world_(withSimdWidth(sim::scene::buildWorld(sceneOf(layout, s, o, method, precision, recycle)), o.simdWidth)), dt_(s.dt) {
+      : world_(withSolveOptions(sim::scene::buildWorld(sceneOf(layout, s, o, method, precision, recycle)), o)), dt_(s.dt) {
     world_.start();
   }
   void advance(int steps) override {
@@ -395,6 +398,10 @@ int main(int argc, char** argv) {
          "--simd-width", options.simdWidth,
          "rigidreel's soft_step: the widest SIMD, 8 AVX-512, 4 AVX2 or 1 none (the widest the processor has, at most this)")
       ->check(CLI::IsMember({1, 4, 8}));
+  app.add_option("--contacts-per-thread", options.contactsPerThread,
+                 "rigidreel's soft_step: the contacts a step needs for each thread past the first before the threads "
+                 "share it (default: sim/core/settings.h's kContactsPerThread; 1: always)")
+      ->check(CLI::PositiveNumber);
   std::vector<std::string> recycles{"off"};
   app.add_option("--recycle", recycles, "soft_step's contact recycling (repeatable): off, on (sim: {recycle: true})")
       ->check(CLI::IsMember({"off", "on"}));

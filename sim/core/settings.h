@@ -153,6 +153,14 @@ inline constexpr double kSleepAngularSpeed = 2.0 * 3.14159265358979323846 / 180.
 inline constexpr double kTimeToSleep = 0.5;
 // the most threads sim: threads and --threads accept (each set of contacts is split between them)
 inline constexpr int kMaxThreads = 64;
+// soft_step's threads share a step only when it has this many contacts for each thread past the
+// first; a smaller step runs on one (the same state). The threads meet about a hundred times a
+// step. On this 2-core machine idle, a second thread first paid near 300 contacts (Box2D's packed
+// pyramid of 105 boxes) and took a sixth to a quarter off at 600 (210 boxes); with a build busy on
+// the other core it doubled the 210-box step, and first paid near 5,000 contacts in floats
+// (rigidreel_stack_bench --layout pyramid:BASE:packed --method soft_step --recycle on --threads 1
+// --threads 2 --contacts-per-thread 1)
+inline constexpr int kContactsPerThread = 1000;
 
 // default coefficients: restitution halfway between elastic and plastic, frictionless as in the
 // notes

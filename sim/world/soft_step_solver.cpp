@@ -104,11 +104,11 @@ class SoftStepSolver final : public Method {
   // restitution once after them all; the impulses kept for the next step
   void step(World& world, const TimeStep& step) override {
     // the contacts where the bodies are now, carrying over last step's impulses
-    WorkerPool& threads = pool(world.def().threads);
+    WorkerPool& threads = shares(world) ? pool(world.def().threads) : solo_.p;
     world.findContacts(speculativeMargin(world, step.h), fresh_, &threads);
     std::swap(world.contacts, fresh_);
     const double h = step.h / world.def().substeps;
-    const bool kept = beginStep(world, h);
+    const bool kept = beginStep(world, h, threads.size());
     // one task from the preparation to the impulses kept, the threads meeting between its stages:
     // a task of its own for each woke the other threads three times a step instead of once. The
     // substeps split every stage between the threads, which meet after each stage and each set of
@@ -149,6 +149,14 @@ class SoftStepSolver final : public Method {
       for (int r = 0; r < settings::kRelaxIterations; ++r)
         solve(h, false, totals && r + 1 == settings::kRelaxIterations, share, threads);
     }
+  }
+
+  // whether the step is large enough for sim: threads to share it (settings.h: kContactsPerThread),
+  // judged by last step's contacts
+  bool shares(const World& world) const {
+    const WorldDef& def = world.def();
+    const int perThread = def.contactsPerThread > 0 ? def.contactsPerThread : settings::kContactsPerThread;
+    return def.threads > 1 && world.contacts.size() >= static_cast<size_t>(perThread) * static_cast<size_t>(def.threads - 1);
   }
 
   // the pool of `threads` threads, made again when the count changes (a clone starts with none)
@@ -199,9 +207,9 @@ class SoftStepSolver final : public Method {
   // one lane
   static int laneWidth(int allowed) { return allowed >= 8 && avx512Available() ? 8 : allowed >= 4 && avx2Available() ? 4 : 1; }
 
-  // the blocks and the bodies' arrays sized for this step (on one thread, before the task)
+  // the blocks and the bodies' arrays sized for this step, which `threads` share (on one thread, before the task)
   // Returns whether each lane keeps last step's pair, masses, friction and softness.
-  bool beginStep(World& world, double h) {
+  bool beginStep(World& world, double h, int threads) {
     const bool arranged = arrange(world);
     width_ = laneWidth(world.def().simdWidth);
     const int dummy = static_cast<int>(world.bodies.size());  // the static bodies' shared record
@@ -216,7 +224,7 @@ class SoftStepSolver final : public Method {
     blocks_.resize(blockCount_);
     vnBefore_.resize(2 * world.contacts.size());
     points_.resize(world.contacts.size());
-    approaching_.assign(pool(world.def().threads).size(), 0);
+    approaching_.assign(threads, 0);
     sizeBodies(world);
     return kept;
   }
@@ -516,6 +524,13 @@ class SoftStepSolver final : public Method {
     PoolHandle(const PoolHandle&) {}
     PoolHandle& operator=(const PoolHandle&) { return *this; }
   } pool_;
+  // a step too small to share runs here, on the caller's thread alone (a pool of one starts no thread)
+  struct SoloHandle {
+    WorkerPool p{1};
+    SoloHandle() = default;
+    SoloHandle(const SoloHandle&) {}
+    SoloHandle& operator=(const SoloHandle&) { return *this; }
+  } solo_;
 };
 
 }  // namespace

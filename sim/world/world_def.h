@@ -44,6 +44,10 @@ struct WorldDef {
   bool sleep = false;
   // soft_step: threads that share each set of contacts (the same state with any number)
   int threads = 1;
+  // soft_step: the contacts a step needs for each thread past the first before the threads share
+  // it (0: settings.h's kContactsPerThread; the tests set 1, so that every thread works on their
+  // small piles)
+  int contactsPerThread = 0;
   // soft_step: a touching pair keeps its manifold, carried with the bodies, while it moved less than
   // this relative to the step it was made in, m (contact_recycle.h); 0: every pair collided every step
   double recycleDistance = 0.0;

@@ -62,6 +62,7 @@ unsigned long long run(const std::string& yaml, int width, double seconds, int t
   w = fixtures::redefined(w, [&](auto& d) {
     d.simdWidth = width;
     d.threads = threads;
+    d.contactsPerThread = 1;  // every thread at work on these small piles
     d.precision = precision;
   });
   w.advanceTo(seconds);
@@ -124,7 +125,10 @@ TEST_CASE("soft_step: 1, 2 and 3 threads give the same state hash (pyramids, a t
 
 TEST_CASE("soft_step: sim: threads reaches the world, and a copy of a threaded world steps on its own") {
   sim::world::World w = scene_text::build(pyramid(10, true) + "");
-  w = fixtures::redefined(w, [&](auto& d) { d.threads = 2; });
+  w = fixtures::redefined(w, [&](auto& d) {
+    d.threads = 2;
+    d.contactsPerThread = 1;
+  });
   w.advanceTo(0.5);
   sim::world::World copy = w;  // the copy makes its own threads
   copy.advanceTo(1.0);
