@@ -7,6 +7,7 @@
 #include <string>
 
 #include "sim/scene/scene_build.h"
+#include "sim/world/contact_recycle.h"
 #include "sim/world/diagnostics.h"
 #include "sim/world/world.h"
 #include "sim/yaml/scene_yaml.h"
@@ -41,6 +42,37 @@ double deepest(const sim::world::World& w) {
 }
 
 }  // namespace
+
+// recycledManifold's bound (contact_recycle.h): B's shift in A's frame plus the reach of its turn
+// (extent × sin turn) against the distance, whichever of the two makes up most of it
+TEST_CASE("a manifold is kept while B's shift plus the reach of its turn stays under the distance, and only then") {
+  using sim::core::Pose;
+  using sim::core::Rot;
+  using sim::core::Vec2;
+  sim::collision::Manifold m;
+  m.count = 1;
+  m.normal = Vec2(0.0, 1.0);
+  m.points[0].point = Vec2(0.2, 0.5);
+  m.points[0].separation = -0.01;
+  const Pose a{Vec2(0.0, 0.0), Rot::fromAngle(0.0)}, b{Vec2(0.1, 1.0), Rot::fromAngle(0.0)};
+  const sim::world::RecycleEntry entry = sim::world::recycleEntry(7, a, b, m);
+  const double d = 0.05, extent = 0.8;
+  // B shifted along x (A stays) and turned, as fractions of d
+  const auto kept = [&](double shift, double reach) {
+    sim::collision::Manifold out;
+    const Pose moved{b.x + Vec2(shift * d, 0.0), Rot::fromAngle(std::asin(reach * d / extent))};
+    return sim::world::recycledManifold(entry, a, moved, extent, d, out);
+  };
+  CHECK(kept(0.0, 0.0));
+  CHECK(kept(0.99, 0.0));
+  CHECK_FALSE(kept(1.01, 0.0));
+  CHECK(kept(0.3, 0.39));  // well inside both halves
+  CHECK(kept(0.5, 0.45));  // 0.95 d, most of it the turn's
+  CHECK_FALSE(kept(0.5, 0.55));
+  CHECK(kept(0.7, 0.2));  // 0.9 d, most of it the shift
+  CHECK_FALSE(kept(0.7, 0.35));
+  CHECK_FALSE(kept(0.0, 1.02));
+}
 
 TEST_CASE("a resting pyramid with recycling keeps its manifolds and holds within the measured error of one without") {
   sim::world::World fresh = build(pyramid(10, ""));
