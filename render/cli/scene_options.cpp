@@ -11,6 +11,7 @@
 
 #include "render/cli/commands.h"
 #include "render/jobs/json_writer.h"
+#include "sim/core/settings.h"
 #include "sim/core/step_limit.h"
 #include "sim/scene/model_warnings.h"
 #include "sim/scene/scene_build.h"
@@ -168,12 +169,14 @@ void warnOfModel(const sim::scene::SceneDef& def, const std::string& file) {
     if (said.insert(line).second) std::cerr << line << '\n';
   }
   // more threads than cores take turns on them, and every step waits for the last: 64 threads on 2
-  // cores ran 65 times slower than one
+  // cores ran 65 times slower than one (on a step large enough to share: settings.h's kContactsPerThread)
   const unsigned cores = std::thread::hardware_concurrency();
   if (def.collisions == sim::core::CollisionMethod::SoftStep && cores > 0 && def.threads > static_cast<int>(cores)) {
     const std::string line = file + ": warning: soft_step runs " + std::to_string(def.threads) + " threads on " +
-                             std::to_string(cores) + (cores == 1 ? " core" : " cores") +
-                             ", taking turns, and each step waits for all of them (slower than one thread); give at most " +
+                             std::to_string(cores) + (cores == 1 ? " core" : " cores") + " once a step has " +
+                             std::to_string(sim::core::settings::kContactsPerThread) +
+                             " contacts for each thread past the first, taking turns, and each step waits for all of "
+                             "them (slower than one thread); give at most " +
                              std::to_string(cores) + " (sim: threads, --threads)";
     const std::lock_guard<std::mutex> hold(lock);
     if (said.insert(line).second) std::cerr << line << '\n';

@@ -13,7 +13,7 @@ bool avx2Available() {
 
 bool avx512Available() {
 #if defined(RIGIDREEL_WIDE_AVX512)
-  static const bool avx512 = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl");
+  static const bool avx512 = __builtin_cpu_supports("avx512f");
   return avx512;
 #else
   return false;

@@ -7,7 +7,7 @@
 namespace sim::core {
 
 bool avx2Available();
-// AVX-512's foundation and its instructions on 256 bits (VL): every AVX-512 processor but the first Xeon Phi
+// AVX-512's foundation (AVX512F), all the wide512 units use
 bool avx512Available();
 
 }  // namespace sim::core

@@ -50,8 +50,10 @@ bool recycledManifold(const RecycleEntry& e, const Pose& a, const Pose& b, doubl
   const double turned = std::abs(turnSince(now.q, e.relative.q).s);
   const double shift2 = (now.x - e.relative.x).squaredNorm(), reach = extent * turned;
   // (a pair well inside both halves of the bound passes the test below without its square root,
-  // whose latency was the hot spot here: the same verdict, the sum at most nine tenths of it)
-  const bool wellInside = shift2 <= 0.25 * distance * distance && reach <= 0.4 * distance;
+  // whose latency was the hot spot here: the same verdict, the sum at most nine tenths of it, while
+  // the bound's square is a normal number: not overflowed, nor rounded among the subnormals)
+  const double quarter2 = 0.25 * distance * distance;
+  const bool wellInside = std::isnormal(quarter2) && shift2 <= quarter2 && reach <= 0.4 * distance;
   if (!wellInside && !(std::sqrt(shift2) + reach < distance)) return false;
   Manifold& m = out;
   m = e.manifold;

@@ -1,6 +1,6 @@
 // The soft contact passes written once over a lane type (included only by soft_contacts_scalar.cpp
 // and the soft_contacts_wide*.cpp): L is one lane of a block (its number type L::T, double or
-// float), four or all eight at once. Every operation is the same in each, in the same order, so the
+// float), or half a block or a whole one at once. Every operation is the same in each, in the same order, so the
 // paths agree to the bit; and no fused multiply-add (the build's -ffp-contract=off).
 #pragma once
 

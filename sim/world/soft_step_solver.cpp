@@ -494,7 +494,7 @@ class SoftStepSolver final : public Method {
     }
   }
 
-  int width_ = 1;                   // the sets' blocks eight lanes at a time, four, or one (laneWidth)
+  int width_ = 1;                   // the sets' blocks whole (8), by halves (4) or lane by lane (1): laneWidth
   bool bouncy_ = false;             // some contact has restitution (the pairs' bodies fix it)
   std::vector<ColoredPair> pairs_;  // the pairs the colouring was made for
   ContactColors colors_;

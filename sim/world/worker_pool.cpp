@@ -12,7 +12,7 @@ namespace {
 // offered to others (the machine is shared: a spinning thread must not hold a core its partner
 // waits for)
 constexpr int kSpinsBeforeYield = 64;
-// between tasks: this many pauses (0.7 ms on this machine's Zen 4) before the worker sleeps on the futex.
+// between tasks: this many pauses (0.7 ms on a Zen 4) before the worker sleeps on the futex.
 // A step runs four tasks back to back (three finding contacts, one solving); waking a sleeping
 // worker for each cost more than the spinning (the 5,050-box pyramid on two threads: 4.9-6.6 ms a step without it, 3.8-5.0 with)
 constexpr int kSpinsBeforeSleep = 20000;

@@ -72,6 +72,18 @@ TEST_CASE("a manifold is kept while B's shift plus the reach of its turn stays u
   CHECK(kept(0.7, 0.2));  // 0.9 d, most of it the shift
   CHECK_FALSE(kept(0.7, 0.35));
   CHECK_FALSE(kept(0.0, 1.02));
+  // at distances a scene may give whose square overflows or falls among the subnormals, the verdict
+  // is the square root's: a pair past the bound is collided again
+  const Pose origin{Vec2(0.0, 0.0), Rot::fromAngle(0.0)};
+  const sim::world::RecycleEntry still = sim::world::recycleEntry(8, origin, origin, m);
+  const auto keptAt = [&](double distance, double shift, double reach) {
+    sim::collision::Manifold out;
+    const Pose moved{Vec2(shift * distance, 0.0), Rot::fromAngle(std::asin(reach * distance / extent))};
+    return sim::world::recycledManifold(still, origin, moved, extent, distance, out);
+  };
+  CHECK_FALSE(keptAt(1e155, 1.01, 0.0));
+  CHECK_FALSE(keptAt(3.5e-162, 0.635, 0.4));
+  CHECK(keptAt(1e-3, 0.3, 0.3));
 }
 
 TEST_CASE("a resting pyramid with recycling keeps its manifolds and holds within the measured error of one without") {
