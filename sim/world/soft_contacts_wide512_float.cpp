@@ -1,12 +1,12 @@
 // soft_step's contact passes in floats (sim: {precision: float}) sixteen lanes at once, a whole
 // block in one AVX-512 register of sixteen floats (GCC's vector extensions; compiled with -mavx512f
-// where the compiler targets x86-64, sim/CMakeLists.txt, and chosen at run time). Against AVX2's
-// two halves (or eight lanes with AVX-512VL's registers, as floats were solved before) each
+// where the compiler targets x86-64, sim/CMakeLists.txt, and chosen at run time). Against eight
+// lanes at a time (AVX2's halves, or AVX-512VL's registers, as floats were solved before) each
 // block's pass takes half the instructions. On this AMD EPYC (Zen 5, AVX-512 at full width) that
 // took the 5,050-box pyramid's float step with recycling from 1.72 to 1.27 ms, two runs in turn
 // (rigidreel_stack_bench --layout pyramid:100:packed --method soft_step --precision float
-// --recycle on; Box2D v3's 1.66-1.68 ms in the same runs). The
-// result is the scalar path's to the bit (same operations, same order, no fused multiply-add).
+// --recycle on; Box2D v3's 1.66-1.68 ms in the same runs). The result is the scalar path's to the
+// bit (same operations, same order, no fused multiply-add).
 #include "sim/world/soft_contacts_kernel.h"
 
 #if defined(__AVX512F__)
@@ -38,8 +38,8 @@ struct Wide512FloatLanes {
   // b < a ? b : a with the operands so, NaN and signed zeros included
   static V max(V a, V b) { return F16(_mm512_maskz_max_ps(0xffff, __m512(b), __m512(a))); }
   static V min(V a, V b) { return F16(_mm512_maskz_min_ps(0xffff, __m512(b), __m512(a))); }
-  // AVX-512's shuffles in their masked forms with every lane kept (GCC 12's unmasked ones warn of
-  // their undefined source)
+  // every lane kept: AVX-512's shuffles in their masked forms (GCC 12's unmasked ones warn of their
+  // undefined source)
   static constexpr __mmask16 kAll = 0xffff;
   // two records (eight floats each) side by side in one register
   static __m512 twoRecords(const BodyState& low, const BodyState& high) {
