@@ -112,6 +112,7 @@ class GlContext {
     int part = 0;
     unsigned list = 0;
     size_t first = 0, count = 0;
+    bool opaque = false;  // every vertex's alpha 1: drawn with blending and the stencil test off
   };
   std::vector<Step> steps_;
   std::vector<unsigned> lists_;            // display lists made so far, reused from frame to frame
@@ -155,6 +156,10 @@ class GlContext {
   void sendTriangles();
   // the recorded steps of parts below `parts` drawn once (at one sample position)
   void drawSteps(int parts);
+  // whether every triangle from `first` on is opaque (alpha 1)
+  bool opaque(size_t first) const;
+  // the bound arrays' triangles [first, first + count), opaque ones drawn as such
+  void drawArrays(size_t first, size_t count, bool opaque);
   // the recorded lists up to `parts` drawn at the sample positions and resolved into `frame`
   // (top row first) within `region`; with `firstWhole`, the first drawing is the whole frame and
   // read into `frame` (outside the region every sample is alike), else only the region is drawn

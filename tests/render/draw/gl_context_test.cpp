@@ -166,3 +166,78 @@ TEST_CASE_FIXTURE(Fixture, "frames over a kept static part are the frames drawn 
     CHECK(differingBytes(frame, multisampled(gl, canvas, *step.camera, s.background, draw)) == 0);
   }
 }
+
+namespace {
+
+// a frame's pixels as they are now in the context's framebuffer
+Image framebufferPixels() {
+  Image frame;
+  frame.width = kWidth;
+  frame.height = kHeight;
+  frame.rgba.resize(static_cast<size_t>(kWidth) * kHeight * 4);
+  glReadPixels(0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE, frame.rgba.data());
+  return frame;
+}
+
+// a cleared frame with a translucent triangle on it, to draw over; blending and the stencil test on,
+// as a canvas leaves them between primitives (its batch's stencil test passes every sample)
+void translucentUnder() {
+  glViewport(0, 0, kWidth, kHeight);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  glClearColor(0.95f, 0.9f, 0.8f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glEnable(GL_BLEND);
+  glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_ALWAYS, 0, 0xff);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  glBegin(GL_TRIANGLES);
+  glColor4d(0.2, 0.55, 0.3, 0.45);
+  glVertex2d(-0.9, -0.8), glVertex2d(0.7, -0.6), glVertex2d(-0.2, 0.9);
+  glEnd();
+}
+
+// the same triangles one call each, blended (as a primitive outside the batch is drawn)
+void blendedOneByOne(const std::vector<render::draw::TriangleVertex>& triangles) {
+  glBegin(GL_TRIANGLES);
+  for (const auto& v : triangles) glColor4d(v.r, v.g, v.b, v.a), glVertex2d(v.x, v.y);
+  glEnd();
+}
+
+}  // namespace
+
+// An opaque batch is drawn with blending and the stencil test off, as llvmpipe draws fastest
+// (gl_context.cpp): the pixels must be the ones blending gives, a batch with one translucent vertex
+// must still blend, and the state after it must be the state before it.
+TEST_CASE_FIXTURE(Fixture,
+                  "an opaque batch draws the pixels blending draws, and leaves blending and the stencil test as they were") {
+  gl.makeCurrent();
+  std::vector<render::draw::TriangleVertex> opaque{
+      {-0.7f, -0.7f, 0.123f, 0.456f, 0.789f, 1.0f}, {0.5f, -0.3f, 0.9f, 0.1f, 0.33f, 1.0f},
+      {0.1f, 0.6f, 0.05f, 0.95f, 0.5f, 1.0f},       {0.3f, -0.9f, 0.7f, 0.7f, 0.2f, 1.0f},
+      {0.95f, 0.8f, 0.7f, 0.7f, 0.2f, 1.0f},        {-0.4f, 0.2f, 0.7f, 0.7f, 0.2f, 1.0f}};
+  for (const bool lastTranslucent : {false, true}) {
+    if (lastTranslucent) opaque.back().a = 0.6f;
+    translucentUnder();
+    gl.triangleStore() = opaque;
+    gl.drawTriangles(0);
+    CHECK(glIsEnabled(GL_BLEND));
+    CHECK(glIsEnabled(GL_STENCIL_TEST));
+    const Image batched = framebufferPixels();
+    translucentUnder();
+    blendedOneByOne(opaque);
+    CHECK(differingBytes(batched, framebufferPixels()) == 0);
+  }
+  // drawn where blending and the stencil test are off, they stay off
+  translucentUnder();
+  glDisable(GL_BLEND);
+  glDisable(GL_STENCIL_TEST);
+  opaque.back().a = 1.0f;
+  gl.triangleStore() = opaque;
+  gl.drawTriangles(0);
+  CHECK_FALSE(glIsEnabled(GL_BLEND));
+  CHECK_FALSE(glIsEnabled(GL_STENCIL_TEST));
+}
