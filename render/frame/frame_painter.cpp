@@ -242,11 +242,14 @@ Vec2 labelAnchor(const sim::core::Body& b) {
 
 }  // namespace
 
-bool FramePainter::labelFits(const sim::core::Body& b, const std::string& label) const {
+bool FramePainter::labelFits(size_t index, const sim::core::Body& b, const std::string& label) const {
   // the label's box, centered on the body, in world units, at the frame's font size
   const int size = fontSizeFor(def_.render, camera_.heightPx());
   const double px = camera_.pixelSize();
-  const double halfWidth = 0.5 * (textWidth_ ? textWidth_(label) : estimatedWidth(size)(label)) * px;
+  if (labelWidthsPx_.size() <= index) labelWidthsPx_.resize(index + 1, -1.0);
+  double& widthPx = labelWidthsPx_[index];
+  if (widthPx < 0.0) widthPx = textWidth_ ? textWidth_(label) : estimatedWidth(size)(label);
+  const double halfWidth = 0.5 * widthPx * px;
   const double halfHeight = 0.5 * lineHeightPx(size) * px;
   const sim::core::Pose pose = b.pose();
   for (const Vec2& corner :
@@ -270,7 +273,7 @@ void FramePainter::paintLabels(const sim::world::World& world, LabelPlacer& draw
     const Pen pen{Role::Label, static_cast<int>(i), 1.0};
     if (!r.labelsAuto) {
       draw.label(labelAnchor(b), Vec2::Zero(), look.label, pen);
-    } else if (few || labelFits(b, look.label)) {
+    } else if (few || labelFits(i, b, look.label)) {
       if (look.named) draw.label(labelAnchor(b), Vec2::Zero(), look.label, pen);
       else draw.labelNearby(labelAnchor(b), Vec2::Zero(), look.label, pen);
     } else {
