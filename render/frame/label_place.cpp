@@ -187,8 +187,25 @@ void LabelPlacer::addObstacle(Obstacle o) {
   // what lies wholly off the frame is under no label's box (every box lies in the frame)
   const PixelBox frame{0, 0, static_cast<double>(camera_.widthPx()), static_cast<double>(camera_.heightPx())};
   if (o.bounds.left <= o.bounds.right && !o.bounds.overlaps(frame)) return;
-  obstacleGrid_.add(o.bounds, obstacles_.size());
+  if (gridded_) obstacleGrid_.add(o.bounds, obstacles_.size());
   obstacles_.push_back(std::move(o));
+}
+
+const std::vector<size_t>& LabelPlacer::obstaclesNear(const PixelBox& box) const {
+  // A frame whose only text is its clock asks once or twice, and gridding the 20,000 obstacles of
+  // a 5,050-box pile with its contact dots cost more than scanning them (a few % of its render):
+  // the first few asks scan, later ones use the grid, made then. Either way every obstacle whose
+  // bounds overlap the box comes out, in ascending order, and the callers skip the rest.
+  constexpr int kScansBeforeGrid = 8;
+  if (!gridded_ && ++scans_ > kScansBeforeGrid) {
+    for (size_t i = 0; i < obstacles_.size(); ++i) obstacleGrid_.add(obstacles_[i].bounds, i);
+    gridded_ = true;
+  }
+  if (gridded_) return obstacleGrid_.near(box);
+  scanned_.clear();
+  for (size_t i = 0; i < obstacles_.size(); ++i)
+    if (obstacles_[i].bounds.overlaps(box)) scanned_.push_back(i);
+  return scanned_;
 }
 
 void LabelPlacer::polygon(const std::vector<Vec2>& vertices, const Pen& pen) {
@@ -339,7 +356,7 @@ double LabelPlacer::cost(const PixelBox& box, const Pending& p, size_t self) con
   // what it covers, each polyline once (in the order drawn, as the pieces of a polyline come)
   double covered = 0.0;
   int lastGroup = -1;
-  for (size_t k : obstacleGrid_.near(box)) {
+  for (size_t k : obstaclesNear(box)) {
     const Obstacle& o = obstacles_[k];
     if (o.group >= 0 && o.group == lastGroup) continue;
     if (!o.bounds.overlaps(box)) continue;
@@ -358,7 +375,7 @@ double LabelPlacer::cost(const PixelBox& box, const Pending& p, size_t self) con
 }
 
 bool LabelPlacer::overSolid(const PlacedText& t) const {
-  for (size_t k : obstacleGrid_.near(t.box)) {
+  for (size_t k : obstaclesNear(t.box)) {
     const Obstacle& o = obstacles_[k];
     // a body's name on its own body reads with its halo over the body's light fill
     if (!o.solid || (o.body >= 0 && o.body == t.pen.body && t.anchor)) continue;

@@ -135,6 +135,8 @@ class LabelPlacer final : public render::draw::Canvas {
   double cost(const PixelBox& box, const Pending& p, size_t self) const;  // infinity: not possible
   void place(const Pending& p, size_t self);
   void addObstacle(Obstacle o);
+  // the obstacles whose bounds may overlap `box`, ascending (each loop tests the overlap itself)
+  const std::vector<size_t>& obstaclesNear(const PixelBox& box) const;
 
   render::draw::Canvas& target_;
   render::draw::Camera camera_;
@@ -146,7 +148,13 @@ class LabelPlacer final : public render::draw::Canvas {
   int groups_ = 0;
   std::vector<Pending> pending_;
   std::vector<PlacedText> placed_, dropped_;
-  Grid obstacleGrid_, placedGrid_, anchorGrid_;
+  // the obstacles are gridded only once they have been asked for more than a few times
+  // (obstaclesNear): until then, and in a frame with no more to place than its clock, a scan
+  mutable Grid obstacleGrid_;
+  Grid placedGrid_, anchorGrid_;
+  mutable bool gridded_ = false;
+  mutable int scans_ = 0;
+  mutable std::vector<size_t> scanned_;
 };
 
 // the dropped labels of a run, said once each on standard error (or to `sink`): a label whose
