@@ -179,16 +179,19 @@ Image framebufferPixels() {
   return frame;
 }
 
-// a cleared frame with a translucent triangle on it, to draw over; blending and the stencil test on,
-// as a canvas leaves them between primitives (its batch's stencil test passes every sample)
-void translucentUnder() {
-  glViewport(0, 0, kWidth, kHeight);
+// a translucent triangle to draw over, blending and the stencil test on as a canvas leaves them
+// between primitives (its batch's stencil test passes every sample); `atOnce`: into a cleared
+// frame, at the pixel centers (a recorded frame is cleared and shifted by read())
+void translucentUnder(bool atOnce = true) {
+  if (atOnce) {
+    glViewport(0, 0, kWidth, kHeight);
+    glClearColor(0.95f, 0.9f, 0.8f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+  }
   glMatrixMode(GL_PROJECTION);
   glLoadIdentity();
   glMatrixMode(GL_MODELVIEW);
   glLoadIdentity();
-  glClearColor(0.95f, 0.9f, 0.8f, 1.0f);
-  glClear(GL_COLOR_BUFFER_BIT);
   glEnable(GL_BLEND);
   glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   glEnable(GL_STENCIL_TEST);
@@ -210,8 +213,10 @@ void blendedOneByOne(const std::vector<render::draw::TriangleVertex>& triangles)
 }  // namespace
 
 // An opaque batch is drawn with blending and the stencil test off, as llvmpipe draws fastest
-// (gl_context.cpp): the pixels must be the ones blending gives, a batch with one translucent vertex
-// must still blend, and the state after it must be the state before it.
+// (gl_context.cpp): under a blend function and a stencil test that would hide it, it still shows,
+// with the pixels the same triangles give drawn one by one blended under the canvas's state; a batch
+// with one translucent vertex is blended; the state after it is the state before it. At once (an
+// overlay) and recorded into a frame drawn at each sample position alike.
 TEST_CASE_FIXTURE(Fixture,
                   "an opaque batch draws the pixels blending draws, and leaves blending and the stencil test as they were") {
   gl.makeCurrent();
@@ -219,25 +224,57 @@ TEST_CASE_FIXTURE(Fixture,
       {-0.7f, -0.7f, 0.123f, 0.456f, 0.789f, 1.0f}, {0.5f, -0.3f, 0.9f, 0.1f, 0.33f, 1.0f},
       {0.1f, 0.6f, 0.05f, 0.95f, 0.5f, 1.0f},       {0.3f, -0.9f, 0.7f, 0.7f, 0.2f, 1.0f},
       {0.95f, 0.8f, 0.7f, 0.7f, 0.2f, 1.0f},        {-0.4f, 0.2f, 0.7f, 0.7f, 0.2f, 1.0f}};
-  for (const bool lastTranslucent : {false, true}) {
-    if (lastTranslucent) opaque.back().a = 0.6f;
+  // what blending would hide (the destination kept) and a stencil test no sample passes
+  const auto hiding = [] {
+    glBlendFuncSeparate(GL_ZERO, GL_ONE, GL_ZERO, GL_ONE);
+    glStencilFunc(GL_NEVER, 0, 0xff);
+  };
+  SUBCASE("drawn at once") {
     translucentUnder();
+    blendedOneByOne(opaque);
+    const Image blended = framebufferPixels();
+    translucentUnder();
+    hiding();
     gl.triangleStore() = opaque;
     gl.drawTriangles(0);
     CHECK(glIsEnabled(GL_BLEND));
     CHECK(glIsEnabled(GL_STENCIL_TEST));
-    const Image batched = framebufferPixels();
+    CHECK(differingBytes(framebufferPixels(), blended) == 0);
+    // one translucent vertex: blended, as before
+    opaque.back().a = 0.6f;
     translucentUnder();
     blendedOneByOne(opaque);
-    CHECK(differingBytes(batched, framebufferPixels()) == 0);
+    const Image translucent = framebufferPixels();
+    CHECK(differingBytes(translucent, blended) > 0);
+    translucentUnder();
+    gl.triangleStore() = opaque;
+    gl.drawTriangles(0);
+    CHECK(differingBytes(framebufferPixels(), translucent) == 0);
+    // drawn where blending and the stencil test are off, they stay off
+    glDisable(GL_BLEND);
+    glDisable(GL_STENCIL_TEST);
+    opaque.back().a = 1.0f;
+    gl.triangleStore() = opaque;
+    gl.drawTriangles(0);
+    CHECK_FALSE(glIsEnabled(GL_BLEND));
+    CHECK_FALSE(glIsEnabled(GL_STENCIL_TEST));
   }
-  // drawn where blending and the stencil test are off, they stay off
-  translucentUnder();
-  glDisable(GL_BLEND);
-  glDisable(GL_STENCIL_TEST);
-  opaque.back().a = 1.0f;
-  gl.triangleStore() = opaque;
-  gl.drawTriangles(0);
-  CHECK_FALSE(glIsEnabled(GL_BLEND));
-  CHECK_FALSE(glIsEnabled(GL_STENCIL_TEST));
+  SUBCASE("recorded into a frame") {
+    const auto frame = [&](const std::function<void()>& draw) {
+      gl.beginFrame();
+      gl.clearFrame(s.background, false);
+      translucentUnder(false);
+      draw();
+      return gl.read();
+    };
+    const Image background = frame([] {});
+    const Image blended = frame([&] { blendedOneByOne(opaque); });
+    const Image batched = frame([&] {
+      hiding();
+      gl.triangleStore() = opaque;
+      gl.drawTriangles(0);
+    });
+    CHECK(differingBytes(blended, background) > 0);
+    CHECK(differingBytes(batched, blended) == 0);
+  }
 }
