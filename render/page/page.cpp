@@ -145,12 +145,44 @@ footer { padding-top: 16px; padding-bottom: 32px; }
   header, main, footer { padding-left: 12px; padding-right: 12px; }
   nav ul { columns: 1; }
   h1 { font-size: 24px; }
+  /* on a phone a table's columns would lie off the screen: each row is a card of its cells, each
+     cell after its column's heading (data-label); the headings stay for screen readers */
+  .table thead { position: absolute; width: 1px; height: 1px; overflow: hidden; clip-path: inset(50%); white-space: nowrap; }
+  .table table, .table tbody, .table tr { display: block; }
+  .table tr { padding: 6px 0; border-bottom: 1px solid var(--line); }
+  .table td, .table td.number { display: flex; justify-content: space-between; gap: 16px; border: 0; padding: 1px 0;
+                                text-align: right; white-space: normal; overflow-wrap: anywhere; }
+  .table td::before { content: attr(data-label); color: var(--muted); text-align: left; white-space: nowrap; }
 }
 )";
 
-// a table in a box of its own, which scrolls sideways on a narrow screen
+// a table in a box of its own: its columns under their headings, the box scrolling sideways when
+// they are wider still; on a phone each row a card, each cell labelled with its column's heading
 const char* const kTableOpen = "<div class=\"table\">\n<table>\n";
 const char* const kTableClose = "</table>\n</div>\n";
+
+// a table's cell: its class ("" for none) and its HTML
+struct Cell {
+  std::string cls, html;
+};
+
+// the table's box opened and its headings (text) written
+void writeTableHead(std::ostream& h, const std::vector<std::string>& headings) {
+  h << kTableOpen << "<thead><tr>";
+  for (const std::string& heading : headings) h << "<th>" << escapeHtml(heading) << "</th>";
+  h << "</tr></thead>\n<tbody>\n";
+}
+
+// one row, each cell labelled with its column's heading (the card's labels on a phone)
+void writeTableRow(std::ostream& h, const std::vector<std::string>& headings, const std::vector<Cell>& cells) {
+  h << "<tr>";
+  for (size_t i = 0; i < cells.size(); ++i) {
+    h << "<td";
+    if (!cells[i].cls.empty()) h << " class=\"" << cells[i].cls << "\"";
+    h << " data-label=\"" << escapeHtml(i < headings.size() ? headings[i] : std::string()) << "\">" << cells[i].html << "</td>";
+  }
+  h << "</tr>\n";
+}
 
 // the checks of one kind: closed forms, or values an earlier run gave
 void writeChecks(std::ostream& h, const std::vector<CheckRecord>& checks, bool earlierRun) {
@@ -158,16 +190,20 @@ void writeChecks(std::ostream& h, const std::vector<CheckRecord>& checks, bool e
   for (const CheckRecord& c : checks)
     if (c.earlierRun == earlierRun) these.push_back(&c);
   if (these.empty()) return;
-  h << "<h3>" << (earlierRun ? "Checked against an earlier run" : "Closed forms, checked") << "</h3>\n"
-    << kTableOpen << "<thead><tr><th>variant</th><th>t (s)</th><th>quantity</th><th>"
-    << (earlierRun ? "earlier run" : "closed form")
-    << "</th><th>simulated</th><th>error</th><th>tolerance</th><th></th></tr></thead>\n<tbody>\n";
+  h << "<h3>" << (earlierRun ? "Checked against an earlier run" : "Closed forms, checked") << "</h3>\n";
+  const std::vector<std::string> headings = {"variant",   "t (s)", "quantity",  earlierRun ? "earlier run" : "closed form",
+                                             "simulated", "error", "tolerance", ""};
+  writeTableHead(h, headings);
   for (const CheckRecord* c : these)
-    h << "<tr><td>" << escapeHtml(c->variant.empty() ? "—" : c->variant) << "</td><td class=\"number\">" << shown(c->time, 6)
-      << "</td><td>" << escapeHtml(c->quantity) << "</td><td class=\"number\">" << shownValues(c->expected)
-      << "</td><td class=\"number\">" << shownValues(c->actual, noiseFloorOf(*c)) << "</td><td class=\"number\">"
-      << shown(c->error, 2) << "</td><td class=\"number\">" << shown(c->tolerance, 2) << "</td><td class=\""
-      << (c->passed() ? "ok\">ok" : "failed\">FAILED") << "</td></tr>\n";
+    writeTableRow(h, headings,
+                  {{"", escapeHtml(c->variant.empty() ? "—" : c->variant)},
+                   {"number", shown(c->time, 6)},
+                   {"", escapeHtml(c->quantity)},
+                   {"number", shownValues(c->expected)},
+                   {"number", shownValues(c->actual, noiseFloorOf(*c))},
+                   {"number", shown(c->error, 2)},
+                   {"number", shown(c->tolerance, 2)},
+                   c->passed() ? Cell{"ok", "ok"} : Cell{"failed", "FAILED"}});
   h << "</tbody>\n" << kTableClose;
 }
 
@@ -316,10 +352,9 @@ std::string pageHtml(const std::vector<PageScene>& scenes, const std::string& ti
       << sectionId(s.record.scene) << "\">" << escapeHtml(s.record.title) << "</a></li>\n";
   h << "</ul>\n</nav>\n</header>\n<main>\n";
   for (const PageScene& s : scenes) writeSection(h, s);
-  h << "</main>\n<footer>\n<h2>How it was made</h2>\n"
-    << kTableOpen
-    << "<thead><tr><th>scene</th><th>videos</th><th>frame size</th>"
-       "<th>fps</th><th>job (s)</th></tr></thead>\n<tbody>\n";
+  h << "</main>\n<footer>\n<h2>How it was made</h2>\n";
+  const std::vector<std::string> headings = {"scene", "videos", "frame size", "fps", "job (s)"};
+  writeTableHead(h, headings);
   double total = 0.0;
   for (const PageScene& s : scenes) {
     const SceneRecord& r = s.record;
@@ -330,9 +365,12 @@ std::string pageHtml(const std::vector<PageScene>& scenes, const std::string& ti
       if (rates.find(shown(r.videos[i].fps)) == std::string::npos) rates += (rates.empty() ? "" : ", ") + shown(r.videos[i].fps);
     }
     total += r.seconds;
-    h << "<tr><td><a href=\"#" << sectionId(r.scene) << "\">" << escapeHtml(r.scene) << "</a></td><td class=\"number\">"
-      << r.videos.size() << "</td><td>" << sizes << "</td><td>" << rates << "</td><td class=\"number seconds\">"
-      << shown(r.seconds, 3) << "</td></tr>\n";
+    writeTableRow(h, headings,
+                  {{"", "<a href=\"#" + sectionId(r.scene) + "\">" + escapeHtml(r.scene) + "</a>"},
+                   {"number", std::to_string(r.videos.size())},
+                   {"", sizes},
+                   {"", rates},
+                   {"number seconds", shown(r.seconds, 3)}});
   }
   h << "</tbody>\n"
     << kTableClose << "<p class=\"muted seconds\">" << shown(total, 4)

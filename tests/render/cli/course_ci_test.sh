@@ -88,7 +88,7 @@ import re, sys
 html = open(sys.argv[1]).read()
 closed = html.split("<h3>Closed forms, checked</h3>")[1].split("</table>")[0]
 earlier = html.split("<h3>Checked against an earlier run</h3>")[1].split("</table>")[0]
-rows = lambda part: re.findall(r"<tr><td>[^<]*</td><td class=\"number\">([^<]*)</td><td>([^<]*)</td>", part)
+rows = lambda part: re.findall(r"<tr><td data-label=\"variant\">[^<]*</td><td class=\"number\" data-label=\"t \(s\)\">([^<]*)</td><td data-label=\"quantity\">([^<]*)</td>", part)
 assert rows(closed) == [("0.5", "ball.position")], rows(closed)
 assert len(rows(earlier)) == 8 and ("0.25", "ball.angular_velocity") in rows(earlier), rows(earlier)' lect/index.html
 check "the lecture page lists them under 'Checked against an earlier run', the scene's own under closed forms" $? "exit $rc"

@@ -56,7 +56,7 @@ check "the summary: each scene with its outputs, then the total wall time" $?
 grep -qx 'page: o/index.html (3 scenes)' out
 check "the page is rebuilt from the pack's records once the jobs end" $?
 [ "$(grep -c '<section id="scene-' o/index.html)" -eq 3 ] && grep -q '<video controls preload="metadata" width="160" height="90" poster="two_bodies/two_bodies.png"' o/index.html &&
-  grep -q '<span class="answer">answer</span> · impact 1' o/index.html && grep -q '<td class="ok">ok</td>' o/index.html
+  grep -q '<span class="answer">answer</span> · impact 1' o/index.html && grep -q '<td class="ok" data-label="">ok</td>' o/index.html
 check "the page: a section per scene, its videos at their size with posters, panels, checks" $?
 bad_png=0
 for f in $(grep '\.png$' want); do

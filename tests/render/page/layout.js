@@ -31,6 +31,13 @@ window.probeResult = new Promise(resolve => {
         // each table's columns: the left edge of every row's i-th cell (the header's first)
         columns: [...document.querySelectorAll("table")].map(t => [...t.rows].map(
           r => [...r.cells].map(c => Math.round(c.getBoundingClientRect().left)))),
+        // each table's headings, and of every cell of its body: its right edge and the label drawn
+        // before it (a phone's card: its column's heading; "none" where no label is drawn)
+        cells: [...document.querySelectorAll("table")].map(t => ({
+          headings: [...t.tHead.rows[0].cells].map(c => c.textContent),
+          rows: [...t.tBodies[0].rows].map(r => [...r.cells].map(c => ({
+            right: c.getBoundingClientRect().right, label: getComputedStyle(c, "::before").content }))),
+        })),
       });
     });
   });

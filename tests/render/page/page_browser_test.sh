@@ -7,7 +7,8 @@
 # of the folder (or an id of the page); no script or loading error. A screenshot of the page at
 # 1280 px wide (its first 1180 px: the header, the contents and the first scene's videos and panels)
 # is compared with tests/golden/page/index.png. Then the layout at 390 and 1280 px (layout.js): no
-# horizontal scroll, tables scrolling in their own box, every video's controls below its picture.
+# horizontal scroll, tables scrolling in their own box (at 390 px each row a card of labelled cells,
+# all within the window), every video's controls below its picture.
 #
 # The mp4 is H.264: Debian's chromium plays it (its ffmpeg has the decoder), which this test shows by
 # decoding every video's last frame, not by asking canPlayType.
@@ -127,11 +128,26 @@ if layout["width"] != width or layout["scrollWidth"] > width:
 for t in layout["tables"]:
     if t["overflowX"] != "auto" or t["right"] > width + 0.5:
         bad.append("a table's box is not its own scroller inside the window: %s" % t)
-# every cell under its column's heading (a cell laid out inline would drift off its column)
-for rows in layout["columns"]:
-    for r in rows[1:]:
-        if len(r) == len(rows[0]) and r != rows[0]:
-            bad.append("a table's cells stand at %s, its headings at %s" % (r, rows[0]))
+# on a laptop every cell under its column's heading (a cell laid out inline would drift off its
+# column), no label drawn before it; on a phone each row a card within the window, every cell after
+# its column's heading
+phone = width <= 600
+if not phone:
+    for rows in layout["columns"]:
+        for r in rows[1:]:
+            if len(r) == len(rows[0]) and r != rows[0]:
+                bad.append("a table's cells stand at %s, its headings at %s" % (r, rows[0]))
+                break
+for t in layout["cells"]:
+    labels = [json.dumps(h) for h in t["headings"]]
+    for row in t["rows"]:
+        shown = [c["label"] for c in row]
+        if phone and (shown != labels or any(c["right"] > width + 0.5 for c in row)):
+            bad.append("a card's cells read %s (their headings %s), reaching %.0f px" % (
+                shown, labels, max(c["right"] for c in row)))
+            break
+        if not phone and any(label != "none" for label in shown):
+            bad.append("a table's cells carry labels %s on a wide screen" % shown)
             break
 for v in layout["videos"]:
     name = v["src"].rsplit("/", 1)[-1]
@@ -144,8 +160,8 @@ for v in layout["videos"]:
     if v["height"] - picture < CONTROLS:
         bad.append("%s: the controls (the box's last %d px) cover the picture's last %.0f px, where the caption is" % (
             name, CONTROLS, CONTROLS - (v["height"] - picture)))
-print("at %d px: the page %d px wide, %d videos with their controls below the picture, %d tables" % (
-    width, layout["scrollWidth"], len(layout["videos"]), len(layout["tables"])))
+print("at %d px: the page %d px wide, %d videos with their controls below the picture, %d tables%s" % (
+    width, layout["scrollWidth"], len(layout["videos"]), len(layout["tables"]), " laid out as cards" if phone else ""))
 for b in bad:
     print("FAIL: " + b)
 sys.exit(1 if bad or not layout["videos"] else 0)

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <regex>
 #include <sstream>
 #include <thread>
 
@@ -191,8 +192,8 @@ TEST_CASE("the page: a section per scene with its videos, posters, panels as que
   // the description is text, never markup
   CHECK(html.find("&lt;b&gt;not&lt;/b&gt; bold &amp; kept") != std::string::npos);
   CHECK(html.find("<b>not") == std::string::npos);
-  CHECK(html.find("<td class=\"ok\">ok</td>") != std::string::npos);
-  CHECK(html.find("<td class=\"failed\">FAILED</td>") != std::string::npos);
+  CHECK(html.find("<td class=\"ok\" data-label=\"\">ok</td>") != std::string::npos);
+  CHECK(html.find("<td class=\"failed\" data-label=\"\">FAILED</td>") != std::string::npos);
   // both checks are closed forms: one heading, and every table in a box of its own that scrolls
   CHECK(html.find("<h3>Closed forms, checked</h3>\n<div class=\"table\">\n<table>") != std::string::npos);
   CHECK(html.find("earlier run") == std::string::npos);
@@ -259,6 +260,60 @@ TEST_CASE("the page: a scene that asks nothing shows its checks in the open") {
   const std::string html = pageHtml(readPack(dir.path.string()));
   CHECK(html.find("<details") == std::string::npos);
   CHECK(html.find("<h3>Closed forms, checked</h3>") != std::string::npos);
+}
+
+// each table's column headings, and the data-label of every cell of each of its rows
+struct TableLabels {
+  std::vector<std::string> headings;
+  std::vector<std::vector<std::string>> rows;
+};
+std::vector<TableLabels> tableLabels(const std::string& html) {
+  static const std::regex kHeading("<th>([^<]*)</th>"), kRow("<tr>(.*?)</tr>"), kCell("<td[^>]*>"),
+      kLabel(" data-label=\"([^\"]*)\"");
+  std::vector<TableLabels> tables;
+  for (size_t at = html.find("<table>"); at != std::string::npos; at = html.find("<table>", at + 1)) {
+    const std::string table = html.substr(at, html.find("</table>", at) - at);
+    const std::string head = table.substr(0, table.find("</thead>")), body = table.substr(head.size());
+    TableLabels t;
+    for (std::sregex_iterator h(head.begin(), head.end(), kHeading), end; h != end; ++h) t.headings.push_back((*h)[1]);
+    for (std::sregex_iterator r(body.begin(), body.end(), kRow), end; r != end; ++r) {
+      const std::string row = (*r)[1];
+      std::vector<std::string> labels;
+      for (std::sregex_iterator c(row.begin(), row.end(), kCell); c != end; ++c) {
+        const std::string cell = c->str();
+        std::smatch label;
+        labels.push_back(std::regex_search(cell, label, kLabel) ? label[1].str() : "(none)");
+      }
+      t.rows.push_back(labels);
+    }
+    tables.push_back(t);
+  }
+  return tables;
+}
+
+TEST_CASE("on a phone each table row is a card: every cell carries its column's heading") {
+  TempDir dir("cards");
+  SceneRecord r = impulses();
+  r.checks[1].earlierRun = true;
+  writeScene(dir.path, r);
+  const std::string html = pageHtml(readPack(dir.path.string()));
+  const std::vector<TableLabels> tables = tableLabels(html);
+  // the closed forms, the earlier run's values, how the pack was made
+  REQUIRE(tables.size() == 3);
+  CHECK(tables[0].headings ==
+        std::vector<std::string>{"variant", "t (s)", "quantity", "closed form", "simulated", "error", "tolerance", ""});
+  CHECK(tables[1].headings[3] == "earlier run");
+  CHECK(tables[2].headings == std::vector<std::string>{"scene", "videos", "frame size", "fps", "job (s)"});
+  for (const TableLabels& t : tables) {
+    CHECK(t.rows.size() >= 1);
+    for (const std::vector<std::string>& row : t.rows) CHECK(row == t.headings);
+  }
+  // the cards are laid out on narrow screens alone, the labels drawn from the cells' data-label
+  const size_t phone = html.find("@media (max-width: 600px)");
+  REQUIRE(phone != std::string::npos);
+  const size_t labels = html.find(".table td::before { content: attr(data-label)");
+  CHECK(labels > phone);
+  CHECK(labels < html.find("</style>"));
 }
 
 TEST_CASE("closed forms and values an earlier run gave are headed apart") {
@@ -396,8 +451,8 @@ TEST_CASE("a check's simulated round-off reads 0, its error still says how far o
   writeScene(dir.path, r);
   const std::string html = pageHtml(readPack(dir.path.string()));
   CHECK(html.find("8.88178e-16") == std::string::npos);
-  CHECK(html.find("<td class=\"number\">(0, 0)</td><td class=\"number\">(0, 0)</td><td class=\"number\">9.2e-16</td>") !=
-        std::string::npos);
+  CHECK(html.find("<td class=\"number\" data-label=\"closed form\">(0, 0)</td><td class=\"number\" data-label=\"simulated\">(0, "
+                  "0)</td><td class=\"number\" data-label=\"error\">9.2e-16</td>") != std::string::npos);
   // a small value that is no round-off of its row is data: shown
-  CHECK(html.find("(2, 0)</td><td class=\"number\">(2.001, 3e-05)</td>") != std::string::npos);
+  CHECK(html.find("(2, 0)</td><td class=\"number\" data-label=\"simulated\">(2.001, 3e-05)</td>") != std::string::npos);
 }
