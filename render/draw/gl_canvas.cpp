@@ -65,12 +65,7 @@ void GlCanvas::start(const Camera& camera, bool clear) {
   if (clear) gl_.clearFrame(style_.background, false);
   // world units, y up, centered on the camera: vertices are sent relative to the center, so that
   // single-precision GL keeps its digits for what is on screen
-  glMatrixMode(GL_PROJECTION);
-  glLoadIdentity();
-  const double hw = 0.5 * camera.worldWidth(), hh = 0.5 * camera.worldHeight();
-  glOrtho(-hw, hw, -hh, hh, -1.0, 1.0);
-  glMatrixMode(GL_MODELVIEW);
-  glLoadIdentity();
+  gl_.orthographic(0.5 * camera.worldWidth(), 0.5 * camera.worldHeight());
 }
 
 Image GlCanvas::finish() {
@@ -440,6 +435,7 @@ void GlCanvas::shape(unsigned mode) {
   keyed({-1.0, static_cast<double>(mode)});
   if (!batching_) {
     ++drawCalls_;
+    gl_.drawsDirectly();
     glBegin(mode);
     return;
   }

@@ -83,6 +83,17 @@ class GlContext {
   // a frame whose static part's key is the last frame's is the static part's frame, drawn and
   // resolved once and kept, with only the region of `pixels` drawn at the four positions over it
   void movingWithin(const Bounds& pixels);
+  // the orthographic view of a 2D frame (glOrtho over ±halfWidth × ±halfHeight, depth ±1), recorded
+  // like any GL call and remembered, so that the frame's moving part may be drawn in software
+  void orthographic(double halfWidth, double halfHeight);
+  // a canvas draws with GL calls of its own (not triangles of the store) in the part being recorded:
+  // the frame's moving part is then drawn by GL
+  void drawsDirectly();
+  // whether a frame's moving part may be drawn in software where that gives GL's pixels (the
+  // default; off, every frame is drawn by GL: the tests and the bench compare the two), and how many
+  // frames have been
+  void allowSoftware(bool allowed) { softwareAllowed_ = allowed; }
+  long softwareFrames() const { return softwareFrames_; }
   // the frame being drawn takes `samples` (2) samples a pixel rather than the context's 4: a frame
   // dense with small bodies (GlCanvas's rule), where the two look alike (gl_context.cpp)
   void fewerSamples(int samples);
@@ -129,9 +140,14 @@ class GlContext {
   // what clearFrame() said of the frame being drawn
   bool clears_ = false, clearsDepth_ = false;
   std::array<float, 4> clearColor_{};
-  std::vector<uint8_t> kept_;  // the static part's frame, resolved
-  int samplesNow_;             // the samples of the frame being drawn (aa_.samples or fewer)
-  int keptSamples_ = 0;        // the samples kept_ was resolved at
+  std::vector<uint8_t> kept_;                  // the static part's frame, resolved
+  std::optional<std::array<float, 2>> ortho_;  // orthographic()'s x and y scales this frame
+  bool movingDirect_ = false;                  // drawsDirectly() was said of the moving part
+  bool softwareAllowed_ = true;
+  std::optional<bool> softwareAgrees_;  // softwareAgrees(), once found
+  long softwareFrames_ = 0;
+  int samplesNow_;       // the samples of the frame being drawn (aa_.samples or fewer)
+  int keptSamples_ = 0;  // the samples kept_ was resolved at
   // the drawings at the sample positions (of a region), and the supersampled frame, reused from
   // frame to frame
   std::array<std::vector<uint8_t>, 4> samples_;
@@ -145,6 +161,11 @@ class GlContext {
     int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
     bool empty() const { return x1 <= x0 || y1 <= y0; }
   };
+  // the static part's drawings at each sample position within staticRegion_ (staticDrawings_ of
+  // them, 0 for none), kept with kept_
+  std::array<std::vector<uint8_t>, 4> staticSamples_;
+  Region staticRegion_;
+  int staticDrawings_ = 0;
   // the region of the frame that output pixels `b` may touch at any sample position
   Region regionOf(const Bounds& b) const;
   // the display list steps_.size() records into, begun
@@ -163,7 +184,18 @@ class GlContext {
   // the recorded lists up to `parts` drawn at the sample positions and resolved into `frame`
   // (top row first) within `region`; with `firstWhole`, the first drawing is the whole frame and
   // read into `frame` (outside the region every sample is alike), else only the region is drawn
-  void resolveRegion(uint8_t* frame, int parts, const Region& region, bool firstWhole, bool stencil);
+  // (with `keep`, the drawings kept too, in staticSamples_)
+  void resolveRegion(uint8_t* frame, int parts, const Region& region, bool firstWhole, bool stencil, bool keep = false);
+  // samples_ (and the frame's own rows, with `firstWhole`) resolved into `frame` within `region`
+  void resolveInto(uint8_t* frame, const Region& region, bool firstWhole, int drawings);
+  // the drawings just made within `region` kept in staticSamples_
+  void keepStaticSamples(const uint8_t* frame, const Region& region, bool firstWhole, int drawings);
+  // the moving part drawn in software over the kept static part's drawings and resolved into
+  // `frame` within `moving`, when software draws it as GL would (triangle_raster.h); whether it was
+  bool drawnInSoftware(uint8_t* frame, const Region& moving);
+  // whether software draws probe triangles (triangle_raster.h) as this GL does, sample for sample:
+  // drawn by both once, the first time it is asked (a GL that rounds otherwise is left to draw)
+  bool softwareAgrees();
 };
 
 }  // namespace render::draw

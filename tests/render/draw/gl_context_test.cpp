@@ -278,3 +278,93 @@ TEST_CASE_FIXTURE(Fixture,
     CHECK(differingBytes(batched, blended) == 0);
   }
 }
+
+namespace {
+
+// a pile of opaque boxes, turned a little by `turn` and shifted by `x`, over a hatched ground: the
+// moving part all triangles of the store; `extra` adds what GL must draw itself
+void pileScene(render::draw::GlCanvas& c, double x, double turn, int rows, double size,
+               const std::function<void(render::draw::GlCanvas&)>& extra = {}) {
+  c.halfPlane({0, -0.5}, {0.05, 1}, {Role::StaticBody, 1, 1});
+  for (int row = 0; row < rows; ++row)
+    for (int k = 0; k < rows - row; ++k) {
+      const Vec2 center{x + (k - 0.5 * (rows - row)) * size * 1.05, -0.4 + (row + 0.5) * size};
+      const double a = turn * (k - row), h = 0.5 * size;
+      const Vec2 u{std::cos(a) * h, std::sin(a) * h}, v{-u.y(), u.x()};
+      c.polygon({center - u - v, center + u - v, center + u + v, center - u + v}, {Role::Body, (k + row) % 3, 1});
+    }
+  if (extra) extra(c);
+}
+
+}  // namespace
+
+// A frame whose moving part is opaque triangles alone is drawn in software over the kept static
+// part's own drawings (triangle_raster.h): every frame the one llvmpipe's 4x multisampling gives,
+// byte for byte, and the one GL gives drawing it at each sample position; a frame with a translucent
+// body, or a box past the view's edge, is drawn by GL
+TEST_CASE_FIXTURE(Fixture, "a pile's frames drawn in software over the kept ground are GL's, byte for byte") {
+  render::draw::GlContext byGl{kWidth, kHeight};
+  byGl.allowSoftware(false);
+  render::draw::GlCanvas glCanvas{byGl, text, s};
+  Image frame, reference;
+  const auto both = [&](const std::function<void(render::draw::GlCanvas&)>& draw) {
+    gl.makeCurrent();
+    canvas.begin(camera);
+    draw(canvas);
+    canvas.finish(frame);
+    byGl.makeCurrent();
+    glCanvas.begin(camera);
+    draw(glCanvas);
+    glCanvas.finish(reference);
+    gl.makeCurrent();
+  };
+  for (int k = 0; k < 6; ++k) {
+    const auto draw = [&](render::draw::GlCanvas& c) { pileScene(c, -0.2 + 0.013 * k, 0.002 * k, 5, 0.31); };
+    both(draw);
+    CHECK(differingBytes(frame, reference) == 0);
+    CHECK(differingBytes(frame, multisampled(gl, canvas, camera, s.background, draw)) == 0);
+  }
+  // the first frame made the kept ground: the five after it were drawn in software
+  CHECK(gl.softwareFrames() == 5);
+  CHECK(byGl.softwareFrames() == 0);
+  // a translucent body: GL's to draw
+  both([&](render::draw::GlCanvas& c) {
+    pileScene(c, 0.1, 0.01, 5, 0.31, [](render::draw::GlCanvas& d) { d.circle({1.2, 0.6}, 0.3, {Role::Body, 2, 0.5}); });
+  });
+  CHECK(differingBytes(frame, reference) == 0);
+  CHECK(gl.softwareFrames() == 5);
+  // a box past the view's right edge: GL clips it, so GL draws it
+  both([&](render::draw::GlCanvas& c) {
+    pileScene(c, 0.1, 0.01, 5, 0.31, [](render::draw::GlCanvas& d) {
+      d.polygon({{3.5, 0.0}, {4.3, 0.0}, {4.3, 0.5}, {3.5, 0.5}}, {Role::Body, 1, 1});
+    });
+  });
+  CHECK(differingBytes(frame, reference) == 0);
+  CHECK(gl.softwareFrames() == 5);
+  // and software again, the ground kept all along
+  both([&](render::draw::GlCanvas& c) { pileScene(c, 0.05, 0.003, 5, 0.31); });
+  CHECK(differingBytes(frame, reference) == 0);
+  CHECK(gl.softwareFrames() == 6);
+}
+
+// a frame of 200 small bodies takes two samples a pixel (GlCanvas's rule): drawn in software there too
+TEST_CASE_FIXTURE(Fixture, "a dense pile at two samples a pixel: software's frames are GL's, byte for byte") {
+  render::draw::GlContext byGl{kWidth, kHeight};
+  byGl.allowSoftware(false);
+  render::draw::GlCanvas glCanvas{byGl, text, s};
+  Image frame, reference;
+  for (int k = 0; k < 4; ++k) {
+    const auto draw = [&](render::draw::GlCanvas& c) { pileScene(c, 0.013 * k, 0.004 * k, 21, 0.09); };
+    gl.makeCurrent();
+    canvas.begin(camera);
+    draw(canvas);
+    canvas.finish(frame);
+    CHECK(gl.samples() == 2);
+    byGl.makeCurrent();
+    glCanvas.begin(camera);
+    draw(glCanvas);
+    glCanvas.finish(reference);
+    CHECK(differingBytes(frame, reference) == 0);
+  }
+  CHECK(gl.softwareFrames() == 3);
+}

@@ -1,0 +1,210 @@
+// Opaque triangles drawn in software: every sample the same as llvmpipe's, at each of the four
+// sample positions, for triangles of every size and slant, level and upright edges on the sample
+// rows and columns included; and what is left to GL (translucent, two-coloured, outside the view).
+#include "render/draw/triangle_raster.h"
+
+#include <doctest/doctest.h>
+
+#define GL_GLEXT_PROTOTYPES
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#include <random>
+#include <vector>
+
+#include "render/draw/gl_context.h"
+#include "render/draw/sample_resolve.h"
+
+using namespace render::draw;
+
+namespace {
+
+constexpr int kWidth = 320, kHeight = 200;
+constexpr double kHalfWidth = 8.37, kHalfHeight = kHalfWidth * kHeight / kWidth;
+
+// glOrtho's x and y scales, as Mesa holds them (floats)
+float orthoScale(double half) { return 2.0f / (static_cast<float>(half) - static_cast<float>(-half)); }
+
+struct Drawn {
+  std::vector<uint8_t> gl, software;
+};
+
+// `triangles` drawn by GL and in software at sample position `at`, over a background
+Drawn drawBoth(const std::vector<TriangleVertex>& triangles, const std::array<float, 2>& at) {
+  Drawn d;
+  glViewportIndexedf(0, 0.5f - at[0], 0.5f - at[1], static_cast<float>(kWidth), static_cast<float>(kHeight));
+  glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glBegin(GL_TRIANGLES);
+  for (const TriangleVertex& v : triangles) {
+    glColor4d(v.r, v.g, v.b, v.a);
+    glVertex2d(v.x, v.y);
+  }
+  glEnd();
+  d.gl.resize(static_cast<size_t>(kWidth) * kHeight * 4);
+  glReadPixels(0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE, d.gl.data());
+  d.software.assign(d.gl.size(), 0);
+  for (size_t p = 3; p < d.software.size(); p += 4) d.software[p] = 255;
+  RasterView view;
+  view.scaleX = orthoScale(kHalfWidth), view.scaleY = orthoScale(kHalfHeight);
+  view.halfWidth = kWidth / 2.0f, view.halfHeight = kHeight / 2.0f;
+  view.translateX = 0.5f - at[0] + kWidth / 2.0f, view.translateY = 0.5f - at[1] + kHeight / 2.0f;
+  rasterOpaqueTriangles(triangles.data(), triangles.size(), view, {d.software.data(), 0, 0, kWidth, kHeight});
+  return d;
+}
+
+// a GL context drawing 2D as GlCanvas does: the orthographic view, no blending, depth or culling
+struct Context {
+  GlContext gl{kWidth, kHeight, Antialiasing{1, 1, false}};
+  Context() {
+    gl.makeCurrent();
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(-kHalfWidth, kHalfWidth, -kHalfHeight, kHalfHeight, -1.0, 1.0);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glDisable(GL_BLEND);
+    glDisable(GL_STENCIL_TEST);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+  }
+};
+
+long differingPixels(const Drawn& d) {
+  long n = 0;
+  for (size_t p = 0; p < d.gl.size(); p += 4) n += std::memcmp(&d.gl[p], &d.software[p], 4) != 0;
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("random opaque triangles: every sample llvmpipe's, at each of the four sample positions") {
+  Context context;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> centerX(-7.5f, 7.5f), centerY(-4.5f, 4.5f), offset(-0.6f, 0.6f), channel(0.0f, 1.0f);
+  long drawings = 0, differing = 0, covered = 0;
+  for (int t = 0; t < 600; ++t) {
+    // small (a pixel or two), box-sized, large; some with a level or an upright edge
+    const float size = t % 3 == 0 ? 0.05f : t % 3 == 1 ? 1.0f : 6.0f;
+    const float cx = centerX(rng), cy = centerY(rng);
+    std::vector<TriangleVertex> triangles;
+    const float r = channel(rng), g = channel(rng), b = channel(rng);
+    for (int k = 0; k < 3; ++k) triangles.push_back({cx + size * offset(rng), cy + size * offset(rng), r, g, b, 1.0f});
+    if (t % 4 == 0) triangles[1].y = triangles[0].y;
+    if (t % 4 == 1) triangles[1].x = triangles[0].x;
+    // a second triangle over the first, sharing an edge: the samples on it go to one of them
+    for (int k = 0; k < 2; ++k) triangles.push_back({triangles[k].x, triangles[k].y, g, b, r, 1.0f});
+    triangles.push_back({cx + size * offset(rng), cy + size * offset(rng), g, b, r, 1.0f});
+    if (!rasterizesAlike(triangles.data(), triangles.size(), orthoScale(kHalfWidth), orthoScale(kHalfHeight))) continue;
+    for (const auto& at : kSamplePositions) {
+      const Drawn d = drawBoth(triangles, at);
+      differing += differingPixels(d);
+      for (size_t p = 0; p < d.gl.size(); p += 4) covered += d.gl[p] != 0 || d.gl[p + 1] != 0 || d.gl[p + 2] != 0;
+      ++drawings;
+    }
+  }
+  CHECK(drawings > 1500);
+  CHECK(covered > 100000);
+  CHECK(differing == 0);
+}
+
+TEST_CASE("triangles on the sample grid: level and upright edges through samples go as GL's") {
+  Context context;
+  // a pixel is 2 kHalfWidth / kWidth world units; edges exactly on pixel centers at sample 0.5
+  const float px = static_cast<float>(2 * kHalfWidth / kWidth);
+  long differing = 0;
+  for (int i = 0; i < 40; ++i) {
+    const float x0 = (i - 20) * 3.0f * px, y0 = (i % 7 - 3) * 5.0f * px;
+    const std::vector<TriangleVertex> box = {{x0, y0, 1, 1, 1, 1},
+                                             {x0 + 9 * px, y0, 1, 1, 1, 1},
+                                             {x0 + 9 * px, y0 + 7 * px, 1, 1, 1, 1},
+                                             {x0, y0, 0.5f, 0.2f, 0.9f, 1},
+                                             {x0 + 9 * px, y0 + 7 * px, 0.5f, 0.2f, 0.9f, 1},
+                                             {x0, y0 + 7 * px, 0.5f, 0.2f, 0.9f, 1}};
+    for (const auto& at : kSamplePositions) differing += differingPixels(drawBoth(box, at));
+    differing += differingPixels(drawBoth(box, {0.5f, 0.5f}));
+  }
+  CHECK(differing == 0);
+}
+
+// GL's viewport transform is one fused multiply-add: where that and a multiply then an add snap a
+// corner to different subpixels, one of them a sample's column, the triangle's upright edge through
+// the sample goes as the fused one puts it
+TEST_CASE("an upright edge where fused and separate roundings part: GL's is the fused one") {
+  Context context;
+  const float sx = orthoScale(kHalfWidth), half = kWidth / 2.0f;
+  const auto at = kSamplePositions[0];
+  const float translate = 0.5f - at[0] + half;
+  const auto snap = [](float window) { return std::llrint(static_cast<float>(window - 0.5f) * 256.0f); };
+  std::vector<float> parted;
+  std::mt19937 rng(5);
+  std::uniform_int_distribution<int> column(10, kWidth - 10);
+  std::uniform_int_distribution<int> nudge(-40, 40);
+  for (int tries = 0; tries < 2000000 && parted.size() < 24; ++tries) {
+    // a vertex near where a corner's snap to a sample's column rounds (half a subpixel off it),
+    // nudged by ulps
+    const double target = (column(rng) + 0.5 + (tries % 2 ? 1.0 : -1.0) / 512.0 - translate) / half / sx;
+    float x = static_cast<float>(target);
+    for (int n = nudge(rng); n != 0; n += n > 0 ? -1 : 1) x = std::nextafter(x, n > 0 ? 1e9f : -1e9f);
+    const float clip = sx * x;
+    const long long fused = snap(std::fma(clip, half, translate));
+    const volatile float product = clip * half;
+    const long long separate = snap(product + translate);
+    if (fused != separate && (fused % 256 == 0 || separate % 256 == 0)) parted.push_back(x);
+  }
+  REQUIRE(parted.size() >= 8);
+  long differing = 0;
+  for (const float x : parted) {
+    // upright edges at x, the triangle to the right of one and to the left of the other
+    const std::vector<TriangleVertex> triangles = {{x, -2.0f, 1, 1, 1, 1},
+                                                   {x, 2.0f, 1, 1, 1, 1},
+                                                   {x + 0.5f, 0.0f, 1, 1, 1, 1},
+                                                   {x, -1.0f, 0.3f, 0.6f, 0.9f, 1},
+                                                   {x - 0.4f, 0.5f, 0.3f, 0.6f, 0.9f, 1},
+                                                   {x, 1.5f, 0.3f, 0.6f, 0.9f, 1}};
+    differing += differingPixels(drawBoth(triangles, at));
+  }
+  CHECK(differing == 0);
+}
+
+TEST_CASE("what software does not draw as GL does is left to GL") {
+  const float sx = orthoScale(kHalfWidth), sy = orthoScale(kHalfHeight);
+  std::vector<TriangleVertex> t = {{0, 0, 1, 0, 0, 1}, {1, 0, 1, 0, 0, 1}, {0, 1, 1, 0, 0, 1}};
+  CHECK(rasterizesAlike(t.data(), t.size(), sx, sy));
+  // translucent
+  t[2].a = 0.5f;
+  CHECK_FALSE(rasterizesAlike(t.data(), t.size(), sx, sy));
+  t[2].a = 1.0f;
+  // two colours (GL would blend them across the triangle)
+  t[1].g = 0.5f;
+  CHECK_FALSE(rasterizesAlike(t.data(), t.size(), sx, sy));
+  t[1].g = 0.0f;
+  // a corner outside the view: GL clips it into other triangles
+  t[1].x = static_cast<float>(kHalfWidth) * 1.01f;
+  CHECK_FALSE(rasterizesAlike(t.data(), t.size(), sx, sy));
+  t[1].x = 1.0f;
+  // not a number
+  t[0].y = std::nanf("");
+  CHECK_FALSE(rasterizesAlike(t.data(), t.size(), sx, sy));
+  t[0].y = 0.0f;
+  // not whole triangles
+  CHECK_FALSE(rasterizesAlike(t.data(), 2, sx, sy));
+  CHECK(rasterizesAlike(t.data(), 3, sx, sy));
+}
+
+// GlContext draws its probe once with GL and in software, and draws frames in software only if they
+// agree: the probe has edges on sample columns and rows in plenty, and here they agree
+TEST_CASE("the probe's triangles: many, on samples' columns and rows, drawn alike by GL and software") {
+  Context context;
+  RasterView view;
+  view.scaleX = orthoScale(kHalfWidth), view.scaleY = orthoScale(kHalfHeight);
+  view.halfWidth = view.translateX = kWidth / 2.0f, view.halfHeight = view.translateY = kHeight / 2.0f;
+  const std::vector<TriangleVertex> probe = probeTriangles(view, kWidth, kHeight);
+  CHECK(probe.size() >= 3 * 40);
+  CHECK(rasterizesAlike(probe.data(), probe.size(), view.scaleX, view.scaleY));
+  const Drawn d = drawBoth(probe, {0.5f, 0.5f});
+  long covered = 0;
+  for (size_t p = 0; p < d.gl.size(); p += 4) covered += d.gl[p] != 0 || d.gl[p + 1] != 0 || d.gl[p + 2] != 0;
+  CHECK(covered > 200);
+  CHECK(differingPixels(d) == 0);
+}
