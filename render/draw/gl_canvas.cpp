@@ -32,7 +32,7 @@ void GlCanvas::beginOverlay(const Camera& camera) { start(camera, false); }
 
 void GlCanvas::start(const Camera& camera, bool clear) {
   // a new frame is recorded, to be drawn at each sample position; an overlay adds to the frame begun
-  if (clear) gl_.beginFrame();
+  if (clear) gl_.beginFrame(true);
   // a frame begun here is all drawn by this canvas, which can say where (finish()); an overlay's
   // frame has drawing the canvas did not see
   bounded_ = clear;

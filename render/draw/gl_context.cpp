@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <cstddef>
 #include <cmath>
 #include <cstring>
@@ -38,10 +39,10 @@ namespace render::draw {
 // elsewhere every sample is the background. `rigidreel render scenes/three_collisions_poll.yaml
 // --variant A` (the 720p video and its poster, ffmpeg included): 4.3 → 2.7-3.1 CPU seconds.
 //
-// Once a frame's static part is kept, its drawings at each sample position are kept with it, and a
-// moving part of opaque triangles alone (a pile's boxes) is drawn over them in software as llvmpipe
-// draws it (triangle_raster.h), GL's frame byte for byte: 2 s of the 210-box half-plane pile at 720p
-// took 1.42 s, 0.47 s so (render/README.md, "A moving part drawn in software").
+// A 2D frame whose moving part is opaque triangles alone (a pile's boxes, most frames of a few bodies)
+// is drawn in software as llvmpipe draws it (triangle_raster.h), over the kept static part's own
+// drawings at each sample position or over the background: GL's frame byte for byte. 2 s of the
+// 210-box half-plane pile at 720p took 1.42 s, 0.47 s so (render/README.md, "Frames drawn in software").
 //
 // Fewer samples, measured by `build/rigidreel_bench build/rigidreel scenes/three_collisions_poll.yaml
 // --antialiasing` (720p; wall ms per frame of rasterizing at the sample positions; against the
@@ -160,7 +161,7 @@ int GlContext::freshStencil() {
   return ++lastStencil_;
 }
 
-void GlContext::beginFrame() {
+void GlContext::beginFrame(bool byCanvas2d) {
   if (recording_) glEndList();
   // each drawing of the frame starts from a cleared stencil (read()), so its values count from 1
   lastStencil_ = 0;
@@ -172,7 +173,8 @@ void GlContext::beginFrame() {
   staticStencil_ = false;
   clears_ = clearsDepth_ = false;
   ortho_.reset();
-  movingDirect_ = false;
+  byCanvas2d_ = byCanvas2d;
+  direct_ = {false, false};
   steps_.clear();
   triangles_.clear();
   beginList();
@@ -289,7 +291,7 @@ void GlContext::orthographic(double halfWidth, double halfHeight) {
 }
 
 void GlContext::drawsDirectly() {
-  if (recording_ && part_ == 1) movingDirect_ = true;
+  if (recording_) direct_[static_cast<size_t>(part_)] = true;
 }
 
 bool GlContext::softwareAgrees() {
@@ -322,27 +324,55 @@ bool GlContext::softwareAgrees() {
   return *softwareAgrees_;
 }
 
-bool GlContext::drawnInSoftware(uint8_t* frame, const Region& moving) {
-  // the moving part's triangles alone, opaque, each of one colour, none clipped, over the kept
-  // static part's own drawings at each sample position (triangle_raster.h)
-  if (!softwareAllowed_ || !ortho_ || movingDirect_ || aa_.supersample != 1 || staticDrawings_ != samplesNow_) return false;
-  if (moving.x0 < staticRegion_.x0 || moving.y0 < staticRegion_.y0 || moving.x1 > staticRegion_.x1 ||
-      moving.y1 > staticRegion_.y1)
-    return false;
+bool GlContext::softwareDraws(int firstPart) const {
+  if (!softwareAllowed_ || !byCanvas2d_ || !ortho_ || aa_.supersample != 1 || samplesNow_ < 2) return false;
+  for (int part = firstPart; part < 2; ++part)
+    if (direct_[part]) return false;
   for (const Step& step : steps_)
-    if (step.part == 1 && step.count > 0 && !rasterizesAlike(&triangles_[step.first], step.count, (*ortho_)[0], (*ortho_)[1]))
+    if (step.part >= firstPart && step.count > 0 &&
+        !rasterizesAlike(&triangles_[step.first], step.count, (*ortho_)[0], (*ortho_)[1]))
       return false;
-  if (!softwareAgrees()) return false;
-  const auto drawStart = std::chrono::steady_clock::now();
-  const int bw = moving.x1 - moving.x0, bh = moving.y1 - moving.y0;
-  const size_t keptRow = static_cast<size_t>(staticRegion_.x1 - staticRegion_.x0) * 4, row = static_cast<size_t>(bw) * 4;
-  for (int k = 0; k < samplesNow_; ++k) {
-    // the static part's drawing at this position, within the moving region
-    samples_[k].resize(row * bh);
-    for (int r = 0; r < bh; ++r)
-      std::memcpy(samples_[k].data() + r * row,
+  return true;
+}
+
+bool GlContext::drawnInSoftware(uint8_t* frame, const Region& moving) {
+  // the moving part's triangles over the kept static part's own drawings at each sample position
+  if (staticDrawings_ != samplesNow_ || moving.x0 < staticRegion_.x0 || moving.y0 < staticRegion_.y0 ||
+      moving.x1 > staticRegion_.x1 || moving.y1 > staticRegion_.y1)
+    return false;
+  if (!softwareDraws(1) || !softwareAgrees()) return false;
+  const size_t keptRow = static_cast<size_t>(staticRegion_.x1 - staticRegion_.x0) * 4;
+  const size_t row = static_cast<size_t>(moving.x1 - moving.x0) * 4;
+  rasterize(frame, moving, 1, [&](int k, uint8_t* drawing) {
+    for (int r = 0; r < moving.y1 - moving.y0; ++r)
+      std::memcpy(drawing + r * row,
                   staticSamples_[k].data() + (staticRegion_.y1 - moving.y1 + r) * keptRow + (moving.x0 - staticRegion_.x0) * 4,
                   row);
+  });
+  return true;
+}
+
+bool GlContext::drawnWholeInSoftware(uint8_t* frame, const Region& region) {
+  // every part's triangles over the background, which is the frame outside `region`
+  if (!clears_ || !softwareDraws(0) || !softwareAgrees()) return false;
+  const std::array<uint8_t, 4> background = clearBytes();
+  const auto fill = [&](uint8_t* at, size_t pixels) {
+    for (size_t i = 0; i < pixels; ++i) std::memcpy(at + 4 * i, background.data(), 4);
+  };
+  const auto fillStart = std::chrono::steady_clock::now();
+  fill(frame, static_cast<size_t>(width_) * height_);
+  if (cost_) cost_->raster += std::chrono::duration<double>(std::chrono::steady_clock::now() - fillStart).count();
+  const size_t pixels = static_cast<size_t>(region.x1 - region.x0) * (region.y1 - region.y0);
+  rasterize(frame, region, 0, [&](int, uint8_t* drawing) { fill(drawing, pixels); });
+  return true;
+}
+
+void GlContext::rasterize(uint8_t* frame, const Region& region, int firstPart, const std::function<void(int, uint8_t*)>& under) {
+  const auto drawStart = std::chrono::steady_clock::now();
+  const size_t bytes = static_cast<size_t>(region.x1 - region.x0) * (region.y1 - region.y0) * 4;
+  for (int k = 0; k < samplesNow_; ++k) {
+    samples_[k].resize(bytes);
+    under(k, samples_[k].data());
     const std::array<float, 2> at =
         samplesNow_ == 4 ? kSamplePositions[static_cast<size_t>(k)] : kTwoSamplePositions[static_cast<size_t>(k)];
     RasterView view;
@@ -350,14 +380,25 @@ bool GlContext::drawnInSoftware(uint8_t* frame, const Region& moving) {
     view.halfWidth = static_cast<float>(width_) / 2.0f, view.halfHeight = static_cast<float>(height_) / 2.0f;
     // (as glViewportIndexedf's translation: the shift, then half the size added in floats)
     view.translateX = (0.5f - at[0]) + view.halfWidth, view.translateY = (0.5f - at[1]) + view.halfHeight;
-    const RasterTarget target{samples_[k].data(), moving.x0, moving.y0, moving.x1, moving.y1};
+    const RasterTarget target{samples_[k].data(), region.x0, region.y0, region.x1, region.y1};
     for (const Step& step : steps_)
-      if (step.part == 1 && step.count > 0) rasterOpaqueTriangles(&triangles_[step.first], step.count, view, target);
+      if (step.part >= firstPart && step.count > 0) rasterOpaqueTriangles(&triangles_[step.first], step.count, view, target);
   }
   if (cost_) cost_->raster += std::chrono::duration<double>(std::chrono::steady_clock::now() - drawStart).count();
-  resolveInto(frame, moving, false, samplesNow_);
+  resolveInto(frame, region, false, samplesNow_);
   ++softwareFrames_;
-  return true;
+}
+
+std::array<uint8_t, 4> GlContext::clearBytes() {
+  // GL's own bytes for the clear colour: cleared and read back once per colour
+  if (clearColor_ != clearedColor_) {
+    glDisable(GL_SCISSOR_TEST);
+    glClearColor(clearColor_[0], clearColor_[1], clearColor_[2], clearColor_[3]);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, clearedBytes_.data());
+    clearedColor_ = clearColor_;
+  }
+  return clearedBytes_;
 }
 
 Image GlContext::read() {
@@ -525,7 +566,7 @@ void GlContext::read(Image& frame) {
     // where the drawings at the other positions may differ from the first: what the canvas said,
     // or the whole frame
     const Region all = drawnWithin_ ? regionOf(*drawnWithin_) : Region{0, 0, w, h};
-    resolveRegion(first, 2, all, true, stencil);
+    if (!drawnWholeInSoftware(first, all)) resolveRegion(first, 2, all, true, stencil);
   }
   // a skipped clear left older frames' values in the stencil: a primitive drawn at once (not
   // recorded) clears it before taking a value

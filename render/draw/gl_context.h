@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -59,8 +60,10 @@ class GlContext {
   // make this context current (after another one was)
   void makeCurrent();
   // a frame begins: the GL calls until read() are recorded (display lists, and the triangles given to
-  // drawTriangles), to be drawn once per sample; a canvas calls this before its first GL call of a frame
-  void beginFrame();
+  // drawTriangles), to be drawn once per sample; a canvas calls this before its first GL call of a frame.
+  // `byCanvas2d`: the 2D canvas draws the whole frame, and says when it draws with GL calls of its
+  // own (drawsDirectly()): only such a frame may be drawn in software
+  void beginFrame(bool byCanvas2d = false);
   // the frame's store of triangles: a canvas appends a batch's vertices here, then drawTriangles()
   std::vector<TriangleVertex>& triangleStore() { return triangles_; }
   // the store's vertices from `first` on drawn as GL_TRIANGLES, in order with the GL calls around
@@ -142,7 +145,8 @@ class GlContext {
   std::array<float, 4> clearColor_{};
   std::vector<uint8_t> kept_;                  // the static part's frame, resolved
   std::optional<std::array<float, 2>> ortho_;  // orthographic()'s x and y scales this frame
-  bool movingDirect_ = false;                  // drawsDirectly() was said of the moving part
+  bool byCanvas2d_ = false;                    // beginFrame()'s
+  std::array<bool, 2> direct_{};               // drawsDirectly() was said of the static part, of the rest
   bool softwareAllowed_ = true;
   std::optional<bool> softwareAgrees_;  // softwareAgrees(), once found
   long softwareFrames_ = 0;
@@ -190,9 +194,21 @@ class GlContext {
   void resolveInto(uint8_t* frame, const Region& region, bool firstWhole, int drawings);
   // the drawings just made within `region` kept in staticSamples_
   void keepStaticSamples(const uint8_t* frame, const Region& region, bool firstWhole, int drawings);
+  // whether the recorded steps of parts from `firstPart` on are triangles that software draws as
+  // GL would (triangle_raster.h), in a frame it may draw
+  bool softwareDraws(int firstPart) const;
   // the moving part drawn in software over the kept static part's drawings and resolved into
-  // `frame` within `moving`, when software draws it as GL would (triangle_raster.h); whether it was
+  // `frame` within `moving`, when software draws it as GL would; whether it was
   bool drawnInSoftware(uint8_t* frame, const Region& moving);
+  // the whole frame drawn so, over the background, which it is outside `region`; whether it was
+  bool drawnWholeInSoftware(uint8_t* frame, const Region& region);
+  // the steps of parts from `firstPart` on rasterized at each sample position over what `under`
+  // puts in that position's drawing of `region`, then resolved into `frame` within it
+  void rasterize(uint8_t* frame, const Region& region, int firstPart, const std::function<void(int, uint8_t*)>& under);
+  // the clear colour's bytes as GL clears to them (found by GL once per colour)
+  std::array<uint8_t, 4> clearBytes();
+  std::array<float, 4> clearedColor_{-1.0f, -1.0f, -1.0f, -1.0f};
+  std::array<uint8_t, 4> clearedBytes_{};
   // whether software draws probe triangles (triangle_raster.h) as this GL does, sample for sample:
   // drawn by both once, the first time it is asked (a GL that rounds otherwise is left to draw)
   bool softwareAgrees();

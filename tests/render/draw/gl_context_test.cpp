@@ -368,3 +368,45 @@ TEST_CASE_FIXTURE(Fixture, "a dense pile at two samples a pixel: software's fram
   }
   CHECK(gl.softwareFrames() == 3);
 }
+
+// A frame with no ground, its bodies opaque (a ball, a turned block, an axis, an arrow), is drawn in
+// software whole, over the background GL clears to: byte for byte GL's drawing and its 4x
+// multisampling; a translucent body leaves it to GL
+TEST_CASE_FIXTURE(Fixture, "a frame of opaque bodies alone is drawn in software whole, byte for byte GL's") {
+  render::draw::GlContext byGl{kWidth, kHeight};
+  byGl.allowSoftware(false);
+  render::draw::GlCanvas glCanvas{byGl, text, s};
+  const auto opaqueScene = [](render::draw::GlCanvas& c, double x) {
+    c.circle({x, 1.0}, 0.3, {Role::Body, 2, 1});
+    c.segment({x, 1.0}, {x + 0.3, 1.0}, {Role::BodyAxis, 2, 1});
+    c.polygon({{0.4, 0.2}, {1.3, 0.35}, {1.15, 1.25}, {0.25, 1.1}}, {Role::Body, 0, 1});
+    c.arrow({x, 1.0}, {x + 0.5, 1.3}, {Role::Velocity, 2, 1});
+  };
+  Image frame, reference;
+  for (int k = 0; k < 3; ++k) {
+    const auto draw = [&](render::draw::GlCanvas& c) { opaqueScene(c, -1.0 + 0.37 * k); };
+    gl.makeCurrent();
+    canvas.begin(camera);
+    draw(canvas);
+    canvas.finish(frame);
+    byGl.makeCurrent();
+    glCanvas.begin(camera);
+    draw(glCanvas);
+    glCanvas.finish(reference);
+    gl.makeCurrent();
+    CHECK(differingBytes(frame, reference) == 0);
+    CHECK(differingBytes(frame, multisampled(gl, canvas, camera, s.background, draw)) == 0);
+  }
+  CHECK(gl.softwareFrames() == 3);
+  CHECK(byGl.softwareFrames() == 0);
+  // a translucent body: GL's
+  canvas.begin(camera);
+  opaqueScene(canvas, 0.0);
+  canvas.circle({-1.5, 0.5}, 0.3, {Role::Body, 1, 0.5});
+  canvas.finish(frame);
+  CHECK(gl.softwareFrames() == 3);
+  CHECK(differingBytes(frame, multisampled(gl, canvas, camera, s.background, [&](render::draw::GlCanvas& c) {
+                         opaqueScene(c, 0.0);
+                         c.circle({-1.5, 0.5}, 0.3, {Role::Body, 1, 0.5});
+                       })) == 0);
+}
