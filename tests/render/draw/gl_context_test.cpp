@@ -296,18 +296,14 @@ void pileScene(render::draw::GlCanvas& c, double x, double turn, int rows, doubl
   if (extra) extra(c);
 }
 
-}  // namespace
-
-// A frame whose moving part is opaque triangles alone is drawn in software over the kept static
-// part's own drawings (triangle_raster.h): every frame the one llvmpipe's 4x multisampling gives,
-// byte for byte, and the one GL gives drawing it at each sample position; a frame with a translucent
-// body, or a box past the view's edge, is drawn by GL
-TEST_CASE_FIXTURE(Fixture, "a pile's frames drawn in software over the kept ground are GL's, byte for byte") {
+// the fixture's context, which draws in software where it can, beside one that draws every frame
+// with GL: each frame drawn by both, into `frame` and `reference`
+struct TwoWays : Fixture {
   render::draw::GlContext byGl{kWidth, kHeight};
-  byGl.allowSoftware(false);
   render::draw::GlCanvas glCanvas{byGl, text, s};
   Image frame, reference;
-  const auto both = [&](const std::function<void(render::draw::GlCanvas&)>& draw) {
+  TwoWays() { byGl.allowSoftware(false); }
+  void both(const std::function<void(render::draw::GlCanvas&)>& draw) {
     gl.makeCurrent();
     canvas.begin(camera);
     draw(canvas);
@@ -317,7 +313,16 @@ TEST_CASE_FIXTURE(Fixture, "a pile's frames drawn in software over the kept grou
     draw(glCanvas);
     glCanvas.finish(reference);
     gl.makeCurrent();
-  };
+  }
+};
+
+}  // namespace
+
+// A frame whose moving part is opaque triangles alone is drawn in software over the kept static
+// part's own drawings (triangle_raster.h): every frame the one llvmpipe's 4x multisampling gives,
+// byte for byte, and the one GL gives drawing it at each sample position; a frame with a translucent
+// body, or a box past the view's edge, is drawn by GL
+TEST_CASE_FIXTURE(TwoWays, "a pile's frames drawn in software over the kept ground are GL's, byte for byte") {
   for (int k = 0; k < 6; ++k) {
     const auto draw = [&](render::draw::GlCanvas& c) { pileScene(c, -0.2 + 0.013 * k, 0.002 * k, 5, 0.31); };
     both(draw);
@@ -348,22 +353,10 @@ TEST_CASE_FIXTURE(Fixture, "a pile's frames drawn in software over the kept grou
 }
 
 // a frame of 200 small bodies takes two samples a pixel (GlCanvas's rule): drawn in software there too
-TEST_CASE_FIXTURE(Fixture, "a dense pile at two samples a pixel: software's frames are GL's, byte for byte") {
-  render::draw::GlContext byGl{kWidth, kHeight};
-  byGl.allowSoftware(false);
-  render::draw::GlCanvas glCanvas{byGl, text, s};
-  Image frame, reference;
+TEST_CASE_FIXTURE(TwoWays, "a dense pile at two samples a pixel: software's frames are GL's, byte for byte") {
   for (int k = 0; k < 4; ++k) {
-    const auto draw = [&](render::draw::GlCanvas& c) { pileScene(c, 0.013 * k, 0.004 * k, 21, 0.09); };
-    gl.makeCurrent();
-    canvas.begin(camera);
-    draw(canvas);
-    canvas.finish(frame);
+    both([&](render::draw::GlCanvas& c) { pileScene(c, 0.013 * k, 0.004 * k, 21, 0.09); });
     CHECK(gl.samples() == 2);
-    byGl.makeCurrent();
-    glCanvas.begin(camera);
-    draw(glCanvas);
-    glCanvas.finish(reference);
     CHECK(differingBytes(frame, reference) == 0);
   }
   CHECK(gl.softwareFrames() == 3);
@@ -372,28 +365,16 @@ TEST_CASE_FIXTURE(Fixture, "a dense pile at two samples a pixel: software's fram
 // A frame with no ground, its bodies opaque (a ball, a turned block, an axis, an arrow), is drawn in
 // software whole, over the background GL clears to: byte for byte GL's drawing and its 4x
 // multisampling; a translucent body leaves it to GL
-TEST_CASE_FIXTURE(Fixture, "a frame of opaque bodies alone is drawn in software whole, byte for byte GL's") {
-  render::draw::GlContext byGl{kWidth, kHeight};
-  byGl.allowSoftware(false);
-  render::draw::GlCanvas glCanvas{byGl, text, s};
+TEST_CASE_FIXTURE(TwoWays, "a frame of opaque bodies alone is drawn in software whole, byte for byte GL's") {
   const auto opaqueScene = [](render::draw::GlCanvas& c, double x) {
     c.circle({x, 1.0}, 0.3, {Role::Body, 2, 1});
     c.segment({x, 1.0}, {x + 0.3, 1.0}, {Role::BodyAxis, 2, 1});
     c.polygon({{0.4, 0.2}, {1.3, 0.35}, {1.15, 1.25}, {0.25, 1.1}}, {Role::Body, 0, 1});
     c.arrow({x, 1.0}, {x + 0.5, 1.3}, {Role::Velocity, 2, 1});
   };
-  Image frame, reference;
   for (int k = 0; k < 3; ++k) {
     const auto draw = [&](render::draw::GlCanvas& c) { opaqueScene(c, -1.0 + 0.37 * k); };
-    gl.makeCurrent();
-    canvas.begin(camera);
-    draw(canvas);
-    canvas.finish(frame);
-    byGl.makeCurrent();
-    glCanvas.begin(camera);
-    draw(glCanvas);
-    glCanvas.finish(reference);
-    gl.makeCurrent();
+    both(draw);
     CHECK(differingBytes(frame, reference) == 0);
     CHECK(differingBytes(frame, multisampled(gl, canvas, camera, s.background, draw)) == 0);
   }
