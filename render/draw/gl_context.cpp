@@ -67,6 +67,9 @@ namespace {
 // the ones its own primitive marks, which is all the canvas's stencil test asks.
 constexpr GLbitfield kStencilClear = GL_STENCIL_BUFFER_BIT | GL_DEPTH_BUFFER_BIT;
 
+// glOrtho's scale over ±half as Mesa computes it: 2 / (right − left) of the bounds taken as floats
+float orthoScale(double half) { return 2.0f / (static_cast<float>(half) - static_cast<float>(-half)); }
+
 // Mesa's extension (GL_MESA_pack_invert): glReadPixels writes the rows top first, as frames are stored
 constexpr GLenum kPackInvert = 0x8758;
 
@@ -285,9 +288,7 @@ void GlContext::orthographic(double halfWidth, double halfHeight) {
   glOrtho(-halfWidth, halfWidth, -halfHeight, halfHeight, -1.0, 1.0);
   glMatrixMode(GL_MODELVIEW);
   glLoadIdentity();
-  // the scales as Mesa computes them: 2 / (right − left) of the bounds taken as floats
-  const auto scale = [](double half) { return 2.0f / (static_cast<float>(half) - static_cast<float>(-half)); };
-  ortho_ = std::array<float, 2>{scale(halfWidth), scale(halfHeight)};
+  ortho_ = std::array<float, 2>{orthoScale(halfWidth), orthoScale(halfHeight)};
 }
 
 void GlContext::drawsDirectly() {
@@ -299,9 +300,10 @@ bool GlContext::softwareAgrees() {
   // probe triangles drawn at the pixel centers, by GL and in software, in a view a pixel a unit
   const float halfWidth = static_cast<float>(width_) / 2.0f, halfHeight = static_cast<float>(height_) / 2.0f;
   RasterView view;
-  view.scaleX = 1.0f / halfWidth, view.scaleY = 1.0f / halfHeight;
+  view.scaleX = orthoScale(halfWidth), view.scaleY = orthoScale(halfHeight);
   view.halfWidth = view.translateX = halfWidth, view.halfHeight = view.translateY = halfHeight;
   const std::vector<TriangleVertex> probe = probeTriangles(view, width_, height_);
+  if (probe.empty()) return *(softwareAgrees_ = false);
   glViewport(0, 0, width_, height_);
   glDisable(GL_SCISSOR_TEST);
   glMatrixMode(GL_PROJECTION);
@@ -320,7 +322,7 @@ bool GlContext::softwareAgrees() {
   for (size_t i = 3; i < bySoftware.size(); i += 4) bySoftware[i] = 255;
   rasterOpaqueTriangles(probe.data(), probe.size(), view, {bySoftware.data(), 0, 0, width_, height_});
   // (the frame's own drawing sets the viewport, the clear and the view again)
-  softwareAgrees_ = !probe.empty() && byGl == bySoftware;
+  softwareAgrees_ = byGl == bySoftware;
   return *softwareAgrees_;
 }
 
