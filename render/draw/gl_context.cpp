@@ -288,6 +288,8 @@ void GlContext::orthographic(double halfWidth, double halfHeight) {
   glOrtho(-halfWidth, halfWidth, -halfHeight, halfHeight, -1.0, 1.0);
   glMatrixMode(GL_MODELVIEW);
   glLoadIdentity();
+  // a second view in one frame (an overlay's) would leave the first one's triangles unknown
+  if (recording_ && ortho_) byCanvas2d_ = false;
   ortho_ = std::array<float, 2>{orthoScale(halfWidth), orthoScale(halfHeight)};
 }
 
@@ -317,6 +319,8 @@ bool GlContext::softwareAgrees() {
   glVertexPointer(2, GL_FLOAT, sizeof(TriangleVertex), &probe[0].x);
   glColorPointer(4, GL_FLOAT, sizeof(TriangleVertex), &probe[0].r);
   drawArrays(0, probe.size(), true);
+  glVertexPointer(2, GL_FLOAT, sizeof(TriangleVertex), nullptr);
+  glColorPointer(4, GL_FLOAT, sizeof(TriangleVertex), nullptr);
   std::vector<uint8_t> byGl(static_cast<size_t>(width_) * height_ * 4), bySoftware(byGl.size(), 0);
   glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, byGl.data());
   for (size_t i = 3; i < bySoftware.size(); i += 4) bySoftware[i] = 255;

@@ -85,7 +85,7 @@ std::vector<TriangleVertex> probeTriangles(const RasterView& view, int width, in
   std::vector<TriangleVertex> out;
   const auto triangle = [&](float x0, float y0, float x1, float y1, float x2, float y2, float shade) {
     for (const auto& [x, y] : {std::pair{x0, y0}, std::pair{x1, y1}, std::pair{x2, y2}})
-      out.push_back({x, y, shade, 1.0f - shade, 0.5f, 1.0f});
+      out.push_back({x, y, shade, 1.0f - shade, 0.7f, 1.0f});
   };
   // a pixel in world units, and the view's middle
   const float px = 1.0f / (view.scaleX * view.halfWidth), py = 1.0f / (view.scaleY * view.halfHeight);
@@ -93,11 +93,9 @@ std::vector<TriangleVertex> probeTriangles(const RasterView& view, int width, in
     const std::optional<float> x = parted(view.scaleX, view.halfWidth, view.translateX, k);
     const std::optional<float> y = parted(view.scaleY, view.halfHeight, view.translateY, k);
     if (x)
-      triangle(*x, -3 * py, *x, 3 * py, *x + 2 * px, 0.0f, 0.25f),
-          triangle(*x, -2 * py, *x - 2 * px, 0.5f * py, *x, 2 * py, 0.75f);
+      triangle(*x, -3 * py, *x, 3 * py, *x + 2 * px, 0.0f, 0.3f), triangle(*x, -2 * py, *x - 2 * px, 0.5f * py, *x, 2 * py, 0.7f);
     if (y)
-      triangle(-3 * px, *y, 3 * px, *y, 0.0f, *y + 2 * py, 0.25f),
-          triangle(-2 * px, *y, 0.5f * px, *y - 2 * py, 2 * px, *y, 0.75f);
+      triangle(-3 * px, *y, 3 * px, *y, 0.0f, *y + 2 * py, 0.3f), triangle(-2 * px, *y, 0.5f * px, *y - 2 * py, 2 * px, *y, 0.7f);
   }
   return out;
 }

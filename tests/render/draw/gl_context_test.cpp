@@ -281,11 +281,9 @@ TEST_CASE_FIXTURE(Fixture,
 
 namespace {
 
-// a pile of opaque boxes, turned a little by `turn` and shifted by `x`, over a hatched ground: the
-// moving part all triangles of the store; `extra` adds what GL must draw itself
-void pileScene(render::draw::GlCanvas& c, double x, double turn, int rows, double size,
-               const std::function<void(render::draw::GlCanvas&)>& extra = {}) {
-  c.halfPlane({0, -0.5}, {0.05, 1}, {Role::StaticBody, 1, 1});
+// a pile of opaque boxes, turned a little by `turn` and shifted by `x`, on y = −0.4 (the moving
+// part all triangles of the store); pileScene puts it on a hatched ground, `extra` after it
+void pile(render::draw::GlCanvas& c, double x, double turn, int rows, double size) {
   for (int row = 0; row < rows; ++row)
     for (int k = 0; k < rows - row; ++k) {
       const Vec2 center{x + (k - 0.5 * (rows - row)) * size * 1.05, -0.4 + (row + 0.5) * size};
@@ -293,6 +291,11 @@ void pileScene(render::draw::GlCanvas& c, double x, double turn, int rows, doubl
       const Vec2 u{std::cos(a) * h, std::sin(a) * h}, v{-u.y(), u.x()};
       c.polygon({center - u - v, center + u - v, center + u + v, center - u + v}, {Role::Body, (k + row) % 3, 1});
     }
+}
+void pileScene(render::draw::GlCanvas& c, double x, double turn, int rows, double size,
+               const std::function<void(render::draw::GlCanvas&)>& extra = {}) {
+  c.halfPlane({0, -0.5}, {0.05, 1}, {Role::StaticBody, 1, 1});
+  pile(c, x, turn, rows, size);
   if (extra) extra(c);
 }
 
@@ -390,4 +393,42 @@ TEST_CASE_FIXTURE(TwoWays, "a frame of opaque bodies alone is drawn in software 
                          opaqueScene(c, 0.0);
                          c.circle({-1.5, 0.5}, 0.3, {Role::Body, 1, 0.5});
                        })) == 0);
+}
+
+// What the canvas draws with GL calls of its own (a translucent stroke: its quads and joins under a
+// stencil, outside the batch) leaves the frame to GL, with a ground kept and without one
+TEST_CASE_FIXTURE(TwoWays, "a stroke the canvas draws apart leaves the frame to GL") {
+  const auto stroke = [](render::draw::GlCanvas& c) { c.arrow({-1.0, 1.6}, {0.6, 1.9}, {Role::Velocity, 2, 0.6}); };
+  for (int k = 0; k < 2; ++k) both([&](render::draw::GlCanvas& c) { pileScene(c, 0.01 * k, 0.0, 5, 0.31); });
+  const long before = gl.softwareFrames();
+  CHECK(before == 1);
+  both([&](render::draw::GlCanvas& c) { pileScene(c, 0.02, 0.0, 5, 0.31, stroke); });
+  CHECK(differingBytes(frame, reference) == 0);
+  both([&](render::draw::GlCanvas& c) {
+    c.polygon({{0.4, 0.2}, {1.3, 0.35}, {1.15, 1.25}, {0.25, 1.1}}, {Role::Body, 0, 1});
+    stroke(c);
+  });
+  CHECK(differingBytes(frame, reference) == 0);
+  CHECK(gl.softwareFrames() == before);
+}
+
+// A finite ground (a static box: the kept drawings cover its region, not the whole frame), and
+// frames that change between four samples and two (a dense pile) over it: GL's, byte for byte
+TEST_CASE_FIXTURE(TwoWays, "over a static box, sparse and dense piles in turn: software's frames are GL's") {
+  const auto ground = [](render::draw::GlCanvas& c) {
+    c.polygon({{-1.6, -0.6}, {2.2, -0.6}, {2.2, -0.4}, {-1.6, -0.4}}, {Role::StaticBody, 1, 1});
+  };
+  for (int k = 0; k < 8; ++k) {
+    const bool dense = k % 4 >= 2;
+    both([&](render::draw::GlCanvas& c) {
+      ground(c);
+      if (dense) pile(c, 0.3 + 0.01 * k, 0.003 * k, 21, 0.08);
+      else pile(c, 0.3 + 0.01 * k, 0.003 * k, 5, 0.31);
+    });
+    CHECK(gl.samples() == (dense ? 2 : 4));
+    CHECK(differingBytes(frame, reference) == 0);
+  }
+  // the ground is kept from the second frame on (again at each change of samples): the seven after
+  // the first are drawn in software
+  CHECK(gl.softwareFrames() == 7);
 }

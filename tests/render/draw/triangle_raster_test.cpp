@@ -10,6 +10,7 @@
 #include <GL/glext.h>
 
 #include <random>
+#include <tuple>
 #include <vector>
 
 #include "render/draw/gl_context.h"
@@ -202,9 +203,35 @@ TEST_CASE("the probe's triangles: many, on samples' columns and rows, drawn alik
   const std::vector<TriangleVertex> probe = probeTriangles(view, kWidth, kHeight);
   CHECK(probe.size() >= 3 * 40);
   CHECK(rasterizesAlike(probe.data(), probe.size(), view.scaleX, view.scaleY));
+  // its corners are where the two roundings part: a separate multiply and add would snap them elsewhere
+  long parted = 0;
+  for (const TriangleVertex& v : probe)
+    for (const auto& [clip, half, translate] : {std::tuple{view.scaleX * v.x, view.halfWidth, view.translateX},
+                                                std::tuple{view.scaleY * v.y, view.halfHeight, view.translateY}}) {
+      const volatile float product = clip * half;
+      const float separate = product + translate, fused = std::fma(clip, half, translate);
+      parted += std::llrint((separate - 0.5f) * 256.0f) != std::llrint((fused - 0.5f) * 256.0f);
+    }
+  CHECK(parted >= 40);
   const Drawn d = drawBoth(probe, {0.5f, 0.5f});
   long covered = 0;
   for (size_t p = 0; p < d.gl.size(); p += 4) covered += d.gl[p] != 0 || d.gl[p + 1] != 0 || d.gl[p + 2] != 0;
   CHECK(covered > 200);
+  CHECK(differingPixels(d) == 0);
+}
+
+// a channel at an exact half (0.3 × 255 = 76.5, 0.7 × 255 = 178.5 in floats) goes to the even byte,
+// as GL's does
+TEST_CASE("colour channels at exact halves round to even, as GL's") {
+  Context context;
+  CHECK(0.3f * 255.0f == 76.5f);
+  CHECK(0.7f * 255.0f == 178.5f);
+  const std::vector<TriangleVertex> triangle = {
+      {-2.0f, -2.0f, 0.3f, 0.7f, 0.5f, 1.0f}, {2.0f, -2.0f, 0.3f, 0.7f, 0.5f, 1.0f}, {0.0f, 2.0f, 0.3f, 0.7f, 0.5f, 1.0f}};
+  const Drawn d = drawBoth(triangle, {0.5f, 0.5f});
+  const size_t middle = (static_cast<size_t>(kHeight / 2) * kWidth + kWidth / 2) * 4;
+  CHECK(d.gl[middle] == 76);
+  CHECK(d.gl[middle + 1] == 178);
+  CHECK(d.gl[middle + 2] == 128);
   CHECK(differingPixels(d) == 0);
 }
