@@ -1,7 +1,8 @@
 // The soft contact passes written once over a lane type (included only by soft_contacts_scalar.cpp
 // and the soft_contacts_wide*.cpp): L is one lane of a block (its number type L::T, double or
-// float), or half a block or a whole one at once. Every operation is the same in each, in the same order, so the
-// paths agree to the bit; and no fused multiply-add (the build's -ffp-contract=off).
+// float), or half a block or a whole one at once, or two of those (soft_contacts_pair.h). Every
+// operation is the same in each, in the same order, so the paths agree to the bit; and no fused
+// multiply-add (the build's -ffp-contract=off).
 #pragma once
 
 #include "sim/world/soft_contacts.h"
@@ -12,7 +13,7 @@ namespace {
 // a body's solver state in lanes
 template <class V>
 struct BodyLanes {
-  V vx, vy, w, dpx, dpy, qc, qs;
+  V vx, vy, w, dpx, dpy, qc, qs, invMass;
 };
 
 // the normal impulses of the block's points (soft with the push when s.useBias, rigid when
@@ -23,12 +24,13 @@ inline void solveBlock(ContactBlockOf<typename L::T>& c, BodyStateOf<typename L:
   using V = typename L::V;
   BodyLanes<V> A = L::gather(bodies, c.a, lane), B = L::gather(bodies, c.b, lane);
   const V nx = L::load(c.nx, lane), ny = L::load(c.ny, lane);
-  const V mA = L::load(c.invMassA, lane), iA = L::load(c.invInertiaA, lane);
-  const V mB = L::load(c.invMassB, lane), iB = L::load(c.invInertiaB, lane);
+  const V mA = A.invMass, iA = L::load(c.invInertiaA, lane);
+  const V mB = B.invMass, iB = L::load(c.invInertiaB, lane);
   const V zero = L::splat(0.0), one = L::splat(1.0);
-  const V biasRate = s.useBias ? L::load(c.biasRate, lane) : zero;
-  const V massScale = s.useBias ? L::load(c.massScale, lane) : one;
-  const V impulseScale = s.useBias ? L::load(c.impulseScale, lane) : zero;
+  const auto stiff = L::touchesStatic(c.a, c.b, s.staticIndex, lane);
+  const V biasRate = s.useBias ? L::select(stiff, L::splat(s.stiff.biasRate), L::splat(s.soft.biasRate)) : zero;
+  const V massScale = s.useBias ? L::select(stiff, L::splat(s.stiff.massScale), L::splat(s.soft.massScale)) : one;
+  const V impulseScale = s.useBias ? L::select(stiff, L::splat(s.stiff.impulseScale), L::splat(s.soft.impulseScale)) : zero;
   const V invH = L::splat(s.invH), maxPush = L::splat(-s.maxPushSpeed);
   const V dpx = A.dpx - B.dpx, dpy = A.dpy - B.dpy;
   for (auto& p : c.p) {
@@ -84,8 +86,8 @@ inline void warmStartBlock(ContactBlockOf<typename L::T>& c, BodyStateOf<typenam
   BodyLanes<V> A = L::gather(bodies, c.a, lane), B = L::gather(bodies, c.b, lane);
   const V nx = L::load(c.nx, lane), ny = L::load(c.ny, lane);
   const V tx = L::splat(0.0) - ny, ty = nx;
-  const V mA = L::load(c.invMassA, lane), iA = L::load(c.invInertiaA, lane);
-  const V mB = L::load(c.invMassB, lane), iB = L::load(c.invInertiaB, lane);
+  const V mA = A.invMass, iA = L::load(c.invInertiaA, lane);
+  const V mB = B.invMass, iB = L::load(c.invInertiaB, lane);
   for (auto& p : c.p) {
     const V rAx = L::load(p.rAx, lane), rAy = L::load(p.rAy, lane);
     const V rBx = L::load(p.rBx, lane), rBy = L::load(p.rBy, lane);

@@ -14,12 +14,13 @@ struct ScalarLane {
   static void store(LanesOf<T>& x, int lane, V v) { x.l[lane] = v; }
   static V splat(double v) { return static_cast<T>(v); }
   static bool greater(V a, V b) { return a > b; }
+  static bool touchesStatic(const int* a, const int* b, int dummy, int lane) { return a[lane] == dummy || b[lane] == dummy; }
   static V select(bool m, V a, V b) { return m ? a : b; }
   static V max(V a, V b) { return a < b ? b : a; }
   static V min(V a, V b) { return b < a ? b : a; }
   static BodyLanes<V> gather(const BodyStateOf<T>* bodies, const int* index, int lane) {
     const BodyStateOf<T>& b = bodies[index[lane]];
-    return {b.vx, b.vy, b.w, b.dpx, b.dpy, b.qc, b.qs};
+    return {b.vx, b.vy, b.w, b.dpx, b.dpy, b.qc, b.qs, b.invMass};
   }
   static void scatter(BodyStateOf<T>* bodies, const int* index, int lane, const BodyLanes<V>& v) {
     BodyStateOf<T>& b = bodies[index[lane]];

@@ -4,6 +4,7 @@
 // same order, no fused multiply-add). Floats: soft_contacts_wide_float.cpp.
 #include "sim/core/avx2_transpose.h"
 #include "sim/world/soft_contacts_kernel.h"
+#include "sim/world/soft_contacts_pair.h"
 
 #if defined(__AVX2__)
 #include <immintrin.h>
@@ -26,6 +27,13 @@ struct WideLanes {
   static void store(LanesOf<T>& x, int half, V v) { *reinterpret_cast<V4*>(x.l + half) = v; }
   static V splat(double v) { return V4{v, v, v, v}; }
   static M4 greater(V a, V b) { return a > b; }
+  static M4 touchesStatic(const int* a, const int* b, int dummy, int half) {
+    typedef int I4 __attribute__((vector_size(16)));
+    I4 ia, ib;
+    __builtin_memcpy(&ia, a + half, sizeof ia);
+    __builtin_memcpy(&ib, b + half, sizeof ib);
+    return __builtin_convertvector((ia == dummy) | (ib == dummy), M4);
+  }
 #if defined(__AVX2__)
   // a where m, else b (m is all ones or all zeros in each lane, as the scalar path's m ? a : b)
   static V select(M4 m, V a, V b) { return V4(_mm256_blendv_pd(__m256d(b), __m256d(a), __m256d(m))); }
@@ -45,11 +53,11 @@ struct WideLanes {
     __m256d p0 = _mm256_load_pd(b0 + 4), p1 = _mm256_load_pd(b1 + 4), p2 = _mm256_load_pd(b2 + 4), p3 = _mm256_load_pd(b3 + 4);
     transpose(v0, v1, v2, v3);
     transpose(p0, p1, p2, p3);
-    return {V4(v0), V4(v1), V4(v2), V4(p0), V4(p1), V4(p2), V4(p3)};
+    return {V4(v0), V4(v1), V4(v2), V4(p0), V4(p1), V4(p2), V4(p3), V4(v3)};
   }
   static void scatter(BodyState* bodies, const int* all, int half, const BodyLanes<V>& b) {
     const int* index = all + half;
-    __m256d r0 = __m256d(b.vx), r1 = __m256d(b.vy), r2 = __m256d(b.w), r3 = _mm256_setzero_pd();
+    __m256d r0 = __m256d(b.vx), r1 = __m256d(b.vy), r2 = __m256d(b.w), r3 = __m256d(b.invMass);
     transpose(r0, r1, r2, r3);
     _mm256_store_pd(&bodies[index[0]].vx, r0);
     _mm256_store_pd(&bodies[index[1]].vx, r1);
@@ -63,9 +71,10 @@ struct WideLanes {
   static BodyLanes<V> gather(const BodyState* bodies, const int* all, int half) {
     const int* index = all + half;
     const BodyState &b0 = bodies[index[0]], &b1 = bodies[index[1]], &b2 = bodies[index[2]], &b3 = bodies[index[3]];
-    return {V4{b0.vx, b1.vx, b2.vx, b3.vx},     V4{b0.vy, b1.vy, b2.vy, b3.vy},     V4{b0.w, b1.w, b2.w, b3.w},
-            V4{b0.dpx, b1.dpx, b2.dpx, b3.dpx}, V4{b0.dpy, b1.dpy, b2.dpy, b3.dpy}, V4{b0.qc, b1.qc, b2.qc, b3.qc},
-            V4{b0.qs, b1.qs, b2.qs, b3.qs}};
+    return {V4{b0.vx, b1.vx, b2.vx, b3.vx},     V4{b0.vy, b1.vy, b2.vy, b3.vy},
+            V4{b0.w, b1.w, b2.w, b3.w},         V4{b0.dpx, b1.dpx, b2.dpx, b3.dpx},
+            V4{b0.dpy, b1.dpy, b2.dpy, b3.dpy}, V4{b0.qc, b1.qc, b2.qc, b3.qc},
+            V4{b0.qs, b1.qs, b2.qs, b3.qs},     V4{b0.invMass, b1.invMass, b2.invMass, b3.invMass}};
   }
   static void scatter(BodyState* bodies, const int* all, int half, const BodyLanes<V>& v) {
     const int* index = all + half;
@@ -80,13 +89,11 @@ struct WideLanes {
 }  // namespace
 
 void warmStartWide(ContactBlockOf<double>* blocks, int begin, int end, BodyStateOf<double>* bodies) {
-  for (int i = begin; i < end; ++i)
-    for (int half = 0; half < kLanesOf<double>; half += 4) warmStartBlock<WideLanes>(blocks[i], bodies, half);
+  for (int i = begin; i < end; ++i) warmStartBlock<TwoHalves<WideLanes, 4>>(blocks[i], bodies, 0);
 }
 
 void solveWide(ContactBlockOf<double>* blocks, int begin, int end, BodyStateOf<double>* bodies, const PassSettings& s) {
-  for (int i = begin; i < end; ++i)
-    for (int half = 0; half < kLanesOf<double>; half += 4) solveBlock<WideLanes>(blocks[i], bodies, s, half);
+  for (int i = begin; i < end; ++i) solveBlock<TwoHalves<WideLanes, 4>>(blocks[i], bodies, s, 0);
 }
 
 }  // namespace sim::world::soft

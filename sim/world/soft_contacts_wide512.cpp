@@ -5,9 +5,12 @@
 // record, whose velocity stays zero), so the order of the writes within a block changes nothing. The result is the scalar path's
 // to the bit (same operations, same order, no fused multiply-add).
 #include "sim/world/soft_contacts_kernel.h"
+#include "sim/world/soft_contacts_pair.h"
 
 #if defined(__AVX512F__)
 #include <immintrin.h>
+
+#include <cstddef>
 
 namespace sim::world::soft {
 namespace {
@@ -28,6 +31,12 @@ struct Wide512Lanes {
   // andnot and or took three; the 5,050-box pyramid's double step with recycling went from 1.95
   // to 1.76 ms (two runs in turn, with the float blocks' change; rigidreel_stack_bench)
   static __mmask8 greater(V a, V b) { return _mm512_cmp_pd_mask(__m512d(a), __m512d(b), _CMP_GT_OQ); }
+  // the lanes whose A or B is the static record: a block's a and b side by side are one register
+  static_assert(offsetof(ContactBlockOf<double>, b) == offsetof(ContactBlockOf<double>, a) + 8 * sizeof(int));
+  static __mmask8 touchesStatic(const int* a, const int*, int dummy, int) {
+    const __mmask16 m = _mm512_cmpeq_epi32_mask(_mm512_load_si512(a), _mm512_set1_epi32(dummy));
+    return __mmask8((m | (m >> 8)) & 0xff);
+  }
   static V select(__mmask8 m, V a, V b) { return V8(_mm512_mask_blend_pd(m, __m512d(b), __m512d(a))); }
   // vmaxpd(x, y) is x > y ? x : y, vminpd(x, y) x < y ? x : y: the scalar path's a < b ? b : a and
   // b < a ? b : a with the operands so, NaN and signed zeros included
@@ -65,18 +74,17 @@ struct Wide512Lanes {
       u[4 * h + 2] = shuffle2<kEven>(t[4 * h + 1], t[4 * h + 3]);
       u[4 * h + 3] = shuffle2<kOdd>(t[4 * h + 1], t[4 * h + 3]);
     }
-    // all eight rows of a field (field 3 is unused)
+    // all eight rows of a field
     const auto even = [&](int q) { return V8(shuffle2<kEven>(u[q], u[q + 4])); };
     const auto odd = [&](int q) { return V8(shuffle2<kOdd>(u[q], u[q + 4])); };
-    return {even(0), even(2), even(1), odd(0), odd(2), odd(1), odd(3)};
+    return {even(0), even(2), even(1), odd(0), odd(2), odd(1), odd(3), even(3)};
   }
-  // the velocities written back as the first half of each record, lane 0 first (the lanes touch
+  // the velocities (and the inverse mass, as it was) written back as the first half of each record, lane 0 first (the lanes touch
   // distinct bodies, or the static record whose velocity stays zero)
   static void scatter(BodyState* bodies, const int* index, int, const BodyLanes<V>& b) {
-    const __m512d zero = _mm512_setzero_pd();
     const __m512d vEven = unpackLow(__m512d(b.vx), __m512d(b.vy)), vOdd = unpackHigh(__m512d(b.vx), __m512d(b.vy));
-    const __m512d wEven = unpackLow(__m512d(b.w), zero), wOdd = unpackHigh(__m512d(b.w), zero);
-    // (vx, vy, w, 0) of lanes 0 and 2 (or 4 and 6, or the odd ones) in one register
+    const __m512d wEven = unpackLow(__m512d(b.w), __m512d(b.invMass)), wOdd = unpackHigh(__m512d(b.w), __m512d(b.invMass));
+    // (vx, vy, w, 1/m) of lanes 0 and 2 (or 4 and 6, or the odd ones) in one register
     const __m512i low = _mm512_set_epi64(11, 10, 3, 2, 9, 8, 1, 0), high = _mm512_set_epi64(15, 14, 7, 6, 13, 12, 5, 4);
     const __m512d rows[4] = {_mm512_permutex2var_pd(vEven, low, wEven), _mm512_permutex2var_pd(vOdd, low, wOdd),
                              _mm512_permutex2var_pd(vEven, high, wEven), _mm512_permutex2var_pd(vOdd, high, wOdd)};
@@ -92,11 +100,15 @@ struct Wide512Lanes {
 }  // namespace
 
 void warmStartWide512(ContactBlockOf<double>* blocks, int begin, int end, BodyStateOf<double>* bodies) {
-  for (int i = begin; i < end; ++i) warmStartBlock<Wide512Lanes>(blocks[i], bodies, 0);
+  int i = begin;
+  for (; i + 1 < end; i += 2) warmStartBlock<TwoBlocks<Wide512Lanes>>(blocks[i], bodies, 0);
+  if (i < end) warmStartBlock<Wide512Lanes>(blocks[i], bodies, 0);
 }
 
 void solveWide512(ContactBlockOf<double>* blocks, int begin, int end, BodyStateOf<double>* bodies, const PassSettings& s) {
-  for (int i = begin; i < end; ++i) solveBlock<Wide512Lanes>(blocks[i], bodies, s, 0);
+  int i = begin;
+  for (; i + 1 < end; i += 2) solveBlock<TwoBlocks<Wide512Lanes>>(blocks[i], bodies, s, 0);
+  if (i < end) solveBlock<Wide512Lanes>(blocks[i], bodies, s, 0);
 }
 
 }  // namespace sim::world::soft

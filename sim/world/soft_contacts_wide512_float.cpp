@@ -8,6 +8,7 @@
 // --recycle on; Box2D v3's 1.66-1.68 ms in the same runs). The result is the scalar path's to the
 // bit (same operations, same order, no fused multiply-add).
 #include "sim/world/soft_contacts_kernel.h"
+#include "sim/world/soft_contacts_pair.h"
 
 #if defined(__AVX512F__)
 #include <immintrin.h>
@@ -33,6 +34,10 @@ struct Wide512FloatLanes {
   // a comparison into a mask register, and a blend by it (a NaN compares false, as the scalar
   // path's a > b)
   static __mmask16 greater(V a, V b) { return _mm512_cmp_ps_mask(__m512(a), __m512(b), _CMP_GT_OQ); }
+  static __mmask16 touchesStatic(const int* a, const int* b, int dummy, int) {
+    const __m512i d = _mm512_set1_epi32(dummy);
+    return _mm512_cmpeq_epi32_mask(_mm512_load_si512(a), d) | _mm512_cmpeq_epi32_mask(_mm512_load_si512(b), d);
+  }
   static V select(__mmask16 m, V a, V b) { return F16(_mm512_mask_blend_ps(m, __m512(b), __m512(a))); }
   // vmaxps(x, y) is x > y ? x : y, vminps(x, y) x < y ? x : y: the scalar path's a < b ? b : a and
   // b < a ? b : a with the operands so, NaN and signed zeros included
@@ -75,21 +80,20 @@ struct Wide512FloatLanes {
     u[3] = _mm512_maskz_shuffle_ps(kAll, t[1], t[3], kHigh);
     u[7] = _mm512_maskz_shuffle_ps(kAll, t[5], t[7], kHigh);
     // u[q]'s quarters: field q of records 0-3, field q + 4 of 0-3, field q of 4-7, field q + 4 of
-    // 4-7; u[q + 4]'s the same of records 8-15 (field 3 unused)
+    // 4-7; u[q + 4]'s the same of records 8-15
     const auto low = [&](int q) { return F16(_mm512_maskz_shuffle_f32x4(kAll, u[q], u[q + 4], _MM_SHUFFLE(2, 0, 2, 0))); };
     const auto high = [&](int q) { return F16(_mm512_maskz_shuffle_f32x4(kAll, u[q], u[q + 4], _MM_SHUFFLE(3, 1, 3, 1))); };
-    return {low(0), low(1), low(2), high(0), high(1), high(2), high(3)};
+    return {low(0), low(1), low(2), high(0), high(1), high(2), high(3), low(3)};
   }
-  // the velocities written back as the first quarter of each record (the lanes touch distinct
+  // the velocities (and the inverse mass, as it was) written back as the first quarter of each record (the lanes touch distinct
   // bodies, or the static record whose velocity stays zero)
   static void scatter(BodyState* bodies, const int* index, int, const BodyLanes<V>& b) {
-    const __m512 zero = _mm512_setzero_ps();
     const __m512 vLow = _mm512_maskz_unpacklo_ps(kAll, __m512(b.vx), __m512(b.vy));
     const __m512 vHigh = _mm512_maskz_unpackhi_ps(kAll, __m512(b.vx), __m512(b.vy));
-    const __m512 wLow = _mm512_maskz_unpacklo_ps(kAll, __m512(b.w), zero);
-    const __m512 wHigh = _mm512_maskz_unpackhi_ps(kAll, __m512(b.w), zero);
+    const __m512 wLow = _mm512_maskz_unpacklo_ps(kAll, __m512(b.w), __m512(b.invMass));
+    const __m512 wHigh = _mm512_maskz_unpackhi_ps(kAll, __m512(b.w), __m512(b.invMass));
     constexpr int kLow = _MM_SHUFFLE(1, 0, 1, 0), kHigh = _MM_SHUFFLE(3, 2, 3, 2);
-    // rows[k]'s quarter j: (vx, vy, w, 0) of lane 4j + k
+    // rows[k]'s quarter j: (vx, vy, w, 1/m) of lane 4j + k
     const __m512 rows[4] = {_mm512_maskz_shuffle_ps(kAll, vLow, wLow, kLow), _mm512_maskz_shuffle_ps(kAll, vLow, wLow, kHigh),
                             _mm512_maskz_shuffle_ps(kAll, vHigh, wHigh, kLow),
                             _mm512_maskz_shuffle_ps(kAll, vHigh, wHigh, kHigh)};
@@ -105,11 +109,15 @@ struct Wide512FloatLanes {
 }  // namespace
 
 void warmStartWide512(ContactBlockOf<float>* blocks, int begin, int end, BodyStateOf<float>* bodies) {
-  for (int i = begin; i < end; ++i) warmStartBlock<Wide512FloatLanes>(blocks[i], bodies, 0);
+  int i = begin;
+  for (; i + 1 < end; i += 2) warmStartBlock<TwoBlocks<Wide512FloatLanes>>(blocks[i], bodies, 0);
+  if (i < end) warmStartBlock<Wide512FloatLanes>(blocks[i], bodies, 0);
 }
 
 void solveWide512(ContactBlockOf<float>* blocks, int begin, int end, BodyStateOf<float>* bodies, const PassSettings& s) {
-  for (int i = begin; i < end; ++i) solveBlock<Wide512FloatLanes>(blocks[i], bodies, s, 0);
+  int i = begin;
+  for (; i + 1 < end; i += 2) solveBlock<TwoBlocks<Wide512FloatLanes>>(blocks[i], bodies, s, 0);
+  if (i < end) solveBlock<Wide512FloatLanes>(blocks[i], bodies, s, 0);
 }
 
 }  // namespace sim::world::soft

@@ -5,6 +5,7 @@
 // whole and transposed into fields, and written back the same way. The result is the scalar path's
 // to the bit (same operations, same order, no fused multiply-add).
 #include "sim/world/soft_contacts_kernel.h"
+#include "sim/world/soft_contacts_pair.h"
 
 #if defined(__AVX2__)
 #include <immintrin.h>
@@ -30,6 +31,12 @@ struct WideFloatLanes {
     return F8{v, v, v, v, v, v, v, v};
   }
   static I8 greater(V a, V b) { return a > b; }
+  static I8 touchesStatic(const int* a, const int* b, int dummy, int half) {
+    I8 ia, ib;
+    __builtin_memcpy(&ia, a + half, sizeof ia);
+    __builtin_memcpy(&ib, b + half, sizeof ib);
+    return (ia == dummy) | (ib == dummy);
+  }
 #if defined(__AVX2__)
   // a where m, else b (m is all ones or all zeros in each lane, as the scalar path's m ? a : b)
   static V select(I8 m, V a, V b) { return F8(_mm256_blendv_ps(__m256(b), __m256(a), __m256(m))); }
@@ -58,20 +65,20 @@ struct WideFloatLanes {
     }
     u[3] = _mm256_shuffle_ps(t[1], t[3], kHigh);
     u[7] = _mm256_shuffle_ps(t[5], t[7], kHigh);
-    // all eight rows of a field: the low halves hold fields 0-3, the high ones 4-7 (field 3 unused)
+    // all eight rows of a field: the low halves hold fields 0-3, the high ones 4-7
     const auto low = [&](int q) { return F8(_mm256_permute2f128_ps(u[q], u[q + 4], 0x20)); };
     const auto high = [&](int q) { return F8(_mm256_permute2f128_ps(u[q], u[q + 4], 0x31)); };
-    return {low(0), low(1), low(2), high(0), high(1), high(2), high(3)};
+    return {low(0), low(1), low(2), high(0), high(1), high(2), high(3), low(3)};
   }
-  // the velocities written back as the first half of each record, lane 0 first (the lanes touch
+  // the velocities (and the inverse mass, as it was) written back as the first half of each record, lane 0 first (the lanes touch
   // distinct bodies, or the static record whose velocity stays zero)
   static void scatter(BodyState* bodies, const int* all, int half, const BodyLanes<V>& b) {
     const int* index = all + half;
-    const __m256 zero = _mm256_setzero_ps();
     const __m256 vLow = _mm256_unpacklo_ps(__m256(b.vx), __m256(b.vy)), vHigh = _mm256_unpackhi_ps(__m256(b.vx), __m256(b.vy));
-    const __m256 wLow = _mm256_unpacklo_ps(__m256(b.w), zero), wHigh = _mm256_unpackhi_ps(__m256(b.w), zero);
+    const __m256 wLow = _mm256_unpacklo_ps(__m256(b.w), __m256(b.invMass)),
+                 wHigh = _mm256_unpackhi_ps(__m256(b.w), __m256(b.invMass));
     constexpr int kLow = _MM_SHUFFLE(1, 0, 1, 0), kHigh = _MM_SHUFFLE(3, 2, 3, 2);
-    // (vx, vy, w, 0) of lanes k (low half) and k + 4 (high half), for k = 0, 1, 2, 3
+    // (vx, vy, w, 1/m) of lanes k (low half) and k + 4 (high half), for k = 0, 1, 2, 3
     const __m256 rows[4] = {_mm256_shuffle_ps(vLow, wLow, kLow), _mm256_shuffle_ps(vLow, wLow, kHigh),
                             _mm256_shuffle_ps(vHigh, wHigh, kLow), _mm256_shuffle_ps(vHigh, wHigh, kHigh)};
     for (int k = 0; k < 4; ++k) {
@@ -87,7 +94,8 @@ struct WideFloatLanes {
     BodyLanes<V> b;
     for (int k = 0; k < 8; ++k) {
       const BodyState& s = bodies[all[half + k]];
-      b.vx[k] = s.vx, b.vy[k] = s.vy, b.w[k] = s.w, b.dpx[k] = s.dpx, b.dpy[k] = s.dpy, b.qc[k] = s.qc, b.qs[k] = s.qs;
+      b.vx[k] = s.vx, b.vy[k] = s.vy, b.w[k] = s.w, b.dpx[k] = s.dpx, b.dpy[k] = s.dpy, b.qc[k] = s.qc, b.qs[k] = s.qs,
+      b.invMass[k] = s.invMass;
     }
     return b;
   }
@@ -103,13 +111,11 @@ struct WideFloatLanes {
 }  // namespace
 
 void warmStartWide(ContactBlockOf<float>* blocks, int begin, int end, BodyStateOf<float>* bodies) {
-  for (int i = begin; i < end; ++i)
-    for (int half = 0; half < kLanesOf<float>; half += 8) warmStartBlock<WideFloatLanes>(blocks[i], bodies, half);
+  for (int i = begin; i < end; ++i) warmStartBlock<TwoHalves<WideFloatLanes, 8>>(blocks[i], bodies, 0);
 }
 
 void solveWide(ContactBlockOf<float>* blocks, int begin, int end, BodyStateOf<float>* bodies, const PassSettings& s) {
-  for (int i = begin; i < end; ++i)
-    for (int half = 0; half < kLanesOf<float>; half += 8) solveBlock<WideFloatLanes>(blocks[i], bodies, s, half);
+  for (int i = begin; i < end; ++i) solveBlock<TwoHalves<WideFloatLanes, 8>>(blocks[i], bodies, s, 0);
 }
 
 }  // namespace sim::world::soft

@@ -35,12 +35,10 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
+using soft::Softness;
+
 // a soft constraint's coefficients for a spring of `hertz` and damping ratio `zeta` over a substep
 // h (Box2D v3's b2MakeSoft; Catto, "Solver2D": soft step)
-struct Softness {
-  double biasRate = 0.0, massScale = 1.0, impulseScale = 0.0;
-};
-
 Softness makeSoft(double hertz, double zeta, double h) {
   const double omega = 2.0 * kPi * hertz;
   const double a1 = 2.0 * zeta + h * omega, a2 = h * omega * a1, a3 = 1.0 / (1.0 + a2);
@@ -66,10 +64,6 @@ double speculativeMargin(const World& world, double h) {
   for (const Body& b : world.bodies)
     if (!b.isStatic) fastest = std::max(fastest, b.v.squaredNorm());
   return settings::kContactMargin + h * std::sqrt(fastest);
-}
-
-bool sameSoftness(const Softness& a, const Softness& b) {
-  return a.biasRate == b.biasRate && a.massScale == b.massScale && a.impulseScale == b.impulseScale;
 }
 
 // where a contact sits among the blocks
@@ -208,7 +202,7 @@ class SoftStepSolver final : public Method {
   static int laneWidth(int allowed) { return allowed >= 8 && avx512Available() ? 8 : allowed >= 4 && avx2Available() ? 4 : 1; }
 
   // the blocks and the bodies' arrays sized for this step, which `threads` share (on one thread, before the task)
-  // Returns whether each lane keeps last step's pair, masses, friction and softness.
+  // Returns whether each lane keeps last step's pair, masses and friction.
   bool beginStep(World& world, double h, int threads) {
     const bool arranged = arrange(world);
     width_ = laneWidth(world.def().simdWidth);
@@ -217,9 +211,9 @@ class SoftStepSolver final : public Method {
     const double hertz = std::min(world.def().contactHertz, settings::kContactHertzPerSubstepRate / h);
     const Softness soft = makeSoft(hertz, settings::kContactDampingRatio, h);
     const Softness staticSoft = makeSoft(2.0 * hertz, settings::kContactDampingRatio, h);
-    // the same pairs in the same lanes with the same softness as last step: each lane's bodies,
-    // masses, friction and softness are in it already, and the padded lanes are still zeros
-    const bool kept = !arranged && sameSoftness(soft, soft_) && sameSoftness(staticSoft, staticSoft_) && dummy == dummy_;
+    // the same pairs in the same lanes as last step: each lane's bodies, masses and friction are in
+    // it already, and the padded lanes are still zeros
+    const bool kept = !arranged && dummy == dummy_;
     soft_ = soft, staticSoft_ = staticSoft, dummy_ = dummy;
     blocks_.resize(blockCount_);
     vnBefore_.resize(2 * world.contacts.size());
@@ -243,25 +237,22 @@ class SoftStepSolver final : public Method {
     }
     threads.sync();
     const auto [first, last] = share.of(0, static_cast<int>(world.contacts.size()));
-    for (int i = first; i < last; ++i) prepareContact(world, i, soft_, staticSoft_, !kept, share.t);
+    for (int i = first; i < last; ++i) prepareContact(world, i, !kept, share.t);
   }
 
-  // one contact into its lane: normal, masses, softness, and each point's anchors and impulses
+  // one contact into its lane: normal, masses, friction, and each point's anchors and impulses
   // (the numbers that stay while the lane keeps its pair only when `constants`; on thread `share`)
-  void prepareContact(const World& world, int i, const Softness& soft, const Softness& staticSoft, bool constants, int share) {
+  void prepareContact(const World& world, int i, bool constants, int share) {
     const int dummy = static_cast<int>(world.bodies.size());
     const Contact& c = world.contacts[i];
     const Moving &a = moving_[c.a], &b = moving_[c.b];
     ContactBlock& blk = blocks_[slots_[i].block];
     const int l = slots_[i].lane;
     const Vec2 n = c.manifold.normal, t = tangentOf(n);
-    const Softness& s = a.isStatic || b.isStatic ? staticSoft : soft;
     if (constants) {
       blk.a[l] = a.isStatic ? dummy : c.a, blk.b[l] = b.isStatic ? dummy : c.b;
-      blk.invMassA.l[l] = a.invMass, blk.invInertiaA.l[l] = a.invInertia;
-      blk.invMassB.l[l] = b.invMass, blk.invInertiaB.l[l] = b.invInertia;
+      blk.invInertiaA.l[l] = a.invInertia, blk.invInertiaB.l[l] = b.invInertia;
       blk.friction.l[l] = c.friction;
-      blk.biasRate.l[l] = s.biasRate, blk.massScale.l[l] = s.massScale, blk.impulseScale.l[l] = s.impulseScale;
     }
     blk.nx.l[l] = n.x(), blk.ny.l[l] = n.y();
     points_[i] = static_cast<char>(c.manifold.count);
@@ -312,7 +303,7 @@ class SoftStepSolver final : public Method {
       s = BodyState{};
       if (gravity) gravityDv_[i] = Vec2::Zero();
       if (b.isStatic) continue;
-      s.vx = b.v.x(), s.vy = b.v.y(), s.w = b.omega;
+      s.vx = b.v.x(), s.vy = b.v.y(), s.w = b.omega, s.invMass = static_cast<T>(b.invMass);
       if (gravity && !world.asleep(i)) gravityDv_[i] = h * Vec2(b.invMass * Vec2(b.mass * world.def().forces.gravity));
     }
   }
@@ -403,7 +394,7 @@ class SoftStepSolver final : public Method {
   }
 
   void solve(double h, bool useBias, bool accumulate, const Share& share, WorkerPool& threads) {
-    const soft::PassSettings s{1.0 / h, settings::kContactPushMaxSpeed, useBias, accumulate};
+    const soft::PassSettings s{1.0 / h, settings::kContactPushMaxSpeed, useBias, accumulate, soft_, staticSoft_, dummy_};
     BodyState* bodies = states_.data();
     ContactBlock* blocks = blocks_.data();
     pass(
@@ -503,8 +494,8 @@ class SoftStepSolver final : public Method {
   std::vector<int> padded_;                  // the blocks with lanes no contact fills (a set's last)
   int blockCount_ = 0;
   std::vector<ContactBlock> blocks_;
-  Softness soft_, staticSoft_;  // what the blocks' lanes hold (prepare), with the static record's index
-  int dummy_ = -1;
+  Softness soft_, staticSoft_;     // this step's, of a lane without a static body and of one with one
+  int dummy_ = -1;                 // the static record's index the blocks' lanes name
   std::vector<double> vnBefore_;   // each point's normal velocity before the step (restitution)
   std::vector<char> points_;       // each contact's count of points
   std::vector<char> approaching_;  // per thread: one of its points comes faster than restitution's threshold
