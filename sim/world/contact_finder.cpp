@@ -102,8 +102,11 @@ class ContactFinder::Pass {
     Manifold chunk[kChunk];
     size_t next = 0, old = 0;
     bool over = lastStep && warmStart_;
-    for (int first = 0; first < pairCount; first += kChunk) {
-      const int last = std::min(first + kChunk, pairCount);
+    for (int start = 0; start < pairCount; start += kChunk) {
+      const int last = std::min(start + kChunk, pairCount);
+      // (while each pair recycles into its own contact, the chunk waits for the first that does not)
+      const int first = over && recycling_ && inPlace_ ? recycledInPlace(start, last, *lastStep, next) : start;
+      if (first == last) continue;
       collideRange(first, last, chunk);
       for (int k = first; k < last; ++k) {
         if (chunk[k - first].count == 0) continue;
@@ -292,6 +295,29 @@ class ContactFinder::Pass {
       out[k - first] = collide(a, b, margin_, sideSlack_);
       entry = recycleEntry(key, a.pose, b.pose, out[k - first]);
     }
+  }
+
+  // pairs_[first, last) recycled each into last step's contact at `next` while that is the pair's
+  // and was made from its entry (in place: last call's pairs): only the points move, and their
+  // impulses stay with them, as overwrite's carry would keep them; where the first pair that did not
+  // is (last when all did)
+  int recycledInPlace(int first, int last, std::vector<Contact>& lastStep, size_t& next) const {
+    int k = first;
+    for (; k < last && next < lastStep.size(); ++k) {
+      Contact& c = lastStep[next];
+      if (next + kContactsAhead < lastStep.size()) prefetch<1>(&lastStep[next + kContactsAhead]);
+      if (static_cast<size_t>(k) + kRecycleAhead < f_.recycle_.size()) prefetch<0>(&f_.recycle_[k + kRecycleAhead]);
+      const RecycleEntry& entry = f_.recycle_[k];
+      if (!samePair(c, f_.pairs_[k]) || skipped(k) || !madeFrom(entry, c.manifold)) break;
+      const int i = f_.pairs_[k].first, j = f_.pairs_[k].second;
+      const double extent = std::max(f_.extent_[i], f_.extent_[j]);
+      if (!recycledPointsInto(entry, f_.placed_[i].pose, f_.placed_[j].pose, extent, recycleDistance_, c.manifold)) break;
+      // (the state of a point the manifold lacks, as overwrite leaves it)
+      for (int p = c.manifold.count; p < 2; ++p) c.state[p] = ContactPointState{};
+      f_.recycledNow_[k] = 1;
+      ++next;
+    }
+    return k;
   }
 
   // a contact written whole, its impulses those of last step's contact of the same pair (`old`

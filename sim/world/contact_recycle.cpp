@@ -41,7 +41,10 @@ RecycleEntry recycleEntry(std::uint64_t key, const Pose& a, const Pose& b, const
   return e;
 }
 
-bool recycledManifold(const RecycleEntry& e, const Pose& a, const Pose& b, double extent, double distance, Manifold& out) {
+namespace {
+
+// whether B moved little enough relative to A since `e` was made for its manifold to be carried
+bool recycles(const RecycleEntry& e, const Pose& a, const Pose& b, double extent, double distance) {
   if (!e.valid) return false;
   if (std::min(turnedCos(a.q, e.qA), turnedCos(b.q, e.qB)) <= settings::kRecycleCos) return false;
   // how far any point of B moved relative to A: the shift of its origin, and its turn about it
@@ -54,9 +57,11 @@ bool recycledManifold(const RecycleEntry& e, const Pose& a, const Pose& b, doubl
   // the bound's square is a normal number: not overflowed, nor rounded among the subnormals)
   const double quarter2 = 0.25 * distance * distance;
   const bool wellInside = std::isnormal(quarter2) && shift2 <= quarter2 && reach <= 0.4 * distance;
-  if (!wellInside && !(std::sqrt(shift2) + reach < distance)) return false;
-  Manifold& m = out;
-  m = e.manifold;
+  return wellInside || std::sqrt(shift2) + reach < distance;
+}
+
+// `m`'s points (as `e`'s) carried with the two shapes to `a` and `b`, and its separation
+void carryPoints(const RecycleEntry& e, const Pose& a, const Pose& b, Manifold& m) {
   const Rot dqA = turnSince(a.q, e.qA), dqB = turnSince(b.q, e.qB);
   m.separation = std::numeric_limits<double>::infinity();
   for (int k = 0; k < m.count; ++k) {
@@ -66,6 +71,28 @@ bool recycledManifold(const RecycleEntry& e, const Pose& a, const Pose& b, doubl
     m.points[k].point = 0.5 * (onA + onB);
     m.separation = std::min(m.separation, m.points[k].separation);
   }
+}
+
+}  // namespace
+
+bool recycledManifold(const RecycleEntry& e, const Pose& a, const Pose& b, double extent, double distance, Manifold& out) {
+  if (!recycles(e, a, b, extent, distance)) return false;
+  out = e.manifold;
+  carryPoints(e, a, b, out);
+  return true;
+}
+
+bool madeFrom(const RecycleEntry& e, const Manifold& m) {
+  const Manifold& made = e.manifold;
+  if (!e.valid || m.count != made.count || m.normal != made.normal) return false;
+  for (int k = 0; k < m.count; ++k)
+    if (m.points[k].id != made.points[k].id) return false;
+  return m.count < 2 || m.points[0].id != m.points[1].id;
+}
+
+bool recycledPointsInto(const RecycleEntry& e, const Pose& a, const Pose& b, double extent, double distance, Manifold& m) {
+  if (!recycles(e, a, b, extent, distance)) return false;
+  carryPoints(e, a, b, m);
   return true;
 }
 

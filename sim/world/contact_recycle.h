@@ -38,4 +38,15 @@ RecycleEntry recycleEntry(std::uint64_t key, const sim::core::Pose& a, const sim
 bool recycledManifold(const RecycleEntry& entry, const sim::core::Pose& a, const sim::core::Pose& b, double extent,
                       double distance, sim::collision::Manifold& out);
 
+// whether `m` holds what `entry`'s manifold holds but its points' places and separations (its
+// normal, count and features), the points' features distinct: then a contact whose manifold is `m`
+// was made from `entry`, and recycledPointsInto may carry its points where they lie, their impulses
+// with them
+bool madeFrom(const RecycleEntry& entry, const sim::collision::Manifold& m);
+
+// recycledManifold written into a manifold made from `entry` (madeFrom): its points and separation
+// alone (the same manifold to the bit); whether it recycled (else `m` is untouched)
+bool recycledPointsInto(const RecycleEntry& entry, const sim::core::Pose& a, const sim::core::Pose& b, double extent,
+                        double distance, sim::collision::Manifold& m);
+
 }  // namespace sim::world
