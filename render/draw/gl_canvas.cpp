@@ -387,8 +387,12 @@ void GlCanvas::beginPrimitive(const Color& c, double opacity, bool marks, bool o
     return;
   }
   // translucent or marking: drawn apart, under its own stencil value, after the batch before it
+  // (one that does not mark is given to the context too, so that software may draw it)
   flush();
   batching_ = false;
+  once_ = !marks;
+  if (once_) gl_.beginOnce();
+  color_ = {static_cast<float>(c.r), static_cast<float>(c.g), static_cast<float>(c.b), static_cast<float>(alpha)};
   glColor4d(c.r, c.g, c.b, alpha);
   stencil_ = glStencil_ = gl_.freshStencil();
   glStencilFunc(GL_NOTEQUAL, stencil_, 0xff);
@@ -401,28 +405,33 @@ void GlCanvas::vertex(const Vec2& world) {
   else staticDrew_ = true;
   const Vec2& c = camera_.center();
   keyed({world.x() - c.x(), world.y() - c.y()});
-  if (!batching_) {
-    glVertex2d(world.x() - c.x(), world.y() - c.y());
-    return;
-  }
-  // GL would take the double as a float: the same float here, so that batched pixels are the same
+  // GL takes the double as a float: the same float here, so that batched pixels are the same
   const BatchVertex v{
       static_cast<float>(world.x() - c.x()), static_cast<float>(world.y() - c.y()), color_[0], color_[1], color_[2], color_[3]};
+  if (!batching_) {
+    glVertex2d(world.x() - c.x(), world.y() - c.y());
+    if (once_) shapeVertex(v, onceShape_);
+    return;
+  }
+  shapeVertex(v, batch_);
+}
+
+void GlCanvas::shapeVertex(const BatchVertex& v, std::vector<BatchVertex>& out) {
   if (shapeMode_ == GL_TRIANGLES) {
-    batch_.push_back(v);
+    out.push_back(v);
     return;
   }
   // the fan's and the strip's triangles as GL makes them (a strip's odd ones with their first two
   // vertices swapped), one after another in the batch
   if (shapeCount_ >= 2) {
     if (shapeMode_ == GL_TRIANGLE_FAN) {
-      batch_.push_back(shapeFirst_), batch_.push_back(shapePrevious_);
+      out.push_back(shapeFirst_), out.push_back(shapePrevious_);
     } else if (shapeCount_ % 2 == 0) {
-      batch_.push_back(shapeFirst_), batch_.push_back(shapePrevious_);
+      out.push_back(shapeFirst_), out.push_back(shapePrevious_);
     } else {
-      batch_.push_back(shapePrevious_), batch_.push_back(shapeFirst_);
+      out.push_back(shapePrevious_), out.push_back(shapeFirst_);
     }
-    batch_.push_back(v);
+    out.push_back(v);
   }
   // a fan keeps its first vertex and its last; a strip, its last two
   if (shapeCount_ == 0) shapeFirst_ = v;
@@ -433,18 +442,20 @@ void GlCanvas::vertex(const Vec2& world) {
 
 void GlCanvas::shape(unsigned mode) {
   keyed({-1.0, static_cast<double>(mode)});
-  if (!batching_) {
-    ++drawCalls_;
-    gl_.drawsDirectly();
-    glBegin(mode);
-    return;
-  }
   shapeMode_ = mode;
   shapeCount_ = 0;
+  if (!batching_) {
+    ++drawCalls_;
+    if (once_) onceShape_.clear();
+    else gl_.drawsDirectly();
+    glBegin(mode);
+  }
 }
 
 void GlCanvas::endShape() {
-  if (!batching_) glEnd();
+  if (batching_) return;
+  glEnd();
+  if (once_) gl_.drawnOnce(onceShape_.data(), onceShape_.size());
 }
 
 void GlCanvas::flush() {

@@ -173,6 +173,12 @@ class GlCanvas final : public Canvas {
   unsigned shapeMode_ = 0;        // its fan or strip, and its vertices so far
   int shapeCount_ = 0;
   BatchVertex shapeFirst_{}, shapePrevious_{};
+  // a primitive drawn with GL calls under a stencil value of its own, not marking: its shape's
+  // triangles as GL makes them, given to the context (GlContext::drawnOnce) at the shape's end
+  bool once_ = false;
+  std::vector<BatchVertex> onceShape_;
+  // v added to the shape being drawn: its triangles, as GL makes them of a fan or strip, into `out`
+  void shapeVertex(const BatchVertex& v, std::vector<BatchVertex>& out);
   int drawCalls_ = 0;
   std::map<int, std::vector<sim::core::Vec2>> unitCircles_;
   std::vector<QueuedText> texts_;

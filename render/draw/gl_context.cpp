@@ -178,6 +178,9 @@ void GlContext::beginFrame(bool byCanvas2d) {
   ortho_.reset();
   byCanvas2d_ = byCanvas2d;
   direct_ = {false, false};
+  once_.clear();
+  onceTriangles_.clear();
+  onceGroups_ = 0;
   steps_.clear();
   triangles_.clear();
   beginList();
@@ -297,6 +300,15 @@ void GlContext::drawsDirectly() {
   if (recording_) direct_[static_cast<size_t>(part_)] = true;
 }
 
+void GlContext::beginOnce() { ++onceGroups_; }
+
+void GlContext::drawnOnce(const TriangleVertex* vertices, size_t count) {
+  if (!recording_ || count == 0) return;
+  // (the list being recorded is step steps_.size()'s, drawn before that step's triangles)
+  once_.push_back({steps_.size(), part_, onceGroups_, onceTriangles_.size(), count});
+  onceTriangles_.insert(onceTriangles_.end(), vertices, vertices + count);
+}
+
 bool GlContext::softwareAgrees() {
   if (softwareAgrees_) return *softwareAgrees_;
   // probe triangles drawn at the pixel centers, by GL and in software, in a view a pixel a unit
@@ -318,13 +330,19 @@ bool GlContext::softwareAgrees() {
   glBindBuffer(GL_ARRAY_BUFFER, 0);
   glVertexPointer(2, GL_FLOAT, sizeof(TriangleVertex), &probe[0].x);
   glColorPointer(4, GL_FLOAT, sizeof(TriangleVertex), &probe[0].r);
-  drawArrays(0, probe.size(), true);
+  // (blended as GlCanvas blends, its translucent triangles; nothing else tested)
+  glDisable(GL_STENCIL_TEST);
+  glDisable(GL_DEPTH_TEST);
+  glEnable(GL_BLEND);
+  glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  drawArrays(0, probe.size(), false);
+  glDisable(GL_BLEND);
   glVertexPointer(2, GL_FLOAT, sizeof(TriangleVertex), nullptr);
   glColorPointer(4, GL_FLOAT, sizeof(TriangleVertex), nullptr);
   std::vector<uint8_t> byGl(static_cast<size_t>(width_) * height_ * 4), bySoftware(byGl.size(), 0);
   glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, byGl.data());
   for (size_t i = 3; i < bySoftware.size(); i += 4) bySoftware[i] = 255;
-  rasterOpaqueTriangles(probe.data(), probe.size(), view, {bySoftware.data(), 0, 0, width_, height_});
+  rasterTriangles(probe.data(), probe.size(), view, {bySoftware.data(), 0, 0, width_, height_});
   // (the frame's own drawing sets the viewport, the clear and the view again)
   softwareAgrees_ = byGl == bySoftware;
   return *softwareAgrees_;
@@ -337,6 +355,9 @@ bool GlContext::softwareDraws(int firstPart) const {
   for (const Step& step : steps_)
     if (step.part >= firstPart && step.count > 0 &&
         !rasterizesAlike(&triangles_[step.first], step.count, (*ortho_)[0], (*ortho_)[1]))
+      return false;
+  for (const OnceRange& once : once_)
+    if (once.part >= firstPart && !rasterizesAlike(&onceTriangles_[once.first], once.count, (*ortho_)[0], (*ortho_)[1]))
       return false;
   return true;
 }
@@ -387,8 +408,17 @@ void GlContext::rasterize(uint8_t* frame, const Region& region, int firstPart, c
     // (as glViewportIndexedf's translation: the shift, then half the size added in floats)
     view.translateX = (0.5f - at[0]) + view.halfWidth, view.translateY = (0.5f - at[1]) + view.halfHeight;
     const RasterTarget target{samples_[k].data(), region.x0, region.y0, region.x1, region.y1};
-    for (const Step& step : steps_)
-      if (step.part >= firstPart && step.count > 0) rasterOpaqueTriangles(&triangles_[step.first], step.count, view, target);
+    // each step's primitives drawn once a sample (its list's), then its triangles; the stamps
+    // cleared for each drawing, as GL's stencil is
+    if (!once_.empty()) stamps_.assign(bytes / 4, 0);
+    auto once = once_.begin();
+    for (size_t s = 0; s < steps_.size(); ++s) {
+      const Step& step = steps_[s];
+      for (; once != once_.end() && once->step == s; ++once)
+        if (once->part >= firstPart)
+          rasterTriangles(&onceTriangles_[once->first], once->count, view, target, stamps_.data(), once->group);
+      if (step.part >= firstPart && step.count > 0) rasterTriangles(&triangles_[step.first], step.count, view, target);
+    }
   }
   if (cost_) cost_->raster += std::chrono::duration<double>(std::chrono::steady_clock::now() - drawStart).count();
   resolveInto(frame, region, false, samplesNow_);

@@ -92,6 +92,12 @@ class GlContext {
   // a canvas draws with GL calls of its own (not triangles of the store) in the part being recorded:
   // the frame's moving part is then drawn by GL
   void drawsDirectly();
+  // a canvas draws, with GL calls of its own, a primitive GL draws each sample of at most once (a
+  // translucent stroke under a stencil value of its own): beginOnce() as it begins, then its
+  // triangles as GL makes them (whole ones, one colour each) to drawnOnce(), so that software may
+  // still draw the frame (in order with the rest of the part being recorded)
+  void beginOnce();
+  void drawnOnce(const TriangleVertex* vertices, size_t count);
   // whether a frame's moving part may be drawn in software where that gives GL's pixels (the
   // default; off, every frame is drawn by GL: the tests and the bench compare the two), and how many
   // frames have been
@@ -129,6 +135,18 @@ class GlContext {
     bool opaque = false;  // every vertex's alpha 1: drawn with blending and the stencil test off
   };
   std::vector<Step> steps_;
+  // the primitives drawn once a sample (drawnOnce()), each with the step whose list draws it and
+  // its own group: their triangles, ranges of onceTriangles_
+  struct OnceRange {
+    size_t step = 0;
+    int part = 0;
+    uint32_t group = 0;
+    size_t first = 0, count = 0;
+  };
+  std::vector<OnceRange> once_;
+  std::vector<TriangleVertex> onceTriangles_;
+  uint32_t onceGroups_ = 0;
+  std::vector<uint32_t> stamps_;           // rasterize()'s, a pixel each: the group that drew it last
   std::vector<unsigned> lists_;            // display lists made so far, reused from frame to frame
   std::vector<TriangleVertex> triangles_;  // the frame's triangles (drawTriangles)
   unsigned vertexBuffer_ = 0;              // the GL buffer they are sent to for drawing, and its size

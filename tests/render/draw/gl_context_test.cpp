@@ -321,10 +321,10 @@ struct TwoWays : Fixture {
 
 }  // namespace
 
-// A frame whose moving part is opaque triangles alone is drawn in software over the kept static
-// part's own drawings (triangle_raster.h): every frame the one llvmpipe's 4x multisampling gives,
-// byte for byte, and the one GL gives drawing it at each sample position; a frame with a translucent
-// body, or a box past the view's edge, is drawn by GL
+// A frame whose moving part is triangles alone is drawn in software over the kept static part's own
+// drawings (triangle_raster.h): every frame the one llvmpipe's 4x multisampling gives, byte for
+// byte, and the one GL gives drawing it at each sample position, a translucent body's too; a frame
+// with a box past the view's edge is drawn by GL
 TEST_CASE_FIXTURE(TwoWays, "a pile's frames drawn in software over the kept ground are GL's, byte for byte") {
   for (int k = 0; k < 6; ++k) {
     const auto draw = [&](render::draw::GlCanvas& c) { pileScene(c, -0.2 + 0.013 * k, 0.002 * k, 5, 0.31); };
@@ -335,12 +335,12 @@ TEST_CASE_FIXTURE(TwoWays, "a pile's frames drawn in software over the kept grou
   // the first frame made the kept ground: the five after it were drawn in software
   CHECK(gl.softwareFrames() == 5);
   CHECK(byGl.softwareFrames() == 0);
-  // a translucent body: GL's to draw
+  // a translucent body (its fill blended, its outline under a stencil value of its own): software's
   both([&](render::draw::GlCanvas& c) {
     pileScene(c, 0.1, 0.01, 5, 0.31, [](render::draw::GlCanvas& d) { d.circle({1.2, 0.6}, 0.3, {Role::Body, 2, 0.5}); });
   });
   CHECK(differingBytes(frame, reference) == 0);
-  CHECK(gl.softwareFrames() == 5);
+  CHECK(gl.softwareFrames() == 6);
   // a box past the view's right edge: GL clips it, so GL draws it
   both([&](render::draw::GlCanvas& c) {
     pileScene(c, 0.1, 0.01, 5, 0.31, [](render::draw::GlCanvas& d) {
@@ -348,11 +348,11 @@ TEST_CASE_FIXTURE(TwoWays, "a pile's frames drawn in software over the kept grou
     });
   });
   CHECK(differingBytes(frame, reference) == 0);
-  CHECK(gl.softwareFrames() == 5);
+  CHECK(gl.softwareFrames() == 6);
   // and software again, the ground kept all along
   both([&](render::draw::GlCanvas& c) { pileScene(c, 0.05, 0.003, 5, 0.31); });
   CHECK(differingBytes(frame, reference) == 0);
-  CHECK(gl.softwareFrames() == 6);
+  CHECK(gl.softwareFrames() == 7);
 }
 
 // a frame of 200 small bodies takes two samples a pixel (GlCanvas's rule): drawn in software there too
@@ -367,7 +367,7 @@ TEST_CASE_FIXTURE(TwoWays, "a dense pile at two samples a pixel: software's fram
 
 // A frame with no ground, its bodies opaque (a ball, a turned block, an axis, an arrow), is drawn in
 // software whole, over the background GL clears to: byte for byte GL's drawing and its 4x
-// multisampling; a translucent body leaves it to GL
+// multisampling; with a translucent body too
 TEST_CASE_FIXTURE(TwoWays, "a frame of opaque bodies alone is drawn in software whole, byte for byte GL's") {
   const auto opaqueScene = [](render::draw::GlCanvas& c, double x) {
     c.circle({x, 1.0}, 0.3, {Role::Body, 2, 1});
@@ -383,33 +383,46 @@ TEST_CASE_FIXTURE(TwoWays, "a frame of opaque bodies alone is drawn in software 
   }
   CHECK(gl.softwareFrames() == 3);
   CHECK(byGl.softwareFrames() == 0);
-  // a translucent body: GL's
+  // a translucent body
   canvas.begin(camera);
   opaqueScene(canvas, 0.0);
   canvas.circle({-1.5, 0.5}, 0.3, {Role::Body, 1, 0.5});
   canvas.finish(frame);
-  CHECK(gl.softwareFrames() == 3);
+  CHECK(gl.softwareFrames() == 4);
   CHECK(differingBytes(frame, multisampled(gl, canvas, camera, s.background, [&](render::draw::GlCanvas& c) {
                          opaqueScene(c, 0.0);
                          c.circle({-1.5, 0.5}, 0.3, {Role::Body, 1, 0.5});
                        })) == 0);
 }
 
-// What the canvas draws with GL calls of its own (a translucent stroke: its quads and joins under a
-// stencil, outside the batch) leaves the frame to GL, with a ground kept and without one
-TEST_CASE_FIXTURE(TwoWays, "a stroke the canvas draws apart leaves the frame to GL") {
-  const auto stroke = [](render::draw::GlCanvas& c) { c.arrow({-1.0, 1.6}, {0.6, 1.9}, {Role::Velocity, 2, 0.6}); };
+// What the canvas draws with GL calls of its own, a translucent stroke (its quads and joins, which
+// overlap, under a stencil value of its own: each sample drawn once), is drawn in software too, with
+// a ground kept and without one; byte for byte GL's, where blending a sample twice would show
+TEST_CASE_FIXTURE(TwoWays, "translucent strokes the canvas draws apart, each sample once: software's are GL's") {
+  const auto strokes = [](render::draw::GlCanvas& c, double x) {
+    c.arrow({-1.0 + x, 1.6}, {0.6, 1.9}, {Role::Velocity, 2, 0.6});
+    c.arrow({0.3, 1.2}, {-0.4 + x, 0.5}, {Role::Impulse, 1, 0.35});
+    c.polygon({{0.4, 0.2}, {1.3 + x, 0.35}, {1.15, 1.25}, {0.25, 1.1}}, {Role::Body, 0, 0.45});
+    c.circle({-1.2, 0.4 + x}, 0.25, {Role::Body, 1, 0.7});
+  };
   for (int k = 0; k < 2; ++k) both([&](render::draw::GlCanvas& c) { pileScene(c, 0.01 * k, 0.0, 5, 0.31); });
-  const long before = gl.softwareFrames();
-  CHECK(before == 1);
-  both([&](render::draw::GlCanvas& c) { pileScene(c, 0.02, 0.0, 5, 0.31, stroke); });
-  CHECK(differingBytes(frame, reference) == 0);
-  both([&](render::draw::GlCanvas& c) {
-    c.polygon({{0.4, 0.2}, {1.3, 0.35}, {1.15, 1.25}, {0.25, 1.1}}, {Role::Body, 0, 1});
-    stroke(c);
-  });
-  CHECK(differingBytes(frame, reference) == 0);
-  CHECK(gl.softwareFrames() == before);
+  CHECK(gl.softwareFrames() == 1);
+  for (int k = 0; k < 3; ++k) {
+    const auto draw = [&](render::draw::GlCanvas& c) {
+      pileScene(c, 0.02, 0.0, 5, 0.31, [&](auto& d) { strokes(d, 0.07 * k); });
+    };
+    both(draw);
+    CHECK(differingBytes(frame, reference) == 0);
+    CHECK(differingBytes(frame, multisampled(gl, canvas, camera, s.background, draw)) == 0);
+  }
+  CHECK(gl.softwareFrames() == 4);
+  // no ground: the whole frame in software
+  for (int k = 0; k < 3; ++k) {
+    both([&](render::draw::GlCanvas& c) { strokes(c, 0.05 * k); });
+    CHECK(differingBytes(frame, reference) == 0);
+  }
+  CHECK(gl.softwareFrames() == 7);
+  CHECK(byGl.softwareFrames() == 0);
 }
 
 // A finite ground (a static box: the kept drawings cover its region, not the whole frame), and

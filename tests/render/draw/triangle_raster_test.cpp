@@ -1,6 +1,7 @@
-// Opaque triangles drawn in software: every sample the same as llvmpipe's, at each of the four
-// sample positions, for triangles of every size and slant, level and upright edges on the sample
-// rows and columns included; and what is left to GL (translucent, two-coloured, outside the view).
+// Triangles drawn in software: every sample the same as llvmpipe's, at each of the four sample
+// positions, for triangles of every size and slant, level and upright edges on the sample rows and
+// columns included, translucent ones blended as llvmpipe blends; and what is left to GL
+// (two-coloured, outside the view).
 #include "render/draw/triangle_raster.h"
 
 #include <doctest/doctest.h>
@@ -30,9 +31,14 @@ struct Drawn {
   std::vector<uint8_t> gl, software;
 };
 
-// `triangles` drawn by GL and in software at sample position `at`, over a background
-Drawn drawBoth(const std::vector<TriangleVertex>& triangles, const std::array<float, 2>& at) {
+// `triangles` drawn by GL and in software at sample position `at`, over a background (with
+// `blend`, blended as GlCanvas blends: GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA)
+Drawn drawBoth(const std::vector<TriangleVertex>& triangles, const std::array<float, 2>& at, bool blend = false) {
   Drawn d;
+  if (blend) {
+    glEnable(GL_BLEND);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  }
   glViewportIndexedf(0, 0.5f - at[0], 0.5f - at[1], static_cast<float>(kWidth), static_cast<float>(kHeight));
   glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT);
@@ -42,6 +48,7 @@ Drawn drawBoth(const std::vector<TriangleVertex>& triangles, const std::array<fl
     glVertex2d(v.x, v.y);
   }
   glEnd();
+  glDisable(GL_BLEND);
   d.gl.resize(static_cast<size_t>(kWidth) * kHeight * 4);
   glReadPixels(0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE, d.gl.data());
   d.software.assign(d.gl.size(), 0);
@@ -50,7 +57,7 @@ Drawn drawBoth(const std::vector<TriangleVertex>& triangles, const std::array<fl
   view.scaleX = orthoScale(kHalfWidth), view.scaleY = orthoScale(kHalfHeight);
   view.halfWidth = kWidth / 2.0f, view.halfHeight = kHeight / 2.0f;
   view.translateX = 0.5f - at[0] + kWidth / 2.0f, view.translateY = 0.5f - at[1] + kHeight / 2.0f;
-  rasterOpaqueTriangles(triangles.data(), triangles.size(), view, {d.software.data(), 0, 0, kWidth, kHeight});
+  rasterTriangles(triangles.data(), triangles.size(), view, {d.software.data(), 0, 0, kWidth, kHeight});
   return d;
 }
 
@@ -71,6 +78,17 @@ struct Context {
   }
 };
 
+// random triangles' places and colours, in the view
+struct Randoms {
+  std::mt19937 rng;
+  std::uniform_real_distribution<float> centerX{-7.5f, 7.5f}, centerY{-4.5f, 4.5f}, offset{-0.6f, 0.6f}, channel{0.0f, 1.0f};
+  explicit Randoms(unsigned seed) : rng(seed) {}
+  float x() { return centerX(rng); }
+  float y() { return centerY(rng); }
+  float off() { return offset(rng); }
+  float c() { return channel(rng); }
+};
+
 long differingPixels(const Drawn& d) {
   long n = 0;
   for (size_t p = 0; p < d.gl.size(); p += 4) n += std::memcmp(&d.gl[p], &d.software[p], 4) != 0;
@@ -81,21 +99,20 @@ long differingPixels(const Drawn& d) {
 
 TEST_CASE("random opaque triangles: every sample llvmpipe's, at each of the four sample positions") {
   Context context;
-  std::mt19937 rng(11);
-  std::uniform_real_distribution<float> centerX(-7.5f, 7.5f), centerY(-4.5f, 4.5f), offset(-0.6f, 0.6f), channel(0.0f, 1.0f);
+  Randoms pick(11);
   long drawings = 0, differing = 0, covered = 0;
   for (int t = 0; t < 600; ++t) {
     // small (a pixel or two), box-sized, large; some with a level or an upright edge
     const float size = t % 3 == 0 ? 0.05f : t % 3 == 1 ? 1.0f : 6.0f;
-    const float cx = centerX(rng), cy = centerY(rng);
+    const float cx = pick.x(), cy = pick.y();
     std::vector<TriangleVertex> triangles;
-    const float r = channel(rng), g = channel(rng), b = channel(rng);
-    for (int k = 0; k < 3; ++k) triangles.push_back({cx + size * offset(rng), cy + size * offset(rng), r, g, b, 1.0f});
+    const float r = pick.c(), g = pick.c(), b = pick.c();
+    for (int k = 0; k < 3; ++k) triangles.push_back({cx + size * pick.off(), cy + size * pick.off(), r, g, b, 1.0f});
     if (t % 4 == 0) triangles[1].y = triangles[0].y;
     if (t % 4 == 1) triangles[1].x = triangles[0].x;
     // a second triangle over the first, sharing an edge: the samples on it go to one of them
     for (int k = 0; k < 2; ++k) triangles.push_back({triangles[k].x, triangles[k].y, g, b, r, 1.0f});
-    triangles.push_back({cx + size * offset(rng), cy + size * offset(rng), g, b, r, 1.0f});
+    triangles.push_back({cx + size * pick.off(), cy + size * pick.off(), g, b, r, 1.0f});
     if (!rasterizesAlike(triangles.data(), triangles.size(), orthoScale(kHalfWidth), orthoScale(kHalfHeight))) continue;
     for (const auto& at : kSamplePositions) {
       const Drawn d = drawBoth(triangles, at);
@@ -105,6 +122,44 @@ TEST_CASE("random opaque triangles: every sample llvmpipe's, at each of the four
     }
   }
   CHECK(drawings > 1500);
+  CHECK(covered > 100000);
+  CHECK(differing == 0);
+}
+
+// a colour, alpha and background byte where llvmpipe's blend and exact rounding part (the source's
+// share 0, the background's 194 · 232 / 255 = 176.502: llvmpipe 176) are among those drawn
+TEST_CASE("random translucent triangles over opaque ones: blended as llvmpipe blends, every sample") {
+  Context context;
+  Randoms pick(17);
+  long drawings = 0, differing = 0, covered = 0;
+  for (int t = 0; t < 400; ++t) {
+    const float size = t % 2 == 0 ? 1.0f : 6.0f;
+    const float cx = pick.x(), cy = pick.y();
+    std::vector<TriangleVertex> triangles;
+    // an opaque one, then two translucent ones over it: any alpha, and bytes alpha may take
+    const float r = pick.c(), g = pick.c(), b = pick.c();
+    for (int k = 0; k < 3; ++k) triangles.push_back({cx + size * pick.off(), cy + size * pick.off(), r, g, b, 1.0f});
+    for (int layer = 0; layer < 2; ++layer) {
+      const float a = layer == 0 ? pick.c() : static_cast<float>(std::uniform_int_distribution<int>(1, 254)(pick.rng)) / 255.0f;
+      const float tr = pick.c(), tg = pick.c(), tb = pick.c();
+      for (int k = 0; k < 3; ++k) triangles.push_back({cx + size * pick.off(), cy + size * pick.off(), tr, tg, tb, a});
+    }
+    if (t == 0) {
+      // the parting case, over the whole view
+      triangles = {{-8, -5, 194 / 255.0f, 0, 0, 1}, {8, -5, 194 / 255.0f, 0, 0, 1}, {0, 5, 194 / 255.0f, 0, 0, 1},
+                   {-8, -5, 0, 0, 0, 23 / 255.0f},  {8, -5, 0, 0, 0, 23 / 255.0f},  {0, 5, 0, 0, 0, 23 / 255.0f}};
+    }
+    // (a triangle reaching out of the view is clipped by GL: not drawn so)
+    if (!rasterizesAlike(triangles.data(), triangles.size(), orthoScale(kHalfWidth), orthoScale(kHalfHeight))) continue;
+    for (const auto& at : kSamplePositions) {
+      const Drawn d = drawBoth(triangles, at, true);
+      differing += differingPixels(d);
+      if (t == 0) CHECK(d.gl[4 * (kWidth * kHeight / 2 + kWidth / 2)] == 176);
+      for (size_t p = 0; p < d.gl.size(); p += 4) covered += d.gl[p] != 0 || d.gl[p + 1] != 0 || d.gl[p + 2] != 0;
+      ++drawings;
+    }
+  }
+  CHECK(drawings > 1000);
   CHECK(covered > 100000);
   CHECK(differing == 0);
 }
@@ -172,10 +227,13 @@ TEST_CASE("what software does not draw as GL does is left to GL") {
   const float sx = orthoScale(kHalfWidth), sy = orthoScale(kHalfHeight);
   std::vector<TriangleVertex> t = {{0, 0, 1, 0, 0, 1}, {1, 0, 1, 0, 0, 1}, {0, 1, 1, 0, 0, 1}};
   CHECK(rasterizesAlike(t.data(), t.size(), sx, sy));
-  // translucent
-  t[2].a = 0.5f;
-  CHECK_FALSE(rasterizesAlike(t.data(), t.size(), sx, sy));
+  // translucent: blended alike
+  for (TriangleVertex& v : t) v.a = 0.5f;
+  CHECK(rasterizesAlike(t.data(), t.size(), sx, sy));
+  // two alphas (GL would blend them across the triangle)
   t[2].a = 1.0f;
+  CHECK_FALSE(rasterizesAlike(t.data(), t.size(), sx, sy));
+  for (TriangleVertex& v : t) v.a = 1.0f;
   // two colours (GL would blend them across the triangle)
   t[1].g = 0.5f;
   CHECK_FALSE(rasterizesAlike(t.data(), t.size(), sx, sy));
@@ -194,7 +252,8 @@ TEST_CASE("what software does not draw as GL does is left to GL") {
 }
 
 // GlContext draws its probe once with GL and in software, and draws frames in software only if they
-// agree: the probe has edges on sample columns and rows in plenty, and here they agree
+// agree: the probe has edges on sample columns and rows in plenty, and blends where llvmpipe's
+// products and exact rounding part; here they agree
 TEST_CASE("the probe's triangles: many, on samples' columns and rows, drawn alike by GL and software") {
   Context context;
   RasterView view;
@@ -213,10 +272,15 @@ TEST_CASE("the probe's triangles: many, on samples' columns and rows, drawn alik
       parted += std::llrint((separate - 0.5f) * 256.0f) != std::llrint((fused - 0.5f) * 256.0f);
     }
   CHECK(parted >= 40);
-  const Drawn d = drawBoth(probe, {0.5f, 0.5f});
-  long covered = 0;
-  for (size_t p = 0; p < d.gl.size(); p += 4) covered += d.gl[p] != 0 || d.gl[p + 1] != 0 || d.gl[p + 2] != 0;
+  const Drawn d = drawBoth(probe, {0.5f, 0.5f}, true);
+  long covered = 0, parting = 0;
+  for (size_t p = 0; p < d.gl.size(); p += 4) {
+    covered += d.gl[p] != 0 || d.gl[p + 1] != 0 || d.gl[p + 2] != 0;
+    // 194 under black at alpha 23, and 247 under 10 at alpha 16: exact rounding gives 177 and 233
+    parting += (d.gl[p] == 176 && d.gl[p + 2] == 116) || (d.gl[p + 1] == 232 && d.gl[p + 2] == 136);
+  }
   CHECK(covered > 200);
+  CHECK(parting > 20);
   CHECK(differingPixels(d) == 0);
 }
 
