@@ -57,6 +57,7 @@ void GlCanvas::start(const Camera& camera, bool clear) {
   glEnable(GL_STENCIL_TEST);
   glStencilMask(0xff);
   stencil_ = glStencil_ = -1;  // unknown: the first primitive sets the stencil state
+  once_ = false;
   batchFirst_ = batch_.size();
   batching_ = false;
   drawCalls_ = 0;
@@ -382,6 +383,7 @@ void GlCanvas::beginPrimitive(const Color& c, double opacity, bool marks, bool o
     // bodies cost in proportion to the calls; fading contact dots, a call each, made a frame of a
     // 210-box pyramid's 800 contacts cost three times its bodies)
     batching_ = true;
+    once_ = false;
     color_ = {static_cast<float>(c.r), static_cast<float>(c.g), static_cast<float>(c.b), static_cast<float>(alpha)};
     stencil_ = 0;
     return;
@@ -446,6 +448,8 @@ void GlCanvas::shape(unsigned mode) {
   shapeCount_ = 0;
   if (!batching_) {
     ++drawCalls_;
+    // (a once primitive's shapes are fans, strips and triangles; any other mode is GL's to draw)
+    if (mode != GL_TRIANGLES && mode != GL_TRIANGLE_FAN && mode != GL_TRIANGLE_STRIP) once_ = false;
     if (once_) onceShape_.clear();
     else gl_.drawsDirectly();
     glBegin(mode);

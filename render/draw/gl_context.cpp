@@ -330,12 +330,21 @@ bool GlContext::softwareAgrees() {
   glBindBuffer(GL_ARRAY_BUFFER, 0);
   glVertexPointer(2, GL_FLOAT, sizeof(TriangleVertex), &probe[0].x);
   glColorPointer(4, GL_FLOAT, sizeof(TriangleVertex), &probe[0].r);
-  // (blended as GlCanvas blends, its translucent triangles; nothing else tested)
-  glDisable(GL_STENCIL_TEST);
+  // the opaque triangles as a batch of them is drawn (blending and the stencil test off), the
+  // translucent ones after them as GlCanvas draws them (blended, under a stencil test that passes)
+  const auto translucent = std::find_if(probe.begin(), probe.end(), [](const TriangleVertex& v) { return !(v.a >= 1.0f); });
+  const size_t opaqueCount = static_cast<size_t>(translucent - probe.begin());
   glDisable(GL_DEPTH_TEST);
+  glDisable(GL_BLEND);
+  glDisable(GL_STENCIL_TEST);
+  drawArrays(0, opaqueCount, true);
   glEnable(GL_BLEND);
   glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  drawArrays(0, probe.size(), false);
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_ALWAYS, 0, 0xff);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  drawArrays(opaqueCount, probe.size() - opaqueCount, false);
+  glDisable(GL_STENCIL_TEST);
   glDisable(GL_BLEND);
   glVertexPointer(2, GL_FLOAT, sizeof(TriangleVertex), nullptr);
   glColorPointer(4, GL_FLOAT, sizeof(TriangleVertex), nullptr);

@@ -117,8 +117,11 @@ std::vector<TriangleVertex> probeTriangles(const RasterView& view, int width, in
   }
   // blending: translucent triangles over an opaque one, in a quarter of the view the edges above
   // keep clear, on bytes where llvmpipe's products and exact rounding part (194 under 0 at alpha 23:
-  // 176, not 177; 247 under 10 at alpha 16: 232, not 233)
-  const float cx = 0.5f * view.halfWidth * px, cy = 0.5f * view.halfHeight * py, side = 8.0f;
+  // 176, not 177; 247 under 10 at alpha 16: 232, not 233). A view too small for them (or for the
+  // edges) has no probe: its frames are GL's
+  const float side = 8.0f;
+  if (out.empty() || view.halfWidth < 4.0f * side || view.halfHeight < 4.0f * side) return {};
+  const float cx = 0.5f * view.halfWidth * px, cy = 0.5f * view.halfHeight * py;
   const auto colored = [&](float x0, float y0, float x1, float y1, float x2, float y2, const std::array<float, 4>& c) {
     for (const auto& [x, y] : {std::pair{x0, y0}, std::pair{x1, y1}, std::pair{x2, y2}})
       out.push_back({x, y, c[0], c[1], c[2], c[3]});

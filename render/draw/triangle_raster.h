@@ -44,8 +44,10 @@ bool rasterizesAlike(const TriangleVertex* vertices, size_t count, float scaleX,
 
 // triangles that tell this emulation from a near miss, for a view of `view`: upright and level
 // edges where a fused multiply-add and a multiply then an add snap a corner to different subpixels,
-// one of them on a sample's row or column, and triangles sharing those edges (GlContext draws them
-// once with GL and in software, and draws in software only if the two agree)
+// one of them on a sample's row or column, and triangles sharing those edges; then translucent
+// triangles over an opaque one, on bytes where llvmpipe's blend and exact rounding part (GlContext
+// draws them once with GL and in software, and draws in software only if the two agree). None for
+// a view under 64 px a side
 std::vector<TriangleVertex> probeTriangles(const RasterView& view, int width, int height);
 
 // the triangles drawn over `target` in order: an opaque one's colour written over each sample (a

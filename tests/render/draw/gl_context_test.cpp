@@ -422,7 +422,37 @@ TEST_CASE_FIXTURE(TwoWays, "translucent strokes the canvas draws apart, each sam
     CHECK(differingBytes(frame, reference) == 0);
   }
   CHECK(gl.softwareFrames() == 7);
+  // two translucent strokes crossing: each blends its own samples once, the second over the first
+  // (one stencil group for both would leave the crossing once blended); under them, at the
+  // crossing, an opaque body drawn after the first stroke and before the second
+  both([&](render::draw::GlCanvas& c) {
+    c.segment({-1.5, 0.2}, {1.5, 1.4}, {Role::Velocity, 2, 0.5});
+    c.polygon({{-0.2, 0.6}, {0.3, 0.6}, {0.3, 1.1}, {-0.2, 1.1}}, {Role::Body, 0, 1});
+    c.segment({-1.5, 1.4}, {1.5, 0.2}, {Role::Impulse, 2, 0.5});
+  });
+  CHECK(differingBytes(frame, reference) == 0);
+  CHECK(gl.softwareFrames() == 8);
   CHECK(byGl.softwareFrames() == 0);
+}
+
+// A translucent static body's outline is a once primitive of the static part: over a kept ground
+// only the moving part is drawn again, so the outline must not be blended a second time there
+TEST_CASE_FIXTURE(TwoWays, "a translucent ground's outline is drawn once, kept with the ground") {
+  const auto ground = [](render::draw::GlCanvas& c) {
+    c.polygon({{-1.6, -0.6}, {2.2, -0.6}, {2.2, -0.1}, {-1.6, -0.1}}, {Role::StaticBody, 1, 0.5});
+  };
+  for (int k = 0; k < 4; ++k) {
+    both([&](render::draw::GlCanvas& c) {
+      ground(c);
+      // bodies resting on it, over its outline
+      for (int j = 0; j < 4; ++j)
+        c.polygon({{-1.2 + 0.8 * j + 0.01 * k, -0.15}, {-0.7 + 0.8 * j, -0.15}, {-0.7 + 0.8 * j, 0.3}, {-1.2 + 0.8 * j, 0.3}},
+                  {Role::Body, j % 3, 1});
+    });
+    CHECK(differingBytes(frame, reference) == 0);
+  }
+  // the first frame kept the ground; the three after it drawn in software over it
+  CHECK(gl.softwareFrames() == 3);
 }
 
 // A finite ground (a static box: the kept drawings cover its region, not the whole frame), and

@@ -282,6 +282,12 @@ TEST_CASE("the probe's triangles: many, on samples' columns and rows, drawn alik
   CHECK(covered > 200);
   CHECK(parting > 20);
   CHECK(differingPixels(d) == 0);
+  // a view too small to hold them has no probe (its frames are GL's): GL would clip the blending ones
+  RasterView small = view;
+  small.halfWidth = small.translateX = 30.0f, small.halfHeight = small.translateY = 30.0f;
+  CHECK(probeTriangles(small, 60, 60).empty());
+  small.halfWidth = small.translateX = small.halfHeight = small.translateY = 40.0f;
+  CHECK_FALSE(probeTriangles(small, 80, 80).empty());
 }
 
 // a channel at an exact half (0.3 × 255 = 76.5, 0.7 × 255 = 178.5 in floats) goes to the even byte,
