@@ -39,10 +39,11 @@ namespace render::draw {
 // elsewhere every sample is the background. `rigidreel render scenes/three_collisions_poll.yaml
 // --variant A` (the 720p video and its poster, ffmpeg included): 4.3 → 2.7-3.1 CPU seconds.
 //
-// A 2D frame whose moving part is opaque triangles alone (a pile's boxes, many frames of a few bodies)
-// is drawn in software as llvmpipe draws it (triangle_raster.h), over the kept static part's own
-// drawings at each sample position or over the background: GL's frame byte for byte. 2 s of the
-// 210-box half-plane pile at 720p took 1.42 s, 0.47 s so (render/README.md, "Frames drawn in software").
+// A 2D frame whose moving part is triangles alone (a pile's boxes, frames of a few bodies, fading
+// arrows: translucent ones blended, a stroke's drawn once a sample) is drawn in software as llvmpipe
+// draws it (triangle_raster.h), over the kept static part's own drawings at each sample position or
+// over the background: GL's frame byte for byte. 2 s of the 210-box half-plane pile at 720p took
+// 1.42 s, 0.47 s so (render/README.md, "Frames drawn in software").
 //
 // Fewer samples, measured by `build/rigidreel_bench build/rigidreel scenes/three_collisions_poll.yaml
 // --antialiasing` (720p; wall ms per frame of rasterizing at the sample positions; against the
