@@ -95,12 +95,25 @@ long differingPixels(const Drawn& d) {
   return n;
 }
 
+// GL's pixels that are not the black background
+long coveredPixels(const Drawn& d) {
+  long n = 0;
+  for (size_t p = 0; p < d.gl.size(); p += 4) n += d.gl[p] != 0 || d.gl[p + 1] != 0 || d.gl[p + 2] != 0;
+  return n;
+}
+
+// drawings made both ways, their pixels that differ and those GL covered
+struct Tally {
+  long drawings = 0, differing = 0, covered = 0;
+  void add(const Drawn& d) { ++drawings, differing += differingPixels(d), covered += coveredPixels(d); }
+};
+
 }  // namespace
 
 TEST_CASE("random opaque triangles: every sample llvmpipe's, at each of the four sample positions") {
   Context context;
   Randoms pick(11);
-  long drawings = 0, differing = 0, covered = 0;
+  Tally tally;
   for (int t = 0; t < 600; ++t) {
     // small (a pixel or two), box-sized, large; some with a level or an upright edge
     const float size = t % 3 == 0 ? 0.05f : t % 3 == 1 ? 1.0f : 6.0f;
@@ -114,16 +127,11 @@ TEST_CASE("random opaque triangles: every sample llvmpipe's, at each of the four
     for (int k = 0; k < 2; ++k) triangles.push_back({triangles[k].x, triangles[k].y, g, b, r, 1.0f});
     triangles.push_back({cx + size * pick.off(), cy + size * pick.off(), g, b, r, 1.0f});
     if (!rasterizesAlike(triangles.data(), triangles.size(), orthoScale(kHalfWidth), orthoScale(kHalfHeight))) continue;
-    for (const auto& at : kSamplePositions) {
-      const Drawn d = drawBoth(triangles, at);
-      differing += differingPixels(d);
-      for (size_t p = 0; p < d.gl.size(); p += 4) covered += d.gl[p] != 0 || d.gl[p + 1] != 0 || d.gl[p + 2] != 0;
-      ++drawings;
-    }
+    for (const auto& at : kSamplePositions) tally.add(drawBoth(triangles, at));
   }
-  CHECK(drawings > 1500);
-  CHECK(covered > 100000);
-  CHECK(differing == 0);
+  CHECK(tally.drawings > 1500);
+  CHECK(tally.covered > 100000);
+  CHECK(tally.differing == 0);
 }
 
 // a colour, alpha and background byte where llvmpipe's blend and exact rounding part (the source's
@@ -131,7 +139,7 @@ TEST_CASE("random opaque triangles: every sample llvmpipe's, at each of the four
 TEST_CASE("random translucent triangles over opaque ones: blended as llvmpipe blends, every sample") {
   Context context;
   Randoms pick(17);
-  long drawings = 0, differing = 0, covered = 0;
+  Tally tally;
   for (int t = 0; t < 400; ++t) {
     const float size = t % 2 == 0 ? 1.0f : 6.0f;
     const float cx = pick.x(), cy = pick.y();
@@ -153,15 +161,13 @@ TEST_CASE("random translucent triangles over opaque ones: blended as llvmpipe bl
     if (!rasterizesAlike(triangles.data(), triangles.size(), orthoScale(kHalfWidth), orthoScale(kHalfHeight))) continue;
     for (const auto& at : kSamplePositions) {
       const Drawn d = drawBoth(triangles, at, true);
-      differing += differingPixels(d);
+      tally.add(d);
       if (t == 0) CHECK(d.gl[4 * (kWidth * kHeight / 2 + kWidth / 2)] == 176);
-      for (size_t p = 0; p < d.gl.size(); p += 4) covered += d.gl[p] != 0 || d.gl[p + 1] != 0 || d.gl[p + 2] != 0;
-      ++drawings;
     }
   }
-  CHECK(drawings > 1000);
-  CHECK(covered > 100000);
-  CHECK(differing == 0);
+  CHECK(tally.drawings > 1000);
+  CHECK(tally.covered > 100000);
+  CHECK(tally.differing == 0);
 }
 
 TEST_CASE("triangles on the sample grid: level and upright edges through samples go as GL's") {
@@ -273,13 +279,11 @@ TEST_CASE("the probe's triangles: many, on samples' columns and rows, drawn alik
     }
   CHECK(parted >= 40);
   const Drawn d = drawBoth(probe, {0.5f, 0.5f}, true);
-  long covered = 0, parting = 0;
-  for (size_t p = 0; p < d.gl.size(); p += 4) {
-    covered += d.gl[p] != 0 || d.gl[p + 1] != 0 || d.gl[p + 2] != 0;
-    // 194 under black at alpha 23, and 247 under 10 at alpha 16: exact rounding gives 177 and 233
+  long parting = 0;
+  // 194 under black at alpha 23, and 247 under 10 at alpha 16: exact rounding gives 177 and 233
+  for (size_t p = 0; p < d.gl.size(); p += 4)
     parting += (d.gl[p] == 176 && d.gl[p + 2] == 116) || (d.gl[p + 1] == 232 && d.gl[p + 2] == 136);
-  }
-  CHECK(covered > 200);
+  CHECK(coveredPixels(d) > 200);
   CHECK(parting > 20);
   CHECK(differingPixels(d) == 0);
   // a view too small to hold them has no probe (its frames are GL's): GL would clip the blending ones
